@@ -1,0 +1,162 @@
+"""The Python API for launch files: `generate_launch_description()` returns one of these.
+
+Names and keyword arguments follow ROS 2's `launch` package, so a ROS 2 user's habits carry
+over (`DeclareLaunchArgument('x', default_value='1')`, `LaunchConfiguration('x')`, …).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from launcher.description import action as _action
+from launcher.description.actions import arguments as _arguments
+from launcher.description.actions import environment as _environment
+from launcher.description.actions import group as _group
+from launcher.description.actions import log as _log
+from launcher.description.actions import loops as _loops
+from launcher.description.actions import shutdown as _shutdown
+from launcher.description.actions import timer as _timer
+from launcher.description.actions.event_handlers import (
+    OnProcessExit,
+    OnProcessIO,
+    OnProcessStart,
+    OnShutdown,
+    RegisterEventHandler,
+)
+from launcher.description.actions.executable import ExecuteProcess
+from launcher.description.actions.include import IncludeLaunchDescription
+from launcher.description.actions.opaque import OpaqueFunction
+from launcher.description.condition import IfCondition, UnlessCondition
+from launcher.description.substitution import Substitution, Text, to_text
+from launcher.description.substitutions import command as _command
+from launcher.description.substitutions import configuration as _configuration
+from launcher.description.substitutions import environment as _env
+from launcher.description.substitutions import expression as _expression
+from launcher.description.substitutions import files as _files
+
+LaunchDescription = _action.LaunchDescription
+PathJoinSubstitution = _files.PathJoinSubstitution
+
+__all__ = [
+    "AppendEnvironmentVariable", "AnyLaunchDescriptionSource", "Command",
+    "DeclareLaunchArgument", "EnvironmentVariable", "ExecuteProcess", "FindExecutable",
+    "ForEach", "ForLoop", "GroupAction", "IfCondition", "IncludeLaunchDescription",
+    "LaunchConfiguration", "LaunchDescription", "LaunchDescriptionSource", "LogInfo",
+    "OnProcessExit", "OnProcessIO", "OnProcessStart", "OnShutdown", "OpaqueFunction",
+    "PathJoinSubstitution", "PythonExpression", "PythonLaunchDescriptionSource",
+    "RegisterEventHandler", "ResetEnvironment", "ResetLaunchConfigurations",
+    "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown", "Substitution",
+    "TextSubstitution", "ThisLaunchFileDir", "TimerAction", "UnlessCondition",
+    "UnsetEnvironmentVariable", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
+]
+
+
+# --- sources for IncludeLaunchDescription ---------------------------------------------------
+class LaunchDescriptionSource:
+    """Where an included description comes from: a path (text or substitutions)."""
+
+    def __init__(self, location: Any) -> None:
+        self.location = location
+
+
+PythonLaunchDescriptionSource = AnyLaunchDescriptionSource = LaunchDescriptionSource
+XMLLaunchDescriptionSource = YAMLLaunchDescriptionSource = LaunchDescriptionSource
+
+
+# --- actions ------------------------------------------------------------------------------
+def DeclareLaunchArgument(name: str, default_value: Any = None, description: str = "",  # noqa: N802
+                          choices: Sequence[str] = (), **kw: Any) -> Any:
+    return _arguments.DeclareLaunchArgument(name=name, default_value=default_value,
+                                            description=description, choices=list(choices), **kw)
+
+
+def SetLaunchConfiguration(name: Any, value: Any, **kw: Any) -> Any:  # noqa: N802
+    return _arguments.SetLaunchConfiguration(name=name, value=value, **kw)
+
+
+def ResetLaunchConfigurations(launch_configurations: dict | None = None, **kw: Any) -> Any:  # noqa: N802
+    keep = [_arguments.KeepEntry(to_text(k), to_text(v))
+            for k, v in (launch_configurations or {}).items()]
+    return _arguments.ResetLaunchConfigurations(keep=keep, **kw)
+
+
+def GroupAction(actions: Sequence[Any], *, scoped: bool = True, forwarding: bool = True,  # noqa: N802
+                launch_configurations: dict | None = None, **kw: Any) -> Any:
+    return _group.GroupAction(actions=list(actions), scoped=scoped, forwarding=forwarding,
+                              keep=dict(launch_configurations or {}), **kw)
+
+
+def TimerAction(*, period: Any, actions: Sequence[Any], cancel_on_shutdown: bool = True,  # noqa: N802
+                **kw: Any) -> Any:
+    return _timer.TimerAction(period=period, actions=list(actions),
+                              cancel_on_shutdown=cancel_on_shutdown, **kw)
+
+
+def SetEnvironmentVariable(name: Any, value: Any, **kw: Any) -> Any:  # noqa: N802
+    return _environment.SetEnvironmentVariable(name=name, value=value, **kw)
+
+
+def UnsetEnvironmentVariable(name: Any, **kw: Any) -> Any:  # noqa: N802
+    return _environment.UnsetEnvironmentVariable(name=name, **kw)
+
+
+def AppendEnvironmentVariable(name: Any, value: Any, prepend: Any = False,  # noqa: N802
+                              separator: Any = ":", **kw: Any) -> Any:
+    return _environment.AppendEnvironmentVariable(name=name, value=value, prepend=prepend,
+                                                  separator=separator, **kw)
+
+
+def ResetEnvironment(**kw: Any) -> Any:  # noqa: N802
+    return _environment.ResetEnvironment(**kw)
+
+
+def LogInfo(*, msg: Any, **kw: Any) -> Any:  # noqa: N802
+    return _log.LogInfo(msg=msg, **kw)
+
+
+def Shutdown(*, reason: Any = None, **kw: Any) -> Any:  # noqa: N802
+    return _shutdown.Shutdown(reason=None if reason is None else to_text(reason), **kw)
+
+
+def ForLoop(length: Any, *, function: Callable[[int], Any], name: str = "i",  # noqa: N802
+            **kw: Any) -> Any:
+    return _loops.ForLoop(length=to_text(length), name=name, function=function, **kw)
+
+
+def ForEach(input_values: Any, *, function: Callable[..., Any], **kw: Any) -> Any:  # noqa: N802
+    return _loops.ForEach(input_values=to_text(input_values), function=function, **kw)
+
+
+# --- substitutions ------------------------------------------------------------------------
+def _opt(value: Any) -> Any:
+    return None if value is None else to_text(value)
+
+
+def LaunchConfiguration(variable_name: Any, default: Any = None) -> Substitution:  # noqa: N802
+    return _configuration.LaunchConfiguration(to_text(variable_name), _opt(default))
+
+
+def EnvironmentVariable(name: Any, default_value: Any = None) -> Substitution:  # noqa: N802
+    return _env.EnvironmentVariable(to_text(name), _opt(default_value))
+
+
+def Command(command: Any, on_stderr: Any = "fail") -> Substitution:  # noqa: N802
+    return _command.Command(to_text(command), to_text(on_stderr))
+
+
+def PythonExpression(expression: Any) -> Substitution:  # noqa: N802
+    """A restricted expression (see launcher.description.safe_expression), not Python eval."""
+    return _expression.PythonExpression(to_text(expression))
+
+
+def TextSubstitution(*, text: str) -> Substitution:  # noqa: N802
+    return Text(text)
+
+
+def FindExecutable(*, name: Any) -> Substitution:  # noqa: N802
+    return _files.FindExecutable(to_text(name))
+
+
+def ThisLaunchFileDir() -> Substitution:  # noqa: N802
+    return _files.ThisLaunchFileDir()

@@ -1,0 +1,138 @@
+"""Static views of a launch description: `--show-args` and `--print`.
+
+Nothing is run. Included files are read when their path can be worked out from the arguments
+and defaults known so far; otherwise the include is shown unresolved.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+from launcher.description.action import Action, LaunchDescription
+from launcher.description.actions.arguments import DeclareLaunchArgument
+from launcher.description.actions.include import IncludeLaunchDescription
+from launcher.description.fields import declared_fields, frontend_name
+from launcher.description.substitution import Substitution, describe_text, perform_text
+from launcher.errors import LaunchError
+from launcher.frontend.loader import load_file
+from launcher.runtime.context import LaunchContext
+
+
+def _context(configurations: dict[str, str]) -> LaunchContext:
+    context = LaunchContext(configurations=configurations)
+    context.load_description = load_file
+    return context
+
+
+def _walk(actions: list[Action], context: LaunchContext, depth: int
+          ) -> Iterator[tuple[int, Action, LaunchDescription | str | None]]:
+    """Yield (depth, action, included description or why it is unresolved)."""
+    for item in actions:
+        if isinstance(item, DeclareLaunchArgument):
+            if item.name not in context.configurations and item.default_value is not None:
+                try:
+                    context.configurations[item.name] = perform_text(context,
+                                                                     item.default_value)
+                except LaunchError:
+                    pass
+            yield depth, item, None
+        elif isinstance(item, IncludeLaunchDescription):
+            try:
+                included = item.load(context)
+                for arg in item.launch_arguments:
+                    context.configurations[perform_text(context, arg.name)] = \
+                        perform_text(context, arg.value)
+            except LaunchError as exc:
+                yield depth, item, f"not resolved statically: {exc.message}"
+                continue
+            yield depth, item, included
+            context.push_file(included.file)
+            yield from _walk(included.actions, context, depth + 1)
+            context.pop_file()
+        else:
+            yield depth, item, None
+            yield from _walk(list(item.sub_actions()), context, depth + 1)
+
+
+def show_arguments(description: LaunchDescription, configurations: dict[str, str]) -> str:
+    context = _context(dict(configurations))
+    context.push_file(description.file)
+    sections: dict[str, list[DeclareLaunchArgument]] = {str(description.file): []}
+    current = [str(description.file)]
+    notes: list[str] = []
+    depth_files: dict[int, str] = {0: str(description.file)}
+    for depth, item, extra in _walk(description.actions, context, 0):
+        if isinstance(item, DeclareLaunchArgument):
+            sections.setdefault(depth_files.get(depth, current[-1]), []).append(item)
+        elif isinstance(item, IncludeLaunchDescription):
+            if isinstance(extra, LaunchDescription):
+                depth_files[depth + 1] = str(extra.file)
+                sections.setdefault(str(extra.file), [])
+            elif extra:
+                notes.append(f"  include at {item.where}: {extra}")
+    lines = ["Arguments (pass arguments as '<name>:=<value>'):"]
+    for file, args in sections.items():
+        title = "" if file == str(description.file) else f"\n  from included {file}:"
+        if title:
+            lines.append(title)
+        if not args:
+            lines.append("\n    (none)" if not title else "    (none)")
+        for arg in args:
+            lines.append(f"\n    '{arg.name}':")
+            lines.append(f"        {arg.description or 'no description given'}")
+            if arg.choices:
+                lines.append(f"        Valid choices are: {arg.choices}")
+            lines.append(f"        ({arg.describe_default()})")
+    if notes:
+        lines += ["", "Includes whose arguments could not be listed:", *notes]
+    return "\n".join(lines) + "\n"
+
+
+def print_tree(description: LaunchDescription, configurations: dict[str, str]) -> str:
+    context = _context(dict(configurations))
+    context.push_file(description.file)
+    lines = [f"LaunchDescription {description.file}"]
+    for depth, item, extra in _walk(description.actions, context, 0):
+        text = "  " * (depth + 1) + _describe(item)
+        if isinstance(extra, LaunchDescription):
+            text += f"  -> {extra.file}"
+        elif isinstance(extra, str):
+            text += f"  ({extra})"
+        lines.append(text)
+    return "\n".join(lines) + "\n"
+
+
+def _describe(item: Action) -> str:
+    tag = item.tags[0] if item.tags else type(item).__name__
+    parts = [tag]
+    if dataclasses.is_dataclass(item):
+        for field, spec in declared_fields(type(item)):
+            value = getattr(item, field.name, None)
+            if value in (None, [], (), field.default) or spec.kind.value == "children":
+                continue
+            parts.append(f"{frontend_name(field, spec)}={_show(value)}")
+    if item.condition is not None:
+        parts.append(item.condition.describe())
+    return " ".join(parts)
+
+
+def _show(value: Any) -> str:
+    if isinstance(value, tuple) and all(isinstance(v, Substitution) for v in value):
+        return repr(describe_text(value))
+    if isinstance(value, list):
+        return "[" + ", ".join(_show_entry(v) for v in value) + "]"
+    return repr(value)
+
+
+def _show_entry(value: Any) -> str:
+    if isinstance(value, Action):
+        return _describe(value)
+    if dataclasses.is_dataclass(value):
+        return "{" + ", ".join(f"{f.name}: {_show(getattr(value, f.name))}"
+                               for f in dataclasses.fields(value)) + "}"
+    return _show(value)
+
+

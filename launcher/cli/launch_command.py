@@ -1,0 +1,84 @@
+"""`launcher launch FILE [name:=value …]`."""
+
+from __future__ import annotations
+
+import argparse
+import re
+from pathlib import Path
+
+from launcher.description.action import LaunchDescription
+from launcher.description.actions.arguments import check_required
+from launcher.description.actions.shutdown import Shutdown
+from launcher.description.actions.timer import TimerAction
+from launcher.description.substitution import to_text
+from launcher.errors import UsageError
+from launcher.frontend.loader import load_file
+from launcher.runtime.logs import log_root
+from launcher.runtime.output import Printer
+from launcher.runtime.service import LaunchService, default_environment
+
+_ASSIGNMENT = re.compile(r"^([A-Za-z_][A-Za-z0-9_\-./]*):=(.*)$", re.S)
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "launch", help="run a launch file",
+        description="Run a launch file (.yaml, .xml or .py). Exit status: 0 when everything "
+                    "ended cleanly; 1 for an invalid launch file, a failed action or a "
+                    "process that exited with a non-zero code on its own; 130 after SIGINT "
+                    "(Ctrl-C); 143 after SIGTERM.")
+    p.add_argument("file", metavar="FILE", help="the launch file")
+    p.add_argument("arguments", nargs="*", metavar="name:=value", help="launch arguments")
+    p.add_argument("-s", "--show-args", "--show-arguments", action="store_true",
+                   help="list the launch arguments (also of included files) and exit")
+    p.add_argument("-p", "--print", "--print-description", action="store_true",
+                   help="print the launch description as a tree and exit")
+    p.add_argument("-d", "--debug", action="store_true",
+                   help="debug messages, and tracebacks with errors")
+    p.add_argument("--launch-prefix", default="",
+                   help="put this command before every executable (e.g. 'valgrind')")
+    p.add_argument("-n", "--noninteractive", action="store_true",
+                   help="run without a terminal: no colours")
+    p.add_argument("--duration", type=float, default=None, metavar="SECONDS",
+                   help="shut the launch down cleanly after this many seconds")
+    p.set_defaults(run=run)
+
+
+def parse_assignments(words: list[str]) -> dict[str, str]:
+    values: dict[str, str] = {}
+    for word in words:
+        match = _ASSIGNMENT.match(word)
+        if not match:
+            raise UsageError(f"malformed launch argument '{word}': expected name:=value "
+                             "(e.g. world_name:=arena.xml)")
+        values[match.group(1)] = match.group(2)
+    return values
+
+
+def run(args: argparse.Namespace) -> int:
+    configurations = parse_assignments(args.arguments)
+    path = Path(args.file)
+    description = load_file(path)
+    if args.show_args or args.print:
+        from launcher.cli import inspect  # only for these views: start-up time
+
+    if args.show_args:
+        print(inspect.show_arguments(description, configurations), end="")
+        return 0
+    if args.print:
+        print(inspect.print_tree(description, configurations), end="")
+        return 0
+    check_required(description.actions, configurations)
+    service = LaunchService(
+        printer=Printer(color=False) if args.noninteractive else None,
+        log_root=log_root(), environment=default_environment(),
+        configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
+    )
+    service.context.load_description = load_file
+    root: list = [description]
+    if args.duration is not None:
+        if args.duration < 0:
+            raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
+        root.append(TimerAction(period=args.duration, actions=[Shutdown(
+            reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
+    return service.run(LaunchDescription(root))

@@ -1,0 +1,199 @@
+"""`executable`: run a process and supervise it (ROS 2's ExecuteProcess)."""
+
+from __future__ import annotations
+
+import os
+import shutil
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from launcher.description.action import Action
+from launcher.description.actions.event_handlers import OnProcessExit, OnProcessStart
+from launcher.description.actions.shutdown import Shutdown
+from launcher.description.command_line import join_command, split_command
+from launcher.description.fields import Kind, attr, resolve
+from launcher.description.registry import action
+from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.errors import ExecutionError, did_you_mean
+from launcher.runtime.context import LaunchContext
+from launcher.runtime.process import ProcessSpec
+
+# output mode -> (where stdout goes, where stderr goes), as in ROS 2
+OUTPUT_MODES = {
+    "screen": ({"screen"}, {"screen"}),
+    "log": ({"log"}, {"log", "screen"}),
+    "both": ({"log", "screen"}, {"log", "screen"}),
+    "own_log": ({"own_log"}, {"own_log"}),
+    "full": ({"screen", "log", "own_log"}, {"screen", "log", "own_log"}),
+}
+
+
+@dataclass(eq=False)
+class EnvEntry:
+    name: Text_ = attr(Kind.TEXT, required=True, doc="Variable name.")
+    value: Text_ = attr(Kind.TEXT, required=True, doc="Its value for this process.")
+
+
+@action("executable")
+@dataclass(kw_only=True, eq=False)
+class ExecuteProcess(Action):
+    cmd: Any = attr(Kind.COMMAND, required=True,
+                    doc="The command line; split like a shell, substitutions kept whole.")
+    args: Any = attr(Kind.COMMAND, doc="More arguments, appended to cmd.")
+    cwd: Text_ | None = attr(Kind.TEXT, doc="Working directory (must exist).")
+    name: Text_ | None = attr(Kind.TEXT, doc="Label base for output; default: the program.")
+    prefix: Any = attr(Kind.COMMAND, name="launch-prefix", aliases=("launch_prefix",),
+                       doc="Words put before the command (e.g. 'gdb -ex run --args').")
+    output: Any = attr(Kind.TEXT, choices=tuple(OUTPUT_MODES),
+                       doc="screen, log (default), both, own_log or full.")
+    shell: Any = attr(Kind.BOOL, False, doc="Run the command line through /bin/sh.")
+    emulate_tty: Any = attr(Kind.BOOL, False, doc="Give the process a pseudo-terminal.")
+    sigterm_timeout: Any = attr(Kind.FLOAT, 5.0, minimum=0,
+                                doc="Seconds after SIGINT before SIGTERM.")
+    sigkill_timeout: Any = attr(Kind.FLOAT, 5.0, minimum=0,
+                                doc="Seconds after SIGTERM before SIGKILL.")
+    respawn: Any = attr(Kind.BOOL, False, doc="Start it again whenever it exits.")
+    respawn_delay: Any = attr(Kind.FLOAT, 0.0, minimum=0, doc="Seconds before a respawn.")
+    respawn_max_retries: Any = attr(Kind.INT, -1, minimum=-1,
+                                    doc="Respawns allowed; -1 means no limit.")
+    on_exit: Any = attr(Kind.ACTIONS,
+                        doc="'shutdown', or actions to run each time the process exits.")
+    on_start: Any = attr(Kind.ACTIONS, doc="Actions to run each time the process starts.")
+    additional_env: list[EnvEntry] = attr(Kind.ENTRIES, name="env", entry=EnvEntry,
+                                          doc="Environment variables for this process.")
+
+    def __post_init__(self) -> None:
+        if isinstance(self.on_exit, str):
+            if self.on_exit.strip() != "shutdown":
+                raise ValueError(f"on_exit: expected 'shutdown' or a list of actions, "
+                                 f"got '{self.on_exit}'")
+            self.on_exit = [Shutdown(reason=to_text("a process with on_exit=shutdown exited"))]
+        env = self.additional_env
+        pairs = env.items() if isinstance(env, dict) else env
+        self.additional_env = [e if isinstance(e, EnvEntry) else EnvEntry(to_text(e[0]),
+                                                                          to_text(e[1]))
+                               for e in pairs]
+
+    # --- building the process -------------------------------------------------------------
+    def _words(self, context: LaunchContext, value: Any) -> list[str]:
+        if value is None:
+            return []
+        if isinstance(value, list):
+            return [perform_text(context, to_text(v)) for v in value]
+        return split_command(context, to_text(value))
+
+    def command_line(self, context: LaunchContext) -> list[str]:
+        prefix = self._words(context, self.prefix)
+        service_prefix = getattr(context.service, "launch_prefix", "") or ""
+        if service_prefix:
+            prefix = split_command(context, to_text(service_prefix)) + prefix
+        if resolve(context, self.shell, Kind.BOOL, "shell"):
+            parts = [join_command(context, to_text(self.cmd))] if not isinstance(
+                self.cmd, list) else self._words(context, self.cmd)
+            parts += self._words(context, self.args)
+            return [*prefix, "/bin/sh", "-c", " ".join(parts)]
+        return [*prefix, *self._words(context, self.cmd), *self._words(context, self.args)]
+
+    def environment(self, context: LaunchContext) -> dict[str, str]:
+        env = dict(context.environment)
+        for entry in self.additional_env:
+            env[perform_text(context, entry.name)] = perform_text(context, entry.value)
+        return env
+
+    def spec(self, context: LaunchContext) -> ProcessSpec:
+        argv = self.command_line(context)
+        if not argv:
+            raise ExecutionError("the command line is empty")
+        env = self.environment(context)
+        cwd = None if self.cwd is None else perform_text(context, self.cwd)
+        _check_runnable(argv[0], env, cwd)
+        base = perform_text(context, self.name) if self.name is not None else \
+            os.path.basename(argv[0])
+        mode = resolve(context, self.output or "log", Kind.TEXT, "output",
+                       _field_spec(self, "output"))
+        stdout_to, stderr_to = OUTPUT_MODES[mode]
+
+        def num(field: str, kind: Kind) -> Any:
+            return resolve(context, getattr(self, field), kind, field, _field_spec(self, field))
+
+        return ProcessSpec(
+            label=context.service.next_label(base), argv=argv, env=env, cwd=cwd,
+            emulate_tty=resolve(context, self.emulate_tty, Kind.BOOL, "emulate_tty"),
+            stdout_to=frozenset(stdout_to), stderr_to=frozenset(stderr_to),
+            sigterm_timeout=num("sigterm_timeout", Kind.FLOAT),
+            sigkill_timeout=num("sigkill_timeout", Kind.FLOAT),
+            respawn=resolve(context, self.respawn, Kind.BOOL, "respawn"),
+            respawn_delay=num("respawn_delay", Kind.FLOAT),
+            respawn_max_retries=num("respawn_max_retries", Kind.INT), origin=self,
+        )
+
+    def execute(self, context: LaunchContext) -> Sequence[Action] | None:
+        if context.service is None:
+            return None
+        spec = self.spec(context)
+        self._register_reactions(context, spec.label)
+        try:
+            context.service.start_process(spec)
+        except OSError as exc:
+            raise ExecutionError(f"cannot start '{spec.argv[0]}': {exc.strerror or exc}") from None
+        return None
+
+    def _register_reactions(self, context: LaunchContext, label: str) -> None:
+        for handler_type, reaction in ((OnProcessExit, self.on_exit),
+                                       (OnProcessStart, self.on_start)):
+            if not reaction:
+                continue
+            handler = _LabelHandler(label, handler_type(**{
+                "on_exit" if handler_type is OnProcessExit else "on_start": reaction}))
+            handler.inner.snapshot = context.snapshot()
+            context.service.register_handler(handler)
+
+    def sub_actions(self) -> Sequence[Action]:
+        return [*(self.on_start if isinstance(self.on_start, list) else []),
+                *(self.on_exit if isinstance(self.on_exit, list) else [])]
+
+
+@dataclass
+class _LabelHandler:
+    """Match the events of one started process (one execution of the action)."""
+
+    label: str
+    inner: Any
+
+    def matches(self, event: Any) -> bool:
+        return self.inner.matches(event) and getattr(event, "label", None) == self.label
+
+    def handle(self, event: Any, context: LaunchContext) -> Any:
+        return self.inner.handle(event, context)
+
+
+def _field_spec(obj: Any, name: str) -> Any:
+    return type(obj).__dataclass_fields__[name].metadata["launch"]
+
+
+def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> None:
+    """Clear errors for the usual mistakes, before trying to spawn."""
+    if cwd is not None and not os.path.isdir(cwd):
+        raise ExecutionError(f"cwd '{cwd}' does not exist or is not a folder")
+    if "/" in program:
+        path = program if os.path.isabs(program) or cwd is None else os.path.join(cwd, program)
+        if not os.path.exists(path):
+            raise ExecutionError(f"executable '{program}' does not exist")
+        if not os.access(path, os.X_OK) or os.path.isdir(path):
+            raise ExecutionError(f"'{program}' is not executable")
+        return
+    search = env.get("PATH", os.defpath)
+    if shutil.which(program, path=search) is None:
+        raise ExecutionError(f"executable '{program}' not found on PATH"
+                             f"{did_you_mean(program, _programs_on(search))}")
+
+
+def _programs_on(search: str) -> set[str]:
+    names: set[str] = set()
+    for folder in search.split(os.pathsep):
+        try:
+            names.update(os.listdir(folder))
+        except OSError:
+            continue
+    return names

@@ -1,0 +1,45 @@
+"""`group`: children in a scope of their own (configurations and environment)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from launcher.description.action import Action, PopScope, PushScope
+from launcher.description.actions.arguments import KeepEntry
+from launcher.description.fields import Kind, attr, resolve
+from launcher.description.registry import action
+from launcher.description.substitution import perform_text, to_text
+from launcher.runtime.context import LaunchContext
+
+
+@action("group")
+@dataclass(kw_only=True, eq=False)
+class GroupAction(Action):
+    actions: list[Action] = attr(Kind.CHILDREN, doc="The actions in the group.")
+    scoped: Any = attr(Kind.BOOL, True, doc="Changes inside stay inside.")
+    forwarding: Any = attr(Kind.BOOL, True,
+                           doc="The group sees the configurations set outside it.")
+    keep: list[Any] = attr(Kind.ENTRIES, entry=KeepEntry,
+                           doc="With forwarding false: configurations still passed in.")
+
+    def __post_init__(self) -> None:
+        if isinstance(self.keep, dict):  # Python API: launch_configurations={...}
+            self.keep = [KeepEntry(to_text(k), to_text(v)) for k, v in self.keep.items()]
+
+    def execute(self, context: LaunchContext) -> Sequence[Action]:
+        if not resolve(context, self.scoped, Kind.BOOL, "scoped"):
+            return list(self.actions)
+        keep = {}
+        for entry in self.keep:
+            name = perform_text(context, entry.name)
+            if entry.value is not None:
+                keep[name] = perform_text(context, entry.value)
+            elif name in context.configurations:
+                keep[name] = context.configurations[name]
+        forwarding = resolve(context, self.forwarding, Kind.BOOL, "forwarding")
+        return [PushScope(forwarding=forwarding, keep=keep), *self.actions, PopScope()]
+
+    def sub_actions(self) -> Sequence[Action]:
+        return self.actions

@@ -1,0 +1,90 @@
+"""`include`: read another launch file (any format) and run it here.
+
+As in ROS 2, the arguments given to an include (and its `let`s) stay set for the actions after
+it; `scoped: true` keeps them inside (ROS 2's scoped include). A relative `file` is looked up
+next to the including file first, then in the working directory.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from launcher.description.action import Action, LaunchDescription, PopScope, PushScope
+from launcher.description.actions.arguments import SetLaunchConfiguration, check_required
+from launcher.description.fields import Kind, attr, resolve
+from launcher.description.registry import action
+from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.errors import ExecutionError, LaunchError
+from launcher.runtime.context import LaunchContext
+
+
+@dataclass(eq=False)
+class IncludeArg:
+    name: Text_ = attr(Kind.TEXT, required=True, doc="The included file's argument.")
+    value: Text_ = attr(Kind.TEXT, required=True, doc="Its value.")
+
+
+@action("include")
+@dataclass(kw_only=True, eq=False)
+class IncludeLaunchDescription(Action):
+    file: Any = attr(Kind.TEXT, required=True, doc="The launch file to include.")
+    launch_arguments: list[Any] = attr(Kind.ENTRIES, name="arg", entry=IncludeArg,
+                                       doc="Arguments for the included file.")
+    scoped: Any = attr(Kind.BOOL, False, doc="Keep its arguments and lets inside it.")
+    is_include = True
+
+    def __init__(self, launch_description_source: Any = None, *, file: Any = None,
+                 launch_arguments: Any = (), scoped: Any = False, **kwargs: Any) -> None:
+        source = file if file is not None else launch_description_source
+        self.file = source if isinstance(source, LaunchDescription) else \
+            to_text(getattr(source, "location", source))
+        pairs = launch_arguments.items() if isinstance(launch_arguments, dict) \
+            else launch_arguments
+        self.launch_arguments = [a if isinstance(a, IncludeArg) else
+                                 IncludeArg(to_text(a[0]), to_text(a[1])) for a in pairs]
+        self.scoped = scoped
+        self.condition = kwargs.get("condition")
+        self.where = kwargs.get("where")
+
+    def resolve_path(self, context: LaunchContext) -> Path:
+        raw = Path(perform_text(context, self.file))
+        here = context.current_file
+        if not raw.is_absolute() and here is not None and (here.parent / raw).exists():
+            raw = here.parent / raw
+        path = raw.absolute()
+        if not path.exists():
+            raise ExecutionError(f"included file '{raw}' does not exist")
+        if not path.is_file():
+            raise ExecutionError(f"included path '{raw}' is not a file")
+        return path
+
+    def load(self, context: LaunchContext) -> LaunchDescription:
+        if isinstance(self.file, LaunchDescription):
+            return self.file
+        path = self.resolve_path(context)
+        chain = [p for p in context.open_files if p is not None]
+        if path in chain:
+            cycle = " -> ".join(str(p) for p in chain[chain.index(path):] + [path])
+            raise ExecutionError(f"include cycle: {cycle}")
+        if context.load_description is None:
+            raise ExecutionError("this context cannot load launch files")
+        try:
+            return context.load_description(path)
+        except LaunchError as exc:
+            if exc.location is None:
+                raise exc.at(self.where) from None
+            raise
+
+    def execute(self, context: LaunchContext) -> Sequence[Action]:
+        description = self.load(context)
+        values = {perform_text(context, a.name): perform_text(context, a.value)
+                  for a in self.launch_arguments}
+        check_required(description.actions, {**context.configurations, **values})
+        sets: list[Action] = [SetLaunchConfiguration(name=to_text(k), value=to_text(v))
+                              for k, v in values.items()]
+        if resolve(context, self.scoped, Kind.BOOL, "scoped"):
+            return [PushScope(), *sets, description, PopScope()]
+        return [*sets, description]

@@ -1,0 +1,76 @@
+"""Loops: `for` (N copies, `$(index NAME)`) and `for_each` (`$(for-var NAME)`)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from launcher.description.action import Action, PopLocals, PushLocals
+from launcher.description.fields import Kind, attr, resolve
+from launcher.description.registry import action
+from launcher.description.substitution import perform_text, to_text
+from launcher.description.substitutions.configuration import loop_key
+from launcher.errors import ExecutionError
+from launcher.runtime.context import LaunchContext
+
+
+def _iteration(values: dict[str, Any], body: Sequence[Action]) -> list[Action]:
+    return [PushLocals(values={loop_key(k): str(v) for k, v in values.items()}), *body,
+            PopLocals()]
+
+
+@action("for")
+@dataclass(kw_only=True, eq=False)
+class ForLoop(Action):
+    length: Any = attr(Kind.INT, name="len", required=True, minimum=0,
+                       doc="How many times (a whole number ≥ 0).")
+    name: str = attr(Kind.NAME, required=True, doc="The index name, for $(index NAME).")
+    actions: list[Action] = attr(Kind.CHILDREN, doc="The body, repeated.")
+    function: Callable[[int], Sequence[Action] | None] | None = field(default=None, repr=False)
+
+    def execute(self, context: LaunchContext) -> list[Action]:
+        spec = type(self).__dataclass_fields__["length"].metadata["launch"]
+        count = resolve(context, self.length, Kind.INT, "len", spec)
+        out: list[Action] = []
+        for i in range(count):
+            body = list(self.function(i) or []) if self.function else self.actions
+            out += _iteration({self.name: i}, body)
+        return out
+
+    def sub_actions(self) -> Sequence[Action]:
+        return self.actions
+
+
+@action("for_each")
+@dataclass(kw_only=True, eq=False)
+class ForEach(Action):
+    """`values` is `;`-separated YAML maps: `{name: a, x: 1};{name: b, x: 2}`."""
+
+    input_values: Any = attr(Kind.TEXT, name="values", required=True,
+                             doc="';'-separated YAML maps, one per iteration.")
+    actions: list[Action] = attr(Kind.CHILDREN, doc="The body, once per map.")
+    function: Callable[..., Sequence[Action] | None] | None = field(default=None, repr=False)
+
+    def execute(self, context: LaunchContext) -> list[Action]:
+        text = perform_text(context, to_text(self.input_values))
+        out: list[Action] = []
+        for number, chunk in enumerate(filter(None, (c.strip() for c in text.split(";"))), 1):
+            try:
+                values = yaml.safe_load(chunk)
+            except yaml.YAMLError as exc:
+                raise ExecutionError(f"for_each: set {number} ('{chunk}') is not valid YAML: "
+                                     f"{getattr(exc, 'problem', exc)}") from None
+            if values is None:
+                values = {}
+            if not isinstance(values, dict):
+                raise ExecutionError(f"for_each: set {number} ('{chunk}') must be a map "
+                                     "like {name: a, x: 1}")
+            body = list(self.function(**values) or []) if self.function else self.actions
+            out += _iteration(values, body)
+        return out
+
+    def sub_actions(self) -> Sequence[Action]:
+        return self.actions

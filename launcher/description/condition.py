@@ -1,0 +1,44 @@
+"""`if` / `unless` on any tag: the text must be true, false, 1 or 0 (any case)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from launcher.description.substitution import Text_, describe_text, perform_text, to_text
+from launcher.errors import Location, SubstitutionError
+from launcher.runtime.context import LaunchContext
+
+
+def evaluate_condition_text(text: str, what: str = "condition") -> bool:
+    low = text.strip().lower()
+    if low in ("true", "1"):
+        return True
+    if low in ("false", "0"):
+        return False
+    raise SubstitutionError(f"{what}: expected true, false, 1 or 0, got '{text}'")
+
+
+@dataclass(frozen=True)
+class Condition:
+    text: Text_
+    negate: bool = False
+    where: Location | None = None
+
+    def evaluate(self, context: LaunchContext) -> bool:
+        what = "unless" if self.negate else "if"
+        try:
+            value = evaluate_condition_text(perform_text(context, self.text), what)
+        except SubstitutionError as exc:
+            raise exc.at(self.where) from None
+        return value != self.negate
+
+    def describe(self) -> str:
+        return f"{'unless' if self.negate else 'if'}={describe_text(self.text)}"
+
+
+def IfCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python API name
+    return Condition(to_text(value))
+
+
+def UnlessCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python API name
+    return Condition(to_text(value), negate=True)

@@ -1,0 +1,1 @@
+"""The built-in substitutions, one family per module."""

@@ -1,0 +1,1 @@
+"""Frontends: YAML, XML and Python launch files → trees of action descriptions."""

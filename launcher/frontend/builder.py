@@ -1,0 +1,191 @@
+"""Entities → actions, driven by each action's declared fields (see description.fields).
+
+One generic builder for every tag: it finds the class in the registry, maps attributes and
+nested entities onto fields, parses substitutions, checks literal values early, and rejects
+whatever is left over with "did you mean".
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from launcher.description.action import Action, LaunchDescription
+from launcher.description.condition import Condition
+from launcher.description.fields import Kind, coerce, declared_fields, frontend_name
+from launcher.description.registry import Registry, default_registry
+from launcher.description.substitution import Substitution, Text, Text_, is_literal
+from launcher.errors import LaunchError, Location, ParseError, did_you_mean
+from launcher.frontend.entity import Attribute, Entity
+from launcher.frontend.substitution_parser import Call, SubstitutionSyntaxError, parse_text
+
+_CONDITIONS = ("if", "unless")
+
+
+def build_description(root: Entity, path: Path, registry: Registry | None = None) -> \
+        LaunchDescription:
+    registry = registry or default_registry()
+    actions = [build_action(child, registry) for child in root.children]
+    return LaunchDescription(actions, file=path, where=root.location)
+
+
+def build_action(entity: Entity, registry: Registry) -> Action:
+    cls = registry.find_action(entity.tag)
+    if cls is None:
+        raise ParseError(f"unknown tag '{entity.tag}'{did_you_mean(entity.tag, registry.known('action'))}",
+                         entity.location)
+    kwargs = _fields(entity, cls, registry)
+    kwargs["condition"] = _condition(entity, registry)
+    return _construct(cls, kwargs, entity)
+
+
+def _construct(cls: type, kwargs: dict[str, Any], entity: Entity) -> Any:
+    try:
+        return cls(**kwargs, where=entity.location)
+    except LaunchError as exc:
+        raise exc.at(entity.location) from None
+    except (TypeError, ValueError) as exc:
+        raise ParseError(f"{entity.tag}: {exc}", entity.location) from None
+
+
+def _fields(entity: Entity, cls: type, registry: Registry) -> dict[str, Any]:
+    kwargs: dict[str, Any] = {}
+    used_attrs: set[str] = set(_CONDITIONS)
+    used_children: set[int] = set()
+    takes_children = False
+    for field, spec in declared_fields(cls):
+        name = frontend_name(field, spec)
+        names = (name, *spec.aliases)
+        what = f"{entity.tag}.{name}"
+        if spec.kind is Kind.CHILDREN:
+            takes_children = True
+            continue
+        present = [n for n in names if n in entity.attributes]
+        if len(present) > 1:
+            raise ParseError(f"{what}: give either '{present[0]}' or '{present[1]}', not both",
+                             entity.attributes[present[1]].location)
+        if spec.kind in (Kind.ENTRIES, Kind.ACTIONS) and entity.nested_in_children:
+            nested = [(i, c) for i, c in enumerate(entity.children) if c.tag in names]
+            if nested:
+                used_children.update(i for i, _ in nested)
+                kwargs[field.name] = _nested_xml(spec, nested, registry, what)
+                continue
+        if not present:
+            if spec.required:
+                raise ParseError(f"'{entity.tag}' needs the attribute '{name}'"
+                                 + (f" ({spec.doc})" if spec.doc else ""), entity.location)
+            continue
+        used_attrs.add(present[0])
+        kwargs[field.name] = _value(entity.attributes[present[0]], spec, registry, what)
+    _reject_leftovers(entity, cls, used_attrs)
+    children = [c for i, c in enumerate(entity.children) if i not in used_children]
+    if takes_children:
+        field_name = next(f.name for f, s in declared_fields(cls) if s.kind is Kind.CHILDREN)
+        kwargs[field_name] = [build_action(c, registry) for c in children]
+    elif children:
+        raise ParseError(f"'{entity.tag}' takes no child tag '{children[0].tag}'",
+                         children[0].location)
+    return kwargs
+
+
+def _value(attribute: Attribute, spec: Any, registry: Registry, what: str) -> Any:
+    value = attribute.value
+    if spec.kind is Kind.ENTRIES:
+        if not isinstance(value, list):
+            raise ParseError(f"{what}: expected a list of maps", attribute.location)
+        return [_record(spec.entry, e, registry, what) for e in value]
+    if spec.kind is Kind.ACTIONS:
+        if isinstance(value, list):
+            return [build_action(e, registry) for e in value]
+        return value  # a word such as on_exit: shutdown; the action checks it
+    if isinstance(value, list):
+        raise ParseError(f"{what}: expected a value, not a list", attribute.location)
+    if spec.kind is Kind.NAME:
+        return value
+    text = parse_substitutions(attribute, registry)
+    if spec.kind in (Kind.BOOL, Kind.FLOAT, Kind.INT) or spec.choices:
+        if is_literal(text):
+            try:
+                return coerce(spec.kind, value, what, spec)
+            except ParseError as exc:
+                raise exc.at(attribute.location) from None
+    return text
+
+
+def _nested_xml(spec: Any, nested: list[tuple[int, Entity]], registry: Registry,
+                what: str) -> list[Any]:
+    if spec.kind is Kind.ENTRIES:
+        return [_record(spec.entry, e, registry, what) for _, e in nested]
+    return [build_action(c, registry) for _, e in nested for c in e.children]
+
+
+def _record(cls: type, entity: Entity, registry: Registry, what: str) -> Any:
+    kwargs: dict[str, Any] = {}
+    used: set[str] = set()
+    for field, spec in declared_fields(cls):
+        name = frontend_name(field, spec)
+        if name in entity.attributes:
+            used.add(name)
+            kwargs[field.name] = _value(entity.attributes[name], spec, registry, what)
+        elif spec.required:
+            raise ParseError(f"{what}: each entry needs '{name}'", entity.location)
+    valid = [frontend_name(f, s) for f, s in declared_fields(cls)]
+    for key, attribute in entity.attributes.items():
+        if key not in used:
+            raise ParseError(f"{what}: unknown key '{key}'{did_you_mean(key, valid)}; "
+                             f"entries take {', '.join(valid)}", attribute.location)
+    if entity.children:
+        raise ParseError(f"{what}: entries take no child tags", entity.children[0].location)
+    return cls(**kwargs)
+
+
+def _reject_leftovers(entity: Entity, cls: type, used: set[str]) -> None:
+    valid = [n for f, s in declared_fields(cls) if s.kind is not Kind.CHILDREN
+             for n in (frontend_name(f, s), *s.aliases)] + list(_CONDITIONS)
+    for key, attribute in entity.attributes.items():
+        if key not in used:
+            raise ParseError(
+                f"'{entity.tag}' has no attribute '{key}'{did_you_mean(key, valid)}; "
+                f"valid: {', '.join(sorted(set(valid)))}", attribute.location)
+
+
+def _condition(entity: Entity, registry: Registry) -> Condition | None:
+    given = [k for k in _CONDITIONS if k in entity.attributes]
+    if len(given) == 2:
+        raise ParseError(f"'{entity.tag}' has both 'if' and 'unless'; use one",
+                         entity.attributes["unless"].location)
+    if not given:
+        return None
+    attribute = entity.attributes[given[0]]
+    text = parse_substitutions(attribute, registry)
+    if is_literal(text) and attribute.value.strip().lower() not in ("true", "false", "1", "0"):
+        raise ParseError(f"{given[0]}: expected true, false, 1 or 0, got '{attribute.value}'",
+                         attribute.location)
+    return Condition(text, negate=given[0] == "unless", where=attribute.location)
+
+
+# --- substitutions ------------------------------------------------------------------------
+def parse_substitutions(attribute: Attribute, registry: Registry) -> Text_:
+    assert isinstance(attribute.value, str)
+    try:
+        parts = parse_text(attribute.value)
+    except SubstitutionSyntaxError as exc:
+        raise ParseError(exc.message, attribute.text_location(exc.offset)) from None
+    return tuple(_part(p, attribute, registry) for p in parts)
+
+
+def _part(part: str | Call, attribute: Attribute, registry: Registry) -> Substitution:
+    if isinstance(part, str):
+        return Text(part)
+    where = attribute.text_location(part.offset)
+    cls = registry.find_substitution(part.name)
+    if cls is None:
+        hint = did_you_mean(part.name, registry.known('substitution'))
+        raise ParseError(f"unknown substitution '$({part.name})'{hint}", where)
+    args = [tuple(_part(p, attribute, registry) for p in arg) for arg in part.args]
+    try:
+        return cls.from_args(args, where)
+    except LaunchError as exc:
+        raise exc.at(where) from None
+
+

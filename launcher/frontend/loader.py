@@ -1,0 +1,58 @@
+"""Load a launch file of any format into a LaunchDescription, by its extension."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from launcher.description.action import LaunchDescription
+from launcher.errors import Location, ParseError
+from launcher.frontend.builder import build_description
+from launcher.frontend.python_loader import load_python
+from launcher.frontend.xml_loader import load_xml
+from launcher.frontend.yaml_loader import load_yaml
+
+FORMATS = (".yaml", ".yml", ".xml", ".py")
+# Parsed YAML/XML descriptions, by path and modification time: including a file N times (one
+# spawn file per robot) parses it once. Descriptions are not changed by running them.
+_cache: dict[Path, tuple[int, LaunchDescription]] = {}
+
+
+def launch_format(path: Path) -> str:
+    for suffix in FORMATS:
+        if path.name.endswith(suffix):
+            return suffix
+    raise ParseError(
+        f"cannot tell the launch file's format from its name; expected a name ending in "
+        f"{', '.join(FORMATS)}", Location(str(path)))
+
+
+def load_file(path: Path) -> LaunchDescription:
+    path = Path(os.path.abspath(path))
+    kind = launch_format(path)
+    if kind == ".py":
+        return load_python(path)
+    try:
+        stamp = path.stat().st_mtime_ns
+        cached = _cache.get(path)
+        if cached and cached[0] == stamp:
+            return cached[1]
+        data = path.read_bytes()
+    except FileNotFoundError:
+        raise ParseError("no such launch file", Location(str(path))) from None
+    except IsADirectoryError:
+        raise ParseError("this is a folder, not a launch file", Location(str(path))) from None
+    except OSError as exc:
+        raise ParseError(f"cannot read: {exc.strerror}", Location(str(path))) from None
+    if kind == ".xml":
+        root = load_xml(data, str(path))
+    else:
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise ParseError(f"not UTF-8 text: {exc.reason} at byte {exc.start}",
+                             Location(str(path))) from None
+        root = load_yaml(text, str(path))
+    description = build_description(root, path)
+    _cache[path] = (stamp, description)
+    return description

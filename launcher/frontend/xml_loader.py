@@ -1,0 +1,43 @@
+"""XML launch files: a `<launch>` root; attributes are strings; nested entities are child tags.
+
+expat is used directly so that every element keeps its line and column.
+"""
+
+from __future__ import annotations
+
+from xml.parsers import expat
+
+from launcher.errors import Location, ParseError
+from launcher.frontend.entity import Attribute, Entity
+
+
+def load_xml(data: bytes, file: str) -> Entity:
+    """Parse an XML launch file into its root `launch` entity."""
+    parser = expat.ParserCreate()
+    stack: list[Entity] = []
+    roots: list[Entity] = []
+
+    def start(tag: str, attrs: dict[str, str]) -> None:
+        where = Location(file, parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+        entity = Entity(tag, where, nested_in_children=True)
+        entity.attributes = {k: Attribute(v, where) for k, v in attrs.items()}
+        (stack[-1].children if stack else roots).append(entity)
+        stack.append(entity)
+
+    def end(_tag: str) -> None:
+        stack.pop()
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    try:
+        parser.Parse(data, True)
+    except expat.ExpatError as exc:
+        where = Location(file, exc.lineno, exc.offset + 1)
+        raise ParseError(f"malformed XML: {expat.ErrorString(exc.code)}", where) from None
+    root = roots[0]
+    if root.tag != "launch":
+        raise ParseError(f"the root element is <{root.tag}>; expected <launch>", root.location)
+    unexpected = sorted(root.attributes)
+    if unexpected and unexpected != ["version"]:
+        raise ParseError(f"<launch> takes no attribute '{unexpected[0]}'", root.location)
+    return root

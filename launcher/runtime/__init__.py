@@ -1,0 +1,1 @@
+"""The event loop: launch context, events, process supervision, output and logs."""

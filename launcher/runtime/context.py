@@ -1,0 +1,131 @@
+"""The launch context: what substitutions read and actions change while a launch runs.
+
+Configurations (launch arguments and `let`s) and the environment for new processes live in a
+stack of scopes that `group` and scoped includes push and pop. Loop variables live in their own
+stack, so that a loop does not scope the `let`s in its body (as in ROS 2).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, NamedTuple
+
+
+@dataclass
+class Scope:
+    configurations: dict[str, str]
+    environment: dict[str, str]
+
+    def copy(self) -> Scope:
+        return Scope(dict(self.configurations), dict(self.environment))
+
+
+class Snapshot(NamedTuple):
+    """A frozen copy of the context, to run deferred actions (timers, handlers) in later."""
+
+    scope: Scope
+    locals: dict[str, str]
+    file: Path | None
+
+
+class LaunchContext:
+    """State shared by the actions of one launch.
+
+    `service` is the runtime that runs processes and timers; it is None when a launch file is
+    only inspected (`--show-args`, `--print`), and actions that need it must check.
+    `load_description` turns a launch file path into a description (set by the frontend).
+    """
+
+    def __init__(
+        self,
+        environment: Mapping[str, str] | None = None,
+        configurations: Mapping[str, str] | None = None,
+        service: Any = None,
+        log_dir: Path | None = None,
+    ) -> None:
+        env = dict(os.environ if environment is None else environment)
+        self.initial_environment = dict(env)
+        self._scopes = [Scope(dict(configurations or {}), env)]
+        self._locals: list[dict[str, str]] = [{}]
+        self._files: list[Path | None] = []
+        self.service = service
+        self.log_dir = log_dir
+        self.anonymous_names: dict[str, str] = {}
+        self.load_description: Callable[[Path], Any] | None = None
+
+    # --- scopes -------------------------------------------------------------------------
+    @property
+    def scope(self) -> Scope:
+        return self._scopes[-1]
+
+    @property
+    def configurations(self) -> dict[str, str]:
+        return self.scope.configurations
+
+    @property
+    def environment(self) -> dict[str, str]:
+        return self.scope.environment
+
+    def push_scope(self, forwarding: bool = True, keep: Mapping[str, str] | None = None) -> None:
+        scope = self.scope.copy()
+        if not forwarding:
+            scope.configurations = {}
+        scope.configurations.update(keep or {})
+        self._scopes.append(scope)
+
+    def pop_scope(self) -> None:
+        if len(self._scopes) == 1:
+            raise RuntimeError("pop_scope without a matching push_scope")
+        self._scopes.pop()
+
+    # --- loop variables -----------------------------------------------------------------
+    @property
+    def locals(self) -> dict[str, str]:
+        return self._locals[-1]
+
+    def push_locals(self, values: Mapping[str, str] | None = None) -> None:
+        self._locals.append({**self.locals, **(values or {})})
+
+    def pop_locals(self) -> None:
+        self._locals.pop()
+
+    # --- the file being read, for $(dirname) and $(filename) -----------------------------
+    @property
+    def current_file(self) -> Path | None:
+        return self._files[-1] if self._files else None
+
+    @property
+    def open_files(self) -> list[Path | None]:
+        return list(self._files)
+
+    def push_file(self, path: Path | None) -> None:
+        self._files.append(path)
+
+    def pop_file(self) -> None:
+        self._files.pop()
+
+    def log(self, level: str, message: str) -> None:
+        """A message from an action or substitution: to the run's output and log."""
+        if self.service is not None:
+            self.service.log(level, "launch", message)
+        else:
+            sys.stderr.write(f"[{level}] [launch]: {message}\n")
+
+    # --- deferred work ------------------------------------------------------------------
+    def snapshot(self) -> Snapshot:
+        return Snapshot(self.scope.copy(), dict(self.locals), self.current_file)
+
+    def enter(self, snapshot: Snapshot) -> None:
+        """Push a scope, loop variables and file equal to the snapshot's (undo with leave)."""
+        self._scopes.append(snapshot.scope.copy())
+        self._locals.append(dict(snapshot.locals))
+        self._files.append(snapshot.file)
+
+    def leave(self) -> None:
+        self._scopes.pop()
+        self._locals.pop()
+        self._files.pop()

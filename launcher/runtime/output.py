@@ -1,0 +1,64 @@
+"""Output as typed records and a pure formatter over them.
+
+Every line from every process, and every message of the launcher itself, becomes a `Record`.
+`Printer.format` turns one into a line (`[name-1] text`, `[INFO] [launch]: text`), coloured only
+when writing to a terminal; `Printer.emit` writes it.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+import zlib
+from dataclasses import dataclass, field
+from typing import NamedTuple, TextIO
+
+LEVELS = ("DEBUG", "INFO", "WARN", "ERROR")
+
+
+class Record(NamedTuple):
+    source: str  # a process label (`talker-1`) or `launch`
+    text: str
+    stream: str = "stdout"  # stdout | stderr | launcher
+    level: str | None = None  # for launcher messages
+    time: float = 0.0  # seconds since the epoch; 0 means "when written"
+
+
+_COLORS = (31, 32, 33, 34, 35, 36, 91, 92, 93, 94, 95, 96)
+_LEVEL_COLORS = {"DEBUG": 2, "INFO": 0, "WARN": 33, "ERROR": 31}
+
+
+@dataclass
+class Printer:
+    out: TextIO = field(default_factory=lambda: sys.stdout)
+    color: bool | None = None  # None: only when `out` is a terminal
+
+    def __post_init__(self) -> None:
+        if self.color is None:
+            self.color = bool(getattr(self.out, "isatty", lambda: False)())
+
+    def format(self, record: Record) -> str:
+        if record.level is not None:
+            line = f"[{record.level}] [{record.source}]: {record.text}"
+            code = _LEVEL_COLORS.get(record.level, 0)
+            return f"\x1b[{code}m{line}\x1b[0m" if self.color and code else line
+        label = f"[{record.source}]"
+        if self.color:
+            code = _COLORS[zlib.crc32(record.source.encode()) % len(_COLORS)]
+            label = f"\x1b[{code}m{label}\x1b[0m"
+        return f"{label} {record.text}"
+
+    def emit(self, record: Record) -> None:
+        try:
+            self.out.write(self.format(record) + "\n")
+            self.out.flush()
+        except (BrokenPipeError, ValueError):  # stdout closed: keep supervising quietly
+            pass
+
+
+def plain(record: Record) -> str:
+    """The record as it goes into log files: with a timestamp, never coloured."""
+    stamp = f"{record.time or time.time():.7f}"
+    if record.level is not None:
+        return f"{stamp} [{record.level}] [{record.source}]: {record.text}"
+    return f"{stamp} [{record.source}] {record.text}"

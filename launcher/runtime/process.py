@@ -1,0 +1,342 @@
+"""Supervision of one process: an explicit state machine, escalation and respawn.
+
+    STARTING ──spawned──▶ RUNNING ──exited, respawn due──▶ BACKOFF ──delay over──▶ STARTING
+        │                    │  └──exited, no respawn──▶ EXITED
+        └─spawn failed─▶ FATAL   └──stop()──▶ STOPPING ──group gone──▶ EXITED
+                                  BACKOFF ──stop()──▶ EXITED
+
+Each process runs in its own session, so it leads its own process group. Stopping sends
+SIGINT to the whole group, SIGTERM after `sigterm_timeout`, SIGKILL after `sigkill_timeout`
+more; `escalate()` sends the next signal at once. When a process exits on its own, anything it
+left running in its group is killed: nothing is left behind.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import os
+import pty
+import signal
+import subprocess
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from enum import Enum
+from typing import Any, NamedTuple
+
+from launcher.runtime.loop import EventLoop, Timer
+from launcher.runtime.output import Record
+
+GIVE_UP_AFTER_SIGKILL = 2.0  # seconds; a process in uninterruptible sleep cannot be waited on
+STREAM_GRACE = 0.5  # seconds to keep reading after an exit (something else may hold the pipe)
+GROUP_POLL = 0.01  # seconds between checks that a stopped group is empty
+
+
+class State(Enum):
+    STARTING = "starting"
+    RUNNING = "running"
+    BACKOFF = "backoff"
+    STOPPING = "stopping"
+    EXITED = "exited"
+    FATAL = "fatal"
+
+
+_EDGES = {
+    (State.STARTING, State.RUNNING),  # spawned
+    (State.STARTING, State.FATAL),  # a respawn could not spawn
+    (State.RUNNING, State.EXITED),  # exited on its own, no respawn due
+    (State.RUNNING, State.BACKOFF),  # exited on its own, respawn due after the delay
+    (State.RUNNING, State.STOPPING),  # the launcher asked it to stop
+    (State.STOPPING, State.EXITED),  # its group is gone (or SIGKILL did not help in time)
+    (State.BACKOFF, State.STARTING),  # respawn delay over
+    (State.BACKOFF, State.EXITED),  # stopped while waiting to respawn
+}
+
+
+@dataclass
+class ProcessSpec:
+    label: str
+    argv: list[str]
+    env: dict[str, str]
+    cwd: str | None = None
+    emulate_tty: bool = False
+    # For each stream, where its lines go: any of "screen", "log", "own_log".
+    stdout_to: frozenset[str] = frozenset({"log"})
+    stderr_to: frozenset[str] = frozenset({"log", "screen"})
+    sigterm_timeout: float = 5.0
+    sigkill_timeout: float = 5.0
+    respawn: bool = False
+    respawn_delay: float = 0.0
+    respawn_max_retries: int = -1
+    origin: Any = None  # the action that asked for this process (for event handlers)
+
+
+class ProcessHooks(NamedTuple):
+    """What a process tells its supervisor; all called on the loop."""
+
+    line: Callable[[ManagedProcess, Record, frozenset[str]], None]
+    started: Callable[[ManagedProcess], None]
+    exited: Callable[[ManagedProcess, bool], None]  # (process, respawn pending)
+    log: Callable[[str, str, str], None]  # (level, source, message)
+    group: Callable[[int, bool], None]  # (pgid, alive): for the watchdog
+
+
+def describe_exit(code: int | None) -> str:
+    if code is None:
+        return "could not be waited for"
+    if code < 0:
+        try:
+            return f"was killed by {signal.Signals(-code).name}"
+        except ValueError:
+            return f"was killed by signal {-code}"
+    return f"exited with code {code}"
+
+
+@dataclass
+class ManagedProcess:
+    spec: ProcessSpec
+    hooks: ProcessHooks
+    loop: EventLoop
+    state: State = State.STARTING
+    pid: int | None = None
+    returncode: int | None = None
+    respawns: int = 0
+    failed: bool = False  # it exited with a non-zero code that the launcher did not cause
+    _popen: subprocess.Popen | None = field(default=None, repr=False)
+    _streams: list[int] = field(default_factory=list, repr=False)  # open output fds
+    _leader_gone: bool = False
+    _timer: Timer | None = field(default=None, repr=False)  # respawn or escalation step
+    _signals_left: list[tuple[signal.Signals, float]] = field(default_factory=list, repr=False)
+    _stop_requested: bool = False
+
+    @property
+    def label(self) -> str:
+        return self.spec.label
+
+    @property
+    def alive(self) -> bool:
+        return self.state in (State.STARTING, State.RUNNING, State.BACKOFF, State.STOPPING)
+
+    def _to(self, new: State) -> None:
+        if (self.state, new) not in _EDGES:
+            raise RuntimeError(f"{self.label}: no transition {self.state.name} -> {new.name}")
+        self.state = new
+
+    def _log(self, level: str, message: str) -> None:
+        self.hooks.log(level, self.label, message)
+
+    # --- starting ---------------------------------------------------------------------------
+    def spawn(self) -> None:
+        """Start the process now. OSError (not found, not executable, bad cwd) propagates."""
+        out_r, out_w = _channel(self.spec.emulate_tty)
+        err_r, err_w = _channel(self.spec.emulate_tty)
+        try:
+            self._popen = subprocess.Popen(
+                self.spec.argv, stdin=subprocess.DEVNULL, stdout=out_w, stderr=err_w,
+                cwd=self.spec.cwd, env=self.spec.env, start_new_session=True, close_fds=True,
+            )
+        except BaseException:
+            os.close(out_r)
+            os.close(err_r)
+            raise
+        finally:
+            os.close(out_w)
+            os.close(err_w)
+        self.pid, self.returncode, self._leader_gone = self._popen.pid, None, False
+        self.hooks.group(self.pid, True)
+        self._streams = [out_r, err_r]
+        for fd, stream in ((out_r, "stdout"), (err_r, "stderr")):
+            os.set_blocking(fd, False)
+            self.loop.add_reader(fd, self._on_readable, fd, stream, bytearray())
+        self._watch_exit()
+        self._to(State.RUNNING)
+        self.hooks.started(self)
+
+    def _watch_exit(self) -> None:
+        try:
+            pidfd = os.pidfd_open(self.pid)  # type: ignore[arg-type]
+        except (AttributeError, OSError):  # no pidfd on this system: poll
+            self.loop.call_later(GROUP_POLL, self._poll_exit)
+            return
+        self.loop.add_reader(pidfd, self._on_pidfd, pidfd)
+
+    def _on_pidfd(self, pidfd: int) -> None:
+        self.loop.remove_reader(pidfd)
+        os.close(pidfd)
+        self._poll_exit()
+
+    def _poll_exit(self) -> None:
+        assert self._popen is not None
+        if self._popen.poll() is None:
+            self.loop.call_later(GROUP_POLL, self._poll_exit)
+            return
+        self.returncode = self._popen.returncode
+        self._leader_gone = True
+        if self.state is State.RUNNING:  # exited on its own: end what it left in its group
+            self._kill_group(signal.SIGKILL)
+        self.loop.call_later(STREAM_GRACE, self._close_streams, self.pid)
+        self._maybe_finish()
+
+    # --- output -----------------------------------------------------------------------------
+    def _on_readable(self, fd: int, stream: str, buf: bytearray) -> None:
+        try:
+            data = os.read(fd, 65536)
+        except BlockingIOError:
+            return
+        except OSError as exc:  # a pty reads EIO once the other side is closed
+            if exc.errno != errno.EIO:
+                raise
+            data = b""
+        if not data:
+            if buf:
+                self._emit(stream, bytes(buf))
+                buf.clear()
+            self._close_stream(fd)
+            return
+        buf += data
+        if b"\n" in data:
+            *lines, rest = bytes(buf).split(b"\n")
+            buf[:] = rest
+            for line in lines:
+                self._emit(stream, line)
+        if len(buf) > 1 << 20:  # an endless line: pass it on in pieces
+            self._emit(stream, bytes(buf))
+            buf.clear()
+
+    def _emit(self, stream: str, raw: bytes) -> None:
+        text = raw.decode("utf-8", errors="replace").rstrip("\r")
+        targets = self.spec.stdout_to if stream == "stdout" else self.spec.stderr_to
+        self.hooks.line(self, Record(self.label, text, stream), targets)
+
+    def _close_stream(self, fd: int) -> None:
+        if fd in self._streams:
+            self._streams.remove(fd)
+            self.loop.remove_reader(fd)
+            os.close(fd)
+            self._maybe_finish()
+
+    def _close_streams(self, pid: int | None = None) -> None:
+        if self._leader_gone and pid in (None, self.pid):
+            for fd in list(self._streams):
+                self._close_stream(fd)
+
+    def _maybe_finish(self) -> None:
+        if not self._leader_gone or self._streams:
+            return
+        if self.state is State.RUNNING:
+            self._on_own_exit()
+        elif self.state is State.STOPPING:
+            self._check_group_gone()
+
+    # --- exiting on its own -----------------------------------------------------------------
+    def _on_own_exit(self) -> None:
+        code, spec = self.returncode, self.spec
+        self.failed = self.failed or code != 0
+        retries_left = spec.respawn_max_retries < 0 or self.respawns < spec.respawn_max_retries
+        if spec.respawn and retries_left and not self._stop_requested:
+            self._to(State.BACKOFF)
+            self.respawns += 1
+            total = "" if spec.respawn_max_retries < 0 else f" of {spec.respawn_max_retries}"
+            self._log("WARN" if code else "INFO",
+                      f"process {describe_exit(code)}; respawning in {spec.respawn_delay:g} s "
+                      f"(attempt {self.respawns}{total})")
+            self._gone(respawn=True)
+            self._timer = self.loop.call_later(spec.respawn_delay, self._respawn)
+            return
+        if code == 0:
+            self._log("INFO", f"process has finished cleanly [pid {self.pid}]")
+        else:
+            self._log("ERROR", f"process {describe_exit(code)} "
+                               f"[pid {self.pid}, cmd '{' '.join(spec.argv)}']")
+        self._to(State.EXITED)
+        self._gone(respawn=False)
+
+    def _gone(self, respawn: bool) -> None:
+        if self.pid is not None:
+            self.hooks.group(self.pid, False)
+        self.hooks.exited(self, respawn)
+
+    def _respawn(self) -> None:
+        self._timer = None
+        self._to(State.STARTING)
+        try:
+            self.spawn()
+        except OSError as exc:
+            self._to(State.FATAL)
+            self._log("ERROR", f"could not respawn: {exc}")
+            self.hooks.exited(self, False)
+
+    # --- stopping ---------------------------------------------------------------------------
+    def stop(self) -> None:
+        """Begin the orderly stop. Safe to call more than once."""
+        self._stop_requested = True
+        if self.state is State.BACKOFF:
+            if self._timer is not None:
+                self._timer.cancel()
+            self._to(State.EXITED)
+            self.hooks.exited(self, False)
+        elif self.state is State.RUNNING:
+            self._to(State.STOPPING)
+            self._signals_left = [(signal.SIGINT, self.spec.sigterm_timeout),
+                                  (signal.SIGTERM, self.spec.sigkill_timeout),
+                                  (signal.SIGKILL, GIVE_UP_AFTER_SIGKILL)]
+            self._next_signal()
+
+    def escalate(self) -> None:
+        """Send the next signal now instead of waiting."""
+        if self.state is State.STOPPING and self._signals_left:
+            self._next_signal()
+
+    def _next_signal(self) -> None:
+        if self._timer is not None:
+            self._timer.cancel()
+        if not self._signals_left:  # SIGKILL was sent long ago: stop waiting
+            self._log("ERROR", "still not gone after SIGKILL; giving up on it")
+            self._finish_stop()
+            return
+        sig, wait = self._signals_left.pop(0)
+        if sig is not signal.SIGINT:
+            self._log("WARN", f"still running; sending {sig.name}")
+        self._kill_group(sig)
+        self._timer = self.loop.call_later(wait, self._next_signal)
+        self._check_group_gone()
+
+    def _check_group_gone(self) -> None:
+        if self.state is not State.STOPPING or not self._leader_gone:
+            return
+        if self._group_alive():  # the leader is gone but others in its group are not
+            self.loop.call_later(GROUP_POLL, self._check_group_gone)
+            return
+        self._finish_stop()
+
+    def _finish_stop(self) -> None:
+        if self.state is not State.STOPPING:
+            return
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        self._to(State.EXITED)  # before closing streams, which call back into _maybe_finish
+        self._close_streams()
+        if self._leader_gone:
+            self._log("INFO", f"process stopped: it {describe_exit(self.returncode)} "
+                              f"[pid {self.pid}]")
+        self._gone(respawn=False)
+
+    def _kill_group(self, sig: int) -> None:
+        if self.pid is not None:
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.killpg(self.pid, sig)
+
+    def _group_alive(self) -> bool:
+        try:
+            os.killpg(self.pid, 0)  # type: ignore[arg-type]
+        except ProcessLookupError:
+            return False
+        except PermissionError:
+            return True
+        return True
+
+
+def _channel(tty: bool) -> tuple[int, int]:
+    """A (read, write) pair for one output stream: a pipe, or a pty when emulating a tty."""
+    return pty.openpty() if tty else os.pipe()

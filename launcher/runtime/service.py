@@ -1,0 +1,275 @@
+"""The launch service: visits actions, runs processes and timers, shuts down, and exits.
+
+Actions are visited depth first on the event loop. Processes are supervised by
+`ManagedProcess`; a watchdog process (`reaper.py`) ends them if this process dies.
+Exit status: 0 when everything ended cleanly; 1 when the launch description was invalid, an
+action failed, or a process exited with a non-zero code the launcher did not cause; 130 after
+SIGINT and 143 after SIGTERM.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+from collections import deque
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any
+
+from launcher.errors import LaunchError
+from launcher.runtime import events, reaper
+from launcher.runtime.context import LaunchContext
+from launcher.runtime.logs import RunLog
+from launcher.runtime.loop import EventLoop, Timer
+from launcher.runtime.output import Printer, Record
+from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec
+
+
+class LaunchService:
+    def __init__(
+        self,
+        *,
+        printer: Printer | None = None,
+        log_root: Path | None = None,
+        environment: dict[str, str] | None = None,
+        configurations: dict[str, str] | None = None,
+        launch_prefix: str = "",
+        debug: bool = False,
+        loop: EventLoop | None = None,
+    ) -> None:
+        self.printer = printer or Printer()
+        self.run_log = RunLog(log_root) if log_root is not None else None
+        self.context = LaunchContext(
+            environment, configurations, service=self,
+            log_dir=self.run_log.folder if self.run_log else None,
+        )
+        self.loop = loop or EventLoop()
+        self.launch_prefix = launch_prefix
+        self.debug = debug
+        self.processes: list[ManagedProcess] = []
+        self._queue: deque[Any] = deque()
+        self._draining = False
+        self._handlers: list[events.EventHandler] = []
+        self._timers: dict[Timer, bool] = {}  # timer -> cancel on shutdown
+        self._label_count = 0
+        self._shutting_down = False
+        self._signal_code: int | None = None
+        self._signals = 0
+        self._error = False
+        self._finished = False
+        self._watchdog: tuple[int, int] | None = None  # (pid, pipe fd)
+        self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
+                                   exited=self._on_exited, log=self.log, group=self._on_group)
+
+    # --- entry point ------------------------------------------------------------------------
+    def run(self, description: Any) -> int:
+        """Run the description until the launch ends; return the exit status."""
+        self._start_watchdog()  # first: the fork must not inherit signal handling
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            self.loop.add_signal_handler(sig, self._on_signal)
+        try:
+            if self.run_log is not None:
+                self.log("INFO", "launch", f"All log files can be found below "
+                                           f"{self.run_log.folder}")
+            self.schedule([description])
+            self.loop.run()
+        finally:
+            self.loop.close()
+            self._stop_watchdog()
+            if self.run_log is not None:
+                self.run_log.close()
+        return self.exit_code
+
+    @property
+    def exit_code(self) -> int:
+        if self._signal_code is not None:
+            return self._signal_code
+        if self._error or any(p.failed for p in self.processes):
+            return 1
+        return 0
+
+    # --- visiting actions -------------------------------------------------------------------
+    def schedule(self, actions: Sequence[Any]) -> None:
+        """Queue actions to visit after the ones already queued."""
+        self._queue.extend(actions)
+        if not self._draining:
+            self.loop.call_soon(self._drain)
+
+    def _drain(self) -> None:
+        self._draining = True
+        try:
+            while self._queue:
+                action = self._queue.popleft()
+                try:
+                    more = action.visit(self.context)
+                except LaunchError as exc:
+                    self.fail(exc)
+                    continue
+                if more:
+                    self._queue.extendleft(reversed(list(more)))
+        finally:
+            self._draining = False
+        self._check_idle()
+
+    def fail(self, exc: LaunchError) -> None:
+        """An action failed: report it once and shut the launch down."""
+        self._error = True
+        self.log("ERROR", "launch", str(exc))
+        if self.debug:
+            import traceback  # only with --debug: start-up time
+
+            self.log("DEBUG", "launch", "".join(traceback.format_exception(exc)).rstrip())
+        self.shutdown(f"error: {exc.message}")
+
+    # --- processes --------------------------------------------------------------------------
+    @property
+    def shutting_down(self) -> bool:
+        return self._shutting_down
+
+    def next_label(self, base: str) -> str:
+        """`base-N`, N counting every process of this run (as ROS 2 numbers them)."""
+        self._label_count += 1
+        return f"{base}-{self._label_count}"
+
+    def start_process(self, spec: ProcessSpec) -> ManagedProcess | None:
+        """Spawn now; OSError (not found, not executable, bad cwd) goes to the caller."""
+        if self._shutting_down:
+            self.log("DEBUG", spec.label, "not started: the launch is shutting down")
+            return None
+        process = ManagedProcess(spec, self._hooks, self.loop)
+        process.spawn()
+        self.processes.append(process)
+        return process
+
+    def _on_line(self, process: ManagedProcess, record: Record, targets: frozenset[str]) -> None:
+        if "screen" in targets:
+            self.printer.emit(record)
+        if self.run_log is not None:
+            if "log" in targets:
+                self.run_log.write(record)
+            if "own_log" in targets:
+                self.run_log.write_own(record)
+        if self._handlers:
+            self.emit(events.ProcessIO(process.spec.origin, process.label, record.stream,
+                                       record.text))
+
+    def _on_started(self, process: ManagedProcess) -> None:
+        self.log("INFO", process.label, f"process started with pid [{process.pid}]")
+        self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
+
+    def _on_exited(self, process: ManagedProcess, respawn_pending: bool) -> None:
+        self.emit(events.ProcessExited(process.spec.origin, process.label, process.pid,
+                                       process.returncode))
+        self._check_idle()
+
+    def _on_group(self, pgid: int, alive: bool) -> None:
+        if self._watchdog is not None:
+            try:
+                os.write(self._watchdog[1], f"{'+' if alive else '-'}{pgid}\n".encode())
+            except OSError:  # the watchdog is gone; supervision goes on without it
+                self._watchdog = None
+
+    # --- events and timers ------------------------------------------------------------------
+    def register_handler(self, handler: events.EventHandler) -> None:
+        self._handlers.append(handler)
+
+    def unregister_handler(self, handler: events.EventHandler) -> None:
+        if handler in self._handlers:
+            self._handlers.remove(handler)
+
+    def emit(self, event: events.Event) -> None:
+        for handler in list(self._handlers):
+            if not handler.matches(event):
+                continue
+            try:
+                actions = handler.handle(event, self.context)
+            except LaunchError as exc:
+                self.fail(exc)
+                continue
+            if actions:
+                self.schedule(actions)
+
+    def add_timer(self, period: float, callback: Callable[[], None],
+                  cancel_on_shutdown: bool = True) -> Timer:
+        def fire() -> None:
+            self._timers.pop(timer, None)
+            callback()
+            self._check_idle()
+
+        timer = self.loop.call_later(period, fire)
+        self._timers[timer] = cancel_on_shutdown
+        return timer
+
+    def cancel_timer(self, timer: Timer) -> None:
+        if self._timers.pop(timer, None) is not None:
+            timer.cancel()
+            self._check_idle()
+
+    # --- shutting down ----------------------------------------------------------------------
+    def shutdown(self, reason: str) -> None:
+        """End the launch: OnShutdown handlers run, timers stop, processes are stopped."""
+        if self._shutting_down:
+            return
+        self._shutting_down = True
+        self.log("DEBUG", "launch", f"shutting down: {reason}")
+        self._queue.clear()
+        self.emit(events.Shutdown(reason))
+        for timer, cancel in list(self._timers.items()):
+            if cancel:
+                timer.cancel()
+                del self._timers[timer]
+        for process in self.processes:
+            process.stop()
+        self._check_idle()
+
+    def _on_signal(self, sig: int) -> None:
+        self._signals += 1
+        name = signal.Signals(sig).name
+        if self._signals == 1:
+            self._signal_code = 128 + sig
+            what = "user interrupted with ctrl-c (SIGINT)" if sig == signal.SIGINT else \
+                f"received {name}"
+            self.log("WARN", "launch", f"{what}: stopping all processes")
+            self.shutdown(f"signal {name}")
+        else:
+            self.log("WARN", "launch", f"{name} again: escalating to the next signal")
+            for process in self.processes:
+                process.escalate()
+
+    def _check_idle(self) -> None:
+        if self._finished or self._queue or self._draining or self._timers:
+            return
+        if any(p.alive for p in self.processes):
+            return
+        self._finished = True
+        self.loop.stop()
+
+    # --- the watchdog -----------------------------------------------------------------------
+    def _start_watchdog(self) -> None:
+        try:
+            self._watchdog = reaper.fork_watchdog()
+        except OSError as exc:  # the launch still runs; only the SIGKILL guarantee is lost
+            self.log("WARN", "launch", f"could not start the process watchdog: {exc}")
+
+    def _stop_watchdog(self) -> None:
+        if self._watchdog is None:
+            return
+        pid, fd = self._watchdog
+        self._watchdog = None
+        os.close(fd)  # EOF: with every group gone, it exits at once
+        os.waitpid(pid, 0)
+
+    # --- the launcher's own messages --------------------------------------------------------
+    def log(self, level: str, source: str, message: str) -> None:
+        record = Record(source, message, "launcher", level)
+        if self.run_log is not None:
+            self.run_log.write(record)
+        if level != "DEBUG" or self.debug:
+            self.printer.emit(record)
+
+
+def default_environment() -> dict[str, str]:
+    """The environment children get: ours, with Python output unbuffered (as ROS 2 sets)."""
+    env = dict(os.environ)
+    env.setdefault("PYTHONUNBUFFERED", "1")
+    return env
