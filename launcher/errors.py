@@ -60,8 +60,6 @@ class ExecutionError(LaunchError):
 class UsageError(LaunchError):
     """The command line was wrong."""
 
-    exit_code = 2
-
 
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """' (did you mean 'x'?)' when a close match exists, else ''."""

@@ -122,6 +122,11 @@ def _nested_xml(spec: Any, nested: list[tuple[int, Entity]], registry: Registry,
 def _record(cls: type, entity: Entity, registry: Registry, what: str) -> Any:
     kwargs: dict[str, Any] = {}
     used: set[str] = set()
+    valid = [frontend_name(f, s) for f, s in declared_fields(cls)]
+    for key, attribute in entity.attributes.items():
+        if key not in valid:
+            raise ParseError(f"{what}: unknown key '{key}'{did_you_mean(key, valid)}; "
+                             f"entries take {', '.join(valid)}", attribute.name_location)
     for field, spec in declared_fields(cls):
         name = frontend_name(field, spec)
         if name in entity.attributes:
@@ -129,11 +134,6 @@ def _record(cls: type, entity: Entity, registry: Registry, what: str) -> Any:
             kwargs[field.name] = _value(entity.attributes[name], spec, registry, what)
         elif spec.required:
             raise ParseError(f"{what}: each entry needs '{name}'", entity.location)
-    valid = [frontend_name(f, s) for f, s in declared_fields(cls)]
-    for key, attribute in entity.attributes.items():
-        if key not in used:
-            raise ParseError(f"{what}: unknown key '{key}'{did_you_mean(key, valid)}; "
-                             f"entries take {', '.join(valid)}", attribute.location)
     if entity.children:
         raise ParseError(f"{what}: entries take no child tags", entity.children[0].location)
     return cls(**kwargs)
@@ -146,14 +146,14 @@ def _reject_leftovers(entity: Entity, cls: type, used: set[str]) -> None:
         if key not in used:
             raise ParseError(
                 f"'{entity.tag}' has no attribute '{key}'{did_you_mean(key, valid)}; "
-                f"valid: {', '.join(sorted(set(valid)))}", attribute.location)
+                f"valid: {', '.join(sorted(set(valid)))}", attribute.name_location)
 
 
 def _condition(entity: Entity, registry: Registry) -> Condition | None:
     given = [k for k in _CONDITIONS if k in entity.attributes]
     if len(given) == 2:
         raise ParseError(f"'{entity.tag}' has both 'if' and 'unless'; use one",
-                         entity.attributes["unless"].location)
+                         entity.attributes["unless"].name_location)
     if not given:
         return None
     attribute = entity.attributes[given[0]]

@@ -20,6 +20,11 @@ class Attribute:
     # Column offset of the text inside its quotes, so that errors can point into the value.
     # None when the text does not map 1:1 onto the source (block scalars, escapes).
     text_offset: int | None = None
+    key_location: Location | None = None  # where the attribute's name is written
+
+    @property
+    def name_location(self) -> Location:
+        return self.key_location or self.location
 
     def text_location(self, index: int) -> Location:
         if self.text_offset is None:

@@ -71,6 +71,7 @@ def _entity(file: str, node: yaml.Node) -> Entity:
                 entity.children = _children(file, value, entity.tag)
             else:
                 entity.attributes[name] = _attribute(file, name, value)
+                entity.attributes[name].key_location = _where(file, attr_key)
     elif not (isinstance(body, yaml.ScalarNode) and body.value in ("", "~", "null")):
         raise ParseError(
             f"'{entity.tag}' expects a map of attributes or a list of children",
@@ -98,6 +99,7 @@ def _attribute(file: str, name: str, node: yaml.Node) -> Attribute:
                 nested = Entity(name, _where(file, item))
                 for k, v in item.value:
                     nested.attributes[str(k.value)] = _attribute(file, str(k.value), v)
+                    nested.attributes[str(k.value)].key_location = _where(file, k)
                 items.append(nested)
             elif isinstance(item, yaml.ScalarNode):  # `args: [a, b]` style plain lists
                 nested = Entity(name, _where(file, item))

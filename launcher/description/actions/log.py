@@ -25,7 +25,7 @@ class Log(Action):
         self.msg = to_text(self.msg)
 
     def execute(self, context: LaunchContext) -> None:
-        spec = type(self).__dataclass_fields__["level"].metadata["launch"]
+        spec = type(self).__dataclass_fields__["level"].metadata.get("launch")
         level = LEVELS[resolve(context, self.level, Kind.TEXT, "level", spec).lower()]
         message = perform_text(context, self.msg)
         if context.service is not None:

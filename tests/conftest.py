@@ -1,0 +1,100 @@
+"""Shared fixtures: launch files written inline, the real CLI, and a leak check.
+
+Every launcher started by a test carries a unique LAUNCHER_TEST_TAG in its environment, which
+its children and grandchildren inherit; after the test, no process may still carry it.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+import uuid
+from pathlib import Path
+
+import psutil
+import pytest
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def launcher_argv() -> list[str]:
+    exe = Path(sys.executable).with_name("launcher")
+    return [str(exe)] if exe.exists() else [sys.executable, "-m", "launcher"]
+
+
+def tagged_processes(tag: str) -> list[psutil.Process]:
+    found = []
+    for proc in psutil.process_iter(["pid"]):
+        try:
+            if proc.environ().get("LAUNCHER_TEST_TAG") == tag and \
+                    proc.status() != psutil.STATUS_ZOMBIE:
+                found.append(proc)
+        except (psutil.NoSuchProcess, psutil.AccessDenied, psutil.ZombieProcess):
+            continue
+    return found
+
+
+class Workspace:
+    """A temporary folder to write launch files into and run `launcher` against."""
+
+    def __init__(self, root: Path, tag: str) -> None:
+        self.root = root
+        self.tag = tag
+        self.env = dict(os.environ, LAUNCHER_TEST_TAG=tag,
+                        LAUNCHER_LOG_DIR=str(root / "log"), PYTHONUNBUFFERED="1")
+
+    def write(self, name: str, text: str) -> Path:
+        path = self.root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(textwrap.dedent(text).lstrip("\n"))
+        return path
+
+    def run(self, *args: str, timeout: float = 60, **kwargs) -> subprocess.CompletedProcess:
+        """Run `launcher ARGS…` to completion."""
+        return subprocess.run(launcher_argv() + list(args), cwd=self.root, env=self.env,
+                              capture_output=True, text=True, timeout=timeout, **kwargs)
+
+    def start(self, *args: str) -> subprocess.Popen:
+        """Start `launcher ARGS…` in the background (stdout and stderr to files)."""
+        out = open(self.root / "stdout.txt", "w")  # noqa: SIM115
+        err = open(self.root / "stderr.txt", "w")  # noqa: SIM115
+        return subprocess.Popen(launcher_argv() + list(args), cwd=self.root, env=self.env,
+                                stdout=out, stderr=err, text=True)
+
+    def output(self) -> str:
+        return (self.root / "stdout.txt").read_text()
+
+    def wait_for_output(self, needle: str, timeout: float = 30) -> str:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            text = self.output()
+            if needle in text:
+                return text
+            time.sleep(0.02)
+        raise AssertionError(f"{needle!r} not in output:\n{self.output()}")
+
+    def processes(self) -> list[psutil.Process]:
+        return tagged_processes(self.tag)
+
+
+@pytest.fixture
+def ws(tmp_path: Path):
+    """A workspace; fails the test if any process it started is still running after it."""
+    workspace = Workspace(tmp_path, uuid.uuid4().hex)
+    yield workspace
+    deadline = time.monotonic() + 5
+    left = workspace.processes()
+    while left and time.monotonic() < deadline:
+        time.sleep(0.05)
+        left = workspace.processes()
+    for proc in left:  # do not leak into other tests, but still fail this one
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except OSError:
+            proc.kill()
+    assert not left, "processes left behind: " + ", ".join(
+        f"{p.pid} {' '.join(p.cmdline())}" for p in left)

@@ -1,0 +1,160 @@
+"""Every bad input: one clear message with file:line:col, exit 1, no traceback, nothing left."""
+
+from __future__ import annotations
+
+import pytest
+
+CASES = {
+    "malformed-yaml": ("launch:\n  - arg: {name: x\n", "bad.launch.yaml:3:1: malformed YAML"),
+    "malformed-xml": ("<launch><arg name='x'></launch>", "bad.launch.xml:1:25: malformed XML"),
+    "root": ("robot: []\n", "bad.launch.yaml:1:1: the root key is 'robot'; expected 'launch'"),
+    "two-keys": ("launch:\n  - {arg: {name: x}, let: {name: y, value: z}}\n",
+                 "bad.launch.yaml:2:5: each list item must be a map with exactly one key"),
+    "unknown-tag": ("launch:\n  - exectuable: {cmd: ls}\n",
+                    "unknown tag 'exectuable' (did you mean 'executable'?)"),
+    "unknown-attribute": ("launch:\n  - executable: {cmd: ls, outptu: screen}\n",
+                          "bad.launch.yaml:2:27: 'executable' has no attribute 'outptu' "
+                          "(did you mean 'output'?)"),
+    "missing-attribute": ("launch:\n  - let: {name: x}\n",
+                          "bad.launch.yaml:2:5: 'let' needs the attribute 'value'"),
+    "wrong-type": ("launch:\n  - timer: {period: soon, children: []}\n",
+                   "bad.launch.yaml:2:21: timer.period: expected a number, got 'soon'"),
+    "if-and-unless": ("launch:\n  - log: {message: x, if: '1', unless: '0'}\n",
+                      "'log' has both 'if' and 'unless'"),
+    "bad-condition": ("launch:\n  - arg: {name: c, default: perhaps}\n"
+                      "  - log: {message: x, if: $(var c)}\n",
+                      "bad.launch.yaml:3:27: if: expected true, false, 1 or 0, got 'perhaps'"),
+    "unknown-substitution": ("launch:\n  - log: {message: $(arg2 x)}\n",
+                             "bad.launch.yaml:2:20: unknown substitution '$(arg2)'"),
+    "unclosed-substitution": ("launch:\n  - log: {message: '$(var x'}\n",
+                              "bad.launch.yaml:2:21: unclosed '$(var': expected ')'"),
+    "undefined-var": ("launch:\n  - log: {message: 'hello $(var robto)'}\n",
+                      "bad.launch.yaml:2:27: launch configuration 'robto' is not set"),
+    "choice": ("launch:\n  - arg: {name: mode, default: simm, choice: [{value: sim}, "
+               "{value: real}]}\n", "bad.launch.yaml:2:5: argument 'mode' is 'simm'; "
+               "expected one of: sim, real (did you mean 'sim'?)"),
+    "failing-command": ("launch:\n  - log: {message: \"$(command 'sh -c \\\"echo oops >&2; "
+                        "exit 4\\\"')\"}\n", "failed with exit code 4; its stderr:\noops"),
+    "eval-not-allowed": ("launch:\n  - log: {message: \"$(eval '__import__(1)')\"}\n",
+                         "unknown name '__import__'"),
+    "eval-fails": ("launch:\n  - log: {message: \"$(eval '1/0')\"}\n",
+                   "ZeroDivisionError: division by zero"),
+    "missing-executable": ("launch:\n  - executable: {cmd: sleeep 10}\n",
+                           "bad.launch.yaml:2:5: executable 'sleeep' not found on PATH "
+                           "(did you mean 'sleep'"),
+    "missing-cwd": ("launch:\n  - executable: {cmd: ls, cwd: /no/such/folder}\n",
+                    "cwd '/no/such/folder' does not exist"),
+    "negative-timeout": ("launch:\n  - executable: {cmd: ls, sigkill_timeout: -2}\n",
+                         "executable.sigkill_timeout: expected a number ≥ 0, got -2"),
+    "include-missing": ("launch:\n  - include: {file: nowhere.launch.yaml}\n",
+                        "bad.launch.yaml:2:5: included file 'nowhere.launch.yaml' does not exist"),
+}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_bad_launch_file(ws, name):
+    text, expected = CASES[name]
+    suffix = ".xml" if name == "malformed-xml" else ".yaml"
+    path = ws.write(f"bad.launch{suffix}", text)
+    result = ws.run("launch", str(path))
+    assert result.returncode == 1, result.stdout + result.stderr
+    message = result.stderr + result.stdout
+    assert expected in message, message
+    assert "Traceback" not in message
+    assert str(path) in message
+
+
+def test_error_after_processes_started_stops_them(ws):
+    ws.write("late.launch.yaml", """
+    launch:
+      - executable: {cmd: sleep 60}
+      - timer: {period: 0.3, children: [{executable: {cmd: no-such-binary}}]}
+    """)
+    result = ws.run("launch", "late.launch.yaml")
+    assert result.returncode == 1
+    assert "executable 'no-such-binary' not found on PATH" in result.stdout
+    assert "[sleep-1]: process stopped" in result.stdout
+
+
+def test_required_argument_missing_on_the_command_line(ws):
+    ws.write("req.launch.yaml", """
+    launch:
+      - arg: {name: robot_name, description: name of the robot to spawn}
+      - executable: {cmd: sleep 60}
+    """)
+    result = ws.run("launch", "req.launch.yaml")
+    assert result.returncode == 1
+    assert "req.launch.yaml:2:5: required argument 'robot_name' not given; pass " \
+           "robot_name:=VALUE" in result.stderr
+    assert "name of the robot to spawn" in result.stderr
+    assert "process started" not in result.stdout  # checked before anything ran
+
+
+def test_malformed_assignment_on_the_command_line(ws):
+    ws.write("ok.launch.yaml", "launch: []\n")
+    result = ws.run("launch", "ok.launch.yaml", "world_name=arena.xml")
+    assert result.returncode == 1
+    assert "malformed launch argument 'world_name=arena.xml': expected name:=value" in \
+        result.stderr
+
+
+def test_include_cycle(ws):
+    ws.write("a.launch.yaml", "launch:\n  - include: {file: b.launch.yaml}\n")
+    ws.write("b.launch.yaml", "launch:\n  - include: {file: a.launch.yaml}\n")
+    result = ws.run("launch", "a.launch.yaml")
+    assert result.returncode == 1 and "include cycle:" in result.stdout
+
+
+@pytest.mark.parametrize("kind", ["missing", "folder", "binary", "format"])
+def test_unreadable_files(ws, kind):
+    if kind == "folder":
+        (ws.root / "dir.launch.yaml").mkdir()
+        target, expected = "dir.launch.yaml", "this is a folder, not a launch file"
+    elif kind == "binary":
+        (ws.root / "bin.launch.yaml").write_bytes(b"\xff\xfe\x00launch")
+        target, expected = "bin.launch.yaml", "not UTF-8 text"
+    elif kind == "format":
+        ws.write("notes.txt", "launch: []\n")
+        target, expected = "notes.txt", "cannot tell the launch file's format"
+    else:
+        target, expected = "missing.launch.yaml", "no such launch file"
+    result = ws.run("launch", target)
+    assert result.returncode == 1
+    assert expected in result.stderr and "Traceback" not in result.stderr
+
+
+def test_debug_adds_the_traceback(ws):
+    ws.write("bad.launch.yaml", "launch:\n  - exectuable: {cmd: ls}\n")
+    result = ws.run("launch", "bad.launch.yaml", "--debug")
+    assert result.returncode == 1 and "Traceback" in result.stderr
+
+
+def test_show_args_includes_statically_resolvable_includes(ws):
+    ws.write("leaf.launch.yaml", "launch:\n  - arg: {name: leaf_arg, default: '1', "
+                                 "description: from the leaf}\n")
+    ws.write("mid.launch.xml", '<launch><arg name="mid_arg" description="middle" '
+                               'default="a"/>'
+                               '<include file="$(dirname)/leaf.launch.yaml"/>'
+                               '<include file="$(var unknown_path)/x.launch.yaml"/></launch>')
+    ws.write("top.launch.yaml", "launch:\n  - arg: {name: top_arg}\n"
+                                "  - include: {file: mid.launch.xml}\n")
+    result = ws.run("launch", "top.launch.yaml", "--show-args")
+    out = result.stdout
+    assert result.returncode == 0, result.stderr
+    assert "'top_arg':" in out and "(required)" in out
+    assert "'mid_arg':" in out and "middle" in out
+    assert "'leaf_arg':" in out and "from the leaf" in out and "default: '1'" in out
+    assert "could not be listed" in out and "unknown_path" in out
+
+
+def test_print_shows_the_tree(ws):
+    ws.write("p.launch.yaml", """
+    launch:
+      - arg: {name: world, default: robot.xml}
+      - group:
+          - executable: {cmd: "sim $(var world)", output: screen, if: "true"}
+    """)
+    result = ws.run("launch", "p.launch.yaml", "--print")
+    assert result.returncode == 0
+    assert "arg name='world' default='robot.xml'" in result.stdout
+    assert "    executable cmd='sim $(var world)' output='screen' if=true" in result.stdout

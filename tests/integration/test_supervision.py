@@ -1,0 +1,238 @@
+"""Real processes under `launcher launch`: exit status, escalation, respawn, signals, leaks."""
+
+from __future__ import annotations
+
+import os
+import re
+import signal
+import sys
+import time
+
+import psutil
+
+PY = sys.executable
+
+# A child that reports the signals it gets, and ignores the ones named in argv.
+STUBBORN = r'''
+import signal, sys, time
+ignore = set(sys.argv[1:])
+def report(sig, frame):
+    print(f"got {signal.Signals(sig).name} at {time.monotonic():.3f}", flush=True)
+    if signal.Signals(sig).name not in ignore:
+        sys.exit(0)
+for name in ("SIGINT", "SIGTERM"):
+    signal.signal(getattr(signal, name), report)
+print(f"ready at {time.monotonic():.3f}", flush=True)
+while True:
+    time.sleep(0.05)
+'''
+
+
+def stamps(text: str, event: str) -> list[float]:
+    return [float(m) for m in re.findall(rf"{event} at ([0-9.]+)", text)]
+
+
+def test_clean_run_exits_zero_and_idles_out(ws):
+    ws.write("ok.launch.yaml", """
+    launch:
+      - executable: {cmd: echo hello, output: screen}
+      - timer: {period: 0.2, children: [{executable: {cmd: echo later, output: screen}}]}
+    """)
+    result = ws.run("launch", "ok.launch.yaml")
+    assert result.returncode == 0, result.stderr
+    assert "[echo-1] hello" in result.stdout and "[echo-2] later" in result.stdout
+    assert "Traceback" not in result.stdout + result.stderr
+
+
+def test_a_failed_process_makes_the_exit_status_one(ws):
+    ws.write("fail.launch.yaml", """
+    launch:
+      - executable: {cmd: sh -c 'exit 3', output: screen}
+      - executable: {cmd: "true"}
+    """)
+    result = ws.run("launch", "fail.launch.yaml")
+    assert result.returncode == 1
+    assert "[ERROR] [sh-1]: process exited with code 3" in result.stdout
+
+
+def test_escalation_sigint_then_sigterm_then_sigkill(ws):
+    ws.write("stubborn.py", STUBBORN)
+    ws.write("esc.launch.yaml", f"""
+    launch:
+      - executable:
+          cmd: {PY} stubborn.py SIGINT
+          name: ignores_int
+          output: screen
+          sigterm_timeout: 0.6
+      - executable:
+          cmd: {PY} stubborn.py SIGINT SIGTERM
+          name: ignores_both
+          output: screen
+          sigterm_timeout: 0.6
+          sigkill_timeout: 0.6
+    """)
+    proc = ws.start("launch", "esc.launch.yaml")
+    ws.wait_for_output("[ignores_int-1] ready")
+    ws.wait_for_output("[ignores_both-2] ready")
+    sent = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(30) == 130
+    text = ws.output()
+    (int_a,) = re.findall(r"\[ignores_int-1\] got SIGINT at ([0-9.]+)", text)
+    (term_a,) = re.findall(r"\[ignores_int-1\] got SIGTERM at ([0-9.]+)", text)
+    assert float(term_a) - float(int_a) >= 0.6  # SIGTERM only after sigterm_timeout
+    (term_b,) = re.findall(r"\[ignores_both-2\] got SIGTERM at ([0-9.]+)", text)
+    assert float(term_b) >= sent + 0.6
+    assert "[WARN] [ignores_both-2]: still running; sending SIGKILL" in text
+    assert "process stopped: it was killed by SIGKILL" in text
+
+
+def test_second_ctrl_c_escalates_at_once(ws):
+    ws.write("stubborn.py", STUBBORN)
+    ws.write("esc.launch.yaml", f"""
+    launch:
+      - executable:
+          cmd: {PY} stubborn.py SIGINT SIGTERM
+          output: screen
+          sigterm_timeout: 60
+          sigkill_timeout: 60
+    """)
+    proc = ws.start("launch", "esc.launch.yaml")
+    ws.wait_for_output("ready")
+    proc.send_signal(signal.SIGINT)
+    ws.wait_for_output("got SIGINT")
+    proc.send_signal(signal.SIGINT)
+    ws.wait_for_output("got SIGTERM")
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(30) == 130  # long before the 60 s timeouts
+    assert "SIGINT again: escalating" in ws.output()
+
+
+def test_respawn_counts_and_delay(ws):
+    ws.write("respawn.launch.yaml", """
+    launch:
+      - executable:
+          cmd: sh -c 'echo run; exit 2'
+          output: screen
+          respawn: true
+          respawn_delay: 0.1
+          respawn_max_retries: 2
+    """)
+    result = ws.run("launch", "respawn.launch.yaml")
+    assert result.stdout.count("[sh-1] run") == 3
+    assert "respawning in 0.1 s (attempt 1 of 2)" in result.stdout
+    assert "respawning in 0.1 s (attempt 2 of 2)" in result.stdout
+    assert result.returncode == 1
+
+
+def test_on_exit_shutdown_ends_the_launch(ws):
+    ws.write("onexit.launch.yaml", """
+    launch:
+      - executable: {cmd: sleep 60}
+      - executable: {cmd: sleep 0.2, on_exit: shutdown}
+    """)
+    start = time.monotonic()
+    result = ws.run("launch", "onexit.launch.yaml")
+    assert result.returncode == 0, result.stdout
+    assert time.monotonic() - start < 30
+    assert "[sleep-1]: process stopped: it was killed by SIGINT" in result.stdout
+
+
+def test_event_handler_children_run_on_start_and_exit(ws):
+    ws.write("events.launch.xml", """
+    <launch>
+      <executable cmd="sleep 0.1">
+        <on_start><log message="started!"/></on_start>
+        <on_exit><executable cmd="echo after" output="screen"/></on_exit>
+      </executable>
+    </launch>
+    """)
+    result = ws.run("launch", "events.launch.xml")
+    assert result.returncode == 0
+    assert result.stdout.index("started!") < result.stdout.index("[echo-2] after")
+
+
+def test_sigterm_to_the_launcher_stops_everything(ws):
+    ws.write("many.launch.yaml", """
+    launch:
+      - executable: {cmd: sleep 60}
+      - executable: {cmd: "sleep 61 & sleep 62 & wait", shell: true}
+    """)
+    proc = ws.start("launch", "many.launch.yaml")
+    deadline = time.monotonic() + 20
+    while len(ws.processes()) < 5 and time.monotonic() < deadline:  # launcher, 2 sh-ish, sleeps
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGTERM)
+    assert proc.wait(30) == 143
+    assert not ws.processes()
+
+
+def test_sigkill_to_the_launcher_leaves_nothing_behind(ws):
+    ws.write("many.launch.yaml", """
+    launch:
+      - executable: {cmd: sleep 60}
+      - executable: {cmd: "sleep 61 & sleep 62 & wait", shell: true}
+    """)
+    proc = ws.start("launch", "many.launch.yaml")
+    deadline = time.monotonic() + 20
+    while sum(p.name() == "sleep" for p in ws.processes()) < 3:
+        assert time.monotonic() < deadline
+        time.sleep(0.05)
+    proc.kill()
+    proc.wait(10)
+    deadline = time.monotonic() + 10
+    while ws.processes() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not ws.processes()
+
+
+def test_children_get_unbuffered_python_and_a_tty_when_asked(ws):
+    ws.write("env.launch.yaml", f"""
+    launch:
+      - executable:
+          cmd: {PY} -c "import os, sys; print(os.environ.get('PYTHONUNBUFFERED'), sys.stdout.isatty())"
+          output: screen
+      - executable:
+          cmd: {PY} -c "import sys; print('tty', sys.stdout.isatty())"
+          output: screen
+          emulate_tty: true
+    """)
+    result = ws.run("launch", "env.launch.yaml")
+    assert "1 False" in result.stdout and "tty True" in result.stdout
+
+
+def test_logs_folder_latest_link_and_own_log(ws):
+    ws.write("logs.launch.yaml", """
+    launch:
+      - executable: {cmd: "echo to-own-log", output: own_log, name: quiet}
+      - executable: {cmd: "echo to-launch-log", output: log}
+    """)
+    result = ws.run("launch", "logs.launch.yaml")
+    assert result.returncode == 0
+    latest = ws.root / "log" / "latest"
+    assert latest.is_symlink()
+    assert "to-own-log" in (latest / "quiet-1-stdout.log").read_text()
+    assert "to-launch-log" in (latest / "launch.log").read_text()
+    assert "to-own-log" not in result.stdout and "to-launch-log" not in result.stdout
+
+
+def test_launcher_does_not_import_heavy_modules():
+    code = ("import sys, launcher.cli.main, launcher.cli.launch_command, launcher.frontend.loader;"
+            "heavy = [m for m in ('mujoco', 'numpy', 'zenoh', 'asyncio') if m in sys.modules];"
+            "print(heavy)")
+    out = os.popen(f"{PY} -c \"{code}\"").read().strip()
+    assert out == "[]"
+
+
+def test_processes_are_group_leaders(ws):
+    ws.write("group.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
+    proc = ws.start("launch", "group.launch.yaml")
+    deadline = time.monotonic() + 20
+    while not [p for p in ws.processes() if p.name() == "sleep"]:
+        assert time.monotonic() < deadline
+        time.sleep(0.05)
+    (sleep,) = [p for p in ws.processes() if p.name() == "sleep"]
+    assert os.getpgid(sleep.pid) == sleep.pid and os.getsid(sleep.pid) == sleep.pid
+    assert psutil.Process(sleep.pid).ppid() == proc.pid
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(30) == 130

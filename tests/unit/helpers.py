@@ -1,0 +1,87 @@
+"""Helpers for unit tests: parse inline launch text, and visit actions without a runtime."""
+
+from __future__ import annotations
+
+import textwrap
+from collections import deque
+from pathlib import Path
+from typing import Any
+
+from launcher.description.action import Action, LaunchDescription
+from launcher.description.registry import default_registry
+from launcher.description.substitution import perform_text
+from launcher.frontend.builder import build_description, parse_substitutions
+from launcher.frontend.entity import Attribute
+from launcher.frontend.loader import load_file
+from launcher.frontend.xml_loader import load_xml
+from launcher.frontend.yaml_loader import load_yaml
+from launcher.errors import Location
+from launcher.runtime.context import LaunchContext
+
+
+def yaml_description(text: str, file: str = "test.launch.yaml") -> LaunchDescription:
+    return build_description(load_yaml(textwrap.dedent(text).lstrip("\n"), file), Path(file))
+
+
+def xml_description(text: str, file: str = "test.launch.xml") -> LaunchDescription:
+    return build_description(load_xml(textwrap.dedent(text).strip().encode(), file), Path(file))
+
+
+def evaluate(text: str, context: LaunchContext | None = None) -> str:
+    """Perform substitution text as a launch file would."""
+    context = context or LaunchContext({}, {})
+    attribute = Attribute(text, Location("inline", 1, 1), 0)
+    return perform_text(context, parse_substitutions(attribute, default_registry()))
+
+
+class FakeService:
+    """Records processes instead of starting them (unit tests may fake the spawner)."""
+
+    def __init__(self) -> None:
+        self.specs: list[Any] = []
+        self.logs: list[tuple[str, str]] = []
+        self.handlers: list[Any] = []
+        self.launch_prefix = ""
+        self.count = 0
+
+    def next_label(self, base: str) -> str:
+        self.count += 1
+        return f"{base}-{self.count}"
+
+    def start_process(self, spec: Any) -> None:
+        self.specs.append(spec)
+
+    def register_handler(self, handler: Any) -> None:
+        self.handlers.append(handler)
+
+    def log(self, level: str, source: str, message: str) -> None:
+        self.logs.append((level, message))
+
+    def add_timer(self, period: float, callback: Any, cancel: bool = True) -> None:
+        callback()  # fire at once: the clock is not what these tests are about
+
+    def schedule(self, actions: Any) -> None:
+        visit(list(actions), self.context)
+
+    def shutdown(self, reason: str) -> None:
+        self.logs.append(("SHUTDOWN", reason))
+
+
+def visit(actions: list[Action], context: LaunchContext) -> None:
+    """Visit depth first, as the launch service does."""
+    queue = deque(actions)
+    while queue:
+        more = queue.popleft().visit(context)
+        if more:
+            queue.extendleft(reversed(list(more)))
+
+
+def run(description: LaunchDescription, configurations: dict[str, str] | None = None,
+        environment: dict[str, str] | None = None) -> tuple[LaunchContext, FakeService]:
+    service = FakeService()
+    context = LaunchContext(environment or {"PATH": "/usr/bin:/bin"}, configurations or {},
+                            service=service)
+    context.load_description = load_file
+    service.context = context
+    visit([description], context)
+    return context, service

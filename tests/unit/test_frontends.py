@@ -1,0 +1,112 @@
+"""YAML and XML parse into the same actions; bad input names file:line:col and what to do."""
+
+import pytest
+
+from launcher.description.actions.executable import ExecuteProcess
+from launcher.errors import ParseError
+from tests.unit.helpers import run, xml_description, yaml_description
+
+YAML = """
+launch:
+  - arg: {name: world, default: robot.xml, description: the world}
+  - executable:
+      cmd: /bin/echo -v 4 -r $(var world)
+      respawn: true
+      sigterm_timeout: 2
+      env:
+        - {name: A, value: "1"}
+  - group:
+      - let: {name: inner, value: x}
+"""
+
+XML = """
+<launch>
+  <arg name="world" default="robot.xml" description="the world"/>
+  <executable cmd="/bin/echo -v 4 -r $(var world)" respawn="true" sigterm_timeout="2">
+    <env name="A" value="1"/>
+  </executable>
+  <group><let name="inner" value="x"/></group>
+</launch>
+"""
+
+
+@pytest.mark.parametrize("make, text", [(yaml_description, YAML), (xml_description, XML)],
+                         ids=["yaml", "xml"])
+def test_yaml_and_xml_give_the_same_actions(make, text):
+    description = make(text)
+    arg, executable, group = description.actions
+    assert arg.name == "world" and arg.description == "the world"
+    assert isinstance(executable, ExecuteProcess)
+    assert executable.respawn is True and executable.sigterm_timeout == 2.0
+    assert len(executable.additional_env) == 1
+    context, service = run(description)
+    (spec,) = service.specs
+    assert spec.argv == ["/bin/echo", "-v", "4", "-r", "robot.xml"]
+    assert spec.env["A"] == "1" and spec.respawn and spec.sigterm_timeout == 2.0
+    assert "inner" not in context.configurations  # the group scoped it
+
+
+def test_yaml_leniency_for_numbers_and_booleans():
+    description = yaml_description("""
+    launch:
+      - timer: {period: 5, children: [{log: {message: hi}}]}
+      - executable: {cmd: x, respawn: "True", respawn_delay: "0.5", sigkill_timeout: 3}
+    """)
+    timer, executable = description.actions
+    assert timer.period == 5.0
+    assert executable.respawn is True and executable.respawn_delay == 0.5
+
+
+def error_of(make, text):
+    with pytest.raises(ParseError) as info:
+        make(text)
+    return str(info.value)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("launch: [\n  - arg: {name: x\n", "test.launch.yaml:2:3: malformed YAML"),
+    ("robot:\n  - arg: {name: x}\n", "test.launch.yaml:1:1: the root key is 'robot'; expected 'launch'"),
+    ("launch:\n  - arg: {name: x}\n    let: {name: y}\n", "test.launch.yaml:2:5: each list item must be a map with exactly one key"),
+    ("launch:\n  - exectuable: {cmd: ls}\n", "test.launch.yaml:2:5: unknown tag 'exectuable' (did you mean 'executable'?)"),
+    ("launch:\n  - executable: {cmd: ls, respwan: true}\n", "test.launch.yaml:2:27: 'executable' has no attribute 'respwan' (did you mean 'respawn'"),
+    ("launch:\n  - executable: {output: screen}\n", "test.launch.yaml:2:5: 'executable' needs the attribute 'cmd'"),
+    ("launch:\n  - executable: {cmd: ls, respawn_delay: soon}\n", "test.launch.yaml:2:42: executable.respawn_delay: expected a number, got 'soon'"),
+    ("launch:\n  - executable: {cmd: ls, sigterm_timeout: -1}\n", "test.launch.yaml:2:44: executable.sigterm_timeout: expected a number ≥ 0, got -1"),
+    ("launch:\n  - log: {message: hi, if: 'true', unless: 'false'}\n", "test.launch.yaml:2:36: 'log' has both 'if' and 'unless'"),
+    ("launch:\n  - log: {message: hi, if: maybe}\n", "test.launch.yaml:2:28: if: expected true, false, 1 or 0, got 'maybe'"),
+    ("launch:\n  - log: {message: $(vr x)}\n", "test.launch.yaml:2:20: unknown substitution '$(vr)' (did you mean 'var'?)"),
+    ("launch:\n  - log: {message: 'a $(var x'}\n", "test.launch.yaml:2:23: unclosed '$(var': expected ')'"),
+    ("launch:\n  - executable: {cmd: ls, output: loud}\n", "test.launch.yaml:2:35: executable.output: expected one of screen, log, both, own_log, full, got 'loud'"),
+    ("launch:\n  - executable: {cmd: ls, on_exit: restart}\n", "test.launch.yaml:2:5: executable: on_exit: expected 'shutdown' or a list of actions"),
+    ("launch:\n  - executable:\n      cmd: ls\n      env: [{name: A, vlaue: b}]\n", "test.launch.yaml:4:23: executable.env: unknown key 'vlaue' (did you mean 'value'?)"),
+], ids=["malformed", "root", "two-keys", "unknown-tag", "unknown-attr", "missing-attr",
+        "wrong-type", "negative-timeout", "if-and-unless", "bad-condition",
+        "unknown-substitution", "unclosed-substitution", "bad-choice", "bad-on-exit",
+        "bad-entry-key"])
+def test_yaml_errors(text, expected):
+    assert error_of(yaml_description, text).startswith(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("<launch><arg name='x'>", "test.launch.xml:1:23: malformed XML"),
+    ("<robot/>", "test.launch.xml:1:1: the root element is <robot>; expected <launch>"),
+    ("<launch>\n  <exectuable cmd='ls'/>\n</launch>", "test.launch.xml:2:3: unknown tag 'exectuable' (did you mean 'executable'?)"),
+    ("<launch>\n  <executable cmd='ls' shel='true'/>\n</launch>", "test.launch.xml:2:3: 'executable' has no attribute 'shel' (did you mean 'shell'?)"),
+    ("<launch>\n  <executable cmd='ls'><log message='x'/></executable>\n</launch>", "test.launch.xml:2:24: 'executable' takes no child tag 'log'"),
+], ids=["malformed", "root", "unknown-tag", "unknown-attr", "unexpected-child"])
+def test_xml_errors(text, expected):
+    assert error_of(xml_description, text).startswith(expected)
+
+
+def test_on_exit_children_in_xml_and_yaml():
+    xml = xml_description("""
+    <launch><executable cmd="true"><on_exit><log message="bye"/></on_exit></executable></launch>
+    """)
+    yml = yaml_description("""
+    launch:
+      - executable: {cmd: "true", on_exit: [{log: {message: bye}}]}
+    """)
+    for description in (xml, yml):
+        (executable,) = description.actions
+        (log,) = executable.on_exit
+        assert log.tags == ("log",)

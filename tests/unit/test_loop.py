@@ -1,0 +1,51 @@
+import os
+import signal
+
+from launcher.runtime.loop import EventLoop
+
+
+class FakeClock:
+    def __init__(self):
+        self.now = 100.0
+
+    def __call__(self):
+        return self.now
+
+
+def test_timers_run_in_order_and_cancel():
+    clock = FakeClock()
+    loop = EventLoop(clock)
+    seen = []
+    loop.call_later(2.0, seen.append, "late")
+    loop.call_later(1.0, seen.append, "early")
+    cancelled = loop.call_later(1.5, seen.append, "cancelled")
+    cancelled.cancel()
+    loop.call_soon(seen.append, "soon")
+    loop._run_once()
+    assert seen == ["soon"]
+    clock.now += 2.0
+    loop.call_later(0.1, loop.stop)
+    loop._run_once()
+    assert seen == ["soon", "early", "late"]
+    loop.close()
+
+
+def test_readers_and_signals_reach_the_loop():
+    loop = EventLoop()
+    read, write = os.pipe()
+    got = []
+
+    def on_read():
+        got.append(os.read(read, 10))
+        loop.remove_reader(read)
+        os.kill(os.getpid(), signal.SIGUSR1)
+
+    loop.add_reader(read, on_read)
+    loop.add_signal_handler(signal.SIGUSR1, lambda sig: (got.append(sig), loop.stop()))
+    os.write(write, b"ping")
+    loop.run()
+    loop.close()
+    os.close(read)
+    os.close(write)
+    assert got == [b"ping", signal.SIGUSR1]
+    assert signal.getsignal(signal.SIGUSR1) == signal.SIG_DFL

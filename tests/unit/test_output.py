@@ -1,0 +1,31 @@
+import io
+
+from launcher.runtime.output import Printer, Record, plain
+
+
+class Tty(io.StringIO):
+    def isatty(self):
+        return True
+
+
+def test_plain_lines_without_a_terminal():
+    out = io.StringIO()
+    printer = Printer(out)
+    printer.emit(Record("talker-1", "hello"))
+    printer.emit(Record("launch", "started", "launcher", "INFO"))
+    assert out.getvalue() == "[talker-1] hello\n[INFO] [launch]: started\n"
+
+
+def test_colours_only_on_a_terminal_and_stable_per_name():
+    out = Tty()
+    printer = Printer(out)
+    assert printer.color
+    first = printer.format(Record("a-1", "x"))
+    assert first.startswith("\x1b[") and first.endswith(" x")
+    assert printer.format(Record("a-1", "y")).split(" ")[0] == first.split(" ")[0]
+    assert "\x1b[31m" in printer.format(Record("launch", "bad", "launcher", "ERROR"))
+
+
+def test_log_file_lines_have_a_timestamp():
+    line = plain(Record("n-1", "text", time=12.5))
+    assert line == "12.5000000 [n-1] text"
