@@ -11,6 +11,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+
 def launcher_cmd() -> list[str]:
     exe = Path(sys.executable).with_name("launcher")
     return [str(exe)] if exe.exists() else [sys.executable, "-m", "launcher"]

@@ -7,14 +7,13 @@ wall time from starting `launcher launch` until the condition holds.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import signal
 import subprocess
 import time
 
 import psutil
-
-from _harness import children, comm, start, stop, summary, table, wait_for, workdir, \
-    launcher_cmd
+from _harness import children, comm, launcher_cmd, start, stop, summary, table, wait_for, workdir
 
 
 def sleeps_file(folder, count: int, seconds: int = 5) -> str:
@@ -33,10 +32,8 @@ def time_to_running(path: str, count: int) -> tuple[float, float]:
         def all_running() -> bool:
             return sum(comm(c) == "sleep" for c in children(proc.pid)) >= count
         t1 = wait_for(all_running)
-        try:
+        with contextlib.suppress(psutil.Error):
             peak = psutil.Process(proc.pid).memory_info().rss
-        except psutil.Error:
-            pass
         return t1 - t0, peak / 1e6
     finally:
         stop(proc)

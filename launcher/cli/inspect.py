@@ -6,9 +6,9 @@ and defaults known so far; otherwise the include is shown unresolved.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 from launcher.description.action import Action, LaunchDescription
@@ -33,11 +33,9 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int
     for item in actions:
         if isinstance(item, DeclareLaunchArgument):
             if item.name not in context.configurations and item.default_value is not None:
-                try:
+                with contextlib.suppress(LaunchError):
                     context.configurations[item.name] = perform_text(context,
                                                                      item.default_value)
-                except LaunchError:
-                    pass
             yield depth, item, None
         elif isinstance(item, IncludeLaunchDescription):
             try:

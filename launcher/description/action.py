@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from launcher.description.condition import Condition
+from launcher.description.fields import normalize
 from launcher.errors import LaunchError, Location
 from launcher.runtime.context import LaunchContext, Snapshot
 
@@ -21,6 +22,9 @@ class Action:
     condition: Condition | None = field(default=None, repr=False)
     where: Location | None = field(default=None, repr=False, compare=False)
     tags = ()  # set by @action
+
+    def __post_init__(self) -> None:
+        normalize(self)
 
     def visit(self, context: LaunchContext) -> Sequence[Action] | None:
         try:

@@ -12,7 +12,7 @@ import enum
 import math
 from typing import Any, NamedTuple
 
-from launcher.description.substitution import Text_, is_literal, perform_text, to_text
+from launcher.description.substitution import perform_text, to_text
 from launcher.errors import ParseError, SubstitutionError
 from launcher.runtime.context import LaunchContext
 
@@ -105,8 +105,13 @@ def resolve(context: LaunchContext, value: Any, kind: Kind, what: str,
         raise SubstitutionError(exc.message) from None
 
 
-def literal_check(kind: Kind, value: Text_, what: str, spec: Attr) -> None:
-    """Check a value early when it holds no substitution (so errors point at the file)."""
-    if kind in (Kind.BOOL, Kind.FLOAT, Kind.INT) or spec.choices:
-        if is_literal(value):
-            coerce(kind, perform_text(LaunchContext({}), value), what, spec)
+def normalize(obj: Any) -> None:
+    """Python API values (str, numbers, substitutions, lists) → the forms the builder makes."""
+    for field, spec in declared_fields(type(obj)):
+        value = getattr(obj, field.name)
+        if value is None or spec.kind in (Kind.NAME, Kind.ENTRIES, Kind.ACTIONS, Kind.CHILDREN):
+            continue
+        if spec.kind is Kind.COMMAND and isinstance(value, list):
+            setattr(obj, field.name, [to_text(item) for item in value])
+        elif spec.kind in (Kind.TEXT, Kind.COMMAND) or not isinstance(value, bool | int | float):
+            setattr(obj, field.name, to_text(value))

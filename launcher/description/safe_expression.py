@@ -143,6 +143,6 @@ class _Evaluator(ast.NodeVisitor):
 
 def _check_size(left: Any, right: Any) -> None:
     for seq, count in ((left, right), (right, left)):
-        if isinstance(seq, str | list | tuple) and isinstance(count, int):
-            if len(seq) * count > _MAX_SIZE:
-                raise ExpressionError("the result would be too large")
+        sized = isinstance(seq, str | list | tuple) and isinstance(count, int)
+        if sized and len(seq) * count > _MAX_SIZE:
+            raise ExpressionError("the result would be too large")

@@ -15,7 +15,7 @@ from launcher.description.condition import Condition
 from launcher.description.fields import Kind, coerce, declared_fields, frontend_name
 from launcher.description.registry import Registry, default_registry
 from launcher.description.substitution import Substitution, Text, Text_, is_literal
-from launcher.errors import LaunchError, Location, ParseError, did_you_mean
+from launcher.errors import LaunchError, ParseError, did_you_mean
 from launcher.frontend.entity import Attribute, Entity
 from launcher.frontend.substitution_parser import Call, SubstitutionSyntaxError, parse_text
 
@@ -32,8 +32,8 @@ def build_description(root: Entity, path: Path, registry: Registry | None = None
 def build_action(entity: Entity, registry: Registry) -> Action:
     cls = registry.find_action(entity.tag)
     if cls is None:
-        raise ParseError(f"unknown tag '{entity.tag}'{did_you_mean(entity.tag, registry.known('action'))}",
-                         entity.location)
+        hint = did_you_mean(entity.tag, registry.known("action"))
+        raise ParseError(f"unknown tag '{entity.tag}'{hint}", entity.location)
     kwargs = _fields(entity, cls, registry)
     kwargs["condition"] = _condition(entity, registry)
     return _construct(cls, kwargs, entity)
@@ -103,12 +103,11 @@ def _value(attribute: Attribute, spec: Any, registry: Registry, what: str) -> An
     if spec.kind is Kind.NAME:
         return value
     text = parse_substitutions(attribute, registry)
-    if spec.kind in (Kind.BOOL, Kind.FLOAT, Kind.INT) or spec.choices:
-        if is_literal(text):
-            try:
-                return coerce(spec.kind, value, what, spec)
-            except ParseError as exc:
-                raise exc.at(attribute.location) from None
+    if (spec.kind in (Kind.BOOL, Kind.FLOAT, Kind.INT) or spec.choices) and is_literal(text):
+        try:
+            return coerce(spec.kind, value, what, spec)
+        except ParseError as exc:
+            raise exc.at(attribute.location) from None
     return text
 
 

@@ -12,7 +12,6 @@ import itertools
 import sys
 import traceback
 from pathlib import Path
-from typing import Any
 
 from launcher.description.action import LaunchDescription
 from launcher.errors import Location, ParseError

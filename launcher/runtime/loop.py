@@ -8,6 +8,7 @@ about a hundred lines. Signal handlers only hand the signal to the loop.
 
 from __future__ import annotations
 
+import contextlib
 import heapq
 import itertools
 import os
@@ -51,10 +52,8 @@ class EventLoop:
         self._selector.register(fd, selectors.EVENT_READ, (callback, args))
 
     def remove_reader(self, fd: int) -> None:
-        try:
+        with contextlib.suppress(KeyError, ValueError):
             self._selector.unregister(fd)
-        except (KeyError, ValueError):
-            pass
 
     # --- signals --------------------------------------------------------------------------
     def add_signal_handler(self, sig: int, callback: Callable[[int], None]) -> None:

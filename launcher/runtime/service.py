@@ -16,7 +16,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from launcher.errors import LaunchError
+from launcher.errors import ExecutionError, LaunchError
 from launcher.runtime import events, reaper
 from launcher.runtime.context import LaunchContext
 from launcher.runtime.logs import RunLog
@@ -105,6 +105,9 @@ class LaunchService:
                 except LaunchError as exc:
                     self.fail(exc)
                     continue
+                except Exception as exc:  # a bug, or user Python code (a callback) failing
+                    self.fail(unexpected(exc, getattr(action, "where", None)))
+                    continue
                 if more:
                     self._queue.extendleft(reversed(list(more)))
         finally:
@@ -118,7 +121,8 @@ class LaunchService:
         if self.debug:
             import traceback  # only with --debug: start-up time
 
-            self.log("DEBUG", "launch", "".join(traceback.format_exception(exc)).rstrip())
+            cause = exc.__cause__ or exc
+            self.log("DEBUG", "launch", "".join(traceback.format_exception(cause)).rstrip())
         self.shutdown(f"error: {exc.message}")
 
     # --- processes --------------------------------------------------------------------------
@@ -185,6 +189,9 @@ class LaunchService:
                 actions = handler.handle(event, self.context)
             except LaunchError as exc:
                 self.fail(exc)
+                continue
+            except Exception as exc:  # the user's callback raised
+                self.fail(unexpected(exc, None))
                 continue
             if actions:
                 self.schedule(actions)
@@ -266,6 +273,14 @@ class LaunchService:
             self.run_log.write(record)
         if level != "DEBUG" or self.debug:
             self.printer.emit(record)
+
+
+def unexpected(exc: Exception, where: Any) -> LaunchError:
+    """An exception that is not a LaunchError, as one: the message, never a bare traceback."""
+    error = ExecutionError(f"{type(exc).__name__}: {exc} (run with --debug for the traceback)",
+                           where)
+    error.__cause__ = exc
+    return error
 
 
 def default_environment() -> dict[str, str]:

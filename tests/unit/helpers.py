@@ -10,12 +10,12 @@ from typing import Any
 from launcher.description.action import Action, LaunchDescription
 from launcher.description.registry import default_registry
 from launcher.description.substitution import perform_text
+from launcher.errors import Location
 from launcher.frontend.builder import build_description, parse_substitutions
 from launcher.frontend.entity import Attribute
 from launcher.frontend.loader import load_file
 from launcher.frontend.xml_loader import load_xml
 from launcher.frontend.yaml_loader import load_yaml
-from launcher.errors import Location
 from launcher.runtime.context import LaunchContext
 
 

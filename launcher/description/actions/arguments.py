@@ -9,7 +9,7 @@ from typing import Any
 from launcher.description.action import Action
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
-from launcher.description.substitution import Text_, describe_text, perform_text, to_text
+from launcher.description.substitution import Text_, describe_text, perform_text
 from launcher.errors import ExecutionError, did_you_mean
 from launcher.runtime.context import LaunchContext
 
@@ -35,8 +35,7 @@ class DeclareLaunchArgument(Action):
                               doc="If given, the only valid values.")
 
     def __post_init__(self) -> None:
-        if self.default_value is not None:
-            self.default_value = to_text(self.default_value)
+        super().__post_init__()
         self.choices = [c.value if isinstance(c, Choice) else str(c) for c in self.choices]
 
     @property
@@ -99,9 +98,6 @@ def check_required(actions: Sequence[Action], given: dict[str, str]) -> None:
 class SetLaunchConfiguration(Action):
     name: Text_ = attr(Kind.TEXT, required=True, doc="The configuration to set.")
     value: Text_ = attr(Kind.TEXT, required=True, doc="Its new value.")
-
-    def __post_init__(self) -> None:
-        self.name, self.value = to_text(self.name), to_text(self.value)
 
     def execute(self, context: LaunchContext) -> None:
         context.configurations[perform_text(context, self.name)] = perform_text(context,

@@ -9,7 +9,7 @@ from typing import Any
 from launcher.description.action import Action
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
-from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.description.substitution import Text_, perform_text
 from launcher.runtime.context import LaunchContext
 
 
@@ -18,9 +18,6 @@ from launcher.runtime.context import LaunchContext
 class SetEnvironmentVariable(Action):
     name: Text_ = attr(Kind.TEXT, required=True, doc="Variable name.")
     value: Text_ = attr(Kind.TEXT, required=True, doc="New value.")
-
-    def __post_init__(self) -> None:
-        self.name, self.value = to_text(self.name), to_text(self.value)
 
     def execute(self, context: LaunchContext) -> None:
         context.environment[perform_text(context, self.name)] = perform_text(context,
@@ -31,9 +28,6 @@ class SetEnvironmentVariable(Action):
 @dataclass(kw_only=True, eq=False)
 class UnsetEnvironmentVariable(Action):
     name: Text_ = attr(Kind.TEXT, required=True, doc="Variable name.")
-
-    def __post_init__(self) -> None:
-        self.name = to_text(self.name)
 
     def execute(self, context: LaunchContext) -> None:
         context.environment.pop(perform_text(context, self.name), None)
@@ -46,9 +40,6 @@ class AppendEnvironmentVariable(Action):
     value: Text_ = attr(Kind.TEXT, required=True, doc="Value to add.")
     prepend: Any = attr(Kind.BOOL, False, doc="Put it in front instead of at the end.")
     separator: Any = attr(Kind.TEXT, os.pathsep, doc="Between the old and the new value.")
-
-    def __post_init__(self) -> None:
-        self.name, self.value = to_text(self.name), to_text(self.value)
 
     def execute(self, context: LaunchContext) -> None:
         name = perform_text(context, self.name)

@@ -64,6 +64,7 @@ class ExecuteProcess(Action):
                                           doc="Environment variables for this process.")
 
     def __post_init__(self) -> None:
+        super().__post_init__()
         if isinstance(self.on_exit, str):
             if self.on_exit.strip() != "shutdown":
                 raise ValueError(f"on_exit: expected 'shutdown' or a list of actions, "

@@ -25,6 +25,7 @@ class GroupAction(Action):
                            doc="With forwarding false: configurations still passed in.")
 
     def __post_init__(self) -> None:
+        super().__post_init__()
         if isinstance(self.keep, dict):  # Python API: launch_configurations={...}
             self.keep = [KeepEntry(to_text(k), to_text(v)) for k, v in self.keep.items()]
 

@@ -8,7 +8,7 @@ from typing import Any, ClassVar
 from launcher.description.action import Action
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
-from launcher.description.substitution import perform_text, to_text
+from launcher.description.substitution import perform_text
 from launcher.runtime.context import LaunchContext
 
 LEVELS = {"debug": "DEBUG", "info": "INFO", "warn": "WARN", "warning": "WARN", "error": "ERROR"}
@@ -20,9 +20,6 @@ class Log(Action):
     msg: Any = attr(Kind.TEXT, name="message", aliases=("msg",), required=True,
                     doc="The text to log.")
     level: Any = attr(Kind.TEXT, "info", choices=tuple(LEVELS), doc="debug, info, warn, error.")
-
-    def __post_init__(self) -> None:
-        self.msg = to_text(self.msg)
 
     def execute(self, context: LaunchContext) -> None:
         spec = type(self).__dataclass_fields__["level"].metadata.get("launch")
