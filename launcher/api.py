@@ -15,6 +15,8 @@ from launcher.description.actions import environment as _environment
 from launcher.description.actions import group as _group
 from launcher.description.actions import log as _log
 from launcher.description.actions import loops as _loops
+from launcher.description.actions import node as _node
+from launcher.description.actions import ros as _ros
 from launcher.description.actions import shutdown as _shutdown
 from launcher.description.actions import timer as _timer
 from launcher.description.actions.event_handlers import (
@@ -34,6 +36,7 @@ from launcher.description.substitutions import configuration as _configuration
 from launcher.description.substitutions import environment as _env
 from launcher.description.substitutions import expression as _expression
 from launcher.description.substitutions import files as _files
+from launcher.description.substitutions import packages as _packages
 
 LaunchDescription = _action.LaunchDescription
 PathJoinSubstitution = _files.PathJoinSubstitution
@@ -49,6 +52,8 @@ __all__ = [
     "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown", "Substitution",
     "TextSubstitution", "ThisLaunchFileDir", "TimerAction", "UnlessCondition",
     "UnsetEnvironmentVariable", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
+    "Node", "FindPackageShare", "FindPackagePrefix", "ParameterValue", "PushRosNamespace",
+    "SetParameter", "SetRemap", "SetUseSimTime", "SetParametersFromFile",
 ]
 
 
@@ -160,3 +165,68 @@ def FindExecutable(*, name: Any) -> Substitution:  # noqa: N802
 
 def ThisLaunchFileDir() -> Substitution:  # noqa: N802
     return _files.ThisLaunchFileDir()
+
+
+def FindPackageShare(package: Any) -> Substitution:  # noqa: N802
+    return _packages.FindPackageShare(to_text(package))
+
+
+def FindPackagePrefix(package: Any) -> Substitution:  # noqa: N802
+    return _packages.FindPackagePrefix(to_text(package))
+
+
+# --- launch_ros ---------------------------------------------------------------------------
+class ParameterValue:
+    """A value with its type, as launch_ros has it: `ParameterValue(Command(…), value_type=str)`."""
+
+    def __init__(self, value: Any, *, value_type: Any = None) -> None:
+        self.value, self.value_type = value, value_type
+
+
+def Node(*, package: Any, executable: Any, name: Any = None, namespace: Any = None,  # noqa: N802
+         exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
+         arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (), **kw: Any) -> Any:
+    entries = []
+    for item in parameters:
+        if isinstance(item, dict):
+            for key, value in item.items():
+                entries.append(_parameter(key, value))
+        else:
+            entries.append(_node.ParamEntry(from_file=to_text(item)))
+    return _node.Node(package=package, executable=executable, node_name=name,
+                      namespace=namespace, exec_name=exec_name, parameters=entries,
+                      remappings=list(remappings), arguments=list(arguments) or None,
+                      ros_arguments=list(ros_arguments) or None, **kw)
+
+
+def _parameter(name: Any, value: Any) -> Any:
+    kind = None
+    if isinstance(value, ParameterValue):
+        kind = {str: "str", int: "int", float: "float", bool: "bool"}.get(value.value_type)
+        value = value.value
+    elif isinstance(value, str):
+        kind = "str"
+    elif isinstance(value, bool):
+        value = str(value).lower()
+    return _node.ParamEntry(name=to_text(name), value=to_text(value),
+                            type=None if kind is None else to_text(kind))
+
+
+def PushRosNamespace(namespace: Any, **kw: Any) -> Any:  # noqa: N802
+    return _ros.PushRosNamespace(namespace=namespace, **kw)
+
+
+def SetParameter(name: Any, value: Any, **kw: Any) -> Any:  # noqa: N802
+    return _ros.SetParameter(name=name, value=value, **kw)
+
+
+def SetParametersFromFile(filename: Any, **kw: Any) -> Any:  # noqa: N802
+    return _ros.SetParametersFromFile(filename=filename, **kw)
+
+
+def SetRemap(src: Any, dst: Any, **kw: Any) -> Any:  # noqa: N802
+    return _ros.SetRemap(source=src, target=dst, **kw)
+
+
+def SetUseSimTime(value: Any, **kw: Any) -> Any:  # noqa: N802
+    return _ros.SetUseSimTime(value=value, **kw)

@@ -21,9 +21,10 @@ from launcher.frontend.loader import load_file
 from launcher.runtime.context import LaunchContext
 
 
-def _context(configurations: dict[str, str]) -> LaunchContext:
+def _context(configurations: dict[str, str], index: Any) -> LaunchContext:
     context = LaunchContext(configurations=configurations)
     context.load_description = load_file
+    context.packages = index
     return context
 
 
@@ -55,8 +56,9 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int
             yield from _walk(list(item.sub_actions()), context, depth + 1)
 
 
-def show_arguments(description: LaunchDescription, configurations: dict[str, str]) -> str:
-    context = _context(dict(configurations))
+def show_arguments(description: LaunchDescription, configurations: dict[str, str],
+                   index: Any = None) -> str:
+    context = _context(dict(configurations), index)
     context.push_file(description.file)
     sections: dict[str, list[DeclareLaunchArgument]] = {str(description.file): []}
     current = [str(description.file)]
@@ -89,8 +91,9 @@ def show_arguments(description: LaunchDescription, configurations: dict[str, str
     return "\n".join(lines) + "\n"
 
 
-def print_tree(description: LaunchDescription, configurations: dict[str, str]) -> str:
-    context = _context(dict(configurations))
+def print_tree(description: LaunchDescription, configurations: dict[str, str],
+               index: Any = None) -> str:
+    context = _context(dict(configurations), index)
     context.push_file(description.file)
     lines = [f"LaunchDescription {description.file}"]
     for depth, item, extra in _walk(description.actions, context, 0):

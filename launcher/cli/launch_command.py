@@ -6,6 +6,8 @@ import argparse
 import re
 from pathlib import Path
 
+from launcher import compat
+from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
 from launcher.description.actions.arguments import check_required
 from launcher.description.actions.shutdown import Shutdown
@@ -13,6 +15,7 @@ from launcher.description.actions.timer import TimerAction
 from launcher.description.substitution import to_text
 from launcher.errors import UsageError
 from launcher.frontend.loader import load_file
+from launcher.packages.index import PackageIndex
 from launcher.runtime.logs import log_root
 from launcher.runtime.output import Printer
 from launcher.runtime.service import LaunchService, default_environment
@@ -27,7 +30,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                     "ended cleanly; 1 for an invalid launch file, a failed action or a "
                     "process that exited with a non-zero code on its own; 130 after SIGINT "
                     "(Ctrl-C); 143 after SIGTERM.")
-    p.add_argument("file", metavar="FILE", help="the launch file")
+    p.add_argument("file", metavar="[PKG] FILE",
+                   help="the launch file; or a package and a launch file in it")
     p.add_argument("arguments", nargs="*", metavar="name:=value", help="launch arguments")
     p.add_argument("-s", "--show-args", "--show-arguments", action="store_true",
                    help="list the launch arguments (also of included files) and exit")
@@ -55,26 +59,38 @@ def parse_assignments(words: list[str]) -> dict[str, str]:
     return values
 
 
+def launch_path(args: argparse.Namespace, index: PackageIndex) -> Path:
+    """`FILE`, or `PKG FILE` (the second word then is not a name:=value)."""
+    if args.arguments and ":=" not in args.arguments[0] and not Path(args.file).is_file():
+        package, file_name = args.file, args.arguments.pop(0)
+        return find_launch_file(index, package, file_name)
+    return Path(args.file)
+
+
 def run(args: argparse.Namespace) -> int:
+    index = load_index()
+    path = launch_path(args, index)
     configurations = parse_assignments(args.arguments)
-    path = Path(args.file)
     description = load_file(path)
     if args.show_args or args.print:
         from launcher.cli import inspect  # only for these views: start-up time
 
     if args.show_args:
-        print(inspect.show_arguments(description, configurations), end="")
+        print(inspect.show_arguments(description, configurations, index), end="")
         return 0
     if args.print:
-        print(inspect.print_tree(description, configurations), end="")
+        print(inspect.print_tree(description, configurations, index), end="")
         return 0
     check_required(description.actions, configurations)
+    environment = hooked_environment(index, default_environment())
+    compat.enable_for_children(environment)
     service = LaunchService(
         printer=Printer(color=False) if args.noninteractive else None,
-        log_root=log_root(), environment=default_environment(),
+        log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
     )
     service.context.load_description = load_file
+    service.context.packages = index
     root: list = [description]
     if args.duration is not None:
         if args.duration < 0:

@@ -6,7 +6,7 @@ import argparse
 import sys
 
 from launcher import __version__
-from launcher.cli import launch_command
+from launcher.cli import env_command, launch_command, pkg_command
 from launcher.errors import LaunchError
 
 
@@ -16,6 +16,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"launcher {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     launch_command.add_parser(commands)
+    pkg_command.add_parser(commands)
+    env_command.add_parser(commands)
     return parser
 
 

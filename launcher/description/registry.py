@@ -30,6 +30,10 @@ BUILTINS: dict[str, dict[str, str]] = {
                         _ACTIONS + "log"),
         "shutdown": _ACTIONS + "shutdown",
         **dict.fromkeys(("for", "for_each"), _ACTIONS + "loops"),
+        "node": _ACTIONS + "node",
+        **dict.fromkeys(("push_ros_namespace", "push-ros-namespace", "set_parameter",
+                         "set_parameters_from_file", "set_remap", "set_use_sim_time"),
+                        _ACTIONS + "ros"),
     },
     "substitution": {
         **dict.fromkeys(("var", "arg", "for-var", "index", "anon"), _SUBS + "configuration"),
@@ -40,6 +44,8 @@ BUILTINS: dict[str, dict[str, str]] = {
         "command": _SUBS + "command",
         **dict.fromkeys(("not", "and", "or", "any", "all", "equals", "not-equals", "if"),
                         _SUBS + "logic"),
+        **dict.fromkeys(("find-pkg-share", "find", "find-pkg-prefix", "exec-in-pkg", "param"),
+                        _SUBS + "packages"),
     },
 }
 

@@ -13,6 +13,7 @@ import sys
 import traceback
 from pathlib import Path
 
+from launcher import compat
 from launcher.description.action import LaunchDescription
 from launcher.errors import Location, ParseError
 
@@ -20,6 +21,7 @@ _counter = itertools.count()
 
 
 def load_python(path: Path) -> LaunchDescription:
+    compat.enable_in_process()  # ROS 2 files import launch, launch_ros, ament_index_python
     name = f"_launcher_launch_file_{next(_counter)}"
     spec = importlib.util.spec_from_file_location(name, path)
     if spec is None or spec.loader is None:

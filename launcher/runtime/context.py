@@ -56,6 +56,8 @@ class LaunchContext:
         self.log_dir = log_dir
         self.anonymous_names: dict[str, str] = {}
         self.load_description: Callable[[Path], Any] | None = None
+        self.packages: Any = None  # the package index (set by whoever builds the context)
+        self.node_names: dict[str, Any] = {}  # fully qualified node name -> where declared
 
     # --- scopes -------------------------------------------------------------------------
     @property

@@ -84,11 +84,14 @@ class ExecuteProcess(Action):
             return [perform_text(context, to_text(v)) for v in value]
         return split_command(context, to_text(value))
 
+    def launch_prefix(self, context: LaunchContext) -> list[str]:
+        """`--launch-prefix` of the run, then this action's own `launch-prefix`."""
+        run_prefix = getattr(context.service, "launch_prefix", "") or ""
+        words = split_command(context, to_text(run_prefix)) if run_prefix else []
+        return words + self._words(context, self.prefix)
+
     def command_line(self, context: LaunchContext) -> list[str]:
-        prefix = self._words(context, self.prefix)
-        service_prefix = getattr(context.service, "launch_prefix", "") or ""
-        if service_prefix:
-            prefix = split_command(context, to_text(service_prefix)) + prefix
+        prefix = self.launch_prefix(context)
         if resolve(context, self.shell, Kind.BOOL, "shell"):
             parts = [join_command(context, to_text(self.cmd))] if not isinstance(
                 self.cmd, list) else self._words(context, self.cmd)
@@ -104,13 +107,17 @@ class ExecuteProcess(Action):
 
     def spec(self, context: LaunchContext) -> ProcessSpec:
         argv = self.command_line(context)
+        base = perform_text(context, self.name) if self.name is not None else \
+            os.path.basename(argv[0]) if argv else ""
+        return self.process_spec(context, argv, self.environment(context), base)
+
+    def process_spec(self, context: LaunchContext, argv: list[str], env: dict[str, str],
+                     base: str) -> ProcessSpec:
+        """The process to start, from its command line, environment and label base."""
         if not argv:
             raise ExecutionError("the command line is empty")
-        env = self.environment(context)
         cwd = None if self.cwd is None else perform_text(context, self.cwd)
         _check_runnable(argv[0], env, cwd)
-        base = perform_text(context, self.name) if self.name is not None else \
-            os.path.basename(argv[0])
         mode = resolve(context, self.output or "log", Kind.TEXT, "output",
                        _field_spec(self, "output"))
         stdout_to, stderr_to = OUTPUT_MODES[mode]

@@ -5,6 +5,7 @@ most values do not mind; strip it with `$(eval)` where it matters). A non-zero e
 fails and shows the command's stderr; the second argument decides what stderr on success
 does: `fail` (the default) fails, `warn` logs it, `ignore` drops it, `capture` appends it to
 the output. The command is split like a shell command line but never run by a shell.
+`xacro` calls run in-process when that gives the same result (see packages.xacro).
 """
 
 from __future__ import annotations
@@ -14,6 +15,8 @@ import subprocess
 from dataclasses import dataclass
 
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
+from launcher.errors import LaunchError
+from launcher.packages.xacro import run_xacro, runs_in_process
 from launcher.runtime.context import LaunchContext
 
 _MODES = ("fail", "warn", "ignore", "capture")
@@ -37,6 +40,13 @@ class Command(Substitution):
             raise self.fail(f"command: cannot split '{text}': {exc}") from None
         if not argv:
             raise self.fail("command: the command is empty")
+        if runs_in_process(argv, context.environment):
+            try:
+                output = run_xacro(argv, context.packages)
+            except LaunchError as exc:
+                raise exc.at(self.where) from None
+            if output is not None:
+                return output
         try:
             result = _run(argv, mode, context)
         except FileNotFoundError:

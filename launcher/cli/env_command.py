@@ -1,0 +1,35 @@
+"""`launcher env [--shell sh|bash|zsh|json]`: the workspace's hooks, for a shell."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shlex
+
+from launcher.cli.workspace import hooked_environment, load_index
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "env", help="print the environment the workspace's hooks make",
+        description="Print the changes that every package's environment hooks make, as "
+                    "commands for a shell (eval \"$(launcher env)\") or as JSON.")
+    p.add_argument("--shell", choices=("sh", "bash", "zsh", "json"), default="sh")
+    p.set_defaults(run=run)
+
+
+def changes(before: dict[str, str], after: dict[str, str]) -> dict[str, str | None]:
+    names = sorted(set(before) | set(after))
+    return {n: after.get(n) for n in names if before.get(n) != after.get(n)}
+
+
+def run(args: argparse.Namespace) -> int:
+    before = dict(os.environ)
+    diff = changes(before, hooked_environment(load_index(), before))
+    if args.shell == "json":
+        print(json.dumps(diff, indent=2, sort_keys=True))
+        return 0
+    for name, value in diff.items():
+        print(f"unset {name}" if value is None else f"export {name}={shlex.quote(value)}")
+    return 0

@@ -1,0 +1,3 @@
+"""launch.conditions (launcher.api)."""
+
+from launcher.api import IfCondition, UnlessCondition  # noqa: F401

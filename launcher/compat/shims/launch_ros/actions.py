@@ -1,0 +1,10 @@
+"""launch_ros.actions (launcher.api)."""
+
+from launcher.api import (  # noqa: F401
+    Node,
+    PushRosNamespace,
+    SetParameter,
+    SetParametersFromFile,
+    SetRemap,
+    SetUseSimTime,
+)

@@ -1,0 +1,3 @@
+"""launch_ros.substitutions (launcher.api)."""
+
+from launcher.api import FindPackagePrefix, FindPackageShare  # noqa: F401

@@ -1,0 +1,160 @@
+"""`node`: run a package's executable as a ROS node (launch_ros's Node).
+
+The command line follows ROS 2's layout:
+    EXE ARGS… --ros-args ROS_ARGS… -r __node:=NAME -r __ns:=NS
+        --params-file FILE… -r from:=to…
+Parameters given inline (and global ones from set_parameter) go into a params file that
+launcher writes under the run's log folder; `from` files are passed as they are.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from launcher.description import parameters as params
+from launcher.description.actions.executable import ExecuteProcess
+from launcher.description.fields import Kind, attr, resolve
+from launcher.description.registry import action
+from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.errors import ExecutionError
+from launcher.packages.executables import find_executable
+from launcher.runtime.context import LaunchContext
+
+
+@dataclass(eq=False)
+class ParamEntry:
+    name: Text_ | None = attr(Kind.TEXT, doc="Parameter name (dotted for nested ones).")
+    value: Text_ | None = attr(Kind.TEXT, doc="Its value.")
+    type: Any = attr(Kind.TEXT, choices=params.TYPES,
+                     doc="str, int, float, bool or yaml; default: inferred from a literal.")
+    from_file: Text_ | None = attr(Kind.TEXT, name="from", doc="A params YAML file to load.")
+    children: list[Any] = attr(Kind.ENTRIES, name="param", doc="Nested parameters.")
+
+
+_spec = ParamEntry.__dataclass_fields__["children"]
+_spec.metadata = {"launch": _spec.metadata["launch"]._replace(entry=ParamEntry)}  # self-nesting
+
+
+@dataclass(eq=False)
+class RemapEntry:
+    source: Text_ = attr(Kind.TEXT, name="from", required=True, doc="The name in the node.")
+    target: Text_ = attr(Kind.TEXT, name="to", required=True, doc="The name it becomes.")
+
+
+@action("node")
+@dataclass(kw_only=True, eq=False)
+class Node(ExecuteProcess):
+    cmd: Any = None  # made from package and executable
+    package: Any = attr(Kind.TEXT, name="pkg", aliases=("package",), required=True,
+                        doc="The package holding the executable.")
+    executable: Any = attr(Kind.TEXT, name="exec", aliases=("executable",), required=True,
+                           doc="The executable's name in the package.")
+    node_name: Any = attr(Kind.TEXT, name="name", doc="The node's name (-r __node:=).")
+    namespace: Any = attr(Kind.TEXT, aliases=("ns",), doc="The node's namespace.")
+    exec_name: Any = attr(Kind.TEXT, doc="Label for its output; default: the node name.")
+    arguments: Any = attr(Kind.COMMAND, name="args", aliases=("arguments",),
+                          doc="Arguments before --ros-args.")
+    ros_arguments: Any = attr(Kind.COMMAND, name="ros_args", aliases=("ros_arguments",),
+                              doc="Arguments after --ros-args.")
+    parameters: list[Any] = attr(Kind.ENTRIES, name="param", entry=ParamEntry,
+                                 doc="Parameters: name/value, nested, or from a file.")
+    remappings: list[Any] = attr(Kind.ENTRIES, name="remap", entry=RemapEntry,
+                                 doc="Topic and service remappings.")
+    name: Any = None  # the label comes from exec_name / node_name
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        self.parameters = _python_parameters(self.parameters)
+        self.remappings = [r if isinstance(r, RemapEntry) else
+                           RemapEntry(to_text(r[0]), to_text(r[1])) for r in self.remappings]
+
+    def spec(self, context: LaunchContext):  # type: ignore[override]
+        if context.packages is None:
+            raise ExecutionError("node needs the package index, which this run lacks")
+        package = context.packages.get(perform_text(context, self.package))
+        found = find_executable(package, perform_text(context, self.executable))
+        node = self._node_name(context)
+        space = self._namespace(context)
+        argv = [*self.launch_prefix(context), *found.argv,
+                *self._words(context, self.arguments), "--ros-args",
+                *self._words(context, self.ros_arguments)]
+        if node:
+            argv += ["-r", f"__node:={node}"]
+        if space:
+            argv += ["-r", f"__ns:={space}"]
+        for path in self._params_files(context, node or found.name):
+            argv += ["--params-file", str(path)]
+        own = ((perform_text(context, r.source), perform_text(context, r.target))
+               for r in self.remappings)
+        for source, target in [*params.remaps(context), *own]:
+            argv += ["-r", f"{source}:={target}"]
+        self._check_unique(context, node or found.name, space)
+        label = self.exec_name if self.exec_name is not None else self.node_name
+        base = perform_text(context, label) if label is not None else found.name
+        env = found.environment(self.environment(context))
+        return self.process_spec(context, argv, env, base)
+
+    def _node_name(self, context: LaunchContext) -> str:
+        return perform_text(context, self.node_name) if self.node_name is not None else ""
+
+    def _namespace(self, context: LaunchContext) -> str:
+        own = perform_text(context, self.namespace) if self.namespace is not None else ""
+        return params.join_namespace(params.namespace(context), own)
+
+    def _params_files(self, context: LaunchContext, stem: str) -> list[Path]:
+        files = [Path(f) for f in params.global_parameter_files(context)]
+        inline: dict[str, Any] = dict(params.global_parameters(context))
+        for entry in self.parameters:
+            if entry.from_file is not None:
+                path = Path(perform_text(context, entry.from_file))
+                params.check_params_file(path, self.where)
+                files.append(path)
+            else:
+                _collect(context, entry, "", inline)
+        if inline:
+            folder = Path(context.log_dir) / "params" if context.log_dir else \
+                Path(tempfile.gettempdir()) / "launcher-params"
+            files.append(params.write_params_file(folder, stem.strip("/") or "node", inline))
+        return files
+
+    def _check_unique(self, context: LaunchContext, node: str, space: str) -> None:
+        fqn = f"{space.rstrip('/')}/{node}" if space else f"/{node}"
+        other = context.node_names.get(fqn)
+        if other is not None and other is not self.where:
+            context.log("WARN", f"two nodes are named '{fqn}': at {other} and at {self.where}")
+        context.node_names.setdefault(fqn, self.where)
+
+
+
+def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[str, Any]) -> None:
+    if entry.name is None:
+        raise ExecutionError("param: each parameter needs 'name' (or 'from' a file)")
+    name = f"{outer}{perform_text(context, entry.name)}"
+    if entry.children:
+        for child in entry.children:
+            _collect(context, child, f"{name}.", out)
+        return
+    if entry.value is None:
+        raise ExecutionError(f"param '{name}' needs a 'value' (or nested 'param' entries)")
+    kind = resolve(context, entry.type, Kind.TEXT, "param.type") if entry.type else None
+    out[name] = params.typed(perform_text(context, entry.value), kind)
+
+
+def _python_parameters(values: list[Any]) -> list[ParamEntry]:
+    """The Python API's `parameters=[{'a': 1}, 'file.yaml']` as entries."""
+    entries: list[ParamEntry] = []
+    for value in values:
+        if isinstance(value, ParamEntry):
+            entries.append(value)
+        elif isinstance(value, dict):
+            for name, item in value.items():
+                kind = "str" if isinstance(item, str) else None
+                text = str(item).lower() if isinstance(item, bool) else item
+                entries.append(ParamEntry(name=to_text(name), value=to_text(text),
+                                          type=kind and to_text(kind)))
+        else:
+            entries.append(ParamEntry(from_file=to_text(value)))
+    return entries

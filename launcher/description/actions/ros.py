@@ -1,0 +1,69 @@
+"""Run-wide ROS settings for the nodes after them (scoped by `group`, as in ROS 2):
+`push_ros_namespace`, `set_parameter`, `set_parameters_from_file`, `set_remap`,
+`set_use_sim_time`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from launcher.description import parameters as params
+from launcher.description.action import Action
+from launcher.description.fields import Kind, attr, resolve
+from launcher.description.registry import action
+from launcher.description.substitution import perform_text
+from launcher.runtime.context import LaunchContext
+
+
+@action("push_ros_namespace", "push-ros-namespace")
+@dataclass(kw_only=True, eq=False)
+class PushRosNamespace(Action):
+    namespace: Any = attr(Kind.TEXT, aliases=("ns",), required=True,
+                          doc="Namespace for the nodes after it (relative ones nest).")
+
+    def execute(self, context: LaunchContext) -> None:
+        params.push_namespace(context, perform_text(context, self.namespace))
+
+
+@action("set_parameter")
+@dataclass(kw_only=True, eq=False)
+class SetParameter(Action):
+    name: Any = attr(Kind.TEXT, required=True, doc="Parameter name.")
+    value: Any = attr(Kind.TEXT, required=True, doc="Its value, for every later node.")
+
+    def execute(self, context: LaunchContext) -> None:
+        params.add_global_parameter(context, perform_text(context, self.name),
+                                    params.typed(perform_text(context, self.value)))
+
+
+@action("set_parameters_from_file")
+@dataclass(kw_only=True, eq=False)
+class SetParametersFromFile(Action):
+    filename: Any = attr(Kind.TEXT, required=True, doc="A params YAML file for later nodes.")
+
+    def execute(self, context: LaunchContext) -> None:
+        path = Path(perform_text(context, self.filename))
+        params.check_params_file(path, self.where)
+        params.add_global_parameter_file(context, str(path))
+
+
+@action("set_remap")
+@dataclass(kw_only=True, eq=False)
+class SetRemap(Action):
+    source: Any = attr(Kind.TEXT, name="from", required=True, doc="Name to remap.")
+    target: Any = attr(Kind.TEXT, name="to", required=True, doc="What it becomes.")
+
+    def execute(self, context: LaunchContext) -> None:
+        params.add_remap(context, perform_text(context, self.source),
+                         perform_text(context, self.target))
+
+
+@action("set_use_sim_time")
+@dataclass(kw_only=True, eq=False)
+class SetUseSimTime(Action):
+    value: Any = attr(Kind.BOOL, required=True, doc="true: nodes follow /clock.")
+
+    def execute(self, context: LaunchContext) -> None:
+        params.add_global_parameter(context, "use_sim_time",
+                                    resolve(context, self.value, Kind.BOOL, "value"))

@@ -1,0 +1,84 @@
+"""Packages: `$(find-pkg-share PKG)`, `$(find-pkg-prefix PKG)`, `$(exec-in-pkg EXE PKG)`,
+ROS 1's `$(find PKG)`, and `$(param NAME [default])` (a parameter set with set_parameter)."""
+
+from __future__ import annotations
+
+import shlex
+from dataclasses import dataclass
+
+from launcher.description.parameters import global_parameters
+from launcher.description.substitution import Substitution, Text_, perform_text, substitution
+from launcher.errors import LaunchError
+from launcher.packages.executables import find_executable
+from launcher.runtime.context import LaunchContext
+
+
+def _index(sub: Substitution, context: LaunchContext):
+    if context.packages is None:
+        raise sub.fail(f"$({sub.names[0]}) needs the package index, which this run lacks")
+    return context.packages
+
+
+@substitution("find-pkg-share", "find")
+@dataclass(frozen=True)
+class FindPackageShare(Substitution):
+    """The package's folder (packages are used in place); `find` is the ROS 1 spelling."""
+
+    package: Text_
+
+    def perform(self, context: LaunchContext) -> str:
+        try:
+            return str(_index(self, context).share(perform_text(context, self.package)))
+        except LaunchError as exc:
+            raise exc.at(self.where) from None
+
+
+@substitution("find-pkg-prefix")
+@dataclass(frozen=True)
+class FindPackagePrefix(Substitution):
+    """A prefix whose share/<package> is the package."""
+
+    package: Text_
+
+    def perform(self, context: LaunchContext) -> str:
+        try:
+            return str(_index(self, context).prefix(perform_text(context, self.package)))
+        except LaunchError as exc:
+            raise exc.at(self.where) from None
+
+
+@substitution("exec-in-pkg")
+@dataclass(frozen=True)
+class ExecutableInPackage(Substitution):
+    """The command that runs EXE of PKG (a path, or an interpreter line for entry points)."""
+
+    executable: Text_
+    package: Text_
+
+    def perform(self, context: LaunchContext) -> str:
+        try:
+            package = _index(self, context).get(perform_text(context, self.package))
+            found = find_executable(package, perform_text(context, self.executable))
+        except LaunchError as exc:
+            raise exc.at(self.where) from None
+        return str(found.path) if found.path is not None else shlex.join(found.argv)
+
+
+@substitution("param")
+@dataclass(frozen=True)
+class Parameter(Substitution):
+    """A global parameter set earlier with set_parameter."""
+
+    name: Text_
+    default: Text_ | None = None
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_text(context, self.name)
+        parameters = dict(global_parameters(context))
+        if name in parameters:
+            value = parameters[name]
+            return str(value).lower() if isinstance(value, bool) else str(value)
+        if self.default is not None:
+            return perform_text(context, self.default)
+        raise self.fail(f"parameter '{name}' is not set; set it with set_parameter or give a "
+                        f"default: $(param {name} DEFAULT)")

@@ -1,0 +1,1 @@
+"""Packages used in place: package.xml, the index, executables, environment hooks, xacro."""

@@ -1,0 +1,29 @@
+"""Run a Python entry point: `python -m launcher.packages.entry MODULE:FUNCTION [ARGS…]`.
+
+The module is imported and the function looked up by name; its return value is the exit
+status, as console scripts work.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+
+
+def main() -> int:
+    if len(sys.argv) < 2 or ":" not in sys.argv[1]:
+        print("usage: python -m launcher.packages.entry MODULE:FUNCTION [ARGS…]",
+              file=sys.stderr)
+        return 2
+    target = sys.argv[1]
+    module_name, _, attribute = target.partition(":")
+    function = importlib.import_module(module_name)
+    for part in attribute.split("."):
+        function = getattr(function, part)
+    sys.argv = [module_name.rsplit(".", 1)[-1], *sys.argv[2:]]
+    result = function()
+    return result if isinstance(result, int) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

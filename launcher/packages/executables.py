@@ -1,0 +1,91 @@
+"""A package's executables: what `node` and `$(exec-in-pkg)` can run.
+
+  * executable files in `lib/<pkg>/`, `lib/`, `scripts/` and `bin/` of the package;
+  * Python entry points, declared in package.xml as
+        <export><executable name="driver" module="robot_application.driver:main"/></export>
+    or in setup.cfg's `[options.entry_points] console_scripts` (as ament_python packages do).
+    They run as `python -m launcher.packages.entry MODULE:FUNCTION`, with the package folder
+    on PYTHONPATH; the function is found by import, never by evaluating text.
+"""
+
+from __future__ import annotations
+
+import configparser
+import os
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from launcher.errors import LaunchError, did_you_mean
+from launcher.packages.manifest import Package
+
+_ENTRY = re.compile(r"^[A-Za-z_][\w.]*:[A-Za-z_][\w.]*$")
+
+
+@dataclass(frozen=True)
+class Executable:
+    name: str
+    argv: tuple[str, ...]  # the command to run it, before its own arguments
+    path: Path | None = None  # the file, for file executables
+    pythonpath: tuple[str, ...] = field(default=())  # folders its module needs
+    runnable: bool = True  # False: a file without the executable bit
+
+    def environment(self, env: dict[str, str]) -> dict[str, str]:
+        if not self.pythonpath:
+            return env
+        old = env.get("PYTHONPATH", "")
+        return {**env, "PYTHONPATH": os.pathsep.join([*self.pythonpath, *([old] if old else [])])}
+
+
+def executables(package: Package) -> dict[str, Executable]:
+    found: dict[str, Executable] = {}
+    folders = [package.path / "lib" / package.name, package.path / "lib",
+               package.path / "scripts", package.path / "bin"]
+    for folder in folders:
+        try:
+            entries = sorted(os.scandir(folder), key=lambda e: e.name)
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.is_file() and not entry.name.startswith((".", "_")) \
+                    and entry.name not in found:
+                path = Path(entry.path)
+                found[entry.name] = Executable(entry.name, (str(path),), path,
+                                               runnable=os.access(path, os.X_OK))
+    for name, target in _declared_entry_points(package):
+        found.setdefault(name, Executable(
+            name, (sys.executable, "-m", "launcher.packages.entry", target),
+            pythonpath=(str(package.path),)))
+    return found
+
+
+def find_executable(package: Package, name: str) -> Executable:
+    available = executables(package)
+    found = available.get(name)
+    if found is None:
+        listing = ", ".join(sorted(available)) or "none"
+        raise LaunchError(f"package '{package.name}' has no executable '{name}'"
+                          f"{did_you_mean(name, available)}; it has: {listing}")
+    if not found.runnable:
+        raise LaunchError(f"'{found.path}' in package '{package.name}' is not executable; "
+                          f"make it so with: chmod +x {found.path}")
+    return found
+
+
+def _declared_entry_points(package: Package) -> list[tuple[str, str]]:
+    declared = [(e.get("name", ""), e.get("module", ""))
+                for e in package.exports.get("executable", [])]
+    setup_cfg = package.path / "setup.cfg"
+    if setup_cfg.is_file():
+        parser = configparser.ConfigParser()
+        try:
+            parser.read(setup_cfg)
+            lines = parser.get("options.entry_points", "console_scripts", fallback="")
+        except configparser.Error:
+            lines = ""
+        for line in lines.splitlines():
+            if "=" in line:
+                name, target = (part.strip() for part in line.split("=", 1))
+                declared.append((name, target))
+    return [(n, t) for n, t in declared if n and _ENTRY.match(t)]

@@ -1,0 +1,129 @@
+"""package.xml, the index's search order, executables."""
+
+from __future__ import annotations
+
+import os
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from launcher.errors import LaunchError, ParseError
+from launcher.packages.executables import executables, find_executable
+from launcher.packages.index import PackageIndex, PackageNotFound
+from launcher.packages.manifest import read_manifest
+
+
+def manifest(name: str, depends: tuple[str, ...] = (), extra: str = "") -> str:
+    deps = "".join(f"<depend>{d}</depend>" for d in depends)
+    return (f'<?xml version="1.0"?>\n<package format="3">\n  <name>{name}</name>\n'
+            f"  <version>1.2.3</version>\n  <description>d</description>\n"
+            f'  <maintainer email="m@x">m</maintainer>\n  <license>MIT</license>\n'
+            f"  {deps}{extra}\n</package>\n")
+
+
+def make_tree(root: Path, files: dict[str, str], executable: tuple[str, ...] = ()) -> Path:
+    for relative, text in files.items():
+        path = root / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(textwrap.dedent(text))
+        if relative in executable:
+            path.chmod(0o755)
+    return root
+
+
+def index_for(*roots: Path, ament: str = "", tmp: Path | None = None) -> PackageIndex:
+    env = {"LAUNCHER_PACKAGE_PATH": os.pathsep.join(map(str, roots)),
+           "AMENT_PREFIX_PATH": ament, "LAUNCHER_CACHE_DIR": str((tmp or roots[0]) / ".cache")}
+    return PackageIndex.from_environment(env, cwd=Path("/"))
+
+
+def test_manifest_fields(tmp_path):
+    make_tree(tmp_path, {"p/package.xml": manifest("robot_sim", ("robot_description",),
+                                                   "<export><build_type>ament_cmake</build_type>"
+                                                   "</export>")})
+    package = read_manifest(tmp_path / "p/package.xml")
+    assert package.name == "robot_sim" and package.version == "1.2.3"
+    assert package.dependencies == {"depend": ["robot_description"]}
+    assert package.exports["build_type"][0]["text"] == "ament_cmake"
+    assert package.run_dependencies() == {"robot_description"}
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("<package><name>x</name>", "package.xml:1:24: malformed package.xml: no element found"),
+    ("<package format='3'>\n  <version>1</version>\n</package>", "package.xml:1: package.xml has no <name>"),
+    ("<package>\n  <name>Robot-Sim</name>\n</package>", "package.xml:2: invalid package name 'Robot-Sim'"),
+], ids=["malformed", "no-name", "invalid-name"])
+def test_bad_manifests(tmp_path, text, expected):
+    (tmp_path / "package.xml").write_text(text)
+    with pytest.raises(ParseError) as info:
+        read_manifest(tmp_path / "package.xml")
+    assert expected in str(info.value) and "line 1, column" not in str(info.value)
+
+
+def test_search_order_ignore_markers_and_duplicates(tmp_path):
+    first = make_tree(tmp_path / "ws1", {
+        "src/a/package.xml": manifest("alpha"),
+        "src/deep/er/b/package.xml": manifest("beta"),
+        "src/ignored/COLCON_IGNORE": "",
+        "src/ignored/c/package.xml": manifest("gamma"),
+        "src/.hidden/d/package.xml": manifest("delta"),
+    })
+    second = make_tree(tmp_path / "ws2", {"alpha/package.xml": manifest("alpha"),
+                                          "e/package.xml": manifest("epsilon")})
+    index = index_for(first, second, tmp=tmp_path)
+    assert {"alpha", "beta", "epsilon", "mujoco_sim", "mujoco_bridge",
+            "robot_state_publisher"} <= set(index.packages)
+    assert "gamma" not in index and "delta" not in index
+    assert index.share("alpha") == first / "src/a"
+    (warning,) = index.warnings
+    assert "package 'alpha' is found twice" in warning and str(second / "alpha") in warning
+    assert index.get("mujoco_sim").origin == "builtin"
+
+
+def test_not_found_lists_places_and_close_names(tmp_path):
+    index = index_for(make_tree(tmp_path / "ws", {"a/package.xml": manifest("robot_sim")}))
+    with pytest.raises(PackageNotFound) as info:
+        index.get("robot_sm")
+    text = str(info.value)
+    assert "package 'robot_sm' not found (did you mean 'robot_sim'?); searched:" in text
+    assert f"{tmp_path / 'ws'} (workspace)" in text and "(builtin)" in text
+
+
+def test_prefix_is_a_link_farm_into_the_package(tmp_path):
+    ws = make_tree(tmp_path / "ws", {"a/package.xml": manifest("robot_sim"),
+                                     "a/worlds/w.xml": "<mujoco/>"})
+    index = index_for(ws, tmp=tmp_path)
+    prefix = index.prefix("robot_sim")
+    assert (prefix / "share" / "robot_sim" / "worlds" / "w.xml").read_text() == "<mujoco/>"
+
+
+def test_ament_prefixes(tmp_path):
+    prefix = make_tree(tmp_path / "install", {
+        "share/ament_index/resource_index/packages/ros_thing": "",
+        "share/ros_thing/package.xml": manifest("ros_thing"),
+    })
+    index = index_for(tmp_path / "nothing", ament=str(prefix), tmp=tmp_path)
+    assert index.share("ros_thing") == prefix / "share/ros_thing"
+    assert index.prefix("ros_thing") == prefix
+
+
+def test_executables_files_and_entry_points(tmp_path):
+    ws = make_tree(tmp_path / "ws", {
+        "app/package.xml": manifest("app", extra='<export><executable name="driver" '
+                                                 'module="app_py.driver:main"/></export>'),
+        "app/scripts/tool.sh": "#!/bin/sh\necho tool\n",
+        "app/scripts/notexec.py": "print(1)\n",
+        "app/setup.cfg": "[options.entry_points]\nconsole_scripts =\n    square = app_py.sq:main\n",
+    }, executable=("app/scripts/tool.sh",))
+    package = index_for(ws).get("app")
+    found = executables(package)
+    assert set(found) == {"tool.sh", "notexec.py", "driver", "square"}
+    assert found["driver"].argv[1:] == ("-m", "launcher.packages.entry", "app_py.driver:main")
+    assert found["driver"].environment({})["PYTHONPATH"] == str(package.path)
+    with pytest.raises(LaunchError, match="has no executable 'drivr' \\(did you mean 'driver'"
+                                          "\\?\\); it has: driver, notexec.py, square, tool.sh"):
+        find_executable(package, "drivr")
+    with pytest.raises(LaunchError, match="notexec.py' in package 'app' is not executable; make "
+                                          "it so with: chmod \\+x"):
+        find_executable(package, "notexec.py")
