@@ -1,28 +1,42 @@
-"""`launcher COMMAND …`: parse argv, run the command, print one clean message on failure."""
+"""`launcher COMMAND …`: parse argv, run the command, print one clean message on failure.
+
+Only the module of the command being run is imported (start-up time is benchmarked); the
+others are listed for `--help` from this table.
+"""
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 
 from launcher import __version__
-from launcher.cli import env_command, launch_command, pkg_command
 from launcher.errors import LaunchError
 
+COMMANDS = {
+    "launch": ("launcher.cli.launch_command", "run a launch file"),
+    "pkg": ("launcher.cli.pkg_command", "packages: list, find, create"),
+    "env": ("launcher.cli.env_command", "print the environment the workspace's hooks make"),
+}
 
-def build_parser() -> argparse.ArgumentParser:
+
+def build_parser(selected: str | None) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="launcher", description="ROS 2-style launch files for simulated robots.")
     parser.add_argument("--version", action="version", version=f"launcher {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    launch_command.add_parser(commands)
-    pkg_command.add_parser(commands)
-    env_command.add_parser(commands)
+    for name, (module, helptext) in COMMANDS.items():
+        if name == selected:
+            importlib.import_module(module).add_parser(commands)
+        else:
+            commands.add_parser(name, help=helptext)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    argv = sys.argv[1:] if argv is None else argv
+    selected = next((word for word in argv if not word.startswith("-")), None)
+    args = build_parser(selected if selected in COMMANDS else None).parse_args(argv)
     debug = getattr(args, "debug", False)
     try:
         return int(args.run(args) or 0)

@@ -15,8 +15,8 @@ Packages are used in place: `$(find-pkg-share pkg)` is the package folder. For
 
 from __future__ import annotations
 
-import hashlib
 import os
+import zlib
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -99,8 +99,9 @@ class PackageIndex:
                                  f"(used) and {package.path} (ignored)")
 
     def _link_prefix(self, root: Path) -> Path:
-        digest = hashlib.sha1(str(root.resolve()).encode()).hexdigest()[:12]
-        return self.cache / "prefixes" / digest
+        resolved = root.resolve()
+        digest = f"{zlib.crc32(str(resolved).encode()):08x}"
+        return self.cache / "prefixes" / f"{resolved.name}-{digest}"
 
     # --- looking up -------------------------------------------------------------------------
     def __iter__(self) -> Iterator[Package]:
