@@ -126,15 +126,21 @@ def _record(cls: type, entity: Entity, registry: Registry, what: str) -> Any:
         if key not in valid:
             raise ParseError(f"{what}: unknown key '{key}'{did_you_mean(key, valid)}; "
                              f"entries take {', '.join(valid)}", attribute.name_location)
+    children = list(entity.children)
     for field, spec in declared_fields(cls):
         name = frontend_name(field, spec)
-        if name in entity.attributes:
+        if spec.kind is Kind.ENTRIES and any(c.tag == name for c in children):
+            kwargs[field.name] = [_record(spec.entry, c, registry, what)
+                                  for c in children if c.tag == name]
+            children = [c for c in children if c.tag != name]
+        elif name in entity.attributes:
             used.add(name)
             kwargs[field.name] = _value(entity.attributes[name], spec, registry, what)
         elif spec.required:
             raise ParseError(f"{what}: each entry needs '{name}'", entity.location)
-    if entity.children:
-        raise ParseError(f"{what}: entries take no child tags", entity.children[0].location)
+    if children:
+        raise ParseError(f"{what}: entries take no child tag '{children[0].tag}'",
+                         children[0].location)
     return cls(**kwargs)
 
 

@@ -110,3 +110,32 @@ def test_on_exit_children_in_xml_and_yaml():
         (executable,) = description.actions
         (log,) = executable.on_exit
         assert log.tags == ("log",)
+
+
+def test_node_parameters_nest_in_xml_and_yaml():
+    from launcher.description.actions.node import ParamEntry
+
+    xml = xml_description("""
+    <launch>
+      <node pkg="p" exec="e">
+        <param name="limits"><param name="max" value="1.5"/><param name="min" value="0"/></param>
+        <param from="file.yaml"/>
+        <remap from="a" to="b"/>
+      </node>
+    </launch>
+    """)
+    yml = yaml_description("""
+    launch:
+      - node:
+          pkg: p
+          exec: e
+          param:
+            - {name: limits, param: [{name: max, value: "1.5"}, {name: min, value: "0"}]}
+            - {from: file.yaml}
+          remap: [{from: a, to: b}]
+    """)
+    for description in (xml, yml):
+        (node,) = description.actions
+        limits, from_file = node.parameters
+        assert isinstance(limits, ParamEntry) and len(limits.children) == 2
+        assert from_file.from_file is not None and len(node.remappings) == 1
