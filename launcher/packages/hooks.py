@@ -114,15 +114,15 @@ class HookRunner:
 
     def _apply(self, package: Package, prefix: Path, path: Path) -> None:
         text = path.read_text(encoding="utf-8")
-        configured = path
-        if path.name.endswith(".in"):
+        templated = path.name.endswith(".in")
+        if templated:
             text = configure(text, template_variables(package, prefix), path)
-            configured = self._write_configured(package, path, text)
         kind = os.path.splitext(path.name.removesuffix(".in"))[1]
         if kind == ".dsv":
             apply_dsv(path, text, prefix, self.env,
                       lambda target, where: self._source(package, prefix, target, where))
-        else:
+        else:  # a shell sources a file: write the configured text out first
+            configured = self._write_configured(package, path, text) if templated else path
             self._shell(path, configured, prefix, SHELLS.get(kind, "sh"))
         self.applied.append(path)
 

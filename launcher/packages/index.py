@@ -83,14 +83,17 @@ class PackageIndex:
         """Scan every root (again: edits are seen on every build)."""
         self.packages, self.warnings = {}, []
         for root in self.roots:
-            found = _ament_packages(root.path) if root.origin == "ament" else \
-                _scan(root.path, root.origin)
+            if root.origin == "ament":
+                found = _ament_packages(root.path)
+            else:
+                found = _scan(str(root.path), root.origin)
+                link_prefix = self._link_prefix(root.path)
+                for package in found:
+                    package.prefix = link_prefix
             for package in found:
-                self._add(package, root)
+                self._add(package)
 
-    def _add(self, package: Package, root: SearchRoot) -> None:
-        if package.origin != "ament":
-            package.prefix = self._link_prefix(root.path)
+    def _add(self, package: Package) -> None:
         first = self.packages.get(package.name)
         if first is None:
             self.packages[package.name] = package
@@ -135,7 +138,8 @@ class PackageIndex:
         return package.prefix
 
 
-def _scan(root: Path, origin: str) -> list[Package]:
+def _scan(root: str, origin: str) -> list[Package]:
+    """Packages below `root` (plain strings while walking: pathlib costs here)."""
     found: list[Package] = []
     try:
         entries = list(os.scandir(root))
@@ -145,12 +149,12 @@ def _scan(root: Path, origin: str) -> list[Package]:
     if any(marker in names for marker in IGNORE_MARKERS):
         return found
     if "package.xml" in names:
-        return [read_manifest(root / "package.xml", origin)]
+        return [read_manifest(Path(root, "package.xml"), origin)]
     for entry in sorted(entries, key=lambda e: e.name):
         if entry.name.startswith(".") or entry.name in _SKIP:
             continue
         if entry.is_dir(follow_symlinks=True):
-            found += _scan(Path(entry.path), origin)
+            found += _scan(entry.path, origin)
     return found
 
 
