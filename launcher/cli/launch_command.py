@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import argparse
 import re
+import sys
 from pathlib import Path
 
 from launcher import compat
+from launcher.bus import discovery
 from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
 from launcher.description.actions.arguments import check_required
@@ -18,6 +20,7 @@ from launcher.frontend.loader import load_file
 from launcher.packages.index import PackageIndex
 from launcher.runtime.logs import log_root
 from launcher.runtime.output import Printer
+from launcher.runtime.process import ProcessSpec
 from launcher.runtime.service import LaunchService, default_environment
 
 _ASSIGNMENT = re.compile(r"^([A-Za-z_][A-Za-z0-9_\-./]*):=(.*)$", re.S)
@@ -84,7 +87,9 @@ def run(args: argparse.Namespace) -> int:
     check_required(description.actions, configurations)
     environment = hooked_environment(index, default_environment())
     compat.enable_for_children(environment)
-    service = LaunchService(
+    router = bus_router(environment)
+    run_file = discovery.write_run_file(environment[discovery.ROUTER_VARIABLE])
+    service = LaunchService(daemons=[router],
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
@@ -97,4 +102,20 @@ def run(args: argparse.Namespace) -> int:
             raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
         root.append(TimerAction(period=args.duration, actions=[Shutdown(
             reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
-    return service.run(LaunchDescription(root))
+    try:
+        return service.run(LaunchDescription(root))
+    finally:
+        run_file.unlink(missing_ok=True)
+
+
+def bus_router(environment: dict[str, str]) -> ProcessSpec:
+    """The run's Zenoh router on a free loopback port; children learn it from the environment.
+    A LAUNCHER_ROUTER already set (another host's run) is joined: routers connect to routers."""
+    endpoint = discovery.free_endpoint()
+    argv = [sys.executable, "-m", "launcher.bus.router", "--listen", endpoint]
+    if environment.get(discovery.ROUTER_VARIABLE):
+        argv += ["--connect", environment[discovery.ROUTER_VARIABLE]]
+    environment[discovery.ROUTER_VARIABLE] = endpoint
+    return ProcessSpec(label="router", argv=argv, env=dict(environment), daemon=True,
+                       stdout_to=frozenset({"log"}), stderr_to=frozenset({"log"}),
+                       sigterm_timeout=1.0, sigkill_timeout=1.0)

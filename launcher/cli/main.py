@@ -17,6 +17,7 @@ COMMANDS = {
     "launch": ("launcher.cli.launch_command", "run a launch file"),
     "pkg": ("launcher.cli.pkg_command", "packages: list, find, create"),
     "env": ("launcher.cli.env_command", "print the environment the workspace's hooks make"),
+    "topic": ("launcher.cli.topic_command", "topics: list, echo, pub, hz, info"),
 }
 
 

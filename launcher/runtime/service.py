@@ -36,6 +36,7 @@ class LaunchService:
         launch_prefix: str = "",
         debug: bool = False,
         loop: EventLoop | None = None,
+        daemons: list[ProcessSpec] | None = None,
     ) -> None:
         self.printer = printer or Printer()
         self.run_log = RunLog(log_root) if log_root is not None else None
@@ -47,6 +48,7 @@ class LaunchService:
         self.launch_prefix = launch_prefix
         self.debug = debug
         self.processes: list[ManagedProcess] = []
+        self._daemons = list(daemons or [])
         self._queue: deque[Any] = deque()
         self._draining = False
         self._handlers: list[events.EventHandler] = []
@@ -71,6 +73,8 @@ class LaunchService:
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
                                            f"{self.run_log.folder}")
+            for spec in self._daemons:
+                self.start_process(spec)
             self.schedule([description])
             self.loop.run()
         finally:
@@ -158,7 +162,8 @@ class LaunchService:
                                        record.text))
 
     def _on_started(self, process: ManagedProcess) -> None:
-        self.log("INFO", process.label, f"process started with pid [{process.pid}]")
+        level = "DEBUG" if process.spec.daemon else "INFO"
+        self.log(level, process.label, f"process started with pid [{process.pid}]")
         self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
 
     def _on_exited(self, process: ManagedProcess, respawn_pending: bool) -> None:
@@ -244,9 +249,13 @@ class LaunchService:
                 process.escalate()
 
     def _check_idle(self) -> None:
+        """The launch ends when nothing but daemons runs and no timer or action is pending."""
         if self._finished or self._queue or self._draining or self._timers:
             return
+        if any(p.alive and not p.spec.daemon for p in self.processes):
+            return
         if any(p.alive for p in self.processes):
+            self.shutdown("nothing left to run")  # stops the daemons; we come back here
             return
         self._finished = True
         self.loop.stop()

@@ -1,0 +1,45 @@
+"""What is on the bus: nodes, topics and their types, from liveliness tokens."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+
+import zenoh
+
+from launcher.bus import keys
+from launcher.bus.node import DOMAIN
+
+
+@dataclass
+class TopicInfo:
+    name: str
+    types: set[str] = field(default_factory=set)
+    publishers: list[keys.Entity] = field(default_factory=list)
+    subscribers: list[keys.Entity] = field(default_factory=list)
+
+
+def entities(session: zenoh.Session, timeout: float = 1.0) -> list[keys.Entity]:
+    found = []
+    for reply in session.liveliness().get(f"{keys.LIVELINESS}/{DOMAIN}/**", timeout=timeout):
+        if reply.ok is not None:
+            entity = keys.parse_liveliness(str(reply.ok.key_expr))
+            if entity is not None:
+                found.append(entity)
+    return found
+
+
+def topics(session: zenoh.Session) -> dict[str, TopicInfo]:
+    table: dict[str, TopicInfo] = defaultdict(lambda: TopicInfo(""))
+    for entity in entities(session):
+        if entity.kind not in (keys.PUBLISHER, keys.SUBSCRIPTION):
+            continue
+        info = table[entity.topic]
+        info.name = entity.topic
+        info.types.add(entity.type_name)
+        (info.publishers if entity.kind == keys.PUBLISHER else info.subscribers).append(entity)
+    return dict(table)
+
+
+def nodes(session: zenoh.Session) -> list[keys.Entity]:
+    return [e for e in entities(session) if e.kind == keys.NODE]

@@ -1,0 +1,106 @@
+"""The rmw_zenoh wire layout, in one place so it can follow rmw_zenoh versions.
+
+    topic key      <domain>/<topic>/<pkg>::msg::dds_::<Type>_/RIHS01_<sha256>
+    service key    <domain>/<service>/<pkg>::srv::dds_::<Type>_/RIHS01_<sha256>
+    liveliness     @ros2_lv/<domain>/<zid>/<nid>/<eid>/<NN|MP|MS|SS|SC>/<enclave>/<ns>/<node>
+                   [/<topic>/<type>/<hash>/<qos>]        ('/' inside a name is written '%')
+    attachment     int64 sequence number, int64 source timestamp (ns), a byte 16, 16-byte GID
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass
+
+LIVELINESS = "@ros2_lv"
+NODE, PUBLISHER, SUBSCRIPTION, SERVICE, CLIENT = "NN", "MP", "MS", "SS", "SC"
+_ATTACHMENT = struct.Struct("<qqB16s")
+
+
+def dds_type(name: str) -> str:
+    """`geometry_msgs/msg/Twist` -> `geometry_msgs::msg::dds_::Twist_`."""
+    package, kind, message = name.split("/")
+    return f"{package}::{kind}::dds_::{message}_"
+
+
+def ros_type(dds: str) -> str:
+    """The inverse of dds_type."""
+    package, kind, _, message = dds.split("::")
+    return f"{package}/{kind}/{message.rstrip('_')}"
+
+
+def topic_key(domain: int, topic: str, type_name: str, type_hash: str) -> str:
+    return f"{domain}/{topic.strip('/')}/{dds_type(type_name)}/{type_hash}"
+
+
+def any_type_key(domain: int, topic: str) -> str:
+    """Every type published on `topic` (the last two chunks are type and hash)."""
+    return f"{domain}/{topic.strip('/')}/*/*"
+
+
+def split_topic_key(key: str) -> tuple[str, str, str]:
+    """(topic, ROS type, hash) of a topic key."""
+    _, rest = key.split("/", 1)
+    topic, dds, type_hash = rest.rsplit("/", 2)
+    return "/" + topic, ros_type(dds), type_hash
+
+
+def mangle(name: str) -> str:
+    return name.replace("/", "%") if name else "%"
+
+
+def unmangle(name: str) -> str:
+    return "" if name == "%" else name.replace("%", "/")
+
+
+@dataclass(frozen=True)
+class Entity:
+    """What a liveliness token says about a node or one of its endpoints."""
+
+    zid: str
+    node_id: int
+    entity_id: int
+    kind: str
+    namespace: str
+    node: str
+    topic: str = ""
+    type_name: str = ""
+    type_hash: str = ""
+    qos: str = ""
+
+    @property
+    def node_fqn(self) -> str:
+        return f"{self.namespace.rstrip('/')}/{self.node}"
+
+
+def liveliness_key(domain: int, entity: Entity) -> str:
+    parts = [LIVELINESS, str(domain), entity.zid, str(entity.node_id), str(entity.entity_id),
+             entity.kind, "%", mangle(entity.namespace), entity.node]
+    if entity.kind != NODE:
+        parts += [mangle(entity.topic), dds_type(entity.type_name), entity.type_hash,
+                  entity.qos]
+    return "/".join(parts)
+
+
+def parse_liveliness(key: str) -> Entity | None:
+    parts = key.split("/")
+    if len(parts) < 9 or parts[0] != LIVELINESS:
+        return None
+    _, _, zid, nid, eid, kind, _, namespace, node, *rest = parts
+    entity = Entity(zid, int(nid), int(eid), kind, unmangle(namespace), node)
+    if len(rest) >= 3:
+        return Entity(zid, int(nid), int(eid), kind, unmangle(namespace), node,
+                      unmangle(rest[0]), ros_type(rest[1]), rest[2],
+                      rest[3] if len(rest) > 3 else "")
+    return entity
+
+
+def attachment(sequence: int, timestamp_ns: int, gid: bytes) -> bytes:
+    return _ATTACHMENT.pack(sequence, timestamp_ns, 16, gid[:16].ljust(16, b"\0"))
+
+
+def parse_attachment(data: bytes) -> tuple[int, int, bytes] | None:
+    if len(data) != _ATTACHMENT.size:
+        return None
+    sequence, stamp, length, gid = _ATTACHMENT.unpack(data)
+    return (sequence, stamp, gid) if length == 16 else None

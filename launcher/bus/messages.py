@@ -1,0 +1,103 @@
+"""Messages from plain data and back: `topic pub` YAML in, `topic echo` YAML out.
+
+Missing fields take their zero values. A value that does not fit names the field path and
+the type it expected (`linear.x: expected float64, got 'fast'`).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from rosbags.interfaces import Nodetype
+
+from launcher.bus.types import registry
+from launcher.errors import LaunchError, did_you_mean
+
+_INTS = {"byte": np.uint8, "char": np.uint8, "int8": np.int8, "uint8": np.uint8,
+         "int16": np.int16, "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32,
+         "int64": np.int64, "uint64": np.uint64}
+_FLOATS = {"float32": np.float32, "float64": np.float64}
+
+
+class MessageError(LaunchError):
+    pass
+
+
+def build(type_name: str, values: Any, path: str = "") -> Any:
+    types = registry()
+    name = types.ensure(type_name)
+    if values is None:
+        values = {}
+    if not isinstance(values, dict):
+        raise MessageError(f"{path or name}: expected a map of fields for {name}, "
+                           f"got {values!r}")
+    fields = types.fields(name)
+    known = [f for f, _ in fields]
+    for key in values:
+        if key not in known:
+            raise MessageError(f"{path}{key}: {name} has no field '{key}'"
+                               f"{did_you_mean(str(key), known)}; fields: {', '.join(known)}")
+    kwargs = {f: _value(kind, detail, values.get(f), f"{path}{f}") for f, (kind, detail) in
+              fields}
+    return types.message_class(name)(**kwargs)
+
+
+def _value(kind: Nodetype, detail: Any, value: Any, path: str) -> Any:
+    if kind == Nodetype.BASE:
+        return _primitive(detail[0], value, path)
+    if kind == Nodetype.NAME:
+        return build(detail, value, f"{path}.")
+    (inner_kind, inner_detail), count = detail
+    items = [] if value is None else value
+    if not isinstance(items, list | tuple | np.ndarray):
+        raise MessageError(f"{path}: expected a list, got {value!r}")
+    if kind == Nodetype.ARRAY and value is None:
+        items = [None] * count
+    if kind == Nodetype.ARRAY and len(items) != count:
+        raise MessageError(f"{path}: expected {count} items, got {len(items)}")
+    converted = [_value(inner_kind, inner_detail, item, f"{path}[{i}]")
+                 for i, item in enumerate(items)]
+    if inner_kind == Nodetype.BASE and inner_detail[0] not in ("string", "wstring"):
+        dtype = _INTS.get(inner_detail[0]) or _FLOATS.get(inner_detail[0]) or np.bool_
+        return np.array(converted, dtype=dtype)
+    return converted
+
+
+def _primitive(kind: str, value: Any, path: str) -> Any:
+    if kind in ("string", "wstring"):
+        if value is None:
+            return ""
+        if not isinstance(value, str | int | float | bool):
+            raise MessageError(f"{path}: expected string, got {value!r}")
+        return str(value)
+    if kind == "bool":
+        if value is None:
+            return False
+        if not isinstance(value, bool):
+            raise MessageError(f"{path}: expected bool, got {value!r}")
+        return value
+    if value is None:
+        return 0.0 if kind in _FLOATS else 0
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise MessageError(f"{path}: expected {kind}, got {value!r}")
+    if kind in _FLOATS:
+        return float(value)
+    if not float(value).is_integer():
+        raise MessageError(f"{path}: expected {kind} (a whole number), got {value!r}")
+    info = np.iinfo(_INTS[kind])
+    if not info.min <= value <= info.max:
+        raise MessageError(f"{path}: {value} is out of range for {kind}")
+    return int(value)
+
+
+def to_data(message: Any) -> Any:
+    """Plain data (dicts, lists, numbers, strings) for YAML or CSV."""
+    if isinstance(message, np.ndarray):
+        return message.tolist()
+    if isinstance(message, list | tuple):
+        return [to_data(m) for m in message]
+    fields = getattr(message, "__dataclass_fields__", None)
+    if fields is None:
+        return message.item() if isinstance(message, np.generic) else message
+    return {name: to_data(getattr(message, name)) for name in fields if name != "__msgtype__"}

@@ -1,0 +1,117 @@
+"""`--ros-args` as the `node` action writes them, and params files.
+
+    ARGS… --ros-args [-r|--remap FROM:=TO] [-p|--param NAME:=VALUE] [--params-file FILE]
+                     [--log-level LEVEL] [-e|--enclave E] [--] ARGS…
+
+Params files: `{NODE_OR_WILDCARD: {ros__parameters: {...}}}`; keys `/**`, `/**/NAME`, `NAME`
+and `/NS/NAME` apply to the node they match. Nested maps flatten to dotted names.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from launcher.errors import LaunchError, Location
+
+
+@dataclass
+class RosArgs:
+    node_name: str | None = None
+    namespace: str | None = None
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    parameters: dict[str, Any] = field(default_factory=dict)
+    params_files: list[str] = field(default_factory=list)
+    log_level: str | None = None
+    user_args: list[str] = field(default_factory=list)
+
+
+def parse(argv: list[str]) -> RosArgs:
+    """Split argv into the program's own arguments and its ROS arguments."""
+    out = RosArgs()
+    inside = False
+    i = 0
+    while i < len(argv):
+        word = argv[i]
+        if word == "--ros-args":
+            inside = True
+        elif inside and word == "--":
+            inside = False
+        elif not inside:
+            out.user_args.append(word)
+        elif word in ("-r", "--remap", "-p", "--param", "--params-file", "--log-level",
+                      "-e", "--enclave"):
+            if i + 1 >= len(argv):
+                raise LaunchError(f"--ros-args: '{word}' needs a value")
+            _option(out, word, argv[i + 1])
+            i += 1
+        else:
+            raise LaunchError(f"--ros-args: unknown argument '{word}'")
+        i += 1
+    return out
+
+
+def _option(out: RosArgs, word: str, value: str) -> None:
+    if word in ("--params-file",):
+        out.params_files.append(value)
+    elif word == "--log-level":
+        out.log_level = value.split(":")[-1].upper()
+    elif word in ("-e", "--enclave"):
+        pass
+    else:
+        if ":=" not in value:
+            raise LaunchError(f"--ros-args: '{word} {value}': expected NAME:=VALUE")
+        name, _, text = value.partition(":=")
+        if word in ("-p", "--param"):
+            out.parameters[name] = _typed(text)
+        elif name == "__node":
+            out.node_name = text
+        elif name == "__ns":
+            out.namespace = text
+        else:
+            out.remaps.append((name, text))
+
+
+def _typed(text: str) -> Any:
+    try:
+        value = yaml.safe_load(text)
+    except yaml.YAMLError:
+        return text
+    return text if value is None or isinstance(value, dict) else value
+
+
+def load_params_file(path: str, node: str, namespace: str) -> dict[str, Any]:
+    """The parameters for /NAMESPACE/NODE in a params file; errors name file:line."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise LaunchError(f"cannot read params file: {exc.strerror}", Location(path)) from None
+    try:
+        document = yaml.safe_load(text) or {}
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark
+        where = Location(path, mark.line + 1, mark.column + 1) if mark else Location(path)
+        raise LaunchError(f"params file is not valid YAML: {exc.problem}", where) from None
+    if not isinstance(document, dict):
+        raise LaunchError("params file: expected a map of node names", Location(path, 1))
+    full = f"{namespace.rstrip('/')}/{node}"
+    out: dict[str, Any] = {}
+    for key, body in document.items():
+        if _matches(str(key), node, full) and isinstance(body, dict):
+            flatten(body.get("ros__parameters", {}) or {}, "", out)
+    return out
+
+
+def _matches(key: str, node: str, full: str) -> bool:
+    return key in ("/**", "**", node, full, f"/**/{node}") or key.lstrip("/") == full.lstrip("/")
+
+
+def flatten(values: dict[str, Any], prefix: str, out: dict[str, Any]) -> None:
+    for name, value in values.items():
+        if isinstance(value, dict):
+            flatten(value, f"{prefix}{name}.", out)
+        else:
+            out[f"{prefix}{name}"] = value

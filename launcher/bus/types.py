@@ -1,0 +1,150 @@
+"""ROS 2 message and service types: definitions, CDR, and RIHS01 type hashes.
+
+Definitions come from rosbags' Jazzy typestore (one pinned distro, so hashes do not move) and
+from `msg/*.msg` and `srv/*.srv` files of packages. Building the whole Jazzy typestore takes
+~0.2 s, so its field definitions are cached once as a pickle (per rosbags version) and only
+the types a process uses are registered.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import pickle
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+from launcher.errors import LaunchError, did_you_mean
+
+DISTRO = "ros2_jazzy"
+
+
+class UnknownType(LaunchError):
+    pass
+
+
+def _cache_file() -> Path:
+    """Named after the store file's size and time: a new rosbags makes a new cache."""
+    spec = importlib.util.find_spec("rosbags.typesys")
+    assert spec is not None and spec.origin is not None
+    store = os.path.join(os.path.dirname(spec.origin), "stores", f"{DISTRO}.py")
+    stat = os.stat(store)
+    base = os.environ.get("LAUNCHER_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "launcher")
+    return Path(base) / f"types-{DISTRO}-{stat.st_size}-{int(stat.st_mtime)}.pickle"
+
+
+def _distro_fielddefs() -> dict[str, Any]:
+    path = _cache_file()
+    try:
+        with open(path, "rb") as handle:
+            return pickle.load(handle)
+    except (OSError, pickle.UnpicklingError, EOFError):
+        pass
+    from importlib import import_module
+
+    fielddefs = dict(import_module(f"rosbags.typesys.stores.{DISTRO}").FIELDDEFS)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_suffix(f".{os.getpid()}.tmp")
+    with open(temporary, "wb") as handle:
+        pickle.dump(fielddefs, handle, protocol=pickle.HIGHEST_PROTOCOL)
+    os.replace(temporary, path)
+    return fielddefs
+
+
+def normalize(name: str) -> str:
+    """`geometry_msgs/Twist` and `geometry_msgs/msg/Twist` both mean the latter."""
+    parts = name.strip().split("/")
+    if len(parts) == 2:
+        return f"{parts[0]}/msg/{parts[1]}"
+    return name.strip()
+
+
+class TypeRegistry:
+    def __init__(self) -> None:
+        from rosbags.typesys.store import Typestore
+
+        self.store = Typestore()
+        self._available: dict[str, Any] = {}
+        self._loaded_distro = False
+        self._hashes: dict[str, str] = {}
+
+    # --- definitions ------------------------------------------------------------------------
+    def _definitions(self) -> dict[str, Any]:
+        if not self._loaded_distro:
+            self._available = {**_distro_fielddefs(), **self._available}
+            self._loaded_distro = True
+        return self._available
+
+    def add_definitions(self, fielddefs: dict[str, Any]) -> None:
+        """Types from packages' .msg/.srv files (see `definitions_from_package`)."""
+        self._available.update(fielddefs)
+
+    def known(self) -> Iterable[str]:
+        return self._definitions().keys()
+
+    def ensure(self, name: str) -> str:
+        name = normalize(name)
+        if name in self.store.fielddefs:
+            return name
+        available = self._definitions()
+        if name not in available:
+            raise UnknownType(f"unknown message type '{name}'{did_you_mean(name, available)}")
+        needed: dict[str, Any] = {}
+        self._collect(name, available, needed)
+        self.store.register({k: v for k, v in needed.items() if k not in self.store.fielddefs})
+        return name
+
+    def _collect(self, name: str, available: dict[str, Any], out: dict[str, Any]) -> None:
+        if name in out or name in self.store.fielddefs:
+            return
+        out[name] = available[name]
+        for _, (kind, detail) in available[name][1]:
+            for candidate in _referenced(kind, detail):
+                if candidate in available:
+                    self._collect(candidate, available, out)
+
+    # --- messages ---------------------------------------------------------------------------
+    def message_class(self, name: str) -> type:
+        return self.store.types[self.ensure(name)]
+
+    def serialize(self, message: Any, name: str) -> bytes:
+        return bytes(self.store.serialize_cdr(message, self.ensure(name)))
+
+    def deserialize(self, data: bytes | memoryview, name: str) -> Any:
+        return self.store.deserialize_cdr(data, self.ensure(name))
+
+    def type_hash(self, name: str) -> str:
+        name = self.ensure(name)
+        if name not in self._hashes:
+            self._hashes[name] = self.store.hash_rihs01(name)
+        return self._hashes[name]
+
+    def fields(self, name: str) -> list[tuple[str, Any]]:
+        return list(self.store.fielddefs[self.ensure(name)][1])
+
+
+def _referenced(kind: Any, detail: Any) -> list[str]:
+    """Type names a field refers to (names, sequences and arrays of names)."""
+    if isinstance(detail, str):
+        return [detail]
+    if isinstance(detail, tuple):
+        found = []
+        for item in detail:
+            if isinstance(item, tuple) and len(item) == 2:
+                found += _referenced(item[0], item[1])
+            elif isinstance(item, str):
+                found.append(item)
+        return found
+    return []
+
+
+_registry: TypeRegistry | None = None
+
+
+def registry() -> TypeRegistry:
+    global _registry
+    if _registry is None:
+        _registry = TypeRegistry()
+    return _registry

@@ -1,0 +1,183 @@
+"""`launcher topic list | echo | pub | hz | info`, as `ros2 topic` has them."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import threading
+import time
+from typing import Any
+
+import yaml
+
+from launcher.bus import graph
+from launcher.bus.messages import build, to_data
+from launcher.bus.names import expand
+from launcher.bus.node import Node, Rate
+from launcher.bus.qos import QoS
+from launcher.bus.session import open_session
+from launcher.errors import LaunchError, UsageError, did_you_mean
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser("topic", help="topics: list, echo, pub, hz, info")
+    verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
+    listing = verbs.add_parser("list", help="the topics on the bus")
+    listing.add_argument("-t", "--show-types", action="store_true")
+    listing.set_defaults(run=run_list)
+    echo = verbs.add_parser("echo", help="print the messages on a topic")
+    echo.add_argument("topic")
+    echo.add_argument("type", nargs="?", help="the message type (default: as published)")
+    echo.add_argument("--once", action="store_true", help="print one message and exit")
+    echo.add_argument("--field", help="print only this field (a.b.c)")
+    echo.add_argument("--csv", action="store_true", help="one comma-separated line each")
+    echo.add_argument("--timeout", type=float, default=None,
+                      help="exit 1 if nothing arrives in this many seconds")
+    echo.set_defaults(run=run_echo)
+    pub = verbs.add_parser("pub", help="publish a message")
+    pub.add_argument("topic")
+    pub.add_argument("type")
+    pub.add_argument("values", nargs="?", default="{}", help="the message as YAML")
+    pub.add_argument("-r", "--rate", type=float, default=1.0)
+    pub.add_argument("-1", "--once", action="store_true")
+    pub.add_argument("-t", "--times", type=int, default=0)
+    pub.add_argument("--latched", action="store_true", help="transient local")
+    pub.set_defaults(run=run_pub)
+    hz = verbs.add_parser("hz", help="the rate of a topic")
+    hz.add_argument("topic")
+    hz.add_argument("--window", type=float, default=2.0)
+    hz.set_defaults(run=run_hz)
+    info = verbs.add_parser("info", help="type and endpoints of a topic")
+    info.add_argument("topic")
+    info.set_defaults(run=run_info)
+
+
+def _topic(name: str) -> str:
+    return expand(name)
+
+
+def _type_of(session: Any, topic: str, given: str | None) -> str:
+    if given:
+        return given
+    deadline = time.monotonic() + 5.0
+    while True:
+        table = graph.topics(session)
+        info = table.get(topic)
+        if info and info.publishers:
+            return sorted(info.types)[0]
+        if time.monotonic() > deadline:
+            known = sorted(table)
+            raise LaunchError(f"nobody publishes '{topic}'{did_you_mean(topic, known)}; "
+                              "give its type to wait for it: launcher topic echo TOPIC TYPE")
+        time.sleep(0.1)
+
+
+def run_list(args: argparse.Namespace) -> int:
+    session = open_session("client")
+    for name, info in sorted(graph.topics(session).items()):
+        print(f"{name} [{', '.join(sorted(info.types))}]" if args.show_types else name)
+    session.close()
+    return 0
+
+
+def _pick(data: Any, field: str | None) -> Any:
+    for part in (field.split(".") if field else []):
+        if not isinstance(data, dict) or part not in data:
+            raise UsageError(f"--field: no field '{part}'"
+                             f"{did_you_mean(part, data if isinstance(data, dict) else [])}")
+        data = data[part]
+    return data
+
+
+def _csv(data: Any) -> str:
+    if isinstance(data, dict):
+        return ",".join(_csv(v) for v in data.values())
+    if isinstance(data, list):
+        return ",".join(_csv(v) for v in data)
+    return str(data)
+
+
+def run_echo(args: argparse.Namespace) -> int:
+    session = open_session("client")
+    topic = _topic(args.topic)
+    type_name = _type_of(session, topic, args.type)
+    node = Node("_launcher_topic_echo", argv=[], session=session)
+    done = threading.Event()
+
+    def show(message: Any) -> None:
+        data = _pick(to_data(message), args.field)
+        if args.csv:
+            print(_csv(data), flush=True)
+        else:
+            text = yaml.safe_dump(data, default_flow_style=False, sort_keys=False) \
+                if isinstance(data, dict | list) else f"{data}\n"
+            print(text + "---", flush=True)
+        if args.once:
+            done.set()
+            node.shutdown()
+
+    node.create_subscription(type_name, topic, show, QoS(depth=10, transient_local=True))
+    node.spin(args.timeout)
+    node.destroy_node()
+    if args.timeout is not None and not done.is_set() and args.once:
+        print(f"no message on {topic} within {args.timeout:g} s", file=sys.stderr)
+        return 1
+    return 0
+
+
+def run_pub(args: argparse.Namespace) -> int:
+    try:
+        values = yaml.safe_load(args.values)
+    except yaml.YAMLError as exc:
+        raise UsageError(f"the message is not valid YAML: {exc}") from None
+    message = build(args.type, values)
+    node = Node("_launcher_topic_pub", argv=[])
+    qos = QoS(depth=1, transient_local=True) if args.latched else QoS()
+    publisher = node.create_publisher(args.type, _topic(args.topic), qos)
+    time.sleep(0.2)  # let subscribers find the publisher
+    count = 1 if args.once else args.times
+    rate = Rate(args.rate)
+    sent = 0
+    try:
+        while count <= 0 or sent < count:
+            publisher.publish(message)
+            sent += 1
+            print(f"publishing #{sent}: {to_data(message)}", flush=True)
+            if count <= 0 or sent < count:
+                rate.sleep()
+        if args.latched:
+            node.spin()
+    except KeyboardInterrupt:
+        pass
+    node.destroy_node()
+    return 0
+
+
+def run_hz(args: argparse.Namespace) -> int:
+    session = open_session("client")
+    topic = _topic(args.topic)
+    node = Node("_launcher_topic_hz", argv=[], session=session)
+    stamps: list[float] = []
+    subscription = node.create_subscription(_type_of(session, topic, None), topic,
+                                            lambda _m: stamps.append(time.monotonic()))
+    try:
+        while True:
+            node.spin(args.window)
+            window = [t for t in stamps if t > time.monotonic() - args.window]
+            rate = (len(window) - 1) / (window[-1] - window[0]) if len(window) > 1 else 0.0
+            print(f"average rate: {rate:.3f}  (window: {len(window)} messages)", flush=True)
+    except KeyboardInterrupt:
+        return 0
+
+
+def run_info(args: argparse.Namespace) -> int:
+    session = open_session("client")
+    topic = _topic(args.topic)
+    info = graph.topics(session).get(topic)
+    if info is None:
+        raise LaunchError(f"unknown topic '{topic}'")
+    print(f"Type: {', '.join(sorted(info.types))}")
+    print(f"Publisher count: {len(info.publishers)}")
+    print(f"Subscription count: {len(info.subscribers)}")
+    session.close()
+    return 0

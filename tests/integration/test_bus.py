@@ -1,0 +1,203 @@
+"""The bus with real processes and real Zenoh sessions."""
+
+from __future__ import annotations
+
+import json
+import signal
+import sys
+import time
+
+import pytest
+
+PY = sys.executable
+TALKER = """
+import sys
+from launcher.bus.node import Node
+from launcher.bus.qos import LATCHED
+node = Node("talker")
+value = float(node.args[0]) if node.args else 1.0
+pub = node.create_publisher("geometry_msgs/msg/Twist", "cmd_vel")
+node.create_publisher("std_msgs/msg/String", "robot_description", LATCHED).publish(
+    node.message("std_msgs/msg/String", data="<robot name='r'/>"))
+node.create_timer(0.05, lambda: pub.publish(
+    node.message("geometry_msgs/msg/Twist", linear={"x": value})))
+node.get_logger().info(f"talking on {pub.topic}")
+node.spin()
+node.destroy_node()
+"""
+LISTENER = """
+from launcher.bus.node import Node
+node = Node("listener")
+gain = node.declare_parameter("gain", 1.0).value
+sub = node.create_subscription("geometry_msgs/msg/Twist", "cmd_vel",
+                               lambda m: print("heard", m.linear.x * gain, flush=True))
+print("listening on", sub.topic, "as", node.fully_qualified_name, "gain", gain, flush=True)
+node.spin()
+node.destroy_node()
+"""
+
+
+@pytest.fixture
+def bus(ws):
+    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
+    ws.env.pop("LAUNCHER_ROUTER", None)
+    ws.write("talker.py", TALKER)
+    ws.write("listener.py", LISTENER)
+    return ws
+
+
+def endpoints(ws) -> list[str]:
+    return [json.loads(p.read_text())["router"] for p in (ws.root / "run").glob("*.json")]
+
+
+def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
+    ws.write(name, body)
+    out = open(ws.root / f"{name}.out", "w")  # noqa: SIM115
+    import subprocess
+
+    from tests.conftest import launcher_argv
+    proc = subprocess.Popen(launcher_argv() + ["launch", name, *extra], cwd=ws.root,
+                            env={**ws.env, **(env or {})}, stdout=out, stderr=subprocess.STDOUT,
+                            text=True)
+    return proc, ws.root / f"{name}.out"
+
+
+def wait_text(path, needle: str, timeout: float = 30) -> str:
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        text = path.read_text()
+        if needle in text:
+            return text
+        time.sleep(0.05)
+    raise AssertionError(f"{needle!r} not in:\n{path.read_text()}")
+
+
+def stop(proc) -> int:
+    proc.send_signal(signal.SIGINT)
+    return proc.wait(30)
+
+
+def test_topic_cli_against_a_live_node_and_latched_delivery(bus):
+    proc, out = launch(bus, "talk.launch.yaml",
+                       f"launch:\n  - executable: {{cmd: {PY} talker.py 1.5, output: screen}}\n")
+    wait_text(out, "talking on /cmd_vel")
+    listing = bus.run("topic", "list", "-t")
+    assert "/cmd_vel [geometry_msgs/msg/Twist]" in listing.stdout, listing.stderr
+    echo = bus.run("topic", "echo", "/cmd_vel", "--once")
+    assert "linear:\n  x: 1.5" in echo.stdout, echo.stderr
+    field = bus.run("topic", "echo", "cmd_vel", "--field", "linear.x", "--once")
+    assert field.stdout.startswith("1.5"), field.stderr
+    latched = bus.run("topic", "echo", "/robot_description", "--once")
+    assert "data: <robot name='r'/>" in latched.stdout  # a late subscriber gets it
+    info = bus.run("topic", "info", "/cmd_vel")
+    assert "Publisher count: 1" in info.stdout
+    assert stop(proc) == 130
+    assert "process stopped" in out.read_text()
+
+
+def test_two_launches_never_see_each_other(bus):
+    body = "launch:\n  - executable: {{cmd: {py} talker.py {v}, output: screen}}\n"
+    first, out1 = launch(bus, "one.launch.yaml", body.format(py=PY, v="1.0"))
+    second, out2 = launch(bus, "two.launch.yaml", body.format(py=PY, v="2.0"))
+    wait_text(out1, "talking")
+    wait_text(out2, "talking")
+    routers = endpoints(bus)
+    assert len(routers) == 2
+    seen = set()
+    for endpoint in routers:
+        bus.env["LAUNCHER_ROUTER"] = endpoint
+        for _ in range(3):
+            result = bus.run("topic", "echo", "/cmd_vel", "--field", "linear.x", "--once")
+            seen.add((endpoint, result.stdout.split()[0]))
+    assert len(seen) == 2 and {v for _, v in seen} == {"1.0", "2.0"}
+    assert stop(first) == 130 and stop(second) == 130
+
+
+def test_two_routers_stand_for_two_hosts(bus):
+    host_a, out_a = launch(bus, "a.launch.yaml",
+                           f"launch:\n  - executable: {{cmd: {PY} talker.py 7.0}}\n")
+    deadline = time.monotonic() + 20
+    while not endpoints(bus):
+        assert time.monotonic() < deadline
+        time.sleep(0.05)
+    (router_a,) = endpoints(bus)
+    host_b, out_b = launch(bus, "b.launch.yaml",
+                           f"launch:\n  - executable: {{cmd: {PY} listener.py, output: screen}}\n",
+                           env={"LAUNCHER_ROUTER": router_a})
+    wait_text(out_b, "heard 7.0")
+    assert stop(host_b) == 130 and stop(host_a) == 130
+
+
+def test_names_params_and_topic_pub_into_a_node(bus):
+    proc, out = launch(bus, "l.launch.yaml", (
+        f"launch:\n  - executable:\n      cmd: {PY} listener.py --ros-args -r __ns:=/r1 "
+        "-r cmd_vel:=/fleet/cmd -p gain:=2.0\n      output: screen\n"))
+    wait_text(out, "listening on /fleet/cmd as /r1/listener gain 2.0")
+    published = bus.run("topic", "pub", "/fleet/cmd", "geometry_msgs/msg/Twist",
+                        "{linear: {x: 1.25}}", "--times", "3", "--rate", "10")
+    assert published.returncode == 0, published.stderr
+    wait_text(out, "heard 2.5")
+    assert stop(proc) == 130
+
+
+def test_a_malformed_payload_is_dropped_and_the_node_goes_on(bus):
+    proc, out = launch(bus, "l.launch.yaml",
+                       f"launch:\n  - executable: {{cmd: {PY} listener.py, output: screen}}\n")
+    wait_text(out, "listening on /cmd_vel")
+    (endpoint,) = endpoints(bus)
+    injector = bus.write("inject.py", f"""
+import time, zenoh
+from launcher.bus import keys
+from launcher.bus.session import config
+from launcher.bus.types import registry
+s = zenoh.open(config("client", [], ["{endpoint}"]))
+key = keys.topic_key(0, "/cmd_vel", "geometry_msgs/msg/Twist",
+                     registry().type_hash("geometry_msgs/msg/Twist"))
+time.sleep(0.3)
+for _ in range(3):
+    s.put(key, b"garbage")
+time.sleep(0.2)
+s.close()
+""")
+    import subprocess
+    subprocess.run([PY, str(injector)], env=bus.env, check=True, timeout=30)
+    text = wait_text(out, "dropped a malformed geometry_msgs/msg/Twist message on /cmd_vel")
+    assert text.count("dropped a malformed") == 1  # said once per topic
+    bus.run("topic", "pub", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {x: 3.0}}",
+            "--times", "2", "--rate", "10")
+    wait_text(out, "heard 3.0")  # still running
+    assert stop(proc) == 130
+
+
+@pytest.mark.parametrize("args, expected", [
+    (["topic", "pub", "/x", "geometry_msgs/msg/Twits", "{}"],
+     "unknown message type 'geometry_msgs/msg/Twits' (did you mean 'geometry_msgs/msg/Twist'"),
+    (["topic", "pub", "/x", "geometry_msgs/msg/Twist", "{linear: {x: fast}}"],
+     "linear.x: expected float64, got 'fast'"),
+    (["topic", "pub", "/x", "geometry_msgs/msg/Twist", "{linear: [1,"],
+     "the message is not valid YAML"),
+    (["topic", "echo", "/bad-name", "std_msgs/msg/String", "--once"],
+     "invalid topic name '/bad-name': the part 'bad-name' holds a character other than"),
+], ids=["unknown-type", "yaml-does-not-fit", "yaml-invalid", "invalid-topic"])
+def test_cli_bad_input(bus, args, expected):
+    proc, out = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
+    deadline = time.monotonic() + 20
+    while not endpoints(bus):
+        assert time.monotonic() < deadline
+        time.sleep(0.05)
+    result = bus.run(*args, timeout=30)
+    assert result.returncode == 1 and expected in result.stderr, result.stderr
+    assert "Traceback" not in result.stderr
+    assert stop(proc) == 130
+
+
+def test_no_router_reachable_is_a_clear_error(bus):
+    bus.env["LAUNCHER_ROUTER"] = "tcp/127.0.0.1:9"
+    bus.env["LAUNCHER_BUS_TIMEOUT"] = "1"
+    start = time.monotonic()
+    result = bus.run("topic", "list", timeout=30)
+    assert result.returncode == 1 and time.monotonic() - start < 15
+    assert "no router reachable at tcp/127.0.0.1:9 within 1 s" in result.stderr
+    bus.env.pop("LAUNCHER_ROUTER")
+    nothing = bus.run("topic", "list", timeout=30)
+    assert nothing.returncode == 1 and "no launch is running" in nothing.stderr

@@ -1,0 +1,107 @@
+"""The bus's pure parts: names, --ros-args, params files, keys, messages and types."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from launcher.bus import keys, names, ros_args
+from launcher.bus.messages import MessageError, build, to_data
+from launcher.bus.types import UnknownType, registry
+from launcher.errors import LaunchError
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("chatter", "/ns/chatter"), ("/abs", "/abs"), ("~", "/ns/node"),
+    ("~/private", "/ns/node/private"), ("a/b", "/ns/a/b"),
+])
+def test_expand(name, expected):
+    assert names.expand(name, "node", "/ns") == expected
+
+
+@pytest.mark.parametrize("name, rule", [
+    ("", "it is empty"), ("a//b", "empty part"), ("1abc", "starts with a digit"),
+    ("a-b", "other than letters"), ("x/", "ends with '/'"), ("~x", "'~' must be alone"),
+])
+def test_invalid_names_say_which_rule(name, rule):
+    with pytest.raises(names.InvalidName, match=rule):
+        names.expand(name, "node", "/ns")
+
+
+def test_node_and_namespace_rules():
+    with pytest.raises(names.InvalidName, match="invalid node name 'my-node'"):
+        names.check_node_name("my-node")
+    assert names.check_namespace("robot1/") == "/robot1"
+
+
+def test_remap():
+    rules = [("cmd_vel", "/r1/cmd"), ("~/x", "y")]
+    assert names.remap("/ns/cmd_vel", rules, "n", "/ns") == "/r1/cmd"
+    assert names.remap("/ns/n/x", rules, "n", "/ns") == "/ns/y"
+    assert names.remap("/other", rules, "n", "/ns") == "/other"
+
+
+def test_ros_args_as_the_node_action_writes_them(tmp_path):
+    params = tmp_path / "p.yaml"
+    params.write_text("/**:\n  ros__parameters:\n    rate: 5\n    limits: {max: 1.5}\n"
+                      "/r1/driver:\n  ros__parameters:\n    only_me: true\n"
+                      "other:\n  ros__parameters:\n    not_me: 1\n")
+    parsed = ros_args.parse(["--speed", "3", "--ros-args", "--log-level", "debug", "-r",
+                             "__node:=driver", "-r", "__ns:=/r1", "--params-file", str(params),
+                             "-p", "gain:=0.5", "-p", "name:=bob", "-r", "odom:=odometry"])
+    assert parsed.user_args == ["--speed", "3"]
+    assert (parsed.node_name, parsed.namespace, parsed.log_level) == ("driver", "/r1", "DEBUG")
+    assert parsed.remaps == [("odom", "odometry")]
+    assert parsed.parameters == {"gain": 0.5, "name": "bob"}
+    loaded = ros_args.load_params_file(str(params), "driver", "/r1")
+    assert loaded == {"rate": 5, "limits.max": 1.5, "only_me": True}
+
+
+def test_bad_ros_args_and_params_file(tmp_path):
+    with pytest.raises(LaunchError, match="'-p gain' : expected NAME:=VALUE".replace(" :", ":")):
+        ros_args.parse(["--ros-args", "-p", "gain"])
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("a: [1,\n")
+    with pytest.raises(LaunchError) as info:
+        ros_args.load_params_file(str(bad), "n", "")
+    assert str(info.value).startswith(f"{bad}:2:1: params file is not valid YAML")
+
+
+def test_keys_follow_rmw_zenoh():
+    h = registry().type_hash("geometry_msgs/msg/Twist")
+    key = keys.topic_key(0, "/r1/cmd_vel", "geometry_msgs/msg/Twist", h)
+    assert key == f"0/r1/cmd_vel/geometry_msgs::msg::dds_::Twist_/{h}"
+    assert keys.split_topic_key(key) == ("/r1/cmd_vel", "geometry_msgs/msg/Twist", h)
+    entity = keys.Entity("zid", 1, 2, keys.PUBLISHER, "/r1", "driver", "/r1/cmd_vel",
+                         "geometry_msgs/msg/Twist", h, "1:2:1,10")
+    token = keys.liveliness_key(0, entity)
+    assert token == (f"@ros2_lv/0/zid/1/2/MP/%/%r1/driver/%r1%cmd_vel/"
+                     f"geometry_msgs::msg::dds_::Twist_/{h}/1:2:1,10")
+    assert keys.parse_liveliness(token) == entity
+    data = keys.attachment(7, 123, b"g" * 16)
+    assert len(data) == 33 and keys.parse_attachment(data) == (7, 123, b"g" * 16)
+
+
+def test_type_hash_matches_the_published_one():
+    # From rosbags' own Jazzy typestore, as ROS 2 Jazzy publishes it
+    assert registry().type_hash("std_msgs/msg/String") == (
+        "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18")
+
+
+def test_messages_round_trip_and_errors():
+    types = registry()
+    message = build("sensor_msgs/msg/JointState", {"name": ["l", "r"], "position": [1.0, 2.0],
+                                                   "header": {"frame_id": "base"}})
+    back = types.deserialize(types.serialize(message, "sensor_msgs/msg/JointState"),
+                             "sensor_msgs/msg/JointState")
+    assert isinstance(back.position, np.ndarray)
+    assert to_data(back)["position"] == [1.0, 2.0] and back.header.frame_id == "base"
+    with pytest.raises(MessageError, match=r"linear\.x: expected float64, got 'fast'"):
+        build("geometry_msgs/msg/Twist", {"linear": {"x": "fast"}})
+    with pytest.raises(MessageError, match="no field 'angualr' \\(did you mean 'angular'"):
+        build("geometry_msgs/msg/Twist", {"angualr": {}})
+    with pytest.raises(MessageError, match="300 is out of range for uint8"):
+        build("std_msgs/msg/UInt8", {"data": 300})
+    with pytest.raises(UnknownType, match="unknown message type 'geometry_msgs/msg/Twits' "
+                                          "\\(did you mean 'geometry_msgs/msg/Twist'"):
+        registry().ensure("geometry_msgs/Twits")
