@@ -75,9 +75,15 @@ class Publisher:
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._node = topic, qos, node
         key = keys.topic_key(DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
-        reliability = zenoh.Reliability.RELIABLE if qos.reliable else \
-            zenoh.Reliability.BEST_EFFORT
-        self._publisher = node.session.declare_publisher(key, reliability=reliability)
+        # Reliable means "do not drop": block under congestion, as ROS 2 reliable QoS does.
+        if qos.reliable:
+            self._publisher = node.session.declare_publisher(
+                key, reliability=zenoh.Reliability.RELIABLE,
+                congestion_control=zenoh.CongestionControl.BLOCK)
+        else:
+            self._publisher = node.session.declare_publisher(
+                key, reliability=zenoh.Reliability.BEST_EFFORT,
+                congestion_control=zenoh.CongestionControl.DROP)
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
         self._cache: deque[tuple[bytes, bytes]] = deque(maxlen=qos.depth)

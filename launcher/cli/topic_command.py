@@ -158,7 +158,7 @@ def run_hz(args: argparse.Namespace) -> int:
     topic = _topic(args.topic)
     node = Node("_launcher_topic_hz", argv=[], session=session)
     stamps: list[float] = []
-    subscription = node.create_subscription(_type_of(session, topic, None), topic,
+    node.create_subscription(_type_of(session, topic, None), topic,
                                             lambda _m: stamps.append(time.monotonic()))
     try:
         while True:
