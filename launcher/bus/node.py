@@ -92,7 +92,10 @@ class Publisher:
         self._token = node._announce(keys.PUBLISHER, topic, self.type_name, qos)
 
     def publish(self, message: Any) -> None:
-        payload = registry().serialize(message, self.type_name)
+        self.publish_raw(registry().serialize(message, self.type_name))
+
+    def publish_raw(self, payload: bytes) -> None:
+        """Publish a CDR payload as it is (bag play, bridges)."""
         attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
         if self._queryable is not None:
             self._cache.append((payload, attachment))
@@ -220,8 +223,10 @@ class Node:
         return publisher
 
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
-                            qos: QoS | int = 10) -> Subscription:
-        subscription = Subscription(self, type_name, self.resolve(topic), callback, qos_of(qos))
+                            qos: QoS | int = 10, raw: bool = False) -> Subscription:
+        """`raw=True` hands the callback the CDR bytes instead of a message."""
+        subscription = Subscription(self, type_name, self.resolve(topic), callback, qos_of(qos),
+                                    raw)
         self._entities.append(subscription)
         return subscription
 

@@ -18,6 +18,7 @@ COMMANDS = {
     "pkg": ("launcher.cli.pkg_command", "packages: list, find, create"),
     "env": ("launcher.cli.env_command", "print the environment the workspace's hooks make"),
     "topic": ("launcher.cli.topic_command", "topics: list, echo, pub, hz, info"),
+    "bag": ("launcher.cli.bag_command", "record and play rosbag2 (MCAP) bags"),
 }
 
 

@@ -201,3 +201,38 @@ def test_no_router_reachable_is_a_clear_error(bus):
     bus.env.pop("LAUNCHER_ROUTER")
     nothing = bus.run("topic", "list", timeout=30)
     assert nothing.returncode == 1 and "no launch is running" in nothing.stderr
+
+
+def test_bag_record_info_play_round_trip(bus):
+    talker, out = launch(bus, "talk.launch.yaml",
+                         f"launch:\n  - executable: {{cmd: {PY} talker.py 4.0, output: screen}}\n")
+    wait_text(out, "talking")
+    recorded = bus.run("bag", "record", "/cmd_vel", "-o", "run1", "--duration", "2", timeout=60)
+    assert recorded.returncode == 0, recorded.stderr
+    count = int(recorded.stdout.split("recorded ")[1].split()[0])
+    assert 20 <= count <= 50  # 20 Hz for 2 s, give or take discovery time
+    assert stop(talker) == 130
+
+    info = bus.run("bag", "info", "run1")
+    assert "Topic: /cmd_vel | Type: geometry_msgs/msg/Twist | Count: " in info.stdout
+    from mcap.reader import make_reader  # the file opens with the mcap library
+    (mcap_file,) = (bus.root / "run1").glob("*.mcap")
+    with open(mcap_file, "rb") as handle:
+        messages = list(make_reader(handle).iter_messages())
+    assert len(messages) == count and messages[0][1].topic == "/cmd_vel"
+    from rosbags.rosbag2 import Reader
+
+    from launcher.bus.types import registry
+    with Reader(bus.root / "run1") as reader:
+        (connection, _, data), *_ = reader.messages()
+        assert registry().deserialize(data, connection.msgtype).linear.x == 4.0
+
+    listener, heard = launch(bus, "l.launch.yaml",
+                             f"launch:\n  - executable: {{cmd: {PY} listener.py, output: screen}}\n")
+    wait_text(heard, "listening")
+    played = bus.run("bag", "play", "run1", "--rate", "4", timeout=60)
+    assert played.returncode == 0 and f"played {count} messages" in played.stdout
+    wait_text(heard, "heard 4.0")
+    assert stop(listener) == 130
+    again = bus.run("bag", "record", "/cmd_vel", "-o", "run1", "--duration", "1")
+    assert again.returncode == 1 and "already exists" in again.stderr
