@@ -96,5 +96,11 @@ def ws(tmp_path: Path):
             os.killpg(proc.pid, signal.SIGKILL)
         except OSError:
             proc.kill()
-    assert not left, "processes left behind: " + ", ".join(
-        f"{p.pid} {' '.join(p.cmdline())}" for p in left)
+    assert not left, "processes left behind: " + ", ".join(describe(p) for p in left)
+
+
+def describe(proc: psutil.Process) -> str:
+    try:
+        return f"{proc.pid} {' '.join(proc.cmdline())}"
+    except psutil.Error:
+        return f"{proc.pid} (gone or a zombie)"

@@ -9,8 +9,11 @@
 
 from __future__ import annotations
 
+import os
 import struct
 from dataclasses import dataclass
+
+DOMAIN = int(os.environ.get("ROS_DOMAIN_ID", "0") or 0)
 
 LIVELINESS = "@ros2_lv"
 NODE, PUBLISHER, SUBSCRIPTION, SERVICE, CLIENT = "NN", "MP", "MS", "SS", "SC"
@@ -31,6 +34,10 @@ def ros_type(dds: str) -> str:
 
 def topic_key(domain: int, topic: str, type_name: str, type_hash: str) -> str:
     return f"{domain}/{topic.strip('/')}/{dds_type(type_name)}/{type_hash}"
+
+
+def service_key(domain: int, service: str, type_name: str, type_hash: str) -> str:
+    return f"{domain}/{service.strip('/')}/{dds_type(type_name)}/{type_hash}"
 
 
 def any_type_key(domain: int, topic: str) -> str:

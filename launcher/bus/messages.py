@@ -8,16 +8,19 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
 from rosbags.interfaces import Nodetype
 
 from launcher.bus.types import registry
 from launcher.errors import LaunchError, did_you_mean
 
-_INTS = {"byte": np.uint8, "char": np.uint8, "int8": np.int8, "uint8": np.uint8,
-         "int16": np.int16, "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32,
-         "int64": np.int64, "uint64": np.uint64}
-_FLOATS = {"float32": np.float32, "float64": np.float64}
+# Integer ranges, and the numpy dtypes of primitive arrays (numpy is imported only when a
+# message has such an array: node start-up time is benchmarked).
+_INTS = {"byte": (0, 255), "char": (0, 255), "int8": (-2**7, 2**7 - 1), "uint8": (0, 255),
+         "int16": (-2**15, 2**15 - 1), "uint16": (0, 2**16 - 1),
+         "int32": (-2**31, 2**31 - 1), "uint32": (0, 2**32 - 1),
+         "int64": (-2**63, 2**63 - 1), "uint64": (0, 2**64 - 1)}
+_FLOATS = ("float32", "float64")
+_DTYPES = {"byte": "uint8", "char": "uint8", "bool": "bool"}
 
 
 class MessageError(LaunchError):
@@ -50,7 +53,7 @@ def _value(kind: Nodetype, detail: Any, value: Any, path: str) -> Any:
         return build(detail, value, f"{path}.")
     (inner_kind, inner_detail), count = detail
     items = [] if value is None else value
-    if not isinstance(items, list | tuple | np.ndarray):
+    if not isinstance(items, list | tuple) and type(items).__name__ != "ndarray":
         raise MessageError(f"{path}: expected a list, got {value!r}")
     if kind == Nodetype.ARRAY and value is None:
         items = [None] * count
@@ -59,8 +62,9 @@ def _value(kind: Nodetype, detail: Any, value: Any, path: str) -> Any:
     converted = [_value(inner_kind, inner_detail, item, f"{path}[{i}]")
                  for i, item in enumerate(items)]
     if inner_kind == Nodetype.BASE and inner_detail[0] not in ("string", "wstring"):
-        dtype = _INTS.get(inner_detail[0]) or _FLOATS.get(inner_detail[0]) or np.bool_
-        return np.array(converted, dtype=dtype)
+        import numpy as np  # rosbags wants primitive arrays as numpy arrays
+
+        return np.array(converted, dtype=_DTYPES.get(inner_detail[0], inner_detail[0]))
     return converted
 
 
@@ -85,19 +89,19 @@ def _primitive(kind: str, value: Any, path: str) -> Any:
         return float(value)
     if not float(value).is_integer():
         raise MessageError(f"{path}: expected {kind} (a whole number), got {value!r}")
-    info = np.iinfo(_INTS[kind])
-    if not info.min <= value <= info.max:
+    low, high = _INTS[kind]
+    if not low <= value <= high:
         raise MessageError(f"{path}: {value} is out of range for {kind}")
     return int(value)
 
 
 def to_data(message: Any) -> Any:
     """Plain data (dicts, lists, numbers, strings) for YAML or CSV."""
-    if isinstance(message, np.ndarray):
+    if hasattr(message, "tolist"):  # numpy arrays and scalars
         return message.tolist()
     if isinstance(message, list | tuple):
         return [to_data(m) for m in message]
     fields = getattr(message, "__dataclass_fields__", None)
     if fields is None:
-        return message.item() if isinstance(message, np.generic) else message
+        return message
     return {name: to_data(getattr(message, name)) for name in fields if name != "__msgtype__"}

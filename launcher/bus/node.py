@@ -26,11 +26,12 @@ import zenoh
 
 from launcher.bus import keys, names, ros_args
 from launcher.bus.qos import QoS, qos_of
+from launcher.bus.services import Client, Service
 from launcher.bus.session import open_session
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 
-DOMAIN = int(os.environ.get("ROS_DOMAIN_ID", "0") or 0)
+DOMAIN = keys.DOMAIN
 _node_ids = itertools.count()
 
 
@@ -230,6 +231,23 @@ class Node:
         self._entities.append(subscription)
         return subscription
 
+    def create_service(self, type_name: str, name: str,
+                       callback: Callable[[Any, Any], Any]) -> Service:
+        service = Service(self, type_name, self.resolve(name, "service name"), callback)
+        self._entities.append(service)
+        return service
+
+    def create_client(self, type_name: str, name: str) -> Client:
+        client = Client(self, type_name, self.resolve(name, "service name"))
+        self._entities.append(client)
+        return client
+
+    def _announce_service(self, kind: str, name: str, type_name: str) -> Any:
+        entity = keys.Entity(str(self.session.zid()), self._node_id, next(self._entity_ids),
+                             kind, self.namespace, self.name, name, type_name,
+                             registry().service_hash(type_name), QoS().key())
+        return self.session.liveliness().declare_token(keys.liveliness_key(DOMAIN, entity))
+
     def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
         if period <= 0:
             raise LaunchError(f"timer period must be > 0, got {period}")
@@ -311,3 +329,4 @@ class Node:
             entity.destroy()
         self._token.undeclare()
         self.session.close()
+

@@ -13,8 +13,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from launcher.errors import LaunchError, Location
 
 
@@ -76,6 +74,8 @@ def _option(out: RosArgs, word: str, value: str) -> None:
 
 
 def _typed(text: str) -> Any:
+    import yaml  # only for -p values and params files: node start-up time
+
     try:
         value = yaml.safe_load(text)
     except yaml.YAMLError:
@@ -85,6 +85,8 @@ def _typed(text: str) -> Any:
 
 def load_params_file(path: str, node: str, namespace: str) -> dict[str, Any]:
     """The parameters for /NAMESPACE/NODE in a params file; errors name file:line."""
+    import yaml  # only for -p values and params files: node start-up time
+
     try:
         text = Path(path).read_text(encoding="utf-8")
     except OSError as exc:

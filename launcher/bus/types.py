@@ -15,6 +15,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
+from launcher.bus import interfaces
 from launcher.errors import LaunchError, did_you_mean
 
 DISTRO = "ros2_jazzy"
@@ -69,6 +70,7 @@ class TypeRegistry:
         self._available: dict[str, Any] = {}
         self._loaded_distro = False
         self._hashes: dict[str, str] = {}
+        self.services: dict[str, dict[str, Any]] = {}  # service -> its hashing definitions
 
     # --- definitions ------------------------------------------------------------------------
     def _definitions(self) -> dict[str, Any]:
@@ -89,12 +91,58 @@ class TypeRegistry:
         if name in self.store.fielddefs:
             return name
         available = self._definitions()
-        if name not in available:
+        if name not in available and not self._from_package(name):
             raise UnknownType(f"unknown message type '{name}'{did_you_mean(name, available)}")
         needed: dict[str, Any] = {}
         self._collect(name, available, needed)
         self.store.register({k: v for k, v in needed.items() if k not in self.store.fielddefs})
         return name
+
+    def _from_package(self, name: str) -> bool:
+        """Look for `pkg/msg/Name.msg` or `pkg/srv/Name.srv` in the package index."""
+        parts = name.split("/")
+        if len(parts) != 3 or parts[1] not in ("msg", "srv"):
+            return False
+        for half in ("_Request", "_Response"):  # a service's halves come with the service
+            if parts[1] == "srv" and name.endswith(half):
+                return self._from_package(name.removesuffix(half))
+        from launcher.packages.index import PackageIndex  # only for types not in the distro
+
+        index = PackageIndex.from_environment()
+        if parts[0] not in index:
+            return False
+        found = interfaces.find_definition(name, index.share(parts[0]))
+        if found is None:
+            return False
+        kind, path = found
+        text = path.read_text(encoding="utf-8")
+        parsed = interfaces.parse_msg(text, name, path) if kind == "msg" else \
+            interfaces.parse_srv(text, name, path)
+        self._available.update(parsed)
+        if kind == "srv":
+            self.services[name] = interfaces.service_hash_definitions(name)
+        return True
+
+    def service(self, name: str) -> tuple[str, str]:
+        """(request type, response type) of a service type, registered for CDR."""
+        name = normalize(name)
+        if name not in self.services and not self._from_package(name):
+            known = _package_services()
+            raise UnknownType(f"unknown service type '{name}'{did_you_mean(name, known)}")
+        return self.ensure(f"{name}_Request"), self.ensure(f"{name}_Response")
+
+    def service_hash(self, name: str) -> str:
+        """ROS 2's RIHS01 hash of a service type (see interfaces.py)."""
+        request, response = self.service(name)
+        if name not in self._hashes:
+            from rosbags.typesys.store import Typestore
+
+            hashing = Typestore()
+            hashing.fielddefs.update({t: self.store.fielddefs[t] for t in self.store.fielddefs})
+            hashing.fielddefs.update(self.services[normalize(name)])
+            hashing.fielddefs.setdefault(interfaces.TIME, self._definitions()[interfaces.TIME])
+            self._hashes[name] = hashing.hash_rihs01(normalize(name))
+        return self._hashes[name]
 
     def _collect(self, name: str, available: dict[str, Any], out: dict[str, Any]) -> None:
         if name in out or name in self.store.fielddefs:
@@ -138,6 +186,18 @@ def _referenced(kind: Any, detail: Any) -> list[str]:
                 found.append(item)
         return found
     return []
+
+
+def _package_services() -> list[str]:
+    """Every `pkg/srv/Name` the packages define (for "did you mean")."""
+    from launcher.packages.index import PackageIndex  # only when reporting an error
+
+    found = []
+    for package in PackageIndex.from_environment():
+        folder = package.path / "srv"
+        if folder.is_dir():
+            found += [f"{package.name}/srv/{p.stem}" for p in folder.glob("*.srv")]
+    return found
 
 
 _registry: TypeRegistry | None = None

@@ -19,6 +19,8 @@ COMMANDS = {
     "env": ("launcher.cli.env_command", "print the environment the workspace's hooks make"),
     "topic": ("launcher.cli.topic_command", "topics: list, echo, pub, hz, info"),
     "bag": ("launcher.cli.bag_command", "record and play rosbag2 (MCAP) bags"),
+    "service": ("launcher.cli.service_command", "services: list, call"),
+    "node": ("launcher.cli.node_command", "nodes: list, info"),
 }
 
 

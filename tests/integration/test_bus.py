@@ -236,3 +236,43 @@ def test_bag_record_info_play_round_trip(bus):
     assert stop(listener) == 130
     again = bus.run("bag", "record", "/cmd_vel", "-o", "run1", "--duration", "1")
     assert again.returncode == 1 and "already exists" in again.stderr
+
+
+SERVER = """
+from launcher.bus.node import Node
+node = Node("switch")
+state = {"on": False}
+def set_bool(request, response):
+    if request.data and state["on"]:
+        raise RuntimeError("already on")
+    state["on"] = request.data
+    response.success, response.message = True, f"now {'on' if request.data else 'off'}"
+    return response
+node.create_service("std_srvs/srv/SetBool", "~/enable", set_bool)
+print("serving", flush=True)
+node.spin()
+node.destroy_node()
+"""
+
+
+def test_services_round_trip_and_the_cli(bus):
+    bus.write("server.py", SERVER)
+    proc, out = launch(bus, "s.launch.yaml",
+                       f"launch:\n  - executable: {{cmd: {PY} server.py, output: screen}}\n")
+    wait_text(out, "serving")
+    listing = bus.run("service", "list", "-t")
+    assert "/switch/enable [std_srvs/srv/SetBool]" in listing.stdout, listing.stderr
+    called = bus.run("service", "call", "/switch/enable", "std_srvs/srv/SetBool", "{data: true}")
+    assert called.returncode == 0, called.stderr
+    assert "success: true" in called.stdout and "message: now on" in called.stdout
+    failed = bus.run("service", "call", "/switch/enable", "std_srvs/srv/SetBool", "{data: true}")
+    assert failed.returncode == 1 and "RuntimeError: already on" in failed.stderr
+    nodes = bus.run("node", "list")
+    assert nodes.stdout.split() == ["/switch"]
+    info = bus.run("node", "info", "/switch")
+    assert "Service Servers:\n    /switch/enable: std_srvs/srv/SetBool" in info.stdout
+    silent = bus.run("service", "call", "/nobody", "std_srvs/srv/Trigger", "--timeout", "0.5")
+    assert silent.returncode == 1 and "did not answer within 0.5 s" in silent.stderr
+    unknown = bus.run("service", "call", "/x", "std_srvs/srv/Trigr")
+    assert unknown.returncode == 1 and "did you mean 'std_srvs/srv/Trigger" in unknown.stderr
+    assert stop(proc) == 130

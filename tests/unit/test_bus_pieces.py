@@ -105,3 +105,34 @@ def test_messages_round_trip_and_errors():
     with pytest.raises(UnknownType, match="unknown message type 'geometry_msgs/msg/Twits' "
                                           "\\(did you mean 'geometry_msgs/msg/Twist'"):
         registry().ensure("geometry_msgs/Twits")
+
+
+def test_service_hash_matches_ros2():
+    """std_srvs/srv/Trigger as ROS 2 Jazzy publishes it (char in the event hashed as uint8)."""
+    assert registry().service_hash("std_srvs/srv/Trigger") == (
+        "RIHS01_eeff2cd6fa5ad9d27cdf4dec64818317839b62f212a91e6b5304b634b2062c5f")
+    assert registry().service("std_srvs/srv/SetBool") == ("std_srvs/srv/SetBool_Request",
+                                                          "std_srvs/srv/SetBool_Response")
+
+
+def test_package_interfaces(tmp_path, monkeypatch):
+    pkg = tmp_path / "ws" / "my_interfaces"
+    (pkg / "msg").mkdir(parents=True)
+    (pkg / "srv").mkdir()
+    (pkg / "package.xml").write_text("<package format='3'><name>my_interfaces</name></package>")
+    (pkg / "msg" / "Beacon.msg").write_text("string name\nfloat64[3] position\n")
+    (pkg / "srv" / "Spawn.srv").write_text("string name\nfloat64 x\n---\nbool ok\n")
+    (pkg / "srv" / "Broken.srv").write_text("string name\n")
+    monkeypatch.setenv("LAUNCHER_PACKAGE_PATH", str(tmp_path / "ws"))
+    monkeypatch.setenv("LAUNCHER_CACHE_DIR", str(tmp_path / "cache"))
+    from launcher.bus.types import TypeRegistry
+
+    types = TypeRegistry()
+    beacon = build("my_interfaces/msg/Beacon", {"name": "b", "position": [1, 2, 3]})
+    back = types.deserialize(types.serialize(beacon, "my_interfaces/msg/Beacon"),
+                             "my_interfaces/msg/Beacon")
+    assert back.name == "b" and list(back.position) == [1.0, 2.0, 3.0]
+    assert types.service("my_interfaces/srv/Spawn")[0] == "my_interfaces/srv/Spawn_Request"
+    assert types.service_hash("my_interfaces/srv/Spawn").startswith("RIHS01_")
+    with pytest.raises(LaunchError, match="Broken.srv: a .srv file needs exactly one '---'"):
+        types.service("my_interfaces/srv/Broken")

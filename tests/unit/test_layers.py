@@ -13,7 +13,7 @@ ALLOWED = {
     "frontend": {"frontend", "description", "runtime", "errors", "compat"},
     "cli": {"cli", "frontend", "description", "runtime", "packages", "errors", "compat", "api",
             "bus"},
-    "bus": {"bus", "errors"},
+    "bus": {"bus", "errors", "packages"},
     "compat": {"compat", "api", "packages", "runtime", "errors"},
 }
 

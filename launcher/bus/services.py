@@ -1,0 +1,141 @@
+"""Services: a server answers on a queryable; a client calls with a Zenoh get.
+
+Requests and responses are CDR of `<pkg>/srv/<Name>_Request` / `_Response`; keys use the
+service type's ROS 2 hash (see interfaces.py). A server's callback runs on its node's
+executor, like every other callback; a failing callback answers the caller with an error.
+"""
+
+from __future__ import annotations
+
+import itertools
+import os
+import threading
+import time
+from typing import Any
+
+import zenoh
+
+from launcher.bus import keys
+from launcher.bus.types import registry
+from launcher.errors import LaunchError
+
+DOMAIN = keys.DOMAIN
+
+
+class Service:
+    """Answers requests: `callback(request, response) -> response`, run by the executor."""
+
+    def __init__(self, node: Any, type_name: str, name: str,
+                 callback: Any) -> None:
+        types = registry()
+        self.type_name = type_name
+        self.request_type, self.response_type = types.service(type_name)
+        self.name, self._node, self._callback = name, node, callback
+        key = keys.service_key(DOMAIN, name, type_name, types.service_hash(type_name))
+        self._queryable = node.session.declare_queryable(key, self._on_query)
+        self._token = node._announce_service(keys.SERVICE, name, type_name)
+
+    def _on_query(self, query: zenoh.Query) -> None:
+        self._node._enqueue(self._answer, query)
+
+    def _answer(self, query: zenoh.Query) -> None:
+        types = registry()
+        try:
+            request = types.deserialize(query.payload.to_bytes(), self.request_type)
+            response = self._callback(request, types.message_class(self.response_type)(
+                **_zero_fields(self.response_type)))
+            query.reply(query.key_expr, types.serialize(response, self.response_type),
+                        attachment=query.attachment)
+        except Exception as exc:  # the caller gets an error, the node goes on
+            self._node.get_logger().error(f"service {self.name}: {type(exc).__name__}: {exc}")
+            query.reply_err(f"{type(exc).__name__}: {exc}".encode())
+
+    def destroy(self) -> None:
+        self._queryable.undeclare()
+        self._token.undeclare()
+
+
+class Client:
+    """Calls a service: `call(request, timeout)` waits; `call_async` returns a Future."""
+
+    def __init__(self, node: Any, type_name: str, name: str) -> None:
+        types = registry()
+        self.type_name, self.name, self._node = type_name, name, node
+        self.request_type, self.response_type = types.service(type_name)
+        self._key = keys.service_key(DOMAIN, name, type_name, types.service_hash(type_name))
+        self._token = node._announce_service(keys.CLIENT, name, type_name)
+        self._sequence = itertools.count(1)
+        self._gid = os.urandom(16)
+
+    def call(self, request: Any, timeout: float = 5.0) -> Any:
+        types = registry()
+        payload = types.serialize(request, self.request_type)
+        attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
+        replies = self._node.session.get(self._key, payload=payload, attachment=attachment,
+                                         timeout=timeout)
+        for reply in replies:
+            if reply.ok is not None:
+                return types.deserialize(reply.ok.payload.to_bytes(), self.response_type)
+            raise LaunchError(f"service {self.name} failed: "
+                              f"{reply.err.payload.to_bytes().decode(errors='replace')}")
+        raise LaunchError(f"service {self.name} did not answer within {timeout:g} s "
+                          "(is its server running?)")
+
+    def call_async(self, request: Any, timeout: float = 5.0) -> Future:
+        future = Future()
+
+        def run() -> None:
+            try:
+                future.set_result(self.call(request, timeout))
+            except LaunchError as exc:
+                future.set_exception(exc)
+
+        threading.Thread(target=run, daemon=True).start()
+        return future
+
+    def wait_for_service(self, timeout: float = 5.0) -> bool:
+        from launcher.bus.graph import entities
+
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if any(e.kind == keys.SERVICE and e.topic == self.name
+                   for e in entities(self._node.session, 0.5)):
+                return True
+            time.sleep(0.05)
+        return False
+
+    def destroy(self) -> None:
+        self._token.undeclare()
+
+
+class Future:
+    def __init__(self) -> None:
+        self._done = threading.Event()
+        self._result: Any = None
+        self._error: BaseException | None = None
+
+    def set_result(self, value: Any) -> None:
+        self._result = value
+        self._done.set()
+
+    def set_exception(self, error: BaseException) -> None:
+        self._error = error
+        self._done.set()
+
+    def done(self) -> bool:
+        return self._done.is_set()
+
+    def result(self, timeout: float | None = None) -> Any:
+        if not self._done.wait(timeout):
+            raise TimeoutError("the call has not finished")
+        if self._error is not None:
+            raise self._error
+        return self._result
+
+
+def _zero_fields(type_name: str) -> dict[str, Any]:
+    from launcher.bus.messages import build
+
+    message = build(type_name, {})
+    return {name: getattr(message, name) for name in message.__dataclass_fields__
+            if name != "__msgtype__"}
