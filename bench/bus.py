@@ -69,7 +69,7 @@ def latency(env: dict, count: int) -> list[float]:
     from launcher.bus.qos import QoS
 
     echo = start(ECHO, env)
-    node = Node("pinger", argv=[])
+    node = Node("pinger", argv=[], parameter_services=False)
     sent: dict[float, float] = {}
     out: list[float] = []
     pub = node.create_publisher("geometry_msgs/msg/Twist", "ping", QoS(depth=1000))
@@ -99,7 +99,7 @@ def throughput(env: dict, kind: str, values: dict, count: int) -> float:
     from launcher.bus.qos import QoS
 
     sink = start(SINK, env, kind, str(count))
-    node = Node("flooder", argv=[])
+    node = Node("flooder", argv=[], parameter_services=False)
     pub = node.create_publisher(kind, "flood", QoS(depth=100000))
     time.sleep(0.5)
     message = build(kind, values)

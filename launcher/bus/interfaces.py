@@ -28,8 +28,7 @@ def parse_msg(text: str, name: str, file: Path) -> dict[str, Any]:
         parsed = dict(get_types_from_msg(text, name))
     except Exception as exc:  # rosbags' parser errors carry the reason
         raise LaunchError(f"invalid message definition: {exc}", Location(str(file))) from None
-    # rosbags files `pkg/srv/X_Request` under `pkg/srv/msg/X_Request`: name it as ROS 2 does
-    return {key.replace("/srv/msg/", "/srv/"): value for key, value in parsed.items()}
+    return parsed
 
 
 def parse_srv(text: str, name: str, file: Path) -> dict[str, Any]:
@@ -38,9 +37,15 @@ def parse_srv(text: str, name: str, file: Path) -> dict[str, Any]:
         raise LaunchError("a .srv file needs exactly one '---' line between request and "
                           "response", Location(str(file)))
     cut = next(i for i, line in enumerate(lines) if line.strip() == "---")
-    request = parse_msg("\n".join(lines[:cut]), f"{name}_Request", file)
-    response = parse_msg("\n".join(lines[cut + 1:]), f"{name}_Response", file)
-    return {**request, **response}
+    # Parsed as pkg/msg/… so that relative names (`ParameterValue`) mean pkg/msg/…, as in
+    # ROS 2; then the two halves are filed under pkg/srv/Name_Request and _Response.
+    package, _, base = name.split("/")
+    out: dict[str, Any] = {}
+    for half, text in (("_Request", lines[:cut]), ("_Response", lines[cut + 1:])):
+        parsed = parse_msg("\n".join(text), f"{package}/msg/{base}{half}", file)
+        for key, value in parsed.items():
+            out[f"{name}{half}" if key == f"{package}/msg/{base}{half}" else key] = value
+    return out
 
 
 def service_hash_definitions(name: str) -> dict[str, Any]:

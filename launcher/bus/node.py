@@ -179,7 +179,7 @@ class Rate:
 
 class Node:
     def __init__(self, name: str, *, namespace: str = "", argv: list[str] | None = None,
-                 session: zenoh.Session | None = None) -> None:
+                 session: zenoh.Session | None = None, parameter_services: bool = True) -> None:
         parsed = ros_args.parse(sys.argv[1:] if argv is None else argv)
         self.name = names.check_node_name(parsed.node_name or name)
         self.namespace = names.check_namespace(parsed.namespace or namespace)
@@ -201,6 +201,11 @@ class Node:
             DOMAIN, keys.Entity(str(self.session.zid()), self._node_id, 0, keys.NODE,
                                 self.namespace, self.name)))
         self._stopped = threading.Event()
+        self._on_set: list[Callable[[str, Any], None]] = []
+        if parameter_services:
+            from launcher.bus.parameters import serve  # rcl_interfaces types: only here
+
+            serve(self)
 
     # --- names ------------------------------------------------------------------------------
     @property
@@ -276,7 +281,16 @@ class Node:
 
     def set_parameters(self, parameters: list[Parameter]) -> None:
         for parameter in parameters:
-            self._parameters[parameter.name] = parameter.value
+            self.set_parameter_value(parameter.name, parameter.value)
+
+    def set_parameter_value(self, name: str, value: Any) -> None:
+        """Set one parameter (also from `launcher param set`) and tell the listeners."""
+        self._parameters[name] = value
+        for listener in self._on_set:
+            listener(name, value)
+
+    def add_on_set_parameters_callback(self, callback: Callable[[str, Any], None]) -> None:
+        self._on_set.append(callback)
 
     @property
     def parameters(self) -> dict[str, Any]:

@@ -73,6 +73,11 @@ def _option(out: RosArgs, word: str, value: str) -> None:
             out.remaps.append((name, text))
 
 
+def typed(text: str) -> Any:
+    """A value as `-p name:=VALUE` reads it (YAML scalars and lists)."""
+    return _typed(text)
+
+
 def _typed(text: str) -> Any:
     import yaml  # only for -p values and params files: node start-up time
 

@@ -34,7 +34,7 @@ def run_record(args: argparse.Namespace) -> int:
         raise UsageError("name the topics to record, or -a for all of them")
     if Path(args.output).exists():  # before reaching for the bus
         raise UsageError(f"'{args.output}' already exists; choose another output folder")
-    node = Node("_launcher_bag_record", argv=[])
+    node = Node("_launcher_bag_record", argv=[], parameter_services=False)
     topics = [node.resolve(t) for t in args.topics]
     recorder = bag.Recorder(node, Path(args.output), topics, args.all)
     recorder.run(args.duration)
@@ -58,7 +58,7 @@ def run_info(args: argparse.Namespace) -> int:
 
 def run_play(args: argparse.Namespace) -> int:
     folder = _bag(args.path)
-    node = Node("_launcher_bag_play", argv=[])
+    node = Node("_launcher_bag_play", argv=[], parameter_services=False)
     try:
         sent = bag.play(node, folder, args.rate, args.loop)
     except KeyboardInterrupt:

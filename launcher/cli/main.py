@@ -21,6 +21,7 @@ COMMANDS = {
     "bag": ("launcher.cli.bag_command", "record and play rosbag2 (MCAP) bags"),
     "service": ("launcher.cli.service_command", "services: list, call"),
     "node": ("launcher.cli.node_command", "nodes: list, info"),
+    "param": ("launcher.cli.param_command", "parameters of a running node: list, get, set"),
 }
 
 

@@ -44,7 +44,7 @@ def run_call(args: argparse.Namespace) -> int:
         raise UsageError(f"the request is not valid YAML: {exc}") from None
     request_type, _ = registry().service(args.type)
     request = build(request_type, values)
-    node = Node("_launcher_service_call", argv=[])
+    node = Node("_launcher_service_call", argv=[], parameter_services=False)
     try:
         client = node.create_client(args.type, args.name)
         print(f"requester: making request: {to_data(request)}\n")

@@ -101,7 +101,7 @@ def run_echo(args: argparse.Namespace) -> int:
     session = open_session("client")
     topic = _topic(args.topic)
     type_name = _type_of(session, topic, args.type)
-    node = Node("_launcher_topic_echo", argv=[], session=session)
+    node = Node("_launcher_topic_echo", argv=[], parameter_services=False, session=session)
     done = threading.Event()
 
     def show(message: Any) -> None:
@@ -131,7 +131,7 @@ def run_pub(args: argparse.Namespace) -> int:
     except yaml.YAMLError as exc:
         raise UsageError(f"the message is not valid YAML: {exc}") from None
     message = build(args.type, values)
-    node = Node("_launcher_topic_pub", argv=[])
+    node = Node("_launcher_topic_pub", argv=[], parameter_services=False)
     qos = QoS(depth=1, transient_local=True) if args.latched else QoS()
     publisher = node.create_publisher(args.type, _topic(args.topic), qos)
     time.sleep(0.2)  # let subscribers find the publisher
@@ -156,7 +156,7 @@ def run_pub(args: argparse.Namespace) -> int:
 def run_hz(args: argparse.Namespace) -> int:
     session = open_session("client")
     topic = _topic(args.topic)
-    node = Node("_launcher_topic_hz", argv=[], session=session)
+    node = Node("_launcher_topic_hz", argv=[], parameter_services=False, session=session)
     stamps: list[float] = []
     node.create_subscription(_type_of(session, topic, None), topic,
                                             lambda _m: stamps.append(time.monotonic()))

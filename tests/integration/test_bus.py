@@ -276,3 +276,20 @@ def test_services_round_trip_and_the_cli(bus):
     unknown = bus.run("service", "call", "/x", "std_srvs/srv/Trigr")
     assert unknown.returncode == 1 and "did you mean 'std_srvs/srv/Trigger" in unknown.stderr
     assert stop(proc) == 130
+
+
+def test_param_list_get_set_on_a_live_node(bus):
+    proc, out = launch(bus, "l.launch.yaml", (
+        f"launch:\n  - executable:\n      cmd: {PY} listener.py --ros-args -p gain:=2.0 "
+        "-p label:=left\n      output: screen\n"))
+    wait_text(out, "listening")
+    listing = bus.run("param", "list", "/listener")
+    assert listing.stdout.split() == ["/listener:", "gain", "label"], listing.stderr
+    assert bus.run("param", "get", "/listener", "gain").stdout.strip() == "Double value is: 2.0"
+    assert bus.run("param", "get", "/listener", "label").stdout.strip() == \
+        "String value is: left"
+    assert "Set parameter successful" in bus.run("param", "set", "/listener", "gain", "3").stdout
+    assert bus.run("param", "get", "/listener", "gain").stdout.strip() == "Integer value is: 3"
+    missing = bus.run("param", "get", "/nobody", "x", "--timeout", "0.5")
+    assert missing.returncode == 1 and "did not answer" in missing.stderr
+    assert stop(proc) == 130

@@ -1,0 +1,79 @@
+"""The parameter services every node offers, as ROS 2 nodes do: `~/list_parameters`,
+`~/get_parameters`, `~/set_parameters` (rcl_interfaces), and Python values <->
+rcl_interfaces/msg/ParameterValue."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launcher.bus.messages import build
+
+NOT_SET, BOOL, INTEGER, DOUBLE, STRING = 0, 1, 2, 3, 4
+BOOL_ARRAY, INTEGER_ARRAY, DOUBLE_ARRAY, STRING_ARRAY = 6, 7, 8, 9
+VALUE = "rcl_interfaces/msg/ParameterValue"
+LIST, GET, SET = ("rcl_interfaces/srv/ListParameters", "rcl_interfaces/srv/GetParameters",
+                  "rcl_interfaces/srv/SetParameters")
+
+
+def to_message(value: Any) -> Any:
+    if value is None:
+        return build(VALUE, {"type": NOT_SET})
+    if isinstance(value, bool):
+        return build(VALUE, {"type": BOOL, "bool_value": value})
+    if isinstance(value, int):
+        return build(VALUE, {"type": INTEGER, "integer_value": value})
+    if isinstance(value, float):
+        return build(VALUE, {"type": DOUBLE, "double_value": value})
+    if isinstance(value, list) and value:
+        kinds = {bool: (BOOL_ARRAY, "bool_array_value"), int: (INTEGER_ARRAY,
+                 "integer_array_value"), float: (DOUBLE_ARRAY, "double_array_value"),
+                 str: (STRING_ARRAY, "string_array_value")}
+        kind, field = kinds.get(type(value[0]), (STRING_ARRAY, "string_array_value"))
+        return build(VALUE, {"type": kind, field: value})
+    return build(VALUE, {"type": STRING, "string_value": str(value)})
+
+
+def from_message(message: Any) -> Any:
+    fields = {BOOL: "bool_value", INTEGER: "integer_value", DOUBLE: "double_value",
+              STRING: "string_value", BOOL_ARRAY: "bool_array_value",
+              INTEGER_ARRAY: "integer_array_value", DOUBLE_ARRAY: "double_array_value",
+              STRING_ARRAY: "string_array_value"}
+    if message.type not in fields:
+        return None
+    value = getattr(message, fields[message.type])
+    return value.tolist() if hasattr(value, "tolist") else value
+
+
+def describe(value: Any) -> str:
+    """As `ros2 param get` prints it."""
+    kind = {bool: "Boolean", int: "Integer", float: "Double", str: "String"}.get(type(value))
+    if kind is None:
+        return f"Array value is: {value}" if isinstance(value, list) else "Parameter not set."
+    return f"{kind} value is: {value}"
+
+
+def serve(node: Any) -> None:
+    """Declare the three parameter services on `node`."""
+
+    def list_parameters(request: Any, response: Any) -> Any:
+        names = sorted(n for n in node.parameters
+                       if not request.prefixes or any(n.startswith(p) for p in request.prefixes))
+        response.result = build("rcl_interfaces/msg/ListParametersResult", {"names": names})
+        return response
+
+    def get_parameters(request: Any, response: Any) -> Any:
+        values = node.parameters
+        response.values = [to_message(values.get(name)) for name in request.names]
+        return response
+
+    def set_parameters(request: Any, response: Any) -> Any:
+        results = []
+        for parameter in request.parameters:
+            node.set_parameter_value(parameter.name, from_message(parameter.value))
+            results.append(build("rcl_interfaces/msg/SetParametersResult", {"successful": True}))
+        response.results = results
+        return response
+
+    node.create_service(LIST, "~/list_parameters", list_parameters)
+    node.create_service(GET, "~/get_parameters", get_parameters)
+    node.create_service(SET, "~/set_parameters", set_parameters)
