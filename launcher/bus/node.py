@@ -12,6 +12,7 @@ are CDR (rosbags); keys, liveliness tokens and attachments follow rmw_zenoh (see
 
 from __future__ import annotations
 
+import atexit
 import itertools
 import os
 import queue
@@ -201,6 +202,12 @@ class Node:
             DOMAIN, keys.Entity(str(self.session.zid()), self._node_id, 0, keys.NODE,
                                 self.namespace, self.name)))
         self._stopped = threading.Event()
+        self._destroyed = False
+        # Zenoh runs callbacks on non-daemon threads, which the interpreter joins at exit
+        # before atexit handlers run: a node never destroyed would hang its program. The
+        # threading module's own exit hook (concurrent.futures uses it) runs before the join.
+        register = getattr(threading, "_register_atexit", atexit.register)
+        register(self.destroy_node)
         self._on_set: list[Callable[[str, Any], None]] = []
         if parameter_services:
             from launcher.bus.parameters import serve  # rcl_interfaces types: only here
@@ -339,6 +346,10 @@ class Node:
         self._stopped.set()
 
     def destroy_node(self) -> None:
+        """Undeclare everything and close the session; safe to call more than once."""
+        if self._destroyed:
+            return
+        self._destroyed = True
         for entity in self._entities:
             entity.destroy()
         self._token.undeclare()

@@ -293,3 +293,22 @@ def test_param_list_get_set_on_a_live_node(bus):
     missing = bus.run("param", "get", "/nobody", "x", "--timeout", "0.5")
     assert missing.returncode == 1 and "did not answer" in missing.stderr
     assert stop(proc) == 130
+
+
+def test_a_node_never_destroyed_still_lets_its_program_exit(bus):
+    proc, out = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
+    deadline = time.monotonic() + 20
+    while not endpoints(bus):
+        assert time.monotonic() < deadline
+        time.sleep(0.05)
+    import subprocess
+    script = bus.write("forgetful.py", """
+from launcher.bus.node import Node
+node = Node("forgetful")
+node.create_service("std_srvs/srv/Trigger", "~/poke", lambda req, res: res)
+print("done", flush=True)
+""")
+    result = subprocess.run([PY, str(script)], env=bus.env, capture_output=True, text=True,
+                            timeout=30)
+    assert result.returncode == 0 and "done" in result.stdout
+    assert stop(proc) == 130
