@@ -26,6 +26,7 @@ from typing import Any
 import zenoh
 
 from launcher.bus import keys, names, ros_args
+from launcher.bus.clock import Clock
 from launcher.bus.qos import QoS, qos_of
 from launcher.bus.services import Client, Service
 from launcher.bus.session import open_session
@@ -213,6 +214,7 @@ class Node:
             from launcher.bus.parameters import serve  # rcl_interfaces types: only here
 
             serve(self)
+        self._clock = Clock(self, bool(self._parameters.get("use_sim_time", False)))
 
     # --- names ------------------------------------------------------------------------------
     @property
@@ -305,6 +307,9 @@ class Node:
 
     def get_logger(self) -> Logger:
         return self._logger
+
+    def get_clock(self) -> Clock:
+        return self._clock
 
     # --- executing --------------------------------------------------------------------------
     def _enqueue(self, callback: Callable[..., Any], *args: Any) -> None:

@@ -312,3 +312,26 @@ print("done", flush=True)
                             timeout=30)
     assert result.returncode == 0 and "done" in result.stdout
     assert stop(proc) == 130
+
+
+def test_use_sim_time_follows_clock(bus):
+    bus.write("timed.py", """
+from launcher.bus.node import Node
+node = Node("timed")
+def report():
+    now = node.get_clock().now()
+    if now.nanoseconds:
+        print("sim time", now.seconds, flush=True)
+node.create_timer(0.05, report)
+print("sim", node.get_clock().use_sim_time, flush=True)
+node.spin()
+node.destroy_node()
+""")
+    proc, out = launch(bus, "t.launch.yaml", (
+        f"launch:\n  - executable:\n      cmd: {PY} timed.py --ros-args -p use_sim_time:=true\n"
+        "      output: screen\n"))
+    wait_text(out, "sim True")
+    bus.run("topic", "pub", "/clock", "rosgraph_msgs/msg/Clock",
+            "{clock: {sec: 42, nanosec: 500000000}}", "--times", "3", "--rate", "10")
+    wait_text(out, "sim time 42.5")
+    assert stop(proc) == 130
