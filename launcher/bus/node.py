@@ -192,7 +192,7 @@ class Node:
         for path in parsed.params_files:
             self._parameters.update(ros_args.load_params_file(path, self.name, self.namespace))
         self._parameters.update(parsed.parameters)
-        self.session = session or open_session("peer")
+        self.session = session or open_session("peer", host_if_alone=True)
         self.timeout = 2.0
         self._node_id = next(_node_ids)
         self._entity_ids = itertools.count(1)
@@ -203,6 +203,7 @@ class Node:
             DOMAIN, keys.Entity(str(self.session.zid()), self._node_id, 0, keys.NODE,
                                 self.namespace, self.name)))
         self._stopped = threading.Event()
+        self.interrupted = False  # Ctrl-C arrived during spin()
         self._destroyed = False
         # Zenoh runs callbacks on non-daemon threads, which the interpreter joins at exit
         # before atexit handlers run: a node never destroyed would hang its program. The
@@ -336,7 +337,10 @@ class Node:
         return True
 
     def spin(self, duration: float | None = None) -> None:
-        """Run callbacks until Ctrl-C, `shutdown()`, or `duration` seconds."""
+        """Run callbacks until Ctrl-C, `shutdown()`, or `duration` seconds.
+
+        Ctrl-C ends the spin quietly (so `node.spin(); node.destroy_node()` is a whole
+        program) and sets `interrupted`, for loops that spin in slices."""
         end = None if duration is None else time.monotonic() + duration
         try:
             while not self._stopped.is_set():
@@ -345,7 +349,7 @@ class Node:
                     return
                 self.spin_once(0.1 if remaining is None else min(0.1, remaining))
         except KeyboardInterrupt:
-            return
+            self.interrupted = True
 
     def shutdown(self) -> None:
         self._stopped.set()

@@ -44,12 +44,19 @@ def config(mode: str, listen: list[str], connect: list[str],
 
 
 def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
-                 listen: list[str] | None = None) -> zenoh.Session:
-    """A session of `mode` (peer or client) on the run's bus."""
+                 listen: list[str] | None = None, host_if_alone: bool = False) -> zenoh.Session:
+    """A session of `mode` (peer or client) on the run's bus.
+
+    With no launch running, `host_if_alone` makes this session the router of a bus of its
+    own (on a free loopback port, with a run file so others find it); otherwise that is an
+    error saying nothing is running.
+    """
     env = os.environ if environ is None else environ
     if env.get(discovery.CONFIG_VARIABLE):
         return zenoh.open(zenoh.Config.from_file(env[discovery.CONFIG_VARIABLE]))
     endpoint = discovery.router_endpoint(env)
+    if endpoint is None and host_if_alone:
+        return _host(env)
     if endpoint is None:
         raise NoRouter("no launch is running (no router to connect to); start one with "
                        "`launcher launch …`, or set LAUNCHER_ROUTER=tcp/HOST:PORT")
@@ -61,3 +68,14 @@ def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
     except zenoh.ZError as exc:
         raise NoRouter(f"no router reachable at {endpoint} within {wait:g} s "
                        f"({discovery.TIMEOUT_VARIABLE} sets the wait): {exc}") from None
+
+
+def _host(environ: Mapping[str, str]) -> zenoh.Session:
+    """A router session of this process's own; its run file goes when the process does."""
+    import atexit
+
+    endpoint = discovery.free_endpoint()
+    session = zenoh.open(config("router", [endpoint], []))
+    run_file = discovery.write_run_file(endpoint, environ)
+    atexit.register(run_file.unlink, missing_ok=True)
+    return session

@@ -160,14 +160,13 @@ def run_hz(args: argparse.Namespace) -> int:
     stamps: list[float] = []
     node.create_subscription(_type_of(session, topic, None), topic,
                                             lambda _m: stamps.append(time.monotonic()))
-    try:
-        while True:
-            node.spin(args.window)
-            window = [t for t in stamps if t > time.monotonic() - args.window]
-            rate = (len(window) - 1) / (window[-1] - window[0]) if len(window) > 1 else 0.0
-            print(f"average rate: {rate:.3f}  (window: {len(window)} messages)", flush=True)
-    except KeyboardInterrupt:
-        return 0
+    while not node.interrupted:
+        node.spin(args.window)
+        window = [t for t in stamps if t > time.monotonic() - args.window]
+        rate = (len(window) - 1) / (window[-1] - window[0]) if len(window) > 1 else 0.0
+        print(f"average rate: {rate:.3f}  (window: {len(window)} messages)", flush=True)
+    node.destroy_node()
+    return 0
 
 
 def run_info(args: argparse.Namespace) -> int:

@@ -335,3 +335,28 @@ node.destroy_node()
             "{clock: {sec: 42, nanosec: 500000000}}", "--times", "3", "--rate", "10")
     wait_text(out, "sim time 42.5")
     assert stop(proc) == 130
+
+
+def test_a_node_alone_hosts_its_own_bus(bus):
+    import subprocess
+
+    from tests.conftest import launcher_argv
+    node = subprocess.Popen([PY, "talker.py", "9.0"], cwd=bus.root, env=bus.env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        assert "talking" in node.stdout.readline()
+        echo = bus.run("topic", "echo", "/cmd_vel", "--field", "linear.x", "--once")
+        assert echo.stdout.startswith("9.0"), echo.stderr
+        hz = subprocess.Popen(launcher_argv() + ["topic", "hz", "/cmd_vel", "--window", "1"],
+                              cwd=bus.root, env=bus.env, stdout=subprocess.PIPE, text=True)
+        line = hz.stdout.readline()
+        hz.send_signal(signal.SIGINT)
+        hz.wait(10)
+        rate = float(line.split()[2])
+        assert 5 < rate < 40  # published at 20 Hz
+        csv = bus.run("topic", "echo", "/cmd_vel", "--csv", "--once")
+        assert csv.stdout.strip() == "9.0,0.0,0.0,0.0,0.0,0.0"
+    finally:
+        node.send_signal(signal.SIGINT)
+        node.wait(10)
+    assert not list((bus.root / "run").glob("*.json"))  # its run file went with it
