@@ -58,12 +58,16 @@ class Workspace:
         return subprocess.run(launcher_argv() + list(args), cwd=self.root, env=self.env,
                               capture_output=True, text=True, timeout=timeout, **kwargs)
 
-    def start(self, *args: str) -> subprocess.Popen:
-        """Start `launcher ARGS…` in the background (stdout and stderr to files)."""
-        out = open(self.root / "stdout.txt", "w")  # noqa: SIM115
-        err = open(self.root / "stderr.txt", "w")  # noqa: SIM115
-        return subprocess.Popen(launcher_argv() + list(args), cwd=self.root, env=self.env,
-                                stdout=out, stderr=err, text=True)
+    def start(self, *args: str, output: str = "stdout.txt",
+              env: dict[str, str] | None = None) -> subprocess.Popen:
+        """Start `launcher ARGS…` in the background: stdout to `output`, stderr to
+        stderr.txt (or to `output` too when it is not the default)."""
+        out = open(self.root / output, "w")  # noqa: SIM115
+        err = open(self.root / "stderr.txt", "w") if output == "stdout.txt" \
+            else subprocess.STDOUT  # noqa: SIM115
+        return subprocess.Popen(launcher_argv() + list(args), cwd=self.root,
+                                env={**self.env, **(env or {})}, stdout=out, stderr=err,
+                                text=True)
 
     def output(self) -> str:
         return (self.root / "stdout.txt").read_text()

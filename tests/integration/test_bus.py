@@ -51,14 +51,9 @@ def endpoints(ws) -> list[str]:
 
 
 def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
+    """Start a launch of `body` in the background; its output goes to NAME.out."""
     ws.write(name, body)
-    out = open(ws.root / f"{name}.out", "w")  # noqa: SIM115
-    import subprocess
-
-    from tests.conftest import launcher_argv
-    proc = subprocess.Popen(launcher_argv() + ["launch", name, *extra], cwd=ws.root,
-                            env={**ws.env, **(env or {})}, stdout=out, stderr=subprocess.STDOUT,
-                            text=True)
+    proc = ws.start("launch", name, *extra, output=f"{name}.out", env=env)
     return proc, ws.root / f"{name}.out"
 
 

@@ -155,22 +155,8 @@ def test_event_handler_children_run_on_start_and_exit(ws):
     assert result.stdout.index("started!") < result.stdout.index("[echo-2] after")
 
 
-def test_sigterm_to_the_launcher_stops_everything(ws):
-    ws.write("many.launch.yaml", """
-    launch:
-      - executable: {cmd: sleep 60}
-      - executable: {cmd: "sleep 61 & sleep 62 & wait", shell: true}
-    """)
-    proc = ws.start("launch", "many.launch.yaml")
-    deadline = time.monotonic() + 20
-    while len(ws.processes()) < 5 and time.monotonic() < deadline:  # launcher, 2 sh-ish, sleeps
-        time.sleep(0.05)
-    proc.send_signal(signal.SIGTERM)
-    assert proc.wait(30) == 143
-    assert not ws.processes()
-
-
-def test_sigkill_to_the_launcher_leaves_nothing_behind(ws):
+def start_sleepers(ws):
+    """A launch with a sleep and a shell that leaves two sleeps in its group: all running."""
     ws.write("many.launch.yaml", """
     launch:
       - executable: {cmd: sleep 60}
@@ -181,6 +167,18 @@ def test_sigkill_to_the_launcher_leaves_nothing_behind(ws):
     while sum(p.name() == "sleep" for p in ws.processes()) < 3:
         assert time.monotonic() < deadline
         time.sleep(0.05)
+    return proc
+
+
+def test_sigterm_to_the_launcher_stops_everything(ws):
+    proc = start_sleepers(ws)
+    proc.send_signal(signal.SIGTERM)
+    assert proc.wait(30) == 143
+    assert not ws.processes()
+
+
+def test_sigkill_to_the_launcher_leaves_nothing_behind(ws):
+    proc = start_sleepers(ws)
     proc.kill()
     proc.wait(10)
     deadline = time.monotonic() + 10

@@ -19,6 +19,14 @@ def _index(sub: Substitution, context: LaunchContext):
     return context.packages
 
 
+def _lookup(sub: Substitution, context: LaunchContext, what: str, package: Text_) -> str:
+    """`share` or `prefix` of the package, with errors placed at the substitution."""
+    try:
+        return str(getattr(_index(sub, context), what)(perform_text(context, package)))
+    except LaunchError as exc:
+        raise exc.at(sub.where) from None
+
+
 @substitution("find-pkg-share", "find")
 @dataclass(frozen=True)
 class FindPackageShare(Substitution):
@@ -27,10 +35,7 @@ class FindPackageShare(Substitution):
     package: Text_
 
     def perform(self, context: LaunchContext) -> str:
-        try:
-            return str(_index(self, context).share(perform_text(context, self.package)))
-        except LaunchError as exc:
-            raise exc.at(self.where) from None
+        return _lookup(self, context, "share", self.package)
 
 
 @substitution("find-pkg-prefix")
@@ -41,10 +46,7 @@ class FindPackagePrefix(Substitution):
     package: Text_
 
     def perform(self, context: LaunchContext) -> str:
-        try:
-            return str(_index(self, context).prefix(perform_text(context, self.package)))
-        except LaunchError as exc:
-            raise exc.at(self.where) from None
+        return _lookup(self, context, "prefix", self.package)
 
 
 @substitution("exec-in-pkg")
