@@ -46,7 +46,9 @@ class Recorder:
             self.writer.write(connection, time.time_ns(), payload)
             self.counts[topic] += 1
 
-        self.node.create_subscription(type_name, topic, write, QoS(depth=1000), raw=True)
+        # Transient local: latched topics (/robot_description) are recorded too.
+        self.node.create_subscription(type_name, topic, write,
+                                      QoS(depth=1000, transient_local=True), raw=True)
 
     def run(self, duration: float | None) -> None:
         end = None if duration is None else time.monotonic() + duration

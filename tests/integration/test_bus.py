@@ -355,3 +355,17 @@ def test_a_node_alone_hosts_its_own_bus(bus):
         node.send_signal(signal.SIGINT)
         node.wait(10)
     assert not list((bus.root / "run").glob("*.json"))  # its run file went with it
+
+
+def test_bag_record_all_includes_latched_topics(bus):
+    talker, out = launch(bus, "talk.launch.yaml",
+                         f"launch:\n  - executable: {{cmd: {PY} talker.py 2.0, output: screen}}\n")
+    wait_text(out, "talking")
+    recorded = bus.run("bag", "record", "-a", "-o", "everything", "--duration", "1.5",
+                       timeout=60)
+    assert recorded.returncode == 0, recorded.stderr
+    assert "messages on /cmd_vel" in recorded.stdout
+    assert "recorded 1 messages on /robot_description" in recorded.stdout
+    assert stop(talker) == 130
+    nothing = bus.run("bag", "record", "-o", "x")
+    assert nothing.returncode == 1 and "name the topics to record, or -a" in nothing.stderr
