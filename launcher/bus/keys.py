@@ -40,11 +40,6 @@ def service_key(domain: int, service: str, type_name: str, type_hash: str) -> st
     return f"{domain}/{service.strip('/')}/{dds_type(type_name)}/{type_hash}"
 
 
-def any_type_key(domain: int, topic: str) -> str:
-    """Every type published on `topic` (the last two chunks are type and hash)."""
-    return f"{domain}/{topic.strip('/')}/*/*"
-
-
 def split_topic_key(key: str) -> tuple[str, str, str]:
     """(topic, ROS type, hash) of a topic key."""
     _, rest = key.split("/", 1)

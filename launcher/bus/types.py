@@ -79,10 +79,6 @@ class TypeRegistry:
             self._loaded_distro = True
         return self._available
 
-    def add_definitions(self, fielddefs: dict[str, Any]) -> None:
-        """Types from packages' .msg/.srv files (see `definitions_from_package`)."""
-        self._available.update(fielddefs)
-
     def known(self) -> Iterable[str]:
         return self._definitions().keys()
 

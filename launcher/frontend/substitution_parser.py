@@ -86,13 +86,13 @@ class _Parser:
             if self.text[self.pos] == ")":
                 self.pos += 1
                 return Call(match.group(), tuple(args), start)
-            args.append(self.argument(start))
+            args.append(self.argument())
 
     def skip_spaces(self) -> None:
         while self.pos < len(self.text) and self.text[self.pos] in " \t\n":
             self.pos += 1
 
-    def argument(self, call_start: int) -> tuple[Part, ...]:
+    def argument(self) -> tuple[Part, ...]:
         out: list[Part] = []
         buf: list[str] = []
         text = self.text

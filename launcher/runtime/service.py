@@ -130,10 +130,6 @@ class LaunchService:
         self.shutdown(f"error: {exc.message}")
 
     # --- processes --------------------------------------------------------------------------
-    @property
-    def shutting_down(self) -> bool:
-        return self._shutting_down
-
     def next_label(self, base: str) -> str:
         """`base-N`, N counting every process of this run (as ROS 2 numbers them)."""
         self._label_count += 1
@@ -166,7 +162,7 @@ class LaunchService:
         self.log(level, process.label, f"process started with pid [{process.pid}]")
         self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
 
-    def _on_exited(self, process: ManagedProcess, respawn_pending: bool) -> None:
+    def _on_exited(self, process: ManagedProcess, _respawn_pending: bool) -> None:
         self.emit(events.ProcessExited(process.spec.origin, process.label, process.pid,
                                        process.returncode))
         self._check_idle()
@@ -181,10 +177,6 @@ class LaunchService:
     # --- events and timers ------------------------------------------------------------------
     def register_handler(self, handler: events.EventHandler) -> None:
         self._handlers.append(handler)
-
-    def unregister_handler(self, handler: events.EventHandler) -> None:
-        if handler in self._handlers:
-            self._handlers.remove(handler)
 
     def emit(self, event: events.Event) -> None:
         for handler in list(self._handlers):
@@ -211,11 +203,6 @@ class LaunchService:
         timer = self.loop.call_later(period, fire)
         self._timers[timer] = cancel_on_shutdown
         return timer
-
-    def cancel_timer(self, timer: Timer) -> None:
-        if self._timers.pop(timer, None) is not None:
-            timer.cancel()
-            self._check_idle()
 
     # --- shutting down ----------------------------------------------------------------------
     def shutdown(self, reason: str) -> None:
