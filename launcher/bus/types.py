@@ -71,6 +71,7 @@ class TypeRegistry:
         self._loaded_distro = False
         self._hashes: dict[str, str] = {}
         self.services: dict[str, dict[str, Any]] = {}  # service -> its hashing definitions
+        self._index: Any = None
 
     # --- definitions ------------------------------------------------------------------------
     def _definitions(self) -> dict[str, Any]:
@@ -102,9 +103,10 @@ class TypeRegistry:
         for half in ("_Request", "_Response"):  # a service's halves come with the service
             if parts[1] == "srv" and name.endswith(half):
                 return self._from_package(name.removesuffix(half))
-        from launcher.packages.index import PackageIndex  # only for types not in the distro
-
-        index = PackageIndex.from_environment()
+        index = self._package_index()
+        if parts[0] not in index:  # a package made since the index was built?
+            self._index = None
+            index = self._package_index()
         if parts[0] not in index:
             return False
         found = interfaces.find_definition(name, index.share(parts[0]))
@@ -118,6 +120,14 @@ class TypeRegistry:
         if kind == "srv":
             self.services[name] = interfaces.service_hash_definitions(name)
         return True
+
+    def _package_index(self) -> Any:
+        """The package index, built once and rebuilt when a package is not found in it."""
+        if self._index is None:
+            from launcher.packages.index import PackageIndex  # only for non-distro types
+
+            self._index = PackageIndex.from_environment()
+        return self._index
 
     def service(self, name: str) -> tuple[str, str]:
         """(request type, response type) of a service type, registered for CDR."""
