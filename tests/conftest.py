@@ -69,17 +69,19 @@ class Workspace:
                                 env={**self.env, **(env or {})}, stdout=out, stderr=err,
                                 text=True)
 
-    def output(self) -> str:
-        return (self.root / "stdout.txt").read_text()
+    def output(self, name: str = "stdout.txt") -> str:
+        return (self.root / name).read_text()
 
-    def wait_for_output(self, needle: str, timeout: float = 30) -> str:
+    def wait_for_output(self, needle: str, timeout: float = 30,
+                        name: str = "stdout.txt") -> str:
+        """The output file `name` once it holds `needle` (fails after `timeout` seconds)."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            text = self.output()
+            text = self.output(name)
             if needle in text:
                 return text
             time.sleep(0.02)
-        raise AssertionError(f"{needle!r} not in output:\n{self.output()}")
+        raise AssertionError(f"{needle!r} not in output:\n{self.output(name)}")
 
     def processes(self) -> list[psutil.Process]:
         return tagged_processes(self.tag)

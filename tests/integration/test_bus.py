@@ -9,6 +9,8 @@ import time
 
 import pytest
 
+from tests.conftest import Workspace
+
 PY = sys.executable
 TALKER = """
 import sys
@@ -58,13 +60,8 @@ def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
 
 
 def wait_text(path, needle: str, timeout: float = 30) -> str:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        text = path.read_text()
-        if needle in text:
-            return text
-        time.sleep(0.05)
-    raise AssertionError(f"{needle!r} not in:\n{path.read_text()}")
+    """The launch output at `path` once it holds `needle`."""
+    return Workspace(path.parent, "").wait_for_output(needle, timeout, path.name)
 
 
 def stop(proc) -> int:
