@@ -156,6 +156,8 @@ class TypeRegistry:
         out[name] = available[name]
         for _, (kind, detail) in available[name][1]:
             for candidate in _referenced(kind, detail):
+                if candidate not in available and "/" in candidate:
+                    self._from_package(candidate)  # a package type naming another
                 if candidate in available:
                     self._collect(candidate, available, out)
 

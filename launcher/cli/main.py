@@ -22,6 +22,7 @@ COMMANDS = {
     "service": ("launcher.cli.service_command", "services: list, call"),
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "param": ("launcher.cli.param_command", "parameters of a running node: list, get, set"),
+    "sim": ("launcher.cli.sim_command", "run the MuJoCo world server"),
 }
 
 
@@ -40,6 +41,10 @@ def build_parser(selected: str | None) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["sim"]:  # every flag after it is the sim's own (gz sim's), -h included
+        from launcher.cli.sim_command import run_sim
+
+        return run_sim(argv[1:])
     selected = next((word for word in argv if not word.startswith("-")), None)
     args = build_parser(selected if selected in COMMANDS else None).parse_args(argv)
     debug = getattr(args, "debug", False)

@@ -12,8 +12,10 @@ ALLOWED = {
     "description": {"description", "runtime", "packages", "errors"},
     "frontend": {"frontend", "description", "runtime", "errors", "compat"},
     "cli": {"cli", "frontend", "description", "runtime", "packages", "errors", "compat", "api",
-            "bus"},
+            "bus", "nodes"},
     "bus": {"bus", "errors", "packages"},
+    "sim": {"sim", "bus", "errors", "packages"},
+    "nodes": {"nodes", "sim", "bus", "errors", "packages"},
     "compat": {"compat", "api", "packages", "runtime", "errors"},
 }
 

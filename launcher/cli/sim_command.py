@@ -1,0 +1,36 @@
+"""`launcher sim [FLAGS] [WORLD]`: run the world server here, with the workspace's hooks applied.
+
+The same program as the `sim` executable of the mujoco_sim package (flags as `gz sim`'s; see
+`launcher sim -h`); the hooks set MUJOCO_SIM_RESOURCE_PATH as `source setup.bash` would.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "sim", help="run the MuJoCo world server", add_help=False,
+        description="Run the MuJoCo world server (see `launcher sim -h`).")
+    p.add_argument("arguments", nargs=argparse.REMAINDER)
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    return run_sim(args.arguments)
+
+
+def run_sim(argv: list[str]) -> int:
+    from launcher.cli.workspace import hooked_environment, load_index
+    from launcher.errors import LaunchError
+
+    try:
+        os.environ.update(hooked_environment(load_index(), dict(os.environ)))
+    except LaunchError as exc:
+        print(f"error: {exc}")
+        return exc.exit_code
+    from launcher.nodes.sim import main
+
+    return main(argv)

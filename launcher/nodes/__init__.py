@@ -1,0 +1,1 @@
+"""Built-in executables: thin mains over bus/ and sim/."""

@@ -1,0 +1,178 @@
+"""`create`: spawn an entity into a running sim (ros_gz_sim's create, the classic spawner's flags).
+
+  create [-world W] (-file F | -string XML | -param P | -topic T) [-name N | -entity N]
+         [-allow_renaming [true|false]] [-x X] [-y Y] [-z Z] [-R ROLL] [-P PITCH] [-Y YAW]
+         [-timeout SECONDS]
+The same names work as parameters (`--ros-args -p name:=robot -p topic:=robot_description`).
+`-topic` waits for a latched std_msgs/String (robot_state_publisher's robot_description);
+`-param P` reads this node's own parameter P. Without `-world`, the one sim on the bus is
+used. It waits up to `-timeout` (30 s) for the sim's create service; exit 0 on success, 1 with
+the sim's reason.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from typing import Any
+
+FLAGS = {"-world": "world", "-file": "file", "-string": "string", "-param": "param",
+         "-topic": "topic", "-name": "name", "-entity": "name", "-allow_renaming":
+         "allow_renaming", "-x": "x", "-y": "y", "-z": "z", "-R": "R", "-P": "P", "-Y": "Y",
+         "-timeout": "timeout"}
+NUMBERS = ("x", "y", "z", "R", "P", "Y", "timeout")
+SOURCES = ("file", "string", "param", "topic")
+
+
+class UsageError(Exception):
+    pass
+
+
+def parse(argv: list[str], parameters: dict[str, Any]) -> dict[str, Any]:
+    options: dict[str, Any] = {key: value for key, value in parameters.items()
+                               if key in set(FLAGS.values()) or key == "entity"}
+    if "entity" in options:
+        options.setdefault("name", options.pop("entity"))
+    words = list(argv)
+    while words:
+        word = words.pop(0)
+        if word in ("-h", "--help"):
+            print(__doc__)
+            raise SystemExit(0)
+        key = FLAGS.get(word)
+        if key is None:
+            close = [f for f in FLAGS if f.lstrip("-").lower() == word.lstrip("-").lower()]
+            hint = f"; did you mean {close[0]}?" if close else ""
+            raise UsageError(f"unknown option '{word}'{hint} (options: {', '.join(FLAGS)})")
+        if key == "allow_renaming":
+            if words and words[0].lower() in ("true", "false", "1", "0"):
+                options[key] = words.pop(0).lower() in ("true", "1")
+            else:
+                options[key] = True
+            continue
+        if not words:
+            raise UsageError(f"{word} needs a value")
+        options[key] = words.pop(0)
+    for key in NUMBERS:
+        if key in options:
+            try:
+                options[key] = float(options[key])
+            except (TypeError, ValueError):
+                raise UsageError(f"-{key} must be a number, got '{options[key]}'") from None
+            if not math.isfinite(options[key]):
+                raise UsageError(f"-{key} must be finite, got {options[key]}")
+    given = [key for key in SOURCES if options.get(key) not in (None, "")]
+    if not given:
+        raise UsageError("nothing to spawn: give one of -file, -string, -param or -topic")
+    if len(given) > 1:
+        raise UsageError(f"give one source, not {', '.join('-' + g for g in given)}")
+    options["source"] = given[0]
+    if isinstance(options.get("allow_renaming"), str):
+        options["allow_renaming"] = options["allow_renaming"].lower() in ("true", "1")
+    return options
+
+
+def find_world(node: Any, deadline: float, timeout: float) -> str:
+    """The name of the one world whose create service is on the bus (waits for it)."""
+    from launcher.bus import graph, keys
+
+    while True:
+        worlds = sorted({e.topic.split("/")[2] for e in graph.entities(node.session, 0.5)
+                         if e.kind == keys.SERVICE and e.topic.startswith("/world/")
+                         and e.topic.endswith("/create")})
+        if len(worlds) == 1:
+            return worlds[0]
+        if len(worlds) > 1:
+            raise UsageError(f"several sims are running ({', '.join(worlds)}): choose one with "
+                             "-world")
+        if time.monotonic() > deadline:
+            raise TimeoutError("no sim answered: no /world/<name>/create service appeared "
+                               f"within {timeout:g} s")
+        time.sleep(0.1)
+
+
+def description(node: Any, options: dict[str, Any], deadline: float) -> tuple[str, str]:
+    """(text, file) of what to spawn."""
+    source = options["source"]
+    if source == "file":
+        return "", str(options["file"])
+    if source == "string":
+        return str(options["string"]), ""
+    if source == "param":
+        value = node.parameters.get(options["param"])
+        if not value:
+            raise UsageError(f"-param {options['param']}: this node has no such parameter (set "
+                             f"it with --ros-args -p {options['param']}:=…)")
+        return str(value), ""
+    from launcher.bus.qos import LATCHED
+
+    received: list[str] = []
+    node.create_subscription("std_msgs/msg/String", options["topic"],
+                             lambda message: received.append(message.data), LATCHED)
+    while not received:
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"nothing arrived on '{node.resolve(options['topic'])}' "
+                               "(a latched std_msgs/String, as robot_state_publisher's) "
+                               f"within {options.get('timeout', 30.0):g} s")
+        node.spin_once(0.1)
+    return received[-1], ""
+
+
+def run(argv: list[str]) -> int:
+    from launcher.bus.node import Node
+
+    node = Node("create", argv=argv)
+    try:
+        return spawn(node)
+    except UsageError as exc:
+        print(f"[create] error: {exc}", file=sys.stderr, flush=True)
+        return 2
+    except TimeoutError as exc:
+        print(f"[create] error: {exc}; is the sim running? (-timeout sets the wait)",
+              file=sys.stderr, flush=True)
+        return 1
+    finally:
+        node.destroy_node()
+
+
+def spawn(node: Any) -> int:
+    from launcher.sim.world import pose_from
+
+    options = parse(node.args, node.parameters)
+    timeout = float(options.get("timeout", 30.0))
+    deadline = time.monotonic() + timeout
+    world = options.get("world") or find_world(node, deadline, timeout)
+    text, file = description(node, options, deadline)
+    client = node.create_client("mujoco_sim/srv/Create", f"/world/{world}/create")
+    if not client.wait_for_service(max(0.0, deadline - time.monotonic())):
+        raise TimeoutError(f"the sim's /world/{world}/create service did not answer within "
+                           f"{timeout:g} s")
+    position, quat = pose_from([options.get(k, 0.0) for k in ("x", "y", "z", "R", "P", "Y")])
+    request = node.message("mujoco_sim/srv/Create_Request", name=options.get("name", ""),
+                           allow_renaming=bool(options.get("allow_renaming", False)),
+                           sdf=text, sdf_filename=file)
+    request.pose.position.x, request.pose.position.y, request.pose.position.z = position
+    orientation = request.pose.orientation
+    orientation.w, orientation.x, orientation.y, orientation.z = quat
+    response = client.call(request, timeout=max(10.0, deadline - time.monotonic()))
+    if not response.success:
+        print(f"[create] error: the sim refused: {response.message}", file=sys.stderr,
+              flush=True)
+        return 1
+    node.get_logger().info(f"spawned '{response.name}' into world '{world}'")
+    return 0
+
+
+def main() -> int:
+    from launcher.errors import LaunchError
+
+    try:
+        return run(sys.argv[1:])
+    except LaunchError as exc:
+        print(f"[create] error: {exc}", file=sys.stderr, flush=True)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

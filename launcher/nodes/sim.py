@@ -1,0 +1,104 @@
+"""`sim [-v LEVEL] [-r] [-s] [--iterations N] [-z RATE | --rtf FACTOR] [WORLD]`: the world server.
+
+The flags are `gz sim`'s: `-r` runs at start (otherwise paused until a control request),
+`-s` (server only) is accepted, as there is no GUI, `--iterations N` stops after N steps,
+`-z RATE` paces at RATE steps per second (0: as fast as possible), `--rtf` paces at a
+real-time factor instead, `-v` sets the verbosity (0 quiet … 4 debug; default 2, warnings).
+WORLD is a path, a file in MUJOCO_SIM_RESOURCE_PATH or a built-in world (default: empty.xml);
+`.j2` worlds are rendered with `--world-arg NAME=VALUE`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+VERBOSITY = {0: 60, 1: 40, 2: 30, 3: 20, 4: 10}
+
+
+def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
+    ros: list[str] = []
+    if "--ros-args" in argv:
+        cut = argv.index("--ros-args")
+        argv, ros = argv[:cut], argv[cut:]
+    parser = argparse.ArgumentParser(prog="sim", description=__doc__.split("\n")[0])
+    parser.add_argument("world", nargs="?", default="empty.xml", metavar="WORLD")
+    parser.add_argument("-v", "--verbose", type=int, default=2, choices=range(5),
+                        metavar="LEVEL", help="0 quiet, 1 errors, 2 warnings, 3 info, 4 debug")
+    parser.add_argument("-r", "--run", action="store_true", help="run at start")
+    parser.add_argument("-s", "--server", action="store_true", help="server only (always)")
+    parser.add_argument("--iterations", type=int, default=None, metavar="N")
+    pace = parser.add_mutually_exclusive_group()
+    pace.add_argument("-z", "--rate", type=float, default=None, metavar="RATE",
+                      help="steps per second of wall time (0: unpaced)")
+    pace.add_argument("--rtf", type=float, default=None, metavar="FACTOR",
+                      help="real-time factor (1: real time, 0: unpaced)")
+    parser.add_argument("--world-arg", action="append", default=[], metavar="NAME=VALUE",
+                        help="a value for a .j2 world template (repeatable)")
+    parser.add_argument("--state-rate", type=float, default=50.0, metavar="HZ",
+                        help="rate of pose/info and model_states in sim time")
+    args = parser.parse_args(argv)
+    for name, value in (("--iterations", args.iterations), ("-z", args.rate),
+                        ("--rtf", args.rtf)):
+        if value is not None and value < 0:
+            parser.error(f"{name} must be >= 0, got {value}")
+    return args, ros
+
+
+def world_values(pairs: list[str]) -> dict[str, str]:
+    from launcher.errors import LaunchError
+
+    values = {}
+    for pair in pairs:
+        name, sep, value = pair.partition("=")
+        if not sep or not name:
+            raise LaunchError(f"--world-arg expects NAME=VALUE, got '{pair}'")
+        values[name] = value
+    return values
+
+
+def main(argv: list[str] | None = None) -> int:
+    args, ros = parse(sys.argv[1:] if argv is None else argv)
+    from launcher.errors import LaunchError
+
+    try:
+        return run(args, ros)
+    except LaunchError as exc:
+        print(f"[sim] error: {exc}", file=sys.stderr, flush=True)
+        return 1
+
+
+def run(args: argparse.Namespace, ros: list[str]) -> int:
+    from pathlib import Path
+
+    from launcher.bus.node import Node
+    from launcher.sim import mjcf
+    from launcher.sim.resources import find_world
+    from launcher.sim.server import SimServer, Transport, install_signal_handlers
+    from launcher.sim.world import World
+
+    path = find_world(args.world)
+    source = mjcf.read(path.read_text(encoding="utf-8"), Path(path),
+                       world_values(args.world_arg))
+    spec = mjcf.compile_spec(source)
+    node = Node("sim", argv=ros)
+    node.get_logger().threshold = VERBOSITY[args.verbose]
+    try:
+        world = World(spec, str(path), Transport(node), source.plugins)
+        timestep = world.model.opt.timestep
+        rtf = args.rtf if args.rtf is not None else \
+            (args.rate * timestep if args.rate is not None else 1.0)
+        server = SimServer(world, node, rtf, args.run, args.state_rate)
+        install_signal_handlers(server)
+        node.get_logger().info(
+            f"world '{world.world_name}' from {path}: timestep {timestep} s, "
+            f"{'running' if args.run else 'paused'}, "
+            f"{'unpaced' if rtf == 0 else f'real-time factor {rtf:g}'}")
+        server.run(args.iterations)
+    finally:
+        node.destroy_node()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""The MuJoCo world server (see server.py)."""

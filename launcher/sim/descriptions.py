@@ -1,0 +1,83 @@
+"""Robot and model descriptions (URDF or MJCF, a string or a file) parsed once into templates.
+
+A template is an MjSpec ready to be copied and attached, with its plugin configs. Templates
+are cached by the description's text (files: by path and modification time), so spawning ten
+copies of one robot parses it once.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import mujoco
+
+from launcher.errors import LaunchError
+from launcher.sim import mjcf, urdf
+from launcher.sim.mjcf import PluginConfig
+from launcher.sim.resources import resolve_uri
+
+
+@dataclass
+class Template:
+    spec: mujoco.MjSpec
+    name: str  # the description's own name (robot name= / mujoco model=)
+    label: str
+    plugins: list[PluginConfig] = field(default_factory=list)
+    friction: dict[str, float] = field(default_factory=dict)
+
+
+class Descriptions:
+    def __init__(self, packages: object | None = None,
+                 environ: Mapping[str, str] | None = None) -> None:
+        self._cache: dict[str, Template] = {}
+        self.packages, self.environ = packages, environ
+
+    def from_string(self, text: str, label: str = "<string>") -> Template:
+        key = hashlib.sha1(text.encode()).hexdigest()
+        if key not in self._cache:
+            self._cache[key] = self._parse(text, label, None)
+        return self._cache[key]
+
+    def from_file(self, uri: str) -> Template:
+        path = resolve_uri(uri, None, self.packages, self.environ)
+        if path.is_dir():  # model://name gives the folder's model file already; a plain folder
+            from launcher.sim.resources import model_file
+
+            path = model_file(path)
+        stat = path.stat()
+        key = f"{path}:{stat.st_mtime_ns}:{stat.st_size}"
+        if key not in self._cache:
+            self._cache[key] = self._parse(path.read_text(encoding="utf-8"), str(path), path)
+        return self._cache[key]
+
+    def _parse(self, text: str, label: str, path: Path | None) -> Template:
+        stripped = text.lstrip()
+        if stripped.startswith("<?xml"):
+            stripped = stripped[stripped.find("?>") + 2:].lstrip()
+        while stripped.startswith("<!--"):
+            stripped = stripped[stripped.find("-->") + 3:].lstrip()
+        if not stripped:
+            raise LaunchError(f"{label}: the description is empty")
+        if stripped.startswith("<robot"):
+            prepared = urdf.prepare(text, label, path.parent if path else None, self.packages,
+                                    self.environ)
+            spec = _spec_from(prepared.text, label)
+            return Template(spec, prepared.name, label, prepared.plugins, prepared.friction)
+        if stripped.startswith("<mujoco"):
+            source = mjcf.read(text, path, environ=self.environ)
+            spec = mjcf.compile_spec(source)
+            return Template(spec, spec.modelname or "model", label, source.plugins)
+        raise LaunchError(f"{label}: not a robot description: expected URDF (<robot>) or MJCF "
+                          f"(<mujoco>), found '{stripped[:40]}'")
+
+
+def _spec_from(text: str, label: str) -> Any:
+    try:
+        return mujoco.MjSpec.from_string(text)
+    except ValueError as exc:
+        raise LaunchError(f"{label}: MuJoCo could not read the URDF: "
+                          f"{' '.join(str(exc).split())}") from None

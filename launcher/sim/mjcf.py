@@ -1,0 +1,137 @@
+"""Reading MJCF: jinja2 templates, launcher plugin elements, URIs, and MuJoCo's errors.
+
+A file ending `.j2` is rendered first (undefined variables are errors). Direct children
+`<plugin filename="…" name="…">…</plugin>` of `<mujoco>` are launcher plugins (Gazebo's shape),
+which MuJoCo would reject: they are taken out and blanked with the same number of lines, so
+MuJoCo's line numbers still point into the file. `file="model://…"`/`package://` attributes
+are rewritten to absolute paths.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+from xml.parsers import expat
+
+import mujoco
+
+from launcher.errors import LaunchError
+from launcher.sim.resources import resolve_uri
+
+_URI = re.compile(r'(\bfile\s*=\s*")((?:model|package|file)://[^"]*)(")')
+
+
+@dataclass
+class PluginConfig:
+    filename: str
+    name: str
+    element: ET.Element
+    where: str  # file:line, for messages
+
+
+@dataclass
+class Source:
+    text: str
+    path: Path | None
+    plugins: list[PluginConfig] = field(default_factory=list)
+
+    @property
+    def label(self) -> str:
+        return str(self.path) if self.path else "<string>"
+
+
+def render_template(text: str, path: Path, values: Mapping[str, str]) -> str:
+    import jinja2
+
+    environment = jinja2.Environment(undefined=jinja2.StrictUndefined, keep_trailing_newline=True,
+                                     loader=jinja2.FileSystemLoader(str(path.parent)))
+    try:
+        return environment.from_string(text).render(**values)
+    except jinja2.UndefinedError as exc:
+        given = ", ".join(sorted(values)) or "none"
+        raise LaunchError(f"{path}: template error: {exc.message}; pass it with --world-arg "
+                          f"NAME=VALUE (given: {given})") from None
+    except jinja2.TemplateSyntaxError as exc:
+        raise LaunchError(f"{path}:{exc.lineno}: template syntax error: {exc.message}") from None
+
+
+def read(text: str, path: Path | None, values: Mapping[str, str] | None = None,
+         environ: Mapping[str, str] | None = None) -> Source:
+    if path is not None and path.name.endswith(".j2"):
+        text = render_template(text, path, values or {})
+    source = Source(text, path)
+    _take_plugins(source)
+    base = path.parent if path else None
+    source.text = _URI.sub(lambda m: m.group(1) + str(resolve_uri(m.group(2), base,
+                                                                   environ=environ))
+                           + m.group(3), source.text)
+    return source
+
+
+def _take_plugins(source: Source) -> None:
+    """Remove top-level <plugin> elements, keeping every other line where it was."""
+    spans: list[tuple[int, int, int]] = []  # (start byte, line, depth-1 start)
+    parser = expat.ParserCreate()
+    depth = 0
+    starts: list[tuple[int, int]] = []
+    data = source.text.encode()
+
+    def start(tag: str, attrs: dict[str, str]) -> None:
+        nonlocal depth
+        depth += 1
+        if depth == 2 and tag == "plugin":
+            starts.append((parser.CurrentByteIndex, parser.CurrentLineNumber))
+
+    def end(tag: str) -> None:
+        nonlocal depth
+        if depth == 2 and tag == "plugin":
+            begin, line = starts.pop()
+            stop = parser.CurrentByteIndex
+            # the end tag's own length: find '>' from here (self-closing ends at the index)
+            stop = data.index(b">", stop) + 1
+            spans.append((begin, stop, line))
+        depth -= 1
+
+    parser.StartElementHandler, parser.EndElementHandler = start, end
+    try:
+        parser.Parse(data, True)
+    except expat.ExpatError as exc:
+        raise LaunchError(f"{source.label}:{exc.lineno}:{exc.offset + 1}: not valid XML: "
+                          f"{expat.ErrorString(exc.code)}") from None
+    for begin, stop, line in reversed(spans):
+        piece = data[begin:stop].decode()
+        element = ET.fromstring(piece)
+        filename = element.get("filename") or element.get("name") or ""
+        source.plugins.insert(0, PluginConfig(filename, element.get("name", filename), element,
+                                              f"{source.label}:{line}"))
+        data = data[:begin] + b"\n" * piece.count("\n") + data[stop:]
+    source.text = data.decode()
+
+
+def compile_spec(source: Source) -> mujoco.MjSpec:
+    """Parse MJCF into a spec; MuJoCo's message keeps its line, with the file named."""
+    try:
+        spec = mujoco.MjSpec.from_string(source.text)
+    except ValueError as exc:
+        raise LaunchError(f"{source.label}: MuJoCo could not read it: {_clean(exc)}") from None
+    if source.path is not None:
+        spec.modelfiledir = str(source.path.parent)
+    if not re.search(r"\bintegrator\s*=", source.text):
+        # Stable with the velocity actuators that wheels and joint servos use; Euler is not.
+        spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    return spec
+
+
+def check_compiles(spec: mujoco.MjSpec, label: str) -> Any:
+    try:
+        return spec.compile()
+    except ValueError as exc:
+        raise LaunchError(f"{label}: MuJoCo could not compile it: {_clean(exc)}") from None
+
+
+def _clean(exc: Exception) -> str:
+    return " ".join(str(exc).split())

@@ -1,0 +1,208 @@
+"""Differential drive: cmd_vel → wheel velocity actuators; odometry from the wheel joints.
+
+Parameters are Gazebo's (gz-sim-diff-drive-system): `left_joint`, `right_joint` (repeatable),
+`wheel_separation` (1.0), `wheel_radius` (0.2), `odom_publish_frequency` (50 Hz), `topic`
+(`cmd_vel`), `odom_topic` (`odometry`), `tf_topic` (`tf`), `frame_id` (`<name>/odom`),
+`child_frame_id` (`<name>/<root link>`), `max_linear_velocity`, `min_linear_velocity`,
+`max_angular_velocity`, `min_angular_velocity`, `max_linear_acceleration`,
+`min_linear_acceleration`, `max_angular_acceleration`, `min_angular_acceleration`. Relative
+topics live under `/model/<name>/`. launcher's own: `cmd_vel_timeout` (0.5 s of sim time
+without a command stops the wheels; 0 disables it), `wheel_response_time` (0.05 s: the wheel
+servo's gain is set from the robot's mass so a speed change settles in about this time),
+`wheel_kv` (a fixed velocity gain in N·m·s/rad instead)
+and `max_wheel_torque`
+(none; a limit on light wheels can make the servo overshoot).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import mujoco
+
+from launcher.sim.plugins import Plugin, PluginError
+
+CONTROL_PERIOD = 0.01  # s of sim time between acceleration-limited control updates
+
+
+class DiffDrive(Plugin):
+    def prepare(self, spec: Any) -> None:
+        self.left = self.texts("left_joint")
+        self.right = self.texts("right_joint")
+        if not self.left or not self.right:
+            raise PluginError(f"{self.config.where}: plugin {self.label}: needs <left_joint> and "
+                              "<right_joint>")
+        joints = [j.name for j in spec.joints]
+        for joint in self.left + self.right:
+            if joint not in joints:
+                raise PluginError(f"{self.config.where}: plugin {self.label}: joint '{joint}' is "
+                                  f"not in the model (joints: {', '.join(joints)})")
+        self.separation = self.number("wheel_separation", 1.0, 1e-6)
+        self.radius = self.number("wheel_radius", 0.2, 1e-6)
+        self.frequency = self.number("odom_publish_frequency", 50.0, 0.0)
+        self.timeout = self.number("cmd_vel_timeout", 0.5, 0.0)
+        self.kv = self.number("wheel_kv", 0.0, 0.0)
+        self.response = self.number("wheel_response_time", 0.05, 1e-4)
+        torque = self.number("max_wheel_torque", math.inf, 0.0)
+        self.limits = {key: self.number(key, math.inf if key.startswith("max") else -math.inf)
+                       for key in ("max_linear_velocity", "min_linear_velocity",
+                                   "max_angular_velocity", "min_angular_velocity",
+                                   "max_linear_acceleration", "min_linear_acceleration",
+                                   "max_angular_acceleration", "min_angular_acceleration")}
+        for joint in self.left + self.right:
+            actuator = spec.add_actuator(name=f"diff_drive_{joint}", target=joint,
+                                         trntype=mujoco.mjtTrn.mjTRN_JOINT)
+            actuator.set_to_velocity(kv=self.kv or 1.0)  # 0: set from the mass in bind
+            if math.isfinite(torque):
+                actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+                actuator.forcerange = [-torque, torque]
+        self.root = spec.worldbody.first_body().name
+        self.reset()
+
+    def load(self) -> None:
+        name = self.entity.name
+        self.frame_id = self.text("frame_id") or f"{name}/odom"
+        self.child_frame_id = self.text("child_frame_id") or f"{name}/{self.root}"
+        transport = self.sim.transport
+        self.odom_pub = transport.publisher("mujoco_sim/msg/Odometry",
+                                            self.topic(self.text("odom_topic"), "odometry"))
+        self.tf_pub = transport.publisher("mujoco_sim/msg/PoseV",
+                                          self.topic(self.text("tf_topic"), "tf"))
+        self.cmd_sub = transport.subscribe("mujoco_sim/msg/Twist",
+                                           self.topic(self.text("topic"), "cmd_vel"),
+                                           self.on_cmd_vel)
+
+    def bind(self, model: Any, data: Any) -> None:
+        prefix = f"{self.entity.name}/"
+        self.left_q = [int(model.jnt_qposadr[model.joint(prefix + j).id]) for j in self.left]
+        self.right_q = [int(model.jnt_qposadr[model.joint(prefix + j).id]) for j in self.right]
+        self.left_a = [model.actuator(f"{prefix}diff_drive_{j}").id for j in self.left]
+        self.right_a = [model.actuator(f"{prefix}diff_drive_{j}").id for j in self.right]
+        if not self.kv:  # each wheel carries its share of the robot's mass
+            mass = float(model.body_subtreemass[model.body(self.entity.root).id])
+            wheels = len(self.left_a) + len(self.right_a)
+            gain = mass / wheels * self.radius ** 2 / self.response
+            for index in self.left_a + self.right_a:
+                model.actuator_gainprm[index, 0] = gain
+                model.actuator_biasprm[index, 2] = -gain
+        self.data = data
+        self._apply()
+
+    def reset(self) -> None:
+        self.x = self.y = self.theta = 0.0
+        self.v = self.w = 0.0  # current (limited) command
+        self.target = (0.0, 0.0)
+        self.last_command = -math.inf
+        self.next_odom = self.next_update = 0.0
+        self.last_odom_time: float | None = None
+        self.previous: tuple[float, float] | None = None
+        self._warned_nan = False
+
+    # --- commands --------------------------------------------------------------------------
+    def on_cmd_vel(self, message: Any) -> None:
+        v, w = message.linear.x, message.angular.z
+        if not (math.isfinite(v) and math.isfinite(w)):
+            if not self._warned_nan:
+                self._warned_nan = True
+                self.sim.transport.logger.warning(
+                    f"entity '{self.entity.name}': ignoring cmd_vel with a NaN or infinite "
+                    f"value (linear.x={v}, angular.z={w}); warned once")
+            return
+        lim = self.limits
+        self.target = (min(max(v, lim["min_linear_velocity"]), lim["max_linear_velocity"]),
+                       min(max(w, lim["min_angular_velocity"]), lim["max_angular_velocity"]))
+        self.last_command = self.data.time
+        self._control(self.data.time)
+        self.next_update = min(self.next_update, self.data.time)
+
+    def _control(self, now: float) -> None:
+        """Move the current command toward the target within the acceleration limits."""
+        if self.timeout > 0 and now - self.last_command > self.timeout:
+            self.target = (0.0, 0.0)
+        dt = max(now - getattr(self, "_control_time", now), 0.0)
+        self._control_time = now
+        lim = self.limits
+        self.v = _approach(self.v, self.target[0], dt, lim["min_linear_acceleration"],
+                           lim["max_linear_acceleration"])
+        self.w = _approach(self.w, self.target[1], dt, lim["min_angular_acceleration"],
+                           lim["max_angular_acceleration"])
+        self._apply()
+
+    def _apply(self) -> None:
+        half = self.w * self.separation / 2
+        left, right = (self.v - half) / self.radius, (self.v + half) / self.radius
+        ctrl = self.data.ctrl
+        for index in self.left_a:
+            ctrl[index] = left
+        for index in self.right_a:
+            ctrl[index] = right
+
+    # --- stepping --------------------------------------------------------------------------
+    def post_step(self, model: Any, data: Any) -> None:
+        now = data.time
+        self._control(now)
+        self._integrate(data)
+        if self.frequency > 0 and now + 1e-9 >= self.next_odom:
+            self.next_odom = now + 1.0 / self.frequency
+            self._publish(now)
+        following = [self.next_odom if self.frequency > 0 else math.inf]
+        if (self.v, self.w) != self.target:
+            following.append(now + CONTROL_PERIOD)
+        if self.timeout > 0 and self.target != (0.0, 0.0):
+            following.append(self.last_command + self.timeout)
+        self.next_update = min(following)
+
+    def _integrate(self, data: Any) -> None:
+        qpos = data.qpos
+        left = sum(qpos[i] for i in self.left_q) / len(self.left_q)
+        right = sum(qpos[i] for i in self.right_q) / len(self.right_q)
+        if self.previous is None:
+            self.previous = (left, right)
+            self.last_odom_time = data.time
+            return
+        d_left = (left - self.previous[0]) * self.radius
+        d_right = (right - self.previous[1]) * self.radius
+        self.previous = (left, right)
+        distance, turn = (d_left + d_right) / 2, (d_right - d_left) / self.separation
+        heading = self.theta + turn / 2
+        self.x += distance * math.cos(heading)
+        self.y += distance * math.sin(heading)
+        self.theta = math.atan2(math.sin(self.theta + turn), math.cos(self.theta + turn))
+        dt = data.time - (self.last_odom_time or data.time)
+        self.last_odom_time = data.time
+        if dt > 0:
+            self.linear, self.angular = distance / dt, turn / dt
+
+    def _publish(self, now: float) -> None:
+        transport = self.sim.transport
+        header = transport.header(now, self.frame_id)
+        pose = transport.pose(self.x, self.y, 0.0, _yaw_quat(self.theta))
+        odom = transport.message(
+            "mujoco_sim/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
+            pose=pose, twist=transport.message(
+                "geometry_msgs/msg/Twist",
+                linear=transport.vector(getattr(self, "linear", 0.0), 0.0, 0.0),
+                angular=transport.vector(0.0, 0.0, getattr(self, "angular", 0.0))))
+        self.odom_pub.publish(odom)
+        self.tf_pub.publish(transport.message(
+            "mujoco_sim/msg/PoseV", header=header, name=[self.child_frame_id],
+            parent=[self.frame_id], pose=[pose]))
+
+    def close(self) -> None:
+        for item in (self.odom_pub, self.tf_pub, self.cmd_sub):
+            item.destroy()
+
+
+def _approach(current: float, target: float, dt: float, low: float, high: float) -> float:
+    if math.isinf(low) and math.isinf(high):
+        return target
+    if dt <= 0:
+        return current
+    change = min(max(target - current, low * dt), high * dt)
+    return current + change
+
+
+def _yaw_quat(theta: float) -> tuple[float, float, float, float]:
+    """(x, y, z, w), ROS order."""
+    return 0.0, 0.0, math.sin(theta / 2), math.cos(theta / 2)

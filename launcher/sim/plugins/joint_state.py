@@ -1,0 +1,57 @@
+"""Joint state publisher: positions, velocities and efforts of a model's joints.
+
+Gazebo's gz-sim-joint-state-publisher-system parameters: `joint_name` (repeatable; default all
+hinge and slide joints), `topic` (default `/world/<world>/model/<name>/joint_state`), and
+`update_rate` (Hz of sim time, default 50). Names are published without the entity prefix,
+as they are in the URDF.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import mujoco
+
+from launcher.sim.plugins import Plugin, PluginError
+
+MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
+
+
+class JointStatePublisher(Plugin):
+    def prepare(self, spec: Any) -> None:
+        available = [j.name for j in spec.joints if j.type in MOVING]
+        self.joints = self.texts("joint_name") or available
+        for joint in self.joints:
+            if joint not in available:
+                raise PluginError(f"{self.config.where}: plugin {self.label}: joint '{joint}' is "
+                                  f"not a moving joint of the model (joints: "
+                                  f"{', '.join(available) or 'none'})")
+        self.rate = self.number("update_rate", 50.0, 0.0)
+
+    def load(self) -> None:
+        default = f"/world/{self.sim.world_name}/model/{self.entity.name}/joint_state"
+        self.publisher = self.sim.transport.publisher("mujoco_sim/msg/Model",
+                                                      self.topic(self.text("topic"), default))
+        self.reset()
+
+    def bind(self, model: Any, data: Any) -> None:
+        ids = [model.joint(f"{self.entity.name}/{j}").id for j in self.joints]
+        self.qpos = [int(model.jnt_qposadr[i]) for i in ids]
+        self.dofs = [int(model.jnt_dofadr[i]) for i in ids]
+
+    def reset(self) -> None:
+        self.next_update = 0.0
+
+    def post_step(self, model: Any, data: Any) -> None:
+        now = data.time
+        if now + 1e-9 < self.next_update:
+            return
+        self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
+        transport = self.sim.transport
+        self.publisher.publish(transport.message(
+            "mujoco_sim/msg/Model", header=transport.header(now, ""), name=self.entity.name,
+            joint_name=self.joints, position=data.qpos[self.qpos],
+            velocity=data.qvel[self.dofs], effort=data.qfrc_actuator[self.dofs]))
+
+    def close(self) -> None:
+        self.publisher.destroy()

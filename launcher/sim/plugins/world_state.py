@@ -1,0 +1,51 @@
+"""The world's state topics: every entity's pose and velocity, at `update_rate` Hz of sim time.
+
+`/world/<w>/pose/info` (Pose_V: each entity's root pose in the world frame, Gazebo's name)
+and `/world/<w>/model_states` (ModelStates: name, pose, twist, as ROS 1's
+/gazebo/model_states). The sim loads it into every world.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launcher.sim.plugins import Plugin
+
+
+class WorldState(Plugin):
+    def load(self) -> None:
+        self.rate = self.number("update_rate", 50.0, 0.0)
+        transport, world = self.sim.transport, self.sim.world_name
+        self.poses = transport.publisher("mujoco_sim/msg/PoseV", f"/world/{world}/pose/info")
+        self.states = transport.publisher("mujoco_sim/msg/ModelStates",
+                                          f"/world/{world}/model_states")
+        self.reset()
+
+    def reset(self) -> None:
+        self.next_update = 0.0
+
+    def post_step(self, model: Any, data: Any) -> None:
+        now = data.time
+        if now + 1e-9 < self.next_update or self.rate <= 0:
+            return
+        self.next_update = now + 1.0 / self.rate
+        names, positions, quats = self.sim.poses()
+        transport = self.sim.transport
+        poses = [transport.pose(p[0], p[1], p[2], (q[1], q[2], q[3], q[0]))
+                 for p, q in zip(positions, quats, strict=True)]
+        header = transport.header(now, "world")
+        self.poses.publish(transport.message("mujoco_sim/msg/PoseV", header=header, name=names,
+                                             parent=["world"] * len(names), pose=poses))
+        twists = []
+        for name in names:
+            entity = self.sim.entities[name]
+            velocity = data.qvel[entity.dof:entity.dof + 6] if entity.dof >= 0 else [0.0] * 6
+            twists.append(transport.message(
+                "geometry_msgs/msg/Twist", linear=transport.vector(*velocity[:3]),
+                angular=transport.vector(*velocity[3:6])))
+        self.states.publish(transport.message("mujoco_sim/msg/ModelStates", header=header,
+                                              name=names, pose=poses, twist=twists))
+
+    def close(self) -> None:
+        self.poses.destroy()
+        self.states.destroy()

@@ -1,0 +1,210 @@
+"""The world server: steps the world, paced, and serves it on the bus.
+
+One thread does everything: bus callbacks (services, cmd_vel) run between batches of steps,
+so the world is never touched from two threads. While paused or ahead of schedule the loop
+waits on the node's queue, so services and spawning stay responsive.
+
+Topics (sim-native types from the mujoco_sim package, Gazebo's names):
+  /clock and /world/<w>/clock                Clock, after every batch of steps
+  /world/<w>/pose/info, /world/<w>/model_states   every entity (world_state plugin)
+  /model/<m>/odometry, /model/<m>/tf, /model/<m>/cmd_vel   diff drive plugins
+  /world/<w>/model/<m>/joint_state           joint state plugins
+Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/set_pose.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import time
+from collections.abc import Sequence
+from typing import Any
+
+from launcher.bus.node import Node
+from launcher.bus.qos import QoS
+from launcher.bus.types import registry
+from launcher.errors import LaunchError
+from launcher.sim.pacing import Pacer
+from launcher.sim.plugins import config_from
+from launcher.sim.world import World
+
+MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
+
+
+class Transport:
+    """What the world and its plugins use of the bus, with fast message construction."""
+
+    def __init__(self, node: Node) -> None:
+        self.node = node
+        self.logger = node.get_logger()
+        self._classes: dict[str, type] = {}
+
+    def cls(self, type_name: str) -> type:
+        found = self._classes.get(type_name)
+        if found is None:
+            found = self._classes[type_name] = registry().message_class(type_name)
+        return found
+
+    def message(self, type_name: str, **fields: Any) -> Any:
+        return self.cls(type_name)(**fields)
+
+    def publisher(self, type_name: str, topic: str, qos: QoS | int = 10) -> Any:
+        return self.node.create_publisher(type_name, topic, qos)
+
+    def subscribe(self, type_name: str, topic: str, callback: Any) -> Any:
+        return self.node.create_subscription(type_name, topic, callback)
+
+    def time(self, seconds: float) -> Any:
+        sec = math.floor(seconds)
+        return self.cls("builtin_interfaces/msg/Time")(
+            sec=int(sec), nanosec=min(int(round((seconds - sec) * 1e9)), 999_999_999))
+
+    def header(self, seconds: float, frame_id: str) -> Any:
+        return self.cls("std_msgs/msg/Header")(stamp=self.time(seconds), frame_id=frame_id)
+
+    def vector(self, x: float, y: float, z: float) -> Any:
+        return self.cls("geometry_msgs/msg/Vector3")(x=float(x), y=float(y), z=float(z))
+
+    def pose(self, x: float, y: float, z: float, quat: Sequence[float]) -> Any:
+        """`quat` in ROS order (x, y, z, w)."""
+        point = self.cls("geometry_msgs/msg/Point")(x=float(x), y=float(y), z=float(z))
+        q = self.cls("geometry_msgs/msg/Quaternion")(x=float(quat[0]), y=float(quat[1]),
+                                                     z=float(quat[2]), w=float(quat[3]))
+        return self.cls("geometry_msgs/msg/Pose")(position=point, orientation=q)
+
+
+class SimServer:
+    def __init__(self, world: World, node: Node, rtf: float, running: bool,
+                 state_rate: float = 50.0) -> None:
+        self.world, self.node, self.transport = world, node, world.transport
+        self.log = node.get_logger()
+        self.paused = not running
+        self.stopped = False
+        self.pacer = Pacer(world.model.opt.timestep, rtf)
+        name = world.world_name
+        self._clocks = [node.create_publisher("mujoco_sim/msg/Clock", "/clock"),
+                        node.create_publisher("mujoco_sim/msg/Clock", f"/world/{name}/clock")]
+        node.create_service("mujoco_sim/srv/Control", f"/world/{name}/control", self.on_control)
+        node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create", self.on_create)
+        node.create_service("mujoco_sim/srv/Remove", f"/world/{name}/remove", self.on_remove)
+        node.create_service("mujoco_sim/srv/SetPose", f"/world/{name}/set_pose", self.on_set_pose)
+        world._plugin_configs.insert(0, config_from(
+            f'<plugin filename="world_state" name="WorldState">'
+            f"<update_rate>{state_rate}</update_rate></plugin>", "the sim"))
+        world.load_world_plugins()
+        self._started = time.monotonic()
+
+    # --- the loop --------------------------------------------------------------------------
+    def run(self, iterations: int | None = None) -> None:
+        world, pacer, node = self.world, self.pacer, self.node
+        self.publish_clock()
+        while not self.stopped:
+            if iterations is not None and world.iterations >= iterations:
+                break
+            if self.paused:
+                node.spin_once(0.05)
+                continue
+            due = pacer.due()
+            if due == 0:
+                node.spin_once(pacer.wait_time())
+                continue
+            while node.spin_once(0):  # callbacks first: commands apply to this batch
+                pass
+            if self.paused or self.stopped:
+                continue
+            batch = min(due, MAX_BATCH)
+            if iterations is not None:
+                batch = min(batch, iterations - world.iterations)
+            batch = world.steps_until_update(batch)
+            world.step(batch)
+            pacer.stepped(batch)
+            self.publish_clock()
+
+    def publish_clock(self) -> None:
+        transport = self.transport
+        message = transport.message(
+            "mujoco_sim/msg/Clock", sim=transport.time(self.world.data.time),
+            real=transport.time(time.monotonic() - self._started), paused=self.paused,
+            iterations=self.world.iterations)
+        payload = registry().serialize(message, "mujoco_sim/msg/Clock")
+        for publisher in self._clocks:
+            publisher.publish_raw(payload)
+
+    def stop(self, *_: Any) -> None:
+        self.stopped = True
+
+    # --- services --------------------------------------------------------------------------
+    def on_control(self, request: Any, response: Any) -> Any:
+        world = self.world
+        if request.reset_all or request.reset_time_only or request.reset_model_only:
+            world.reset(time=request.reset_all or request.reset_time_only,
+                        poses=request.reset_all or request.reset_model_only)
+        was_paused, self.paused = self.paused, request.pause
+        steps = request.multi_step or (1 if request.step else 0)
+        if steps and self.paused:
+            while steps > 0:
+                batch = world.steps_until_update(min(steps, MAX_BATCH))
+                world.step(batch)
+                steps -= batch
+        if (was_paused and not self.paused) or request.reset_all or request.reset_time_only:
+            self.pacer.restart()
+        self.publish_clock()
+        response.success = True
+        response.message = "paused" if self.paused else "running"
+        return response
+
+    def on_create(self, request: Any, response: Any) -> Any:
+        try:
+            descriptions = self.world.descriptions
+            if request.sdf.strip():
+                template = descriptions.from_string(request.sdf, f"entity '{request.name}'")
+            elif request.sdf_filename.strip():
+                template = descriptions.from_file(request.sdf_filename.strip())
+            else:
+                raise LaunchError("nothing to spawn: give the description (sdf) or a file "
+                                  "(sdf_filename)")
+            pose = request.pose
+            quat = [pose.orientation.w, pose.orientation.x, pose.orientation.y,
+                    pose.orientation.z]
+            if all(q == 0 for q in quat):
+                quat = [1.0, 0.0, 0.0, 0.0]
+            entity = self.world.spawn(template, request.name,
+                                      [pose.position.x, pose.position.y, pose.position.z], quat,
+                                      request.allow_renaming)
+        except LaunchError as exc:
+            self.log.warning(f"create failed: {exc}")
+            response.success, response.message = False, str(exc)
+            return response
+        self.log.info(f"spawned '{entity.name}' from {entity.label}")
+        response.success, response.name = True, entity.name
+        response.message = f"spawned '{entity.name}'"
+        return response
+
+    def on_remove(self, request: Any, response: Any) -> Any:
+        try:
+            self.world.remove(request.name)
+        except LaunchError as exc:
+            response.success, response.message = False, str(exc)
+            return response
+        self.log.info(f"removed '{request.name}'")
+        response.success, response.message = True, f"removed '{request.name}'"
+        return response
+
+    def on_set_pose(self, request: Any, response: Any) -> Any:
+        pose = request.pose
+        quat = [pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z]
+        if all(q == 0 for q in quat):
+            quat = [1.0, 0.0, 0.0, 0.0]
+        try:
+            self.world.set_pose(request.name, [pose.position.x, pose.position.y,
+                                               pose.position.z], quat)
+        except LaunchError as exc:
+            response.success, response.message = False, str(exc)
+            return response
+        response.success, response.message = True, f"moved '{request.name}'"
+        return response
+
+
+def install_signal_handlers(server: SimServer) -> None:
+    signal.signal(signal.SIGTERM, server.stop)
+    signal.signal(signal.SIGINT, server.stop)

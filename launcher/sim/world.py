@@ -1,0 +1,298 @@
+"""The world: one MjSpec, its model and data, the entities spawned into it, and its plugins.
+
+Spawning copies a description's template, gives its root body a free joint, lets its plugins
+add actuators, attaches it at a frame with the prefix `<name>/`, and recompiles keeping the
+state (qpos, qvel, ctrl, time) of everything already there. A spawn that fails anywhere
+leaves the world as it was. Recompiling makes new model and data objects: every plugin is
+re-bound after it.
+
+The world talks to the bus only through `transport` (publisher / subscribe / message /
+logger), so it can be stepped without one.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import mujoco
+
+from launcher.errors import LaunchError, did_you_mean
+from launcher.sim.descriptions import Descriptions, Template
+from launcher.sim.mjcf import PluginConfig
+from launcher.sim.plugins import Plugin, PluginError, find_class
+
+_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+
+
+class SpawnError(LaunchError):
+    pass
+
+
+@dataclass
+class Entity:
+    name: str
+    frame: Any  # the MjsFrame it is attached at
+    root: str  # its root body, prefixed
+    label: str  # where its description came from
+    plugins: list[Plugin] = field(default_factory=list)
+    body: int = -1  # bound after each recompile
+    qpos: int = -1  # address of its free joint's qpos, -1 if none
+    dof: int = -1
+
+
+def pose_from(values: Sequence[float]) -> tuple[list[float], list[float]]:
+    """(x, y, z, roll, pitch, yaw) → position and MuJoCo quaternion (w, x, y, z)."""
+    x, y, z, roll, pitch, yaw = values
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    quat = [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+            cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy]
+    return [x, y, z], quat
+
+
+def check_pose(position: Iterable[float], quat: Iterable[float]) -> None:
+    values = [*position, *quat]
+    if not all(math.isfinite(v) for v in values):
+        raise SpawnError(f"the pose must be finite, got {values}")
+    if sum(q * q for q in quat) < 1e-12:
+        raise SpawnError("the pose's orientation quaternion is zero")
+
+
+class World:
+    def __init__(self, spec: mujoco.MjSpec, label: str, transport: Any,
+                 plugins: Sequence[PluginConfig] = (),
+                 descriptions: Descriptions | None = None) -> None:
+        self.spec, self.label, self.transport = spec, label, transport
+        self.world_name = spec.modelname or "default"
+        self.descriptions = descriptions or Descriptions()
+        self.model = _compile(spec, label)
+        self.data = mujoco.MjData(self.model)
+        mujoco.mj_forward(self.model, self.data)
+        self.entities: dict[str, Entity] = {}
+        self.iterations = 0
+        self.plugins: list[Plugin] = []  # world plugins
+        self._bad_qacc = 0
+        self._plugin_configs = list(plugins)
+
+    # --- plugins ---------------------------------------------------------------------------
+    def load_world_plugins(self) -> None:
+        """Load the world's plugins; one that fails is logged and left out."""
+        for config in self._plugin_configs:
+            plugin = self._make_plugin(config, None)
+            if plugin is None:
+                continue
+            try:
+                plugin.bind(self.model, self.data)
+                plugin.load()
+            except Exception as exc:
+                self._plugin_failed(plugin, "load", exc)
+                continue
+            self.plugins.append(plugin)
+
+    def _make_plugin(self, config: PluginConfig, entity: Entity | None) -> Plugin | None:
+        try:
+            cls = find_class(config)
+            return cls(self, entity, config)
+        except PluginError as exc:
+            self.transport.logger.error(str(exc))
+        except Exception as exc:
+            self.transport.logger.error(f"{config.where}: plugin {config.name or config.filename}"
+                                        f" failed to start: {type(exc).__name__}: {exc}")
+        return None
+
+    def _plugin_failed(self, plugin: Plugin, hook: str, exc: BaseException) -> None:
+        owner = f" of entity '{plugin.entity.name}'" if plugin.entity is not None else ""
+        self.transport.logger.error(
+            f"plugin {plugin.label}{owner} raised in {hook}: {type(exc).__name__}: {exc}; "
+            "the sim goes on without it")
+        for group in (self.plugins, *(e.plugins for e in self.entities.values())):
+            if plugin in group:
+                group.remove(plugin)
+        with contextlib.suppress(Exception):  # already failing: its close may fail too
+            plugin.close()
+
+    def all_plugins(self) -> list[Plugin]:
+        found = list(self.plugins)
+        for entity in self.entities.values():
+            found += entity.plugins
+        return found
+
+    # --- stepping --------------------------------------------------------------------------
+    def steps_until_update(self, limit: int) -> int:
+        """How many steps may run before a plugin needs its post_step (at least 1)."""
+        timestep = self.model.opt.timestep
+        steps = limit
+        for plugin in self.all_plugins():
+            due = plugin.next_update - self.data.time
+            steps = min(steps, max(1, int(math.ceil(due / timestep - 1e-9))))
+        return max(1, steps)
+
+    def step(self, count: int = 1) -> None:
+        model, data = self.model, self.data
+        for plugin in self.all_plugins():
+            try:
+                plugin.pre_step(model, data)
+            except Exception as exc:
+                self._plugin_failed(plugin, "pre_step", exc)
+        mujoco.mj_step(model, data, nstep=count)
+        self.iterations += count
+        for plugin in self.all_plugins():
+            try:
+                plugin.post_step(model, data)
+            except Exception as exc:
+                self._plugin_failed(plugin, "post_step", exc)
+        bad = data.warning[mujoco.mjtWarning.mjWARN_BADQACC]
+        if bad.number != self._bad_qacc:
+            self._bad_qacc = bad.number
+            self._report_blow_up(int(bad.lastinfo))
+
+    def _report_blow_up(self, dof: int) -> None:
+        owner = "the world"
+        if 0 <= dof < self.model.nv:
+            body = self.model.body(int(self.model.dof_bodyid[dof])).name
+            owner = f"entity '{body.split('/')[0]}'" if "/" in body else f"body '{body}'"
+        self.transport.logger.warning(
+            f"physics became unstable at t={self.data.time:.3f}s (MuJoCo: bad acceleration at "
+            f"degree of freedom {dof}, {owner}); MuJoCo reset the state; the sim goes on")
+        for plugin in self.all_plugins():
+            plugin.reset()
+
+    # --- entities --------------------------------------------------------------------------
+    def unique_name(self, name: str, allow_renaming: bool) -> str:
+        if not _NAME.match(name):
+            raise SpawnError(f"invalid entity name '{name}': use letters, digits and '_' "
+                             "(it prefixes every body, joint and topic of the entity)")
+        if name not in self.entities and not self._name_in_model(name):
+            return name
+        if not allow_renaming:
+            raise SpawnError(f"an entity named '{name}' already exists; choose another name or "
+                             "set allow_renaming")
+        number = 1
+        while f"{name}_{number}" in self.entities or self._name_in_model(f"{name}_{number}"):
+            number += 1
+        return f"{name}_{number}"
+
+    def _name_in_model(self, name: str) -> bool:
+        prefix = f"{name}/"
+        return any(b.name.startswith(prefix) or b.name == name for b in self.spec.bodies)
+
+    def spawn(self, template: Template, name: str, position: Sequence[float],
+              quat: Sequence[float], allow_renaming: bool = False) -> Entity:
+        check_pose(position, quat)
+        name = self.unique_name(name or template.name, allow_renaming)
+        child = template.spec.copy()
+        roots = list(child.worldbody.bodies)
+        if not roots:
+            raise SpawnError(f"{template.label}: the description has no body")
+        for body in roots:
+            if not list(body.joints):
+                body.add_freejoint()
+        for link, mu in template.friction.items():
+            body = child.body(link)
+            if body is not None:
+                for geom in body.geoms:  # contacts take the larger friction unless the
+                    geom.friction[0] = mu  # geom has priority over what it touches
+                    geom.priority = max(geom.priority, 1)
+        entity = Entity(name, None, f"{name}/{roots[0].name}", template.label)
+        plugins = [p for p in (self._make_plugin(c, entity) for c in template.plugins) if p]
+        for plugin in plugins:
+            try:
+                plugin.prepare(child)
+            except LaunchError as exc:
+                raise SpawnError(str(exc)) from None
+        frame = self.spec.worldbody.add_frame(pos=list(position), quat=list(quat))
+        try:
+            self.spec.attach(child, frame=frame, prefix=f"{name}/")
+            model, data = self.spec.recompile(self.model, self.data)
+        except Exception as exc:
+            self.spec.delete(frame)
+            raise SpawnError(f"{template.label}: MuJoCo could not add '{name}': "
+                             f"{' '.join(str(exc).split())}") from None
+        entity.frame = frame
+        entity.plugins = plugins
+        self.entities[name] = entity
+        self._rebind(model, data)
+        for plugin in list(plugins):
+            try:
+                plugin.load()
+            except Exception as exc:
+                self._plugin_failed(plugin, "load", exc)
+        return entity
+
+    def remove(self, name: str) -> None:
+        entity = self.entity(name)
+        self.spec.delete(entity.frame)
+        model, data = self.spec.recompile(self.model, self.data)
+        del self.entities[name]
+        for plugin in entity.plugins:
+            plugin.close()
+        self._rebind(model, data)
+
+    def entity(self, name: str) -> Entity:
+        if name not in self.entities:
+            raise SpawnError(f"no entity named '{name}'"
+                             f"{did_you_mean(name, list(self.entities))}")
+        return self.entities[name]
+
+    def set_pose(self, name: str, position: Sequence[float], quat: Sequence[float]) -> None:
+        entity = self.entity(name)
+        check_pose(position, quat)
+        if entity.qpos < 0:
+            raise SpawnError(f"entity '{name}' has no free joint at its root; it cannot be moved")
+        norm = math.sqrt(sum(q * q for q in quat))
+        self.data.qpos[entity.qpos:entity.qpos + 7] = [*position, *(q / norm for q in quat)]
+        self.data.qvel[entity.dof:entity.dof + 6] = 0.0
+        mujoco.mj_forward(self.model, self.data)
+
+    def _rebind(self, model: Any, data: Any) -> None:
+        self.model, self.data = model, data
+        for entity in self.entities.values():
+            entity.body = model.body(entity.root).id
+            joint = int(model.body_jntadr[entity.body])
+            free = joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE
+            entity.qpos = int(model.jnt_qposadr[joint]) if free else -1
+            entity.dof = int(model.jnt_dofadr[joint]) if free else -1
+        mujoco.mj_forward(model, data)
+        for plugin in self.all_plugins():
+            try:
+                plugin.bind(model, data)
+            except Exception as exc:
+                self._plugin_failed(plugin, "bind", exc)
+
+    # --- resets ----------------------------------------------------------------------------
+    def reset(self, time: bool = True, poses: bool = True) -> None:
+        """Reset all (both), time only, or poses only (Gazebo's WorldReset)."""
+        if time and poses:
+            mujoco.mj_resetData(self.model, self.data)
+        elif poses:
+            self.data.qpos[:] = self.model.qpos0
+            self.data.qvel[:] = 0.0
+            self.data.act[:] = 0.0
+            self.data.ctrl[:] = 0.0
+        if time:
+            self.data.time = 0.0
+            self.iterations = 0
+        mujoco.mj_forward(self.model, self.data)
+        for plugin in self.all_plugins():
+            plugin.reset()
+
+    # --- reading state ---------------------------------------------------------------------
+    def poses(self) -> tuple[list[str], Any, Any]:
+        """(names, positions n×3, quaternions n×4 as w,x,y,z) of every entity's root body."""
+        names = list(self.entities)
+        ids = [self.entities[n].body for n in names]
+        return names, self.data.xpos[ids].copy(), self.data.xquat[ids].copy()
+
+
+def _compile(spec: mujoco.MjSpec, label: str) -> Any:
+    try:
+        return spec.compile()
+    except ValueError as exc:
+        raise LaunchError(f"{label}: MuJoCo could not compile the world: "
+                          f"{' '.join(str(exc).split())}") from None
