@@ -90,9 +90,9 @@ def _take_plugins(source: Source) -> None:
         nonlocal depth
         if depth == 2 and tag == "plugin":
             begin, line = starts.pop()
-            stop = parser.CurrentByteIndex
-            # the end tag's own length: find '>' from here (self-closing ends at the index)
-            stop = data.index(b">", stop) + 1
+            stop = parser.CurrentByteIndex  # at '</plugin>', or just after a '<plugin/>'
+            if data.startswith(b"</", stop):
+                stop = data.index(b">", stop) + 1
             spans.append((begin, stop, line))
         depth -= 1
 

@@ -26,6 +26,8 @@ from launcher.sim.descriptions import Descriptions, Template
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.plugins import Plugin, PluginError, find_class
 
+UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
+            mujoco.mjtWarning.mjWARN_BADQACC)
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 
@@ -77,7 +79,7 @@ class World:
         self.entities: dict[str, Entity] = {}
         self.iterations = 0
         self.plugins: list[Plugin] = []  # world plugins
-        self._bad_qacc = 0
+        self._unstable = dict.fromkeys(UNSTABLE, 0)
         self._plugin_configs = list(plugins)
 
     # --- plugins ---------------------------------------------------------------------------
@@ -147,19 +149,20 @@ class World:
                 plugin.post_step(model, data)
             except Exception as exc:
                 self._plugin_failed(plugin, "post_step", exc)
-        bad = data.warning[mujoco.mjtWarning.mjWARN_BADQACC]
-        if bad.number != self._bad_qacc:
-            self._bad_qacc = bad.number
-            self._report_blow_up(int(bad.lastinfo))
+        for kind in UNSTABLE:
+            bad = data.warning[kind]
+            if bad.number != self._unstable[kind]:
+                self._unstable[kind] = bad.number
+                self._report_blow_up(int(bad.lastinfo), kind.name.removeprefix("mjWARN_BAD"))
 
-    def _report_blow_up(self, dof: int) -> None:
+    def _report_blow_up(self, dof: int, what: str) -> None:
         owner = "the world"
         if 0 <= dof < self.model.nv:
             body = self.model.body(int(self.model.dof_bodyid[dof])).name
             owner = f"entity '{body.split('/')[0]}'" if "/" in body else f"body '{body}'"
         self.transport.logger.warning(
-            f"physics became unstable at t={self.data.time:.3f}s (MuJoCo: bad acceleration at "
-            f"degree of freedom {dof}, {owner}); MuJoCo reset the state; the sim goes on")
+            f"physics became unstable at t={self.data.time:.3f}s (MuJoCo: NaN or huge {what} "
+            f"at degree of freedom {dof}, {owner}); MuJoCo reset the state; the sim goes on")
         for plugin in self.all_plugins():
             plugin.reset()
 
@@ -224,6 +227,13 @@ class World:
             except Exception as exc:
                 self._plugin_failed(plugin, "load", exc)
         return entity
+
+    def spawn_file(self, uri: str, name: str, pose: Sequence[float] = (0, 0, 0, 0, 0, 0),
+                   allow_renaming: bool = False) -> Entity:
+        """Spawn from a file or `model://`/`package://` URI at (x, y, z, roll, pitch, yaw)."""
+        position, quat = pose_from(list(pose))
+        return self.spawn(self.descriptions.from_file(uri), name, position, quat,
+                          allow_renaming)
 
     def remove(self, name: str) -> None:
         entity = self.entity(name)

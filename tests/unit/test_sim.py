@@ -1,0 +1,481 @@
+"""The world with real MuJoCo, stepped in-process; the bus is replaced by a recording stand-in."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from launcher.errors import LaunchError
+from launcher.sim import mjcf
+from launcher.sim.descriptions import Descriptions
+from launcher.sim.pacing import Pacer
+from launcher.sim.resources import find_world, resolve_uri
+from launcher.sim.world import SpawnError, World, pose_from
+
+DATA = Path(__file__).resolve().parent.parent / "data"
+ROBOT = DATA / "diffbot.urdf"
+IDENTITY = [1.0, 0.0, 0.0, 0.0]
+
+
+class Recorder:
+    """Stands in for the bus: keeps what is published, hands out the subscription callbacks."""
+
+    def __init__(self) -> None:
+        self.published: dict[str, list] = {}
+        self.callbacks: dict[str, object] = {}
+        self.logged: list[tuple[str, str]] = []
+        self.logger = SimpleNamespace(**{level: self._logs(level)
+                                         for level in ("info", "warning", "error", "debug")})
+
+    def _logs(self, level):
+        return lambda message, once=False: self.logged.append((level, message))
+
+    def publisher(self, type_name, topic, qos=10):
+        box = self.published.setdefault(topic, [])
+        return SimpleNamespace(publish=box.append, destroy=lambda: None)
+
+    def subscribe(self, type_name, topic, callback):
+        self.callbacks[topic] = callback
+        return SimpleNamespace(destroy=lambda: self.callbacks.pop(topic, None))
+
+    def message(self, type_name, **fields):
+        return SimpleNamespace(**fields)
+
+    def header(self, seconds, frame_id):
+        return SimpleNamespace(stamp=seconds, frame_id=frame_id)
+
+    def vector(self, x, y, z):
+        return SimpleNamespace(x=x, y=y, z=z)
+
+    def pose(self, x, y, z, quat):
+        return SimpleNamespace(position=SimpleNamespace(x=x, y=y, z=z), orientation=quat)
+
+    def messages(self, level):
+        return [m for lv, m in self.logged if lv == level]
+
+
+def twist(v, w):
+    return SimpleNamespace(linear=SimpleNamespace(x=v), angular=SimpleNamespace(z=w))
+
+
+def make_world(text: str | None = None, path: Path | None = None, **values) -> World:
+    path = path or find_world("empty.xml")
+    source = mjcf.read(text if text is not None else path.read_text(), path, values)
+    world = World(mjcf.compile_spec(source), str(path), Recorder(), source.plugins)
+    world.load_world_plugins()
+    return world
+
+
+def run_for(world: World, seconds: float, command=None, name="bot") -> None:
+    """Step for `seconds` of sim time, repeating `command` at 10 Hz as a driver would."""
+    end = world.data.time + seconds
+    next_command = world.data.time
+    while world.data.time < end - 1e-9:
+        if command is not None and world.data.time >= next_command:
+            world.transport.callbacks[f"/model/{name}/cmd_vel"](command)
+            next_command += 0.1
+        world.step(world.steps_until_update(100))
+
+
+@pytest.fixture
+def world():
+    return make_world()
+
+
+def spawn_bot(world, name="bot", x=0.0, y=0.0, yaw=0.0, allow_renaming=False):
+    position, quat = pose_from([x, y, 0.06, 0, 0, yaw])
+    return world.spawn(world.descriptions.from_file(str(ROBOT)), name, position, quat,
+                       allow_renaming)
+
+
+# --- finding worlds and resources -----------------------------------------------------------
+def test_worlds_are_found_as_paths_then_resource_folders_then_built_in(tmp_path, monkeypatch):
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    (tmp_path / "b" / "arena.xml").write_text("<mujoco model='arena'/>")
+    monkeypatch.setenv("MUJOCO_SIM_RESOURCE_PATH", f"{tmp_path / 'a'}:{tmp_path / 'b'}")
+    assert find_world("arena.xml") == (tmp_path / "b" / "arena.xml").resolve()
+    assert find_world(str(tmp_path / "b" / "arena.xml")).name == "arena.xml"
+    assert find_world("empty.xml").name == "empty.xml"
+    with pytest.raises(LaunchError) as error:
+        find_world("arena2.xml")
+    text = str(error.value)
+    assert "world 'arena2.xml' not found; searched:" in text
+    assert str(tmp_path / "a") in text and str(tmp_path / "b") in text
+    assert "built-in worlds" in text and "did you mean 'arena.xml'" in text
+
+
+def test_a_template_world_renders_its_arguments_and_names_an_undefined_one(tmp_path):
+    path = tmp_path / "arena.xml.j2"
+    path.write_text('<mujoco model="{{ name }}"><worldbody>\n'
+                    '<geom type="box" size="{{ size }} {{ size }} 0.1"/></worldbody></mujoco>\n')
+    world = make_world(path=path, name="arena", size="3")
+    assert world.world_name == "arena"
+    assert world.model.geom_size[0][0] == pytest.approx(3.0)
+    with pytest.raises(LaunchError) as error:
+        make_world(path=path, name="arena")
+    assert "'size' is undefined" in str(error.value) and "--world-arg" in str(error.value)
+
+
+def test_an_mjcf_that_does_not_compile_names_file_and_line(tmp_path):
+    path = tmp_path / "bad.xml"
+    path.write_text('<mujoco model="bad">\n<worldbody>\n<geom type="sphere" size="-1"/>\n'
+                    '<bogus/>\n</worldbody>\n</mujoco>\n')
+    with pytest.raises(LaunchError) as error:
+        make_world(path=path)
+    assert str(path) in str(error.value) and "line 4" in str(error.value).lower()
+
+
+def test_model_uris_resolve_through_model_config(tmp_path, monkeypatch):
+    folder = tmp_path / "models" / "crate"
+    folder.mkdir(parents=True)
+    (folder / "model.config").write_text("<model><name>crate</name><mjcf>crate.xml</mjcf>"
+                                         "</model>")
+    (folder / "crate.xml").write_text('<mujoco model="crate"><worldbody><body name="box">'
+                                      '<geom type="box" size=".2 .2 .2"/></body></worldbody>'
+                                      "</mujoco>")
+    monkeypatch.setenv("MUJOCO_SIM_RESOURCE_PATH", str(tmp_path / "models"))
+    assert resolve_uri("model://crate", None) == folder / "crate.xml"
+    assert resolve_uri("model://crate/model.config", None) == folder / "model.config"
+    with pytest.raises(LaunchError) as error:
+        resolve_uri("model://crat", None)
+    assert "did you mean 'crate'" in str(error.value)
+    world = make_world()
+    entity = world.spawn_file("model://crate", "crate", (1, 2, 0.2, 0, 0, 0))
+    assert world.data.xpos[entity.body] == pytest.approx([1, 2, 0.2])
+
+
+# --- URDF ---------------------------------------------------------------------------------------
+def test_a_urdf_keeps_fixed_links_and_visuals_and_gets_a_free_joint(world):
+    entity = spawn_bot(world)
+    names = [world.model.body(i).name for i in range(world.model.nbody)]
+    assert "bot/caster" in names and "bot/lidar" in names  # fixed links are not fused away
+    visual = [i for i in range(world.model.ngeom) if world.model.geom_contype[i] == 0]
+    assert len(visual) >= 2  # the base's and the lidar's visuals stay
+    assert entity.qpos >= 0  # a free joint at its root
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("<robot name='r'><link name='a'>", "1:"),
+    ("<robot name='r'><link name='a'/><link name='b'/></robot>", "2 root links (a, b)"),
+    ("<robot name='r'><link name='a'/><link name='b'/>"
+     "<joint name='j1' type='fixed'><parent link='a'/><child link='b'/></joint>"
+     "<joint name='j2' type='fixed'><parent link='b'/><child link='a'/></joint></robot>",
+     "no root link (the joints form a loop)"),
+    ("<robot name='r'><link name='a'/><joint name='j' type='fixed'><parent link='a'/>"
+     "<child link='c'/></joint></robot>", "names link 'c', which is not defined"),
+    ("<model/>", "expected URDF (<robot>) or MJCF"),
+])
+def test_invalid_urdf_is_a_clear_error(text, expected):
+    with pytest.raises(LaunchError) as error:
+        Descriptions().from_string(text, "robot.urdf")
+    assert "robot.urdf" in str(error.value) and expected in str(error.value)
+
+
+def test_a_missing_mesh_names_the_uri_and_where_it_looked(tmp_path):
+    text = ("<robot name='r'><link name='a'><visual><geometry>"
+            "<mesh filename='meshes/gone.stl'/></geometry></visual></link></robot>")
+    (tmp_path / "r.urdf").write_text(text)
+    with pytest.raises(LaunchError) as error:
+        Descriptions().from_file(str(tmp_path / "r.urdf"))
+    assert "'meshes/gone.stl' not found" in str(error.value)
+    assert str(tmp_path / "meshes" / "gone.stl") in str(error.value)
+
+
+def test_mesh_uris_resolve_and_templates_are_cached(tmp_path):
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "cube.obj").write_text(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+    text = ("<robot name='r'><link name='a'><inertial><mass value='1'/><inertia ixx='1' "
+            "iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/></inertial><visual><geometry>"
+            "<mesh filename='meshes/cube.obj'/></geometry></visual></link></robot>")
+    (tmp_path / "r.urdf").write_text(text)
+    descriptions = Descriptions()
+    first = descriptions.from_file(str(tmp_path / "r.urdf"))
+    assert descriptions.from_file(str(tmp_path / "r.urdf")) is first
+    world = make_world()
+    world.descriptions = descriptions
+    world.spawn_file(str(tmp_path / "r.urdf"), "one", (0, 0, 1, 0, 0, 0))
+    world.spawn_file(str(tmp_path / "r.urdf"), "two", (2, 0, 1, 0, 0, 0))
+    assert world.model.nmesh >= 1
+
+
+# --- spawning and removing -------------------------------------------------------------------
+def state_of(world, entity):
+    adr = entity.qpos
+    return world.data.qpos[adr:adr + 7].copy(), world.data.qvel[entity.dof:entity.dof + 6].copy()
+
+
+def test_spawn_and_remove_keep_everything_else_exactly(world):
+    first = spawn_bot(world, "first")
+    run_for(world, 0.5, twist(0.3, 0.5), "first")
+    qpos, qvel = state_of(world, first)
+    time_before = world.data.time
+    second = spawn_bot(world, "second", x=2.0)
+    after_qpos, after_qvel = state_of(world, world.entities["first"])
+    assert np.array_equal(qpos, after_qpos) and np.array_equal(qvel, after_qvel)
+    assert world.data.time == time_before
+    assert second.qpos != first.qpos or second.name != first.name
+    run_for(world, 0.2)
+    qpos, qvel = state_of(world, world.entities["first"])
+    time_before = world.data.time
+    world.remove("second")
+    assert "second" not in world.entities
+    assert [world.model.body(i).name for i in range(world.model.nbody)
+            if world.model.body(i).name.startswith("second/")] == []
+    after_qpos, after_qvel = state_of(world, world.entities["first"])
+    assert np.array_equal(qpos, after_qpos) and np.array_equal(qvel, after_qvel)
+    assert world.data.time == time_before
+    run_for(world, 0.2, twist(0.3, 0.0), "first")  # the plugins were re-bound
+    assert world.transport.published["/model/first/odometry"]
+
+
+def test_a_duplicate_name_is_refused_or_renamed_and_a_failed_spawn_changes_nothing(world):
+    spawn_bot(world, "bot")
+    run_for(world, 0.1)
+    nbody, qpos, time = world.model.nbody, world.data.qpos.copy(), world.data.time
+    with pytest.raises(SpawnError) as error:
+        spawn_bot(world, "bot")
+    assert "already exists" in str(error.value)
+    with pytest.raises(LaunchError):
+        world.spawn(world.descriptions.from_string("<robot name='r'><link name='a'>"
+                                                   "<visual><geometry><box size='-1 1 1'/>"
+                                                   "</geometry></visual></link></robot>"),
+                    "broken", [0, 0, 1], IDENTITY)
+    assert world.model.nbody == nbody and np.array_equal(world.data.qpos, qpos)
+    assert world.data.time == time and list(world.entities) == ["bot"]
+    assert spawn_bot(world, "bot", allow_renaming=True).name == "bot_1"
+    run_for(world, 0.1)  # the world still steps
+
+
+@pytest.mark.parametrize("pose", [[math.nan, 0, 0], [0, math.inf, 0]])
+def test_a_nan_or_infinite_pose_is_refused(world, pose):
+    with pytest.raises(SpawnError) as error:
+        world.spawn(world.descriptions.from_file(str(ROBOT)), "bot", pose, IDENTITY)
+    assert "finite" in str(error.value)
+    assert not world.entities
+
+
+def test_set_pose_moves_an_entity_and_unknown_names_get_a_suggestion(world):
+    spawn_bot(world, "bot")
+    world.set_pose("bot", [3.0, -1.0, 0.5], IDENTITY)
+    assert world.data.xpos[world.entities["bot"].body] == pytest.approx([3.0, -1.0, 0.5])
+    with pytest.raises(SpawnError) as error:
+        world.set_pose("bto", [0, 0, 0], IDENTITY)
+    assert "did you mean 'bot'" in str(error.value)
+
+
+# --- diff drive, odometry ----------------------------------------------------------------------
+def test_diff_drive_moves_at_omega_r_and_turns_the_right_way(world):
+    spawn_bot(world)
+    run_for(world, 0.5)
+    start = world.data.xpos[world.entities["bot"].body].copy()
+    run_for(world, 0.5, twist(0.5, 0.0))  # wheels reach ω = v / r = 10 rad/s
+    begin, t0 = world.data.xpos[world.entities["bot"].body].copy(), world.data.time
+    run_for(world, 2.0, twist(0.5, 0.0))
+    moved = world.data.xpos[world.entities["bot"].body] - begin
+    wheel = world.data.qvel[world.model.joint("bot/left_wheel_joint").dofadr[0]]
+    speed = np.linalg.norm(moved[:2]) / (world.data.time - t0)
+    assert speed == pytest.approx(wheel * 0.05, rel=0.05) and speed == pytest.approx(0.5, rel=0.05)
+    assert moved[0] > 0.9 and abs(start[1] - begin[1]) < 0.01
+    qpos = world.entities["bot"].qpos
+    before = world.data.qpos[qpos + 3:qpos + 7].copy()
+    run_for(world, 1.0, twist(0.0, 1.0))  # counter-clockwise, 1 rad/s
+    after = world.data.qpos[qpos + 3:qpos + 7]
+    yaw = [2 * math.atan2(q[3], q[0]) for q in (before, after)]
+    turned = math.remainder(yaw[1] - yaw[0], 2 * math.pi)
+    assert 0.7 < turned < 1.1
+
+
+def test_odometry_agrees_with_the_true_pose_within_two_percent_over_five_metres(world):
+    spawn_bot(world)
+    run_for(world, 0.3)
+    start = world.data.xpos[world.entities["bot"].body].copy()
+    run_for(world, 11.0, twist(0.5, 0.05))
+    odom = world.transport.published["/model/bot/odometry"][-1]
+    true = world.data.xpos[world.entities["bot"].body] - start
+    travelled = np.linalg.norm(true[:2])
+    assert travelled > 5.0
+    error = math.hypot(odom.pose.position.x - true[0], odom.pose.position.y - true[1])
+    assert error / travelled < 0.02
+    assert odom.header.frame_id == "bot/odom" and odom.child_frame_id == "bot/base_link"
+    stamps = [m.header.stamp for m in world.transport.published["/model/bot/odometry"]]
+    assert stamps == sorted(stamps) and np.diff(stamps[-10:]) == pytest.approx([0.02] * 9)
+
+
+def test_the_watchdog_stops_the_wheels_when_cmd_vel_goes_silent(world):
+    spawn_bot(world)
+    world.transport.callbacks["/model/bot/cmd_vel"](twist(0.5, 0.0))
+    run_for(world, 0.3)
+    assert world.data.ctrl.any()
+    run_for(world, 0.5)  # no command for 0.8 s > 0.5 s
+    assert not world.data.ctrl.any()
+
+
+def test_a_nan_cmd_vel_is_ignored_and_warned_once(world):
+    spawn_bot(world)
+    for _ in range(3):
+        world.transport.callbacks["/model/bot/cmd_vel"](twist(math.nan, 0.0))
+    run_for(world, 0.1)
+    warnings = [m for m in world.transport.messages("warning") if "NaN" in m]
+    assert len(warnings) == 1 and "'bot'" in warnings[0]
+    assert not world.data.ctrl.any()
+
+
+def test_ten_robots_spawned_by_name_are_driven_independently(world):
+    for i in range(10):
+        spawn_bot(world, f"r{i}", x=0.0, y=i * 1.0)
+    run_for(world, 0.3)
+    start = {n: world.data.xpos[e.body].copy() for n, e in world.entities.items()}
+    end = world.data.time + 2.0
+    while world.data.time < end:
+        for i in range(10):
+            world.transport.callbacks[f"/model/r{i}/cmd_vel"](twist(0.05 * i, 0.0))
+        world.step(world.steps_until_update(100))
+    for i in range(10):
+        moved = world.data.xpos[world.entities[f"r{i}"].body][0] - start[f"r{i}"][0]
+        assert moved == pytest.approx(0.1 * i, abs=0.04), f"r{i}"  # 0.1 m apart
+    topics = [t for t in world.transport.published if t.endswith("/odometry")]
+    assert len(topics) == 10
+
+
+def test_joint_states_are_published_without_the_prefix(world):
+    spawn_bot(world)
+    run_for(world, 0.2, twist(0.5, 0.0))
+    states = world.transport.published["/world/empty/model/bot/joint_state"]
+    assert states[-1].joint_name == ["left_wheel_joint", "right_wheel_joint"]
+    assert len(states[-1].position) == 2
+
+
+# --- arms, plugins, resets, blow-ups ---------------------------------------------------------
+ARM = """<robot name="arm">
+  <link name="base"><inertial><mass value="5"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="upper"><inertial><origin xyz="0 0 0.2"/><mass value="0.5"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/>
+    <axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="100" velocity="5"/></joint>
+  <gazebo>
+    <plugin filename="gz-sim-joint-position-controller-system" name="gz::sim::systems::JointPositionController">
+      <joint_name>shoulder</joint_name><p_gain>20</p_gain><d_gain>2</d_gain>
+    </plugin>
+    <plugin filename="no-such-system" name="gz::sim::systems::Nothing"/>
+  </gazebo>
+</robot>"""
+
+
+def test_a_position_controller_moves_an_arm_joint_and_an_unknown_plugin_is_logged(world):
+    world.spawn(world.descriptions.from_string(ARM), "arm", [0, 0, 0.5], IDENTITY)
+    errors = world.transport.messages("error")
+    assert any("unknown plugin 'no-such-system'" in m for m in errors)
+    world.transport.callbacks["/model/arm/joint/shoulder/0/cmd_pos"](SimpleNamespace(data=1.2))
+    world.step(3000)
+    angle = world.data.qpos[world.model.joint("arm/shoulder").qposadr[0]]
+    assert angle == pytest.approx(1.2, abs=0.02)
+
+
+PLUGIN = '''
+from launcher.sim.plugins import Plugin
+
+class SpawnCrate(Plugin):
+    def load(self):
+        x = float(self.text("x", "5"))
+        self.sim.spawn_file(self.text("model"), "crate", (x, 4, 0.2, 0, 0, 0))
+        self.steps = 0
+
+    def post_step(self, model, data):
+        self.steps += 1
+
+class Broken(Plugin):
+    def post_step(self, model, data):
+        raise RuntimeError("wheels fell off")
+'''
+
+
+def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped(
+        tmp_path, monkeypatch):
+    (tmp_path / "plugins").mkdir()
+    (tmp_path / "plugins" / "crate_spawner.py").write_text(PLUGIN)
+    (tmp_path / "crate.xml").write_text('<mujoco model="crate"><worldbody><body name="box">'
+                                        '<geom type="box" size=".2 .2 .2"/></body></worldbody>'
+                                        "</mujoco>")
+    monkeypatch.setenv("MUJOCO_SIM_PLUGIN_PATH", str(tmp_path / "plugins"))
+    world_file = tmp_path / "w.xml"
+    world_file.write_text(f"""<mujoco model="w">
+  <plugin filename="crate_spawner" name="SpawnCrate">
+    <model>{tmp_path / 'crate.xml'}</model><x>5</x>
+  </plugin>
+  <plugin filename="crate_spawner.py" name="Broken"/>
+  <plugin filename="crate_spawner.py" name="Missing"/>
+  <worldbody><geom type="plane" size="0 0 1"/></worldbody>
+</mujoco>""")
+    world = make_world(path=world_file)
+    assert "crate" in world.entities
+    assert world.data.xpos[world.entities["crate"].body][:2] == pytest.approx([5, 4])
+    world.step(5)
+    world.step(5)
+    errors = world.transport.messages("error")
+    assert any("has no class 'Missing'" in m for m in errors)
+    assert sum("plugin Broken raised in post_step: RuntimeError: wheels fell off" in m
+               for m in errors) == 1
+    assert [p.label for p in world.plugins] == ["SpawnCrate"] and world.plugins[0].steps == 2
+
+
+def test_resets_all_time_only_and_poses_only(world):
+    spawn_bot(world)
+    run_for(world, 1.0, twist(0.5, 0.0))
+    qpos = world.data.qpos.copy()
+    assert world.data.xpos[world.entities["bot"].body][0] > 0.2
+    world.reset(time=True, poses=False)
+    assert world.data.time == 0.0 and world.iterations == 0
+    assert np.array_equal(world.data.qpos, qpos)
+    run_for(world, 0.2)
+    time_before = world.data.time
+    world.reset(time=False, poses=True)
+    assert world.data.time == time_before > 0.19
+    assert world.data.xpos[world.entities["bot"].body][0] == pytest.approx(0.0, abs=1e-6)
+    run_for(world, 0.2, twist(0.5, 0.0))
+    world.reset()
+    assert world.data.time == 0.0
+    assert world.data.xpos[world.entities["bot"].body][:2] == pytest.approx([0, 0], abs=1e-6)
+
+
+def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(world):
+    spawn_bot(world, "wild")
+    entity = world.entities["wild"]
+    world.data.qvel[entity.dof + 6] = 1e30  # the left wheel
+    world.step(1)
+    warnings = world.transport.messages("warning")
+    assert any("unstable" in m and "entity 'wild'" in m for m in warnings), warnings
+    run_for(world, 0.1)
+    assert np.isfinite(world.data.qpos).all()
+
+
+def test_the_world_state_plugin_and_mjcf_robots(world):
+    world.spawn(world.descriptions.from_string(
+        '<mujoco model="ball"><worldbody><body name="b"><geom size=".1"/></body></worldbody>'
+        "</mujoco>"), "ball", [0, 0, 1], IDENTITY)
+    assert world.entities["ball"].qpos >= 0  # it got a free joint and falls
+    world.step(200)
+    assert world.data.xpos[world.entities["ball"].body][2] < 1.0
+
+
+# --- pacing ------------------------------------------------------------------------------------
+def test_the_pacer_never_drifts_and_reanchors_after_a_stall():
+    now = [0.0]
+    pacer = Pacer(0.001, 1.0, clock=lambda: now[0])
+    total = 0
+    for _ in range(600_000):  # ten minutes of 1 ms ticks with a little jitter
+        now[0] += 0.001 + (3e-7 if total % 2 else -3e-7)
+        due = pacer.due()
+        pacer.stepped(due)
+        total += due
+    assert abs(total - 600_000) <= 1
+    now[0] += 5.0  # a stall
+    assert pacer.due() == 1 and pacer.reanchors == 1
+    fast = Pacer(0.001, 2.0, clock=lambda: now[0])
+    now[0] += 0.1
+    assert fast.due() == 200
+    assert Pacer(0.001, 0.0).due() > 1_000_000
