@@ -1,0 +1,214 @@
+"""The sim and create as real processes: real MuJoCo, real Zenoh, launched by launcher."""
+
+from __future__ import annotations
+
+import json
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+PY = sys.executable
+ROBOT = str(Path(__file__).resolve().parent.parent / "data" / "diffbot.urdf")
+
+SIM_LAUNCH = f"""
+launch:
+  - node: {{pkg: mujoco_sim, exec: sim, args: "-v 3 -r", output: screen}}
+  - node: {{pkg: mujoco_sim, exec: create, output: screen,
+           args: "-name bot -file {ROBOT} -z 0.06"}}
+"""
+
+# Talks to the running sim over the bus, as any node would, and prints what it saw as JSON.
+PROBE = """
+import json, time
+from launcher.bus.node import Node
+node = Node("probe")
+result = {}
+clocks = []
+odom = []
+node.create_subscription("mujoco_sim/msg/Clock", "/world/empty/clock", clocks.append)
+node.create_subscription("mujoco_sim/msg/Odometry", "/model/bot/odometry", odom.append)
+control = node.create_client("mujoco_sim/srv/Control", "/world/empty/control")
+assert control.wait_for_service(20)
+
+def call(**fields):
+    response = control.call(node.message("mujoco_sim/srv/Control_Request", **fields))
+    node.spin(0.3)
+    return response
+
+def sim_time(c):
+    return c.sim.sec + c.sim.nanosec * 1e-9
+
+deadline = time.monotonic() + 20
+while not odom and time.monotonic() < deadline:
+    node.spin_once(0.1)
+call(pause=True)
+paused = clocks[-1]
+call(pause=True, multi_step=250)
+stepped = clocks[-1]
+result["paused"] = paused.paused
+result["step"] = [paused.iterations, stepped.iterations, sim_time(paused), sim_time(stepped)]
+node.spin(0.3)
+result["still"] = clocks[-1].iterations == stepped.iterations
+call(pause=False)
+cmd = node.create_publisher("mujoco_sim/msg/Twist", "/model/bot/cmd_vel")
+start = odom[-1].pose.position.x
+end = time.monotonic() + 2.0
+while time.monotonic() < end:
+    cmd.publish(node.message("mujoco_sim/msg/Twist", linear={"x": 0.5}))
+    node.spin(0.1)
+result["odom_moved"] = odom[-1].pose.position.x - start
+times = [sim_time(c) for c in clocks]
+result["monotonic"] = all(b >= a for a, b in zip(times, times[1:]))
+result["clock_matches_steps"] = all(abs(sim_time(c) - c.iterations * 0.001) < 1e-6
+                                    for c in clocks)
+call(pause=False, reset_all=True)
+result["after_reset"] = sim_time(clocks[-1])
+print("RESULT", json.dumps(result), flush=True)
+node.destroy_node()
+"""
+
+DESCRIPTION = """
+from pathlib import Path
+import sys
+from launcher.bus.node import Node
+from launcher.bus.qos import LATCHED
+node = Node("robot_state_publisher")
+node.create_publisher("std_msgs/msg/String", "robot_description", LATCHED).publish(
+    node.message("std_msgs/msg/String", data=Path(sys.argv[1]).read_text()))
+print("description published", flush=True)
+node.spin()
+node.destroy_node()
+"""
+
+
+@pytest.fixture
+def sim_ws(ws):
+    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
+    ws.env.pop("LAUNCHER_ROUTER", None)
+    ws.env.pop("MUJOCO_SIM_RESOURCE_PATH", None)
+    return ws
+
+
+def start_sim(ws, body: str = SIM_LAUNCH):
+    ws.write("sim.launch.yaml", body)
+    proc = ws.start("launch", "sim.launch.yaml", output="launch.out")
+    return proc
+
+
+def run_py(ws, name: str, text: str, *args: str, timeout: float = 60):
+    ws.write(name, text)
+    return subprocess.run([PY, name, *args], cwd=ws.root, env=ws.env, capture_output=True,
+                          text=True, timeout=timeout)
+
+
+def stop(proc) -> int:
+    proc.send_signal(signal.SIGINT)
+    return proc.wait(30)
+
+
+def test_the_sim_serves_control_clock_and_drives_a_spawned_robot(sim_ws):
+    proc = start_sim(sim_ws)
+    sim_ws.wait_for_output("spawned 'bot' into world 'empty'", 60, "launch.out")
+    probe = run_py(sim_ws, "probe.py", PROBE)
+    assert probe.returncode == 0, probe.stderr
+    result = json.loads(probe.stdout.split("RESULT", 1)[1])
+    assert result["paused"] is True
+    before, after, t_before, t_after = result["step"]
+    assert after - before == 250 and t_after - t_before == pytest.approx(0.25, abs=1e-9)
+    assert result["still"]  # paused: no steps without a request
+    assert result["odom_moved"] > 0.3  # ~0.5 m/s for 2 s, commanded over the bus
+    assert result["monotonic"] and result["clock_matches_steps"]
+    assert result["after_reset"] < 0.5
+    assert stop(proc) == 130
+    out = sim_ws.output("launch.out")
+    assert "world 'empty'" in out and "process has finished cleanly" in out or \
+        "process stopped" in out
+
+
+def test_create_from_a_latched_topic_and_the_sims_refusals(sim_ws):
+    proc = start_sim(sim_ws, """
+launch:
+  - node: {pkg: mujoco_sim, exec: sim, args: "-r -v 3", output: screen}
+""")
+    sim_ws.wait_for_output("world 'empty'", 60, "launch.out")  # its router is up
+    sim_ws.write("desc.py", DESCRIPTION)
+
+    describer = subprocess.Popen([PY, "desc.py", ROBOT], cwd=sim_ws.root, env=sim_ws.env,
+                                 stdout=subprocess.PIPE, text=True)
+    try:
+        assert "description published" in describer.stdout.readline()
+        first = sim_ws.run("sim", "--help")  # the CLI's own help, not the launcher's
+        assert "--iterations N" in first.stdout
+        create = [PY, "-m", "launcher.nodes.create"]
+        done = subprocess.run(create + ["-entity", "my_robot", "-topic", "robot_description",
+                                        "-z", "0.06"], cwd=sim_ws.root, env=sim_ws.env,
+                              capture_output=True, text=True, timeout=60)
+        assert done.returncode == 0, done.stderr
+        assert "spawned 'my_robot'" in done.stdout
+        again = subprocess.run(create + ["-name", "my_robot", "-file", ROBOT], cwd=sim_ws.root,
+                               env=sim_ws.env, capture_output=True, text=True, timeout=60)
+        assert again.returncode == 1
+        assert "the sim refused: an entity named 'my_robot' already exists" in again.stderr
+        renamed = subprocess.run(create + ["-name", "my_robot", "-file", ROBOT,
+                                           "-allow_renaming", "true", "-x", "2"],
+                                 cwd=sim_ws.root, env=sim_ws.env, capture_output=True,
+                                 text=True, timeout=60)
+        assert renamed.returncode == 0 and "spawned 'my_robot_1'" in renamed.stdout
+        params = subprocess.run(create + ["--ros-args", "-p", "name:=third", "-p",
+                                          f"file:={ROBOT}", "-p", "y:=2.0"],
+                                cwd=sim_ws.root, env=sim_ws.env, capture_output=True,
+                                text=True, timeout=60)
+        assert params.returncode == 0 and "spawned 'third'" in params.stdout, params.stderr
+        states = sim_ws.run("topic", "echo", "/world/empty/model_states", "--once",
+                            "--field", "name")
+        assert "my_robot" in states.stdout and "third" in states.stdout, states.stderr
+    finally:
+        describer.send_signal(signal.SIGINT)
+        describer.wait(10)
+    assert stop(proc) == 130
+
+
+def test_create_without_a_sim_exits_1_after_its_timeout(sim_ws):
+    sim_ws.env["LAUNCHER_BUS_TIMEOUT"] = "0.5"
+    done = run_py(sim_ws, "c.py", "from launcher.nodes.create import main; "
+                  "raise SystemExit(main())", "-file", ROBOT, "-timeout", "1")
+    assert done.returncode == 1
+    assert "no sim answered" in done.stderr and "within 1 s" in done.stderr
+    assert "Traceback" not in done.stderr
+
+
+@pytest.mark.parametrize("args, expected", [
+    ([], "nothing to spawn: give one of -file, -string, -param or -topic"),
+    (["-file", "a.urdf", "-string", "<robot/>"], "give one source, not -file, -string"),
+    (["-fle", "a.urdf"], "unknown option '-fle'"),
+    (["-file", "a.urdf", "-x", "nan"], "-x must be finite"),
+])
+def test_create_bad_arguments(sim_ws, args, expected):
+    done = run_py(sim_ws, "c.py", "from launcher.nodes.create import main; "
+                  "raise SystemExit(main())", *args)
+    assert done.returncode == 2 and expected in done.stderr, done.stderr
+    assert "Traceback" not in done.stderr
+
+
+def test_a_bad_world_name_lists_the_places_searched(sim_ws):
+    sim_ws.env["MUJOCO_SIM_RESOURCE_PATH"] = str(sim_ws.root / "worlds")
+    (sim_ws.root / "worlds").mkdir()
+    (sim_ws.root / "worlds" / "robot.xml").write_text("<mujoco model='robot'/>")
+    done = sim_ws.run("sim", "robto.xml")
+    assert done.returncode == 1
+    assert "world 'robto.xml' not found; searched:" in done.stderr
+    assert str(sim_ws.root / "worlds") in done.stderr and "did you mean 'robot.xml'" in done.stderr
+    assert "Traceback" not in done.stderr
+
+
+def test_iterations_stops_the_sim_and_an_unrunnable_world_is_one_clean_error(sim_ws):
+    done = sim_ws.run("sim", "-r", "--iterations", "500", "-z", "0")
+    assert done.returncode == 0, done.stderr
+    (sim_ws.root / "bad.xml").write_text('<mujoco model="bad">\n<worldbody>\n'
+                                         '<geom type="box" size="1"/>\n</worldbody>\n</mujoco>\n')
+    bad = sim_ws.run("sim", "bad.xml")
+    assert bad.returncode == 1 and "bad.xml" in bad.stderr and "line 3" in bad.stderr.lower()
+    assert "Traceback" not in bad.stderr
