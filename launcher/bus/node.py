@@ -13,6 +13,7 @@ are CDR (rosbags); keys, liveliness tokens and attachments follow rmw_zenoh (see
 from __future__ import annotations
 
 import atexit
+import contextlib
 import itertools
 import os
 import queue
@@ -93,6 +94,12 @@ class Publisher:
         self._queryable = node.session.declare_queryable(key, self._replay) \
             if qos.transient_local else None
         self._token = node._announce(keys.PUBLISHER, topic, self.type_name, qos)
+        # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
+        self._matching = self._publisher.matching_status.matching
+        self._listener = self._publisher.declare_matching_listener(self._on_matching)
+
+    def _on_matching(self, status: Any) -> None:
+        self._matching = status.matching
 
     def publish(self, message: Any) -> None:
         self.publish_raw(registry().serialize(message, self.type_name))
@@ -109,10 +116,13 @@ class Publisher:
             query.reply(self._publisher.key_expr, payload, attachment=attachment)
 
     def get_subscription_count(self) -> int:
-        return 1 if self._publisher.matching_status.matching else 0
+        """1 while any subscriber matches (Zenoh does not count them), else 0."""
+        return 1 if self._matching else 0
 
     def destroy(self) -> None:
-        for item in (self._queryable, self._publisher, self._token):
+        if not self._node._forget(self):
+            return
+        for item in (self._listener, self._queryable, self._publisher, self._token):
             if item is not None:
                 item.undeclare()
 
@@ -151,6 +161,8 @@ class Subscription:
         self._callback(message)
 
     def destroy(self) -> None:
+        if not self._node._forget(self):
+            return
         self._subscriber.undeclare()
         self._token.undeclare()
 
@@ -351,6 +363,13 @@ class Node:
         except KeyboardInterrupt:
             self.interrupted = True
 
+    def _forget(self, entity: Any) -> bool:
+        """Drop an entity being destroyed; False if it already was (destroy is idempotent)."""
+        if entity in self._entities:
+            self._entities.remove(entity)
+            return True
+        return False
+
     def shutdown(self) -> None:
         self._stopped.set()
 
@@ -359,8 +378,10 @@ class Node:
         if self._destroyed:
             return
         self._destroyed = True
-        for entity in self._entities:
-            entity.destroy()
+        for entity in list(self._entities):
+            # the session must close whatever happened to one entity
+            with contextlib.suppress(zenoh.ZError):
+                entity.destroy()
         self._token.undeclare()
         self.session.close()
 

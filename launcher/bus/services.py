@@ -51,6 +51,8 @@ class Service:
             query.reply_err(f"{type(exc).__name__}: {exc}".encode())
 
     def destroy(self) -> None:
+        if not self._node._forget(self):
+            return
         self._queryable.undeclare()
         self._token.undeclare()
 
@@ -105,6 +107,8 @@ class Client:
         return False
 
     def destroy(self) -> None:
+        if not self._node._forget(self):
+            return
         self._token.undeclare()
 
 

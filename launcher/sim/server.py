@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 import signal
+import struct
 import time
 from collections.abc import Sequence
 from typing import Any
@@ -29,6 +30,20 @@ from launcher.sim.plugins import config_from
 from launcher.sim.world import World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
+
+
+_CLOCK = struct.Struct("<4siIiI?7xQ")
+
+
+def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
+    """mujoco_sim/msg/Clock as CDR, packed directly: it goes out after every step."""
+    sim_sec, real_sec = math.floor(sim), math.floor(real)
+    return _CLOCK.pack(b"\x00\x01\x00\x00", sim_sec, _nanoseconds(sim - sim_sec), real_sec,
+                       _nanoseconds(real - real_sec), paused, iterations)
+
+
+def _nanoseconds(fraction: float) -> int:
+    return min(int(round(fraction * 1e9)), 999_999_999)
 
 
 class Transport:
@@ -56,8 +71,8 @@ class Transport:
 
     def time(self, seconds: float) -> Any:
         sec = math.floor(seconds)
-        return self.cls("builtin_interfaces/msg/Time")(
-            sec=int(sec), nanosec=min(int(round((seconds - sec) * 1e9)), 999_999_999))
+        return self.cls("builtin_interfaces/msg/Time")(sec=sec,
+                                                       nanosec=_nanoseconds(seconds - sec))
 
     def header(self, seconds: float, frame_id: str) -> Any:
         return self.cls("std_msgs/msg/Header")(stamp=self.time(seconds), frame_id=frame_id)
@@ -105,13 +120,17 @@ class SimServer:
                 node.spin_once(0.05)
                 continue
             due = pacer.due()
-            if due == 0:
-                node.spin_once(pacer.wait_time())
-                continue
-            while node.spin_once(0):  # callbacks first: commands apply to this batch
-                pass
-            if self.paused or self.stopped:
-                continue
+            if due == 0:  # ahead of schedule: serve the bus until the next step is due
+                if node.spin_once(pacer.wait_time()) or self.paused or self.stopped:
+                    continue  # a callback ran: look again (more may be queued)
+                due = pacer.due()
+                if due == 0:
+                    continue
+            else:
+                while node.spin_once(0):  # callbacks first: commands apply to this batch
+                    pass
+                if self.paused or self.stopped:
+                    continue
             batch = min(due, MAX_BATCH)
             if iterations is not None:
                 batch = min(batch, iterations - world.iterations)
@@ -121,13 +140,12 @@ class SimServer:
             self.publish_clock()
 
     def publish_clock(self) -> None:
-        transport = self.transport
-        message = transport.message(
-            "mujoco_sim/msg/Clock", sim=transport.time(self.world.data.time),
-            real=transport.time(time.monotonic() - self._started), paused=self.paused,
-            iterations=self.world.iterations)
-        payload = registry().serialize(message, "mujoco_sim/msg/Clock")
-        for publisher in self._clocks:
+        wanted = [p for p in self._clocks if p.get_subscription_count()]
+        if not wanted:
+            return
+        payload = clock_cdr(self.world.data.time, time.monotonic() - self._started,
+                            self.paused, self.world.iterations)
+        for publisher in wanted:
             publisher.publish_raw(payload)
 
     def stop(self, *_: Any) -> None:

@@ -27,7 +27,7 @@ from launcher.sim.mjcf import PluginConfig
 from launcher.sim.plugins import Plugin, PluginError, find_class
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
-            mujoco.mjtWarning.mjWARN_BADQACC)
+            mujoco.mjtWarning.mjWARN_BADQACC)  # indices 3, 4, 5, read directly in step()
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 
@@ -80,7 +80,9 @@ class World:
         self.iterations = 0
         self.plugins: list[Plugin] = []  # world plugins
         self._unstable = dict.fromkeys(UNSTABLE, 0)
+        self._unstable_total = 0
         self._plugin_configs = list(plugins)
+        self._plugins_changed()
 
     # --- plugins ---------------------------------------------------------------------------
     def load_world_plugins(self) -> None:
@@ -96,6 +98,7 @@ class World:
                 self._plugin_failed(plugin, "load", exc)
                 continue
             self.plugins.append(plugin)
+            self._plugins_changed()
 
     def _make_plugin(self, config: PluginConfig, entity: Entity | None) -> Plugin | None:
         try:
@@ -116,39 +119,53 @@ class World:
         for group in (self.plugins, *(e.plugins for e in self.entities.values())):
             if plugin in group:
                 group.remove(plugin)
+        self._plugins_changed()
         with contextlib.suppress(Exception):  # already failing: its close may fail too
             plugin.close()
 
     def all_plugins(self) -> list[Plugin]:
+        return self._all
+
+    def _plugins_changed(self) -> None:
+        """Refresh the lists the step loop walks (built once, not per step)."""
         found = list(self.plugins)
         for entity in self.entities.values():
             found += entity.plugins
-        return found
+        self._all = found
+        self._pre = [p for p in found if type(p).pre_step is not Plugin.pre_step]
 
     # --- stepping --------------------------------------------------------------------------
     def steps_until_update(self, limit: int) -> int:
         """How many steps may run before a plugin needs its post_step (at least 1)."""
-        timestep = self.model.opt.timestep
-        steps = limit
-        for plugin in self.all_plugins():
-            due = plugin.next_update - self.data.time
-            steps = min(steps, max(1, int(math.ceil(due / timestep - 1e-9))))
-        return max(1, steps)
+        if not self._all:
+            return max(1, limit)
+        due = min(p.next_update for p in self._all) - self.data.time
+        return max(1, min(limit, math.ceil(due / self.model.opt.timestep - 1e-9)))
 
     def step(self, count: int = 1) -> None:
+        """Step `count` times; pre_step hooks run before, post_step hooks that are due after."""
         model, data = self.model, self.data
-        for plugin in self.all_plugins():
+        for plugin in self._pre:
             try:
                 plugin.pre_step(model, data)
             except Exception as exc:
                 self._plugin_failed(plugin, "pre_step", exc)
         mujoco.mj_step(model, data, nstep=count)
         self.iterations += count
-        for plugin in self.all_plugins():
-            try:
-                plugin.post_step(model, data)
-            except Exception as exc:
-                self._plugin_failed(plugin, "post_step", exc)
+        warnings = data.warning  # MuJoCo counts bad qpos/qvel/qacc, then resets the state
+        if warnings[3].number + warnings[4].number + warnings[5].number != self._unstable_total:
+            self._check_unstable()
+        now = data.time + 1e-9
+        for plugin in self._all:
+            if plugin.next_update <= now:
+                try:
+                    plugin.post_step(model, data)
+                except Exception as exc:
+                    self._plugin_failed(plugin, "post_step", exc)
+
+    def _check_unstable(self) -> None:
+        data = self.data
+        self._unstable_total = sum(data.warning[kind].number for kind in UNSTABLE)
         for kind in UNSTABLE:
             bad = data.warning[kind]
             if bad.number != self._unstable[kind]:
@@ -212,6 +229,7 @@ class World:
         frame = self.spec.worldbody.add_frame(pos=list(position), quat=list(quat))
         try:
             self.spec.attach(child, frame=frame, prefix=f"{name}/")
+            self.spec.dedup_assets()  # ten copies of a robot share its meshes
             model, data = self.spec.recompile(self.model, self.data)
         except Exception as exc:
             self.spec.delete(frame)
@@ -220,6 +238,7 @@ class World:
         entity.frame = frame
         entity.plugins = plugins
         self.entities[name] = entity
+        self._plugins_changed()
         self._rebind(model, data)
         for plugin in list(plugins):
             try:
@@ -240,6 +259,7 @@ class World:
         self.spec.delete(entity.frame)
         model, data = self.spec.recompile(self.model, self.data)
         del self.entities[name]
+        self._plugins_changed()
         for plugin in entity.plugins:
             plugin.close()
         self._rebind(model, data)
@@ -262,6 +282,8 @@ class World:
 
     def _rebind(self, model: Any, data: Any) -> None:
         self.model, self.data = model, data
+        self._unstable = {kind: data.warning[kind].number for kind in UNSTABLE}
+        self._unstable_total = sum(self._unstable.values())
         for entity in self.entities.values():
             entity.body = model.body(entity.root).id
             joint = int(model.body_jntadr[entity.body])

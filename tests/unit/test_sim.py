@@ -36,7 +36,8 @@ class Recorder:
 
     def publisher(self, type_name, topic, qos=10):
         box = self.published.setdefault(topic, [])
-        return SimpleNamespace(publish=box.append, destroy=lambda: None)
+        return SimpleNamespace(publish=box.append, destroy=lambda: None,
+                               get_subscription_count=lambda: 1)
 
     def subscribe(self, type_name, topic, callback):
         self.callbacks[topic] = callback
@@ -451,6 +452,24 @@ def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(wor
     assert any("unstable" in m and "entity 'wild'" in m for m in warnings), warnings
     run_for(world, 0.1)
     assert np.isfinite(world.data.qpos).all()
+
+
+def test_the_packed_clock_is_the_cdr_of_the_clock_message():
+    from launcher.bus.types import registry
+    from launcher.sim.server import clock_cdr
+
+    payload = clock_cdr(12.345, 3.5, True, 12345)
+    message = registry().deserialize(payload, "mujoco_sim/msg/Clock")
+    assert (message.sim.sec, message.sim.nanosec) == (12, 345_000_000)
+    assert (message.real.sec, message.real.nanosec) == (3, 500_000_000)
+    assert message.paused is True and message.iterations == 12345
+    assert bytes(registry().serialize(message, "mujoco_sim/msg/Clock")) == payload
+
+
+def test_the_warning_indices_the_step_loop_reads():
+    from launcher.sim.world import UNSTABLE
+
+    assert [int(kind) for kind in UNSTABLE] == [3, 4, 5]
 
 
 def test_the_world_state_plugin_and_mjcf_robots(world):

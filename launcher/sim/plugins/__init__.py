@@ -7,9 +7,11 @@ A plugin is named by its `filename` (and `name`) as in Gazebo:
     class in `name`, imported as a module.
 The sim calls, in order: `prepare(spec)` (entity plugins, before attaching: add actuators),
 `load()` (after compiling: publishers, subscriptions), `bind(model, data)` after every
-recompile, `pre_step` / `post_step` around each batch of steps, `reset()` on a world reset and
-`close()` when its entity is removed. `next_update` (sim time) lets the sim step in batches up
-to the next time a plugin must run; leave it at 0.0 to run after every step.
+recompile, `pre_step` before each batch of steps, `post_step` after a batch once sim time has
+reached the plugin's `next_update`, `reset()` on a world reset and `close()` when its entity
+is removed. `next_update` lets the sim step in batches up to the next time a plugin must
+run; leave it at 0.0 to run after every step. Publishers report `get_subscription_count()`:
+skip building messages nobody receives.
 """
 
 from __future__ import annotations

@@ -175,6 +175,10 @@ class DiffDrive(Plugin):
             self.linear, self.angular = distance / dt, turn / dt
 
     def _publish(self, now: float) -> None:
+        odom_wanted = self.odom_pub.get_subscription_count() > 0
+        tf_wanted = self.tf_pub.get_subscription_count() > 0
+        if not (odom_wanted or tf_wanted):
+            return
         transport = self.sim.transport
         header = transport.header(now, self.frame_id)
         pose = transport.pose(self.x, self.y, 0.0, _yaw_quat(self.theta))
@@ -184,10 +188,12 @@ class DiffDrive(Plugin):
                 "geometry_msgs/msg/Twist",
                 linear=transport.vector(getattr(self, "linear", 0.0), 0.0, 0.0),
                 angular=transport.vector(0.0, 0.0, getattr(self, "angular", 0.0))))
-        self.odom_pub.publish(odom)
-        self.tf_pub.publish(transport.message(
-            "mujoco_sim/msg/PoseV", header=header, name=[self.child_frame_id],
-            parent=[self.frame_id], pose=[pose]))
+        if odom_wanted:
+            self.odom_pub.publish(odom)
+        if tf_wanted:
+            self.tf_pub.publish(transport.message(
+                "mujoco_sim/msg/PoseV", header=header, name=[self.child_frame_id],
+                parent=[self.frame_id], pose=[pose]))
 
     def close(self) -> None:
         for item in (self.odom_pub, self.tf_pub, self.cmd_sub):

@@ -47,6 +47,8 @@ class JointStatePublisher(Plugin):
         if now + 1e-9 < self.next_update:
             return
         self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
+        if not self.publisher.get_subscription_count():
+            return
         transport = self.sim.transport
         self.publisher.publish(transport.message(
             "mujoco_sim/msg/Model", header=transport.header(now, ""), name=self.entity.name,

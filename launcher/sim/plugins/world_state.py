@@ -29,13 +29,21 @@ class WorldState(Plugin):
         if now + 1e-9 < self.next_update or self.rate <= 0:
             return
         self.next_update = now + 1.0 / self.rate
+        want_poses = self.poses.get_subscription_count() > 0
+        want_states = self.states.get_subscription_count() > 0
+        if not (want_poses or want_states):
+            return
         names, positions, quats = self.sim.poses()
         transport = self.sim.transport
         poses = [transport.pose(p[0], p[1], p[2], (q[1], q[2], q[3], q[0]))
                  for p, q in zip(positions, quats, strict=True)]
         header = transport.header(now, "world")
-        self.poses.publish(transport.message("mujoco_sim/msg/PoseV", header=header, name=names,
-                                             parent=["world"] * len(names), pose=poses))
+        if want_poses:
+            self.poses.publish(transport.message("mujoco_sim/msg/PoseV", header=header,
+                                                 name=names, parent=["world"] * len(names),
+                                                 pose=poses))
+        if not want_states:
+            return
         twists = []
         for name in names:
             entity = self.sim.entities[name]
