@@ -77,6 +77,7 @@ class DiffDrive(Plugin):
         prefix = f"{self.entity.name}/"
         self.left_q = [int(model.jnt_qposadr[model.joint(prefix + j).id]) for j in self.left]
         self.right_q = [int(model.jnt_qposadr[model.joint(prefix + j).id]) for j in self.right]
+        self.wheels_q = self.left_q + self.right_q
         self.left_a = [model.actuator(f"{prefix}diff_drive_{j}").id for j in self.left]
         self.right_a = [model.actuator(f"{prefix}diff_drive_{j}").id for j in self.right]
         if not self.kv:  # each wheel carries its share of the robot's mass
@@ -122,6 +123,8 @@ class DiffDrive(Plugin):
             self.target = (0.0, 0.0)
         dt = max(now - getattr(self, "_control_time", now), 0.0)
         self._control_time = now
+        if (self.v, self.w) == self.target:
+            return  # the wheels already have this command
         lim = self.limits
         self.v = _approach(self.v, self.target[0], dt, lim["min_linear_acceleration"],
                            lim["max_linear_acceleration"])
@@ -154,9 +157,10 @@ class DiffDrive(Plugin):
         self.next_update = min(following)
 
     def _integrate(self, data: Any) -> None:
-        qpos = data.qpos
-        left = sum(qpos[i] for i in self.left_q) / len(self.left_q)
-        right = sum(qpos[i] for i in self.right_q) / len(self.right_q)
+        values = data.qpos[self.wheels_q].tolist()  # left wheels, then right wheels
+        count = len(self.left_q)
+        left = sum(values[:count]) / count
+        right = sum(values[count:]) / (len(values) - count)
         if self.previous is None:
             self.previous = (left, right)
             self.last_odom_time = data.time
