@@ -66,6 +66,19 @@ result["clock_matches_steps"] = all(abs(sim_time(c) - c.iterations * 0.001) < 1e
                                     for c in clocks)
 call(pause=False, reset_all=True)
 result["after_reset"] = sim_time(clocks[-1])
+states = []
+node.create_subscription("mujoco_sim/msg/ModelStates", "/world/empty/model_states",
+                         states.append)
+set_pose = node.create_client("mujoco_sim/srv/SetPose", "/world/empty/set_pose")
+moved = set_pose.call(node.message("mujoco_sim/srv/SetPose_Request", name="bot",
+                                   pose={"position": {"x": 4.0, "y": 2.0, "z": 0.06}}))
+node.spin(0.3)
+result["set_pose"] = [moved.success, states[-1].pose[0].position.x]
+remove = node.create_client("mujoco_sim/srv/Remove", "/world/empty/remove")
+gone = remove.call(node.message("mujoco_sim/srv/Remove_Request", name="bot"))
+again = remove.call(node.message("mujoco_sim/srv/Remove_Request", name="bot"))
+node.spin(0.3)
+result["remove"] = [gone.success, again.success, again.message, list(states[-1].name)]
 print("RESULT", json.dumps(result), flush=True)
 node.destroy_node()
 """
@@ -122,6 +135,9 @@ def test_the_sim_serves_control_clock_and_drives_a_spawned_robot(sim_ws):
     assert result["odom_moved"] > 0.3  # ~0.5 m/s for 2 s, commanded over the bus
     assert result["monotonic"] and result["clock_matches_steps"]
     assert result["after_reset"] < 0.5
+    assert result["set_pose"][0] and result["set_pose"][1] == pytest.approx(4.0, abs=0.05)
+    assert result["remove"][:2] == [True, False] and "no entity named 'bot'" in \
+        result["remove"][2] and result["remove"][3] == []
     assert stop(proc) == 130
     out = sim_ws.output("launch.out")
     assert "world 'empty'" in out and "process has finished cleanly" in out or \
@@ -162,6 +178,16 @@ launch:
                                 cwd=sim_ws.root, env=sim_ws.env, capture_output=True,
                                 text=True, timeout=60)
         assert params.returncode == 0 and "spawned 'third'" in params.stdout, params.stderr
+        inline = subprocess.run(create + ["-name", "inline", "-x", "4", "-string",
+                                          Path(ROBOT).read_text()], cwd=sim_ws.root,
+                                env=sim_ws.env, capture_output=True, text=True, timeout=60)
+        assert inline.returncode == 0 and "spawned 'inline'" in inline.stdout, inline.stderr
+        from_param = subprocess.run(create + ["-param", "robot_description", "-name", "p",
+                                              "-x", "6", "--ros-args", "-p",
+                                              f"robot_description:={Path(ROBOT).read_text()}"],
+                                    cwd=sim_ws.root, env=sim_ws.env, capture_output=True,
+                                    text=True, timeout=60)
+        assert from_param.returncode == 0, from_param.stderr
         states = sim_ws.run("topic", "echo", "/world/empty/model_states", "--once",
                             "--field", "name")
         assert "my_robot" in states.stdout and "third" in states.stdout, states.stderr

@@ -377,6 +377,23 @@ def test_a_position_controller_moves_an_arm_joint_and_an_unknown_plugin_is_logge
     assert angle == pytest.approx(1.2, abs=0.02)
 
 
+WHEEL = """<robot name="spinner">
+  <link name="base"><inertial><mass value="5"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="disc"><inertial><mass value="0.5"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="spin" type="continuous"><parent link="base"/><child link="disc"/><axis xyz="0 0 1"/></joint>
+  <mujoco><plugin filename="joint_velocity_controller"><joint_name>spin</joint_name>
+    <p_gain>5</p_gain><topic>spin_speed</topic></plugin></mujoco>
+</robot>"""
+
+
+def test_the_mujoco_tag_form_and_a_velocity_controller(world):
+    world.spawn(world.descriptions.from_string(WHEEL), "spinner", [0, 0, 0.5], IDENTITY)
+    world.transport.callbacks["/model/spinner/spin_speed"](SimpleNamespace(data=3.0))
+    world.step(2000)
+    speed = world.data.qvel[world.model.joint("spinner/spin").dofadr[0]]
+    assert speed == pytest.approx(3.0, rel=0.02)
+
+
 PLUGIN = '''
 from launcher.sim.plugins import Plugin
 
