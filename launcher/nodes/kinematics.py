@@ -1,0 +1,167 @@
+"""A URDF's joint tree and its forward kinematics, every joint in one vectorised pass.
+
+`Tree.parse(text)` checks the URDF (XML, one root, no loops, joints naming real links) and
+keeps each joint's origin, axis, type and mimic. `Tree.transforms(positions)` gives, for the
+moving joints, the parent → child transform (translation, quaternion x y z w) as numpy arrays,
+as robot_state_publisher publishes them on /tf. Fixed joints' transforms are constant
+(`Tree.fixed`). Floating and planar joints are skipped, as ROS's robot_state_publisher does.
+"""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from launcher.errors import LaunchError
+
+MOVING = ("revolute", "continuous", "prismatic")
+
+
+@dataclass
+class Joint:
+    name: str
+    kind: str
+    parent: str
+    child: str
+    xyz: tuple[float, float, float]
+    quat: tuple[float, float, float, float]  # x y z w
+    axis: tuple[float, float, float]
+    mimic: tuple[str, float, float] | None = None  # (master, multiplier, offset)
+
+
+@dataclass
+class Tree:
+    name: str
+    root: str
+    joints: list[Joint]
+    moving: list[Joint] = field(default_factory=list)
+    fixed: list[Joint] = field(default_factory=list)
+
+    @classmethod
+    def parse(cls, text: str, label: str = "robot_description") -> Tree:
+        if not text or not text.strip():
+            raise LaunchError(f"{label} is empty: give the URDF (e.g. from $(command 'xacro "
+                              "robot.xacro'))")
+        try:
+            robot = ET.fromstring(text)
+        except ET.ParseError as exc:
+            line, column = exc.position
+            raise LaunchError(f"{label}:{line}:{column + 1}: the URDF does not parse: "
+                              f"{str(exc).split(':')[0]}") from None
+        if robot.tag != "robot":
+            raise LaunchError(f"{label}: the top element is <{robot.tag}>, expected <robot>")
+        links = [link.get("name", "") for link in robot.findall("link")]
+        joints = [_joint(element, links, label) for element in robot.findall("joint")]
+        parents: dict[str, str] = {}
+        for joint in joints:
+            if joint.child in parents:
+                raise LaunchError(f"{label}: link '{joint.child}' has two parent joints "
+                                  f"('{parents[joint.child]}' and '{joint.name}')")
+            parents[joint.child] = joint.name
+        roots = [link for link in links if link not in parents]
+        if len(roots) != 1:
+            reason = "no root link: the joints form a loop" if not roots else \
+                f"{len(roots)} root links ({', '.join(roots)}); a URDF is one tree"
+            raise LaunchError(f"{label}: {reason}")
+        names = {j.name for j in joints}
+        for joint in joints:
+            if joint.mimic and joint.mimic[0] not in names:
+                raise LaunchError(f"{label}: joint '{joint.name}' mimics '{joint.mimic[0]}', "
+                                  "which is not a joint")
+        tree = cls(robot.get("name", ""), roots[0], joints)
+        tree.moving = [j for j in joints if j.kind in MOVING]
+        tree.fixed = [j for j in joints if j.kind == "fixed"]
+        tree._arrays()
+        return tree
+
+    def _arrays(self) -> None:
+        moving = self.moving
+        self.index = {j.name: i for i, j in enumerate(moving)}
+        self.origin_xyz = np.array([j.xyz for j in moving], dtype=float).reshape(-1, 3)
+        self.origin_quat = np.array([j.quat for j in moving], dtype=float).reshape(-1, 4)
+        axes = np.array([j.axis for j in moving], dtype=float).reshape(-1, 3)
+        norms = np.linalg.norm(axes, axis=1, keepdims=True)
+        self.axis = np.divide(axes, norms, out=np.zeros_like(axes), where=norms > 0)
+        self.prismatic = np.array([j.kind == "prismatic" for j in moving], dtype=bool)
+        self.axis_in_parent = _rotate(self.origin_quat, self.axis)  # for prismatic motion
+
+    def transforms(self, positions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(translations n×3, quaternions n×4 x y z w) of the moving joints at `positions`."""
+        q = np.asarray(positions, dtype=float)
+        angle = np.where(self.prismatic, 0.0, q) / 2
+        motion = np.concatenate([self.axis * np.sin(angle)[:, None], np.cos(angle)[:, None]],
+                                axis=1)
+        quat = _multiply(self.origin_quat, motion)
+        slide = np.where(self.prismatic, q, 0.0)[:, None]
+        translation = self.origin_xyz + self.axis_in_parent * slide
+        return translation, quat
+
+
+def _joint(element: ET.Element, links: list[str], label: str) -> Joint:
+    name = element.get("name", "")
+    kind = element.get("type", "")
+    if kind not in (*MOVING, "fixed", "floating", "planar"):
+        raise LaunchError(f"{label}: joint '{name}' has type '{kind}'; expected revolute, "
+                          "continuous, prismatic, fixed, floating or planar")
+    parent, child = element.find("parent"), element.find("child")
+    if parent is None or child is None:
+        raise LaunchError(f"{label}: joint '{name}' needs <parent link=…> and <child link=…>")
+    for end in (parent.get("link", ""), child.get("link", "")):
+        if end not in links:
+            raise LaunchError(f"{label}: joint '{name}' names link '{end}', which is not "
+                              "defined")
+    origin = element.find("origin")
+    xyz = _vector(origin.get("xyz") if origin is not None else None, (0.0, 0.0, 0.0), name)
+    rpy = _vector(origin.get("rpy") if origin is not None else None, (0.0, 0.0, 0.0), name)
+    axis_element = element.find("axis")
+    axis = _vector(axis_element.get("xyz") if axis_element is not None else None,
+                   (1.0, 0.0, 0.0), name)
+    mimic_element = element.find("mimic")
+    mimic = None
+    if mimic_element is not None:
+        mimic = (mimic_element.get("joint", ""), float(mimic_element.get("multiplier", "1")),
+                 float(mimic_element.get("offset", "0")))
+    return Joint(name, kind, parent.get("link", ""), child.get("link", ""), xyz,
+                 rpy_quaternion(*rpy), axis, mimic)
+
+
+def _vector(text: str | None, default: tuple[float, float, float],
+            joint: str) -> tuple[float, float, float]:
+    if text is None:
+        return default
+    try:
+        values = tuple(float(v) for v in text.split())
+    except ValueError:
+        values = ()
+    if len(values) != 3:
+        raise LaunchError(f"joint '{joint}': expected three numbers, got '{text}'")
+    return values  # type: ignore[return-value]
+
+
+def rpy_quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
+    """URDF's fixed-axis roll, pitch, yaw as a quaternion (x, y, z, w)."""
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return (sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+            cr * cp * sy - sr * sp * cy, cr * cp * cy + sr * sp * sy)
+
+
+def _multiply(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise quaternion products a ⊗ b (x y z w)."""
+    ax, ay, az, aw = a.T
+    bx, by, bz, bw = b.T
+    return np.stack([aw * bx + ax * bw + ay * bz - az * by,
+                     aw * by - ax * bz + ay * bw + az * bx,
+                     aw * bz + ax * by - ay * bx + az * bw,
+                     aw * bw - ax * bx - ay * by - az * bz], axis=1)
+
+
+def _rotate(quat: np.ndarray, vectors: np.ndarray) -> np.ndarray:
+    """Row-wise rotation of vectors by quaternions (x y z w)."""
+    u, w = quat[:, :3], quat[:, 3:4]
+    t = 2 * np.cross(u, vectors)
+    return vectors + w * t + np.cross(u, t)

@@ -1,0 +1,116 @@
+"""robot_state_publisher's kinematics and /tf packing, against hand-computed transforms."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from launcher.bus.types import registry
+from launcher.errors import LaunchError
+from launcher.nodes.kinematics import Tree
+from launcher.nodes.robot_state_publisher import _string, pack_tf
+
+CHAIN = """<robot name="arm">
+  <link name="base"/><link name="l1"/><link name="l2"/><link name="l3"/><link name="tool"/>
+  <link name="finger_a"/><link name="finger_b"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/>
+    <origin xyz="0 0 1" rpy="0 0 0"/><axis xyz="0 0 1"/></joint>
+  <joint name="j2" type="continuous"><parent link="l1"/><child link="l2"/>
+    <origin xyz="0.5 0 0" rpy="0 0 1.5707963267948966"/><axis xyz="0 1 0"/></joint>
+  <joint name="j3" type="prismatic"><parent link="l2"/><child link="l3"/>
+    <origin xyz="0.2 0.1 0" rpy="0.7853981633974483 0 0"/><axis xyz="1 0 0"/></joint>
+  <joint name="tool_mount" type="fixed"><parent link="l3"/><child link="tool"/>
+    <origin xyz="0 0 0.05" rpy="0 0 0"/></joint>
+  <joint name="fa" type="prismatic"><parent link="tool"/><child link="finger_a"/>
+    <axis xyz="0 1 0"/></joint>
+  <joint name="fb" type="prismatic"><parent link="tool"/><child link="finger_b"/>
+    <axis xyz="0 1 0"/><mimic joint="fa" multiplier="-1" offset="0.01"/></joint>
+</robot>"""
+
+
+def rot_x(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
+
+
+def rot_y(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+
+
+def rot_z(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def homogeneous(rotation, translation):
+    matrix = np.eye(4)
+    matrix[:3, :3], matrix[:3, 3] = rotation, translation
+    return matrix
+
+
+def from_quaternion(q):
+    x, y, z, w = q
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def test_forward_kinematics_matches_a_hand_computed_chain():
+    tree = Tree.parse(CHAIN)
+    q1, q2, q3 = 0.3, -1.1, 0.25
+    positions = np.zeros(len(tree.moving))
+    positions[[tree.index["j1"], tree.index["j2"], tree.index["j3"]]] = q1, q2, q3
+    translation, quat = tree.transforms(positions)
+    chain = np.eye(4)
+    for name in ("j1", "j2", "j3"):
+        i = tree.index[name]
+        chain = chain @ homogeneous(from_quaternion(quat[i]), translation[i])
+    expected = (homogeneous(rot_z(q1), [0, 0, 1])
+                @ homogeneous(rot_z(math.pi / 2) @ rot_y(q2), [0.5, 0, 0])
+                @ homogeneous(rot_x(math.pi / 4), [0.2, 0.1, 0])
+                @ homogeneous(np.eye(3), [q3, 0, 0]))
+    assert np.abs(chain - expected).max() < 1e-9
+    assert np.linalg.norm(quat, axis=1) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_fixed_joints_are_static_and_mimic_joints_are_known():
+    tree = Tree.parse(CHAIN)
+    assert [j.name for j in tree.fixed] == ["tool_mount"]
+    assert tree.root == "base"
+    fb = next(j for j in tree.moving if j.name == "fb")
+    assert fb.mimic == ("fa", -1.0, 0.01)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("", "robot_description is empty"),
+    ("<robot name='r'><link name='a'>", "robot_description:1:"),
+    ("<robot name='r'><link name='a'/><link name='b'/></robot>", "2 root links (a, b)"),
+    ("<robot name='r'><link name='a'/><link name='b'/><link name='c'/>"
+     "<joint name='j1' type='fixed'><parent link='a'/><child link='c'/></joint>"
+     "<joint name='j2' type='fixed'><parent link='b'/><child link='c'/></joint></robot>",
+     "link 'c' has two parent joints ('j1' and 'j2')"),
+    ("<robot name='r'><link name='a'/><link name='b'/>"
+     "<joint name='j1' type='fixed'><parent link='b'/><child link='a'/></joint>"
+     "<joint name='j2' type='fixed'><parent link='a'/><child link='b'/></joint></robot>",
+     "no root link: the joints form a loop"),
+    ("<robot name='r'><link name='a'/><link name='b'/><joint name='j' type='hinge'>"
+     "<parent link='a'/><child link='b'/></joint></robot>", "type 'hinge'"),
+])
+def test_bad_urdfs_are_clear_errors(text, expected):
+    with pytest.raises(LaunchError) as error:
+        Tree.parse(text)
+    assert expected in str(error.value)
+
+
+def test_packed_tf_is_the_cdr_rosbags_makes():
+    payload = pack_tf(5, 7, [_string("base"), _string("a_longer_name")],
+                      [_string("x"), _string("child2")],
+                      np.array([[1.0, 2, 3], [4, 5, 6]]), np.array([[0, 0, 0, 1.0], [0, 0, 1, 0]]))
+    message = registry().deserialize(payload, "tf2_msgs/msg/TFMessage")
+    second = message.transforms[1]
+    assert second.header.frame_id == "a_longer_name" and second.child_frame_id == "child2"
+    assert (second.transform.translation.x, second.transform.rotation.z) == (4.0, 1.0)
+    assert bytes(registry().serialize(message, "tf2_msgs/msg/TFMessage")) == payload
