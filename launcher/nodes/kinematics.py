@@ -85,18 +85,24 @@ class Tree:
         axes = np.array([j.axis for j in moving], dtype=float).reshape(-1, 3)
         norms = np.linalg.norm(axes, axis=1, keepdims=True)
         self.axis = np.divide(axes, norms, out=np.zeros_like(axes), where=norms > 0)
-        self.prismatic = np.array([j.kind == "prismatic" for j in moving], dtype=bool)
-        self.axis_in_parent = _rotate(self.origin_quat, self.axis)  # for prismatic motion
+        prismatic = np.array([j.kind == "prismatic" for j in moving], dtype=bool)
+        # A revolute joint's rotation is origin ⊗ (axis·sin(q/2), cos(q/2)), which is linear in
+        # sin and cos: origin ⊗ (axis, 0) · sin + origin · cos. A prismatic joint moves its
+        # child along the axis turned into the parent frame. Both parts are fixed per joint.
+        self.half = np.where(prismatic, 0.0, 0.5)
+        self.turn = _multiply(self.origin_quat,
+                              np.concatenate([self.axis, np.zeros((len(moving), 1))], axis=1))
+        self.slide = _rotate(self.origin_quat, self.axis) * prismatic[:, None]
 
-    def transforms(self, positions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(translations n×3, quaternions n×4 x y z w) of the moving joints at `positions`."""
+    def transforms(self, positions: np.ndarray,
+                   rows: np.ndarray | slice = slice(None)) -> tuple[np.ndarray, np.ndarray]:
+        """(translations n×3, quaternions n×4 x y z w) of the moving joints `rows` (all by
+        default) at `positions` (one per row)."""
         q = np.asarray(positions, dtype=float)
-        angle = np.where(self.prismatic, 0.0, q) / 2
-        motion = np.concatenate([self.axis * np.sin(angle)[:, None], np.cos(angle)[:, None]],
-                                axis=1)
-        quat = _multiply(self.origin_quat, motion)
-        slide = np.where(self.prismatic, q, 0.0)[:, None]
-        translation = self.origin_xyz + self.axis_in_parent * slide
+        half = q * self.half[rows]
+        quat = self.turn[rows] * np.sin(half)[:, None] + \
+            self.origin_quat[rows] * np.cos(half)[:, None]
+        translation = self.origin_xyz[rows] + self.slide[rows] * q[:, None]
         return translation, quat
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import struct
 import sys
+import threading
 from typing import Any
 
 import numpy as np
@@ -27,32 +28,99 @@ from launcher.nodes.kinematics import Tree
 _HEAD = b"\x00\x01\x00\x00"
 _STAMP = struct.Struct("<iI")
 _SEVEN = struct.Struct("<7d")
+_COUNT = struct.Struct("<I")
 
 
 def _string(text: str) -> bytes:
     data = text.encode() + b"\0"
-    return struct.pack("<I", len(data)) + data
+    return _COUNT.pack(len(data)) + data
 
 
-def pack_tf(sec: int, nanosec: int, parents: list[bytes], children: list[bytes],
+class TfLayout:
+    """A tf2_msgs/msg/TFMessage's CDR bytes for a fixed list of (parent, child) frames, with
+    the places of its stamps and numbers: packing one is a copy and a few `pack_into`s.
+
+    At 1 kHz with 20 joints this is the node's main cost; building message objects for a
+    generic serializer costs several times more."""
+
+    def __init__(self, parents: list[str], children: list[str]) -> None:
+        out = bytearray(_HEAD)
+        out += _COUNT.pack(len(parents))
+        self.stamps: list[int] = []
+        self.numbers: list[int] = []
+        for parent, child in zip(parents, children, strict=True):
+            out += b"\0" * (-(len(out) - 4) % 4)
+            self.stamps.append(len(out))
+            out += bytes(8)
+            out += _string(parent)
+            out += b"\0" * (-(len(out) - 4) % 4)
+            out += _string(child)
+            out += b"\0" * (-(len(out) - 4) % 8)
+            self.numbers.append(len(out))
+            out += bytes(56)
+        out += b"\0" * (-(len(out) - 4) % 8)  # whole 8-byte words after the CDR header
+        self.template = bytes(out)
+        # Word indices (in the 8-byte words after the header) of each transform's numbers,
+        # and of each stamp in 4-byte words: one numpy assignment writes them all.
+        numbers = (np.array(self.numbers, dtype=np.intp) - 4) // 8
+        self._number_words = (numbers[:, None] + np.arange(7)).ravel()
+        self._stamp_words = (np.array(self.stamps, dtype=np.intp) - 4) // 4
+
+    def pack(self, sec: int, nanosec: int, translations: np.ndarray, quats: np.ndarray) -> bytes:
+        out = bytearray(self.template)
+        body = np.frombuffer(out, dtype=np.uint8)[4:]
+        body.view("<f8")[self._number_words] = np.concatenate([translations, quats],
+                                                                axis=1).ravel()
+        words = body.view("<u4")
+        words[self._stamp_words] = sec & 0xFFFFFFFF
+        words[self._stamp_words + 1] = nanosec
+        return bytes(out)
+
+
+class JointStateReader:
+    """Reads stamp, names and positions from sensor_msgs/msg/JointState CDR without building
+    a message; the names, which rarely change, are decoded once and then only compared."""
+
+    def __init__(self) -> None:
+        self._block = b""
+        self._names: list[str] = []
+
+    def read(self, payload: bytes) -> tuple[int, int, list[str], np.ndarray]:
+        if payload[1] != 1:  # big-endian CDR: rare; let the generic reader do it
+            from launcher.bus.types import registry
+
+            message = registry().deserialize(payload, "sensor_msgs/msg/JointState")
+            return (message.header.stamp.sec, message.header.stamp.nanosec, list(message.name),
+                    np.asarray(message.position, dtype=float))
+        data = memoryview(payload)[4:]
+        sec, nanosec = _STAMP.unpack_from(data, 0)
+        position = 12 + _COUNT.unpack_from(data, 8)[0]  # past frame_id
+        position += -position % 4
+        count = _COUNT.unpack_from(data, position)[0]
+        start = position = position + 4
+        block = self._block
+        if count == len(self._names) and data[start:start + len(block)] == block:
+            position = start + len(block)
+            names = self._names
+        else:
+            names = []
+            for _ in range(count):
+                position += -position % 4
+                size = _COUNT.unpack_from(data, position)[0]
+                names.append(bytes(data[position + 4:position + 3 + size]).decode())
+                position += 4 + size
+            self._block, self._names = bytes(data[start:position]), names
+        position += -position % 4
+        values = _COUNT.unpack_from(data, position)[0]
+        position += 4
+        position += -position % 8
+        return sec, nanosec, names, np.frombuffer(data, "<f8", values, position)
+
+
+def pack_tf(sec: int, nanosec: int, parents: list[str], children: list[str],
             translations: np.ndarray, quats: np.ndarray) -> bytes:
-    """tf2_msgs/msg/TFMessage as CDR; `parents`/`children` are `_string()`-encoded names.
-
-    Packed directly: at 1 kHz with 20 joints this is the node's main cost, and building the
-    message objects for a generic serializer costs several times more."""
-    out = bytearray(_HEAD)
-    out += struct.pack("<I", len(parents))
-    stamp = _STAMP.pack(sec, nanosec)
-    values = np.concatenate([translations, quats], axis=1).tolist()
-    for parent, child, numbers in zip(parents, children, values, strict=True):
-        out += b"\0" * (-(len(out) - 4) % 4)
-        out += stamp
-        out += parent
-        out += b"\0" * (-(len(out) - 4) % 4)
-        out += child
-        out += b"\0" * (-(len(out) - 4) % 8)
-        out += _SEVEN.pack(*numbers)
-    return bytes(out)
+    """tf2_msgs/msg/TFMessage as CDR (see TfLayout)."""
+    return TfLayout(parents, children).pack(sec, nanosec, translations, quats)
 
 
 class RobotStatePublisher:
@@ -81,17 +149,20 @@ class RobotStatePublisher:
                                                 LATCHED)
         self.tf_pub = node.create_publisher("tf2_msgs/msg/TFMessage", "/tf", QoS(depth=100))
         self._load(self.tree, str(description))
-        node.create_subscription("sensor_msgs/msg/JointState", "joint_states", self.on_joints,
-                                 QoS(depth=10, reliable=False))
+        self.reader = JointStateReader()
+        # joint_states is handled on Zenoh's thread (at 1 kHz the hand-over to the executor
+        # cost more than the work); a lock keeps it apart from parameter changes.
+        self._lock = threading.Lock()
+        node.create_subscription("sensor_msgs/msg/JointState", "joint_states", self.on_payload,
+                                 QoS(depth=10, reliable=False), raw=True, inline=True)
         node.add_on_set_parameters_callback(self.on_parameter)
 
     def _load(self, tree: Tree, description: str) -> None:
         self.tree = tree
-        self._names = [_string(self.prefix + j.parent) for j in tree.moving]
-        self._children = [_string(self.prefix + j.child) for j in tree.moving]
         self._mimics = [(i, tree.index[j.mimic[0]], j.mimic[1], j.mimic[2])
                         for i, j in enumerate(tree.moving)
                         if j.mimic and j.mimic[0] in tree.index]
+        self._plans: dict[tuple[str, ...], Any] = {}
         self._warned: set[str] = set()
         self._last_stamp: float | None = None
         self.description_pub.publish(self.node.message("std_msgs/msg/String", data=description))
@@ -101,8 +172,8 @@ class RobotStatePublisher:
             quat = np.array([j.quat for j in fixed], dtype=float)
             sec, nanosec = divmod(self.node.get_clock().now().nanoseconds, 1_000_000_000)
             self.static_pub.publish_raw(pack_tf(
-                sec, nanosec, [_string(self.prefix + j.parent) for j in fixed],
-                [_string(self.prefix + j.child) for j in fixed], xyz, quat))
+                sec, nanosec, [self.prefix + j.parent for j in fixed],
+                [self.prefix + j.child for j in fixed], xyz, quat))
         self.log.info(f"robot '{tree.name}': {len(tree.moving)} moving joints, {len(fixed)} "
                       f"fixed, root '{tree.root}'")
 
@@ -114,15 +185,26 @@ class RobotStatePublisher:
         except LaunchError as exc:
             self.log.error(f"the new robot_description is not used: {exc}")
             return
-        self._load(tree, str(value))
+        with self._lock:
+            self._load(tree, str(value))
 
-    def on_joints(self, message: Any) -> None:
-        names, positions = message.name, message.position
+    def on_payload(self, payload: bytes) -> None:
+        try:
+            sec, nanosec, names, positions = self.reader.read(payload)
+        except (struct.error, ValueError, IndexError, UnicodeDecodeError):
+            self.log.warning("dropping a joint_states message that is not a valid "
+                             "sensor_msgs/msg/JointState", once=True)
+            return
+        with self._lock:
+            self.on_joints(sec, nanosec, names, positions)
+
+    def on_joints(self, sec: int, nanosec: int, names: list[str],
+                  positions: np.ndarray) -> None:
         if len(names) != len(positions):
             self.log.warning(f"dropping a joint_states message: {len(names)} names but "
                              f"{len(positions)} positions")
             return
-        stamp = message.header.stamp.sec + message.header.stamp.nanosec * 1e-9
+        stamp = sec + nanosec * 1e-9
         if not self.ignore_timestamp:
             if self._last_stamp is not None and stamp < self._last_stamp:
                 self._last_stamp = None  # time went backwards: a sim reset
@@ -130,32 +212,52 @@ class RobotStatePublisher:
                     stamp - self._last_stamp < 1.0 / self.frequency - 1e-9:
                 return
             self._last_stamp = stamp
+        key = tuple(names)
+        plan = self._plans.get(key)
+        if plan is None:
+            plan = self._plans[key] = self._plan(names)
+        take, rows, mimics, layout = plan
+        if layout is None:
+            return
+        values = positions[take]
+        if mimics:
+            values = np.concatenate([values, values[mimics[0]] * mimics[1] + mimics[2]])
+        translation, quat = self.tree.transforms(values, rows)
+        self.tf_pub.publish_raw(layout.pack(sec, nanosec, translation, quat))
+
+    def _plan(self, names: list[str]) -> tuple[Any, Any, Any, TfLayout | None]:
+        """For one list of joint names: which positions to use, for which joints (mimics
+        appended), and the /tf layout. Unknown names are warned about once."""
         index = self.tree.index
-        chosen: list[int] = []
-        values: list[float] = []
-        for name, value in zip(names, positions, strict=True):
-            i = index.get(name)
-            if i is None:
+        take, rows = [], []
+        for position, name in enumerate(names):
+            row = index.get(name)
+            if row is None:
                 if name not in self._warned:
                     self._warned.add(name)
                     self.log.warning(f"joint '{name}' in joint_states is not a moving joint of "
                                      f"robot '{self.tree.name}' (warned once)")
                 continue
-            chosen.append(i)
-            values.append(value)
-        for i, master, multiplier, offset in self._mimics:
-            if master in chosen:
-                chosen.append(i)
-                values.append(values[chosen.index(master)] * multiplier + offset)
-        if not chosen:
-            return
-        full = np.zeros(len(self.tree.moving))
-        full[chosen] = values
-        translation, quat = self.tree.transforms(full)
-        self.tf_pub.publish_raw(pack_tf(
-            message.header.stamp.sec, message.header.stamp.nanosec,
-            [self._names[i] for i in chosen], [self._children[i] for i in chosen],
-            translation[chosen], quat[chosen]))
+            take.append(position)
+            rows.append(row)
+        masters, multipliers, offsets = [], [], []
+        for row, master, multiplier, offset in self._mimics:
+            if master in rows and row not in rows:
+                masters.append(rows.index(master))
+                multipliers.append(multiplier)
+                offsets.append(offset)
+                rows.append(row)
+        mimics = (np.array(masters), np.array(multipliers), np.array(offsets)) if masters \
+            else None
+        if not rows:
+            return np.array(take, dtype=int), np.array(rows, dtype=int), mimics, None
+        moving = self.tree.moving
+        layout = TfLayout([self.prefix + moving[r].parent for r in rows],
+                          [self.prefix + moving[r].child for r in rows])
+        selected: np.ndarray | slice = np.array(rows, dtype=int)
+        if rows == list(range(len(moving))):
+            selected = slice(None)  # every joint, in order: no gathering
+        return np.array(take, dtype=int), selected, mimics, layout
 
 
 def main() -> int:
