@@ -96,10 +96,19 @@ class Publisher:
         self._token = node._announce(keys.PUBLISHER, topic, self.type_name, qos)
         # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
         self._matching = self._publisher.matching_status.matching
+        self._watchers: list[Callable[[bool], None]] = []
         self._listener = self._publisher.declare_matching_listener(self._on_matching)
 
     def _on_matching(self, status: Any) -> None:
         self._matching = status.matching
+        for watcher in self._watchers:
+            self._node._enqueue(watcher, status.matching)
+
+    def watch_subscribers(self, callback: Callable[[bool], None]) -> None:
+        """Call `callback(matching)` on the executor whenever subscribers come or all go
+        (and once now); lazy bridges subscribe to their source only while someone listens."""
+        self._watchers.append(callback)
+        self._node._enqueue(callback, self._matching)
 
     def publish(self, message: Any) -> None:
         self.publish_raw(registry().serialize(message, self.type_name))
@@ -129,13 +138,16 @@ class Publisher:
 
 class Subscription:
     def __init__(self, node: Node, type_name: str, topic: str, callback: Callable[[Any], None],
-                 qos: QoS, raw: bool = False, inline: bool = False) -> None:
+                 qos: QoS, raw: bool = False, inline: bool = False,
+                 remote_only: bool = False) -> None:
         types = registry()
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._node, self._callback = topic, qos, node, callback
         self._raw, self._inline = raw, inline
         key = keys.topic_key(DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
-        self._subscriber = node.session.declare_subscriber(key, self._on_sample)
+        self._subscriber = node.session.declare_subscriber(
+            key, self._on_sample,
+            allowed_origin=zenoh.Locality.REMOTE if remote_only else zenoh.Locality.ANY)
         self._token = node._announce(keys.SUBSCRIPTION, topic, self.type_name, qos)
         self._warned = False
         if qos.transient_local:  # fetch what latched publishers hold
@@ -255,13 +267,14 @@ class Node:
 
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
                             qos: QoS | int = 10, raw: bool = False,
-                            inline: bool = False) -> Subscription:
+                            inline: bool = False, remote_only: bool = False) -> Subscription:
         """`raw=True` hands the callback the CDR bytes instead of a message. `inline=True`
         runs the callback on Zenoh's delivery thread instead of the executor: no hand-over
         between threads (it halves the CPU of a 1 kHz stream), but the callback must be
-        thread-safe against the node's other callbacks and must not block."""
+        thread-safe against the node's other callbacks and must not block. `remote_only=True`
+        ignores what this process publishes (a two-way bridge must not hear itself)."""
         subscription = Subscription(self, type_name, self.resolve(topic), callback, qos_of(qos),
-                                    raw, inline)
+                                    raw, inline, remote_only)
         self._entities.append(subscription)
         return subscription
 

@@ -1,0 +1,170 @@
+"""parameter_bridge's configuration: ros_gz's bridge.yaml schema and its command-line form.
+
+YAML: a list of entries. Topics: `topic_name` (both sides) or `ros_topic_name` /
+`gz_topic_name` (either alone names both), `ros_type_name`, `gz_type_name` (both required),
+`direction` (BIDIRECTIONAL, GZ_TO_ROS, ROS_TO_GZ), `lazy`, `subscriber_queue`,
+`publisher_queue`. Services: `service_name`, `ros_type_name`, `gz_req_type_name`,
+`gz_rep_type_name`. `sim_*` keys are accepted for `gz_*` ones. The file may be a jinja2
+template, rendered with the node's parameters. A bad entry is reported with its file, line
+and number and skipped; an empty file or a top level that is not a list is an error.
+
+Command line: `topic@ROS_TYPE@SIM_TYPE` (both ways), `[` (sim → ROS), `]` (ROS → sim); a ROS
+type with `/srv/` makes a service.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from launcher.errors import LaunchError, did_you_mean
+
+DIRECTIONS = ("BIDIRECTIONAL", "GZ_TO_ROS", "ROS_TO_GZ")
+TOPIC_KEYS = {"topic_name", "ros_topic_name", "gz_topic_name", "ros_type_name", "gz_type_name",
+              "direction", "lazy", "subscriber_queue", "publisher_queue"}
+SERVICE_KEYS = {"service_name", "ros_type_name", "gz_req_type_name", "gz_rep_type_name"}
+
+
+@dataclass
+class Entry:
+    ros_name: str
+    sim_name: str
+    ros_type: str
+    sim_type: str  # a service: the sim's service type
+    direction: str = "BIDIRECTIONAL"
+    lazy: bool = False
+    subscriber_queue: int = 10
+    publisher_queue: int = 10
+    service: bool = False
+    where: str = ""
+
+
+def _spelling(raw: Mapping[str, Any]) -> dict[str, Any]:
+    """`sim_topic_name` and friends are `gz_topic_name` and friends."""
+    return {(f"gz_{key[4:]}" if key.startswith("sim_") else key): value
+            for key, value in raw.items()}
+
+
+def parse_entry(raw: Any, where: str, sim_type: Callable[[str], str]) -> Entry:
+    if not isinstance(raw, Mapping):
+        raise LaunchError(f"{where}: an entry must be a mapping of keys, got "
+                          f"{type(raw).__name__}")
+    entry = _spelling(raw)
+    if "service_name" in entry:
+        unknown = set(entry) - SERVICE_KEYS
+        if unknown:
+            key = sorted(unknown)[0]
+            raise LaunchError(f"{where}: unknown key '{key}' in a service entry"
+                              f"{did_you_mean(key, sorted(SERVICE_KEYS))}")
+        for key in ("ros_type_name", "gz_req_type_name", "gz_rep_type_name"):
+            if not entry.get(key):
+                raise LaunchError(f"{where}: a service entry needs {key}")
+        ros_type = str(entry["ros_type_name"])
+        return Entry(str(entry["service_name"]), str(entry["service_name"]), ros_type,
+                     sim_type(f"{entry['gz_req_type_name']}|{entry['gz_rep_type_name']}"),
+                     service=True, where=where)
+    unknown = set(entry) - TOPIC_KEYS
+    if unknown:
+        key = sorted(unknown)[0]
+        raise LaunchError(f"{where}: unknown key '{key}'"
+                          f"{did_you_mean(key, sorted(TOPIC_KEYS | SERVICE_KEYS))}")
+    if "topic_name" in entry and ("ros_topic_name" in entry or "gz_topic_name" in entry):
+        raise LaunchError(f"{where}: topic_name names both sides; it cannot be combined with "
+                          "ros_topic_name or gz_topic_name")
+    ros_name = entry.get("topic_name") or entry.get("ros_topic_name") or \
+        entry.get("gz_topic_name")
+    sim_name = entry.get("topic_name") or entry.get("gz_topic_name") or \
+        entry.get("ros_topic_name")
+    if not ros_name:
+        raise LaunchError(f"{where}: no topic: give topic_name, or ros_topic_name and/or "
+                          "gz_topic_name")
+    for key in ("ros_type_name", "gz_type_name"):
+        if not entry.get(key):
+            raise LaunchError(f"{where}: {key} is required")
+    direction = str(entry.get("direction", "BIDIRECTIONAL")).upper()
+    if direction not in DIRECTIONS:
+        raise LaunchError(f"{where}: direction '{entry['direction']}' is not one of "
+                          f"{', '.join(DIRECTIONS)}{did_you_mean(direction, DIRECTIONS)}")
+    queues = {}
+    for key in ("subscriber_queue", "publisher_queue"):
+        value = entry.get(key, 10)
+        if not isinstance(value, int) or isinstance(value, bool) or value < 1:
+            raise LaunchError(f"{where}: {key} must be a whole number >= 1, got {value!r}")
+        queues[key] = value
+    lazy = entry.get("lazy", False)
+    if not isinstance(lazy, bool):
+        raise LaunchError(f"{where}: lazy must be true or false, got {lazy!r}")
+    return Entry(str(ros_name), str(sim_name), str(entry["ros_type_name"]),
+                 sim_type(str(entry["gz_type_name"])), direction, lazy,
+                 queues["subscriber_queue"], queues["publisher_queue"], where=where)
+
+
+def load_file(path: str, parameters: Mapping[str, Any], sim_type: Callable[[str], str],
+              report: Callable[[str], None]) -> list[Entry]:
+    """The entries of a config file; bad ones are reported and left out."""
+    import yaml
+
+    file = Path(path)
+    if not file.is_file():
+        raise LaunchError(f"bridge config file '{path}' does not exist")
+    text = file.read_text(encoding="utf-8")
+    if file.name.endswith(".j2") or "{{" in text or "{%" in text:
+        text = _render(text, file, parameters)
+    try:
+        document = yaml.compose(text)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        line = f":{mark.line + 1}:{mark.column + 1}" if mark else ""
+        raise LaunchError(f"{path}{line}: not valid YAML: "
+                          f"{getattr(exc, 'problem', None) or exc}") from None
+    if document is None:
+        raise LaunchError(f"{path}: the bridge config is empty; expected a list of entries")
+    if not isinstance(document, yaml.SequenceNode):
+        raise LaunchError(f"{path}:{document.start_mark.line + 1}: the top level must be a "
+                          "list of entries (each starting with '- ')")
+    entries = []
+    for number, node in enumerate(document.value, 1):
+        where = f"{path}:{node.start_mark.line + 1}: entry {number}"
+        try:
+            raw = yaml.safe_load(yaml.serialize(node))
+            entries.append(parse_entry(raw, where, sim_type))
+        except LaunchError as exc:
+            report(f"{exc}; skipped")
+    return entries
+
+
+def _render(text: str, file: Path, parameters: Mapping[str, Any]) -> str:
+    import jinja2
+
+    environment = jinja2.Environment(undefined=jinja2.StrictUndefined,
+                                     keep_trailing_newline=True)
+    try:
+        return environment.from_string(text).render(**parameters)
+    except jinja2.UndefinedError as exc:
+        raise LaunchError(f"{file}: template error: {exc.message}; give it as a parameter "
+                          "of the bridge (-p NAME:=VALUE)") from None
+    except jinja2.TemplateSyntaxError as exc:
+        raise LaunchError(f"{file}:{exc.lineno}: template syntax error: {exc.message}") \
+            from None
+
+
+def parse_argument(text: str, sim_type: Callable[[str], str]) -> Entry:
+    """`topic@ROS_TYPE@SIM_TYPE`, with `[` or `]` for one direction."""
+    name, _, rest = text.partition("@")
+    if rest.count("@") == 1:
+        (ros_type, sim), direction = rest.split("@"), "BIDIRECTIONAL"
+    elif "@" not in rest and ("[" in rest) != ("]" in rest):
+        separator = "[" if "[" in rest else "]"
+        ros_type, sim = rest.split(separator, 1)
+        direction = "GZ_TO_ROS" if separator == "[" else "ROS_TO_GZ"
+    else:
+        raise LaunchError(f"bridge argument '{text}': expected TOPIC@ROS_TYPE@SIM_TYPE (or "
+                          "TOPIC@ROS_TYPE[SIM_TYPE for sim to ROS, ] for ROS to sim)")
+    if not (name and ros_type and sim):
+        raise LaunchError(f"bridge argument '{text}': the topic and both types are needed")
+    where = f"argument '{text}'"
+    if "/srv/" in ros_type:
+        return Entry(name, name, ros_type, sim_type(f"{sim}|"), service=True, where=where)
+    return Entry(name, name, ros_type, sim_type(sim), direction, where=where)

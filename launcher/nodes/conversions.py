@@ -1,0 +1,180 @@
+"""Conversions between the sim's native messages and ROS 2 messages, on CDR payloads.
+
+`gz.msgs.Name` (and `mujoco_sim/msg/Name`) name the sim's types (`gz.msgs.Pose_V` is
+`mujoco_sim/msg/PoseV`). Where both sides have the same layout (Twist, Float64/Double, Bool,
+Int32, String, Empty) the bytes pass through untouched; Clock is a prefix of the sim's Clock;
+the others are decoded, rebuilt and encoded.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from launcher.bus.types import registry
+from launcher.errors import LaunchError, did_you_mean
+
+SIM = "mujoco_sim"
+SIM_MESSAGES = ("Clock", "Twist", "Odometry", "Pose", "PoseV", "Model", "ModelStates",
+                "Double", "Float", "Boolean", "Int32", "StringMsg", "Empty", "EntityFactory",
+                "WorldControl", "Entity")
+# (request, response) of Gazebo's services → the sim's service type
+SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
+                ("EntityFactory", "Boolean"): f"{SIM}/srv/Create",
+                ("Entity", "Boolean"): f"{SIM}/srv/Remove",
+                ("Pose", "Boolean"): f"{SIM}/srv/SetPose"}
+
+Convert = Callable[[bytes], bytes]
+
+
+def _short(name: str) -> str:
+    name = name.strip()
+    for prefix in ("gz.msgs.", "ignition.msgs.", f"{SIM}/msg/", f"{SIM}/"):
+        if name.startswith(prefix):
+            name = name[len(prefix):]
+            break
+    else:
+        return ""
+    return "PoseV" if name == "Pose_V" else name
+
+
+def sim_type(name: str) -> str:
+    """The sim's type for a `gz.msgs.*` name; `REQ|REP` names a service."""
+    if "|" in name:
+        request, response = (_short(part) for part in name.split("|", 1))
+        if not response:  # the command-line form names the request only
+            response = "Boolean"
+        found = SIM_SERVICES.get((request, response))
+        if found is None:
+            known = ", ".join(f"gz.msgs.{a} -> gz.msgs.{b}" for a, b in SIM_SERVICES)
+            raise LaunchError(f"the sim has no service taking '{name.split('|')[0]}' and "
+                              f"answering '{name.split('|')[1] or 'gz.msgs.Boolean'}' "
+                              f"(services: {known})")
+        return found
+    short = _short(name)
+    if short not in SIM_MESSAGES:
+        raise LaunchError(f"unknown sim type '{name}'"
+                          f"{did_you_mean(name, [f'gz.msgs.{m}' for m in SIM_MESSAGES])}"
+                          f" (sim types: gz.msgs.{', gz.msgs.'.join(SIM_MESSAGES)})")
+    return f"{SIM}/msg/{short}"
+
+
+@dataclass(frozen=True)
+class Conversion:
+    to_ros: Convert | None  # sim payload → ROS payload
+    to_sim: Convert | None
+
+
+def _same(payload: bytes) -> bytes:
+    return payload
+
+
+def _via(source: str, target: str, build: Callable[[Any], dict[str, Any]]) -> Convert:
+    types = registry()
+
+    def convert(payload: bytes) -> bytes:
+        from launcher.bus.messages import build as make
+
+        message = types.deserialize(payload, source)
+        return types.serialize(make(target, build(message)), target)
+
+    return convert
+
+
+def _pose(p: Any) -> dict[str, Any]:
+    return {"position": {"x": p.position.x, "y": p.position.y, "z": p.position.z},
+            "orientation": {"x": p.orientation.x, "y": p.orientation.y,
+                            "z": p.orientation.z, "w": p.orientation.w}}
+
+
+def _twist(t: Any) -> dict[str, Any]:
+    return {"linear": {"x": t.linear.x, "y": t.linear.y, "z": t.linear.z},
+            "angular": {"x": t.angular.x, "y": t.angular.y, "z": t.angular.z}}
+
+
+def _header(h: Any) -> dict[str, Any]:
+    return {"stamp": {"sec": h.stamp.sec, "nanosec": h.stamp.nanosec}, "frame_id": h.frame_id}
+
+
+def _odometry_to_ros(m: Any) -> dict[str, Any]:
+    return {"header": _header(m.header), "child_frame_id": m.child_frame_id,
+            "pose": {"pose": _pose(m.pose)}, "twist": {"twist": _twist(m.twist)}}
+
+
+def _odometry_to_sim(m: Any) -> dict[str, Any]:
+    return {"header": _header(m.header), "child_frame_id": m.child_frame_id,
+            "pose": _pose(m.pose.pose), "twist": _twist(m.twist.twist)}
+
+
+def _tf(m: Any) -> dict[str, Any]:
+    return {"transforms": [
+        {"header": {"stamp": _header(m.header)["stamp"], "frame_id": parent},
+         "child_frame_id": name,
+         "transform": {"translation": _pose(pose)["position"],
+                       "rotation": _pose(pose)["orientation"]}}
+        for name, parent, pose in zip(m.name, m.parent, m.pose, strict=False)]}
+
+
+def _joint_state(m: Any) -> dict[str, Any]:
+    return {"header": _header(m.header), "name": list(m.joint_name), "position": m.position,
+            "velocity": m.velocity, "effort": m.effort}
+
+
+def _clock(payload: bytes) -> bytes:
+    return payload[:12]  # the CDR header and the first field, `sim`: rosgraph's `clock`
+
+
+def _clock_to_sim(payload: bytes) -> bytes:
+    return payload[:12] + bytes(24)
+
+
+def conversions() -> dict[tuple[str, str], Conversion]:
+    m = f"{SIM}/msg"
+    same = Conversion(_same, _same)
+    return {
+        ("rosgraph_msgs/msg/Clock", f"{m}/Clock"): Conversion(_clock, _clock_to_sim),
+        ("geometry_msgs/msg/Twist", f"{m}/Twist"): same,
+        ("geometry_msgs/msg/TwistStamped", f"{m}/Twist"): Conversion(
+            _via(f"{m}/Twist", "geometry_msgs/msg/TwistStamped", lambda t: {"twist": _twist(t)}),
+            _via("geometry_msgs/msg/TwistStamped", f"{m}/Twist", lambda t: _twist(t.twist))),
+        ("nav_msgs/msg/Odometry", f"{m}/Odometry"): Conversion(
+            _via(f"{m}/Odometry", "nav_msgs/msg/Odometry", _odometry_to_ros),
+            _via("nav_msgs/msg/Odometry", f"{m}/Odometry", _odometry_to_sim)),
+        ("tf2_msgs/msg/TFMessage", f"{m}/PoseV"): Conversion(
+            _via(f"{m}/PoseV", "tf2_msgs/msg/TFMessage", _tf), None),
+        ("sensor_msgs/msg/JointState", f"{m}/Model"): Conversion(
+            _via(f"{m}/Model", "sensor_msgs/msg/JointState", _joint_state), None),
+        ("geometry_msgs/msg/Pose", f"{m}/Pose"): Conversion(
+            _via(f"{m}/Pose", "geometry_msgs/msg/Pose", lambda p: _pose(p.pose)),
+            _via("geometry_msgs/msg/Pose", f"{m}/Pose", lambda p: {"pose": _pose(p)})),
+        ("geometry_msgs/msg/PoseStamped", f"{m}/Pose"): Conversion(
+            _via(f"{m}/Pose", "geometry_msgs/msg/PoseStamped",
+                 lambda p: {"header": _header(p.header), "pose": _pose(p.pose)}),
+            _via("geometry_msgs/msg/PoseStamped", f"{m}/Pose",
+                 lambda p: {"header": _header(p.header), "pose": _pose(p.pose)})),
+        ("std_msgs/msg/Float64", f"{m}/Double"): same,
+        ("std_msgs/msg/Float32", f"{m}/Float"): same,
+        ("std_msgs/msg/Bool", f"{m}/Boolean"): same,
+        ("std_msgs/msg/Int32", f"{m}/Int32"): same,
+        ("std_msgs/msg/String", f"{m}/StringMsg"): same,
+        ("std_msgs/msg/Empty", f"{m}/Empty"): same,
+    }
+
+
+def find(ros_type: str, sim: str) -> Conversion:
+    """The conversion for a pair; an unknown ROS type or an unsupported pair is an error."""
+    from launcher.bus.types import normalize
+
+    ros_type = registry().ensure(normalize(ros_type))  # unknown types fail here
+    table = conversions()
+    found = table.get((ros_type, sim))
+    if found is not None:
+        return found
+    supported = [f"gz.msgs.{s.rsplit('/', 1)[1]}" for r, s in table if r == ros_type]
+    if supported:
+        raise LaunchError(f"no conversion between {ros_type} and gz.msgs."
+                          f"{sim.rsplit('/', 1)[1]}; {ros_type} pairs with: "
+                          f"{', '.join(supported)}")
+    raise LaunchError(f"the bridge does not convert {ros_type}; it converts: "
+                      f"{', '.join(sorted({r for r, _ in table}))}")

@@ -1,0 +1,113 @@
+"""parameter_bridge: sim-native topics and services ⇄ ROS-typed ones, as ros_gz_bridge does.
+
+  parameter_bridge [TOPIC@ROS_TYPE@GZ_TYPE …] [--ros-args -p config_file:=bridge.yaml]
+See bridge_config.py for the YAML and the command-line forms and conversions.py for the type
+pairs. Namespaces and remaps apply to the ROS side only: sim names are used as written
+(relative ones from `/`), so one bridge per robot (in its namespace) and one bridge for all
+robots (absolute per-robot entries) both work. A bad entry is reported and skipped; the
+bridge runs with the rest.
+"""
+
+from __future__ import annotations
+
+import sys
+from typing import Any
+
+from launcher.bus.node import Node
+from launcher.bus.qos import QoS
+from launcher.errors import LaunchError
+from launcher.nodes import bridge_config, conversions
+from launcher.nodes.bridge_config import Entry
+
+
+class Bridge:
+    def __init__(self, node: Node) -> None:
+        self.node = node
+        self.log = node.get_logger()
+        self.count = 0
+
+    def add(self, entry: Entry) -> None:
+        """Bridge one entry; a problem with it is reported and the entry skipped."""
+        try:
+            if entry.service:
+                raise LaunchError("services are not bridged yet")
+            self._add_topic(entry)
+            self.count += 1
+        except LaunchError as exc:
+            self.log.error(f"{entry.where}: {exc}; skipped")
+
+    def _add_topic(self, entry: Entry) -> None:
+        conversion = conversions.find(entry.ros_type, entry.sim_type)
+        sim_name = entry.sim_name if entry.sim_name.startswith("/") else f"/{entry.sim_name}"
+        ros_name = self.node.resolve(entry.ros_name)
+        ways = []
+        if entry.direction in ("BIDIRECTIONAL", "GZ_TO_ROS"):
+            ways.append((entry.sim_type, sim_name, entry.ros_type, ros_name, conversion.to_ros,
+                         "GZ_TO_ROS"))
+        if entry.direction in ("BIDIRECTIONAL", "ROS_TO_GZ"):
+            ways.append((entry.ros_type, ros_name, entry.sim_type, sim_name, conversion.to_sim,
+                         "ROS_TO_GZ"))
+        for *_, convert, way in ways:
+            if convert is None:
+                raise LaunchError(f"{entry.ros_type} ⇄ gz.msgs.{entry.sim_type.rsplit('/')[-1]}"
+                                  f" can only go one way; {way} is not supported")
+        for source_type, source, target_type, target, convert, _ in ways:
+            self._one_way(entry, source_type, source, target_type, target, convert)
+        arrow = {"BIDIRECTIONAL": "<->", "GZ_TO_ROS": "->", "ROS_TO_GZ": "<-"}[entry.direction]
+        self.log.info(f"bridging {sim_name} ({entry.sim_type}) {arrow} {ros_name} "
+                      f"({entry.ros_type}){' lazily' if entry.lazy else ''}")
+
+    def _one_way(self, entry: Entry, source_type: str, source: str, target_type: str,
+                 target: str, convert: Any) -> None:
+        publisher = self.node.create_publisher(target_type, target,
+                                               QoS(depth=entry.publisher_queue))
+
+        def forward(payload: bytes) -> None:
+            publisher.publish_raw(convert(payload))
+
+        def subscribe() -> Any:
+            return self.node.create_subscription(
+                source_type, source, forward, QoS(depth=entry.subscriber_queue), raw=True,
+                inline=True, remote_only=True)
+
+        if not entry.lazy:
+            subscribe()
+            return
+        state: dict[str, Any] = {"subscription": None}
+
+        def on_subscribers(matching: bool) -> None:
+            if matching and state["subscription"] is None:
+                state["subscription"] = subscribe()
+            elif not matching and state["subscription"] is not None:
+                state["subscription"].destroy()
+                state["subscription"] = None
+
+        publisher.watch_subscribers(on_subscribers)
+
+
+def main() -> int:
+    node = Node("parameter_bridge")
+    try:
+        bridge = Bridge(node)
+        entries = [bridge_config.parse_argument(arg, conversions.sim_type) for arg in node.args]
+        config = node.parameters.get("config_file")
+        if config:
+            entries += bridge_config.load_file(str(config), node.parameters,
+                                               conversions.sim_type, node.get_logger().error)
+        if not entries:
+            raise LaunchError("nothing to bridge: give TOPIC@ROS_TYPE@GZ_TYPE arguments or "
+                              "--ros-args -p config_file:=bridge.yaml")
+        for entry in entries:
+            bridge.add(entry)
+        node.get_logger().info(f"bridging {bridge.count} of {len(entries)} entries")
+        node.spin()
+    except LaunchError as exc:
+        print(f"[parameter_bridge] error: {exc}", file=sys.stderr, flush=True)
+        return 1
+    finally:
+        node.destroy_node()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
