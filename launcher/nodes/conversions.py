@@ -178,3 +178,52 @@ def find(ros_type: str, sim: str) -> Conversion:
                           f"{', '.join(supported)}")
     raise LaunchError(f"the bridge does not convert {ros_type}; it converts: "
                       f"{', '.join(sorted({r for r, _ in table}))}")
+
+
+@dataclass(frozen=True)
+class ServiceConversion:
+    """ROS request → the sim's request fields; the sim's response → ROS response fields."""
+    request: Callable[[Any], dict[str, Any]]
+    response: Callable[[Any], dict[str, Any]]
+
+
+def _control(r: Any) -> dict[str, Any]:
+    c = r.world_control
+    return {"pause": c.pause, "step": c.step, "multi_step": c.multi_step,
+            "reset_all": c.reset.all, "reset_time_only": c.reset.time_only,
+            "reset_model_only": c.reset.model_only}
+
+
+def _spawn(r: Any) -> dict[str, Any]:
+    f = r.entity_factory
+    return {"name": f.name, "allow_renaming": f.allow_renaming, "sdf": f.sdf,
+            "sdf_filename": f.sdf_filename, "pose": _pose(f.pose), "relative_to": f.relative_to}
+
+
+def _success(response: Any) -> dict[str, Any]:
+    return {"success": response.success}
+
+
+SERVICES = {
+    ("ros_gz_interfaces/srv/ControlWorld", f"{SIM}/srv/Control"):
+        ServiceConversion(_control, _success),
+    ("ros_gz_interfaces/srv/SpawnEntity", f"{SIM}/srv/Create"):
+        ServiceConversion(_spawn, _success),
+    ("ros_gz_interfaces/srv/DeleteEntity", f"{SIM}/srv/Remove"):
+        ServiceConversion(lambda r: {"name": r.entity.name}, _success),
+    ("ros_gz_interfaces/srv/SetEntityPose", f"{SIM}/srv/SetPose"):
+        ServiceConversion(lambda r: {"name": r.entity.name, "pose": _pose(r.pose)}, _success),
+}
+
+
+def find_service(ros_type: str, sim_service: str) -> ServiceConversion:
+    from launcher.bus.types import normalize
+
+    ros_type = normalize(ros_type)
+    registry().service(ros_type)  # an unknown service type fails here, with suggestions
+    found = SERVICES.get((ros_type, sim_service))
+    if found is None:
+        pairs = ", ".join(f"{r} -> {s}" for r, s in SERVICES)
+        raise LaunchError(f"no conversion between {ros_type} and {sim_service} (services: "
+                          f"{pairs})")
+    return found

@@ -30,8 +30,9 @@ class Bridge:
         """Bridge one entry; a problem with it is reported and the entry skipped."""
         try:
             if entry.service:
-                raise LaunchError("services are not bridged yet")
-            self._add_topic(entry)
+                self._add_service(entry)
+            else:
+                self._add_topic(entry)
             self.count += 1
         except LaunchError as exc:
             self.log.error(f"{entry.where}: {exc}; skipped")
@@ -56,6 +57,27 @@ class Bridge:
         arrow = {"BIDIRECTIONAL": "<->", "GZ_TO_ROS": "->", "ROS_TO_GZ": "<-"}[entry.direction]
         self.log.info(f"bridging {sim_name} ({entry.sim_type}) {arrow} {ros_name} "
                       f"({entry.ros_type}){' lazily' if entry.lazy else ''}")
+
+    def _add_service(self, entry: Entry) -> None:
+        """A ROS-typed service that forwards each call to the sim's service."""
+        from launcher.bus.messages import build
+
+        conversion = conversions.find_service(entry.ros_type, entry.sim_type)
+        sim_name = entry.sim_name if entry.sim_name.startswith("/") else f"/{entry.sim_name}"
+        client = self.node.create_client(entry.sim_type, sim_name)
+        request_type = f"{entry.sim_type}_Request"
+
+        def forward(request: Any, response: Any) -> Any:
+            answer = client.call(build(request_type, conversion.request(request)), timeout=30)
+            for key, value in conversion.response(answer).items():
+                setattr(response, key, value)
+            if not answer.success:
+                self.log.warning(f"{sim_name}: {answer.message}")
+            return response
+
+        server = self.node.create_service(entry.ros_type, entry.ros_name, forward)
+        self.log.info(f"bridging service {sim_name} ({entry.sim_type}) <- {server.name} "
+                      f"({entry.ros_type})")
 
     def _one_way(self, entry: Entry, source_type: str, source: str, target_type: str,
                  target: str, convert: Any) -> None:

@@ -5,7 +5,7 @@ so the world is never touched from two threads. While paused or ahead of schedul
 waits on the node's queue, so services and spawning stay responsive.
 
 Topics (sim-native types from the mujoco_sim package, Gazebo's names):
-  /clock and /world/<w>/clock                Clock, after every batch of steps
+  /clock and /world/<w>/clock                Clock, after every batch of steps (paused: 20 Hz)
   /world/<w>/pose/info, /world/<w>/model_states   every entity (world_state plugin)
   /model/<m>/odometry, /model/<m>/tf, /model/<m>/cmd_vel   diff drive plugins
   /world/<w>/model/<m>/joint_state           joint state plugins
@@ -116,8 +116,9 @@ class SimServer:
         while not self.stopped:
             if iterations is not None and world.iterations >= iterations:
                 break
-            if self.paused:
-                node.spin_once(0.05)
+            if self.paused:  # serve the bus; the clock says "paused" 20 times a second
+                if not node.spin_once(0.05):
+                    self.publish_clock()
                 continue
             due = pacer.due()
             if due == 0:  # ahead of schedule: serve the bus until the next step is due

@@ -39,6 +39,14 @@ BRIDGE = """
   ros_type_name: "sensor_msgs/msg/JointState"
   sim_type_name: "gz.msgs.Model"
   direction: GZ_TO_ROS
+- service_name: "/world/empty/control"
+  ros_type_name: "ros_gz_interfaces/srv/ControlWorld"
+  gz_req_type_name: "gz.msgs.WorldControl"
+  gz_rep_type_name: "gz.msgs.Boolean"
+- service_name: "/world/empty/remove"
+  ros_type_name: "ros_gz_interfaces/srv/DeleteEntity"
+  gz_req_type_name: "gz.msgs.Entity"
+  gz_rep_type_name: "gz.msgs.Boolean"
 - ros_topic_name: "/broken"
   gz_topic_name: "/broken"
   ros_type_name: "nav_msgs/msg/Odometry"
@@ -103,8 +111,8 @@ def subscriber_count(ws, topic: str) -> int:
 def test_the_bridge_carries_clock_cmd_vel_odom_and_is_lazy_where_asked(bridge_ws):
     proc = bridge_ws.start("launch", "sim.launch.yaml", output="launch.out")
     try:
-        out = bridge_ws.wait_for_output("bridging 5 of 6 entries", 60, "launch.out")
-        assert "bridge.yaml.j2:27: entry 6: no conversion between nav_msgs/msg/Odometry and " \
+        out = bridge_ws.wait_for_output("bridging 7 of 8 entries", 60, "launch.out")
+        assert "bridge.yaml.j2:35: entry 8: no conversion between nav_msgs/msg/Odometry and " \
             "gz.msgs.Twist; nav_msgs/msg/Odometry pairs with: gz.msgs.Odometry; skipped" in out
         bridge_ws.wait_for_output("spawned 'bot'", 60, "launch.out")
         assert subscriber_count(bridge_ws, "/model/bot/tf") == 0  # lazy: nobody on /tf yet
@@ -124,6 +132,18 @@ def test_the_bridge_carries_clock_cmd_vel_odom_and_is_lazy_where_asked(bridge_ws
         assert result["clock"] > 0 and result["moved"] > 0.3
         assert result["frame"] == "bot/odom"
         assert result["joints"] == ["left_wheel_joint", "right_wheel_joint"]
+        paused = bridge_ws.run("service", "call", "/world/empty/control",
+                               "ros_gz_interfaces/srv/ControlWorld",
+                               "{world_control: {pause: true}}")
+        assert "success: true" in paused.stdout, paused.stderr
+        clock = bridge_ws.run("topic", "echo", "/world/empty/clock", "--once", "--field",
+                              "paused")
+        assert clock.stdout.strip().lower().startswith("true"), clock.stdout
+        for expected in ("true", "false"):  # the second time there is nothing to remove
+            removed = bridge_ws.run("service", "call", "/world/empty/remove",
+                                    "ros_gz_interfaces/srv/DeleteEntity",
+                                    "{entity: {name: bot}}")
+            assert f"success: {expected}" in removed.stdout, removed.stderr
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(30) == 130

@@ -1,0 +1,117 @@
+"""The bridge's conversions on real CDR payloads, both ways where both ways exist."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from launcher.bus.messages import build
+from launcher.bus.types import registry
+from launcher.errors import LaunchError
+from launcher.nodes import bridge_config, conversions
+
+POSE = {"position": {"x": 1.0, "y": -2.0, "z": 0.5},
+        "orientation": {"x": 0.0, "y": 0.0, "z": 0.6, "w": 0.8}}
+TWIST = {"linear": {"x": 0.5, "y": 0.0, "z": 0.0}, "angular": {"x": 0.0, "y": 0.0, "z": 0.2}}
+HEADER = {"stamp": {"sec": 3, "nanosec": 400}, "frame_id": "bot/odom"}
+
+
+def encode(type_name, fields):
+    return bytes(registry().serialize(build(type_name, fields), type_name))
+
+
+def decode(type_name, payload):
+    return registry().deserialize(payload, type_name)
+
+
+def convert(ros, sim, fields, way="to_ros"):
+    conversion = conversions.find(ros, conversions.sim_type(sim))
+    source, target = (conversions.sim_type(sim), ros) if way == "to_ros" else \
+        (ros, conversions.sim_type(sim))
+    return decode(target, getattr(conversion, way)(encode(source, fields)))
+
+
+def test_clock_is_the_sims_sim_time():
+    clock = convert("rosgraph_msgs/msg/Clock", "gz.msgs.Clock",
+                    {"sim": {"sec": 12, "nanosec": 5}, "real": {"sec": 99}, "paused": True,
+                     "iterations": 7})
+    assert (clock.clock.sec, clock.clock.nanosec) == (12, 5)
+
+
+@pytest.mark.parametrize("ros, sim, fields", [
+    ("geometry_msgs/msg/Twist", "gz.msgs.Twist", TWIST),
+    ("std_msgs/msg/Float64", "gz.msgs.Double", {"data": 2.5}),
+    ("std_msgs/msg/Bool", "gz.msgs.Boolean", {"data": True}),
+    ("std_msgs/msg/Int32", "gz.msgs.Int32", {"data": -7}),
+    ("std_msgs/msg/String", "gz.msgs.StringMsg", {"data": "hello"}),
+    ("std_msgs/msg/Empty", "gz.msgs.Empty", {}),
+])
+def test_same_layouts_pass_through_both_ways(ros, sim, fields):
+    there = convert(ros, sim, fields, "to_ros")
+    back = convert(ros, sim, fields, "to_sim")
+    assert encode(ros, fields) == bytes(registry().serialize(there, ros))
+    assert encode(conversions.sim_type(sim), fields) == \
+        bytes(registry().serialize(back, conversions.sim_type(sim)))
+
+
+def test_odometry_both_ways_and_twist_stamped():
+    odom = convert("nav_msgs/msg/Odometry", "gz.msgs.Odometry",
+                   {"header": HEADER, "child_frame_id": "bot/base_link", "pose": POSE,
+                    "twist": TWIST})
+    assert odom.header.frame_id == "bot/odom" and odom.child_frame_id == "bot/base_link"
+    assert odom.pose.pose.position.y == -2.0 and odom.twist.twist.angular.z == 0.2
+    back = convert("nav_msgs/msg/Odometry", "gz.msgs.Odometry",
+                   {"header": HEADER, "pose": {"pose": POSE}, "twist": {"twist": TWIST}},
+                   "to_sim")
+    assert back.pose.orientation.w == 0.8 and back.header.stamp.nanosec == 400
+    stamped = convert("geometry_msgs/msg/TwistStamped", "gz.msgs.Twist", TWIST)
+    assert stamped.twist.linear.x == 0.5
+    plain = convert("geometry_msgs/msg/TwistStamped", "gz.msgs.Twist",
+                    {"header": HEADER, "twist": TWIST}, "to_sim")
+    assert plain.angular.z == 0.2
+
+
+def test_pose_v_to_tf_model_to_joint_state_and_poses():
+    tf = convert("tf2_msgs/msg/TFMessage", "gz.msgs.Pose_V",
+                 {"header": HEADER, "name": ["bot/base_link"], "parent": ["bot/odom"],
+                  "pose": [POSE]})
+    transform = tf.transforms[0]
+    assert (transform.header.frame_id, transform.child_frame_id) == ("bot/odom",
+                                                                      "bot/base_link")
+    assert transform.transform.translation.x == 1.0 and transform.header.stamp.sec == 3
+    joints = convert("sensor_msgs/msg/JointState", "gz.msgs.Model",
+                     {"header": HEADER, "name": "bot", "joint_name": ["a", "b"],
+                      "position": np.array([0.1, 0.2]), "velocity": np.array([1.0, 2.0]),
+                      "effort": np.array([0.0, 0.0])})
+    assert list(joints.name) == ["a", "b"] and list(joints.velocity) == [1.0, 2.0]
+    pose = convert("geometry_msgs/msg/PoseStamped", "gz.msgs.Pose",
+                   {"header": HEADER, "name": "bot", "pose": POSE})
+    assert pose.pose.position.z == 0.5 and pose.header.frame_id == "bot/odom"
+    plain = convert("geometry_msgs/msg/Pose", "gz.msgs.Pose", POSE, "to_sim")
+    assert plain.pose.orientation.z == 0.6
+
+
+def test_unsupported_pairs_and_unknown_types_say_what_is_supported():
+    with pytest.raises(LaunchError) as error:
+        conversions.find("geometry_msgs/msg/Twist", "mujoco_sim/msg/Odometry")
+    assert "geometry_msgs/msg/Twist pairs with: gz.msgs.Twist" in str(error.value)
+    with pytest.raises(LaunchError) as error:
+        conversions.find("sensor_msgs/msg/Imu", "mujoco_sim/msg/Odometry")
+    assert "does not convert sensor_msgs/msg/Imu; it converts:" in str(error.value)
+    with pytest.raises(LaunchError) as error:
+        conversions.sim_type("gz.msgs.WorldControl|gz.msgs.Double")
+    assert "the sim has no service taking" in str(error.value)
+    assert conversions.sim_type("gz.msgs.EntityFactory|gz.msgs.Boolean") == \
+        "mujoco_sim/srv/Create"
+
+
+@pytest.mark.parametrize("text, direction, service", [
+    ("/clock@rosgraph_msgs/msg/Clock[gz.msgs.Clock", "GZ_TO_ROS", False),
+    ("/cmd_vel@geometry_msgs/msg/Twist]gz.msgs.Twist", "ROS_TO_GZ", False),
+    ("/chatter@std_msgs/msg/String@gz.msgs.StringMsg", "BIDIRECTIONAL", False),
+    ("/world/w/control@ros_gz_interfaces/srv/ControlWorld@gz.msgs.WorldControl",
+     "BIDIRECTIONAL", True),
+])
+def test_the_command_line_form(text, direction, service):
+    entry = bridge_config.parse_argument(text, conversions.sim_type)
+    assert entry.direction == direction and entry.service == service
