@@ -129,3 +129,35 @@ def test_the_joint_state_reader_reads_what_rosbags_writes_and_caches_names():
         sec, nanosec, read_names, read_positions = reader.read(payload)
         assert (sec, nanosec, read_names) == (12, 34, names)
         assert list(read_positions) == positions
+
+
+class Recorded:
+    def __init__(self):
+        self.payloads, self.warnings = [], []
+
+    def publish_raw(self, payload):
+        self.payloads.append(payload)
+
+    def warning(self, message, once=False):
+        self.warnings.append(message)
+
+
+def test_the_rate_limiter_and_time_going_backwards():
+    import threading
+
+    from launcher.nodes.robot_state_publisher import RobotStatePublisher
+
+    publisher = RobotStatePublisher.__new__(RobotStatePublisher)  # no node: on_joints alone
+    recorded = Recorded()
+    publisher.tree, publisher.prefix, publisher.ignore_timestamp = Tree.parse(CHAIN), "", False
+    publisher.frequency, publisher.log, publisher.tf_pub = 20.0, recorded, recorded
+    publisher._mimics, publisher._plans, publisher._warned = [], {}, set()
+    publisher._last_stamp, publisher._lock = None, threading.Lock()
+    for ms in (0, 10, 49, 50, 120, 30):  # 20 Hz: 0, 50 and 120 pass; 30 is a reset
+        publisher.on_joints(1, ms * 1_000_000, ["j1"], np.array([0.1]))
+    stamps = [registry().deserialize(p, "tf2_msgs/msg/TFMessage").transforms[0].header.stamp
+              for p in recorded.payloads]
+    assert [s.nanosec // 1_000_000 for s in stamps] == [0, 50, 120, 30]
+    publisher.ignore_timestamp = True
+    publisher.on_joints(1, 31_000_000, ["j1"], np.array([0.2]))
+    assert len(recorded.payloads) == 5
