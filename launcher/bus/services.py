@@ -100,7 +100,8 @@ class Client:
 
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            if any(e.kind == keys.SERVICE and e.topic == self.name
+            if any(e.kind == keys.SERVICE and e.topic == self.name and
+                   e.type_name == self.type_name  # another type by that name will not answer
                    for e in entities(self._node.session, 0.5)):
                 return True
             time.sleep(0.05)

@@ -80,7 +80,8 @@ def find_world(node: Any, deadline: float, timeout: float) -> str:
     while True:
         worlds = sorted({e.topic.split("/")[2] for e in graph.entities(node.session, 0.5)
                          if e.kind == keys.SERVICE and e.topic.startswith("/world/")
-                         and e.topic.endswith("/create")})
+                         and e.topic.endswith("/create")
+                         and e.type_name == "mujoco_sim/srv/Create"})  # not a bridge's
         if len(worlds) == 1:
             return worlds[0]
         if len(worlds) > 1:

@@ -47,6 +47,14 @@ BRIDGE = """
   ros_type_name: "ros_gz_interfaces/srv/DeleteEntity"
   gz_req_type_name: "gz.msgs.Entity"
   gz_rep_type_name: "gz.msgs.Boolean"
+- service_name: "/world/empty/create"
+  ros_type_name: "ros_gz_interfaces/srv/SpawnEntity"
+  gz_req_type_name: "gz.msgs.EntityFactory"
+  gz_rep_type_name: "gz.msgs.Boolean"
+- service_name: "/world/empty/set_pose"
+  ros_type_name: "ros_gz_interfaces/srv/SetEntityPose"
+  gz_req_type_name: "gz.msgs.Pose"
+  gz_rep_type_name: "gz.msgs.Boolean"
 - ros_topic_name: "/broken"
   gz_topic_name: "/broken"
   ros_type_name: "nav_msgs/msg/Odometry"
@@ -111,8 +119,8 @@ def subscriber_count(ws, topic: str) -> int:
 def test_the_bridge_carries_clock_cmd_vel_odom_and_is_lazy_where_asked(bridge_ws):
     proc = bridge_ws.start("launch", "sim.launch.yaml", output="launch.out")
     try:
-        out = bridge_ws.wait_for_output("bridging 7 of 8 entries", 60, "launch.out")
-        assert "bridge.yaml.j2:35: entry 8: no conversion between nav_msgs/msg/Odometry and " \
+        out = bridge_ws.wait_for_output("bridging 9 of 10 entries", 60, "launch.out")
+        assert "bridge.yaml.j2:43: entry 10: no conversion between nav_msgs/msg/Odometry and " \
             "gz.msgs.Twist; nav_msgs/msg/Odometry pairs with: gz.msgs.Odometry; skipped" in out
         bridge_ws.wait_for_output("spawned 'bot'", 60, "launch.out")
         assert subscriber_count(bridge_ws, "/model/bot/tf") == 0  # lazy: nobody on /tf yet
@@ -139,6 +147,15 @@ def test_the_bridge_carries_clock_cmd_vel_odom_and_is_lazy_where_asked(bridge_ws
         clock = bridge_ws.run("topic", "echo", "/world/empty/clock", "--once", "--field",
                               "paused")
         assert clock.stdout.strip().lower().startswith("true"), clock.stdout
+        spawned = bridge_ws.run("service", "call", "/world/empty/create",
+                                "ros_gz_interfaces/srv/SpawnEntity",
+                                f"{{entity_factory: {{name: two, sdf_filename: '{ROBOT}', "
+                                "pose: {position: {y: 2.0, z: 0.06}}}}")
+        assert "success: true" in spawned.stdout, spawned.stderr
+        moved = bridge_ws.run("service", "call", "/world/empty/set_pose",
+                              "ros_gz_interfaces/srv/SetEntityPose",
+                              "{entity: {name: two}, pose: {position: {x: 3.0, z: 0.06}}}")
+        assert "success: true" in moved.stdout, moved.stderr
         for expected in ("true", "false"):  # the second time there is nothing to remove
             removed = bridge_ws.run("service", "call", "/world/empty/remove",
                                     "ros_gz_interfaces/srv/DeleteEntity",
