@@ -14,7 +14,6 @@ import xml.etree.ElementTree as ET
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 from xml.parsers import expat
 
 import mujoco
@@ -80,7 +79,7 @@ def _take_plugins(source: Source) -> None:
     starts: list[tuple[int, int]] = []
     data = source.text.encode()
 
-    def start(tag: str, attrs: dict[str, str]) -> None:
+    def start(tag: str, _attrs: dict[str, str]) -> None:
         nonlocal depth
         depth += 1
         if depth == 2 and tag == "plugin":
@@ -124,13 +123,6 @@ def compile_spec(source: Source) -> mujoco.MjSpec:
         # Stable with the velocity actuators that wheels and joint servos use; Euler is not.
         spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     return spec
-
-
-def check_compiles(spec: mujoco.MjSpec, label: str) -> Any:
-    try:
-        return spec.compile()
-    except ValueError as exc:
-        raise LaunchError(f"{label}: MuJoCo could not compile it: {_clean(exc)}") from None
 
 
 def _clean(exc: Exception) -> str:
