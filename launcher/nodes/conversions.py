@@ -121,12 +121,47 @@ def _joint_state(m: Any) -> dict[str, Any]:
             "velocity": m.velocity, "effort": m.effort}
 
 
+def _pose_offset(payload: bytes) -> int:
+    """Where an Odometry's pose starts: after the stamp, frame_id and child_frame_id."""
+    position = 4 + 8
+    for _ in range(2):
+        position += -(position - 4) % 4
+        position += 4 + int.from_bytes(payload[position:position + 4], "little")
+    return position + -(position - 4) % 8
+
+
+_COVARIANCE = bytes(36 * 8)
+
+
+def _odometry_bytes_to_ros(payload: bytes) -> bytes:
+    """The sim's Odometry → nav_msgs: the same bytes with zero covariances inserted."""
+    if payload[1] != 1:  # big-endian: the general path
+        return _odometry_objects_to_ros(payload)
+    at = _pose_offset(payload)
+    return payload[:at + 56] + _COVARIANCE + payload[at + 56:at + 104] + _COVARIANCE
+
+
+def _odometry_bytes_to_sim(payload: bytes) -> bytes:
+    if payload[1] != 1:
+        return _odometry_objects_to_sim(payload)
+    at = _pose_offset(payload)
+    return payload[:at + 56] + payload[at + 344:at + 392]
+
+
 def _clock(payload: bytes) -> bytes:
     return payload[:12]  # the CDR header and the first field, `sim`: rosgraph's `clock`
 
 
 def _clock_to_sim(payload: bytes) -> bytes:
     return payload[:12] + bytes(24)
+
+
+def _odometry_objects_to_ros(payload: bytes) -> bytes:
+    return _via(f"{SIM}/msg/Odometry", "nav_msgs/msg/Odometry", _odometry_to_ros)(payload)
+
+
+def _odometry_objects_to_sim(payload: bytes) -> bytes:
+    return _via("nav_msgs/msg/Odometry", f"{SIM}/msg/Odometry", _odometry_to_sim)(payload)
 
 
 def conversions() -> dict[tuple[str, str], Conversion]:
@@ -138,9 +173,8 @@ def conversions() -> dict[tuple[str, str], Conversion]:
         ("geometry_msgs/msg/TwistStamped", f"{m}/Twist"): Conversion(
             _via(f"{m}/Twist", "geometry_msgs/msg/TwistStamped", lambda t: {"twist": _twist(t)}),
             _via("geometry_msgs/msg/TwistStamped", f"{m}/Twist", lambda t: _twist(t.twist))),
-        ("nav_msgs/msg/Odometry", f"{m}/Odometry"): Conversion(
-            _via(f"{m}/Odometry", "nav_msgs/msg/Odometry", _odometry_to_ros),
-            _via("nav_msgs/msg/Odometry", f"{m}/Odometry", _odometry_to_sim)),
+        ("nav_msgs/msg/Odometry", f"{m}/Odometry"): Conversion(_odometry_bytes_to_ros,
+                                                              _odometry_bytes_to_sim),
         ("tf2_msgs/msg/TFMessage", f"{m}/PoseV"): Conversion(
             _via(f"{m}/PoseV", "tf2_msgs/msg/TFMessage", _tf), None),
         ("sensor_msgs/msg/JointState", f"{m}/Model"): Conversion(

@@ -64,6 +64,14 @@ def test_odometry_both_ways_and_twist_stamped():
                    {"header": HEADER, "pose": {"pose": POSE}, "twist": {"twist": TWIST}},
                    "to_sim")
     assert back.pose.orientation.w == 0.8 and back.header.stamp.nanosec == 400
+    assert back.twist.angular.z == 0.2
+    for child in ("", "b", "bo", "bot/base_link_x"):  # every string padding
+        fields = {"header": {**HEADER, "frame_id": child * 2}, "child_frame_id": child,
+                  "pose": POSE, "twist": TWIST}
+        payload = encode("mujoco_sim/msg/Odometry", fields)
+        conversion = conversions.find("nav_msgs/msg/Odometry", "mujoco_sim/msg/Odometry")
+        assert conversion.to_ros(payload) == conversions._odometry_objects_to_ros(payload)
+        assert conversion.to_sim(conversion.to_ros(payload)) == payload
     stamped = convert("geometry_msgs/msg/TwistStamped", "gz.msgs.Twist", TWIST)
     assert stamped.twist.linear.x == 0.5
     plain = convert("geometry_msgs/msg/TwistStamped", "gz.msgs.Twist",
