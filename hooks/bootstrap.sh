@@ -32,7 +32,8 @@ fi
 .venv/bin/python -m compileall -q launcher >/dev/null
 
 case "${1:-}" in
-    demo) shift; exec .venv/bin/launcher launch launch_files/demo.launch.yaml --noninteractive "$@" ;;
+    demo) shift; exec .venv/bin/launcher launch launch_files/robot.launch.yaml --duration 20 \
+        --noninteractive "$@" ;;
     test) shift; exec .venv/bin/python -m pytest tests "$@" ;;
     *) echo "usage: sh hooks/bootstrap.sh demo|test" >&2; exit 2 ;;
 esac

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import re
 import sys
 from pathlib import Path
@@ -87,6 +88,7 @@ def run(args: argparse.Namespace) -> int:
     check_required(description.actions, configurations)
     environment = hooked_environment(index, default_environment())
     compat.enable_for_children(environment)
+    tools_on_path(environment)
     router = bus_router(environment)
     run_file = discovery.write_run_file(environment[discovery.ROUTER_VARIABLE])
     service = LaunchService(daemons=[router],
@@ -106,6 +108,17 @@ def run(args: argparse.Namespace) -> int:
         return service.run(LaunchDescription(root))
     finally:
         run_file.unlink(missing_ok=True)
+
+
+def tools_on_path(environment: dict[str, str]) -> None:
+    """Put this launcher's own folder on the children's PATH (as sourcing a ROS setup file
+    puts `ros2` there), so `cmd: launcher sim …` runs the same install."""
+    folder = os.path.dirname(os.path.abspath(sys.argv[0]))
+    if os.path.basename(sys.argv[0]) != "launcher" or not os.path.isdir(folder):
+        folder = os.path.dirname(sys.executable)
+    path = environment.get("PATH", "")
+    if folder not in path.split(os.pathsep):
+        environment["PATH"] = folder + (os.pathsep + path if path else "")
 
 
 def bus_router(environment: dict[str, str]) -> ProcessSpec:

@@ -46,7 +46,14 @@ def main(argv: list[str] | None = None) -> int:
 
         return run_sim(argv[1:])
     selected = next((word for word in argv if not word.startswith("-")), None)
-    args = build_parser(selected if selected in COMMANDS else None).parse_args(argv)
+    parser = build_parser(selected if selected in COMMANDS else None)
+    if selected == "launch" and argv[0] == "launch":
+        # `name:=value` may come before or after options (`--duration 10 drive:=false`)
+        commands = next(a for a in parser._actions
+                        if isinstance(a, argparse._SubParsersAction))
+        args = commands.choices["launch"].parse_intermixed_args(argv[1:])
+    else:
+        args = parser.parse_args(argv)
     debug = getattr(args, "debug", False)
     try:
         return int(args.run(args) or 0)

@@ -1,7 +1,7 @@
 """Run a Python entry point: `python -m launcher.packages.entry MODULE:FUNCTION [ARGS…]`.
 
 The module is imported and the function looked up by name; its return value is the exit
-status, as console scripts work.
+status, as console scripts work. Ctrl-C ends it with status 130 and no traceback.
 """
 
 from __future__ import annotations
@@ -21,7 +21,10 @@ def main() -> int:
     for part in attribute.split("."):
         function = getattr(function, part)
     sys.argv = [module_name.rsplit(".", 1)[-1], *sys.argv[2:]]
-    result = function()
+    try:
+        result = function()
+    except KeyboardInterrupt:  # Ctrl-C (or the launch stopping): a quiet exit, no traceback
+        return 130
     return result if isinstance(result, int) else 0
 
 

@@ -1,0 +1,97 @@
+"""The demo stack end to end: launch_files/robot.launch.yaml with real sim, bridge,
+robot_state_publisher, xacro, create and driver processes on a real Zenoh router."""
+
+from __future__ import annotations
+
+import re
+import signal
+import subprocess
+
+import pytest
+
+from tests.conftest import REPO, launcher_argv
+
+LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
+
+
+@pytest.fixture
+def demo(ws):
+    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
+    ws.env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
+    for name in ("LAUNCHER_ROUTER", "MUJOCO_SIM_RESOURCE_PATH", "MUJOCO_SIM_PLUGIN_PATH"):
+        ws.env.pop(name, None)
+    return ws
+
+
+def positions(text: str) -> list[tuple[float, float]]:
+    return [(float(x), float(y)) for x, y in re.findall(r"X: (-?[\d.]+), Y: (-?[\d.]+)", text)]
+
+
+def first_line_with(ws, args: list[str], needle: str, timeout: float = 30) -> str:
+    """Run `launcher ARGS` until a line holds `needle`; that line."""
+    proc = subprocess.Popen([*launcher_argv(), *args], cwd=ws.root, env=ws.env,
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    try:
+        for line in proc.stdout:
+            if needle in line:
+                return line
+        return ""
+    finally:
+        proc.send_signal(signal.SIGINT)
+        proc.wait(timeout)
+
+
+def sim_seconds(ws) -> float:
+    out = ws.run("topic", "echo", "/clock", "--once").stdout
+    sec = int(re.search(r"sec: (\d+)", out).group(1))
+    nanosec = int(re.search(r"nanosec: (\d+)", out).group(1))
+    return sec + nanosec * 1e-9
+
+
+def test_the_demo_drives_publishes_tf_and_clock_and_stops_cleanly(demo):
+    proc = demo.start("launch", LAUNCH, output="demo.out")
+    try:
+        demo.wait_for_output("spawned 'my_robot' into world 'robot'", 90, "demo.out")
+        text = demo.wait_for_output("X: 1.", 90, "demo.out")  # past a metre
+        xs = [x for x, _ in positions(text)]
+        assert xs[-1] > xs[0] + 0.9
+        assert "CrateDropper: spawned 'crate'" in text  # the world plugin, through the hooks
+        wheel = first_line_with(demo, ["topic", "echo", "/tf"], "child_frame_id: left_wheel")
+        assert wheel  # robot_state_publisher's wheel transforms
+        odom = first_line_with(demo, ["topic", "echo", "/tf"], "child_frame_id: base_link")
+        assert odom  # the diff drive's odom -> base_link, through the bridge
+        before = sim_seconds(demo)
+        demo.wait_for_output("X: 1.5", 60, "demo.out")
+        assert sim_seconds(demo) > before
+        names = demo.run("topic", "echo", "/world/robot/model_states", "--once", "--field",
+                         "name").stdout
+        assert "my_robot" in names and "crate" in names
+    finally:
+        proc.send_signal(signal.SIGINT)
+        code = proc.wait(60)
+    assert code == 130  # documented: Ctrl-C ends with 130, everything stopped
+    out = demo.output("demo.out")
+    for name in ("sim", "robot_state_publisher", "parameter_bridge", "driver"):
+        assert re.search(rf"\[{name}-\d+\]: process (stopped|has finished)", out), name
+
+
+def test_overrides_pick_the_arena_and_leave_the_driver_out(demo):
+    proc = demo.start("launch", LAUNCH, "world_name:=arena.xml.j2", "drive:=false",
+                      output="demo.out")
+    try:
+        demo.wait_for_output("spawned 'my_robot' into world 'arena'", 90, "demo.out")
+        names = demo.run("topic", "echo", "/world/arena/model_states", "--once", "--field",
+                         "name").stdout
+        assert "my_robot" in names
+        assert "[driver" not in demo.output("demo.out")
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(60) == 130
+
+
+def test_a_bad_world_name_names_the_places_searched(demo):
+    done = demo.run("launch", LAUNCH, "world_name:=nowhere.xml", "drive:=false",
+                    "--duration", "30", timeout=120)
+    assert "world 'nowhere.xml' not found; searched:" in done.stdout + done.stderr
+    assert "robot_sim/worlds" in done.stdout + done.stderr
+    assert done.returncode == 1
