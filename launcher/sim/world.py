@@ -71,6 +71,8 @@ class World:
                  plugins: Sequence[PluginConfig] = (),
                  descriptions: Descriptions | None = None) -> None:
         self.spec, self.label, self.transport = spec, label, transport
+        # MuJoCo's own warnings go to the log, not to a MUJOCO_LOG.TXT in the working folder.
+        mujoco.set_mju_user_warning(lambda text: transport.logger.warning(f"MuJoCo: {text}"))
         self.world_name = spec.modelname or "default"
         self.descriptions = descriptions or Descriptions()
         self.model = _compile(spec, label)

@@ -460,13 +460,17 @@ def test_resets_all_time_only_and_poses_only(world):
     assert world.data.xpos[world.entities["bot"].body][:2] == pytest.approx([0, 0], abs=1e-6)
 
 
-def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(world):
+def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(
+        world, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     spawn_bot(world, "wild")
     entity = world.entities["wild"]
     world.data.qvel[entity.dof + 6] = 1e30  # the left wheel
     world.step(1)
     warnings = world.transport.messages("warning")
     assert any("unstable" in m and "entity 'wild'" in m for m in warnings), warnings
+    assert any(m.startswith("MuJoCo: Nan, Inf or huge value") for m in warnings)
+    assert not (tmp_path / "MUJOCO_LOG.TXT").exists()  # not written into the user's folder
     run_for(world, 0.1)
     assert np.isfinite(world.data.qpos).all()
 
