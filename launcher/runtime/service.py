@@ -205,6 +205,10 @@ class LaunchService:
         return timer
 
     # --- shutting down ----------------------------------------------------------------------
+    @property
+    def shutting_down(self) -> bool:
+        return self._shutting_down
+
     def shutdown(self, reason: str) -> None:
         """End the launch: OnShutdown handlers run, timers stop, processes are stopped."""
         if self._shutting_down:

@@ -20,5 +20,6 @@ class Shutdown(Action):
         reason = "shutdown requested" if self.reason is None else perform_text(context,
                                                                               self.reason)
         if context.service is not None:
-            context.service.log("INFO", "launch", f"shutting down: {reason}")
+            if not context.service.shutting_down:  # said once, for the first reason
+                context.service.log("INFO", "launch", f"shutting down: {reason}")
             context.service.shutdown(reason)
