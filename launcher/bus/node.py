@@ -97,6 +97,7 @@ class Publisher:
         # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
         self._matching = self._publisher.matching_status.matching
         self._watchers: list[Callable[[bool], None]] = []
+        self._closed = False
         self._listener = self._publisher.declare_matching_listener(self._on_matching)
 
     def _on_matching(self, status: Any) -> None:
@@ -118,7 +119,11 @@ class Publisher:
         attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
         if self._queryable is not None:
             self._cache.append((payload, attachment))
-        self._publisher.put(payload, attachment=attachment)
+        try:
+            self._publisher.put(payload, attachment=attachment)
+        except zenoh.ZError:
+            if not self._closed:  # a callback on Zenoh's thread may race destroy(): quiet
+                raise
 
     def _replay(self, query: zenoh.Query) -> None:
         for payload, attachment in list(self._cache):
@@ -131,6 +136,7 @@ class Publisher:
     def destroy(self) -> None:
         if not self._node._forget(self):
             return
+        self._closed = True
         for item in (self._listener, self._queryable, self._publisher, self._token):
             if item is not None:
                 item.undeclare()

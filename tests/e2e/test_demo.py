@@ -95,3 +95,26 @@ def test_a_bad_world_name_names_the_places_searched(demo):
     assert "world 'nowhere.xml' not found; searched:" in done.stdout + done.stderr
     assert "robot_sim/worlds" in done.stdout + done.stderr
     assert done.returncode == 1
+
+
+def test_three_robots_from_one_launch_file_move_independently(demo):
+    launch = str(REPO / "launch_files" / "multi_robot.launch.yaml")
+    proc = demo.start("launch", launch, "count:=3", output="multi.out")
+    try:
+        for i in range(3):
+            demo.wait_for_output(f"spawned 'robot_{i}' into world 'robot'", 90, "multi.out")
+        names = demo.run("topic", "echo", "/world/robot/model_states", "--once", "--field",
+                         "name").stdout
+        assert all(f"robot_{i}" in names for i in range(3))
+        demo.wait_for_output("X: 1.", 90, "multi.out")  # the fastest is past a metre
+        xs = []
+        for i in range(3):  # speeds 0.2, 0.3, 0.4 m/s: each its own odometry
+            out = demo.run("topic", "echo", f"/robot_{i}/odom", "nav_msgs/msg/Odometry",
+                           "--once", "--field", "pose.pose.position.x").stdout
+            xs.append(float(out.split()[0]))
+        assert xs[0] < xs[1] < xs[2] and xs[0] > 0.1, xs
+        frames = first_line_with(demo, ["topic", "echo", "/tf"], "child_frame_id: robot_2/")
+        assert frames  # tf frames carry each robot's prefix
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(60) == 130
