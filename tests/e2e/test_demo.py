@@ -118,3 +118,14 @@ def test_three_robots_from_one_launch_file_move_independently(demo):
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(60) == 130
+
+
+def test_the_same_stack_from_the_xml_launch_file(demo):
+    proc = demo.start("launch", "robot_bringup", "robot.launch.xml", output="xml.out")
+    try:
+        demo.wait_for_output("spawned 'my_robot' into world 'robot'", 90, "xml.out")
+        xs = [x for x, _ in positions(demo.wait_for_output("X: 1.", 90, "xml.out"))]
+        assert xs[-1] > xs[0] + 0.9
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(60) == 130
