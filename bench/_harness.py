@@ -67,6 +67,21 @@ def stop(proc: subprocess.Popen) -> None:
             proc.wait()
 
 
+def start_router() -> tuple[dict[str, str], subprocess.Popen]:
+    """A Zenoh router of the benchmark's own on a free loopback port, and the environment
+    that puts child processes (and this process) on it."""
+    from launcher.bus import discovery
+
+    endpoint = discovery.free_endpoint()
+    env = {**os.environ, discovery.ROUTER_VARIABLE: endpoint,
+           "LAUNCHER_RUN_DIR": tempfile.mkdtemp()}
+    os.environ.update({discovery.ROUTER_VARIABLE: endpoint})
+    router = subprocess.Popen([sys.executable, "-m", "launcher.bus.router", "--listen",
+                               endpoint], stdout=subprocess.DEVNULL)
+    time.sleep(0.5)
+    return env, router
+
+
 def summary(values: list[float]) -> str:
     values = sorted(values)
     return (f"median {statistics.median(values):.3f}  min {values[0]:.3f}  "

@@ -7,15 +7,11 @@ one. Latency is one-way, measured as half of a round trip through an echo node a
 from __future__ import annotations
 
 import argparse
-import os
 import subprocess
 import sys
-import tempfile
 import time
 
-from _harness import launcher_cmd, summary, table
-
-from launcher.bus import discovery
+from _harness import launcher_cmd, start_router, summary, table
 
 PY = sys.executable
 ECHO = """
@@ -125,14 +121,8 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--runs", type=int, default=5)
     runs = parser.parse_args().runs
-    endpoint = discovery.free_endpoint()
-    env = {**os.environ, discovery.ROUTER_VARIABLE: endpoint,
-           "LAUNCHER_RUN_DIR": tempfile.mkdtemp()}
-    os.environ.update({discovery.ROUTER_VARIABLE: endpoint})
-    router = subprocess.Popen([PY, "-m", "launcher.bus.router", "--listen", endpoint],
-                              stdout=subprocess.DEVNULL)
+    env, router = start_router()
     try:
-        time.sleep(0.5)
         lat = sorted(latency(env, 2000))
         p50, p99 = lat[len(lat) // 2], lat[int(len(lat) * 0.99)]
         twist = [throughput(env, "geometry_msgs/msg/Twist", {}, 50000) for _ in range(3)]

@@ -11,13 +11,10 @@ import argparse
 import os
 import subprocess
 import sys
-import tempfile
 import time
 
 import psutil
-from _harness import table
-
-from launcher.bus import discovery
+from _harness import start_router, table
 
 PY = sys.executable
 JOINTS = 20
@@ -36,13 +33,7 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--seconds", type=float, default=10.0)
     args = parser.parse_args()
-    endpoint = discovery.free_endpoint()
-    env = {**os.environ, discovery.ROUTER_VARIABLE: endpoint,
-           "LAUNCHER_RUN_DIR": tempfile.mkdtemp()}
-    os.environ.update({discovery.ROUTER_VARIABLE: endpoint})
-    router = subprocess.Popen([PY, "-m", "launcher.bus.router", "--listen", endpoint],
-                              stdout=subprocess.DEVNULL)
-    time.sleep(0.5)
+    env, router = start_router()
     rsp = subprocess.Popen([PY, "-m", "launcher.nodes.robot_state_publisher", "--ros-args",
                             "-p", "publish_frequency:=1000.0", "-p",
                             f"robot_description:={chain(JOINTS)}"], env=env,

@@ -10,18 +10,14 @@ the entity is compiled into the world that the next step advances.
 from __future__ import annotations
 
 import argparse
-import os
 import struct
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 import psutil
-from _harness import summary, table
-
-from launcher.bus import discovery
+from _harness import start_router, summary, table
 
 PY = sys.executable
 ROBOT = Path(__file__).resolve().parent.parent / "tests" / "data" / "diffbot.urdf"
@@ -173,14 +169,8 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=30.0, help="length of the paced run")
     parser.add_argument("--runs", type=int, default=5)
     args = parser.parse_args()
-    endpoint = discovery.free_endpoint()
-    env = {**os.environ, discovery.ROUTER_VARIABLE: endpoint,
-           "LAUNCHER_RUN_DIR": tempfile.mkdtemp()}
-    os.environ.update({discovery.ROUTER_VARIABLE: endpoint})
-    router = subprocess.Popen([PY, "-m", "launcher.bus.router", "--listen", endpoint],
-                              stdout=subprocess.DEVNULL)
+    env, router = start_router()
     try:
-        time.sleep(0.5)
         one = [unpaced(1, 20000) for _ in range(3)]
         ten = [unpaced(10, 5000) for _ in range(3)]
         pace = paced(env, args.seconds)
