@@ -18,6 +18,7 @@ from launcher.bus.qos import QoS
 from launcher.errors import LaunchError
 from launcher.nodes import bridge_config, conversions
 from launcher.nodes.bridge_config import Entry
+from launcher.nodes.running import run_node
 
 
 class Bridge:
@@ -107,28 +108,24 @@ class Bridge:
         publisher.watch_subscribers(on_subscribers)
 
 
+def setup(node: Node) -> Bridge:
+    bridge = Bridge(node)
+    entries = [bridge_config.parse_argument(arg, conversions.sim_type) for arg in node.args]
+    config = node.parameters.get("config_file")
+    if config:
+        entries += bridge_config.load_file(str(config), node.parameters, conversions.sim_type,
+                                           node.get_logger().error)
+    if not entries:
+        raise LaunchError("nothing to bridge: give TOPIC@ROS_TYPE@GZ_TYPE arguments or "
+                          "--ros-args -p config_file:=bridge.yaml")
+    for entry in entries:
+        bridge.add(entry)
+    node.get_logger().info(f"bridging {bridge.count} of {len(entries)} entries")
+    return bridge
+
+
 def main() -> int:
-    node = Node("parameter_bridge")
-    try:
-        bridge = Bridge(node)
-        entries = [bridge_config.parse_argument(arg, conversions.sim_type) for arg in node.args]
-        config = node.parameters.get("config_file")
-        if config:
-            entries += bridge_config.load_file(str(config), node.parameters,
-                                               conversions.sim_type, node.get_logger().error)
-        if not entries:
-            raise LaunchError("nothing to bridge: give TOPIC@ROS_TYPE@GZ_TYPE arguments or "
-                              "--ros-args -p config_file:=bridge.yaml")
-        for entry in entries:
-            bridge.add(entry)
-        node.get_logger().info(f"bridging {bridge.count} of {len(entries)} entries")
-        node.spin()
-    except LaunchError as exc:
-        print(f"[parameter_bridge] error: {exc}", file=sys.stderr, flush=True)
-        return 1
-    finally:
-        node.destroy_node()
-    return 0
+    return run_node("parameter_bridge", setup)
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@ from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
 from launcher.errors import LaunchError
 from launcher.nodes.kinematics import Tree
+from launcher.nodes.running import run_node
 
 _HEAD = b"\x00\x01\x00\x00"
 _STAMP = struct.Struct("<iI")
@@ -261,16 +262,7 @@ class RobotStatePublisher:
 
 
 def main() -> int:
-    node = Node("robot_state_publisher")
-    try:
-        RobotStatePublisher(node)
-        node.spin()
-    except LaunchError as exc:
-        print(f"[robot_state_publisher] error: {exc}", file=sys.stderr, flush=True)
-        return 1
-    finally:
-        node.destroy_node()
-    return 0
+    return run_node("robot_state_publisher", RobotStatePublisher)
 
 
 if __name__ == "__main__":
