@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from launcher.errors import LaunchError
+from launcher.sim.urdf_tree import parse_robot, root_link
 
 MOVING = ("revolute", "continuous", "prismatic")
 
@@ -45,33 +46,15 @@ class Tree:
         if not text or not text.strip():
             raise LaunchError(f"{label} is empty: give the URDF (e.g. from $(command 'xacro "
                               "robot.xacro'))")
-        try:
-            robot = ET.fromstring(text)
-        except ET.ParseError as exc:
-            line, column = exc.position
-            raise LaunchError(f"{label}:{line}:{column + 1}: the URDF does not parse: "
-                              f"{str(exc).split(':')[0]}") from None
-        if robot.tag != "robot":
-            raise LaunchError(f"{label}: the top element is <{robot.tag}>, expected <robot>")
-        links = [link.get("name", "") for link in robot.findall("link")]
-        joints = [_joint(element, links, label) for element in robot.findall("joint")]
-        parents: dict[str, str] = {}
-        for joint in joints:
-            if joint.child in parents:
-                raise LaunchError(f"{label}: link '{joint.child}' has two parent joints "
-                                  f"('{parents[joint.child]}' and '{joint.name}')")
-            parents[joint.child] = joint.name
-        roots = [link for link in links if link not in parents]
-        if len(roots) != 1:
-            reason = "no root link: the joints form a loop" if not roots else \
-                f"{len(roots)} root links ({', '.join(roots)}); a URDF is one tree"
-            raise LaunchError(f"{label}: {reason}")
+        robot = parse_robot(text, label)
+        root = root_link(robot, text, label)
+        joints = [_joint(element, label) for element in robot.findall("joint")]
         names = {j.name for j in joints}
         for joint in joints:
             if joint.mimic and joint.mimic[0] not in names:
                 raise LaunchError(f"{label}: joint '{joint.name}' mimics '{joint.mimic[0]}', "
                                   "which is not a joint")
-        tree = cls(robot.get("name", ""), roots[0], joints)
+        tree = cls(robot.get("name", ""), root, joints)
         tree.moving = [j for j in joints if j.kind in MOVING]
         tree.fixed = [j for j in joints if j.kind == "fixed"]
         tree._arrays()
@@ -106,19 +89,14 @@ class Tree:
         return translation, quat
 
 
-def _joint(element: ET.Element, links: list[str], label: str) -> Joint:
+def _joint(element: ET.Element, label: str) -> Joint:
     name = element.get("name", "")
     kind = element.get("type", "")
     if kind not in (*MOVING, "fixed", "floating", "planar"):
         raise LaunchError(f"{label}: joint '{name}' has type '{kind}'; expected revolute, "
                           "continuous, prismatic, fixed, floating or planar")
-    parent, child = element.find("parent"), element.find("child")
-    if parent is None or child is None:
-        raise LaunchError(f"{label}: joint '{name}' needs <parent link=…> and <child link=…>")
-    for end in (parent.get("link", ""), child.get("link", "")):
-        if end not in links:
-            raise LaunchError(f"{label}: joint '{name}' names link '{end}', which is not "
-                              "defined")
+    parent, child = element.find("parent"), element.find("child")  # checked by root_link
+    assert parent is not None and child is not None
     origin = element.find("origin")
     xyz = _vector(origin.get("xyz") if origin is not None else None, (0.0, 0.0, 0.0), name)
     rpy = _vector(origin.get("rpy") if origin is not None else None, (0.0, 0.0, 0.0), name)

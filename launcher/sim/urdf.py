@@ -1,8 +1,8 @@
 """Preparing URDF for MuJoCo: checks, plugin tags, mesh URIs, and the compiler flags it needs.
 
 MuJoCo's URDF import fuses fixed links into the world and drops visuals unless told not to,
-and knows nothing of `package://` or Gazebo's tags. Here the URDF is checked (one root, no
-loops, joints naming real links), `<gazebo><plugin>` and `<mujoco><plugin>` elements are taken
+and knows nothing of `package://` or Gazebo's tags. Here the URDF's tree is checked
+(urdf_tree.py), `<gazebo><plugin>` and `<mujoco><plugin>` elements are taken
 out as plugin configs, `<gazebo reference="link"><mu1>` becomes that link's friction, mesh
 URIs become absolute paths, and `<mujoco><compiler fusestatic="false" discardvisual="false"/>`
 is set.
@@ -18,6 +18,7 @@ from pathlib import Path
 from launcher.errors import LaunchError
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.resources import resolve_uri
+from launcher.sim.urdf_tree import line_of, parse_robot, root_link
 
 
 @dataclass
@@ -29,55 +30,16 @@ class Urdf:
     friction: dict[str, float] = field(default_factory=dict)  # link -> sliding friction
 
 
-def _line_of(text: str, element: ET.Element, tag: str) -> str:
-    """Best-effort line of an element (ElementTree keeps none): the first matching name."""
-    name = element.get("name")
-    needle = f'<{tag} name="{name}"' if name else f"<{tag}"
-    index = text.find(needle)
-    return str(text.count("\n", 0, index) + 1) if index >= 0 else "?"
-
-
 def prepare(text: str, label: str, base: Path | None, packages: object | None = None,
             environ: Mapping[str, str] | None = None) -> Urdf:
-    try:
-        robot = ET.fromstring(text)
-    except ET.ParseError as exc:
-        line, column = exc.position
-        raise LaunchError(f"{label}:{line}:{column + 1}: invalid URDF: not valid XML "
-                          f"({str(exc).split(':')[0]})") from None
-    if robot.tag != "robot":
-        raise LaunchError(f"{label}: invalid URDF: the top element is <{robot.tag}>, expected "
-                          "<robot>")
-    links = [link.get("name", "") for link in robot.findall("link")]
-    if not links:
-        raise LaunchError(f"{label}: invalid URDF: no <link>")
-    parents: dict[str, str] = {}
-    for joint in robot.findall("joint"):
-        where = f"{label}:{_line_of(text, joint, 'joint')}"
-        parent = joint.find("parent")
-        child = joint.find("child")
-        if parent is None or child is None:
-            raise LaunchError(f"{where}: invalid URDF: joint '{joint.get('name')}' needs "
-                              "<parent link=…> and <child link=…>")
-        for end in (parent.get("link"), child.get("link")):
-            if end not in links:
-                raise LaunchError(f"{where}: invalid URDF: joint '{joint.get('name')}' names "
-                                  f"link '{end}', which is not defined")
-        if child.get("link") in parents:
-            raise LaunchError(f"{where}: invalid URDF: link '{child.get('link')}' has two "
-                              "parent joints")
-        parents[child.get("link", "")] = parent.get("link", "")
-    roots = [link for link in links if link not in parents]
-    if len(roots) != 1:
-        reason = "no root link (the joints form a loop)" if not roots else \
-            f"{len(roots)} root links ({', '.join(roots)}); expected one tree"
-        raise LaunchError(f"{label}: invalid URDF: {reason}")
-    result = Urdf("", robot.get("name", "robot"), roots[0])
+    robot = parse_robot(text, label)
+    root = root_link(robot, text, label)
+    result = Urdf("", robot.get("name", "robot"), root)
     for gazebo in robot.findall("gazebo"):
         for plugin in gazebo.findall("plugin"):
             result.plugins.append(PluginConfig(plugin.get("filename", ""),
                                                plugin.get("name", ""), plugin,
-                                               f"{label}:{_line_of(text, plugin, 'plugin')}"))
+                                               f"{label}:{line_of(text, plugin, 'plugin')}"))
         reference = gazebo.get("reference")
         mu = gazebo.find("mu1")
         if reference and mu is not None and (mu.text or "").strip():

@@ -93,7 +93,7 @@ def test_tf_static_for_late_subscribers_tf_from_joint_states_and_mimics(rsp_ws):
 
 @pytest.mark.parametrize("args, expected", [
     ([], "parameter robot_description is missing or empty"),
-    (["-p", "robot_description:=<robot name='r'><link name='a'>"], "the URDF does not parse"),
+    (["-p", "robot_description:=<robot name='r'><link name='a'>"], "invalid URDF: not valid XML"),
     (["-p", "robot_description:=<robot name='r'><link name='a'/><link name='b'/></robot>"],
      "2 root links"),
     (["-p", "publish_frequency:=2000.0", "-p", "robot_description:=<robot name='r'>"

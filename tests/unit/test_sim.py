@@ -166,7 +166,7 @@ def test_a_urdf_keeps_fixed_links_and_visuals_and_gets_a_free_joint(world):
     ("<robot name='r'><link name='a'/><link name='b'/>"
      "<joint name='j1' type='fixed'><parent link='a'/><child link='b'/></joint>"
      "<joint name='j2' type='fixed'><parent link='b'/><child link='a'/></joint></robot>",
-     "no root link (the joints form a loop)"),
+     "no root link: the joints form a loop"),
     ("<robot name='r'><link name='a'/><joint name='j' type='fixed'><parent link='a'/>"
      "<child link='c'/></joint></robot>", "names link 'c', which is not defined"),
     ("<model/>", "expected URDF (<robot>) or MJCF"),
