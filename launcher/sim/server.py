@@ -103,10 +103,9 @@ class SimServer:
         node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create", self.on_create)
         node.create_service("mujoco_sim/srv/Remove", f"/world/{name}/remove", self.on_remove)
         node.create_service("mujoco_sim/srv/SetPose", f"/world/{name}/set_pose", self.on_set_pose)
-        world._plugin_configs.insert(0, config_from(
+        world.load_world_plugins(before=[config_from(
             f'<plugin filename="world_state" name="WorldState">'
-            f"<update_rate>{state_rate}</update_rate></plugin>", "the sim"))
-        world.load_world_plugins()
+            f"<update_rate>{state_rate}</update_rate></plugin>", "the sim")])
         self._started = time.monotonic()
 
     # --- the loop --------------------------------------------------------------------------

@@ -87,9 +87,10 @@ class World:
         self._plugins_changed()
 
     # --- plugins ---------------------------------------------------------------------------
-    def load_world_plugins(self) -> None:
-        """Load the world's plugins; one that fails is logged and left out."""
-        for config in self._plugin_configs:
+    def load_world_plugins(self, before: Sequence[PluginConfig] = ()) -> None:
+        """Load `before` (the sim's own) and the world file's plugins; one that fails is
+        logged and left out."""
+        for config in [*before, *self._plugin_configs]:
             plugin = self._make_plugin(config, None)
             if plugin is None:
                 continue
