@@ -70,6 +70,9 @@ class ExecuteProcess(Action):
                 raise ValueError(f"on_exit: expected 'shutdown' or a list of actions, "
                                  f"got '{self.on_exit}'")
             self.on_exit = [Shutdown(reason=to_text("a process with on_exit=shutdown exited"))]
+        for name in ("on_exit", "on_start"):  # ROS 2 also takes one action: on_exit=Shutdown()
+            if isinstance(getattr(self, name), Action):
+                setattr(self, name, [getattr(self, name)])
         env = self.additional_env
         pairs = env.items() if isinstance(env, dict) else env
         self.additional_env = [e if isinstance(e, EnvEntry) else EnvEntry(to_text(e[0]),
