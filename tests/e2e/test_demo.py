@@ -4,9 +4,11 @@ robot_state_publisher, xacro, create and driver processes on a real Zenoh router
 from __future__ import annotations
 
 import re
+import shutil
 import signal
 import subprocess
 
+import psutil
 import pytest
 
 from tests.conftest import REPO, launcher_argv
@@ -129,3 +131,92 @@ def test_the_same_stack_from_the_xml_launch_file(demo):
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(60) == 130
+
+
+def test_the_same_stack_from_the_python_launch_file_with_an_override(demo):
+    launch = str(REPO / "launch_files" / "robot.launch.py")
+    proc = demo.start("launch", launch, "world_name:=arena.xml.j2", output="py.out")
+    try:  # the override reaches ros_gz_sim's gz_sim.launch.py through two includes
+        demo.wait_for_output("spawned 'my_robot' into world 'arena'", 90, "py.out")
+        xs = [x for x, _ in positions(demo.wait_for_output("X: 1.", 90, "py.out"))]
+        assert xs[-1] > xs[0] + 0.9
+        wheel = first_line_with(demo, ["topic", "echo", "/tf"], "child_frame_id: right_wheel")
+        assert wheel
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(60) == 130
+
+
+def test_the_hooks_put_the_worlds_on_the_sim_path(demo):
+    """`launcher sim robot.xml` finds the world only through robot_sim's hooks."""
+    workspace = demo.root / "ws"
+    shutil.copytree(REPO / "packages" / "robot_sim", workspace / "robot_sim")
+    demo.env["LAUNCHER_PACKAGE_PATH"] = str(workspace)
+    hooks = workspace / "robot_sim" / "hooks"
+
+    def sim():
+        return demo.run("sim", "-v", "4", "-r", "--iterations", "200", "robot.xml",
+                        timeout=120)
+
+    done = sim()
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert f"from {hooks.parent}/worlds/robot.xml" in done.stdout
+    assert "CrateDropper: spawned" in done.stdout  # the plugin path came from them too
+    shutil.move(hooks, demo.root / "hooks.bak")
+    done = sim()
+    text = done.stdout + done.stderr
+    assert done.returncode == 1
+    assert "world 'robot.xml' not found; searched:" in text and "Traceback" not in text
+    shutil.move(demo.root / "hooks.bak", hooks)
+    assert sim().returncode == 0
+
+
+def test_a_bag_of_odom_recorded_during_the_run_opens_with_mcap(demo):
+    from mcap.reader import make_reader
+
+    proc = demo.start("launch", LAUNCH, output="demo.out")
+    try:
+        demo.wait_for_output("X: 0.2", 90, "demo.out")  # driving, odometry flowing
+        done = demo.run("bag", "record", "/odom", "-o", "run1", "--duration", "6",
+                        timeout=60)
+        assert done.returncode == 0, done.stdout + done.stderr
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(60) == 130
+    (bag,) = (demo.root / "run1").glob("*.mcap")
+    with open(bag, "rb") as handle:
+        messages = list(make_reader(handle).iter_messages(topics=["/odom"]))
+    expected = 50 * 6  # the diff drive's odom_publish_frequency, at real-time pace
+    assert abs(len(messages) - expected) <= expected * 0.1, len(messages)
+    _, channel, _ = messages[0]
+    assert channel.topic == "/odom"
+
+
+def launched(proc, name: str):
+    """The child of launcher process `proc` whose command line holds `name`."""
+    for child in psutil.Process(proc.pid).children(recursive=True):
+        if name in " ".join(child.cmdline()):
+            return child
+    raise AssertionError(f"no child process '{name}'")
+
+
+def test_kill_9_of_the_sim_ends_the_launch_and_leaves_nothing(demo):
+    proc = demo.start("launch", LAUNCH, output="demo.out")
+    demo.wait_for_output("X: 0.2", 90, "demo.out")
+    launched(proc, "launcher sim").kill()  # SIGKILL: the sim cannot clean up
+    code = proc.wait(60)  # on_exit: shutdown in the launch file; the fixture checks orphans
+    out = demo.output("demo.out")
+    assert code == 1, out  # a process died of a cause the launcher did not give it
+    assert re.search(r"\[sim-\d+\]: process was killed by SIGKILL", out), out
+    for name in ("robot_state_publisher", "parameter_bridge", "driver"):
+        assert re.search(rf"\[{name}-\d+\]: process stopped", out), name
+
+
+def test_sigterm_to_the_launcher_stops_everything(demo):
+    proc = demo.start("launch", LAUNCH, output="demo.out")
+    demo.wait_for_output("X: 0.2", 90, "demo.out")
+    children = psutil.Process(proc.pid).children(recursive=True)
+    proc.send_signal(signal.SIGTERM)
+    assert proc.wait(60) == 143
+    _, alive = psutil.wait_procs(children, timeout=10)
+    assert not alive, alive
