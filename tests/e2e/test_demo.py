@@ -220,3 +220,25 @@ def test_sigterm_to_the_launcher_stops_everything(demo):
     assert proc.wait(60) == 143
     _, alive = psutil.wait_procs(children, timeout=10)
     assert not alive, alive
+
+
+def test_the_square_node_drives_a_square_and_reports_its_closing_error(demo):
+    demo.write("square.launch.yaml", """
+    launch:
+      - include:
+          file: "$(find-pkg-share robot_bringup)/launch/robot.launch.yaml"
+          arg: [{name: drive, value: "false"}]
+      - node:
+          pkg: robot_application
+          exec: square
+          output: screen
+          on_exit: shutdown
+          param: [{name: side, value: 1.0}]
+    """)
+    done = demo.run("launch", "square.launch.yaml", timeout=240)
+    out = done.stdout
+    assert "leg 4 done" in out, out
+    error = float(re.search(r"closing error: ([\d.]+) m after a 1 m square", out).group(1))
+    assert error < 0.25, out  # odometry closes the square; a runaway would not
+    assert re.search(r"\[square-\d+\]: process has finished cleanly", out)
+    assert done.returncode == 0, out + done.stderr
