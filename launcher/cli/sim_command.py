@@ -23,6 +23,10 @@ def run(args: argparse.Namespace) -> int:
 
 
 def run_sim(argv: list[str]) -> int:
+    if argv[:1] == ["snapshot"]:  # a client of the running sim, not a world named so
+        from launcher.nodes.snapshot import main as snapshot
+
+        return snapshot(argv[1:])
     from launcher.cli.workspace import hooked_environment, load_index
     from launcher.errors import LaunchError
 

@@ -73,22 +73,23 @@ def parse(argv: list[str], parameters: dict[str, Any]) -> dict[str, Any]:
     return options
 
 
-def find_world(node: Any, deadline: float, timeout: float) -> str:
-    """The name of the one world whose create service is on the bus (waits for it)."""
+def find_world(node: Any, deadline: float, timeout: float, service: str = "create",
+               type_name: str = "mujoco_sim/srv/Create", option: str = "-world") -> str:
+    """The name of the one world whose `service` is on the bus (waits for it)."""
     from launcher.bus import graph, keys
 
     while True:
         worlds = sorted({e.topic.split("/")[2] for e in graph.entities(node.session, 0.5)
                          if e.kind == keys.SERVICE and e.topic.startswith("/world/")
-                         and e.topic.endswith("/create")
-                         and e.type_name == "mujoco_sim/srv/Create"})  # not a bridge's
+                         and e.topic.endswith(f"/{service}")
+                         and e.type_name == type_name})  # the sim's, not a bridge's
         if len(worlds) == 1:
             return worlds[0]
         if len(worlds) > 1:
             raise UsageError(f"several sims are running ({', '.join(worlds)}): choose one with "
-                             "-world")
+                             f"{option}")
         if time.monotonic() > deadline:
-            raise TimeoutError("no sim answered: no /world/<name>/create service appeared "
+            raise TimeoutError(f"no sim answered: no /world/<name>/{service} service appeared "
                                f"within {timeout:g} s")
         time.sleep(0.1)
 

@@ -27,6 +27,7 @@ from launcher.bus.types import registry
 from launcher.errors import LaunchError
 from launcher.sim.pacing import Pacer
 from launcher.sim.plugins import config_from
+from launcher.sim.snapshot import Camera
 from launcher.sim.world import World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
@@ -103,6 +104,9 @@ class SimServer:
         node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create", self.on_create)
         node.create_service("mujoco_sim/srv/Remove", f"/world/{name}/remove", self.on_remove)
         node.create_service("mujoco_sim/srv/SetPose", f"/world/{name}/set_pose", self.on_set_pose)
+        self.camera = Camera(world)  # its GL context is made at the first snapshot
+        node.create_service("mujoco_sim/srv/Snapshot", f"/world/{name}/snapshot",
+                            self.on_snapshot)
         world.load_world_plugins(before=[config_from(
             f'<plugin filename="world_state" name="WorldState">'
             f"<update_rate>{state_rate}</update_rate></plugin>", "the sim")])
@@ -110,6 +114,12 @@ class SimServer:
 
     # --- the loop --------------------------------------------------------------------------
     def run(self, iterations: int | None = None) -> None:
+        try:
+            self._loop(iterations)
+        finally:
+            self.camera.close()
+
+    def _loop(self, iterations: int | None) -> None:
         world, pacer, node = self.world, self.pacer, self.node
         self.publish_clock()
         while not self.stopped:
@@ -220,6 +230,20 @@ class SimServer:
             response.success, response.message = False, str(exc)
             return response
         response.success, response.message = True, f"moved '{request.name}'"
+        return response
+
+    def on_snapshot(self, request: Any, response: Any) -> Any:
+        import numpy as np
+
+        try:
+            png = self.camera.png(request.width, request.height, request.camera.strip(),
+                                  request.track.strip())
+        except LaunchError as exc:
+            self.log.warning(f"snapshot failed: {exc}")
+            response.success, response.message = False, str(exc)
+            return response
+        response.success, response.message = True, f"{len(png)} bytes of PNG"
+        response.png = np.frombuffer(png, dtype=np.uint8)
         return response
 
 

@@ -238,3 +238,52 @@ def test_iterations_stops_the_sim_and_an_unrunnable_world_is_one_clean_error(sim
     bad = sim_ws.run("sim", "bad.xml")
     assert bad.returncode == 1 and "bad.xml" in bad.stderr and "line 3" in bad.stderr.lower()
     assert "Traceback" not in bad.stderr
+
+
+def png_size_and_pixels(path: Path) -> tuple[int, int, bytes]:
+    import struct
+    import zlib
+
+    data = path.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    width, height = struct.unpack(">II", data[16:24])
+    idat = data.index(b"IDAT")
+    length = struct.unpack(">I", data[idat - 4:idat])[0]
+    return width, height, zlib.decompress(data[idat + 4:idat + 4 + length])
+
+
+def test_snapshot_renders_the_running_world_to_png(sim_ws):
+    proc = start_sim(sim_ws)
+    try:
+        sim_ws.wait_for_output("spawned 'bot'", 60, "launch.out")
+        done = sim_ws.run("sim", "snapshot", "-o", "world.png", "--width", "320",
+                          "--height", "240", "--track", "bot")
+        assert done.returncode == 0, done.stdout + done.stderr
+        assert "wrote world.png (320x240, world 'empty')" in done.stdout
+        width, height, rows = png_size_and_pixels(sim_ws.root / "world.png")
+        assert (width, height) == (320, 240) and len(rows) == 240 * (320 * 3 + 1)
+        assert len(set(rows)) > 20  # a picture, not one flat colour
+        bad = {  # each refused with the reason, the sim still running
+            ("--camera", "top"): "no camera 'top' in world 'empty'",
+            ("--track", "boot"): "no entity 'boot' in world 'empty' (did you mean 'bot'?)",
+            ("--width", "0"): "--width 0: each side must be 1 to 4096 pixels",
+            ("--height", "5000"): "--height 5000: each side must be 1 to 4096 pixels",
+            ("--world", "nowhere", "--timeout", "1"): "no sim with world 'nowhere' answered",
+        }
+        for args, message in bad.items():
+            refused = sim_ws.run("sim", "snapshot", "-o", "x.png", *args)
+            assert refused.returncode == 1 and message in refused.stderr, refused.stderr
+            assert "Traceback" not in refused.stderr
+        missing = sim_ws.run("sim", "snapshot", "-o", "no/such/folder/x.png")
+        assert missing.returncode == 1 and "the folder 'no/such/folder' does not exist" \
+            in missing.stderr
+        assert not (sim_ws.root / "x.png").exists()
+    finally:
+        assert stop(proc) == 130
+
+
+def test_snapshot_without_a_sim_says_so(sim_ws):
+    done = sim_ws.run("sim", "snapshot", "-o", "x.png", "--timeout", "1")
+    assert done.returncode == 1
+    assert "no /world/<name>/snapshot service appeared within 1 s; is the sim running?" \
+        in done.stderr

@@ -519,3 +519,19 @@ def test_the_pacer_never_drifts_and_reanchors_after_a_stall():
     now[0] += 0.1
     assert fast.due() == 200
     assert Pacer(0.001, 0.0).due() > 1_000_000
+
+
+def test_encode_png_round_trips_the_pixels():
+    import struct
+    import zlib
+
+    from launcher.sim.snapshot import encode_png
+
+    pixels = np.arange(4 * 3 * 3, dtype=np.uint8).reshape(4, 3, 3)
+    data = encode_png(pixels)
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    assert struct.unpack(">IIBB", data[16:26]) == (3, 4, 8, 2)  # width, height, 8-bit RGB
+    idat = data.index(b"IDAT")
+    rows = zlib.decompress(data[idat + 4:idat + 4 + struct.unpack(">I", data[idat - 4:idat])[0]])
+    assert rows == b"".join(b"\x00" + pixels[r].tobytes() for r in range(4))
+    assert data.endswith(b"IEND\xaeB`\x82")
