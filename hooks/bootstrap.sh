@@ -18,6 +18,17 @@ find_python() {
     return 1
 }
 
+# `launcher sim snapshot` renders offscreen with EGL, which Debian's Mesa packages provide.
+if ! ldconfig -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+            libegl1 libegl-mesa0 libgl1-mesa-dri >/dev/null
+    else
+        echo "note: pictures (launcher sim snapshot) need EGL:" \
+            "apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri" >&2
+    fi
+fi
+
 if [ ! -x .venv/bin/python ]; then
     "$(find_python)" -m venv .venv
 fi
