@@ -29,7 +29,7 @@ class Recorder:
         self.counts: dict[str, int] = {}
 
     def discover(self) -> None:
-        for name, info in graph.topics(self.node.session).items():
+        for name, info in graph.topics(self.node.graph_session()).items():
             if name in self.connections or not info.publishers:
                 continue
             if self.everything or name in self.topics:

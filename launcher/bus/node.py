@@ -26,11 +26,11 @@ from typing import Any
 
 import zenoh
 
-from launcher.bus import keys, names, ros_args
+from launcher.bus import discovery, keys, names, ros_args
 from launcher.bus.clock import Clock
 from launcher.bus.qos import QoS, qos_of
 from launcher.bus.services import Client, Service
-from launcher.bus.session import open_session
+from launcher.bus.session import NoRouter, open_session
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 
@@ -226,6 +226,7 @@ class Node:
             self._parameters.update(ros_args.load_params_file(path, self.name, self.namespace))
         self._parameters.update(parsed.parameters)
         self.session = session or open_session("peer", host_if_alone=True)
+        self._graph_session: zenoh.Session | None = None
         self.timeout = 2.0
         self._node_id = next(_node_ids)
         self._entity_ids = itertools.count(1)
@@ -399,11 +400,27 @@ class Node:
     def shutdown(self) -> None:
         self._stopped.set()
 
+    def graph_session(self) -> zenoh.Session:
+        """The session to ask who is on the bus. A peer's liveliness query reaches only the
+        peers it has links to, and with dozens of nodes starting at once some links come late
+        or not at all (ten robots' `create`s never saw the sim); the router answers a client
+        with every token. Opened at the first question; a node hosting its own bus, or on a
+        config of the user's, asks through its own session."""
+        if self._graph_session is None:
+            self._graph_session = self.session
+            if not os.environ.get(discovery.CONFIG_VARIABLE):
+                with contextlib.suppress(NoRouter):
+                    self._graph_session = open_session("client")
+        return self._graph_session
+
     def destroy_node(self) -> None:
         """Undeclare everything and close the session; safe to call more than once."""
         if self._destroyed:
             return
         self._destroyed = True
+        if self._graph_session not in (None, self.session):
+            with contextlib.suppress(zenoh.ZError):
+                self._graph_session.close()
         for entity in list(self._entities):
             # the session must close whatever happened to one entity
             with contextlib.suppress(zenoh.ZError):

@@ -102,7 +102,7 @@ class Client:
         while time.monotonic() < deadline:
             if any(e.kind == keys.SERVICE and e.topic == self.name and
                    e.type_name == self.type_name  # another type by that name will not answer
-                   for e in entities(self._node.session, 0.5)):
+                   for e in entities(self._node.graph_session(), 0.5)):
                 return True
             time.sleep(0.05)
         return False

@@ -79,7 +79,8 @@ def find_world(node: Any, deadline: float, timeout: float, service: str = "creat
     from launcher.bus import graph, keys
 
     while True:
-        worlds = sorted({e.topic.split("/")[2] for e in graph.entities(node.session, 0.5)
+        found = graph.entities(node.graph_session(), 0.5)
+        worlds = sorted({e.topic.split("/")[2] for e in found
                          if e.kind == keys.SERVICE and e.topic.startswith("/world/")
                          and e.topic.endswith(f"/{service}")
                          and e.type_name == type_name})  # the sim's, not a bridge's
