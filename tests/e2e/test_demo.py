@@ -242,3 +242,21 @@ def test_the_square_node_drives_a_square_and_reports_its_closing_error(demo):
     assert error < 0.25, out  # odometry closes the square; a runaway would not
     assert re.search(r"\[square-\d+\]: process has finished cleanly", out)
     assert done.returncode == 0, out + done.stderr
+
+
+def test_ten_robots_all_spawn_and_publish_odometry(demo):
+    """Forty-one nodes start at once. Their peer links to the sim, which starts last, come late
+    or not at all; `create` asks the router who is on the bus, so all ten find the sim (a
+    peer's own liveliness query once left most of them waiting forever)."""
+    launch = str(REPO / "launch_files" / "multi_robot.launch.yaml")
+    proc = demo.start("launch", launch, "count:=10", output="ten.out")
+    try:
+        for i in range(10):
+            demo.wait_for_output(f"spawned 'robot_{i}' into world 'robot'", 180, "ten.out")
+        for i in range(10):
+            out = demo.run("topic", "echo", f"/robot_{i}/odom", "nav_msgs/msg/Odometry",
+                           "--once", "--field", "child_frame_id", timeout=60).stdout
+            assert f"robot_{i}/base_link" in out, (i, out)
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(90) == 130
