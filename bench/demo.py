@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""The demo end to end (issue 7): `launcher launch launch_files/robot.launch.yaml` to the first
+/odom on the ROS side; ten robots from multi_robot.launch.yaml (time until all ten publish
+odometry, the sim's real-time factor while all ten drive at 1 kHz physics); the whole demo's
+memory. Everything is real: the launches run from the repo as a user runs them, and a probe
+node inside each launch reports what it hears."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import psutil
+from _harness import launcher_cmd, summary, table, workdir
+
+REPO = Path(__file__).resolve().parent.parent
+
+# A node started by the same launch: prints a JSON line when each topic's first message
+# arrives (wall time), then the sim's real-time factor over a window once all have arrived.
+PROBE = """
+import json, sys, time
+from launcher.bus.node import Node
+topics, window = sys.argv[1].split(","), float(sys.argv[2])
+node = Node("bench_probe")
+first, clocks = {}, []
+def heard(topic):
+    def first_message(message):
+        if topic not in first:
+            first[topic] = time.time()
+            print("PROBE " + json.dumps({"first": {topic: first[topic]}}), flush=True)
+    return first_message
+for topic in topics:
+    node.create_subscription("nav_msgs/msg/Odometry", topic, heard(topic))
+def tick(c):
+    clocks.append((time.monotonic(), c.sim.sec + c.sim.nanosec * 1e-9))
+node.create_subscription("mujoco_sim/msg/Clock", "/world/robot/clock", tick)
+while len(first) < len(topics):
+    node.spin_once(0.05)
+print("PROBE " + json.dumps({"all": True}), flush=True)
+node.spin(2.0)  # let start-up settle
+clocks.clear()
+node.spin(window)
+(w0, s0), (w1, s1) = clocks[0], clocks[-1]
+print("PROBE " + json.dumps({"rtf": (s1 - s0) / (w1 - w0)}), flush=True)
+node.spin(1000)
+"""
+
+
+def run(root: Path, launch: str, args: list[str], topics: list[str], window: float,
+        timeout: float = 180.0) -> dict:
+    """Start `launch` with a probe beside it; its reports, plus the tree's memory."""
+    (root / "probe.py").write_text(PROBE)
+    wrapper = root / "bench.launch.yaml"
+    arg_lines = "".join(f"\n        - {{name: {a.split(':=')[0]}, value: '{a.split(':=')[1]}'}}"
+                        for a in args)
+    wrapper.write_text(f"""
+launch:
+  - include:
+      file: {REPO / 'launch_files' / launch}
+      arg:{arg_lines or ' []'}
+  - executable:
+      cmd: {sys.executable} {root / 'probe.py'} {','.join(topics)} {window}
+      name: bench_probe
+      output: screen
+""")
+    started = time.time()
+    proc = subprocess.Popen([*launcher_cmd(), "launch", str(wrapper), "--noninteractive"],
+                            cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True)
+    result: dict = {"started": started, "first": {}}
+    timer = threading.Timer(timeout, proc.send_signal, (2,))  # gives up: partial figures
+    timer.start()
+    try:
+        for line in proc.stdout:
+            if "PROBE " in line:
+                report = json.loads(line.split("PROBE ", 1)[1])
+                result["first"].update(report.pop("first", {}))
+                result.update(report)
+                if "rtf" in result:
+                    break
+                if "all" in report:
+                    result["rss"], result["uss"] = memory(proc.pid)
+    finally:
+        timer.cancel()
+        proc.send_signal(2)
+        proc.wait(60)
+    return result
+
+
+def memory(pid: int) -> tuple[float, float]:
+    """Sum of RSS and of USS (pages no other process shares) over the launch's processes, the
+    probe left out, in MiB."""
+    root = psutil.Process(pid)
+    rss = uss = 0
+    for proc in [root, *root.children(recursive=True)]:
+        try:
+            if "probe.py" in " ".join(proc.cmdline()):
+                continue
+            info = proc.memory_full_info()
+        except psutil.Error:
+            continue
+        rss, uss = rss + info.rss, uss + info.uss
+    return rss / 2**20, uss / 2**20
+
+
+def main() -> None:
+    root = workdir()
+    firsts, rss, uss, rtf1 = [], [], [], []
+    for _ in range(3):
+        result = run(root, "robot.launch.yaml", ["drive:=false"], ["/odom"], 5.0)
+        firsts.append(result["first"]["/odom"] - result["started"])
+        rss.append(result["rss"])
+        uss.append(result["uss"])
+        rtf1.append(result["rtf"])
+    rows = [
+        ("launch -> first /odom (ROS side), s", "<= 2.0", summary(firsts)),
+        ("1 robot: sim RTF at 1 kHz", "report", summary(rtf1)),
+        ("1 robot demo: sum of RSS, MiB", "report", summary(rss)),
+        ("1 robot demo: sum of USS, MiB", "report", summary(uss)),
+    ]
+    for count in (5, 10):
+        topics = [f"/robot_{i}/odom" for i in range(count)]
+        many = run(root, "multi_robot.launch.yaml", [f"count:={count}"], topics, 10.0, 120.0)
+        heard = len(many["first"])
+        if heard < count:
+            rows.append((f"{count} robots: launch -> all odometry, s", "report",
+                         f"not reached: {heard} of {count} in 120 s"))
+            continue
+        all_odom = max(many["first"].values()) - many["started"]
+        rows += [
+            (f"{count} robots: launch -> all odometry, s", "report", f"{all_odom:.3f}"),
+            (f"{count} robots driving: sim RTF at 1 kHz", ">= 1.0", f"{many['rtf']:.3f}"),
+            (f"{count} robots: sum of RSS, MiB", "report", f"{many['rss']:.0f}"),
+            (f"{count} robots: sum of USS, MiB", "report", f"{many['uss']:.0f}"),
+        ]
+    table("demo (bench/demo.py)", rows)
+
+
+if __name__ == "__main__":
+    main()
