@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import statistics
 import subprocess
@@ -89,6 +90,11 @@ def summary(values: list[float]) -> str:
 
 
 def table(title: str, rows: list[tuple[str, str, str]]) -> None:
+    """Print the rows; under bench/run_all also hand them on for its one table at the end."""
+    if os.environ.get("BENCH_ROWS"):
+        with open(os.environ["BENCH_ROWS"], "a") as handle:
+            for row in rows:
+                handle.write(json.dumps([Path(sys.argv[0]).name, *row]) + "\n")
     width = max(len(r[0]) for r in rows)
     print(f"\n{title}")
     print(f"  {'benchmark'.ljust(width)}  {'target':<14}  result")
