@@ -21,7 +21,9 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
     if "--ros-args" in argv:
         cut = argv.index("--ros-args")
         argv, ros = argv[:cut], argv[cut:]
-    parser = argparse.ArgumentParser(prog="sim", description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        prog="sim", description=__doc__.split("\n")[0],
+        epilog="A picture of a running world: launcher sim snapshot -o world.png (see -h there).")
     parser.add_argument("world", nargs="?", default="empty.xml", metavar="WORLD")
     parser.add_argument("-v", "--verbose", type=int, default=2, choices=range(5),
                         metavar="LEVEL", help="0 quiet, 1 errors, 2 warnings, 3 info, 4 debug")
