@@ -47,6 +47,14 @@ class Workspace:
         self.env = dict(os.environ, LAUNCHER_TEST_TAG=tag,
                         LAUNCHER_LOG_DIR=str(root / "log"), PYTHONUNBUFFERED="1")
 
+    def own_bus(self) -> Workspace:
+        """Launches and tools started here meet only each other: a run folder of this test's,
+        no router or simulator paths from outside."""
+        self.env["LAUNCHER_RUN_DIR"] = str(self.root / "run")
+        for name in ("LAUNCHER_ROUTER", "MUJOCO_SIM_RESOURCE_PATH", "MUJOCO_SIM_PLUGIN_PATH"):
+            self.env.pop(name, None)
+        return self
+
     def write(self, name: str, text: str) -> Path:
         path = self.root / name
         path.parent.mkdir(parents=True, exist_ok=True)

@@ -18,10 +18,7 @@ LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 
 @pytest.fixture
 def demo(ws):
-    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
-    ws.env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
-    for name in ("LAUNCHER_ROUTER", "MUJOCO_SIM_RESOURCE_PATH", "MUJOCO_SIM_PLUGIN_PATH"):
-        ws.env.pop(name, None)
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
     return ws
 
 

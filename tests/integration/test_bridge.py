@@ -103,8 +103,7 @@ node.destroy_node()
 
 @pytest.fixture
 def bridge_ws(ws):
-    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
-    ws.env.pop("LAUNCHER_ROUTER", None)
+    ws.own_bus()
     ws.write("bridge.yaml.j2", BRIDGE)
     ws.write("sim.launch.yaml", LAUNCH)
     return ws

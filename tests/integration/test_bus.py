@@ -41,8 +41,7 @@ node.destroy_node()
 
 @pytest.fixture
 def bus(ws):
-    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
-    ws.env.pop("LAUNCHER_ROUTER", None)
+    ws.own_bus()
     ws.write("talker.py", TALKER)
     ws.write("listener.py", LISTENER)
     return ws

@@ -51,8 +51,7 @@ node.destroy_node()
 
 @pytest.fixture
 def rsp_ws(ws):
-    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
-    ws.env.pop("LAUNCHER_ROUTER", None)
+    ws.own_bus()
     ws.write("arm.urdf", CHAIN)
     return ws
 

@@ -99,10 +99,7 @@ node.destroy_node()
 
 @pytest.fixture
 def sim_ws(ws):
-    ws.env["LAUNCHER_RUN_DIR"] = str(ws.root / "run")
-    ws.env.pop("LAUNCHER_ROUTER", None)
-    ws.env.pop("MUJOCO_SIM_RESOURCE_PATH", None)
-    return ws
+    return ws.own_bus()
 
 
 def start_sim(ws, body: str = SIM_LAUNCH):
