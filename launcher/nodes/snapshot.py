@@ -59,7 +59,7 @@ def take(argv: list[str]) -> int:
             raise LaunchError(f"{exc}; is the sim running?") from None
         client = node.create_client(SERVICE_TYPE, f"/world/{world}/snapshot")
         if not client.wait_for_service(max(0.0, deadline - time.monotonic())):
-            raise LaunchError(f"no sim with world '{args.world}' answered within "
+            raise LaunchError(f"no sim with world '{world}' answered within "
                               f"{args.timeout:g} s (`launcher service list` shows the "
                               "running ones)")
         request = node.message(f"{SERVICE_TYPE}_Request", width=args.width,
