@@ -60,3 +60,14 @@ def test_python_file_without_generate_function(tmp_path):
     path.write_text("x = 1\n")
     with pytest.raises(ParseError, match="must define generate_launch_description"):
         load_file(path)
+
+
+def test_on_exit_takes_one_action_as_ros_2_does():
+    from launcher.api import ExecuteProcess, LogInfo, Shutdown
+
+    process = ExecuteProcess(cmd=["true"], on_exit=Shutdown(reason="bye"),
+                             on_start=LogInfo(msg="up"))
+    (shutdown,) = process.on_exit  # was silently dropped when not given as a list
+    (log,) = process.on_start
+    assert isinstance(shutdown, type(Shutdown())) and list(process.sub_actions()) == [log,
+                                                                                      shutdown]
