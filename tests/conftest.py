@@ -51,7 +51,9 @@ class Workspace:
         """Launches and tools started here meet only each other: a run folder of this test's,
         no router or simulator paths from outside."""
         self.env["LAUNCHER_RUN_DIR"] = str(self.root / "run")
-        for name in ("LAUNCHER_ROUTER", "MUJOCO_SIM_RESOURCE_PATH", "MUJOCO_SIM_PLUGIN_PATH"):
+        for name in ("LAUNCHER_ROUTER", "MUJOCO_SIM_RESOURCE_PATH", "MUJOCO_SIM_PLUGIN_PATH",
+                     "GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH", "GAZEBO_MODEL_PATH",
+                     "GAZEBO_RESOURCE_PATH", "GZ_SIM_SYSTEM_PLUGIN_PATH", "GAZEBO_PLUGIN_PATH"):
             self.env.pop(name, None)
         return self
 

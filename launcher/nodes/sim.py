@@ -3,9 +3,12 @@
 The flags are `gz sim`'s: `-r` runs at start (otherwise paused until a control request),
 `-s` (server only) is accepted, as there is no GUI, `--iterations N` stops after N steps,
 `-z RATE` paces at RATE steps per second (0: as fast as possible), `--rtf` paces at a
-real-time factor instead, `-v` sets the verbosity (0 quiet … 4 debug; default 2, warnings).
-WORLD is a path, a file in MUJOCO_SIM_RESOURCE_PATH or a built-in world (default: empty.xml);
-`.j2` worlds are rendered with `--world-arg NAME=VALUE`.
+real-time factor instead (default: the world's <real_time_factor>, else 1), `-v` sets the
+verbosity (0 quiet … 4 debug; default 2, warnings). WORLD is an SDF or MJCF file: a path, a
+file in a resource folder (MUJOCO_SIM_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, …) or a built-in
+world (default: empty.sdf); `.j2` worlds are rendered with `--world-arg NAME=VALUE`.
+`--headless-rendering` and `--render-engine` are accepted; `-g` (Gazebo's GUI) says what
+launcher offers instead.
 """
 
 from __future__ import annotations
@@ -24,11 +27,17 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
     parser = argparse.ArgumentParser(
         prog="sim", description=__doc__.split("\n")[0],
         epilog="A picture of a running world: launcher sim snapshot -o world.png (see -h there).")
-    parser.add_argument("world", nargs="?", default="empty.xml", metavar="WORLD")
+    parser.add_argument("world", nargs="?", default="empty.sdf", metavar="WORLD")
     parser.add_argument("-v", "--verbose", type=int, default=2, choices=range(5),
                         metavar="LEVEL", help="0 quiet, 1 errors, 2 warnings, 3 info, 4 debug")
     parser.add_argument("-r", "--run", action="store_true", help="run at start")
     parser.add_argument("-s", "--server", action="store_true", help="server only (always)")
+    parser.add_argument("-g", "--gui", action="store_true",
+                        help="Gazebo's GUI: not available; says what to use instead")
+    parser.add_argument("--headless-rendering", action="store_true",
+                        help="accepted: rendering is always headless (EGL)")
+    parser.add_argument("--render-engine", default=None, metavar="ENGINE",
+                        help="accepted and ignored: MuJoCo renders the pictures")
     parser.add_argument("--iterations", type=int, default=None, metavar="N")
     pace = parser.add_mutually_exclusive_group()
     pace.add_argument("-z", "--rate", type=float, default=None, metavar="RATE",
@@ -59,10 +68,18 @@ def world_values(pairs: list[str]) -> dict[str, str]:
     return values
 
 
+GUI_INSTEAD = ("launcher has no Gazebo GUI: watch the world with `launcher sim snapshot -o "
+               "world.png` (a picture of the running world), and the topics with `launcher "
+               "gz topic -e -t TOPIC`")
+
+
 def main(argv: list[str] | None = None) -> int:
     args, ros = parse(sys.argv[1:] if argv is None else argv)
     from launcher.errors import LaunchError
 
+    if args.gui:  # `gz sim -g` is the GUI alone: there is no server to run
+        print(f"[sim] {GUI_INSTEAD}", file=sys.stderr, flush=True)
+        return 0
     try:
         return run(args, ros)
     except LaunchError as exc:
@@ -71,25 +88,26 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def run(args: argparse.Namespace, ros: list[str]) -> int:
-    from pathlib import Path
-
     from launcher.bus.node import Node
-    from launcher.sim import mjcf
+    from launcher.sim.loading import load_world_file
     from launcher.sim.resources import find_world
     from launcher.sim.server import SimServer, Transport, install_signal_handlers
     from launcher.sim.world import World
 
     path = find_world(args.world)
-    source = mjcf.read(path.read_text(encoding="utf-8"), Path(path),
-                       world_values(args.world_arg))
-    spec = mjcf.compile_spec(source)
+    loaded = load_world_file(path, world_values(args.world_arg))
     node = Node("sim", argv=ros)
-    node.get_logger().threshold = VERBOSITY[args.verbose]
+    logger = node.get_logger()
+    logger.threshold = VERBOSITY[args.verbose]
+    for warning in loaded.warnings:
+        logger.warning(warning)
     try:
-        world = World(spec, str(path), Transport(node), source.plugins)
+        world = World(loaded.spec, loaded.label, Transport(node), loaded.plugins,
+                      models=loaded.models)
         timestep = world.model.opt.timestep
+        default_rtf = loaded.real_time_factor if loaded.real_time_factor is not None else 1.0
         rtf = args.rtf if args.rtf is not None else \
-            (args.rate * timestep if args.rate is not None else 1.0)
+            (args.rate * timestep if args.rate is not None else default_rtf)
         server = SimServer(world, node, rtf, args.run, args.state_rate)
         install_signal_handlers(server)
         node.get_logger().info(

@@ -1,4 +1,5 @@
-"""Robot and model descriptions (URDF or MJCF, a string or a file) parsed once into templates.
+"""Robot and model descriptions (URDF, SDF or MJCF, a string or a file) parsed once into
+templates.
 
 A template is an MjSpec ready to be copied and attached, with its plugin configs. Templates
 are cached by the description's text (files: by path and modification time), so spawning ten
@@ -16,18 +17,24 @@ from typing import Any
 import mujoco
 
 from launcher.errors import LaunchError
-from launcher.sim import mjcf, urdf
+from launcher.sim import mjcf, sdf, urdf
 from launcher.sim.mjcf import PluginConfig
-from launcher.sim.resources import resolve_uri
+from launcher.sim.resources import model_file, resolve_uri
+from launcher.sim.transform import IDENTITY, Pose
 
 
 @dataclass
 class Template:
     spec: mujoco.MjSpec
-    name: str  # the description's own name (robot name= / mujoco model=)
+    name: str  # the description's own name (robot name= / model name= / mujoco model=)
     label: str
     plugins: list[PluginConfig] = field(default_factory=list)
     friction: dict[str, float] = field(default_factory=dict)
+    root: str = ""  # the root body (default: the first)
+    offset: Pose = IDENTITY  # the root body's pose in the model frame
+    static: bool = False  # no free joint: the model never moves by itself
+    pose: Pose = IDENTITY  # the description's own pose (SDF <model><pose>)
+    warnings: list[str] = field(default_factory=list)
 
 
 class Descriptions:
@@ -45,8 +52,6 @@ class Descriptions:
     def from_file(self, uri: str) -> Template:
         path = resolve_uri(uri, None, self.packages, self.environ)
         if path.is_dir():  # model://name gives the folder's model file already; a plain folder
-            from launcher.sim.resources import model_file
-
             path = model_file(path)
         stat = path.stat()
         key = f"{path}:{stat.st_mtime_ns}:{stat.st_size}"
@@ -71,8 +76,14 @@ class Descriptions:
             source = mjcf.read(text, path, environ=self.environ)
             spec = mjcf.compile_spec(source)
             return Template(spec, spec.modelname or "model", label, source.plugins)
-        raise LaunchError(f"{label}: not a robot description: expected URDF (<robot>) or MJCF "
-                          f"(<mujoco>), found '{stripped[:40]}'")
+        if stripped.startswith("<sdf"):
+            loaded = sdf.load_model(text, path, self.environ, self.packages)
+            model = loaded.model
+            return Template(loaded.spec, model.name, label, model.plugins, root=model.root,
+                            offset=model.offset, static=model.static, pose=loaded.pose,
+                            warnings=loaded.warnings)
+        raise LaunchError(f"{label}: not a model description: expected URDF (<robot>), SDF "
+                          f"(<sdf>) or MJCF (<mujoco>), found '{stripped[:40]}'")
 
 
 def _spec_from(text: str, label: str) -> Any:

@@ -59,8 +59,8 @@ def render_template(text: str, path: Path, values: Mapping[str, str]) -> str:
 
 
 def read(text: str, path: Path | None, values: Mapping[str, str] | None = None,
-         environ: Mapping[str, str] | None = None) -> Source:
-    if path is not None and path.name.endswith(".j2"):
+         environ: Mapping[str, str] | None = None, rendered: bool = False) -> Source:
+    if path is not None and path.name.endswith(".j2") and not rendered:
         text = render_template(text, path, values or {})
     source = Source(text, path)
     _take_plugins(source)

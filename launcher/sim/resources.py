@@ -1,9 +1,11 @@
-"""Finding worlds, models and meshes: the resource path, `model://` and `package://` URIs.
+"""Finding worlds, models, meshes and plugins: resource paths, `model://` and `package://`.
 
-MUJOCO_SIM_RESOURCE_PATH is the analogue of GZ_SIM_RESOURCE_PATH: colon-separated folders
-searched for worlds (by file name) and models (`model://NAME` is the folder NAME in one of
-them). A model folder holds `model.config`, whose `<mjcf>`, `<urdf>` or `<sdf>` element names
-the model file (the course's layout). `package://pkg/…` resolves through the package index.
+Worlds and models are searched in the folders of MUJOCO_SIM_RESOURCE_PATH and of Gazebo's
+variables (GZ_SIM_RESOURCE_PATH; the older IGN_GAZEBO_RESOURCE_PATH; classic Gazebo's
+GAZEBO_MODEL_PATH and GAZEBO_RESOURCE_PATH, whose worlds are in a `worlds` subfolder), in
+that order. `model://NAME` is the folder NAME in one of them, holding `model.config`, whose
+`<sdf version="…">` (the highest version launcher reads), `<mjcf>` or `<urdf>` element names
+the model file (Gazebo's layout). `package://pkg/…` resolves through the package index.
 """
 
 from __future__ import annotations
@@ -16,80 +18,120 @@ from pathlib import Path
 from launcher.errors import LaunchError, did_you_mean
 
 RESOURCE_PATH = "MUJOCO_SIM_RESOURCE_PATH"
+RESOURCE_VARIABLES = (RESOURCE_PATH, "GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH",
+                      "GAZEBO_MODEL_PATH", "GAZEBO_RESOURCE_PATH")
 BUILTIN_WORLDS = Path(__file__).resolve().parent.parent / "builtin" / "mujoco_sim" / "worlds"
+SDF_VERSIONS = ((1, 4), (1, 11))
+WORLD_SUFFIXES = ("", ".sdf", ".world", ".xml", ".xml.j2")
 
 
 class ResourceNotFound(LaunchError):
     pass
 
 
-def resource_dirs(environ: Mapping[str, str] | None = None) -> list[Path]:
+def resource_entries(environ: Mapping[str, str] | None = None) -> list[tuple[Path, str]]:
+    """Each resource folder with the variable it came from, in search order, once each."""
     env = os.environ if environ is None else environ
-    return [Path(p).expanduser() for p in env.get(RESOURCE_PATH, "").split(os.pathsep) if p]
+    found: list[tuple[Path, str]] = []
+    for variable in RESOURCE_VARIABLES:
+        for part in env.get(variable, "").split(os.pathsep):
+            folder = Path(part).expanduser() if part else None
+            if folder is not None and all(folder != f for f, _ in found):
+                found.append((folder, variable))
+    return found
+
+
+def resource_dirs(environ: Mapping[str, str] | None = None) -> list[Path]:
+    return [folder for folder, _ in resource_entries(environ)]
 
 
 def find_world(name: str, environ: Mapping[str, str] | None = None) -> Path:
     """A world as a path, then in each resource folder, then among the built-in worlds."""
-    searched: list[str] = []
+    env = os.environ if environ is None else environ
     candidate = Path(name).expanduser()
     if candidate.is_file():
         return candidate.resolve()
-    searched.append(f"the path {candidate.resolve()}")
+    searched = [f"the path {candidate.resolve()}"]
     if not candidate.is_absolute():
-        for folder in resource_dirs(environ):
-            if (folder / name).is_file():
-                return (folder / name).resolve()
-            searched.append(f"{folder} ({RESOURCE_PATH})")
-        for suffix in ("", ".xml", ".xml.j2"):
+        for folder, variable in resource_entries(env):
+            places = [folder, folder / "worlds"] if variable == "GAZEBO_RESOURCE_PATH" \
+                else [folder]
+            for place in places:
+                if (place / name).is_file():
+                    return (place / name).resolve()
+            searched.append(f"{folder} ({variable})")
+        for suffix in WORLD_SUFFIXES:
             if (BUILTIN_WORLDS / f"{name}{suffix}").is_file():
                 return BUILTIN_WORLDS / f"{name}{suffix}"
         searched.append(f"the built-in worlds ({', '.join(builtin_worlds())})")
-    if not resource_dirs(environ):
-        searched.append(f"{RESOURCE_PATH} is not set")
-    known = [p.name for d in resource_dirs(environ) if d.is_dir() for p in d.iterdir()]
+    values = "; ".join(f"{v}={env[v]!r}" if env.get(v) else f"{v} is not set"
+                       for v in RESOURCE_VARIABLES)
+    known = [p.name for d in resource_dirs(env) if d.is_dir() for p in d.iterdir()]
     raise ResourceNotFound(f"world '{name}' not found; searched:\n  " + "\n  ".join(searched)
-                           + did_you_mean(name, known + builtin_worlds()))
+                           + f"\n  ({values})" + did_you_mean(name, known + builtin_worlds()))
 
 
 def builtin_worlds() -> list[str]:
-    return sorted(p.name for p in BUILTIN_WORLDS.glob("*.xml*"))
+    return sorted(p.name for p in BUILTIN_WORLDS.iterdir() if p.is_file())
 
 
 def find_model(name: str, environ: Mapping[str, str] | None = None) -> Path:
     """The folder of `model://NAME`."""
-    folders = resource_dirs(environ)
-    for folder in folders:
+    entries = resource_entries(environ)
+    for folder, _ in entries:
         if (folder / name).is_dir():
             return folder / name
-    where = ", ".join(str(f) for f in folders) or f"nowhere: {RESOURCE_PATH} is not set"
-    known = [p.name for d in folders if d.is_dir() for p in d.iterdir() if p.is_dir()]
-    raise ResourceNotFound(f"model '{name}' (model://{name}) not found in {RESOURCE_PATH}: "
+    where = ", ".join(f"{f} ({v})" for f, v in entries) or \
+        f"nowhere: none of {', '.join(RESOURCE_VARIABLES)} is set"
+    known = [p.name for f, _ in entries if f.is_dir() for p in f.iterdir() if p.is_dir()]
+    raise ResourceNotFound(f"model '{name}' (model://{name}) not found; searched: "
                            f"{where}{did_you_mean(name, known)}")
 
 
 def model_file(folder: Path) -> Path:
     """The model file a model folder's model.config names (or its only model file)."""
     config = folder / "model.config"
-    if config.is_file():
-        try:
-            root = ET.parse(config).getroot()
-        except ET.ParseError as exc:
-            raise LaunchError(f"{config}:{exc.position[0]}:{exc.position[1]}: "
-                              f"model.config is not valid XML: {exc}") from None
-        for tag in ("mjcf", "urdf", "sdf"):
-            element = root.find(tag)
-            if element is not None and (element.text or "").strip():
-                path = folder / element.text.strip()
-                if not path.is_file():
-                    raise ResourceNotFound(f"{config}: <{tag}> names '{element.text.strip()}'"
-                                           f", which is not in {folder}")
-                return path
-        raise LaunchError(f"{config}: expected an <mjcf>, <urdf> or <sdf> element naming "
-                          "the model file")
-    found = sorted(p for p in folder.iterdir() if p.suffix in (".xml", ".urdf"))
-    if len(found) == 1:
-        return found[0]
-    raise ResourceNotFound(f"model folder {folder} has no model.config")
+    if not config.is_file():
+        found = sorted(p for p in folder.iterdir() if p.suffix in (".xml", ".urdf", ".sdf"))
+        if len(found) == 1:
+            return found[0]
+        raise ResourceNotFound(f"model folder {folder} has no model.config")
+    try:
+        root = ET.parse(config).getroot()
+    except ET.ParseError as exc:
+        raise LaunchError(f"{config}:{exc.position[0]}:{exc.position[1] + 1}: "
+                          f"model.config is not valid XML: {exc}") from None
+    chosen = _sdf_entry(root, config)
+    if chosen is None:
+        chosen = next((e for tag in ("mjcf", "urdf") for e in root.findall(tag)
+                       if (e.text or "").strip()), None)
+    if chosen is None:
+        raise LaunchError(f"{config}: no usable model file: expected <sdf version=\"1.x\">"
+                          "model.sdf</sdf> (or <mjcf>/<urdf>) naming the model file")
+    path = folder / (chosen.text or "").strip()
+    if not path.is_file():
+        raise ResourceNotFound(f"{config}: <{chosen.tag}> names '{(chosen.text or '').strip()}'"
+                               f", which is not in {folder}")
+    return path
+
+
+def _sdf_entry(root: ET.Element, config: Path) -> ET.Element | None:
+    """The `<sdf>` entry of the highest version launcher reads; none is usable is an error."""
+    entries = [e for e in root.findall("sdf") if (e.text or "").strip()]
+    usable = []
+    for entry in entries:
+        major, _, minor = entry.get("version", "1.4").strip().partition(".")
+        version = (int(major), int(minor)) if major.isdigit() and minor.isdigit() else None
+        if version is not None and SDF_VERSIONS[0] <= version <= SDF_VERSIONS[1]:
+            usable.append((version, entry))
+    if usable:
+        return max(usable, key=lambda pair: pair[0])[1]
+    if entries:
+        offered = ", ".join(f"{e.get('version', '?')} ({(e.text or '').strip()})"
+                            for e in entries)
+        raise LaunchError(f"{config}: no <sdf> entry launcher can read: offered {offered}; "
+                          "launcher reads SDF 1.4 to 1.11")
+    return None
 
 
 def resolve_uri(uri: str, base: Path | None, packages: object | None = None,

@@ -1,4 +1,9 @@
-"""The world: one MjSpec, its model and data, the entities spawned into it, and its plugins.
+"""The world: one MjSpec, its model and data, its entities, and its plugins.
+
+Every model of the world file is an entity (an SDF `<model>`; an MJCF top-level body), as is
+everything spawned: listed, moved, removed and reset alike. An entity's pose is its model
+frame's (its root body's pose times the inverse of `offset`); a static entity has no joint
+and is moved by moving its body.
 
 Spawning copies a description's template, gives its root body a free joint, lets its plugins
 add actuators, attaches it at a frame with the prefix `<name>/`, and recompiles keeping the
@@ -24,7 +29,14 @@ import mujoco
 from launcher.errors import LaunchError, did_you_mean
 from launcher.sim.descriptions import Descriptions, Template
 from launcher.sim.mjcf import PluginConfig
-from launcher.sim.plugins import Plugin, PluginError, find_class
+from launcher.sim.plugins import (
+    Plugin,
+    PluginError,
+    PluginUnavailable,
+    find_class,
+    is_infrastructure,
+)
+from launcher.sim.transform import IDENTITY, Pose
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
             mujoco.mjtWarning.mjWARN_BADQACC)  # indices 3, 4, 5, read directly in step()
@@ -38,13 +50,27 @@ class SpawnError(LaunchError):
 @dataclass
 class Entity:
     name: str
-    frame: Any  # the MjsFrame it is attached at
+    anchors: list[Any]  # what removing it deletes from the spec: its frame or root bodies
     root: str  # its root body, prefixed
     label: str  # where its description came from
     plugins: list[Plugin] = field(default_factory=list)
+    offset: Pose = IDENTITY  # the root body's pose in the model frame
+    roots: list[str] = field(default_factory=list)  # every root body (several trees)
     body: int = -1  # bound after each recompile
     qpos: int = -1  # address of its free joint's qpos, -1 if none
     dof: int = -1
+    placed: dict[str, Pose] = field(default_factory=dict)  # static roots as loaded
+
+
+@dataclass
+class WorldModel:
+    """A model of the world file: what the loader built into the world's spec."""
+
+    name: str
+    root: str
+    roots: list[str]
+    offset: Pose = IDENTITY
+    plugins: list[PluginConfig] = field(default_factory=list)
 
 
 def pose_from(values: Sequence[float]) -> tuple[list[float], list[float]]:
@@ -69,22 +95,51 @@ def check_pose(position: Iterable[float], quat: Iterable[float]) -> None:
 class World:
     def __init__(self, spec: mujoco.MjSpec, label: str, transport: Any,
                  plugins: Sequence[PluginConfig] = (),
-                 descriptions: Descriptions | None = None) -> None:
+                 descriptions: Descriptions | None = None,
+                 models: Sequence[WorldModel] | None = None) -> None:
+        """`models`: the world file's models (SDF); None takes MJCF's top-level bodies."""
         self.spec, self.label, self.transport = spec, label, transport
         # MuJoCo's own warnings go to the log, not to a MUJOCO_LOG.TXT in the working folder.
         mujoco.set_mju_user_warning(lambda text: transport.logger.warning(f"MuJoCo: {text}"))
         self.world_name = spec.modelname or "default"
         self.descriptions = descriptions or Descriptions()
-        self.model = _compile(spec, label)
-        self.data = mujoco.MjData(self.model)
-        mujoco.mj_forward(self.model, self.data)
         self.entities: dict[str, Entity] = {}
         self.iterations = 0
         self.plugins: list[Plugin] = []  # world plugins
         self._unstable = dict.fromkeys(UNSTABLE, 0)
         self._unstable_total = 0
         self._plugin_configs = list(plugins)
+        self._all: list[Plugin] = []
+        self._warned: set[str] = set()
+        for model in models if models is not None else _top_level_models(spec):
+            self._add_world_model(model)
+        self.model = _compile(spec, label)
+        self.data = mujoco.MjData(self.model)
         self._plugins_changed()
+        self._rebind(self.model, self.data)
+        for entity in list(self.entities.values()):
+            self._load_entity_plugins(entity)
+
+    def _add_world_model(self, model: WorldModel) -> None:
+        anchors = [self.spec.body(root) for root in model.roots]
+        entity = Entity(model.name, anchors, model.root, self.label, offset=model.offset,
+                        roots=list(model.roots))
+        entity.plugins = [p for p in (self._make_plugin(c, entity) for c in model.plugins) if p]
+        for plugin in list(entity.plugins):
+            plugin.spec_prefix = f"{model.name}/"
+            try:
+                plugin.prepare(self.spec)
+            except LaunchError as exc:
+                self.transport.logger.error(f"{exc}; entity '{model.name}' runs without it")
+                entity.plugins.remove(plugin)
+        self.entities[model.name] = entity
+
+    def _load_entity_plugins(self, entity: Entity) -> None:
+        for plugin in list(entity.plugins):
+            try:
+                plugin.load()
+            except Exception as exc:
+                self._plugin_failed(plugin, "load", exc)
 
     # --- plugins ---------------------------------------------------------------------------
     def load_world_plugins(self, before: Sequence[PluginConfig] = ()) -> None:
@@ -104,9 +159,13 @@ class World:
             self._plugins_changed()
 
     def _make_plugin(self, config: PluginConfig, entity: Entity | None) -> Plugin | None:
+        if is_infrastructure(config):
+            return None  # Gazebo's physics, user commands, …: what the sim is by itself
         try:
             cls = find_class(config)
             return cls(self, entity, config)
+        except PluginUnavailable as exc:
+            self.transport.logger.warning(str(exc))
         except PluginError as exc:
             self.transport.logger.error(str(exc))
         except Exception as exc:
@@ -209,11 +268,15 @@ class World:
               quat: Sequence[float], allow_renaming: bool = False) -> Entity:
         check_pose(position, quat)
         name = self.unique_name(name or template.name, allow_renaming)
+        for warning in template.warnings:
+            if warning not in self._warned:
+                self._warned.add(warning)
+                self.transport.logger.warning(warning)
         child = template.spec.copy()
         roots = list(child.worldbody.bodies)
         if not roots:
             raise SpawnError(f"{template.label}: the description has no body")
-        for body in roots:
+        for body in roots if not template.static else ():
             if not list(body.joints):
                 body.add_freejoint()
         for link, mu in template.friction.items():
@@ -222,7 +285,9 @@ class World:
                 for geom in body.geoms:  # contacts take the larger friction unless the
                     geom.friction[0] = mu  # geom has priority over what it touches
                     geom.priority = max(geom.priority, 1)
-        entity = Entity(name, None, f"{name}/{roots[0].name}", template.label)
+        root = template.root or roots[0].name
+        entity = Entity(name, [], f"{name}/{root}", template.label, offset=template.offset,
+                        roots=[f"{name}/{body.name}" for body in roots])
         plugins = [p for p in (self._make_plugin(c, entity) for c in template.plugins) if p]
         for plugin in plugins:
             try:
@@ -238,16 +303,12 @@ class World:
             self.spec.delete(frame)
             raise SpawnError(f"{template.label}: MuJoCo could not add '{name}': "
                              f"{' '.join(str(exc).split())}") from None
-        entity.frame = frame
+        entity.anchors = [frame]
         entity.plugins = plugins
         self.entities[name] = entity
         self._plugins_changed()
         self._rebind(model, data)
-        for plugin in list(plugins):
-            try:
-                plugin.load()
-            except Exception as exc:
-                self._plugin_failed(plugin, "load", exc)
+        self._load_entity_plugins(entity)
         return entity
 
     def spawn_file(self, uri: str, name: str, pose: Sequence[float] = (0, 0, 0, 0, 0, 0),
@@ -259,7 +320,8 @@ class World:
 
     def remove(self, name: str) -> None:
         entity = self.entity(name)
-        self.spec.delete(entity.frame)
+        for anchor in entity.anchors:
+            self.spec.delete(anchor)
         model, data = self.spec.recompile(self.model, self.data)
         del self.entities[name]
         self._plugins_changed()
@@ -274,14 +336,37 @@ class World:
         return self.entities[name]
 
     def set_pose(self, name: str, position: Sequence[float], quat: Sequence[float]) -> None:
+        """Put the entity's model frame at `position`/`quat` (w, x, y, z), at rest."""
         entity = self.entity(name)
         check_pose(position, quat)
-        if entity.qpos < 0:
-            raise SpawnError(f"entity '{name}' has no free joint at its root; it cannot be moved")
         norm = math.sqrt(sum(q * q for q in quat))
-        self.data.qpos[entity.qpos:entity.qpos + 7] = [*position, *(q / norm for q in quat)]
-        self.data.qvel[entity.dof:entity.dof + 6] = 0.0
+        target = Pose(tuple(position), tuple(q / norm for q in quat)) * entity.offset
+        move = target * self._body_pose(entity.body).inverse()
+        for root in entity.roots:
+            self._place_root(self.model.body(root).id, move)
         mujoco.mj_forward(self.model, self.data)
+
+    def _body_pose(self, body: int) -> Pose:
+        return Pose(tuple(self.data.xpos[body].tolist()), tuple(self.data.xquat[body].tolist()))
+
+    def _place_root(self, body: int, move: Pose) -> None:
+        """Move a root body by `move`: its free joint's qpos, or (no joint) the body itself."""
+        placed = move * self._body_pose(body)
+        joint = int(self.model.body_jntadr[body])
+        if joint >= 0 and self.model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
+            address, dof = int(self.model.jnt_qposadr[joint]), int(self.model.jnt_dofadr[joint])
+            self.data.qpos[address:address + 7] = [*placed.pos, *placed.quat]
+            self.data.qvel[dof:dof + 6] = 0.0
+        else:
+            self._put_static(body, placed)
+
+    def _put_static(self, body: int, pose: Pose) -> None:
+        """A jointless root body: the model's pose now, the spec's for later recompiles."""
+        self.model.body_pos[body], self.model.body_quat[body] = pose.pos, pose.quat
+        element = self.spec.body(self.model.body(body).name)
+        frame = element.frame
+        local = frame_pose(frame).inverse() * pose if frame is not None else pose
+        element.pos, element.quat = list(local.pos), list(local.quat)
 
     def _rebind(self, model: Any, data: Any) -> None:
         self.model, self.data = model, data
@@ -293,6 +378,11 @@ class World:
             free = joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE
             entity.qpos = int(model.jnt_qposadr[joint]) if free else -1
             entity.dof = int(model.jnt_dofadr[joint]) if free else -1
+            for root in entity.roots:
+                body = model.body(root).id
+                if root not in entity.placed and model.body_jntnum[body] == 0:
+                    entity.placed[root] = Pose(tuple(model.body_pos[body].tolist()),
+                                               tuple(model.body_quat[body].tolist()))
         mujoco.mj_forward(model, data)
         for plugin in self.all_plugins():
             try:
@@ -310,6 +400,10 @@ class World:
             self.data.qvel[:] = 0.0
             self.data.act[:] = 0.0
             self.data.ctrl[:] = 0.0
+        if poses:
+            for entity in self.entities.values():  # static entities that were moved
+                for root, pose in entity.placed.items():
+                    self._put_static(self.model.body(root).id, pose)
         if time:
             self.data.time = 0.0
             self.iterations = 0
@@ -319,10 +413,26 @@ class World:
 
     # --- reading state ---------------------------------------------------------------------
     def poses(self) -> tuple[list[str], Any, Any]:
-        """(names, positions n×3, quaternions n×4 as w,x,y,z) of every entity's root body."""
+        """(names, positions n×3, quaternions n×4 as w,x,y,z) of every entity's model frame."""
         names = list(self.entities)
         ids = [self.entities[n].body for n in names]
-        return names, self.data.xpos[ids].copy(), self.data.xquat[ids].copy()
+        positions, quats = self.data.xpos[ids].copy(), self.data.xquat[ids].copy()
+        for row, name in enumerate(names):
+            offset = self.entities[name].offset
+            if offset is not IDENTITY and not offset.is_identity:
+                pose = self._body_pose(ids[row]) * offset.inverse()
+                positions[row], quats[row] = pose.pos, pose.quat
+        return names, positions, quats
+
+
+def _top_level_models(spec: mujoco.MjSpec) -> list[WorldModel]:
+    """An MJCF world's models: its top-level bodies."""
+    return [WorldModel(body.name, body.name, [body.name]) for body in spec.worldbody.bodies
+            if body.name]
+
+
+def frame_pose(frame: Any) -> Pose:
+    return Pose(tuple(frame.pos), tuple(frame.quat))
 
 
 def _compile(spec: mujoco.MjSpec, label: str) -> Any:

@@ -169,7 +169,7 @@ def test_a_urdf_keeps_fixed_links_and_visuals_and_gets_a_free_joint(world):
      "no root link: the joints form a loop"),
     ("<robot name='r'><link name='a'/><joint name='j' type='fixed'><parent link='a'/>"
      "<child link='c'/></joint></robot>", "names link 'c', which is not defined"),
-    ("<model/>", "expected URDF (<robot>) or MJCF"),
+    ("<model/>", "expected URDF (<robot>), SDF (<sdf>) or MJCF"),
 ])
 def test_invalid_urdf_is_a_clear_error(text, expected):
     with pytest.raises(LaunchError) as error:

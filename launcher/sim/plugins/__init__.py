@@ -1,11 +1,19 @@
 """Plugins: systems attached to the world or to one entity, as Gazebo's are.
 
 A plugin is named by its `filename` (and `name`) as in Gazebo:
-  * built-in robot systems, under their Gazebo names or a short one (BUILTIN below);
+  * built-in robot systems, under their Gazebo names (any spelling: `gz-sim-…-system`,
+    `libgz-sim8-…-system.so`, `ignition-gazebo-…`, `gz::sim::systems::…`, `ignition::gazebo::…`)
+    or a short one (BUILTIN below); classic gazebo_ros plugins in URDF (CLASSIC);
+  * Gazebo's infrastructure systems (physics, user commands, scene broadcaster, sensors …),
+    which the sim is by itself: accepted and nothing loaded;
   * Python plugins: `filename="my_plugin.py"` (or `my_plugin`) found in a folder of
-    MUJOCO_SIM_PLUGIN_PATH, the class named by `name`; or `filename="package.module"` with the
-    class in `name`, imported as a module.
-The sim calls, in order: `prepare(spec)` (entity plugins, before attaching: add actuators),
+    MUJOCO_SIM_PLUGIN_PATH, GZ_SIM_SYSTEM_PLUGIN_PATH or GAZEBO_PLUGIN_PATH, the class named by
+    `name`; or `filename="package.module"` with the class in `name`, imported as a module.
+A C++ library (`….so`) or a Gazebo system launcher does not have is one warning: the world
+runs without it.
+The sim calls, in order: `prepare(spec)` (entity plugins, before compiling: add actuators;
+the entity's names in `spec` carry `spec_prefix`, empty for a spawned description and
+`<entity>/` for a model of the world file: use `joint_names(spec)` and `in_spec(name)`),
 `load()` (after compiling: publishers, subscriptions), `bind(model, data)` after every
 recompile, `pre_step` before each batch of steps, `post_step` after a batch once sim time has
 reached the plugin's `next_update`, `reset()` on a world reset and `close()` when its entity
@@ -20,6 +28,7 @@ import importlib
 import importlib.util
 import math
 import os
+import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
@@ -28,18 +37,24 @@ from launcher.errors import LaunchError, did_you_mean
 from launcher.sim.mjcf import PluginConfig
 
 PLUGIN_PATH = "MUJOCO_SIM_PLUGIN_PATH"
+PLUGIN_VARIABLES = (PLUGIN_PATH, "GZ_SIM_SYSTEM_PLUGIN_PATH", "IGN_GAZEBO_SYSTEM_PLUGIN_PATH",
+                    "GAZEBO_PLUGIN_PATH")
+# Gazebo systems that are the sim itself, or feed sensors launcher reports on its own
+INFRASTRUCTURE = {"physics", "user-commands", "scene-broadcaster", "sensors", "imu",
+                  "contact", "altimeter", "air-pressure", "magnetometer", "navsat",
+                  "forcetorque", "logical-camera", "log", "wind-effects"}
+_GZ_FILE = re.compile(
+    r"^(?:lib)?(?:gz-sim|ignition-gazebo)\d*-(?P<system>.+?)-system(?:\.so)?$")
+_GZ_CLASS = re.compile(r"^(?:gz::sim|ignition::gazebo)::systems::(?P<system>\w+)$")
 
 BUILTIN = {
     "world_state": "launcher.sim.plugins.world_state:WorldState",
     "diff_drive": "launcher.sim.plugins.diff_drive:DiffDrive",
     "gz-sim-diff-drive-system": "launcher.sim.plugins.diff_drive:DiffDrive",
     "gz::sim::systems::DiffDrive": "launcher.sim.plugins.diff_drive:DiffDrive",
-    "libgazebo_ros_diff_drive.so": "launcher.sim.plugins.diff_drive:DiffDrive",
     "joint_state_publisher": "launcher.sim.plugins.joint_state:JointStatePublisher",
     "gz-sim-joint-state-publisher-system": "launcher.sim.plugins.joint_state:JointStatePublisher",
     "gz::sim::systems::JointStatePublisher":
-        "launcher.sim.plugins.joint_state:JointStatePublisher",
-    "libgazebo_ros_joint_state_publisher.so":
         "launcher.sim.plugins.joint_state:JointStatePublisher",
     "joint_position_controller":
         "launcher.sim.plugins.joint_controller:JointPositionController",
@@ -53,6 +68,14 @@ BUILTIN = {
     "gz::sim::systems::JointController":
         "launcher.sim.plugins.joint_controller:JointVelocityController",
 }
+CLASSIC = {
+    "gazebo_ros_diff_drive": "launcher.sim.plugins.classic:ClassicDiffDrive",
+    "gazebo_ros_joint_state_publisher": "launcher.sim.plugins.classic:ClassicJointStates",
+}
+
+
+class PluginUnavailable(LaunchError):
+    """A plugin launcher cannot run (a C++ library, a Gazebo system it lacks): a warning."""
 
 
 class PluginError(LaunchError):
@@ -63,6 +86,7 @@ class Plugin:
     """Base class of every plugin; see the module text for when each hook runs."""
 
     next_update = 0.0
+    spec_prefix = ""
 
     def __init__(self, sim: Any, entity: Any, config: PluginConfig) -> None:
         self.sim, self.entity, self.config = sim, entity, config
@@ -89,6 +113,16 @@ class Plugin:
 
     def close(self) -> None:
         pass
+
+    # --- names in the spec given to prepare ------------------------------------------------
+    def in_spec(self, name: str) -> str:
+        return self.spec_prefix + name
+
+    def joint_names(self, spec: Any, types: tuple[Any, ...] = ()) -> list[str]:
+        """The entity's joints in `spec`, without the prefix (of `types` if given)."""
+        prefix = self.spec_prefix
+        return [j.name[len(prefix):] for j in spec.joints
+                if j.name.startswith(prefix) and (not types or j.type in types)]
 
     # --- configuration ---------------------------------------------------------------------
     def text(self, name: str, default: str | None = None) -> str | None:
@@ -125,15 +159,37 @@ class Plugin:
         return f"{owner}/{name}"
 
 
+def canonical(name: str) -> str:
+    """Gazebo's spellings of one system as its gz-sim name: `libignition-gazebo6-imu-system.so`
+    and `ignition::gazebo::systems::Imu` are `gz-sim-imu-system` and `gz::sim::systems::Imu`."""
+    found = _GZ_FILE.match(name)
+    if found:
+        return f"gz-sim-{found.group('system')}-system"
+    found = _GZ_CLASS.match(name)
+    if found:
+        return f"gz::sim::systems::{found.group('system')}"
+    return name
+
+
+def is_infrastructure(config: PluginConfig) -> bool:
+    found = _GZ_FILE.match(config.filename)
+    return bool(found) and found.group("system") in INFRASTRUCTURE
+
+
 def find_class(config: PluginConfig, environ: dict[str, str] | None = None) -> type[Plugin]:
     """The plugin class a config names (see the module text)."""
     env = os.environ if environ is None else environ
-    target = BUILTIN.get(config.filename) or BUILTIN.get(config.name)
+    target = BUILTIN.get(canonical(config.filename)) or BUILTIN.get(canonical(config.name))
+    classic = re.sub(r"^lib|\.so$", "", config.filename)
+    target = target or CLASSIC.get(classic)
     if target is not None:
         module_name, _, attribute = target.partition(":")
         return getattr(importlib.import_module(module_name), attribute)
     stem = config.filename.removesuffix(".py")
-    folders = [Path(p) for p in env.get(PLUGIN_PATH, "").split(os.pathsep) if p]
+    folders = [Path(p) for v in PLUGIN_VARIABLES for p in env.get(v, "").split(os.pathsep) if p]
+    if config.filename.endswith(".so") or ".so." in config.filename or \
+            _GZ_FILE.match(config.filename):
+        raise PluginUnavailable(_unavailable(config, folders))
     for folder in folders:
         path = folder / f"{stem}.py"
         if path.is_file():
@@ -145,10 +201,24 @@ def find_class(config: PluginConfig, environ: dict[str, str] | None = None) -> t
             module = None
         if module is not None:
             return _class_from(module, config, stem)
-    where = ", ".join(str(f) for f in folders) or f"{PLUGIN_PATH} is not set"
+    where = ", ".join(str(f) for f in folders) or f"none of {', '.join(PLUGIN_VARIABLES)} is set"
     raise PluginError(f"{config.where}: unknown plugin '{config.filename}' (name "
                       f"'{config.name}'): not a built-in system and no {stem}.py in {where}"
                       f"{did_you_mean(config.filename, list(BUILTIN))}")
+
+
+def _unavailable(config: PluginConfig, folders: list[Path]) -> str:
+    label = f"plugin '{config.filename}' (name '{config.name}')"
+    if _GZ_FILE.match(config.filename):
+        return (f"{config.where}: {label} is a Gazebo system launcher does not provide; the "
+                f"world runs without it (provided: {', '.join(sorted(_provided()))})")
+    where = ", ".join(str(f) for f in folders) or "no plugin folder set"
+    return (f"{config.where}: {label} is a C++ library: launcher loads Python plugins only "
+            f"(a .py file in {where}, or a module); the world runs without it")
+
+
+def _provided() -> set[str]:
+    return {name for name in BUILTIN if name.startswith("gz-sim-")}
 
 
 def _load_file(path: Path, config: PluginConfig) -> Any:

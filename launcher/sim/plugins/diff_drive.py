@@ -6,9 +6,10 @@ Parameters are Gazebo's (gz-sim-diff-drive-system): `left_joint`, `right_joint` 
 `child_frame_id` (`<name>/<root link>`), `max_linear_velocity`, `min_linear_velocity`,
 `max_angular_velocity`, `min_angular_velocity`, `max_linear_acceleration`,
 `min_linear_acceleration`, `max_angular_acceleration`, `min_angular_acceleration`. Relative
-topics live under `/model/<name>/`. launcher's own: `cmd_vel_timeout` (0.5 s of sim time
-without a command stops the wheels; 0 disables it), `wheel_response_time` (0.05 s: the wheel
-servo's gain is set from the robot's mass so a speed change settles in about this time),
+topics live under `/model/<name>/`. launcher's own: `cmd_vel_timeout` (seconds of sim time
+without a command after which the wheels stop; 0 never stops them; default 0 under
+Gazebo's names, where one command drives on as in Gazebo, and 0.5 s as `diff_drive`),
+`wheel_response_time` (0.05 s: the wheel servo's gain is set from the robot's mass so a speed change settles in about this time),
 `wheel_kv` (a fixed velocity gain in N·m·s/rad instead)
 and `max_wheel_torque`
 (none; a limit on light wheels can make the servo overshoot).
@@ -33,7 +34,7 @@ class DiffDrive(Plugin):
         if not self.left or not self.right:
             raise PluginError(f"{self.config.where}: plugin {self.label}: needs <left_joint> and "
                               "<right_joint>")
-        joints = [j.name for j in spec.joints]
+        joints = self.joint_names(spec)
         for joint in self.left + self.right:
             if joint not in joints:
                 raise PluginError(f"{self.config.where}: plugin {self.label}: joint '{joint}' is "
@@ -41,7 +42,8 @@ class DiffDrive(Plugin):
         self.separation = self.number("wheel_separation", 1.0, 1e-6)
         self.radius = self.number("wheel_radius", 0.2, 1e-6)
         self.frequency = self.number("odom_publish_frequency", 50.0, 0.0)
-        self.timeout = self.number("cmd_vel_timeout", 0.5, 0.0)
+        watchdog = 0.5 if self.config.filename == "diff_drive" else 0.0
+        self.timeout = self.number("cmd_vel_timeout", watchdog, 0.0)
         self.kv = self.number("wheel_kv", 0.0, 0.0)
         self.response = self.number("wheel_response_time", 0.05, 1e-4)
         torque = self.number("max_wheel_torque", math.inf, 0.0)
@@ -51,13 +53,14 @@ class DiffDrive(Plugin):
                                    "max_linear_acceleration", "min_linear_acceleration",
                                    "max_angular_acceleration", "min_angular_acceleration")}
         for joint in self.left + self.right:
-            actuator = spec.add_actuator(name=f"diff_drive_{joint}", target=joint,
+            actuator = spec.add_actuator(name=self.in_spec(f"diff_drive_{joint}"),
+                                         target=self.in_spec(joint),
                                          trntype=mujoco.mjtTrn.mjTRN_JOINT)
             actuator.set_to_velocity(kv=self.kv or 1.0)  # 0: set from the mass in bind
             if math.isfinite(torque):
                 actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
                 actuator.forcerange = [-torque, torque]
-        self.root = spec.worldbody.first_body().name
+        self.root = self.entity.root.removeprefix(f"{self.entity.name}/")
         self.reset()
 
     def load(self) -> None:

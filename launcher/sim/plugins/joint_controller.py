@@ -25,12 +25,13 @@ class _JointServo(Plugin):
 
     def prepare(self, spec: Any) -> None:
         self.joint = self.text("joint_name") or ""
-        joints = [j.name for j in spec.joints]
+        joints = self.joint_names(spec)
         if self.joint not in joints:
             raise PluginError(f"{self.config.where}: plugin {self.label}: <joint_name> "
                               f"'{self.joint}' is not in the model (joints: {', '.join(joints)})")
         self.actuator_name = f"{self.kind}_{self.joint}"
-        actuator = spec.add_actuator(name=self.actuator_name, target=self.joint,
+        actuator = spec.add_actuator(name=self.in_spec(self.actuator_name),
+                                     target=self.in_spec(self.joint),
                                      trntype=mujoco.mjtTrn.mjTRN_JOINT)
         self.configure(actuator)
         low, high = self.number("cmd_min", -math.inf), self.number("cmd_max", math.inf)

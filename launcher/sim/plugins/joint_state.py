@@ -19,7 +19,7 @@ MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
 
 class JointStatePublisher(Plugin):
     def prepare(self, spec: Any) -> None:
-        available = [j.name for j in spec.joints if j.type in MOVING]
+        available = self.joint_names(spec, MOVING)
         self.joints = self.texts("joint_name") or available
         for joint in self.joints:
             if joint not in available:

@@ -1,0 +1,52 @@
+"""A world file, SDF or MJCF, into what the World is made from.
+
+The format is the file's: `<sdf>` (Gazebo's `.sdf`/`.world`) or `<mujoco>` (MJCF; `.j2`
+templates are rendered first). SDF models become the world's entities one for one; an MJCF
+world's top-level bodies do.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from launcher.sim import mjcf, sdf
+from launcher.sim.mjcf import PluginConfig
+from launcher.sim.world import WorldModel
+
+
+@dataclass
+class LoadedWorld:
+    spec: Any
+    label: str
+    plugins: list[PluginConfig]
+    models: list[WorldModel] | None  # None: the spec's top-level bodies
+    real_time_factor: float | None = None
+    warnings: list[str] = field(default_factory=list)
+
+
+def load_world_file(path: Path, values: Mapping[str, str] | None = None,
+                    environ: Mapping[str, str] | None = None) -> LoadedWorld:
+    text = path.read_text(encoding="utf-8")
+    if path.name.endswith(".j2"):
+        text = mjcf.render_template(text, path, values or {})
+    if _is_sdf(text):
+        return _from_sdf(sdf.load_world(text, path, environ), path)
+    source = mjcf.read(text, path, environ=environ, rendered=True)
+    return LoadedWorld(mjcf.compile_spec(source), str(path), source.plugins, None)
+
+
+def _is_sdf(text: str) -> bool:
+    head = text.lstrip()
+    while head.startswith(("<?", "<!--")):
+        end = "?>" if head.startswith("<?") else "-->"
+        head = head[head.find(end) + len(end):].lstrip() if end in head else ""
+    return head.startswith("<sdf")
+
+
+def _from_sdf(world: sdf.SdfWorld, path: Path) -> LoadedWorld:
+    models = [WorldModel(m.name, m.root, m.roots, m.offset, m.plugins) for m in world.models]
+    return LoadedWorld(world.spec, str(path), world.plugins, models, world.real_time_factor,
+                       world.warnings)

@@ -1,0 +1,147 @@
+"""gazebo_ros's classic plugins in URDF `<gazebo>` tags, with their ROS 1 and ROS 2 parameters.
+
+They speak ROS directly, as in Gazebo classic: `libgazebo_ros_diff_drive.so` subscribes
+geometry_msgs/Twist on `cmd_vel` and publishes nav_msgs/Odometry on `odom` (and odom → base
+on /tf), `libgazebo_ros_joint_state_publisher.so` publishes sensor_msgs/JointState on
+`joint_states`, each in the plugin's namespace (ROS 1 `robotNamespace`, ROS 2
+`<ros><namespace>`, and ROS 2 `<remapping>from:=to</remapping>`).
+
+ROS 1 names: leftJoint, rightJoint, wheelSeparation, wheelDiameter, torque, commandTopic,
+odometryTopic, odometryFrame, robotBaseFrame, publishOdomTF, updateRate; jointName (comma
+separated). ROS 2: left_joint, right_joint, wheel_separation, wheel_diameter,
+max_wheel_torque, publish_odom, publish_odom_tf, odometry_frame, robot_base_frame,
+update_rate; joint_name.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import replace
+from typing import Any
+
+from launcher.sim.plugins.diff_drive import DiffDrive, _yaw_quat
+from launcher.sim.plugins.joint_state import JointStatePublisher
+
+# the gz name each classic parameter feeds: (ROS 1, ROS 2) -> gz
+DIFF_DRIVE = {("leftJoint", "left_joint"): "left_joint",
+              ("rightJoint", "right_joint"): "right_joint",
+              ("wheelSeparation", "wheel_separation"): "wheel_separation",
+              ("torque", "max_wheel_torque"): "max_wheel_torque",
+              ("updateRate", "update_rate"): "odom_publish_frequency"}
+
+
+def _ros_topic(plugin: Any, ros1: str, default: str) -> str:
+    """A classic plugin's topic: its own parameter or remapping, in its namespace."""
+    element = plugin.config.element
+    name = plugin.text(ros1) or default
+    for remapping in element.iter("remapping"):
+        source, _, target = (remapping.text or "").strip().partition(":=")
+        if source.strip() == default and target.strip():
+            name = target.strip()
+    if name.startswith("/"):
+        return name
+    namespace = plugin.text("robotNamespace") or (element.findtext("ros/namespace") or "")
+    namespace = namespace.strip().strip("/")
+    return f"/{namespace}/{name}" if namespace else f"/{name}"
+
+
+def _flag(plugin: Any, names: tuple[str, ...], default: bool) -> bool:
+    for name in names:
+        value = plugin.text(name)
+        if value is not None:
+            return value.lower() in ("true", "1")
+    return default
+
+
+class ClassicDiffDrive(DiffDrive):
+    def prepare(self, spec: Any) -> None:
+        self.config = replace(self.config, element=self._translated(self.config.element))
+        super().prepare(spec)
+
+    @staticmethod
+    def _translated(element: ET.Element) -> ET.Element:
+        out = ET.Element("plugin", dict(element.attrib))
+        for child in element:
+            out.append(child)
+        for names, gz in DIFF_DRIVE.items():
+            for name in (n for n in names if n != gz):
+                for found in element.findall(name):
+                    ET.SubElement(out, gz).text = found.text
+        for name in ("wheelDiameter", "wheel_diameter"):
+            diameter = element.findtext(name)
+            if diameter:
+                ET.SubElement(out, "wheel_radius").text = str(float(diameter) / 2)
+        if element.find("updateRate") is None and element.find("update_rate") is None:
+            ET.SubElement(out, "odom_publish_frequency").text = "50"
+        return out
+
+    def load(self) -> None:
+        transport = self.sim.transport
+        self.frame_id = self.text("odometryFrame") or self.text("odometry_frame") or "odom"
+        self.child_frame_id = self.text("robotBaseFrame") or self.text("robot_base_frame") \
+            or "base_footprint"
+        self.publish_odom = _flag(self, ("publish_odom",), True)
+        self.publish_tf = _flag(self, ("publishOdomTF", "publish_odom_tf"), True)
+        self.odom_pub = transport.publisher("nav_msgs/msg/Odometry",
+                                            _ros_topic(self, "odometryTopic", "odom"))
+        self.tf_pub = transport.publisher("tf2_msgs/msg/TFMessage", "/tf")
+        self.cmd_sub = transport.subscribe("geometry_msgs/msg/Twist",
+                                           _ros_topic(self, "commandTopic", "cmd_vel"),
+                                           self.on_cmd_vel)
+
+    def _publish(self, now: float) -> None:
+        odom_wanted = self.publish_odom and self.odom_pub.get_subscription_count() > 0
+        tf_wanted = self.publish_tf and self.tf_pub.get_subscription_count() > 0
+        if not (odom_wanted or tf_wanted):
+            return
+        t = self.sim.transport
+        header = t.header(now, self.frame_id)
+        pose = t.pose(self.x, self.y, 0.0, _yaw_quat(self.theta))
+        if odom_wanted:
+            twist = t.message("geometry_msgs/msg/Twist",
+                              linear=t.vector(getattr(self, "linear", 0.0), 0.0, 0.0),
+                              angular=t.vector(0.0, 0.0, getattr(self, "angular", 0.0)))
+            self.odom_pub.publish(t.message(
+                "nav_msgs/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
+                pose=t.message("geometry_msgs/msg/PoseWithCovariance", pose=pose),
+                twist=t.message("geometry_msgs/msg/TwistWithCovariance", twist=twist)))
+        if tf_wanted:
+            transform = t.message(
+                "geometry_msgs/msg/Transform",
+                translation=t.vector(self.x, self.y, 0.0), rotation=pose.orientation)
+            self.tf_pub.publish(t.message("tf2_msgs/msg/TFMessage", transforms=[t.message(
+                "geometry_msgs/msg/TransformStamped", header=header,
+                child_frame_id=self.child_frame_id, transform=transform)]))
+
+
+class ClassicJointStates(JointStatePublisher):
+    def prepare(self, spec: Any) -> None:
+        element = ET.Element("plugin", dict(self.config.element.attrib))
+        element.extend(list(self.config.element))
+        self.config = replace(self.config, element=element)
+        names = [n.strip() for n in (element.findtext("jointName") or "").split(",")
+                 if n.strip()]
+        for name in names:
+            ET.SubElement(element, "joint_name").text = name
+        rate = element.findtext("updateRate")
+        if rate:
+            ET.SubElement(element, "update_rate").text = rate
+        super().prepare(spec)
+
+    def load(self) -> None:
+        self.publisher = self.sim.transport.publisher(
+            "sensor_msgs/msg/JointState", _ros_topic(self, "topicName", "joint_states"))
+        self.reset()
+
+    def post_step(self, model: Any, data: Any) -> None:
+        now = data.time
+        if now + 1e-9 < self.next_update:
+            return
+        self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
+        if not self.publisher.get_subscription_count():
+            return
+        t = self.sim.transport
+        self.publisher.publish(t.message(
+            "sensor_msgs/msg/JointState", header=t.header(now, ""), name=self.joints,
+            position=data.qpos[self.qpos], velocity=data.qvel[self.dofs],
+            effort=data.qfrc_actuator[self.dofs]))

@@ -1,0 +1,121 @@
+"""What loading one SDF document shares: its version, URIs, includes and warnings.
+
+`<include>` and mesh URIs resolve like Gazebo's (`model://` on the resource path,
+`package://` through the package index, relative to the including file, absolute,
+`file://`); an include that leads back to a file being included is a cycle. Warnings are
+collected once each, with file:line, for the sim to log.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from launcher.errors import LaunchError
+from launcher.sim.resources import SDF_VERSIONS, model_file, resolve_uri
+from launcher.sim.sdf.xmltree import Element, SdfError, parse
+
+OLDEST, NEWEST = SDF_VERSIONS
+
+
+@dataclass(frozen=True)
+class Origin:
+    """Where a model element came from: its file (None for a string) and SDF version."""
+
+    path: Path | None
+    version: tuple[int, int]
+
+    @property
+    def base(self) -> Path | None:
+        return self.path.parent if self.path is not None else None
+
+
+@dataclass
+class Context:
+    environ: Mapping[str, str] | None = None
+    packages: Any = None
+    warnings: list[str] = field(default_factory=list)
+    _stack: list[Path] = field(default_factory=list)
+
+    def warn(self, element: Element, message: str) -> None:
+        text = f"{element.location.file}:{element.location.line}: {message}"
+        if text not in self.warnings:
+            self.warnings.append(text)
+
+    def resolve(self, uri: str, element: Element, origin: Origin, what: str) -> Path:
+        if uri.startswith(("http://", "https://")):
+            raise element.error(f"{what} '{uri}': models are not fetched from the network "
+                                "(Gazebo Fuel); download it into a folder on "
+                                "GZ_SIM_RESOURCE_PATH and include it as model://NAME")
+        try:
+            return resolve_uri(uri, origin.base, self.packages, self.environ)
+        except LaunchError as exc:
+            raise element.error(f"{what} {exc.message}") from None
+
+    @contextmanager
+    def inside(self, origin: Origin) -> Iterator[None]:
+        """While a file's models are built: includes leading back to it are cycles."""
+        if origin.path is not None:
+            self._stack.append(origin.path)
+        try:
+            yield
+        finally:
+            if origin.path is not None:
+                self._stack.pop()
+
+    def include(self, element: Element, origin: Origin) -> tuple[Element, Origin]:
+        """The `<model>` an `<include>` names, and where it came from."""
+        uri = element.value("uri")
+        if not uri:
+            raise element.error("<include> needs a <uri>")
+        path = self.resolve(uri, element, origin, "<include>")
+        if path.is_dir():
+            path = self._model_file(path, element)
+        if path in self._stack:
+            chain = " -> ".join(str(p) for p in [*self._stack[self._stack.index(path):], path])
+            raise element.error(f"<include> of '{uri}' makes a cycle: {chain}")
+        root, version = read(path.read_text(encoding="utf-8"), str(path))
+        model = root.find("model")
+        if model is None:
+            raise root.error(f"'{uri}' ({path}) holds no <model> to include")
+        return model, Origin(path, version)
+
+    def _model_file(self, folder: Path, element: Element) -> Path:
+        try:
+            return model_file(folder)
+        except LaunchError as exc:
+            raise element.error(exc.message) from None
+
+
+
+def read(text: str, label: str) -> tuple[Element, tuple[int, int]]:
+    """The `<sdf>` root of a document and its version, checked."""
+    root = parse(text, label)
+    if root.tag != "sdf":
+        raise root.error(f"expected an <sdf> document, found <{root.tag}>")
+    raw = root.get("version")
+    if raw is None:
+        raise root.error(f"<sdf> has no version attribute (launcher reads SDF "
+                         f"{_text(OLDEST)} to {_text(NEWEST)})")
+    version = parse_version(raw)
+    if version is None or not OLDEST <= version <= NEWEST:
+        raise root.error(f"unsupported SDF version '{raw}': launcher reads SDF {_text(OLDEST)} "
+                         f"to {_text(NEWEST)}")
+    return root, version
+
+
+def parse_version(raw: str) -> tuple[int, int] | None:
+    major, _, minor = raw.strip().partition(".")
+    if not (major.isdigit() and minor.isdigit()):
+        return None
+    return int(major), int(minor)
+
+
+def _text(version: tuple[int, int]) -> str:
+    return f"{version[0]}.{version[1]}"
+
+
+__all__ = ["Context", "Origin", "SdfError", "read"]

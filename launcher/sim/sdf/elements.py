@@ -1,0 +1,80 @@
+"""Which SDF elements launcher reads, which it accepts without effect, and which it reports.
+
+An element launcher cannot express is one warning with its file:line, saying what is left out
+and what the world will lack; elements with no effect on a simulation (GUI, rendering
+hints, ODE solver tuning) pass silently. Plugin elements become plugin configs.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+from launcher.sim.mjcf import PluginConfig
+from launcher.sim.sdf.context import Context
+from launcher.sim.sdf.xmltree import Element
+
+READ = {
+    "world": {"physics", "gravity", "light", "scene", "model", "include", "plugin", "frame"},
+    "model": {"link", "joint", "plugin", "model", "include", "frame", "pose", "static"},
+    "link": {"pose", "inertial", "collision", "visual", "gravity", "sensor"},
+}
+QUIET = {
+    "world": {"gui", "atmosphere", "spherical_coordinates", "magnetic_field", "audio"},
+    "model": {"self_collide", "allow_auto_disable", "enable_wind"},
+    "link": {"self_collide", "must_be_base_link", "velocity_decay", "enable_wind"},
+}
+LACKS = {
+    "actor": "animated actors are not simulated: the world has no actor here",
+    "population": "populations are not expanded: the world lacks those models",
+    "road": "roads are not built: the world has no road here",
+    "wind": "there is no wind in the world",
+    "state": "saved states are not applied: models start at their <pose>",
+    "kinematic": "kinematic links are simulated as dynamic ones",
+    "light": "lights attached to links are left out",
+    "projector": "projectors are left out",
+    "audio_source": "sound is not simulated",
+    "audio_sink": "sound is not simulated",
+    "battery": "batteries are not simulated",
+    "particle_emitter": "particle emitters are left out",
+    "gripper": "Gazebo's gripper helper is not simulated: grasping relies on contacts only",
+}
+
+
+def check_children(element: Element, context: Context) -> None:
+    """Warn once for each child of `element` that launcher leaves out."""
+    kind = element.tag
+    for child in element.children:
+        tag = child.tag
+        if tag in READ.get(kind, ()) or tag in QUIET.get(kind, ()):
+            if tag == "sensor":
+                _sensor(child, context)
+            continue
+        if tag in LACKS:
+            context.warn(child, f"<{tag}> in <{kind}> is ignored: {LACKS[tag]}")
+        else:
+            context.warn(child, f"<{tag}> in <{kind}> is not known to launcher and is ignored")
+
+
+def _sensor(sensor: Element, context: Context) -> None:
+    kind = sensor.get("type", "?")
+    context.warn(sensor, f"sensor '{sensor.get('name', '')}' (type {kind}) is not simulated: "
+                         f"the world publishes no {kind} data")
+
+
+def plugin_configs(element: Element) -> list[PluginConfig]:
+    """The `<plugin>` children of a world, model or include, as the sim's plugin configs."""
+    configs = []
+    for plugin in element.findall("plugin"):
+        filename = plugin.get("filename", "") or plugin.get("name", "")
+        configs.append(PluginConfig(filename, plugin.get("name", ""), to_etree(plugin),
+                                    f"{plugin.location.file}:{plugin.location.line}"))
+    return configs
+
+
+def to_etree(element: Element) -> ET.Element:
+    """The ElementTree form plugins read their configuration from."""
+    converted = ET.Element(element.tag, dict(element.attrib))
+    converted.text = element.text or None
+    for child in element.children:
+        converted.append(to_etree(child))
+    return converted

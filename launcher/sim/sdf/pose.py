@@ -1,0 +1,39 @@
+"""SDF's `<pose>` (`x y z roll pitch yaw`, or `quat_xyzw`, in degrees or radians) and lists of
+numbers in SDF elements, checked with the element's place in errors."""
+
+from __future__ import annotations
+
+import math
+
+from launcher.sim.sdf.xmltree import Element
+from launcher.sim.transform import IDENTITY, Pose, Quat, Vector, from_rpy, rotate
+
+__all__ = ["IDENTITY", "Pose", "Quat", "Vector", "from_rpy", "rotate", "numbers", "parse_pose"]
+
+
+def numbers(element: Element, count: int | tuple[int, ...], what: str) -> list[float]:
+    """The whitespace-separated numbers of an element, exactly `count` of them."""
+    counts = (count,) if isinstance(count, int) else count
+    try:
+        values = [float(word) for word in element.text.split()]
+    except ValueError:
+        raise element.error(f"<{element.tag}>: expected {what}, got '{element.text}'") from None
+    if len(values) not in counts or not all(math.isfinite(v) for v in values):
+        raise element.error(f"<{element.tag}>: expected {what}, got '{element.text}'")
+    return values
+
+
+def parse_pose(element: Element | None) -> Pose:
+    """A `<pose>` element (euler_rpy, quat_xyzw, degrees) as a Pose; none is the identity."""
+    if element is None or not element.text:
+        return IDENTITY
+    if element.get("rotation_format", "euler_rpy") == "quat_xyzw":
+        x, y, z, qx, qy, qz, qw = numbers(element, 7, "x y z qx qy qz qw")
+        norm = math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz)
+        if norm < 1e-12:
+            raise element.error("<pose>: the quaternion is zero")
+        return Pose((x, y, z), (qw / norm, qx / norm, qy / norm, qz / norm))
+    values = numbers(element, 6, "six numbers: x y z roll pitch yaw")
+    if element.get("degrees", "false").lower() in ("true", "1"):
+        values[3:] = [math.radians(v) for v in values[3:]]
+    return from_rpy(*values)

@@ -1,0 +1,167 @@
+"""An SDF `<world>` as an MjSpec: physics, gravity, lights, scene, models and plugins.
+
+`<physics><max_step_size>` is MuJoCo's timestep and `<real_time_factor>` the sim's pacing;
+each model is built straight into the world's spec (models of one name are an error); the
+world's and the models' `<plugin>`s are handed to the sim, which loads Gazebo's systems
+under their names.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import mujoco
+
+from launcher.sim.mjcf import PluginConfig
+from launcher.sim.sdf import model as sdf_model
+from launcher.sim.sdf.context import Context, Origin, read
+from launcher.sim.sdf.elements import check_children, plugin_configs
+from launcher.sim.sdf.model import BuiltModel
+from launcher.sim.sdf.pose import IDENTITY, Pose, numbers, parse_pose, rotate
+from launcher.sim.sdf.xmltree import Element
+
+LIGHTS = {"directional": mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
+          "point": mujoco.mjtLightType.mjLIGHT_POINT, "spot": mujoco.mjtLightType.mjLIGHT_SPOT}
+
+
+@dataclass
+class SdfWorld:
+    spec: Any
+    name: str
+    models: list[BuiltModel]
+    plugins: list[PluginConfig]
+    real_time_factor: float | None
+    warnings: list[str] = field(default_factory=list)
+
+
+def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None = None,
+               packages: Any = None) -> SdfWorld:
+    label = str(path) if path else "<string>"
+    root, version = read(text, label)
+    world = root.find("world")
+    if world is None:
+        raise root.error("no <world> in this SDF file (a model file is spawned with "
+                         "`create -file`, or included in a world)")
+    context = Context(environ, packages)
+    origin = Origin(path, version)
+    spec = mujoco.MjSpec()
+    spec.modelname = world.get("name", "default")
+    spec.compiler.degree = False
+    check_children(world, context)
+    rtf = _physics(spec, world)
+    _gravity(spec, world)
+    _scene(spec, world)
+    for light in world.findall("light"):
+        add_light(spec, light)
+    with context.inside(origin):
+        models = _models(spec, world, origin, context)
+    return SdfWorld(spec, spec.modelname, models, plugin_configs(world), rtf, context.warnings)
+
+
+def _physics(spec: Any, world: Element) -> float | None:
+    physics = world.find("physics")
+    if physics is None:
+        spec.option.timestep = 0.001  # Gazebo's default step
+        return None
+    step = physics.find("max_step_size")
+    if step is not None and step.text:
+        value = numbers(step, 1, "a step in seconds")[0]
+        if value <= 0:
+            raise step.error(f"<max_step_size> must be > 0, got {value:g}")
+        spec.option.timestep = value
+    else:
+        spec.option.timestep = 0.001
+    factor = physics.find("real_time_factor")
+    if factor is None or not factor.text:
+        return None
+    value = numbers(factor, 1, "a real-time factor")[0]
+    if value < 0:
+        raise factor.error(f"<real_time_factor> must be >= 0, got {value:g}")
+    return value
+
+
+def _gravity(spec: Any, world: Element) -> None:
+    gravity = world.find("gravity")
+    spec.option.gravity = numbers(gravity, 3, "a vector 'x y z'") \
+        if gravity is not None and gravity.text else [0.0, 0.0, -9.8]
+
+
+def _scene(spec: Any, world: Element) -> None:
+    scene = world.find("scene")
+    if scene is None:
+        return
+    ambient = scene.find("ambient")
+    if ambient is not None and ambient.text:
+        spec.visual.headlight.ambient = numbers(ambient, (3, 4), "a colour 'r g b [a]'")[:3]
+    background = scene.find("background")
+    if background is not None and background.text:
+        rgb = numbers(background, (3, 4), "a colour 'r g b [a]'")[:3]
+        spec.add_texture(name="background", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX,
+                         builtin=mujoco.mjtBuiltin.mjBUILTIN_FLAT, rgb1=rgb, rgb2=rgb,
+                         width=32, height=32)
+
+
+def add_light(spec: Any, light: Element) -> None:
+    kind = light.get("type", "point")
+    pose = parse_pose(light.find("pose"))
+    direction_element = light.find("direction")
+    direction = numbers(direction_element, 3, "a direction 'x y z'") \
+        if direction_element is not None and direction_element.text else [0.0, 0.0, -1.0]
+    added = spec.worldbody.add_light(name=light.get("name", ""), pos=list(pose.pos),
+                                     dir=list(rotate(pose.quat, tuple(direction))))
+    added.type = LIGHTS.get(kind, mujoco.mjtLightType.mjLIGHT_POINT)
+    for tag, attribute in (("diffuse", "diffuse"), ("specular", "specular")):
+        colour = light.find(tag)
+        if colour is not None and colour.text:
+            setattr(added, attribute, numbers(colour, (3, 4), "a colour 'r g b [a]'")[:3])
+    added.castshadow = (light.value("cast_shadows", "false") or "").lower() in ("true", "1")
+    attenuation = light.find("attenuation")
+    if attenuation is not None and kind != "directional":
+        added.attenuation = [float(attenuation.value(t, d) or d) for t, d in
+                             (("constant", "1"), ("linear", "0"), ("quadratic", "0"))]
+        if attenuation.value("range"):
+            added.range = float(attenuation.value("range") or 10)
+    spot = light.find("spot")
+    if spot is not None and kind == "spot" and spot.value("outer_angle"):
+        added.cutoff = math.degrees(float(spot.value("outer_angle") or 0.5))
+
+
+def _models(spec: Any, world: Element, origin: Origin, context: Context) -> list[BuiltModel]:
+    built: dict[str, tuple[BuiltModel, Element]] = {}
+    for child in world.children:
+        if child.tag not in ("model", "include"):
+            continue
+        if child.tag == "model":
+            element, where, placement, static = child, origin, parse_pose(child.find("pose")), None
+        else:
+            element, where = context.include(child, origin)
+            placement = parse_pose(child.find("pose")) if child.find("pose") is not None \
+                else parse_pose(element.find("pose"))
+            static_text = child.value("static")
+            static = static_text.lower() in ("true", "1") if static_text else None
+        name = child.value("name") if child.tag == "include" and child.value("name") \
+            else element.get("name", "")
+        if name in built:
+            first = built[name][1].location
+            raise child.error(f"two models named '{name}' in world '{world.get('name')}' "
+                              f"(the first at {first.file}:{first.line})")
+        if child.tag == "include" and child.value("name"):
+            element = _renamed(element, name)
+        model = sdf_model.build(spec, element, where, context, f"{name}/", placement, static)
+        if child.tag == "include":
+            model.plugins += plugin_configs(child)
+        built[name] = (model, child)
+    return [model for model, _ in built.values()]
+
+
+def _renamed(model: Element, name: str) -> Element:
+    copy = Element(model.tag, {**model.attrib, "name": name}, model.location, model.children,
+                   model.text)
+    return copy
+
+
+__all__ = ["SdfWorld", "load_world", "IDENTITY", "Pose"]

@@ -1,0 +1,64 @@
+"""Rigid poses and the maths to chain them, for world loading and moving entities.
+
+Quaternions are MuJoCo's order (w, x, y, z). Pure Python: a world has few poses, and loading
+must not pay numpy's per-call overhead on each of them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+Vector = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class Pose:
+    pos: Vector = (0.0, 0.0, 0.0)
+    quat: Quat = (1.0, 0.0, 0.0, 0.0)
+
+    def __mul__(self, other: Pose) -> Pose:
+        """This pose then `other` expressed in it (parent * child)."""
+        return Pose(_add(self.pos, rotate(self.quat, other.pos)),
+                    _qmul(self.quat, other.quat))
+
+    def inverse(self) -> Pose:
+        conj = (self.quat[0], -self.quat[1], -self.quat[2], -self.quat[3])
+        moved = rotate(conj, self.pos)
+        return Pose((-moved[0], -moved[1], -moved[2]), conj)
+
+    @property
+    def is_identity(self) -> bool:
+        return self == IDENTITY
+
+
+IDENTITY = Pose()
+
+
+def from_rpy(x: float, y: float, z: float, roll: float, pitch: float, yaw: float) -> Pose:
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return Pose((x, y, z), (cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+                            cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy))
+
+
+def rotate(quat: Quat, vector: Vector) -> Vector:
+    w, x, y, z = quat
+    vx, vy, vz = vector
+    # v + 2w(q×v) + 2q×(q×v)
+    cx, cy, cz = y * vz - z * vy, z * vx - x * vz, x * vy - y * vx
+    return (vx + 2 * (w * cx + y * cz - z * cy), vy + 2 * (w * cy + z * cx - x * cz),
+            vz + 2 * (w * cz + x * cy - y * cx))
+
+
+def _qmul(a: Quat, b: Quat) -> Quat:
+    aw, ax, ay, az = a
+    bw, bx, by, bz = b
+    return (aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw)
+
+
+def _add(a: Vector, b: Vector) -> Vector:
+    return a[0] + b[0], a[1] + b[1], a[2] + b[2]
