@@ -9,10 +9,9 @@ Parameters are Gazebo's (gz-sim-diff-drive-system): `left_joint`, `right_joint` 
 topics live under `/model/<name>/`. launcher's own: `cmd_vel_timeout` (seconds of sim time
 without a command after which the wheels stop; 0 never stops them; default 0 under
 Gazebo's names, where one command drives on as in Gazebo, and 0.5 s as `diff_drive`),
-`wheel_response_time` (0.05 s: the wheel servo's gain is set from the robot's mass so a speed change settles in about this time),
-`wheel_kv` (a fixed velocity gain in N·m·s/rad instead)
-and `max_wheel_torque`
-(none; a limit on light wheels can make the servo overshoot).
+`wheel_response_time` (0.05 s: the wheel servo's gain is set from the robot's mass so a
+speed change settles in about this time), `wheel_kv` (a fixed velocity gain in N·m·s/rad
+instead) and `max_wheel_torque` (none; a limit on light wheels can make the servo overshoot).
 """
 
 from __future__ import annotations
