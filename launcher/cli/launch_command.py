@@ -89,6 +89,7 @@ def run(args: argparse.Namespace) -> int:
     environment = hooked_environment(index, default_environment())
     compat.enable_for_children(environment)
     tools_on_path(environment)
+    compat.commands_for_children(environment)
     router = bus_router(environment)
     run_file = discovery.write_run_file(environment[discovery.ROUTER_VARIABLE])
     service = LaunchService(daemons=[router],

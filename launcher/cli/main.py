@@ -9,6 +9,8 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+from collections.abc import Callable
+from typing import Any
 
 from launcher import __version__
 from launcher.errors import LaunchError
@@ -23,6 +25,7 @@ COMMANDS = {
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "param": ("launcher.cli.param_command", "parameters of a running node: list, get, set"),
     "sim": ("launcher.cli.sim_command", "run the MuJoCo world server"),
+    "gz": ("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model)"),
 }
 
 
@@ -45,6 +48,10 @@ def main(argv: list[str] | None = None) -> int:
         from launcher.cli.sim_command import run_sim
 
         return run_sim(argv[1:])
+    if argv[:1] == ["gz"]:  # Gazebo's own flags, -h included
+        from launcher.cli.gz_command import run_gz
+
+        return _reported(run_gz, [a for a in argv[1:] if a != "--debug"], "--debug" in argv)
     selected = next((word for word in argv if not word.startswith("-")), None)
     parser = build_parser(selected if selected in COMMANDS else None)
     if selected == "launch" and argv[0] == "launch":
@@ -54,9 +61,13 @@ def main(argv: list[str] | None = None) -> int:
         args = commands.choices["launch"].parse_intermixed_args(argv[1:])
     else:
         args = parser.parse_args(argv)
-    debug = getattr(args, "debug", False)
+    return _reported(lambda _: args.run(args), [], getattr(args, "debug", False))
+
+
+def _reported(run: Callable[[list[str]], Any], argv: list[str], debug: bool) -> int:
+    """Run a command; a LaunchError is one line on stderr (the traceback with --debug)."""
     try:
-        return int(args.run(args) or 0)
+        return int(run(argv) or 0)
     except LaunchError as exc:
         if debug:
             import traceback  # only with --debug: start-up time

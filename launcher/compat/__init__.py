@@ -1,5 +1,6 @@
 """Shims so ROS 2 Python code runs unchanged without ROS: `launch`, `launch_ros` and
-`ament_index_python` (the last is what xacro's `$(find pkg)` imports).
+`ament_index_python` (the last is what xacro's `$(find pkg)` imports), and Gazebo's `gz`
+command for launched processes.
 
 The shims folder goes on sys.path (and PYTHONPATH for children) only where the real modules
 are not installed. `current_index` is the package index the shims answer from; when unset,
@@ -15,6 +16,7 @@ from collections.abc import MutableMapping
 from typing import Any
 
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
+COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz
 SHIMMED = ("ament_index_python", "launch", "launch_ros")
 
 current_index: Any = None
@@ -40,3 +42,12 @@ def enable_for_children(environment: MutableMapping[str, str]) -> None:
     parts = old.split(os.pathsep) if old else []
     if SHIMS not in parts:
         environment["PYTHONPATH"] = os.pathsep.join([*parts, SHIMS])
+
+
+def commands_for_children(environment: MutableMapping[str, str]) -> None:
+    """Append launcher's `gz` to the children's PATH: last, so a real Gazebo's `gz` earlier on
+    PATH wins. The user's own shell never gets it (there it is `launcher gz`)."""
+    path = environment.get("PATH", "")
+    parts = path.split(os.pathsep) if path else []
+    if COMMANDS not in parts:
+        environment["PATH"] = os.pathsep.join([*parts, COMMANDS])

@@ -9,7 +9,8 @@ Topics (sim-native types from the mujoco_sim package, Gazebo's names):
   /world/<w>/pose/info, /world/<w>/model_states   every entity (world_state plugin)
   /model/<m>/odometry, /model/<m>/tf, /model/<m>/cmd_vel   diff drive plugins
   /world/<w>/model/<m>/joint_state           joint state plugins
-Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/set_pose.
+Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/set_pose,
+/world/<w>/state (every entity's pose and twist now, paused or not), /world/<w>/snapshot.
 """
 
 from __future__ import annotations
@@ -104,6 +105,7 @@ class SimServer:
         node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create", self.on_create)
         node.create_service("mujoco_sim/srv/Remove", f"/world/{name}/remove", self.on_remove)
         node.create_service("mujoco_sim/srv/SetPose", f"/world/{name}/set_pose", self.on_set_pose)
+        node.create_service("mujoco_sim/srv/State", f"/world/{name}/state", self.on_state)
         self.camera = Camera(world)  # its GL context is made at the first snapshot
         node.create_service("mujoco_sim/srv/Snapshot", f"/world/{name}/snapshot",
                             self.on_snapshot)
@@ -230,6 +232,19 @@ class SimServer:
             response.success, response.message = False, str(exc)
             return response
         response.success, response.message = True, f"moved '{request.name}'"
+        return response
+
+    def on_state(self, request: Any, response: Any) -> Any:
+        world, transport = self.world, self.transport
+        names, positions, quats = world.poses()
+        response.world = world.world_name
+        response.name = names
+        response.pose = [transport.pose(p[0], p[1], p[2], (q[1], q[2], q[3], q[0]))
+                         for p, q in zip(positions, quats, strict=True)]
+        response.twist = [transport.message("geometry_msgs/msg/Twist",
+                                            linear=transport.vector(*v[:3]),
+                                            angular=transport.vector(*v[3:6]))
+                          for v in world.velocities(names)]
         return response
 
     def on_snapshot(self, request: Any, response: Any) -> Any:

@@ -424,6 +424,14 @@ class World:
                 positions[row], quats[row] = pose.pos, pose.quat
         return names, positions, quats
 
+    def velocities(self, names: Sequence[str]) -> list[list[float]]:
+        """Each entity's root velocity (linear, angular); zeros for one without a free joint."""
+        found = []
+        for name in names:
+            dof = self.entities[name].dof
+            found.append(self.data.qvel[dof:dof + 6].tolist() if dof >= 0 else [0.0] * 6)
+        return found
+
 
 def _top_level_models(spec: mujoco.MjSpec) -> list[WorldModel]:
     """An MJCF world's models: its top-level bodies."""

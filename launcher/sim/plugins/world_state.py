@@ -44,13 +44,10 @@ class WorldState(Plugin):
                                                  pose=poses))
         if not want_states:
             return
-        twists = []
-        for name in names:
-            entity = self.sim.entities[name]
-            velocity = data.qvel[entity.dof:entity.dof + 6] if entity.dof >= 0 else [0.0] * 6
-            twists.append(transport.message(
-                "geometry_msgs/msg/Twist", linear=transport.vector(*velocity[:3]),
-                angular=transport.vector(*velocity[3:6])))
+        twists = [transport.message("geometry_msgs/msg/Twist",
+                                    linear=transport.vector(*velocity[:3]),
+                                    angular=transport.vector(*velocity[3:6]))
+                  for velocity in self.sim.velocities(names)]
         self.states.publish(transport.message("mujoco_sim/msg/ModelStates", header=header,
                                               name=names, pose=poses, twist=twists))
 

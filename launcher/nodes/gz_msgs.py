@@ -1,0 +1,107 @@
+"""Gazebo's message shapes (gz.msgs.*) over the sim's own types, for the `gz` command.
+
+The sim's types carry the same data in ROS-like layouts (`mujoco_sim/msg/Pose` has a
+`pose {position, orientation}` where gz.msgs.Pose has them at the top; times have `nanosec`
+where Gazebo has `nsec`). `to_sim` turns what a user typed in Gazebo's text format into the
+sim's fields; `to_gz` turns a received message into what Gazebo would print.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+Data = dict[str, Any]
+
+_TIME_KEYS = ("stamp", "sim", "real", "system")
+
+
+def _time_to_gz(data: Any) -> Any:
+    if isinstance(data, dict):
+        return {("nsec" if k == "nanosec" else k): _time_to_gz(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_time_to_gz(v) for v in data]
+    return data
+
+
+def _time_to_sim(data: Any) -> Any:
+    if isinstance(data, dict):
+        return {("nanosec" if k == "nsec" else k): _time_to_sim(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_time_to_sim(v) for v in data]
+    return data
+
+
+def _header_to_gz(header: Data | None, *frames: tuple[str, str]) -> Data:
+    header = header or {}
+    out: Data = {"stamp": header.get("stamp", {})}
+    data = [{"key": key, "value": [value]} for key, value in frames if value]
+    if header.get("frame_id"):
+        data.insert(0, {"key": "frame_id", "value": [header["frame_id"]]})
+    if data:
+        out["data"] = data
+    return out
+
+
+def _pose_to_sim(data: Data) -> Data:
+    """gz.msgs.Pose fields (position, orientation at the top) → geometry_msgs/Pose."""
+    return {k: data[k] for k in ("position", "orientation") if k in data}
+
+
+def _pose_v_to_gz(data: Data) -> Data:
+    poses = [{"name": n, **p} for n, p in zip(data.get("name", []), data.get("pose", []),
+                                                strict=False)]
+    return {"header": _header_to_gz(data.get("header")), "pose": poses}
+
+
+def _model_to_gz(data: Data) -> Data:
+    joints = [{"name": n, "axis1": {"position": p, "velocity": v, "force": f}}
+              for n, p, v, f in zip(data.get("joint_name", []), data.get("position", []),
+                                    data.get("velocity", []), data.get("effort", []),
+                                    strict=False)]
+    return {"header": _header_to_gz(data.get("header")), "name": data.get("name", ""),
+            "joint": joints}
+
+
+TO_GZ: dict[str, Callable[[Data], Data]] = {
+    "Pose": lambda d: {"header": _header_to_gz(d.get("header")), "name": d.get("name", ""),
+                       **(d.get("pose") or {})},
+    "PoseV": _pose_v_to_gz,
+    "Odometry": lambda d: {"header": _header_to_gz(d.get("header"),
+                                                   ("child_frame_id", d.get("child_frame_id"))),
+                           "pose": d.get("pose", {}), "twist": d.get("twist", {})},
+    "Clock": lambda d: {"real": d.get("real", {}), "sim": d.get("sim", {})},
+    "Model": _model_to_gz,
+}
+
+TO_SIM: dict[str, Callable[[Data], Data]] = {
+    "Pose": lambda d: {"name": d.get("name", ""), "pose": _pose_to_sim(d)},
+    "WorldControl": lambda d: {
+        **{k: d[k] for k in ("pause", "step", "multi_step") if k in d},
+        **{f"reset_{k}": v for k, v in (d.get("reset") or {}).items()}},
+    "EntityFactory": lambda d: {**{k: v for k, v in d.items() if k != "pose"},
+                                **({"pose": _pose_to_sim(d["pose"])} if "pose" in d else {})},
+    "Entity": lambda d: {k: v for k, v in d.items() if k in ("name", "id")},
+}
+# fields Gazebo's messages have that the sim's types leave out (ignored, not errors)
+IGNORED = {"Pose": {"id", "header"}, "WorldControl": {"seed", "run_to_sim_time"},
+           "Entity": {"type"}, "EntityFactory": {"model", "light", "clone_name"},
+           "Twist": {"header"}}
+
+
+def to_gz(short: str, data: Data) -> Data:
+    convert = TO_GZ.get(short)
+    return _time_to_gz(convert(data) if convert else data)
+
+
+def to_sim(short: str, data: Data) -> Data:
+    data = {k: v for k, v in data.items() if k not in IGNORED.get(short, ())}
+    convert = TO_SIM.get(short)
+    return _time_to_sim(convert(data) if convert else data)
+
+
+def reply_to_gz(short: str, response: Data) -> Data:
+    """A sim service's response as Gazebo's reply type (gz.msgs.Boolean: `data`)."""
+    if short == "Boolean":
+        return {"data": bool(response.get("success"))}
+    return response
