@@ -1,5 +1,5 @@
 """The demo from ROS 2's Python launch API: the same as robot.launch.yaml.
-    launcher launch launch_files/robot.launch.py [world_name:=arena.xml.j2] [drive:=false]
+    launcher launch launch_files/robot.launch.py [world_name:=world.sdf] [drive:=false]
 The stack itself is robot_bringup's robot.launch.py; this file passes its arguments on."""
 
 import os
@@ -10,7 +10,7 @@ from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration
 
-ARGS = {"world_name": "robot.xml", "drive": "true", "speed": "0.5"}
+ARGS = {"world_name": "robot.world", "drive": "true", "speed": "0.5"}
 
 
 def generate_launch_description():

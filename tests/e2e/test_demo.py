@@ -1,5 +1,6 @@
-"""The demo stack end to end: launch_files/robot.launch.yaml with real sim, bridge,
-robot_state_publisher, xacro, create and driver processes on a real Zenoh router."""
+"""The demo stack end to end: launch_files/robot.launch.yaml (the seed project's launch file,
+unchanged, and a driver) with real sim, bridge, robot_state_publisher, xacro, create and
+driver processes on a real Zenoh router; the worlds are SDF, found through the hooks."""
 
 from __future__ import annotations
 
@@ -70,7 +71,7 @@ def test_the_demo_drives_publishes_tf_and_clock_and_stops_cleanly(demo):
         code = proc.wait(60)
     assert code == 130  # documented: Ctrl-C ends with 130, everything stopped
     out = demo.output("demo.out")
-    for name in ("sim", "robot_state_publisher", "parameter_bridge", "driver"):
+    for name in ("gz", "robot_state_publisher", "parameter_bridge", "driver"):
         assert re.search(rf"\[{name}-\d+\]: process (stopped|has finished)", out), name
 
 
@@ -89,11 +90,12 @@ def test_overrides_pick_the_arena_and_leave_the_driver_out(demo):
 
 
 def test_a_bad_world_name_names_the_places_searched(demo):
-    done = demo.run("launch", LAUNCH, "world_name:=nowhere.xml", "drive:=false",
-                    "--duration", "30", timeout=120)
-    assert "world 'nowhere.xml' not found; searched:" in done.stdout + done.stderr
-    assert "robot_sim/worlds" in done.stdout + done.stderr
-    assert done.returncode == 1
+    done = demo.run("launch", LAUNCH, "world_name:=nowhere.world", "drive:=false",
+                    "--duration", "10", timeout=120)
+    text = done.stdout + done.stderr
+    assert "world 'nowhere.world' not found; searched:" in text
+    assert "robot_gazebo/worlds (GZ_SIM_RESOURCE_PATH)" in text
+    assert done.returncode == 1  # the seed's file has no on_exit: the sim's exit 1 counts
 
 
 def test_three_robots_from_one_launch_file_move_independently(demo):
@@ -145,25 +147,27 @@ def test_the_same_stack_from_the_python_launch_file_with_an_override(demo):
 
 
 def test_the_hooks_put_the_worlds_on_the_sim_path(demo):
-    """`launcher sim robot.xml` finds the world only through robot_sim's hooks."""
+    """`launcher gz sim robot.world` finds the world only through robot_gazebo's hooks (the
+    seed's GZ_SIM_RESOURCE_PATH hook), its model and world plugin through the others."""
     workspace = demo.root / "ws"
-    shutil.copytree(REPO / "packages" / "robot_sim", workspace / "robot_sim")
+    shutil.copytree(REPO / "packages" / "robot_gazebo", workspace / "robot_gazebo")
     demo.env["LAUNCHER_PACKAGE_PATH"] = str(workspace)
-    hooks = workspace / "robot_sim" / "hooks"
+    hooks = workspace / "robot_gazebo" / "hooks"
 
     def sim():
-        return demo.run("sim", "-v", "4", "-r", "--iterations", "200", "robot.xml",
+        return demo.run("gz", "sim", "-v", "4", "-r", "--iterations", "200", "robot.world",
                         timeout=120)
 
     done = sim()
     assert done.returncode == 0, done.stdout + done.stderr
-    assert f"from {hooks.parent}/worlds/robot.xml" in done.stdout
+    assert f"from {hooks.parent}/worlds/robot.world" in done.stdout
     assert "CrateDropper: spawned" in done.stdout  # the plugin path came from them too
     shutil.move(hooks, demo.root / "hooks.bak")
     done = sim()
     text = done.stdout + done.stderr
     assert done.returncode == 1
-    assert "world 'robot.xml' not found; searched:" in text and "Traceback" not in text
+    assert "world 'robot.world' not found; searched:" in text and "Traceback" not in text
+    assert "GZ_SIM_RESOURCE_PATH is not set" in text
     shutil.move(demo.root / "hooks.bak", hooks)
     assert sim().returncode == 0
 
@@ -198,10 +202,12 @@ def launched(proc, name: str):
 
 
 def test_kill_9_of_the_sim_ends_the_launch_and_leaves_nothing(demo):
-    proc = demo.start("launch", LAUNCH, output="demo.out")
+    # the Python file runs the sim as the seed's gazebo.launch.py does: on_exit_shutdown
+    proc = demo.start("launch", str(REPO / "launch_files" / "robot.launch.py"),
+                      output="demo.out")
     demo.wait_for_output("X: 0.2", 90, "demo.out")
     launched(proc, "launcher sim").kill()  # SIGKILL: the sim cannot clean up
-    code = proc.wait(60)  # on_exit: shutdown in the launch file; the fixture checks orphans
+    code = proc.wait(60)  # on_exit_shutdown in the launch file; the fixture checks orphans
     out = demo.output("demo.out")
     assert code == 1, out  # a process died of a cause the launcher did not give it
     assert re.search(r"\[sim-\d+\]: process was killed by SIGKILL", out), out

@@ -179,9 +179,9 @@ def is_infrastructure(config: PluginConfig) -> bool:
 def find_class(config: PluginConfig, environ: dict[str, str] | None = None) -> type[Plugin]:
     """The plugin class a config names (see the module text)."""
     env = os.environ if environ is None else environ
-    target = BUILTIN.get(canonical(config.filename)) or BUILTIN.get(canonical(config.name))
-    classic = re.sub(r"^lib|\.so$", "", config.filename)
-    target = target or CLASSIC.get(classic)
+    target = BUILTIN.get(canonical(config.filename)) or \
+        CLASSIC.get(re.sub(r"^lib|\.so$", "", config.filename)) or \
+        BUILTIN.get(canonical(config.name))
     if target is not None:
         module_name, _, attribute = target.partition(":")
         return getattr(importlib.import_module(module_name), attribute)

@@ -36,7 +36,7 @@ def set_inertial(body: Any, link: Element, static: bool) -> None:
     body.explicitinertial = True
     body.mass = max(mass, 1e-9) if static else mass
     body.ipos = list(pose.pos)
-    body.fullinertia = _rotated(tensor, pose.quat) if not static else \
+    body.fullinertia = _off_the_bound(_rotated(tensor, pose.quat)) if not static else \
         [max(v, 1e-9) if i < 3 else 0.0 for i, v in enumerate(tensor)]
 
 
@@ -75,7 +75,17 @@ def _positive_definite(tensor: list[float]) -> bool:
         return False
     moments = _eigenvalues(tensor)
     return all(m > 0 for m in moments) and \
-        max(moments) <= sum(moments) - max(moments) + 1e-9 * sum(moments)
+        max(moments) <= (sum(moments) - max(moments)) * (1 + 1e-6)
+
+
+def _off_the_bound(tensor: list[float]) -> list[float]:
+    """A thin plate's moments sit on the bound (A + B = C), where rounding in the rotation can
+    put them past it for MuJoCo: widen the diagonal by that much (a few parts per billion)."""
+    moments = _eigenvalues(tensor)
+    gap = max(moments) - (sum(moments) - max(moments)) + 1e-9 * sum(moments)
+    if gap <= 0:
+        return tensor
+    return [v + gap if i < 3 else v for i, v in enumerate(tensor)]
 
 
 def _eigenvalues(tensor: list[float]) -> list[float]:

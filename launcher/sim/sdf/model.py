@@ -103,7 +103,7 @@ def _flag(element: Element, tag: str) -> bool:
 
 
 def _collect(model: Element, origin: Origin, context: Context, scope_prefix: str,
-             frame: Pose, parts: Parts) -> None:
+             frame: Pose, parts: Parts) -> Scope:
     """Links, joints and plugins of `model` and its nested models, posed in the top frame."""
     check_children(model, context)
     nested: dict[str, tuple[Element, Origin, Element]] = {}
@@ -123,15 +123,17 @@ def _collect(model: Element, origin: Origin, context: Context, scope_prefix: str
                                       scope, frame)
         if parts.first_link is None:
             parts.first_link = link_name
-    for joint in model.findall("joint"):
-        parts.joints.append(_joint(joint, scope, scope_prefix, frame, origin))
     parts.plugins += plugin_configs(model)
     for nested_name, (element, where, placed) in nested.items():
         if placed.tag == "include":
             parts.plugins += plugin_configs(placed)
         with context.inside(where):
-            _collect(element, where, context, f"{scope_prefix}{nested_name}::",
-                     frame * scope.resolve(nested_name), parts)
+            scope.nested[nested_name] = _collect(element, where, context,
+                                                 f"{scope_prefix}{nested_name}::",
+                                                 frame * scope.resolve(nested_name), parts)
+    for joint in model.findall("joint"):
+        parts.joints.append(_joint(joint, scope, scope_prefix, frame, origin))
+    return scope
 
 
 def _joint(joint: Element, scope: Scope, prefix: str, frame: Pose, origin: Origin) -> Joint:
@@ -143,6 +145,11 @@ def _joint(joint: Element, scope: Scope, prefix: str, frame: Pose, origin: Origi
     parent, child = joint.value("parent"), joint.value("child")
     if not parent or not child:
         raise joint.error(f"joint '{name}' needs <parent> and <child>")
+    links = [n for n, (element, _) in scope.frames.items() if element.tag == "link"]
+    if "::" not in child and child not in links:
+        raise joint.error(f"joint '{name}': child link '{child}' does not exist in model "
+                          f"'{scope.element.get('name', '')}'{did_you_mean(child, links)} "
+                          f"(links: {', '.join(links)})")
     pose = scope.resolve(name)
     axes = []
     for tag in ("axis", "axis2")[:max(JOINTS[kind], 0)]:
@@ -294,10 +301,10 @@ def _limits(joint: Any, axis: Element | None, continuous: bool) -> None:
                                ("spring_stiffness", "stiffness")):
             value = dynamics.find(tag)
             if value is not None and value.text:
-                setattr(joint, attribute, max(numbers(value, 1, "a number")[0], 0.0))
+                _set(joint, attribute, max(numbers(value, 1, "a number")[0], 0.0))
         reference = dynamics.find("spring_reference")
         if reference is not None and reference.text:
-            joint.springref = numbers(reference, 1, "a number")[0]
+            _set(joint, "springref", numbers(reference, 1, "a number")[0])
     limit = axis.find("limit") if axis is not None else None
     if limit is None or continuous:
         return
@@ -309,6 +316,15 @@ def _limits(joint: Any, axis: Element | None, continuous: bool) -> None:
     if effort is not None and 0 < effort < UNLIMITED:
         joint.actfrclimited = mujoco.mjtLimited.mjLIMITED_TRUE
         joint.actfrcrange = [-effort, effort]
+
+
+def _set(joint: Any, attribute: str, value: float) -> None:
+    """MuJoCo 4 keeps some joint coefficients as arrays (the first is the linear one)."""
+    current = getattr(joint, attribute)
+    if hasattr(current, "__len__"):
+        current[0] = value
+    else:
+        setattr(joint, attribute, value)
 
 
 def _bound(limit: Element, tag: str) -> float | None:

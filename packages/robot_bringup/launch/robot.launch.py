@@ -2,7 +2,7 @@
 
 Shaped like a ROS 2 Gazebo project's gazebo.launch.py: the simulator comes from an
 IncludeLaunchDescription of ros_gz_sim's gz_sim.launch.py with `gz_args`.
-    launcher launch robot_bringup robot.launch.py world_name:=arena.xml.j2
+    launcher launch robot_bringup robot.launch.py world_name:=world.sdf
 """
 
 import os
@@ -25,7 +25,7 @@ def generate_launch_description():
     bringup = get_package_share_directory("robot_bringup")
     xacro_file = os.path.join(get_package_share_directory("robot_description"), "urdf",
                               "robot.xacro")
-    worlds = os.path.join(get_package_share_directory("robot_sim"), "worlds")
+    worlds = os.path.join(get_package_share_directory("robot_gazebo"), "worlds")
 
     sim = IncludeLaunchDescription(
         PythonLaunchDescriptionSource([os.path.join(
@@ -45,7 +45,7 @@ def generate_launch_description():
 
     create = Node(
         package="ros_gz_sim", executable="create", output="screen",
-        arguments=["-entity", "my_robot", "-topic", "robot_description", "-z", "0.06"])
+        arguments=["-entity", "my_robot", "-topic", "robot_description"])
 
     driver = Node(
         package="robot_application", executable="driver", output="screen",
@@ -55,11 +55,11 @@ def generate_launch_description():
     return LaunchDescription([
         DeclareLaunchArgument("bridge_config_file",
                               default_value=os.path.join(bringup, "config", "bridge.yaml")),
-        DeclareLaunchArgument("world_name", default_value="robot.xml"),
+        DeclareLaunchArgument("world_name", default_value="robot.world"),
         DeclareLaunchArgument("drive", default_value="true",
                               description="start the driver node"),
         DeclareLaunchArgument("speed", default_value="0.5", description="the driver's speed, m/s"),
-        AppendEnvironmentVariable("MUJOCO_SIM_RESOURCE_PATH", worlds),
+        AppendEnvironmentVariable("GZ_SIM_RESOURCE_PATH", worlds),
         sim,
         robot_state_publisher,
         bridge,

@@ -1,5 +1,5 @@
 """ros_gz_sim's gz_sim.launch.py over the MuJoCo sim: `gz_args` are the sim's command line
-(`-r -v 4 robot.xml`), `on_exit_shutdown:=true` ends the launch when the sim exits."""
+(`-r -v 4 robot.world`), `on_exit_shutdown:=true` ends the launch when the sim exits."""
 
 import shlex
 

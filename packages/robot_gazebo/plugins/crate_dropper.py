@@ -1,8 +1,9 @@
 """A world plugin, as the course's world plugin: when the world loads it spawns a model.
 
-Declared in worlds/robot.xml as <plugin filename="crate_dropper" name="CrateDropper">, found
-through MUJOCO_SIM_PLUGIN_PATH (robot_sim's hooks put this folder there). Config:
-<model> (a model:// URI or file) and <pose> (x y z roll pitch yaw).
+Declared in worlds/robot.world as <plugin filename="crate_dropper" name="CrateDropper">, found
+through GZ_SIM_SYSTEM_PLUGIN_PATH (robot_gazebo's hooks put this folder there). Config:
+<model> (a model:// URI or file: model://crate is model.config + model.sdf) and <pose>
+(x y z roll pitch yaw).
 """
 
 from launcher.sim.plugins import Plugin
