@@ -42,9 +42,11 @@ class _Parser(argparse.ArgumentParser):
     """argparse that raises one clean error, with "did you mean" for a mistyped flag."""
 
     def error(self, message: str) -> NoReturn:
-        words = message.split(": ", 1)[-1].split()
-        flags = [s for a in self._actions for s in a.option_strings]
-        hint = "".join(did_you_mean(w, flags) for w in words if w.startswith("-"))
+        hint = ""
+        if message.startswith("unrecognized arguments: "):
+            flags = [s for a in self._actions for s in a.option_strings]
+            words = message.split(": ", 1)[1].split()
+            hint = "".join(did_you_mean(w, flags) for w in words if w.startswith("-"))
         raise GzUsage(f"{self.prog}: {message}{hint} (see `{self.prog} -h`)")
 
 
@@ -77,7 +79,7 @@ def main(argv: list[str]) -> int:
 def topic(argv: list[str]) -> int:
     parser = _Parser(prog="gz topic", description="Gazebo's topics of launcher's sim.",
                      allow_abbrev=False)
-    mode = parser.add_mutually_exclusive_group(required=True)
+    mode = parser.add_mutually_exclusive_group()
     mode.add_argument("-l", "--list", action="store_true", help="list the sim's topics")
     mode.add_argument("-i", "--info", action="store_true", help="publishers and subscribers")
     mode.add_argument("-e", "--echo", action="store_true", help="print the messages")
@@ -88,6 +90,8 @@ def topic(argv: list[str]) -> int:
     parser.add_argument("-d", "--duration", type=float, default=None, help="-e: stop after S s")
     parser.add_argument("--json-output", action="store_true", help="-e: print JSON")
     args = parser.parse_args(argv)
+    if not (args.list or args.info or args.echo or args.pub is not None):
+        parser.error("give one of -l, -i, -e or -p")
     if not args.list and not args.topic:
         parser.error("-t TOPIC is required with -i, -e and -p")
     if args.list:
@@ -179,6 +183,13 @@ def _echo(name: str, count: int | None, duration: float | None, as_json: bool) -
     return 0
 
 
+def parse_text(text: str, what: str) -> dict[str, Any]:
+    try:
+        return prototext.parse(text, what)
+    except prototext.TextFormatError as exc:
+        raise GzUsage(exc.message) from None
+
+
 def message_type(gz_type: str) -> tuple[str, str]:
     """(the sim's type, Gazebo's short name) for `gz.msgs.NAME`."""
     short = _short(gz_type)
@@ -194,7 +205,7 @@ def message_type(gz_type: str) -> tuple[str, str]:
 def parse_message(gz_type: str, text: str, what: str) -> Any:
     """A sim message from Gazebo's text format for `gz_type`; fields are checked."""
     type_name, short = message_type(gz_type)
-    data = gz_msgs.to_sim(short, prototext.parse(text, what))
+    data = gz_msgs.to_sim(short, parse_text(text, what))
     try:
         return build(type_name, data)
     except MessageError as exc:
@@ -282,7 +293,7 @@ def _call(name: str, reqtype: str, reptype: str, text: str, timeout: float) -> i
     except LaunchError as exc:
         raise GzUsage(exc.message) from None
     request_short = _short(reqtype)
-    data = gz_msgs.to_sim(request_short, prototext.parse(text, "--req"))
+    data = gz_msgs.to_sim(request_short, parse_text(text, "--req"))
     node = Node("_launcher_gz_service", argv=[], parameter_services=False)
     try:
         client = node.create_client(service_type, name)

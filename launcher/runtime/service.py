@@ -118,6 +118,12 @@ class LaunchService:
             self._draining = False
         self._check_idle()
 
+    def report(self, exc: LaunchError) -> None:
+        """An error that does not end the launch (one node it cannot start): logged, and the
+        launch's exit status becomes 1."""
+        self._error = True
+        self.log("ERROR", "launch", str(exc))
+
     def fail(self, exc: LaunchError) -> None:
         """An action failed: report it once and shut the launch down."""
         self._error = True

@@ -5,6 +5,9 @@ The command line follows ROS 2's layout:
         --params-file FILE… -r from:=to…
 Parameters given inline (and global ones from set_parameter) go into a params file that
 launcher writes under the run's log folder; `from` files are passed as they are.
+
+ROS's GUI tools (rviz2, rqt, …) are not part of launcher: when their package is not installed,
+such a node is one error and the rest of the launch runs (ROS 2 would end the whole launch).
 """
 
 from __future__ import annotations
@@ -21,7 +24,13 @@ from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
 from launcher.packages.executables import find_executable
+from launcher.packages.index import PackageNotFound
 from launcher.runtime.context import LaunchContext
+
+GUI_TOOLS = ("rviz2", "rviz", "rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",
+             "rqt_image_view", "rqt_robot_steering", "joint_state_publisher_gui", "gzclient")
+INSTEAD = ("pictures of the world: `launcher sim snapshot -o world.png`; topics: "
+           "`launcher topic echo`")
 
 
 @dataclass(eq=False)
@@ -70,6 +79,19 @@ class Node(ExecuteProcess):
         self.parameters = _python_parameters(self.parameters)
         self.remappings = [r if isinstance(r, RemapEntry) else
                            RemapEntry(to_text(r[0]), to_text(r[1])) for r in self.remappings]
+
+    def execute(self, context: LaunchContext) -> Any:
+        try:
+            return super().execute(context)
+        except PackageNotFound as exc:
+            package = perform_text(context, self.package)
+            if package not in GUI_TOOLS or context.service is None:
+                raise
+            context.service.report(ExecutionError(
+                f"node of package '{package}' not started: {package} is a ROS GUI tool, not "
+                f"part of launcher, and no ROS install provides it ({INSTEAD}); the rest of "
+                "the launch runs", exc.location or self.where))
+            return None
 
     def spec(self, context: LaunchContext):  # type: ignore[override]
         if context.packages is None:

@@ -212,9 +212,10 @@ def _unavailable(config: PluginConfig, folders: list[Path]) -> str:
     if _GZ_FILE.match(config.filename):
         return (f"{config.where}: {label} is a Gazebo system launcher does not provide; the "
                 f"world runs without it (provided: {', '.join(sorted(_provided()))})")
-    where = ", ".join(str(f) for f in folders) or "no plugin folder set"
+    where = ", ".join(str(f) for f in folders) or \
+        f"a folder of {' or '.join(PLUGIN_VARIABLES[:2])} (none is set)"
     return (f"{config.where}: {label} is a C++ library: launcher loads Python plugins only "
-            f"(a .py file in {where}, or a module); the world runs without it")
+            f"(a .py file in {where}, or a Python module); the world runs without it")
 
 
 def _provided() -> set[str]:
