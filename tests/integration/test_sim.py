@@ -73,7 +73,8 @@ set_pose = node.create_client("mujoco_sim/srv/SetPose", "/world/empty/set_pose")
 moved = set_pose.call(node.message("mujoco_sim/srv/SetPose_Request", name="bot",
                                    pose={"position": {"x": 4.0, "y": 2.0, "z": 0.06}}))
 node.spin(0.3)
-result["set_pose"] = [moved.success, states[-1].pose[0].position.x]
+bot = list(states[-1].name).index("bot")  # after the world's own ground_plane
+result["set_pose"] = [moved.success, states[-1].pose[bot].position.x]
 remove = node.create_client("mujoco_sim/srv/Remove", "/world/empty/remove")
 gone = remove.call(node.message("mujoco_sim/srv/Remove_Request", name="bot"))
 again = remove.call(node.message("mujoco_sim/srv/Remove_Request", name="bot"))
@@ -134,7 +135,7 @@ def test_the_sim_serves_control_clock_and_drives_a_spawned_robot(sim_ws):
     assert result["after_reset"] < 0.5
     assert result["set_pose"][0] and result["set_pose"][1] == pytest.approx(4.0, abs=0.05)
     assert result["remove"][:2] == [True, False] and "no entity named 'bot'" in \
-        result["remove"][2] and result["remove"][3] == []
+        result["remove"][2] and result["remove"][3] == ["ground_plane"]
     assert stop(proc) == 130
     out = sim_ws.output("launch.out")
     assert "world 'empty'" in out and "process has finished cleanly" in out or \

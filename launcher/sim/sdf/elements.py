@@ -7,8 +7,6 @@ hints, ODE solver tuning) pass silently. Plugin elements become plugin configs.
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
-
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.sdf.context import Context
 from launcher.sim.sdf.xmltree import Element
@@ -66,15 +64,20 @@ def plugin_configs(element: Element) -> list[PluginConfig]:
     configs = []
     for plugin in element.findall("plugin"):
         filename = plugin.get("filename", "") or plugin.get("name", "")
-        configs.append(PluginConfig(filename, plugin.get("name", ""), to_etree(plugin),
-                                    f"{plugin.location.file}:{plugin.location.line}"))
+        configs.append(PluginConfig(filename, plugin.get("name", ""), plugin,
+                                    _Where(plugin)))  # type: ignore[arg-type]
     return configs
 
 
-def to_etree(element: Element) -> ET.Element:
-    """The ElementTree form plugins read their configuration from."""
-    converted = ET.Element(element.tag, dict(element.attrib))
-    converted.text = element.text or None
-    for child in element.children:
-        converted.append(to_etree(child))
-    return converted
+class _Where:
+    """A plugin's file:line, found only when a message prints it."""
+
+    def __init__(self, element: Element) -> None:
+        self.element = element
+
+    def __str__(self) -> str:
+        location = self.element.location
+        return f"{location.file}:{location.line}"
+
+    def __format__(self, spec: str) -> str:
+        return format(str(self), spec)

@@ -109,6 +109,8 @@ def _eigenvalues(tensor: list[float]) -> list[float]:
 
 def _rotated(tensor: list[float], quat: Quat) -> list[float]:
     """R I Rᵀ, as MuJoCo's fullinertia (xx yy zz xy xz yz)."""
+    if quat == (1.0, 0.0, 0.0, 0.0):
+        return tensor
     xx, yy, zz, xy, xz, yz = tensor
     inertia = [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]]
     w, x, y, z = quat

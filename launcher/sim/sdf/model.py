@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import mujoco
@@ -36,6 +35,7 @@ class Link:
     pose: Pose  # in the model frame
     scope: Scope
     frame: Pose  # the pose of the link's scope (its model) in the model frame
+    origin: Origin  # its file: relative mesh URIs start there
 
 
 @dataclass
@@ -69,9 +69,10 @@ class BuiltModel:
 
 
 def build(spec: Any, model: Element, origin: Origin, context: Context, prefix: str,
-          placement: Pose, static: bool | None = None) -> BuiltModel:
-    """Add `model` to `spec` under its world body at `placement` (the model frame)."""
-    name = model.get("name", "")
+          placement: Pose, static: bool | None = None, name: str | None = None) -> BuiltModel:
+    """Add `model` to `spec` under its world body at `placement` (the model frame); `name`
+    overrides the model's own (an `<include>`'s `<name>`)."""
+    name = name or model.get("name", "")
     if not name:
         raise model.error("<model> needs a name")
     is_static = static if static is not None else _flag(model, "static")
@@ -120,7 +121,7 @@ def _collect(model: Element, origin: Origin, context: Context, scope_prefix: str
             raise link.error(f"two links named '{link_name}' in model "
                              f"'{model.get('name', '')}'")
         parts.links[link_name] = Link(link_name, link, frame * scope.resolve(link.get("name", "")),
-                                      scope, frame)
+                                      scope, frame, origin)
         if parts.first_link is None:
             parts.first_link = link_name
     parts.plugins += plugin_configs(model)
@@ -282,16 +283,9 @@ class _Builder:
         return link.pose.inverse() * in_model
 
     def _mesh_resolver(self, link: Link) -> Any:
-        origin = Origin(_file_of(link.element), (1, 11))
-
         def resolve(uri: str, element: Element) -> Any:
-            return self.context.resolve(uri, element, origin, "mesh")
+            return self.context.resolve(uri, element, link.origin, "mesh")
         return resolve
-
-
-def _file_of(element: Element) -> Path | None:
-    path = Path(element.location.file)
-    return path if path.is_file() else None
 
 
 def _limits(joint: Any, axis: Element | None, continuous: bool) -> None:

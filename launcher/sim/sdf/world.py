@@ -149,19 +149,12 @@ def _models(spec: Any, world: Element, origin: Origin, context: Context) -> list
             first = built[name][1].location
             raise child.error(f"two models named '{name}' in world '{world.get('name')}' "
                               f"(the first at {first.file}:{first.line})")
-        if child.tag == "include" and child.value("name"):
-            element = _renamed(element, name)
-        model = sdf_model.build(spec, element, where, context, f"{name}/", placement, static)
+        model = sdf_model.build(spec, element, where, context, f"{name}/", placement, static,
+                                name)
         if child.tag == "include":
             model.plugins += plugin_configs(child)
         built[name] = (model, child)
     return [model for model, _ in built.values()]
-
-
-def _renamed(model: Element, name: str) -> Element:
-    copy = Element(model.tag, {**model.attrib, "name": name}, model.location, model.children,
-                   model.text)
-    return copy
 
 
 __all__ = ["SdfWorld", "load_world", "IDENTITY", "Pose"]
