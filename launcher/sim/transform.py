@@ -7,18 +7,17 @@ must not pay numpy's per-call overhead on each of them.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 Vector = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
 
 
-@dataclass(frozen=True)
-class Pose:
+class Pose(NamedTuple):  # a tuple: made many times while loading a world
     pos: Vector = (0.0, 0.0, 0.0)
     quat: Quat = (1.0, 0.0, 0.0, 0.0)
 
-    def __mul__(self, other: Pose) -> Pose:
+    def __mul__(self, other: Pose) -> Pose:  # type: ignore[override]
         """This pose then `other` expressed in it (parent * child)."""
         return Pose(_add(self.pos, rotate(self.quat, other.pos)),
                     _qmul(self.quat, other.quat))

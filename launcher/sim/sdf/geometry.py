@@ -15,7 +15,7 @@ from typing import Any
 
 import mujoco
 
-from launcher.sim.sdf.pose import Pose, numbers
+from launcher.sim.sdf.pose import Pose, number, numbers
 from launcher.sim.sdf.xmltree import Element
 
 VISUAL_GROUP, COLLISION_GROUP = 1, 3
@@ -54,17 +54,19 @@ def add_geom(body: Any, spec: Any, element: Element, pose: Pose, visual: bool, w
         return None
     turn = kwargs.pop("turn", None)
     placed = pose * turn if turn is not None else pose
-    geom = body.add_geom(name=name, pos=list(placed.pos), quat=list(placed.quat), **kwargs)
+    kwargs.update(name=name, pos=list(placed.pos), quat=list(placed.quat))
     if visual:
-        geom.contype = geom.conaffinity = 0
-        geom.group, geom.density = VISUAL_GROUP, 0.0
-        geom.rgba = _colour(element, warn)
+        kwargs.update(contype=0, conaffinity=0, group=VISUAL_GROUP, density=0.0,
+                      rgba=_colour(element, warn))
     else:
-        geom.group = COLLISION_GROUP
-        geom.rgba = [0.5, 0.5, 0.5, 1.0]
+        kwargs.update(group=COLLISION_GROUP, rgba=[0.5, 0.5, 0.5, 1.0])
         mu = element.path("surface", "friction", "ode", "mu")
-        if mu is not None and mu.text:
-            geom.friction[0] = max(numbers(mu, 1, "a friction coefficient")[0], 0.0)
+        if mu is not None and mu.stripped:
+            kwargs["friction"] = [max(number(mu, "a friction coefficient"), 0.0),
+                                  0.005, 0.0001]  # MuJoCo's torsional and rolling defaults
+    geom = body.add_geom()  # attributes one by one: faster than add_geom(**kwargs)
+    for key, value in kwargs.items():
+        setattr(geom, key, value)
     return geom
 
 
@@ -100,7 +102,7 @@ def _shape(shape: Element, spec: Any, resolve_mesh: ResolveMesh, warn: Warn, wha
 
 def _number(shape: Element, tag: str, default: float) -> float:
     child = shape.find(tag)
-    value = numbers(child, 1, "a number")[0] if child is not None else default
+    value = number(child) if child is not None else default
     if value <= 0:
         raise child.error(f"<{tag}> must be > 0, got {value:g}") if child is not None else \
             shape.error(f"<{tag}> must be > 0")
@@ -166,15 +168,15 @@ def _colour(visual: Element, warn: Warn) -> list[float]:
     if material is not None:
         for tag in ("diffuse", "ambient"):
             colour = material.find(tag)
-            if colour is not None and colour.text:
+            if colour is not None and colour.stripped:
                 values = numbers(colour, (3, 4), "a colour 'r g b [a]'")
                 rgba = [*values[:3], values[3] if len(values) == 4 else 1.0]
                 break
         else:
             script = material.path("script", "name")
-            if script is not None and script.text in NAMED_COLOURS:
-                rgba = [*NAMED_COLOURS[script.text], 1.0]
+            if script is not None and script.stripped in NAMED_COLOURS:
+                rgba = [*NAMED_COLOURS[script.stripped], 1.0]
     transparency = visual.find("transparency")
-    if transparency is not None and transparency.text:
-        rgba[3] = max(0.0, min(1.0, 1.0 - numbers(transparency, 1, "a number")[0]))
+    if transparency is not None and transparency.stripped:
+        rgba[3] = max(0.0, min(1.0, 1.0 - number(transparency)))
     return [float(v) for v in rgba]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from launcher.sim.sdf.pose import Quat, numbers, parse_pose
+from launcher.sim.sdf.pose import Quat, number, parse_pose
 from launcher.sim.sdf.xmltree import Element
 
 TENSOR = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
@@ -23,7 +23,7 @@ def set_inertial(body: Any, link: Element, static: bool) -> None:
     inertial = link.find("inertial")
     if inertial is not None and inertial.get("auto", "false").lower() in ("true", "1"):
         density = inertial.find("density")
-        value = numbers(density, 1, "a density")[0] if density is not None else DEFAULT_DENSITY
+        value = number(density, "a density") if density is not None else DEFAULT_DENSITY
         for geom in body.geoms:
             if geom.contype:  # collisions; visuals have density 0
                 geom.density = value
@@ -42,7 +42,7 @@ def set_inertial(body: Any, link: Element, static: bool) -> None:
 
 def _mass(inertial: Element, static: bool) -> float:
     element = inertial.find("mass")
-    mass = numbers(element, 1, "a mass in kg")[0] if element is not None else 1.0
+    mass = number(element, "a mass in kg") if element is not None else 1.0
     if mass <= 0 and not static:
         raise (element or inertial).error(f"<mass> must be > 0 for a link that moves, got "
                                           f"{mass:g} (make the model <static> if it never "
@@ -56,8 +56,8 @@ def _tensor(inertial: Element, static: bool, link: str) -> list[float]:
     if element is not None:
         for tag in TENSOR:
             child = element.find(tag)
-            if child is not None and child.text:
-                defaults[tag] = numbers(child, 1, "a number")[0]
+            if child is not None and child.text and not child.text.isspace():
+                defaults[tag] = number(child)
     tensor = [defaults[t] for t in TENSOR]
     if not static and not _positive_definite(tensor):
         raise (element or inertial).error(
@@ -83,6 +83,8 @@ def _off_the_bound(tensor: list[float]) -> list[float]:
     put them past it for MuJoCo: widen the diagonal by that much (a few parts per billion)."""
     moments = _eigenvalues(tensor)
     gap = max(moments) - (sum(moments) - max(moments)) + 1e-9 * sum(moments)
+    if gap <= 0 and tensor[3:] == [0.0, 0.0, 0.0]:
+        return tensor  # diagonal and off the bound: no rounding to fear
     if gap <= 0:
         return tensor
     return [v + gap if i < 3 else v for i, v in enumerate(tensor)]

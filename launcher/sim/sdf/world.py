@@ -21,7 +21,7 @@ from launcher.sim.sdf import model as sdf_model
 from launcher.sim.sdf.context import Context, Origin, read
 from launcher.sim.sdf.elements import check_children, plugin_configs
 from launcher.sim.sdf.model import BuiltModel
-from launcher.sim.sdf.pose import IDENTITY, Pose, numbers, parse_pose, rotate
+from launcher.sim.sdf.pose import IDENTITY, Pose, number, numbers, parse_pose, rotate
 from launcher.sim.sdf.xmltree import Element
 
 LIGHTS = {"directional": mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
@@ -68,17 +68,17 @@ def _physics(spec: Any, world: Element) -> float | None:
         spec.option.timestep = 0.001  # Gazebo's default step
         return None
     step = physics.find("max_step_size")
-    if step is not None and step.text:
-        value = numbers(step, 1, "a step in seconds")[0]
+    if step is not None and step.stripped:
+        value = number(step, "a step in seconds")
         if value <= 0:
             raise step.error(f"<max_step_size> must be > 0, got {value:g}")
         spec.option.timestep = value
     else:
         spec.option.timestep = 0.001
     factor = physics.find("real_time_factor")
-    if factor is None or not factor.text:
+    if factor is None or not factor.stripped:
         return None
-    value = numbers(factor, 1, "a real-time factor")[0]
+    value = number(factor, "a real-time factor")
     if value < 0:
         raise factor.error(f"<real_time_factor> must be >= 0, got {value:g}")
     return value
@@ -87,7 +87,7 @@ def _physics(spec: Any, world: Element) -> float | None:
 def _gravity(spec: Any, world: Element) -> None:
     gravity = world.find("gravity")
     spec.option.gravity = numbers(gravity, 3, "a vector 'x y z'") \
-        if gravity is not None and gravity.text else [0.0, 0.0, -9.8]
+        if gravity is not None and gravity.stripped else [0.0, 0.0, -9.8]
 
 
 def _scene(spec: Any, world: Element) -> None:
@@ -95,10 +95,10 @@ def _scene(spec: Any, world: Element) -> None:
     if scene is None:
         return
     ambient = scene.find("ambient")
-    if ambient is not None and ambient.text:
+    if ambient is not None and ambient.stripped:
         spec.visual.headlight.ambient = numbers(ambient, (3, 4), "a colour 'r g b [a]'")[:3]
     background = scene.find("background")
-    if background is not None and background.text:
+    if background is not None and background.stripped:
         rgb = numbers(background, (3, 4), "a colour 'r g b [a]'")[:3]
         spec.add_texture(name="background", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX,
                          builtin=mujoco.mjtBuiltin.mjBUILTIN_FLAT, rgb1=rgb, rgb2=rgb,
@@ -110,13 +110,13 @@ def add_light(spec: Any, light: Element) -> None:
     pose = parse_pose(light.find("pose"))
     direction_element = light.find("direction")
     direction = numbers(direction_element, 3, "a direction 'x y z'") \
-        if direction_element is not None and direction_element.text else [0.0, 0.0, -1.0]
+        if direction_element is not None and direction_element.stripped else [0.0, 0.0, -1.0]
     added = spec.worldbody.add_light(name=light.get("name", ""), pos=list(pose.pos),
                                      dir=list(rotate(pose.quat, tuple(direction))))
     added.type = LIGHTS.get(kind, mujoco.mjtLightType.mjLIGHT_POINT)
     for tag, attribute in (("diffuse", "diffuse"), ("specular", "specular")):
         colour = light.find(tag)
-        if colour is not None and colour.text:
+        if colour is not None and colour.stripped:
             setattr(added, attribute, numbers(colour, (3, 4), "a colour 'r g b [a]'")[:3])
     added.castshadow = (light.value("cast_shadows", "false") or "").lower() in ("true", "1")
     attenuation = light.find("attenuation")

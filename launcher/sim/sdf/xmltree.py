@@ -1,8 +1,8 @@
 """SDF's XML as a tree whose elements can say where they are (file:line:column).
 
 The tree is ElementTree's, built by its C parser (loading is benchmarked), with elements of
-a subclass that reads `text` stripped and adds SDF's helpers. ElementTree keeps no line
-numbers: an element's place is found only when a message needs it, by reading its document
+a subclass that adds SDF's helpers (`value` gives a child's text stripped; `text` is raw).
+ElementTree keeps no line numbers: an element's place is found only when a message needs it, by reading its document
 once more with expat and counting elements in document order.
 """
 
@@ -15,7 +15,6 @@ from xml.parsers import expat
 
 from launcher.errors import LaunchError, Location
 
-_BASE_TEXT = ET.Element.text
 _RECENT = 64  # documents whose elements can still be placed
 
 
@@ -26,14 +25,9 @@ class SdfError(LaunchError):
 class Element(ET.Element):
     __slots__ = ()
 
-    @property  # type: ignore[override]
-    def text(self) -> str:
-        raw = _BASE_TEXT.__get__(self)
-        return raw.strip() if raw else ""
-
-    @text.setter
-    def text(self, value: str | None) -> None:
-        _BASE_TEXT.__set__(self, value)
+    @property
+    def stripped(self) -> str:
+        return self.text.strip() if self.text else ""
 
     @property
     def children(self) -> list[Element]:
@@ -42,7 +36,9 @@ class Element(ET.Element):
     def value(self, tag: str, default: str | None = None) -> str | None:
         """The text of the first child `tag`, or `default` when there is none."""
         child = self.find(tag)
-        return child.text if child is not None else default
+        if child is None:
+            return default
+        return child.text.strip() if child.text else ""
 
     def path(self, *tags: str) -> Element | None:
         """The element at `tags` below this one (`path('surface', 'friction', 'ode')`)."""
