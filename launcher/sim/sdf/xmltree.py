@@ -2,8 +2,8 @@
 
 The tree is ElementTree's, built by its C parser (loading is benchmarked), with elements of
 a subclass that adds SDF's helpers (`value` gives a child's text stripped; `text` is raw).
-ElementTree keeps no line numbers: an element's place is found only when a message needs it, by reading its document
-once more with expat and counting elements in document order.
+ElementTree keeps no line numbers: an element's place is found only when a message needs
+it, by reading its document once more with expat and counting elements in document order.
 """
 
 from __future__ import annotations
