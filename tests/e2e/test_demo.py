@@ -263,3 +263,34 @@ def test_ten_robots_all_spawn_and_publish_odometry(demo):
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(90) == 130
+
+
+SEED = REPO.parent / "shared" / "seeds" / "001_ea06ae6f7572c47f.txt"
+
+
+def test_the_demo_files_are_the_seed_projects_own_unchanged():
+    seed = SEED.read_text()
+    launch = seed[seed.index("launch:\n  - arg:"):seed.index("bridge.yaml\n")]
+    assert (REPO / "launch_files" / "robot.launch.yaml").read_text().startswith(launch)
+    python = seed[seed.index("import os\nfrom ament_index_python"):]
+    bringup = REPO / "packages" / "robot_bringup" / "launch" / "gazebo.launch.py"
+    assert bringup.read_text().rstrip("\n") == python.rstrip("\n")
+    hook = REPO / "packages" / "robot_gazebo" / "hooks" / "robot_gazebo.dsv.in"
+    assert hook.read_text().strip() == ("prepend-non-duplicate;GZ_SIM_RESOURCE_PATH;share;"
+                                        "@CMAKE_INSTALL_PREFIX@/share/robot_gazebo/worlds")
+
+
+def test_the_seeds_gazebo_launch_py_runs_its_sdf_world_through_the_hooks(demo):
+    proc = demo.start("launch", "robot_bringup", "gazebo.launch.py", output="gazebo.out")
+    try:
+        listed = ""
+        for _ in range(60):  # the sim is up once it answers
+            listed = demo.run("gz", "model", "--list", "--timeout", "2").stdout
+            if "box_model" in listed:
+                break
+        assert "Requesting state for world [world]" in listed, demo.output("gazebo.out")
+        for model in ("ground_plane", "box_model", "second_box"):
+            assert f"    - {model}" in listed, listed
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(60) == 130

@@ -481,3 +481,21 @@ def test_shapes_mujoco_cannot_express_are_one_warning_each_and_left_out(tmp_path
     assert "sensor 'cam' (type camera) is not simulated" in text
     assert "<wobble> in <link> is not known to launcher and is ignored" in text
     assert "<actor> in <world> is ignored: animated actors are not simulated" in text
+
+
+def test_classic_joint_state_publisher_publishes_sensor_msgs_joint_states():
+    wheels = WHEEL.format(side="left", y=0.15) + WHEEL.format(side="right", y=-0.15)
+    text = CLASSIC_ROBOT.format(wheels=wheels, params="").replace(
+        '<plugin filename="libgazebo_ros_diff_drive.so" name="diff_drive"></plugin>',
+        '<plugin filename="libgazebo_ros_joint_state_publisher.so" name="joints">'
+        "<robotNamespace>/bot</robotNamespace><jointName>left_wheel_joint</jointName>"
+        "<updateRate>100</updateRate></plugin>")
+    loaded = load_world_file(REPO / "launcher" / "builtin" / "mujoco_sim" / "worlds" /
+                             "empty.sdf")
+    recorder = Recorder()
+    world = World(loaded.spec, loaded.label, recorder, loaded.plugins, models=loaded.models)
+    world.spawn(Descriptions().from_string(text), "bot", [0, 0, 0], [1, 0, 0, 0])
+    run(world, 50)
+    states = recorder.published["/bot/joint_states"]
+    assert states and states[-1].name == ["left_wheel_joint"]
+    assert len(states) == pytest.approx(5, abs=1)  # 100 Hz for 50 ms
