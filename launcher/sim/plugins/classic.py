@@ -133,15 +133,8 @@ class ClassicJointStates(JointStatePublisher):
             "sensor_msgs/msg/JointState", _ros_topic(self, "topicName", "joint_states"))
         self.reset()
 
-    def post_step(self, model: Any, data: Any) -> None:
-        now = data.time
-        if now + 1e-9 < self.next_update:
-            return
-        self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
-        if not self.publisher.get_subscription_count():
-            return
-        t = self.sim.transport
-        self.publisher.publish(t.message(
-            "sensor_msgs/msg/JointState", header=t.header(now, ""), name=self.joints,
+    def state(self, transport: Any, now: float, data: Any) -> Any:
+        return transport.message(
+            "sensor_msgs/msg/JointState", header=transport.header(now, ""), name=self.joints,
             position=data.qpos[self.qpos], velocity=data.qvel[self.dofs],
-            effort=data.qfrc_actuator[self.dofs]))
+            effort=data.qfrc_actuator[self.dofs])

@@ -47,13 +47,15 @@ class JointStatePublisher(Plugin):
         if now + 1e-9 < self.next_update:
             return
         self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
-        if not self.publisher.get_subscription_count():
-            return
-        transport = self.sim.transport
-        self.publisher.publish(transport.message(
+        if self.publisher.get_subscription_count():
+            self.publisher.publish(self.state(self.sim.transport, now, data))
+
+    def state(self, transport: Any, now: float, data: Any) -> Any:
+        """The message of the joints' state now."""
+        return transport.message(
             "mujoco_sim/msg/Model", header=transport.header(now, ""), name=self.entity.name,
             joint_name=self.joints, position=data.qpos[self.qpos],
-            velocity=data.qvel[self.dofs], effort=data.qfrc_actuator[self.dofs]))
+            velocity=data.qvel[self.dofs], effort=data.qfrc_actuator[self.dofs])
 
     def close(self) -> None:
         self.publisher.destroy()
