@@ -130,6 +130,7 @@ def test_physics_gravity_scene_and_lights(tmp_path):
         </spot></light>"""))
     model = loaded.spec.compile()
     assert model.opt.timestep == pytest.approx(0.002) and loaded.real_time_factor == 0.5
+    assert model.opt.integrator == mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     assert model.opt.gravity == pytest.approx([0, 0, -3.7])
     assert model.vis.headlight.ambient == pytest.approx([0.2, 0.3, 0.4])
     assert model.nlight == 2 and model.light_pos[1] == pytest.approx([1, 2, 3])

@@ -51,6 +51,8 @@ def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None =
     spec = mujoco.MjSpec()
     spec.modelname = world.get("name", "default")
     spec.compiler.degree = False
+    # stable with the velocity actuators of wheels and joint servos (as for MJCF worlds)
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     check_children(world, context)
     rtf = _physics(spec, world)
     _gravity(spec, world)
