@@ -193,13 +193,8 @@ class SimServer:
             else:
                 raise LaunchError("nothing to spawn: give the description (sdf) or a file "
                                   "(sdf_filename)")
-            pose = request.pose
-            quat = [pose.orientation.w, pose.orientation.x, pose.orientation.y,
-                    pose.orientation.z]
-            if all(q == 0 for q in quat):
-                quat = [1.0, 0.0, 0.0, 0.0]
-            entity = self.world.spawn(template, request.name,
-                                      [pose.position.x, pose.position.y, pose.position.z], quat,
+            position, quat = spawn_pose(request.pose, template)
+            entity = self.world.spawn(template, request.name, position, quat,
                                       request.allow_renaming)
         except LaunchError as exc:
             self.log.warning(f"create failed: {exc}")
@@ -260,6 +255,18 @@ class SimServer:
         response.success, response.message = True, f"{len(png)} bytes of PNG"
         response.png = np.frombuffer(png, dtype=np.uint8)
         return response
+
+
+def spawn_pose(pose: Any, template: Any) -> tuple[list[float], list[float]]:
+    """Where a create request puts the model: its pose, or, when it gives none (all zero),
+    the pose the description itself has (an SDF model's `<pose>`)."""
+    position = [pose.position.x, pose.position.y, pose.position.z]
+    quat = [pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z]
+    if all(q == 0 for q in quat):
+        quat = [1.0, 0.0, 0.0, 0.0]
+    if not any(position) and quat == [1.0, 0.0, 0.0, 0.0]:
+        return list(template.pose.pos), list(template.pose.quat)
+    return position, quat
 
 
 def install_signal_handlers(server: SimServer) -> None:

@@ -107,6 +107,7 @@ def test_the_courses_model_config_box_and_an_sdf_string_spawn(gz_ws):
     proc = start_world(gz_ws, "empty.sdf", f"""
       - node: {{pkg: ros_gz_sim, exec: create, output: screen,
                args: "-file model://box_model -entity second_model -x 6"}}
+
       - node:
           pkg: ros_gz_sim
           exec: create

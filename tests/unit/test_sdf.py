@@ -500,3 +500,51 @@ def test_classic_joint_state_publisher_publishes_sensor_msgs_joint_states():
     states = recorder.published["/bot/joint_states"]
     assert states and states[-1].name == ["left_wheel_joint"]
     assert len(states) == pytest.approx(5, abs=1)  # 100 Hz for 50 ms
+
+
+def test_worlds_and_models_are_found_on_every_gazebo_variable(tmp_path):
+    from launcher.sim.resources import ResourceNotFound, find_model, find_world
+
+    folders = {}
+    for variable in ("GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH", "GAZEBO_MODEL_PATH",
+                     "GAZEBO_RESOURCE_PATH", "MUJOCO_SIM_RESOURCE_PATH"):
+        folders[variable] = tmp_path / variable.lower()
+        folders[variable].mkdir()
+    env = {variable: str(folder) for variable, folder in folders.items()}
+    (folders["IGN_GAZEBO_RESOURCE_PATH"] / "old.world").write_text("<sdf/>")
+    (folders["GAZEBO_RESOURCE_PATH"] / "worlds").mkdir()
+    (folders["GAZEBO_RESOURCE_PATH"] / "worlds" / "classic.world").write_text("<sdf/>")
+    (folders["GAZEBO_MODEL_PATH"] / "table").mkdir()
+    assert find_world("old.world", env).parent == folders["IGN_GAZEBO_RESOURCE_PATH"]
+    assert find_world("classic.world", env).name == "classic.world"  # <dir>/worlds, classic
+    assert find_model("table", env) == folders["GAZEBO_MODEL_PATH"] / "table"
+    with pytest.raises(ResourceNotFound) as caught:
+        find_world("nowhere.sdf", env)
+    message = str(caught.value)
+    for variable, folder in folders.items():
+        assert f"{folder} ({variable})" in message  # every folder searched, with its variable
+        assert f"{variable}='{folder}'" in message  # and every variable's value
+    with pytest.raises(ResourceNotFound) as caught:
+        find_world("nowhere.sdf", {})
+    assert "GZ_SIM_RESOURCE_PATH is not set" in str(caught.value)
+
+
+def test_a_model_sdf_file_spawns_by_path_too():
+    template = Descriptions().from_file(str(REPO / "packages" / "robot_gazebo" / "models" /
+                                            "box_model" / "model.sdf"))
+    assert template.name == "box_model" and template.root == "link" and not template.static
+
+
+def test_a_create_without_a_pose_puts_an_sdf_model_at_its_own_pose():
+    from launcher.sim.server import spawn_pose
+
+    template = Descriptions(environ={"GZ_SIM_RESOURCE_PATH": str(
+        REPO / "packages" / "robot_gazebo" / "models")}).from_file("model://box_model")
+
+    def pose(x=0.0, w=0.0):
+        return SimpleNamespace(position=SimpleNamespace(x=x, y=0.0, z=0.0),
+                               orientation=SimpleNamespace(w=w, x=0.0, y=0.0, z=0.0))
+
+    assert spawn_pose(pose(), template) == ([0, 0, 0.5], [1, 0, 0, 0])  # the model's <pose>
+    assert spawn_pose(pose(w=1.0), template) == ([0, 0, 0.5], [1, 0, 0, 0])
+    assert spawn_pose(pose(x=6.0), template) == ([6.0, 0, 0], [1, 0, 0, 0])  # as given
