@@ -72,7 +72,8 @@ class Camera:
         if track and track not in entities:
             raise LaunchError(f"no entity '{track}' in world '{self.world.world_name}'"
                               f"{did_you_mean(track, list(entities))}")
-        chosen = [entities[track]] if track else list(entities.values())
+        chosen = [entities[track]] if track else \
+            [e for e in entities.values() if not self._is_ground(e.body)]
         view = mujoco.MjvCamera()
         mujoco.mjv_defaultFreeCamera(model, view)
         if chosen:  # frame the entities rather than the whole (often huge) ground
@@ -82,6 +83,14 @@ class Camera:
             view.distance = max(2.0, 2.5 * spread + 1.5)
         view.azimuth, view.elevation = 135.0, -30.0
         return view
+
+    def _is_ground(self, body: int) -> bool:
+        """A ground plane (Gazebo's `ground_plane` model) is framed by nothing: it is
+        everywhere."""
+        model = self.world.model
+        start, count = int(model.body_geomadr[body]), int(model.body_geomnum[body])
+        return any(model.geom_type[g] == mujoco.mjtGeom.mjGEOM_PLANE
+                   for g in range(start, start + count))
 
     def _renderer_for(self, width: int, height: int) -> Any:
         model = self.world.model
