@@ -57,8 +57,9 @@ def find_world(name: str, environ: Mapping[str, str] | None = None) -> Path:
             places = [folder, folder / "worlds"] if variable == "GAZEBO_RESOURCE_PATH" \
                 else [folder]
             for place in places:
-                if (place / name).is_file():
-                    return (place / name).resolve()
+                for suffix in WORLD_SUFFIXES[:3]:  # `gz sim shapes` finds shapes.sdf
+                    if (place / f"{name}{suffix}").is_file():
+                        return (place / f"{name}{suffix}").resolve()
             searched.append(f"{folder} ({variable})")
         for suffix in WORLD_SUFFIXES:
             if (BUILTIN_WORLDS / f"{name}{suffix}").is_file():

@@ -516,6 +516,7 @@ def test_worlds_and_models_are_found_on_every_gazebo_variable(tmp_path):
     (folders["GAZEBO_RESOURCE_PATH"] / "worlds" / "classic.world").write_text("<sdf/>")
     (folders["GAZEBO_MODEL_PATH"] / "table").mkdir()
     assert find_world("old.world", env).parent == folders["IGN_GAZEBO_RESOURCE_PATH"]
+    assert find_world("old", env).name == "old.world"  # a name, as `gz sim shapes` takes
     assert find_world("classic.world", env).name == "classic.world"  # <dir>/worlds, classic
     assert find_model("table", env) == folders["GAZEBO_MODEL_PATH"] / "table"
     with pytest.raises(ResourceNotFound) as caught:
