@@ -244,12 +244,16 @@ def test_includes_by_model_uri_with_name_pose_and_plugins(tmp_path):
       <include><uri>model://crate</uri><name>second</name><pose>4 0 1 0 0 0</pose>
         <plugin filename="gz-sim-joint-state-publisher-system"
                 name="gz::sim::systems::JointStatePublisher"/></include>
-      <include><uri>models/crate</uri><name>third</name></include>"""), env=env)
-    assert [m.name for m in loaded.models] == ["crate", "second", "third"]
+      <include><uri>models/crate</uri><name>third</name></include>
+      <model name="shelf"><pose>0 5 0 0 0 0</pose><static>true</static><link name="board"/>
+        <include><uri>model://crate</uri><name>on_it</name></include></model>"""), env=env)
+    assert [m.name for m in loaded.models] == ["crate", "second", "third", "shelf"]
     assert loaded.models[1].plugins[0].filename == "gz-sim-joint-state-publisher-system"
     model = loaded.spec.compile()
     assert model.body_pos[model.body("second/link").id] == pytest.approx([4, 0, 1])
     assert model.body_pos[model.body("crate/link").id] == pytest.approx([0, 0, 0.5])
+    nested = model.body("shelf/on_it::link").id  # placed by the included model's own pose
+    assert model.body_pos[nested] == pytest.approx([0, 5, 0.5])
 
 
 def test_the_courses_box_model_spawns_from_model_config(tmp_path):

@@ -57,14 +57,17 @@ def collect(model: Element, origin: Origin, context: Context, scope_prefix: str,
              frame: Pose, parts: Parts) -> Scope:
     """Links, joints and plugins of `model` and its nested models, posed in the top frame."""
     check_children(model, context)
-    nested: dict[str, tuple[Element, Origin, Element]] = {}
+    nested: dict[str, tuple[Element, Origin, Element | None]] = {}  # model, origin, include
     for child in model.children:
         if child.tag == "model":
-            nested[child.get("name", "")] = (child, origin, child)
+            nested[child.get("name", "")] = (child, origin, None)
         elif child.tag == "include":
             included, where = context.include(child, origin)
             nested[child.value("name") or included.get("name", "")] = (included, where, child)
-    scope = Scope.of(model, {n: placed for n, (_, _, placed) in nested.items()})
+    # an include is placed by its own <pose>, else by the included model's
+    scope = Scope.of(model, {n: include if include is not None and include.find("pose")
+                             is not None else element
+                             for n, (element, _, include) in nested.items()})
     for link in model.findall("link"):
         link_name = scope_prefix + link.get("name", "")
         if link_name in parts.links:
@@ -75,9 +78,9 @@ def collect(model: Element, origin: Origin, context: Context, scope_prefix: str,
         if parts.first_link is None:
             parts.first_link = link_name
     parts.plugins += plugin_configs(model)
-    for nested_name, (element, where, placed) in nested.items():
-        if placed.tag == "include":
-            parts.plugins += plugin_configs(placed)
+    for nested_name, (element, where, include) in nested.items():
+        if include is not None:
+            parts.plugins += plugin_configs(include)
         with context.inside(where):
             scope.nested[nested_name] = collect(element, where, context,
                                                  f"{scope_prefix}{nested_name}::",
