@@ -1,9 +1,14 @@
-"""One exception root for every user-facing failure, and the place it points to."""
+"""One exception root for every user-facing failure, the place it points to, and the one
+reporter every entry point (the CLI, `launcher sim`, each built-in node) prints it with."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import os
+import sys
+from collections.abc import Callable, Iterable
 from typing import NamedTuple
+
+DEBUG_VARIABLE = "LAUNCHER_DEBUG"  # "1": tracebacks too (`launcher launch --debug` sets it)
 
 
 class Location(NamedTuple):
@@ -58,7 +63,9 @@ class ExecutionError(LaunchError):
 
 
 class UsageError(LaunchError):
-    """The command line was wrong."""
+    """The command line was wrong (exit status 2, as argparse's own errors)."""
+
+    exit_code = 2
 
 
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
@@ -69,3 +76,29 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     if not close:
         return ""
     return " (did you mean " + " or ".join(f"'{c}'" for c in close) + "?)"
+
+
+def report(exc: BaseException, label: str = "", debug: bool = False) -> int:
+    """Print a failure as one line on stderr (with its traceback when debugging); the exit
+    status it means: the LaunchError's own, 130 for Ctrl-C, 1 for anything else."""
+    if isinstance(exc, KeyboardInterrupt):
+        return 130
+    if debug or os.environ.get(DEBUG_VARIABLE) == "1":
+        import traceback  # only when debugging: start-up time
+
+        traceback.print_exception(exc)
+    prefix = f"[{label}] " if label else ""
+    if isinstance(exc, LaunchError):
+        print(f"{prefix}error: {exc}", file=sys.stderr, flush=True)
+        return exc.exit_code
+    print(f"{prefix}error: internal error: {type(exc).__name__}: {exc} (run with --debug for "
+          "the traceback)", file=sys.stderr, flush=True)
+    return 1
+
+
+def reported(run: Callable[[], int | None], label: str = "", debug: bool = False) -> int:
+    """`run()`'s exit status; whatever it raises goes through `report`."""
+    try:
+        return int(run() or 0)
+    except (Exception, KeyboardInterrupt) as exc:
+        return report(exc, label, debug)

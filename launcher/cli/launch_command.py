@@ -16,7 +16,7 @@ from launcher.description.actions.arguments import check_required
 from launcher.description.actions.shutdown import Shutdown
 from launcher.description.actions.timer import TimerAction
 from launcher.description.substitution import to_text
-from launcher.errors import UsageError
+from launcher.errors import DEBUG_VARIABLE, UsageError
 from launcher.frontend.loader import load_file
 from launcher.packages.index import PackageIndex
 from launcher.runtime.logs import log_root
@@ -87,6 +87,8 @@ def run(args: argparse.Namespace) -> int:
         return 0
     check_required(description.actions, configurations)
     environment = hooked_environment(index, default_environment())
+    if args.debug:  # the built-in nodes print tracebacks with their errors too
+        environment[DEBUG_VARIABLE] = "1"
     compat.enable_for_children(environment)
     tools_on_path(environment)
     compat.commands_for_children(environment)

@@ -9,11 +9,9 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
-from collections.abc import Callable
-from typing import Any
 
 from launcher import __version__
-from launcher.errors import LaunchError
+from launcher.errors import reported
 
 COMMANDS = {
     "launch": ("launcher.cli.launch_command", "run a launch file"),
@@ -29,7 +27,9 @@ COMMANDS = {
 }
 
 
-def build_parser(selected: str | None) -> argparse.ArgumentParser:
+def build_parser(selected: str | None) -> tuple[argparse.ArgumentParser,
+                                                 argparse._SubParsersAction]:
+    """The parser, and its subcommands (only the selected one's module is imported)."""
     parser = argparse.ArgumentParser(
         prog="launcher", description="ROS 2-style launch files for simulated robots.")
     parser.add_argument("--version", action="version", version=f"launcher {__version__}")
@@ -39,7 +39,7 @@ def build_parser(selected: str | None) -> argparse.ArgumentParser:
             importlib.import_module(module).add_parser(commands)
         else:
             commands.add_parser(name, help=helptext)
-    return parser
+    return parser, commands
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -47,42 +47,20 @@ def main(argv: list[str] | None = None) -> int:
     if argv[:1] == ["sim"]:  # every flag after it is the sim's own (gz sim's), -h included
         from launcher.cli.sim_command import run_sim
 
-        return run_sim(argv[1:])
+        return reported(lambda: run_sim(argv[1:]), "sim")
     if argv[:1] == ["gz"]:  # Gazebo's own flags, -h included
         from launcher.cli.gz_command import run_gz
 
-        return _reported(run_gz, [a for a in argv[1:] if a != "--debug"], "--debug" in argv)
+        return reported(lambda: run_gz([a for a in argv[1:] if a != "--debug"]), "",
+                        "--debug" in argv)
     selected = next((word for word in argv if not word.startswith("-")), None)
-    parser = build_parser(selected if selected in COMMANDS else None)
+    parser, commands = build_parser(selected if selected in COMMANDS else None)
     if selected == "launch" and argv[0] == "launch":
         # `name:=value` may come before or after options (`--duration 10 drive:=false`)
-        commands = next(a for a in parser._actions
-                        if isinstance(a, argparse._SubParsersAction))
         args = commands.choices["launch"].parse_intermixed_args(argv[1:])
     else:
         args = parser.parse_args(argv)
-    return _reported(lambda _: args.run(args), [], getattr(args, "debug", False))
-
-
-def _reported(run: Callable[[list[str]], Any], argv: list[str], debug: bool) -> int:
-    """Run a command; a LaunchError is one line on stderr (the traceback with --debug)."""
-    try:
-        return int(run(argv) or 0)
-    except LaunchError as exc:
-        if debug:
-            import traceback  # only with --debug: start-up time
-
-            traceback.print_exc()
-        print(f"error: {exc}", file=sys.stderr)
-        return exc.exit_code
-    except KeyboardInterrupt:
-        return 130
-    except Exception as exc:  # a bug: still one clean line, the trace with --debug
-        if debug:
-            raise
-        print(f"error: internal error: {type(exc).__name__}: {exc} "
-              "(run with --debug for the traceback)", file=sys.stderr)
-        return 1
+    return reported(lambda: args.run(args), "", getattr(args, "debug", False))
 
 
 if __name__ == "__main__":

@@ -28,13 +28,8 @@ def run_sim(argv: list[str]) -> int:
 
         return snapshot(argv[1:])
     from launcher.cli.workspace import hooked_environment, load_index
-    from launcher.errors import LaunchError
 
-    try:
-        os.environ.update(hooked_environment(load_index(), dict(os.environ)))
-    except LaunchError as exc:
-        print(f"error: {exc}")
-        return exc.exit_code
+    os.environ.update(hooked_environment(load_index(), dict(os.environ)))  # errors: reported
     from launcher.nodes.sim import main
 
     return main(argv)

@@ -7,7 +7,7 @@ The same names work as parameters (`--ros-args -p name:=robot -p topic:=robot_de
 `-topic` waits for a latched std_msgs/String (robot_state_publisher's robot_description);
 `-param P` reads this node's own parameter P. Without `-world`, the one sim on the bus is
 used. It waits up to `-timeout` (30 s) for the sim's create service; exit 0 on success, 1 with
-the sim's reason.
+the sim's reason, 2 on bad arguments.
 """
 
 from __future__ import annotations
@@ -17,6 +17,8 @@ import sys
 import time
 from typing import Any
 
+from launcher.errors import LaunchError, UsageError, reported
+
 FLAGS = {"-world": "world", "-file": "file", "-string": "string", "-param": "param",
          "-topic": "topic", "-name": "name", "-entity": "name", "-allow_renaming":
          "allow_renaming", "-x": "x", "-y": "y", "-z": "z", "-R": "R", "-P": "P", "-Y": "Y",
@@ -25,8 +27,8 @@ NUMBERS = ("x", "y", "z", "R", "P", "Y", "timeout")
 SOURCES = ("file", "string", "param", "topic")
 
 
-class UsageError(Exception):
-    pass
+class SimNotFound(LaunchError):
+    """No sim answered in time (a runtime error: exit 1)."""
 
 
 def parse(argv: list[str], parameters: dict[str, Any]) -> dict[str, Any]:
@@ -90,8 +92,8 @@ def find_world(node: Any, deadline: float, timeout: float, service: str = "creat
             raise UsageError(f"several sims are running ({', '.join(worlds)}): choose one with "
                              f"{option}")
         if time.monotonic() > deadline:
-            raise TimeoutError(f"no sim answered: no /world/<name>/{service} service appeared "
-                               f"within {timeout:g} s")
+            raise SimNotFound(f"no sim answered: no /world/<name>/{service} service appeared "
+                              f"within {timeout:g} s")
         time.sleep(0.1)
 
 
@@ -115,9 +117,9 @@ def description(node: Any, options: dict[str, Any], deadline: float) -> tuple[st
                              lambda message: received.append(message.data), LATCHED)
     while not received:
         if time.monotonic() > deadline:
-            raise TimeoutError(f"nothing arrived on '{node.resolve(options['topic'])}' "
-                               "(a latched std_msgs/String, as robot_state_publisher's) "
-                               f"within {options.get('timeout', 30.0):g} s")
+            raise SimNotFound(f"nothing arrived on '{node.resolve(options['topic'])}' "
+                              "(a latched std_msgs/String, as robot_state_publisher's) "
+                              f"within {options.get('timeout', 30.0):g} s")
         node.spin_once(0.1)
     return received[-1], ""
 
@@ -128,13 +130,9 @@ def run(argv: list[str]) -> int:
     node = Node("create", argv=argv)
     try:
         return spawn(node)
-    except UsageError as exc:
-        print(f"[create] error: {exc}", file=sys.stderr, flush=True)
-        return 2
-    except TimeoutError as exc:
-        print(f"[create] error: {exc}; is the sim running? (-timeout sets the wait)",
-              file=sys.stderr, flush=True)
-        return 1
+    except SimNotFound as exc:
+        raise SimNotFound(f"{exc.message}; is the sim running? (-timeout sets the wait)") \
+            from None
     finally:
         node.destroy_node()
 
@@ -149,8 +147,8 @@ def spawn(node: Any) -> int:
     text, file = description(node, options, deadline)
     client = node.create_client("mujoco_sim/srv/Create", f"/world/{world}/create")
     if not client.wait_for_service(max(0.0, deadline - time.monotonic())):
-        raise TimeoutError(f"the sim's /world/{world}/create service did not answer within "
-                           f"{timeout:g} s")
+        raise SimNotFound(f"the sim's /world/{world}/create service did not answer within "
+                          f"{timeout:g} s")
     position, quat = pose_from([options.get(k, 0.0) for k in ("x", "y", "z", "R", "P", "Y")])
     request = node.message("mujoco_sim/srv/Create_Request", name=options.get("name", ""),
                            allow_renaming=bool(options.get("allow_renaming", False)),
@@ -160,21 +158,13 @@ def spawn(node: Any) -> int:
     orientation.w, orientation.x, orientation.y, orientation.z = quat
     response = client.call(request, timeout=max(10.0, deadline - time.monotonic()))
     if not response.success:
-        print(f"[create] error: the sim refused: {response.message}", file=sys.stderr,
-              flush=True)
-        return 1
+        raise LaunchError(f"the sim refused: {response.message}")
     node.get_logger().info(f"spawned '{response.name}' into world '{world}'")
     return 0
 
 
 def main() -> int:
-    from launcher.errors import LaunchError
-
-    try:
-        return run(sys.argv[1:])
-    except LaunchError as exc:
-        print(f"[create] error: {exc}", file=sys.stderr, flush=True)
-        return 1
+    return reported(lambda: run(sys.argv[1:]), "create")
 
 
 if __name__ == "__main__":

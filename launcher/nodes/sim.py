@@ -16,6 +16,8 @@ from __future__ import annotations
 import argparse
 import sys
 
+from launcher.errors import UsageError, reported
+
 VERBOSITY = {0: 60, 1: 40, 2: 30, 3: 20, 4: 10}
 
 
@@ -57,13 +59,11 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
 
 
 def world_values(pairs: list[str]) -> dict[str, str]:
-    from launcher.errors import LaunchError
-
     values = {}
     for pair in pairs:
         name, sep, value = pair.partition("=")
         if not sep or not name:
-            raise LaunchError(f"--world-arg expects NAME=VALUE, got '{pair}'")
+            raise UsageError(f"--world-arg expects NAME=VALUE, got '{pair}'")
         values[name] = value
     return values
 
@@ -75,16 +75,10 @@ GUI_INSTEAD = ("launcher has no Gazebo GUI: watch the world with `launcher sim s
 
 def main(argv: list[str] | None = None) -> int:
     args, ros = parse(sys.argv[1:] if argv is None else argv)
-    from launcher.errors import LaunchError
-
     if args.gui:  # `gz sim -g` is the GUI alone: there is no server to run
         print(f"[sim] {GUI_INSTEAD}", file=sys.stderr, flush=True)
         return 0
-    try:
-        return run(args, ros)
-    except LaunchError as exc:
-        print(f"[sim] error: {exc}", file=sys.stderr, flush=True)
-        return 1
+    return reported(lambda: run(args, ros), "sim")
 
 
 def run(args: argparse.Namespace, ros: list[str]) -> int:

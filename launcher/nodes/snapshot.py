@@ -10,12 +10,11 @@ with the reason otherwise.
 from __future__ import annotations
 
 import argparse
-import sys
 import time
 from pathlib import Path
 
-from launcher.errors import LaunchError
-from launcher.nodes.create import UsageError, find_world
+from launcher.errors import LaunchError, UsageError, reported
+from launcher.nodes.create import SimNotFound, find_world
 
 SERVICE_TYPE = "mujoco_sim/srv/Snapshot"
 MAX_SIDE = 4096  # as the sim allows
@@ -55,7 +54,7 @@ def take(argv: list[str]) -> int:
         try:
             world = args.world or find_world(node, deadline, args.timeout, "snapshot",
                                              SERVICE_TYPE, "--world")
-        except (UsageError, TimeoutError) as exc:
+        except (UsageError, SimNotFound) as exc:
             raise LaunchError(f"{exc}; is the sim running?") from None
         client = node.create_client(SERVICE_TYPE, f"/world/{world}/snapshot")
         if not client.wait_for_service(max(0.0, deadline - time.monotonic())):
@@ -75,8 +74,4 @@ def take(argv: list[str]) -> int:
 
 
 def main(argv: list[str]) -> int:
-    try:
-        return take(argv)
-    except LaunchError as exc:
-        print(f"error: {exc}", file=sys.stderr, flush=True)
-        return 1
+    return reported(lambda: take(argv))

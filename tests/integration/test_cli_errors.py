@@ -93,7 +93,7 @@ def test_required_argument_missing_on_the_command_line(ws):
 def test_malformed_assignment_on_the_command_line(ws):
     ws.write("ok.launch.yaml", "launch: []\n")
     result = ws.run("launch", "ok.launch.yaml", "world_name=arena.xml")
-    assert result.returncode == 1
+    assert result.returncode == 2  # a usage error, as argparse's own
     assert "malformed launch argument 'world_name=arena.xml': expected name:=value" in \
         result.stderr
 

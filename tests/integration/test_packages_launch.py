@@ -258,6 +258,6 @@ def test_pkg_create_makes_a_working_package(workspace):
     assert result.returncode == 0, result.stdout + result.stderr
     assert "my_bot_node started with ['--ros-args', '-r', '__node:=my_bot'" in result.stdout
     again = workspace.run("pkg", "create", "my_bot", "--destination-directory", "src")
-    assert again.returncode == 1 and "already exists" in again.stderr
+    assert again.returncode == 2 and "already exists" in again.stderr
     bad = workspace.run("pkg", "create", "My-Bot")
-    assert bad.returncode == 1 and "invalid package name 'My-Bot'" in bad.stderr
+    assert bad.returncode == 2 and "invalid package name 'My-Bot'" in bad.stderr

@@ -11,8 +11,7 @@ not lost to discovery.
 
 from __future__ import annotations
 
-from launcher.errors import did_you_mean
-from launcher.nodes.gz.common import GzUsage
+from launcher.errors import UsageError, did_you_mean
 from launcher.nodes.gz.model import model
 from launcher.nodes.gz.service import service
 from launcher.nodes.gz.topic import topic
@@ -41,7 +40,7 @@ def main(argv: list[str]) -> int:
         return sim(rest)
     commands = {"topic": topic, "service": service, "model": model}
     if verb not in commands:
-        raise GzUsage(f"gz: unknown command '{verb}'{did_you_mean(verb, list(VERBS))}; "
+        raise UsageError(f"gz: unknown command '{verb}'{did_you_mean(verb, list(VERBS))}; "
                       f"commands: {', '.join(VERBS)}")
     return commands[verb](rest)
 

@@ -1,5 +1,5 @@
 """What the `gz` verbs share: usage errors (exit 2, with "did you mean"), Gazebo's type
-names, texts in Protocol Buffers' text format, and name listings."""
+names, and name listings."""
 
 from __future__ import annotations
 
@@ -8,12 +8,7 @@ from typing import Any, NoReturn
 
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError, did_you_mean
-from launcher.nodes import prototext
 from launcher.nodes.conversions import SIM_MESSAGES, _short, sim_type
-
-
-class GzUsage(UsageError):
-    exit_code = 2
 
 
 class Parser(argparse.ArgumentParser):
@@ -25,7 +20,7 @@ class Parser(argparse.ArgumentParser):
             flags = [s for a in self._actions for s in a.option_strings]
             words = message.split(": ", 1)[1].split()
             hint = "".join(did_you_mean(w, flags) for w in words if w.startswith("-"))
-        raise GzUsage(f"{self.prog}: {message}{hint} (see `{self.prog} -h`)")
+        raise UsageError(f"{self.prog}: {message}{hint} (see `{self.prog} -h`)")
 
 
 def gz_name(type_name: str) -> str:
@@ -45,22 +40,15 @@ def print_names(collect: Any) -> int:
     return 0
 
 
-def parse_text(text: str, what: str) -> dict[str, Any]:
-    try:
-        return prototext.parse(text, what)
-    except prototext.TextFormatError as exc:
-        raise GzUsage(exc.message) from None
-
-
 def message_type(gz_type: str) -> tuple[str, str]:
     """(the sim's type, Gazebo's short name) for `gz.msgs.NAME`."""
     short = _short(gz_type)
     if not short:
-        raise GzUsage(f"unknown message type '{gz_type}': expected gz.msgs.NAME"
-                      f"{did_you_mean(gz_type, [f'gz.msgs.{m}' for m in SIM_MESSAGES])}")
+        raise UsageError(f"unknown message type '{gz_type}': expected gz.msgs.NAME"
+                         f"{did_you_mean(gz_type, [f'gz.msgs.{m}' for m in SIM_MESSAGES])}")
     try:
         return sim_type(gz_type), short
     except LaunchError as exc:
-        raise GzUsage(exc.message) from None
+        raise UsageError(exc.message) from None
 
 

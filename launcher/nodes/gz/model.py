@@ -8,7 +8,7 @@ import time
 from launcher.bus.node import Node
 from launcher.errors import LaunchError, UsageError, did_you_mean
 from launcher.nodes.conversions import SIM
-from launcher.nodes.create import find_world
+from launcher.nodes.create import SimNotFound, find_world
 from launcher.nodes.gz.common import Parser
 
 STATE_TYPE = f"{SIM}/srv/State"
@@ -29,7 +29,7 @@ def model(argv: list[str]) -> int:
         deadline = time.monotonic() + args.timeout
         try:
             world = find_world(node, deadline, args.timeout, "state", STATE_TYPE, "--world")
-        except (UsageError, TimeoutError) as exc:
+        except (UsageError, SimNotFound) as exc:
             raise LaunchError(f"{exc}; is the sim running?") from None
         client = node.create_client(STATE_TYPE, f"/world/{world}/state")
         client.wait_for_service(max(0.5, deadline - time.monotonic()))

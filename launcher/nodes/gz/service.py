@@ -9,10 +9,10 @@ from launcher.bus import graph, keys
 from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
 from launcher.bus.session import open_session
-from launcher.errors import LaunchError
+from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.conversions import SIM, _short, sim_type
-from launcher.nodes.gz.common import GzUsage, Parser, parse_text, print_names
+from launcher.nodes.gz.common import Parser, print_names
 
 
 def service(argv: list[str]) -> int:
@@ -64,16 +64,16 @@ def _call(name: str, reqtype: str, reptype: str, text: str, timeout: float) -> i
     try:
         service_type = sim_type(f"{reqtype}|{reptype}")
     except LaunchError as exc:
-        raise GzUsage(exc.message) from None
+        raise UsageError(exc.message) from None
     request_short = _short(reqtype)
-    data = gz_msgs.to_sim(request_short, parse_text(text, "--req"))
+    data = gz_msgs.to_sim(request_short, prototext.parse(text, "--req"))
     node = Node("_launcher_gz_service", argv=[], parameter_services=False)
     try:
         client = node.create_client(service_type, name)
         try:
             request = build(client.request_type, data)
         except MessageError as exc:
-            raise GzUsage(f"--req: '{text}' does not fit {reqtype}: "
+            raise UsageError(f"--req: '{text}' does not fit {reqtype}: "
                           f"{exc.message.replace(client.request_type, reqtype)}") from None
         if not client.wait_for_service(max(timeout, 0.5)):
             raise LaunchError(f"service [{name}] ({reqtype} -> {reptype}) is not offered "

@@ -15,10 +15,10 @@ from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
-from launcher.errors import LaunchError
+from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.conversions import SIM
-from launcher.nodes.gz.common import GzUsage, Parser, gz_name, message_type, parse_text, print_names
+from launcher.nodes.gz.common import Parser, gz_name, message_type, print_names
 
 
 def topic(argv: list[str]) -> int:
@@ -120,12 +120,12 @@ def _echo(name: str, count: int | None, duration: float | None, as_json: bool) -
 def parse_message(gz_type: str, text: str, what: str) -> Any:
     """A sim message from Gazebo's text format for `gz_type`; fields are checked."""
     type_name, short = message_type(gz_type)
-    data = gz_msgs.to_sim(short, parse_text(text, what))
+    data = gz_msgs.to_sim(short, prototext.parse(text, what))
     try:
         return build(type_name, data)
     except MessageError as exc:
         message = exc.message.replace(type_name, gz_type)
-        raise GzUsage(f"{what}: '{text}' does not fit {gz_type}: {message}") from None
+        raise UsageError(f"{what}: '{text}' does not fit {gz_type}: {message}") from None
 
 
 def _publish(name: str, gz_type: str, text: str) -> int:
