@@ -50,7 +50,8 @@ def unpaced(robots: int, steps: int) -> tuple[float, float]:
     from launcher.sim import mjcf
     from launcher.sim.resources import find_world
     from launcher.sim.server import SimServer
-    from launcher.sim.world import World, pose_from
+    from launcher.sim.transform import pose_from
+    from launcher.sim.world import World
 
     path = find_world("empty.xml")
     source = mjcf.read(path.read_text(), path)

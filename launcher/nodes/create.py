@@ -138,7 +138,7 @@ def run(argv: list[str]) -> int:
 
 
 def spawn(node: Any) -> int:
-    from launcher.sim.world import pose_from
+    from launcher.sim.transform import pose_from  # no MuJoCo, no numpy
 
     options = parse(node.args, node.parameters)
     timeout = float(options.get("timeout", 30.0))

@@ -22,6 +22,8 @@ import time
 from collections.abc import Sequence
 from typing import Any
 
+import mujoco
+
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
@@ -46,6 +48,11 @@ def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
 
 def _nanoseconds(fraction: float) -> int:
     return min(int(round(fraction * 1e9)), 999_999_999)
+
+
+def route_mujoco_warnings(logger: Any) -> None:
+    """MuJoCo's own warnings to the log, not to a MUJOCO_LOG.TXT in the working folder."""
+    mujoco.set_mju_user_warning(lambda text: logger.warning(f"MuJoCo: {text}"))
 
 
 class Transport:
@@ -95,6 +102,7 @@ class SimServer:
                  state_rate: float = 50.0) -> None:
         self.world, self.node, self.transport = world, node, world.transport
         self.log = node.get_logger()
+        route_mujoco_warnings(self.log)
         self.paused = not running
         self.stopped = False
         self.pacer = Pacer(world.model.opt.timestep, rtf)

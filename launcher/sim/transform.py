@@ -1,4 +1,5 @@
-"""Rigid poses and the maths to chain them, for world loading and moving entities.
+"""Rigid poses and the maths to chain them, for world loading, spawning and moving entities
+(no MuJoCo or numpy here: `create` uses it for its pose maths).
 
 Quaternions are MuJoCo's order (w, x, y, z). Pure Python: a world has few poses, and loading
 must not pay numpy's per-call overhead on each of them.
@@ -7,10 +8,17 @@ must not pay numpy's per-call overhead on each of them.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from typing import NamedTuple
+
+from launcher.errors import LaunchError
 
 Vector = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
+
+
+class PoseError(LaunchError):
+    """A pose that cannot place anything (not finite, a zero quaternion)."""
 
 
 class Pose(NamedTuple):  # a tuple: made many times while loading a world
@@ -61,3 +69,17 @@ def _qmul(a: Quat, b: Quat) -> Quat:
 
 def _add(a: Vector, b: Vector) -> Vector:
     return a[0] + b[0], a[1] + b[1], a[2] + b[2]
+
+
+def pose_from(values: Sequence[float]) -> tuple[list[float], list[float]]:
+    """(x, y, z, roll, pitch, yaw) → position and MuJoCo quaternion (w, x, y, z)."""
+    pose = from_rpy(*values)
+    return list(pose.pos), list(pose.quat)
+
+
+def check_pose(position: Iterable[float], quat: Iterable[float]) -> None:
+    values = [*position, *quat]
+    if not all(math.isfinite(v) for v in values):
+        raise PoseError(f"the pose must be finite, got {values}")
+    if sum(q * q for q in quat) < 1e-12:
+        raise PoseError("the pose's orientation quaternion is zero")

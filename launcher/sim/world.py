@@ -20,7 +20,7 @@ from __future__ import annotations
 import contextlib
 import math
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -36,10 +36,11 @@ from launcher.sim.plugins import (
     find_class,
     is_infrastructure,
 )
-from launcher.sim.transform import IDENTITY, Pose
+from launcher.sim.transform import IDENTITY, Pose, PoseError, check_pose, pose_from
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
-            mujoco.mjtWarning.mjWARN_BADQACC)  # indices 3, 4, 5, read directly in step()
+            mujoco.mjtWarning.mjWARN_BADQACC)
+_QPOS, _QVEL, _QACC = (int(kind) for kind in UNSTABLE)  # indices into data.warning
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 
@@ -73,25 +74,6 @@ class WorldModel:
     plugins: list[PluginConfig] = field(default_factory=list)
 
 
-def pose_from(values: Sequence[float]) -> tuple[list[float], list[float]]:
-    """(x, y, z, roll, pitch, yaw) → position and MuJoCo quaternion (w, x, y, z)."""
-    x, y, z, roll, pitch, yaw = values
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    quat = [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
-            cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy]
-    return [x, y, z], quat
-
-
-def check_pose(position: Iterable[float], quat: Iterable[float]) -> None:
-    values = [*position, *quat]
-    if not all(math.isfinite(v) for v in values):
-        raise SpawnError(f"the pose must be finite, got {values}")
-    if sum(q * q for q in quat) < 1e-12:
-        raise SpawnError("the pose's orientation quaternion is zero")
-
-
 class World:
     def __init__(self, spec: mujoco.MjSpec, label: str, transport: Any,
                  plugins: Sequence[PluginConfig] = (),
@@ -99,8 +81,6 @@ class World:
                  models: Sequence[WorldModel] | None = None) -> None:
         """`models`: the world file's models (SDF); None takes MJCF's top-level bodies."""
         self.spec, self.label, self.transport = spec, label, transport
-        # MuJoCo's own warnings go to the log, not to a MUJOCO_LOG.TXT in the working folder.
-        mujoco.set_mju_user_warning(lambda text: transport.logger.warning(f"MuJoCo: {text}"))
         self.world_name = spec.modelname or "default"
         self.descriptions = descriptions or Descriptions()
         self.entities: dict[str, Entity] = {}
@@ -215,7 +195,8 @@ class World:
         mujoco.mj_step(model, data, nstep=count)
         self.iterations += count
         warnings = data.warning  # MuJoCo counts bad qpos/qvel/qacc, then resets the state
-        if warnings[3].number + warnings[4].number + warnings[5].number != self._unstable_total:
+        if warnings[_QPOS].number + warnings[_QVEL].number + warnings[_QACC].number != \
+                self._unstable_total:
             self._check_unstable()
         now = data.time + 1e-9
         for plugin in self._all:
@@ -266,7 +247,7 @@ class World:
 
     def spawn(self, template: Template, name: str, position: Sequence[float],
               quat: Sequence[float], allow_renaming: bool = False) -> Entity:
-        check_pose(position, quat)
+        _checked(position, quat)
         name = self.unique_name(name or template.name, allow_renaming)
         for warning in template.warnings:
             if warning not in self._warned:
@@ -338,7 +319,7 @@ class World:
     def set_pose(self, name: str, position: Sequence[float], quat: Sequence[float]) -> None:
         """Put the entity's model frame at `position`/`quat` (w, x, y, z), at rest."""
         entity = self.entity(name)
-        check_pose(position, quat)
+        _checked(position, quat)
         norm = math.sqrt(sum(q * q for q in quat))
         target = Pose(tuple(position), tuple(q / norm for q in quat)) * entity.offset
         move = target * self._body_pose(entity.body).inverse()
@@ -431,6 +412,13 @@ class World:
             dof = self.entities[name].dof
             found.append(self.data.qvel[dof:dof + 6].tolist() if dof >= 0 else [0.0] * 6)
         return found
+
+
+def _checked(position: Sequence[float], quat: Sequence[float]) -> None:
+    try:
+        check_pose(position, quat)
+    except PoseError as exc:
+        raise SpawnError(exc.message) from None
 
 
 def _top_level_models(spec: mujoco.MjSpec) -> list[WorldModel]:

@@ -14,7 +14,8 @@ from launcher.sim import mjcf
 from launcher.sim.descriptions import Descriptions
 from launcher.sim.pacing import Pacer
 from launcher.sim.resources import find_world, resolve_uri
-from launcher.sim.world import SpawnError, World, pose_from
+from launcher.sim.transform import pose_from
+from launcher.sim.world import SpawnError, World
 
 DATA = Path(__file__).resolve().parent.parent / "data"
 ROBOT = DATA / "diffbot.urdf"
@@ -462,7 +463,10 @@ def test_resets_all_time_only_and_poses_only(world):
 
 def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(
         world, tmp_path, monkeypatch):
+    from launcher.sim.server import route_mujoco_warnings
+
     monkeypatch.chdir(tmp_path)
+    route_mujoco_warnings(world.transport.logger)  # as the server sets up
     spawn_bot(world, "wild")
     entity = world.entities["wild"]
     world.data.qvel[entity.dof + 6] = 1e30  # the left wheel

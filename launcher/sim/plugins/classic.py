@@ -99,8 +99,8 @@ class ClassicDiffDrive(DiffDrive):
         pose = t.pose(self.x, self.y, 0.0, _yaw_quat(self.theta))
         if odom_wanted:
             twist = t.message("geometry_msgs/msg/Twist",
-                              linear=t.vector(getattr(self, "linear", 0.0), 0.0, 0.0),
-                              angular=t.vector(0.0, 0.0, getattr(self, "angular", 0.0)))
+                              linear=t.vector(self.linear, 0.0, 0.0),
+                              angular=t.vector(0.0, 0.0, self.angular))
             self.odom_pub.publish(t.message(
                 "nav_msgs/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
                 pose=t.message("geometry_msgs/msg/PoseWithCovariance", pose=pose),

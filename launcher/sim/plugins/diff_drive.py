@@ -100,6 +100,8 @@ class DiffDrive(Plugin):
         self.next_odom = self.next_update = 0.0
         self.last_odom_time: float | None = None
         self.previous: tuple[float, float] | None = None
+        self.linear = self.angular = 0.0  # measured speeds, from the wheels
+        self._control_time: float | None = None
         self._warned_nan = False
 
     # --- commands --------------------------------------------------------------------------
@@ -123,7 +125,7 @@ class DiffDrive(Plugin):
         """Move the current command toward the target within the acceleration limits."""
         if self.timeout > 0 and now - self.last_command > self.timeout:
             self.target = (0.0, 0.0)
-        dt = max(now - getattr(self, "_control_time", now), 0.0)
+        dt = max(now - self._control_time, 0.0) if self._control_time is not None else 0.0
         self._control_time = now
         if (self.v, self.w) == self.target:
             return  # the wheels already have this command
@@ -192,8 +194,8 @@ class DiffDrive(Plugin):
             "mujoco_sim/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
             pose=pose, twist=transport.message(
                 "geometry_msgs/msg/Twist",
-                linear=transport.vector(getattr(self, "linear", 0.0), 0.0, 0.0),
-                angular=transport.vector(0.0, 0.0, getattr(self, "angular", 0.0))))
+                linear=transport.vector(self.linear, 0.0, 0.0),
+                angular=transport.vector(0.0, 0.0, self.angular)))
         if odom_wanted:
             self.odom_pub.publish(odom)
         if tf_wanted:
