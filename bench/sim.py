@@ -58,7 +58,7 @@ def unpaced(robots: int, steps: int) -> tuple[float, float]:
     node = Node(f"bench_sim_{robots}", argv=[])
     world = World(mjcf.compile_spec(source), str(path), quiet_transport(node), source.plugins)
     server = SimServer(world, node, rtf=0.0, running=True)
-    template = world.descriptions.from_file(str(ROBOT))
+    template = world.templates.from_file(str(ROBOT))
     for i in range(robots):
         position, quat = pose_from([0.0, i * 1.0, 0.06, 0, 0, 0])
         world.spawn(template, f"r{i}", position, quat)

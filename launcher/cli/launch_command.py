@@ -77,13 +77,13 @@ def run(args: argparse.Namespace) -> int:
     configurations = parse_assignments(args.arguments)
     description = load_file(path)
     if args.show_args or args.print:
-        from launcher.cli import inspect  # only for these views: start-up time
+        from launcher.cli import views  # only for these views: start-up time
 
     if args.show_args:
-        print(inspect.show_arguments(description, configurations, index), end="")
+        print(views.show_arguments(description, configurations, index), end="")
         return 0
     if args.print:
-        print(inspect.print_tree(description, configurations, index), end="")
+        print(views.print_tree(description, configurations, index), end="")
         return 0
     check_required(description.actions, configurations)
     environment = hooked_environment(index, default_environment())

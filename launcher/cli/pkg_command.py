@@ -60,7 +60,7 @@ def run_executables(args: argparse.Namespace) -> int:
 
 
 def run_create(args: argparse.Namespace) -> int:
-    from launcher.packages.create import create_package  # jinja2: only here (start-up time)
+    from launcher.packages.scaffold import create_package  # jinja2: only here (start-up time)
 
     folder = create_package(args.name, args.destination_directory, args.dependencies,
                             args.description)

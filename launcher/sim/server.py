@@ -193,11 +193,11 @@ class SimServer:
 
     def on_create(self, request: Any, response: Any) -> Any:
         try:
-            descriptions = self.world.descriptions
+            templates = self.world.templates
             if request.sdf.strip():
-                template = descriptions.from_string(request.sdf, f"entity '{request.name}'")
+                template = templates.from_string(request.sdf, f"entity '{request.name}'")
             elif request.sdf_filename.strip():
-                template = descriptions.from_file(request.sdf_filename.strip())
+                template = templates.from_file(request.sdf_filename.strip())
             else:
                 raise LaunchError("nothing to spawn: give the description (sdf) or a file "
                                   "(sdf_filename)")

@@ -27,7 +27,6 @@ from typing import Any
 import mujoco
 
 from launcher.errors import LaunchError, did_you_mean
-from launcher.sim.descriptions import Descriptions, Template
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.plugins import (
     Plugin,
@@ -36,6 +35,7 @@ from launcher.sim.plugins import (
     find_class,
     is_infrastructure,
 )
+from launcher.sim.templates import Template, Templates
 from launcher.sim.transform import IDENTITY, Pose, PoseError, check_pose, pose_from
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
@@ -77,12 +77,12 @@ class WorldModel:
 class World:
     def __init__(self, spec: mujoco.MjSpec, label: str, transport: Any,
                  plugins: Sequence[PluginConfig] = (),
-                 descriptions: Descriptions | None = None,
+                 templates: Templates | None = None,
                  models: Sequence[WorldModel] | None = None) -> None:
         """`models`: the world file's models (SDF); None takes MJCF's top-level bodies."""
         self.spec, self.label, self.transport = spec, label, transport
         self.world_name = spec.modelname or "default"
-        self.descriptions = descriptions or Descriptions()
+        self.templates = templates or Templates()
         self.entities: dict[str, Entity] = {}
         self.iterations = 0
         self.plugins: list[Plugin] = []  # world plugins
@@ -296,7 +296,7 @@ class World:
                    allow_renaming: bool = False) -> Entity:
         """Spawn from a file or `model://`/`package://` URI at (x, y, z, roll, pitch, yaw)."""
         position, quat = pose_from(list(pose))
-        return self.spawn(self.descriptions.from_file(uri), name, position, quat,
+        return self.spawn(self.templates.from_file(uri), name, position, quat,
                           allow_renaming)
 
     def remove(self, name: str) -> None:

@@ -14,9 +14,9 @@ import pytest
 
 from launcher.errors import LaunchError
 from launcher.sim import sdf
-from launcher.sim.descriptions import Descriptions
 from launcher.sim.loading import load_world_file
 from launcher.sim.resources import model_file
+from launcher.sim.templates import Templates
 from launcher.sim.world import World
 from tests.conftest import REPO
 from tests.unit.test_sim import Recorder
@@ -258,7 +258,7 @@ def test_includes_by_model_uri_with_name_pose_and_plugins(tmp_path):
 
 def test_the_courses_box_model_spawns_from_model_config(tmp_path):
     models = REPO / "packages" / "robot_gazebo" / "models"
-    descriptions = Descriptions(environ={"GZ_SIM_RESOURCE_PATH": str(models)})
+    descriptions = Templates(environ={"GZ_SIM_RESOURCE_PATH": str(models)})
     template = descriptions.from_file("model://box_model")
     assert template.name == "box_model" and template.pose.pos == (0, 0, 0.5)
     recorder = Recorder()
@@ -377,7 +377,7 @@ def test_classic_gazebo_ros_diff_drive_speaks_ros_types(params, cmd_topic, odom_
                              "empty.sdf")
     recorder = Recorder()
     world = World(loaded.spec, loaded.label, recorder, loaded.plugins, models=loaded.models)
-    world.spawn(Descriptions().from_string(text), "bot", [0, 0, 0], [1, 0, 0, 0])
+    world.spawn(Templates().from_string(text), "bot", [0, 0, 0], [1, 0, 0, 0])
     for _ in range(20):
         recorder.callbacks[cmd_topic](SimpleNamespace(linear=SimpleNamespace(x=0.4),
                                                       angular=SimpleNamespace(z=0.0)))
@@ -499,7 +499,7 @@ def test_classic_joint_state_publisher_publishes_sensor_msgs_joint_states():
                              "empty.sdf")
     recorder = Recorder()
     world = World(loaded.spec, loaded.label, recorder, loaded.plugins, models=loaded.models)
-    world.spawn(Descriptions().from_string(text), "bot", [0, 0, 0], [1, 0, 0, 0])
+    world.spawn(Templates().from_string(text), "bot", [0, 0, 0], [1, 0, 0, 0])
     run(world, 50)
     states = recorder.published["/bot/joint_states"]
     assert states and states[-1].name == ["left_wheel_joint"]
@@ -535,7 +535,7 @@ def test_worlds_and_models_are_found_on_every_gazebo_variable(tmp_path):
 
 
 def test_a_model_sdf_file_spawns_by_path_too():
-    template = Descriptions().from_file(str(REPO / "packages" / "robot_gazebo" / "models" /
+    template = Templates().from_file(str(REPO / "packages" / "robot_gazebo" / "models" /
                                             "box_model" / "model.sdf"))
     assert template.name == "box_model" and template.root == "link" and not template.static
 
@@ -543,7 +543,7 @@ def test_a_model_sdf_file_spawns_by_path_too():
 def test_a_create_without_a_pose_puts_an_sdf_model_at_its_own_pose():
     from launcher.sim.server import spawn_pose
 
-    template = Descriptions(environ={"GZ_SIM_RESOURCE_PATH": str(
+    template = Templates(environ={"GZ_SIM_RESOURCE_PATH": str(
         REPO / "packages" / "robot_gazebo" / "models")}).from_file("model://box_model")
 
     def pose(x=0.0, w=0.0):

@@ -11,9 +11,9 @@ import pytest
 
 from launcher.errors import LaunchError
 from launcher.sim import mjcf
-from launcher.sim.descriptions import Descriptions
 from launcher.sim.pacing import Pacer
 from launcher.sim.resources import find_world, resolve_uri
+from launcher.sim.templates import Templates
 from launcher.sim.transform import pose_from
 from launcher.sim.world import SpawnError, World
 
@@ -90,7 +90,7 @@ def world():
 
 def spawn_bot(world, name="bot", x=0.0, y=0.0, yaw=0.0, allow_renaming=False):
     position, quat = pose_from([x, y, 0.06, 0, 0, yaw])
-    return world.spawn(world.descriptions.from_file(str(ROBOT)), name, position, quat,
+    return world.spawn(world.templates.from_file(str(ROBOT)), name, position, quat,
                        allow_renaming)
 
 
@@ -174,7 +174,7 @@ def test_a_urdf_keeps_fixed_links_and_visuals_and_gets_a_free_joint(world):
 ])
 def test_invalid_urdf_is_a_clear_error(text, expected):
     with pytest.raises(LaunchError) as error:
-        Descriptions().from_string(text, "robot.urdf")
+        Templates().from_string(text, "robot.urdf")
     assert "robot.urdf" in str(error.value) and expected in str(error.value)
 
 
@@ -183,7 +183,7 @@ def test_a_missing_mesh_names_the_uri_and_where_it_looked(tmp_path):
             "<mesh filename='meshes/gone.stl'/></geometry></visual></link></robot>")
     (tmp_path / "r.urdf").write_text(text)
     with pytest.raises(LaunchError) as error:
-        Descriptions().from_file(str(tmp_path / "r.urdf"))
+        Templates().from_file(str(tmp_path / "r.urdf"))
     assert "'meshes/gone.stl' not found" in str(error.value)
     assert str(tmp_path / "meshes" / "gone.stl") in str(error.value)
 
@@ -196,11 +196,11 @@ def test_mesh_uris_resolve_and_templates_are_cached(tmp_path):
             "iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/></inertial><visual><geometry>"
             "<mesh filename='meshes/cube.obj'/></geometry></visual></link></robot>")
     (tmp_path / "r.urdf").write_text(text)
-    descriptions = Descriptions()
+    descriptions = Templates()
     first = descriptions.from_file(str(tmp_path / "r.urdf"))
     assert descriptions.from_file(str(tmp_path / "r.urdf")) is first
     world = make_world()
-    world.descriptions = descriptions
+    world.templates = descriptions
     world.spawn_file(str(tmp_path / "r.urdf"), "one", (0, 0, 1, 0, 0, 0))
     world.spawn_file(str(tmp_path / "r.urdf"), "two", (2, 0, 1, 0, 0, 0))
     assert world.model.nmesh >= 1
@@ -244,7 +244,7 @@ def test_a_duplicate_name_is_refused_or_renamed_and_a_failed_spawn_changes_nothi
         spawn_bot(world, "bot")
     assert "already exists" in str(error.value)
     with pytest.raises(LaunchError):
-        world.spawn(world.descriptions.from_string("<robot name='r'><link name='a'>"
+        world.spawn(world.templates.from_string("<robot name='r'><link name='a'>"
                                                    "<visual><geometry><box size='-1 1 1'/>"
                                                    "</geometry></visual></link></robot>"),
                     "broken", [0, 0, 1], IDENTITY)
@@ -257,7 +257,7 @@ def test_a_duplicate_name_is_refused_or_renamed_and_a_failed_spawn_changes_nothi
 @pytest.mark.parametrize("pose", [[math.nan, 0, 0], [0, math.inf, 0]])
 def test_a_nan_or_infinite_pose_is_refused(world, pose):
     with pytest.raises(SpawnError) as error:
-        world.spawn(world.descriptions.from_file(str(ROBOT)), "bot", pose, IDENTITY)
+        world.spawn(world.templates.from_file(str(ROBOT)), "bot", pose, IDENTITY)
     assert "finite" in str(error.value)
     assert not world.entities
 
@@ -369,7 +369,7 @@ ARM = """<robot name="arm">
 
 
 def test_a_position_controller_moves_an_arm_joint_and_an_unknown_plugin_is_logged(world):
-    world.spawn(world.descriptions.from_string(ARM), "arm", [0, 0, 0.5], IDENTITY)
+    world.spawn(world.templates.from_string(ARM), "arm", [0, 0, 0.5], IDENTITY)
     errors = world.transport.messages("error")
     assert any("unknown plugin 'no-such-system'" in m for m in errors)
     world.transport.callbacks["/model/arm/joint/shoulder/0/cmd_pos"](SimpleNamespace(data=1.2))
@@ -388,7 +388,7 @@ WHEEL = """<robot name="spinner">
 
 
 def test_the_mujoco_tag_form_and_a_velocity_controller(world):
-    world.spawn(world.descriptions.from_string(WHEEL), "spinner", [0, 0, 0.5], IDENTITY)
+    world.spawn(world.templates.from_string(WHEEL), "spinner", [0, 0, 0.5], IDENTITY)
     world.transport.callbacks["/model/spinner/spin_speed"](SimpleNamespace(data=3.0))
     world.step(2000)
     speed = world.data.qvel[world.model.joint("spinner/spin").dofadr[0]]
@@ -498,7 +498,7 @@ def test_the_warning_indices_the_step_loop_reads():
 
 
 def test_the_world_state_plugin_and_mjcf_robots(world):
-    world.spawn(world.descriptions.from_string(
+    world.spawn(world.templates.from_string(
         '<mujoco model="ball"><worldbody><body name="b"><geom size=".1"/></body></worldbody>'
         "</mujoco>"), "ball", [0, 0, 1], IDENTITY)
     assert world.entities["ball"].qpos >= 0  # it got a free joint and falls

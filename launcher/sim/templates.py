@@ -37,7 +37,9 @@ class Template:
     warnings: list[str] = field(default_factory=list)
 
 
-class Descriptions:
+class Templates:
+    """Templates of descriptions, each parsed once (cached by text, or by path and mtime)."""
+
     def __init__(self, packages: object | None = None,
                  environ: Mapping[str, str] | None = None) -> None:
         self._cache: dict[str, Template] = {}
