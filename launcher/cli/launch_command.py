@@ -72,26 +72,38 @@ def launch_path(args: argparse.Namespace, index: PackageIndex) -> Path:
 
 
 def run(args: argparse.Namespace) -> int:
+    """Read the file, show it if asked, else run it."""
     index = load_index()
-    path = launch_path(args, index)
+    description = load_file(launch_path(args, index))
     configurations = parse_assignments(args.arguments)
-    description = load_file(path)
     if args.show_args or args.print:
-        from launcher.cli import views  # only for these views: start-up time
+        return show(args, description, configurations, index)
+    return launch(args, description, configurations, index)
+
+
+def show(args: argparse.Namespace, description: LaunchDescription,
+         configurations: dict[str, str], index: PackageIndex) -> int:
+    """--show-args and --print: views of the description, nothing run."""
+    from launcher.cli import views  # only for these views: start-up time
 
     if args.show_args:
         print(views.show_arguments(description, configurations, index), end="")
-        return 0
-    if args.print:
+    else:
         print(views.print_tree(description, configurations, index), end="")
-        return 0
+    return 0
+
+
+def launch(args: argparse.Namespace, description: LaunchDescription,
+           configurations: dict[str, str], index: PackageIndex) -> int:
+    """Run the description with the bus's router, until it ends or is stopped."""
     check_required(description.actions, configurations)
-    environment = hooked_environment(index, default_environment())
-    if args.debug:  # the built-in nodes print tracebacks with their errors too
-        environment[DEBUG_VARIABLE] = "1"
-    compat.enable_for_children(environment)
-    tools_on_path(environment)
-    compat.commands_for_children(environment)
+    root: list = [description]
+    if args.duration is not None:
+        if args.duration < 0:
+            raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
+        root.append(TimerAction(period=args.duration, actions=[Shutdown(
+            reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
+    environment = children_environment(index, args.debug)
     router = bus_router(environment)
     run_file = discovery.write_run_file(environment[discovery.ROUTER_VARIABLE])
     service = LaunchService(daemons=[router],
@@ -101,16 +113,21 @@ def run(args: argparse.Namespace) -> int:
     )
     service.context.load_description = load_file
     service.context.packages = index
-    root: list = [description]
-    if args.duration is not None:
-        if args.duration < 0:
-            raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
-        root.append(TimerAction(period=args.duration, actions=[Shutdown(
-            reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
     try:
         return service.run(LaunchDescription(root))
     finally:
         run_file.unlink(missing_ok=True)
+
+
+def children_environment(index: PackageIndex, debug: bool) -> dict[str, str]:
+    """The launch's environment: the workspace's hooks applied, the shims and tools findable."""
+    environment = hooked_environment(index, default_environment())
+    if debug:  # the built-in nodes print tracebacks with their errors too
+        environment[DEBUG_VARIABLE] = "1"
+    compat.enable_for_children(environment)
+    tools_on_path(environment)
+    compat.commands_for_children(environment)
+    return environment
 
 
 def tools_on_path(environment: dict[str, str]) -> None:
