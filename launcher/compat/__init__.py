@@ -3,8 +3,8 @@
 command for launched processes.
 
 The shims folder goes on sys.path (and PYTHONPATH for children) only where the real modules
-are not installed. `current_index` is the package index the shims answer from; when unset,
-they build one from the environment.
+are not installed; they answer from a package index built from the environment (its search
+paths and the working folder).
 """
 
 from __future__ import annotations
@@ -13,13 +13,10 @@ import importlib.util
 import os
 import sys
 from collections.abc import MutableMapping
-from typing import Any
 
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz
 SHIMMED = ("ament_index_python", "launch", "launch_ros")
-
-current_index: Any = None
 
 
 def _real_installed(name: str) -> bool:

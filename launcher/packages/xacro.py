@@ -11,11 +11,10 @@ import io
 import os
 import shutil
 import sys
-from collections.abc import Mapping
-from contextlib import redirect_stderr
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager, redirect_stderr
 from typing import Any
 
-import launcher.compat
 from launcher.errors import ExecutionError
 
 
@@ -26,6 +25,24 @@ def runs_in_process(argv: list[str], environment: Mapping[str, str]) -> bool:
     on_path = shutil.which(argv[0], path=environment.get("PATH", os.defpath))
     ours = os.path.join(sys.prefix, "bin", "xacro")
     return on_path is None or os.path.realpath(on_path) == os.path.realpath(ours)
+
+
+@contextmanager
+def finding_in(index: Any) -> Iterator[None]:
+    """xacro's `$(find pkg)` (and `find()` in its expressions) answered from launcher's package
+    index, for this call only: no ament_index_python needed in this process, nothing global
+    left behind."""
+    from xacro import substitution_args
+
+    def find(package: str) -> str:
+        return str(index.share(package))
+
+    saved = substitution_args._eval_find, substitution_args._eval_dict["find"]
+    substitution_args._eval_find = substitution_args._eval_dict["find"] = find
+    try:
+        yield
+    finally:
+        substitution_args._eval_find, substitution_args._eval_dict["find"] = saved
 
 
 def run_xacro(argv: list[str], index: Any) -> str | None:
@@ -40,10 +57,9 @@ def run_xacro(argv: list[str], index: Any) -> str | None:
         return None  # let the command report its own usage error
     if options.output or options.just_deps:
         return None
-    launcher.compat.enable_in_process()
-    launcher.compat.current_index = index
     try:
-        doc = xacro.process_file(input_file, **vars(options))
+        with finding_in(index):
+            doc = xacro.process_file(input_file, **vars(options))
     except Exception as exc:  # xacro raises plain exceptions with good messages
         files = " (included from ".join(str(f) for f in reversed(xacro.filestack or []) if f)
         where = f"\n  in {files}{')' * (files.count('(included'))}" if files else ""

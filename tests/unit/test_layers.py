@@ -8,7 +8,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2] / "launcher"
 ALLOWED = {
     "runtime": {"runtime", "errors"},
-    "packages": {"packages", "errors", "compat"},
+    "packages": {"packages", "errors"},
     "description": {"description", "runtime", "packages", "errors"},
     "frontend": {"frontend", "description", "runtime", "errors", "compat"},
     "cli": {"cli", "frontend", "description", "runtime", "packages", "errors", "compat", "api",

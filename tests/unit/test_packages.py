@@ -127,3 +127,22 @@ def test_executables_files_and_entry_points(tmp_path):
     with pytest.raises(LaunchError, match="notexec.py' in package 'app' is not executable; make "
                                           "it so with: chmod \\+x"):
         find_executable(package, "notexec.py")
+
+
+def test_xacro_in_process_finds_packages_in_the_index_given_and_leaves_nothing_behind(tmp_path):
+    from xacro import substitution_args
+
+    from launcher.packages.xacro import run_xacro
+
+    ws = make_tree(tmp_path / "ws", {
+        "desc/package.xml": manifest("desc"),
+        "desc/urdf/part.xacro": '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                                '<link name="wheel"/></robot>',
+        "desc/urdf/robot.xacro": '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                                 '<xacro:include filename="$(find desc)/urdf/part.xacro"/>'
+                                 '<link name="base"/></robot>'})
+    index = index_for(ws, tmp=tmp_path)
+    before = substitution_args._eval_find
+    out = run_xacro(["xacro", str(ws / "desc" / "urdf" / "robot.xacro")], index)
+    assert '<link name="wheel"/>' in out and '<link name="base"/>' in out
+    assert substitution_args._eval_find is before  # the resolver was for that call only

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
-import launcher.compat
 from launcher.packages.index import PackageIndex, PackageNotFound
 
 
@@ -12,10 +12,17 @@ class PackageNotFoundError(KeyError):
     pass
 
 
+_built: dict[tuple[str, ...], PackageIndex] = {}
+
+
 def _index() -> PackageIndex:
-    if launcher.compat.current_index is None:
-        launcher.compat.current_index = PackageIndex.from_environment()
-    return launcher.compat.current_index
+    """The index for the environment as it is now (a Python launch file's look-ups are many:
+    one index per set of search paths, rebuilt when they change)."""
+    key = (os.environ.get("LAUNCHER_PACKAGE_PATH", ""), os.environ.get("AMENT_PREFIX_PATH", ""),
+           os.getcwd())
+    if key not in _built:
+        _built[key] = PackageIndex.from_environment()
+    return _built[key]
 
 
 def get_package_share_directory(package_name: str, print_warning: bool = True) -> str:
