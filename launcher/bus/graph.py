@@ -8,7 +8,6 @@ from dataclasses import dataclass, field
 import zenoh
 
 from launcher.bus import keys
-from launcher.bus.node import DOMAIN
 
 
 @dataclass
@@ -21,7 +20,7 @@ class TopicInfo:
 
 def entities(session: zenoh.Session, timeout: float = 1.0) -> list[keys.Entity]:
     found = []
-    for reply in session.liveliness().get(f"{keys.LIVELINESS}/{DOMAIN}/**", timeout=timeout):
+    for reply in session.liveliness().get(f"{keys.LIVELINESS}/{keys.DOMAIN}/**", timeout=timeout):
         if reply.ok is not None:
             entity = keys.parse_liveliness(str(reply.ok.key_expr))
             if entity is not None:

@@ -34,7 +34,6 @@ from launcher.bus.session import NoRouter, open_session
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 
-DOMAIN = keys.DOMAIN
 _node_ids = itertools.count()
 
 
@@ -78,7 +77,7 @@ class Publisher:
         types = registry()
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._node = topic, qos, node
-        key = keys.topic_key(DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
+        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
         # Reliable means "do not drop": block under congestion, as ROS 2 reliable QoS does.
         if qos.reliable:
             self._publisher = node.session.declare_publisher(
@@ -150,7 +149,7 @@ class Subscription:
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._node, self._callback = topic, qos, node, callback
         self._raw, self._inline = raw, inline
-        key = keys.topic_key(DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
+        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
         self._subscriber = node.session.declare_subscriber(
             key, self._on_sample,
             allowed_origin=zenoh.Locality.REMOTE if remote_only else zenoh.Locality.ANY)
@@ -234,7 +233,7 @@ class Node:
         self._timers: list[Timer] = []
         self._entities: list[Any] = []
         self._token = self.session.liveliness().declare_token(keys.liveliness_key(
-            DOMAIN, keys.Entity(str(self.session.zid()), self._node_id, 0, keys.NODE,
+            keys.DOMAIN, keys.Entity(str(self.session.zid()), self._node_id, 0, keys.NODE,
                                 self.namespace, self.name)))
         self._stopped = threading.Event()
         self.interrupted = False  # Ctrl-C arrived during spin()
@@ -264,7 +263,7 @@ class Node:
         entity = keys.Entity(str(self.session.zid()), self._node_id, next(self._entity_ids),
                              kind, self.namespace, self.name, topic, type_name,
                              registry().type_hash(type_name), qos.key())
-        return self.session.liveliness().declare_token(keys.liveliness_key(DOMAIN, entity))
+        return self.session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
 
     # --- endpoints --------------------------------------------------------------------------
     def create_publisher(self, type_name: str, topic: str, qos: QoS | int = 10) -> Publisher:
@@ -300,7 +299,7 @@ class Node:
         entity = keys.Entity(str(self.session.zid()), self._node_id, next(self._entity_ids),
                              kind, self.namespace, self.name, name, type_name,
                              registry().service_hash(type_name), QoS().key())
-        return self.session.liveliness().declare_token(keys.liveliness_key(DOMAIN, entity))
+        return self.session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
 
     def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
         if period <= 0:

@@ -15,11 +15,9 @@ from typing import Any
 
 import zenoh
 
-from launcher.bus import keys
+from launcher.bus import graph, keys
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
-
-DOMAIN = keys.DOMAIN
 
 
 class Service:
@@ -31,7 +29,7 @@ class Service:
         self.type_name = type_name
         self.request_type, self.response_type = types.service(type_name)
         self.name, self._node, self._callback = name, node, callback
-        key = keys.service_key(DOMAIN, name, type_name, types.service_hash(type_name))
+        key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name))
         self._queryable = node.session.declare_queryable(key, self._on_query)
         self._token = node._announce_service(keys.SERVICE, name, type_name)
 
@@ -64,7 +62,7 @@ class Client:
         types = registry()
         self.type_name, self.name, self._node = type_name, name, node
         self.request_type, self.response_type = types.service(type_name)
-        self._key = keys.service_key(DOMAIN, name, type_name, types.service_hash(type_name))
+        self._key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name))
         self._token = node._announce_service(keys.CLIENT, name, type_name)
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
@@ -96,13 +94,11 @@ class Client:
         return future
 
     def wait_for_service(self, timeout: float = 5.0) -> bool:
-        from launcher.bus.graph import entities
-
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if any(e.kind == keys.SERVICE and e.topic == self.name and
                    e.type_name == self.type_name  # another type by that name will not answer
-                   for e in entities(self._node.graph_session(), 0.5)):
+                   for e in graph.entities(self._node.graph_session(), 0.5)):
                 return True
             time.sleep(0.05)
         return False

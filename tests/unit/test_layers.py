@@ -54,3 +54,64 @@ def test_the_launcher_process_modules_avoid_heavy_imports():
                     module = node.module if isinstance(node, ast.ImportFrom) else \
                         node.names[0].name
                     assert (module or "").split(".")[0] not in heavy, path
+
+
+def _module_name(path: Path) -> str:
+    parts = list(path.relative_to(ROOT.parent).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _import_graph() -> tuple[dict[str, set[str]], dict[str, set[str]]]:
+    """launcher's modules → the launcher modules they import: at module level, and inside
+    functions (an explicit `from a.b import c` names the module c when there is one)."""
+    modules = {_module_name(p): p for p in ROOT.rglob("*.py")}
+
+    def resolve(name: str) -> str:
+        while name and name not in modules:
+            name = name.rpartition(".")[0]
+        return name
+
+    top: dict[str, set[str]] = {m: set() for m in modules}
+    inner: dict[str, set[str]] = {m: set() for m in modules}
+
+    def visit(module: str, node: ast.AST, in_function: bool) -> None:
+        for child in ast.iter_child_nodes(node):
+            nested = in_function or isinstance(child, ast.FunctionDef | ast.AsyncFunctionDef)
+            names: list[str] = []
+            if isinstance(child, ast.Import):
+                names = [a.name for a in child.names]
+            elif isinstance(child, ast.ImportFrom) and child.module and child.level == 0:
+                names = [f"{child.module}.{a.name}" for a in child.names]
+            for name in (n for n in names if n.startswith("launcher.")):
+                found = resolve(name)
+                if found and found != module:
+                    (inner if nested else top)[module].add(found)
+            visit(module, child, nested)
+
+    for module, path in modules.items():
+        visit(module, ast.parse(path.read_text()), False)
+    return top, inner
+
+
+def _reachable(start: str, graph: dict[str, set[str]]) -> set[str]:
+    seen, stack = set(), [start]
+    while stack:
+        for found in graph[stack.pop()]:
+            if found not in seen:
+                seen.add(found)
+                stack.append(found)
+    return seen
+
+
+def test_no_module_imports_itself_through_others():
+    top, _ = _import_graph()
+    cycles = sorted(f"{m} -> {d}" for m in top for d in top[m] if m in _reachable(d, top))
+    assert not cycles, "import cycles: " + "; ".join(cycles)
+
+
+def test_no_import_inside_a_function_dodges_a_cycle():
+    """An import placed in a function for start-up time is fine; one that would close a
+    cycle at module level is a tangle in disguise."""
+    top, inner = _import_graph()
+    dodges = sorted(f"{m} -> {d}" for m in inner for d in inner[m] if m in _reachable(d, top))
+    assert not dodges, "cycles dodged inside functions: " + "; ".join(dodges)

@@ -14,9 +14,8 @@ from typing import Any
 
 import mujoco
 
-from launcher.sim.sdf import model as sdf_model
 from launcher.sim.sdf.context import Context, Origin, read
-from launcher.sim.sdf.model import BuiltModel
+from launcher.sim.sdf.model import BuiltModel, build
 from launcher.sim.sdf.pose import IDENTITY, Pose, parse_pose
 from launcher.sim.sdf.world import SdfWorld, load_world
 from launcher.sim.sdf.xmltree import SdfError
@@ -42,7 +41,7 @@ def load_model(text: str, path: Path | None, environ: Mapping[str, str] | None =
     context = Context(environ, packages)
     spec = mujoco.MjSpec()
     spec.modelname = element.get("name", "model")
-    built = sdf_model.build(spec, element, Origin(path, version), context, "", IDENTITY)
+    built = build(spec, element, Origin(path, version), context, "", IDENTITY)
     return SdfModel(spec, built, parse_pose(element.find("pose")), context.warnings)
 
 

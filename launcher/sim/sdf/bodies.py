@@ -8,9 +8,9 @@ from typing import Any
 
 import mujoco
 
-from launcher.sim.sdf import geometry
 from launcher.sim.sdf.context import Context
 from launcher.sim.sdf.elements import check_children
+from launcher.sim.sdf.geometry import add_geom
 from launcher.sim.sdf.inertial import set_inertial
 from launcher.sim.sdf.parts import UNLIMITED, Joint, Link, Parts
 from launcher.sim.sdf.pose import Pose, number, parse_pose, rotate
@@ -74,7 +74,7 @@ class Builder:
             for element in link.element.iterfind(tag):
                 local = self._local_pose(element, link)
                 name = f"{self.prefix}{link.name}/{tag}/{element.get('name', '')}"
-                geometry.add_geom(body, self.spec, element, local, tag == "visual",
+                add_geom(body, self.spec, element, local, tag == "visual",
                                   self.context.warn, resolver, name if name not in seen else "")
                 seen.add(name)
 

@@ -17,10 +17,9 @@ from typing import Any
 import mujoco
 
 from launcher.sim.mjcf import PluginConfig
-from launcher.sim.sdf import model as sdf_model
 from launcher.sim.sdf.context import Context, Origin, read
 from launcher.sim.sdf.elements import check_children, plugin_configs
-from launcher.sim.sdf.model import BuiltModel
+from launcher.sim.sdf.model import BuiltModel, build
 from launcher.sim.sdf.pose import IDENTITY, Pose, number, numbers, parse_pose, rotate
 from launcher.sim.sdf.xmltree import Element
 
@@ -151,7 +150,7 @@ def _models(spec: Any, world: Element, origin: Origin, context: Context) -> list
             first = built[name][1].location
             raise child.error(f"two models named '{name}' in world '{world.get('name')}' "
                               f"(the first at {first.file}:{first.line})")
-        model = sdf_model.build(spec, element, where, context, f"{name}/", placement, static,
+        model = build(spec, element, where, context, f"{name}/", placement, static,
                                 name)
         if child.tag == "include":
             model.plugins += plugin_configs(child)
