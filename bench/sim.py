@@ -35,9 +35,9 @@ node.spin()
 
 
 def quiet_transport(node):
-    from launcher.sim.server import Transport
+    from launcher.sim.transport import BusTransport
 
-    transport = Transport(node)
+    transport = BusTransport(node)
     transport.logger.threshold = 40
     return transport
 

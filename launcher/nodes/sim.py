@@ -83,23 +83,19 @@ def main(argv: list[str] | None = None) -> int:
 
 def run(args: argparse.Namespace, ros: list[str]) -> int:
     from launcher.bus.node import Node
-    from launcher.sim.loading import load_world_file
     from launcher.sim.resources import find_world
-    from launcher.sim.server import SimServer, Transport, install_signal_handlers
+    from launcher.sim.server import SimServer, install_signal_handlers
+    from launcher.sim.transport import BusTransport
     from launcher.sim.world import World
 
     path = find_world(args.world)
-    loaded = load_world_file(path, world_values(args.world_arg))
+    values = world_values(args.world_arg)
     node = Node("sim", argv=ros)
-    logger = node.get_logger()
-    logger.threshold = VERBOSITY[args.verbose]
-    for warning in loaded.warnings:
-        logger.warning(warning)
+    node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
-        world = World(loaded.spec, loaded.label, Transport(node), loaded.plugins,
-                      models=loaded.models)
+        world = World.from_path(path, BusTransport(node), values)
         timestep = world.model.opt.timestep
-        default_rtf = loaded.real_time_factor if loaded.real_time_factor is not None else 1.0
+        default_rtf = world.real_time_factor if world.real_time_factor is not None else 1.0
         rtf = args.rtf if args.rtf is not None else \
             (args.rate * timestep if args.rate is not None else default_rtf)
         server = SimServer(world, node, rtf, args.run, args.state_rate)

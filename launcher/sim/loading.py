@@ -14,7 +14,18 @@ from typing import Any
 
 from launcher.sim import mjcf, sdf
 from launcher.sim.mjcf import PluginConfig
-from launcher.sim.world import WorldModel
+from launcher.sim.transform import IDENTITY, Pose
+
+
+@dataclass
+class WorldModel:
+    """A model of the world file: what the loader built into the world's spec."""
+
+    name: str
+    root: str
+    roots: list[str]
+    offset: Pose = IDENTITY
+    plugins: list[PluginConfig] = field(default_factory=list)
 
 
 @dataclass

@@ -19,18 +19,16 @@ import math
 import signal
 import struct
 import time
-from collections.abc import Sequence
 from typing import Any
 
 import mujoco
 
 from launcher.bus.node import Node
-from launcher.bus.qos import QoS
-from launcher.bus.types import registry
 from launcher.errors import LaunchError
 from launcher.sim.pacing import Pacer
 from launcher.sim.plugins import config_from
 from launcher.sim.snapshot import Camera
+from launcher.sim.transport import nanoseconds
 from launcher.sim.world import World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
@@ -42,59 +40,13 @@ _CLOCK = struct.Struct("<4siIiI?7xQ")
 def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
     """mujoco_sim/msg/Clock as CDR, packed directly: it goes out after every step."""
     sim_sec, real_sec = math.floor(sim), math.floor(real)
-    return _CLOCK.pack(b"\x00\x01\x00\x00", sim_sec, _nanoseconds(sim - sim_sec), real_sec,
-                       _nanoseconds(real - real_sec), paused, iterations)
-
-
-def _nanoseconds(fraction: float) -> int:
-    return min(int(round(fraction * 1e9)), 999_999_999)
+    return _CLOCK.pack(b"\x00\x01\x00\x00", sim_sec, nanoseconds(sim - sim_sec), real_sec,
+                       nanoseconds(real - real_sec), paused, iterations)
 
 
 def route_mujoco_warnings(logger: Any) -> None:
     """MuJoCo's own warnings to the log, not to a MUJOCO_LOG.TXT in the working folder."""
     mujoco.set_mju_user_warning(lambda text: logger.warning(f"MuJoCo: {text}"))
-
-
-class Transport:
-    """What the world and its plugins use of the bus, with fast message construction."""
-
-    def __init__(self, node: Node) -> None:
-        self.node = node
-        self.logger = node.get_logger()
-        self._classes: dict[str, type] = {}
-
-    def cls(self, type_name: str) -> type:
-        found = self._classes.get(type_name)
-        if found is None:
-            found = self._classes[type_name] = registry().message_class(type_name)
-        return found
-
-    def message(self, type_name: str, **fields: Any) -> Any:
-        return self.cls(type_name)(**fields)
-
-    def publisher(self, type_name: str, topic: str, qos: QoS | int = 10) -> Any:
-        return self.node.create_publisher(type_name, topic, qos)
-
-    def subscribe(self, type_name: str, topic: str, callback: Any) -> Any:
-        return self.node.create_subscription(type_name, topic, callback)
-
-    def time(self, seconds: float) -> Any:
-        sec = math.floor(seconds)
-        return self.cls("builtin_interfaces/msg/Time")(sec=sec,
-                                                       nanosec=_nanoseconds(seconds - sec))
-
-    def header(self, seconds: float, frame_id: str) -> Any:
-        return self.cls("std_msgs/msg/Header")(stamp=self.time(seconds), frame_id=frame_id)
-
-    def vector(self, x: float, y: float, z: float) -> Any:
-        return self.cls("geometry_msgs/msg/Vector3")(x=float(x), y=float(y), z=float(z))
-
-    def pose(self, x: float, y: float, z: float, quat: Sequence[float]) -> Any:
-        """`quat` in ROS order (x, y, z, w)."""
-        point = self.cls("geometry_msgs/msg/Point")(x=float(x), y=float(y), z=float(z))
-        q = self.cls("geometry_msgs/msg/Quaternion")(x=float(quat[0]), y=float(quat[1]),
-                                                     z=float(quat[2]), w=float(quat[3]))
-        return self.cls("geometry_msgs/msg/Pose")(position=point, orientation=q)
 
 
 class SimServer:

@@ -20,13 +20,15 @@ from __future__ import annotations
 import contextlib
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import mujoco
 
 from launcher.errors import LaunchError, did_you_mean
+from launcher.sim.loading import WorldModel, load_world_file
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.plugins import (
     Plugin,
@@ -37,6 +39,7 @@ from launcher.sim.plugins import (
 )
 from launcher.sim.templates import Template, Templates
 from launcher.sim.transform import IDENTITY, Pose, PoseError, check_pose, pose_from
+from launcher.sim.transport import Transport
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
             mujoco.mjtWarning.mjWARN_BADQACC)
@@ -63,19 +66,22 @@ class Entity:
     placed: dict[str, Pose] = field(default_factory=dict)  # static roots as loaded
 
 
-@dataclass
-class WorldModel:
-    """A model of the world file: what the loader built into the world's spec."""
-
-    name: str
-    root: str
-    roots: list[str]
-    offset: Pose = IDENTITY
-    plugins: list[PluginConfig] = field(default_factory=list)
-
-
 class World:
-    def __init__(self, spec: mujoco.MjSpec, label: str, transport: Any,
+    real_time_factor: float | None = None  # the world file's own pace, if it sets one
+
+    @classmethod
+    def from_path(cls, path: Path, transport: Transport, values: Mapping[str, str] | None = None,
+                  environ: Mapping[str, str] | None = None) -> World:
+        """The world of an SDF or MJCF file (a `.j2` rendered with `values`); what the file
+        holds that launcher leaves out is logged, once each."""
+        loaded = load_world_file(path, values, environ)
+        for warning in loaded.warnings:
+            transport.logger.warning(warning)
+        world = cls(loaded.spec, loaded.label, transport, loaded.plugins, models=loaded.models)
+        world.real_time_factor = loaded.real_time_factor
+        return world
+
+    def __init__(self, spec: mujoco.MjSpec, label: str, transport: Transport,
                  plugins: Sequence[PluginConfig] = (),
                  templates: Templates | None = None,
                  models: Sequence[WorldModel] | None = None) -> None:

@@ -49,10 +49,8 @@ def load(tmp_path: Path, text: str, name: str = "w.sdf", env: dict | None = None
 def make_world(tmp_path: Path, text: str, env: dict | None = None) -> tuple[World, Recorder]:
     path = tmp_path / "world.sdf"
     path.write_text(text)
-    loaded = load_world_file(path, environ=env or {})
     recorder = Recorder()
-    return World(loaded.spec, loaded.label, recorder, loaded.plugins, models=loaded.models), \
-        recorder
+    return World.from_path(path, recorder, environ=env or {}), recorder
 
 
 def run(world: World, steps: int) -> None:
@@ -276,6 +274,17 @@ def test_the_courses_box_model_spawns_from_model_config(tmp_path):
 
 
 # --- world models are entities -------------------------------------------------------------
+def test_the_tests_stand_in_is_a_transport_and_from_path_logs_what_is_left_out(tmp_path):
+    from launcher.sim.transport import Transport
+
+    assert isinstance(Recorder(), Transport)
+    world, recorder = make_world(tmp_path, world_text(
+        box_model("cube") + '<actor name="walker"/>' +
+        "<physics><real_time_factor>2</real_time_factor></physics>"))
+    assert world.real_time_factor == 2.0
+    assert any("<actor> in <world> is ignored" in m for m in recorder.messages("warning"))
+
+
 def test_world_models_are_listed_moved_removed_and_reset(tmp_path):
     world, recorder = make_world(tmp_path, world_text(
         box_model("table", "1 1 0.5 0 0 0", static=True) +
