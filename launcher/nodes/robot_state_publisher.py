@@ -22,106 +22,10 @@ import numpy as np
 
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
+from launcher.bus.wire import JointStateReader, TfLayout, pack_tf
 from launcher.errors import LaunchError
 from launcher.nodes.kinematics import Tree
 from launcher.nodes.running import run_node
-
-_HEAD = b"\x00\x01\x00\x00"
-_STAMP = struct.Struct("<iI")
-_SEVEN = struct.Struct("<7d")
-_COUNT = struct.Struct("<I")
-
-
-def _string(text: str) -> bytes:
-    data = text.encode() + b"\0"
-    return _COUNT.pack(len(data)) + data
-
-
-class TfLayout:
-    """A tf2_msgs/msg/TFMessage's CDR bytes for a fixed list of (parent, child) frames, with
-    the places of its stamps and numbers: packing one is a copy and a few `pack_into`s.
-
-    At 1 kHz with 20 joints this is the node's main cost; building message objects for a
-    generic serializer costs several times more."""
-
-    def __init__(self, parents: list[str], children: list[str]) -> None:
-        out = bytearray(_HEAD)
-        out += _COUNT.pack(len(parents))
-        self.stamps: list[int] = []
-        self.numbers: list[int] = []
-        for parent, child in zip(parents, children, strict=True):
-            out += b"\0" * (-(len(out) - 4) % 4)
-            self.stamps.append(len(out))
-            out += bytes(8)
-            out += _string(parent)
-            out += b"\0" * (-(len(out) - 4) % 4)
-            out += _string(child)
-            out += b"\0" * (-(len(out) - 4) % 8)
-            self.numbers.append(len(out))
-            out += bytes(56)
-        out += b"\0" * (-(len(out) - 4) % 8)  # whole 8-byte words after the CDR header
-        self.template = bytes(out)
-        # Word indices (in the 8-byte words after the header) of each transform's numbers,
-        # and of each stamp in 4-byte words: one numpy assignment writes them all.
-        numbers = (np.array(self.numbers, dtype=np.intp) - 4) // 8
-        self._number_words = (numbers[:, None] + np.arange(7)).ravel()
-        self._stamp_words = (np.array(self.stamps, dtype=np.intp) - 4) // 4
-
-    def pack(self, sec: int, nanosec: int, translations: np.ndarray, quats: np.ndarray) -> bytes:
-        out = bytearray(self.template)
-        body = np.frombuffer(out, dtype=np.uint8)[4:]
-        body.view("<f8")[self._number_words] = np.concatenate([translations, quats],
-                                                                axis=1).ravel()
-        words = body.view("<u4")
-        words[self._stamp_words] = sec & 0xFFFFFFFF
-        words[self._stamp_words + 1] = nanosec
-        return bytes(out)
-
-
-class JointStateReader:
-    """Reads stamp, names and positions from sensor_msgs/msg/JointState CDR without building
-    a message; the names, which rarely change, are decoded once and then only compared."""
-
-    def __init__(self) -> None:
-        self._block = b""
-        self._names: list[str] = []
-
-    def read(self, payload: bytes) -> tuple[int, int, list[str], np.ndarray]:
-        if payload[1] != 1:  # big-endian CDR: rare; let the generic reader do it
-            from launcher.bus.types import registry
-
-            message = registry().deserialize(payload, "sensor_msgs/msg/JointState")
-            return (message.header.stamp.sec, message.header.stamp.nanosec, list(message.name),
-                    np.asarray(message.position, dtype=float))
-        data = memoryview(payload)[4:]
-        sec, nanosec = _STAMP.unpack_from(data, 0)
-        position = 12 + _COUNT.unpack_from(data, 8)[0]  # past frame_id
-        position += -position % 4
-        count = _COUNT.unpack_from(data, position)[0]
-        start = position = position + 4
-        block = self._block
-        if count == len(self._names) and data[start:start + len(block)] == block:
-            position = start + len(block)
-            names = self._names
-        else:
-            names = []
-            for _ in range(count):
-                position += -position % 4
-                size = _COUNT.unpack_from(data, position)[0]
-                names.append(bytes(data[position + 4:position + 3 + size]).decode())
-                position += 4 + size
-            self._block, self._names = bytes(data[start:position]), names
-        position += -position % 4
-        values = _COUNT.unpack_from(data, position)[0]
-        position += 4
-        position += -position % 8
-        return sec, nanosec, names, np.frombuffer(data, "<f8", values, position)
-
-
-def pack_tf(sec: int, nanosec: int, parents: list[str], children: list[str],
-            translations: np.ndarray, quats: np.ndarray) -> bytes:
-    """tf2_msgs/msg/TFMessage as CDR (see TfLayout)."""
-    return TfLayout(parents, children).pack(sec, nanosec, translations, quats)
 
 
 class RobotStatePublisher:

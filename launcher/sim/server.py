@@ -15,33 +15,21 @@ Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/s
 
 from __future__ import annotations
 
-import math
 import signal
-import struct
 import time
 from typing import Any
 
 import mujoco
 
 from launcher.bus.node import Node
+from launcher.bus.wire import clock_cdr
 from launcher.errors import LaunchError
 from launcher.sim.pacing import Pacer
 from launcher.sim.plugins import config_from
 from launcher.sim.snapshot import Camera
-from launcher.sim.transport import nanoseconds
 from launcher.sim.world import World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
-
-
-_CLOCK = struct.Struct("<4siIiI?7xQ")
-
-
-def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
-    """mujoco_sim/msg/Clock as CDR, packed directly: it goes out after every step."""
-    sim_sec, real_sec = math.floor(sim), math.floor(real)
-    return _CLOCK.pack(b"\x00\x01\x00\x00", sim_sec, nanoseconds(sim - sim_sec), real_sec,
-                       nanoseconds(real - real_sec), paused, iterations)
 
 
 def route_mujoco_warnings(logger: Any) -> None:

@@ -11,6 +11,7 @@ from typing import Any, Protocol, runtime_checkable
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
+from launcher.bus.wire import nanoseconds
 
 
 @runtime_checkable
@@ -28,10 +29,6 @@ class Transport(Protocol):
     def vector(self, x: float, y: float, z: float) -> Any: ...
 
     def pose(self, x: float, y: float, z: float, quat: Sequence[float]) -> Any: ...
-
-
-def nanoseconds(fraction: float) -> int:
-    return min(int(round(fraction * 1e9)), 999_999_999)
 
 
 class BusTransport:

@@ -10,7 +10,6 @@ import pytest
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 from launcher.nodes.kinematics import Tree
-from launcher.nodes.robot_state_publisher import JointStateReader, pack_tf
 
 CHAIN = """<robot name="arm">
   <link name="base"/><link name="l1"/><link name="l2"/><link name="l3"/><link name="tool"/>
@@ -103,32 +102,6 @@ def test_bad_urdfs_are_clear_errors(text, expected):
     with pytest.raises(LaunchError) as error:
         Tree.parse(text)
     assert expected in str(error.value)
-
-
-def test_packed_tf_is_the_cdr_rosbags_makes():
-    payload = pack_tf(5, 7, ["base", "a_longer_name"], ["x", "child2"],
-                      np.array([[1.0, 2, 3], [4, 5, 6]]), np.array([[0, 0, 0, 1.0], [0, 0, 1, 0]]))
-    message = registry().deserialize(payload, "tf2_msgs/msg/TFMessage")
-    second = message.transforms[1]
-    assert second.header.frame_id == "a_longer_name" and second.child_frame_id == "child2"
-    assert (second.transform.translation.x, second.transform.rotation.z) == (4.0, 1.0)
-    assert bytes(registry().serialize(message, "tf2_msgs/msg/TFMessage")) == payload
-
-
-def test_the_joint_state_reader_reads_what_rosbags_writes_and_caches_names():
-    from launcher.bus.messages import build
-
-    reader = JointStateReader()
-    for names, positions in ((["j1", "a_long_joint_name", "x"], [0.5, -1.25, 3.0]),
-                             (["j1", "a_long_joint_name", "x"], [1.5, 2.0, -3.0]),
-                             (["other"], [7.0])):
-        message = build("sensor_msgs/msg/JointState", {
-            "header": {"stamp": {"sec": 12, "nanosec": 34}, "frame_id": "odd"},
-            "name": names, "position": positions, "velocity": [1.0] * len(names)})
-        payload = bytes(registry().serialize(message, "sensor_msgs/msg/JointState"))
-        sec, nanosec, read_names, read_positions = reader.read(payload)
-        assert (sec, nanosec, read_names) == (12, 34, names)
-        assert list(read_positions) == positions
 
 
 class Recorded:

@@ -479,18 +479,6 @@ def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(
     assert np.isfinite(world.data.qpos).all()
 
 
-def test_the_packed_clock_is_the_cdr_of_the_clock_message():
-    from launcher.bus.types import registry
-    from launcher.sim.server import clock_cdr
-
-    payload = clock_cdr(12.345, 3.5, True, 12345)
-    message = registry().deserialize(payload, "mujoco_sim/msg/Clock")
-    assert (message.sim.sec, message.sim.nanosec) == (12, 345_000_000)
-    assert (message.real.sec, message.real.nanosec) == (3, 500_000_000)
-    assert message.paused is True and message.iterations == 12345
-    assert bytes(registry().serialize(message, "mujoco_sim/msg/Clock")) == payload
-
-
 def test_the_warning_indices_the_step_loop_reads():
     from launcher.sim.world import UNSTABLE
 
