@@ -16,6 +16,8 @@ from typing import Any
 import zenoh
 
 from launcher.bus import graph, keys
+from launcher.bus.host import Host
+from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 
@@ -23,18 +25,19 @@ from launcher.errors import LaunchError
 class Service:
     """Answers requests: `callback(request, response) -> response`, run by the executor."""
 
-    def __init__(self, node: Any, type_name: str, name: str,
+    def __init__(self, host: Host, type_name: str, name: str,
                  callback: Any) -> None:
         types = registry()
         self.type_name = type_name
         self.request_type, self.response_type = types.service(type_name)
-        self.name, self._node, self._callback = name, node, callback
+        self.name, self._host, self._callback = name, host, callback
         key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name))
-        self._queryable = node.session.declare_queryable(key, self._on_query)
-        self._token = node._announce_service(keys.SERVICE, name, type_name)
+        self._queryable = host.session.declare_queryable(key, self._on_query)
+        self._token = host.announce(keys.SERVICE, name, type_name,
+                                    types.service_hash(type_name), QoS().key())
 
     def _on_query(self, query: zenoh.Query) -> None:
-        self._node._enqueue(self._answer, query)
+        self._host.enqueue(self._answer, query)
 
     def _answer(self, query: zenoh.Query) -> None:
         types = registry()
@@ -45,11 +48,11 @@ class Service:
             query.reply(query.key_expr, types.serialize(response, self.response_type),
                         attachment=query.attachment)
         except Exception as exc:  # the caller gets an error, the node goes on
-            self._node.get_logger().error(f"service {self.name}: {type(exc).__name__}: {exc}")
+            self._host.logger.error(f"service {self.name}: {type(exc).__name__}: {exc}")
             query.reply_err(f"{type(exc).__name__}: {exc}".encode())
 
     def destroy(self) -> None:
-        if not self._node._forget(self):
+        if not self._host.forget(self):
             return
         self._queryable.undeclare()
         self._token.undeclare()
@@ -58,12 +61,13 @@ class Service:
 class Client:
     """Calls a service: `call(request, timeout)` waits; `call_async` returns a Future."""
 
-    def __init__(self, node: Any, type_name: str, name: str) -> None:
+    def __init__(self, host: Host, type_name: str, name: str) -> None:
         types = registry()
-        self.type_name, self.name, self._node = type_name, name, node
+        self.type_name, self.name, self._host = type_name, name, host
         self.request_type, self.response_type = types.service(type_name)
         self._key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name))
-        self._token = node._announce_service(keys.CLIENT, name, type_name)
+        self._token = host.announce(keys.CLIENT, name, type_name, types.service_hash(type_name),
+                                    QoS().key())
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
 
@@ -71,7 +75,7 @@ class Client:
         types = registry()
         payload = types.serialize(request, self.request_type)
         attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
-        replies = self._node.session.get(self._key, payload=payload, attachment=attachment,
+        replies = self._host.session.get(self._key, payload=payload, attachment=attachment,
                                          timeout=timeout)
         for reply in replies:
             if reply.ok is not None:
@@ -98,13 +102,13 @@ class Client:
         while time.monotonic() < deadline:
             if any(e.kind == keys.SERVICE and e.topic == self.name and
                    e.type_name == self.type_name  # another type by that name will not answer
-                   for e in graph.entities(self._node.graph_session(), 0.5)):
+                   for e in graph.entities(self._host.graph_session(), 0.5)):
                 return True
             time.sleep(0.05)
         return False
 
     def destroy(self) -> None:
-        if not self._node._forget(self):
+        if not self._host.forget(self):
             return
         self._token.undeclare()
 

@@ -1,0 +1,75 @@
+"""What a node's entities (publishers, subscriptions, services, clients) use of their node:
+its session, its place on the graph, its executor's queue and its logger. The node makes one
+Host and hands it to each entity it creates; an entity never calls back into the node (rclpy's
+ownership: the node makes the handle and passes it in).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import itertools
+import os
+import queue
+from collections.abc import Callable
+from typing import Any
+
+import zenoh
+
+from launcher.bus import discovery, keys
+from launcher.bus.logging import Logger
+from launcher.bus.session import NoRouter, open_session
+
+_node_ids = itertools.count()
+
+
+class Host:
+    def __init__(self, session: zenoh.Session, namespace: str, name: str,
+                 logger: Logger) -> None:
+        self.session, self.namespace, self.name, self.logger = session, namespace, name, logger
+        self.timeout = 2.0  # for queries made on the caller's behalf (latched samples)
+        self.node_id = next(_node_ids)
+        self._entity_ids = itertools.count(1)
+        self.queue: queue.SimpleQueue[tuple[Callable[..., Any], tuple]] = queue.SimpleQueue()
+        self.entities: list[Any] = []
+        self._graph_session: zenoh.Session | None = None
+
+    def announce(self, kind: str, name: str = "", type_name: str = "", type_hash: str = "",
+                 qos: str = "") -> Any:
+        """The liveliness token of this node (kind NODE) or of one of its entities."""
+        number = 0 if kind == keys.NODE else next(self._entity_ids)
+        entity = keys.Entity(str(self.session.zid()), self.node_id, number, kind,
+                             self.namespace, self.name, name, type_name, type_hash, qos)
+        return self.session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
+
+    def enqueue(self, callback: Callable[..., Any], *args: Any) -> None:
+        """Work for the node's executor (spin), from any thread."""
+        self.queue.put((callback, args))
+
+    def adopt(self, entity: Any) -> Any:
+        self.entities.append(entity)
+        return entity
+
+    def forget(self, entity: Any) -> bool:
+        """Drop an entity being destroyed; False if it already was (destroy is idempotent)."""
+        if entity in self.entities:
+            self.entities.remove(entity)
+            return True
+        return False
+
+    def graph_session(self) -> zenoh.Session:
+        """The session to ask who is on the bus. A peer's liveliness query reaches only the
+        peers it has links to, and with dozens of nodes starting at once some links come late
+        or not at all (ten robots' `create`s never saw the sim); the router answers a client
+        with every token. Opened at the first question; a node hosting its own bus, or on a
+        config of the user's, asks through its own session."""
+        if self._graph_session is None:
+            self._graph_session = self.session
+            if not os.environ.get(discovery.CONFIG_VARIABLE):
+                with contextlib.suppress(NoRouter):
+                    self._graph_session = open_session("client")
+        return self._graph_session
+
+    def close_graph_session(self) -> None:
+        if self._graph_session not in (None, self.session):
+            with contextlib.suppress(zenoh.ZError):
+                self._graph_session.close()  # type: ignore[union-attr]

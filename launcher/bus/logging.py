@@ -1,0 +1,37 @@
+"""A node's logger: ROS 2's levels and line layout, warnings and errors on stderr, the rest
+on stdout; `once=True` says a message one time only."""
+
+from __future__ import annotations
+
+import sys
+import time
+
+
+class Logger:
+    LEVELS = {"DEBUG": 10, "INFO": 20, "WARN": 30, "ERROR": 40, "FATAL": 50}
+
+    def __init__(self, name: str, level: str = "INFO") -> None:
+        self.name, self.threshold = name, self.LEVELS.get(level.upper(), 20)
+        self._once: set[str] = set()
+
+    def _log(self, level: str, message: str, once: bool = False) -> None:
+        if self.LEVELS[level] < self.threshold or (once and message in self._once):
+            return
+        self._once.add(message)
+        stream = sys.stderr if self.LEVELS[level] >= 30 else sys.stdout
+        print(f"[{level}] [{time.time():.6f}] [{self.name}]: {message}", file=stream,
+              flush=True)
+
+    def debug(self, message: str, once: bool = False) -> None:
+        self._log("DEBUG", message, once)
+
+    def info(self, message: str, once: bool = False) -> None:
+        self._log("INFO", message, once)
+
+    def warning(self, message: str, once: bool = False) -> None:
+        self._log("WARN", message, once)
+
+    warn = warning
+
+    def error(self, message: str, once: bool = False) -> None:
+        self._log("ERROR", message, once)

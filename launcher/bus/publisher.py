@@ -1,0 +1,88 @@
+"""A publisher: CDR payloads put on its topic's key with rmw_zenoh's attachment; a transient
+local one keeps its last `depth` messages and answers late subscribers' queries with them."""
+
+from __future__ import annotations
+
+import itertools
+import os
+import time
+from collections import deque
+from collections.abc import Callable
+from typing import Any
+
+import zenoh
+
+from launcher.bus import keys
+from launcher.bus.host import Host
+from launcher.bus.qos import QoS
+from launcher.bus.types import registry
+
+
+class Publisher:
+    def __init__(self, host: Host, type_name: str, topic: str, qos: QoS) -> None:
+        types = registry()
+        self.type_name = types.ensure(type_name)
+        self.topic, self.qos, self._host = topic, qos, host
+        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
+        # Reliable means "do not drop": block under congestion, as ROS 2 reliable QoS does.
+        if qos.reliable:
+            self._publisher = host.session.declare_publisher(
+                key, reliability=zenoh.Reliability.RELIABLE,
+                congestion_control=zenoh.CongestionControl.BLOCK)
+        else:
+            self._publisher = host.session.declare_publisher(
+                key, reliability=zenoh.Reliability.BEST_EFFORT,
+                congestion_control=zenoh.CongestionControl.DROP)
+        self._sequence = itertools.count(1)
+        self._gid = os.urandom(16)
+        self._cache: deque[tuple[bytes, bytes]] = deque(maxlen=qos.depth)
+        self._queryable = host.session.declare_queryable(key, self._replay) \
+            if qos.transient_local else None
+        self._token = host.announce(keys.PUBLISHER, topic, self.type_name,
+                                    types.type_hash(self.type_name), qos.key())
+        # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
+        self._matching = self._publisher.matching_status.matching
+        self._watchers: list[Callable[[bool], None]] = []
+        self._closed = False
+        self._listener = self._publisher.declare_matching_listener(self._on_matching)
+
+    def _on_matching(self, status: Any) -> None:
+        self._matching = status.matching
+        for watcher in self._watchers:
+            self._host.enqueue(watcher, status.matching)
+
+    def watch_subscribers(self, callback: Callable[[bool], None]) -> None:
+        """Call `callback(matching)` on the executor whenever subscribers come or all go
+        (and once now); lazy bridges subscribe to their source only while someone listens."""
+        self._watchers.append(callback)
+        self._host.enqueue(callback, self._matching)
+
+    def publish(self, message: Any) -> None:
+        self.publish_raw(registry().serialize(message, self.type_name))
+
+    def publish_raw(self, payload: bytes) -> None:
+        """Publish a CDR payload as it is (bag play, bridges)."""
+        attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
+        if self._queryable is not None:
+            self._cache.append((payload, attachment))
+        try:
+            self._publisher.put(payload, attachment=attachment)
+        except zenoh.ZError:
+            if not self._closed:  # a callback on Zenoh's thread may race destroy(): quiet
+                raise
+
+    def _replay(self, query: zenoh.Query) -> None:
+        for payload, attachment in list(self._cache):
+            query.reply(self._publisher.key_expr, payload, attachment=attachment)
+
+    def get_subscription_count(self) -> int:
+        """1 while any subscriber matches (Zenoh does not count them), else 0."""
+        return 1 if self._matching else 0
+
+    def destroy(self) -> None:
+        if not self._host.forget(self):
+            return
+        self._closed = True
+        for item in (self._listener, self._queryable, self._publisher, self._token):
+            if item is not None:
+                item.undeclare()

@@ -1,0 +1,62 @@
+"""A subscription: samples on its topic's key delivered to the node's executor (or inline, on
+Zenoh's thread, when asked); a transient local one first fetches what latched publishers
+hold. A malformed payload is dropped with one warning per topic."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import zenoh
+
+from launcher.bus import keys
+from launcher.bus.host import Host
+from launcher.bus.qos import QoS
+from launcher.bus.types import registry
+
+
+class Subscription:
+    def __init__(self, host: Host, type_name: str, topic: str, callback: Callable[[Any], None],
+                 qos: QoS, raw: bool = False, inline: bool = False,
+                 remote_only: bool = False) -> None:
+        types = registry()
+        self.type_name = types.ensure(type_name)
+        self.topic, self.qos, self._host, self._callback = topic, qos, host, callback
+        self._raw, self._inline = raw, inline
+        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
+        self._subscriber = host.session.declare_subscriber(
+            key, self._on_sample,
+            allowed_origin=zenoh.Locality.REMOTE if remote_only else zenoh.Locality.ANY)
+        self._token = host.announce(keys.SUBSCRIPTION, topic, self.type_name,
+                                    types.type_hash(self.type_name), qos.key())
+        self._warned = False
+        if qos.transient_local:  # fetch what latched publishers hold
+            for reply in host.session.get(key, timeout=host.timeout):
+                if reply.ok is not None:
+                    self._on_sample(reply.ok)
+
+    def _on_sample(self, sample: zenoh.Sample) -> None:
+        if self._inline:
+            self._deliver(sample.payload.to_bytes())
+        else:
+            self._host.enqueue(self._deliver, sample.payload.to_bytes())
+
+    def _deliver(self, payload: bytes) -> None:
+        if self._raw:
+            self._callback(payload)
+            return
+        try:
+            message = registry().deserialize(payload, self.type_name)
+        except Exception as exc:  # malformed payload: dropped, said once per topic
+            if not self._warned:
+                self._warned = True
+                self._host.logger.warning(
+                    f"dropped a malformed {self.type_name} message on {self.topic}: {exc}")
+            return
+        self._callback(message)
+
+    def destroy(self) -> None:
+        if not self._host.forget(self):
+            return
+        self._subscriber.undeclare()
+        self._token.undeclare()
