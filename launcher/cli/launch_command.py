@@ -110,9 +110,8 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
+        load_description=load_file, packages=index,
     )
-    service.context.load_description = load_file
-    service.context.packages = index
     try:
         return service.run(LaunchDescription(root))
     finally:

@@ -22,9 +22,8 @@ from launcher.runtime.context import LaunchContext
 
 
 def _context(configurations: dict[str, str], index: Any) -> LaunchContext:
-    context = LaunchContext(configurations=configurations)
-    context.load_description = load_file
-    context.packages = index
+    context = LaunchContext(configurations=configurations, load_description=load_file,
+                            packages=index)
     return context
 
 

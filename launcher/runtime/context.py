@@ -12,7 +12,7 @@ import sys
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, Protocol, runtime_checkable
 
 
 @dataclass
@@ -32,20 +32,49 @@ class Snapshot(NamedTuple):
     file: Path | None
 
 
+@runtime_checkable
+class Runtime(Protocol):
+    """What actions use of the service that runs a launch (the LaunchService, or a test's
+    recording fake)."""
+
+    launch_prefix: str
+    shutting_down: bool
+
+    def next_label(self, base: str) -> str: ...
+
+    def start_process(self, spec: Any) -> None: ...
+
+    def register_handler(self, handler: Any) -> None: ...
+
+    def add_timer(self, period: float, callback: Callable[[], None],
+                  cancel_on_shutdown: bool = True) -> Any: ...
+
+    def schedule(self, actions: Any) -> None: ...
+
+    def shutdown(self, reason: str) -> None: ...
+
+    def log(self, level: str, source: str, message: str) -> None: ...
+
+    def report(self, exc: Any) -> None: ...
+
+
 class LaunchContext:
     """State shared by the actions of one launch.
 
     `service` is the runtime that runs processes and timers; it is None when a launch file is
     only inspected (`--show-args`, `--print`), and actions that need it must check.
-    `load_description` turns a launch file path into a description (set by the frontend).
+    `load_description` turns a launch file path into a description (the frontend's loader);
+    `packages` is the package index node actions and `$(find-pkg-…)` look in.
     """
 
     def __init__(
         self,
         environment: Mapping[str, str] | None = None,
         configurations: Mapping[str, str] | None = None,
-        service: Any = None,
+        service: Runtime | None = None,
         log_dir: Path | None = None,
+        load_description: Callable[[Path], Any] | None = None,
+        packages: Any = None,
     ) -> None:
         env = dict(os.environ if environment is None else environment)
         self.initial_environment = dict(env)
@@ -55,8 +84,8 @@ class LaunchContext:
         self.service = service
         self.log_dir = log_dir
         self.anonymous_names: dict[str, str] = {}
-        self.load_description: Callable[[Path], Any] | None = None
-        self.packages: Any = None  # the package index (set by whoever builds the context)
+        self.load_description = load_description
+        self.packages = packages
         self.node_names: dict[str, Any] = {}  # fully qualified node name -> where declared
 
     # --- scopes -------------------------------------------------------------------------

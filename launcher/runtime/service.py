@@ -37,12 +37,15 @@ class LaunchService:
         debug: bool = False,
         loop: EventLoop | None = None,
         daemons: list[ProcessSpec] | None = None,
+        load_description: Callable[[Path], Any] | None = None,
+        packages: Any = None,
     ) -> None:
         self.printer = printer or Printer()
         self.run_log = RunLog(log_root) if log_root is not None else None
         self.context = LaunchContext(
             environment, configurations, service=self,
             log_dir=self.run_log.folder if self.run_log else None,
+            load_description=load_description, packages=packages,
         )
         self.loop = loop or EventLoop()
         self.launch_prefix = launch_prefix

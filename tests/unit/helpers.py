@@ -42,6 +42,7 @@ class FakeService:
         self.logs: list[tuple[str, str]] = []
         self.handlers: list[Any] = []
         self.launch_prefix = ""
+        self.shutting_down = False
         self.count = 0
 
     def next_label(self, base: str) -> str:
@@ -66,6 +67,9 @@ class FakeService:
     def shutdown(self, reason: str) -> None:
         self.logs.append(("SHUTDOWN", reason))
 
+    def report(self, exc: Any) -> None:
+        self.logs.append(("ERROR", str(exc)))
+
 
 def visit(actions: list[Action], context: LaunchContext) -> None:
     """Visit depth first, as the launch service does."""
@@ -80,8 +84,7 @@ def run(description: LaunchDescription, configurations: dict[str, str] | None = 
         environment: dict[str, str] | None = None) -> tuple[LaunchContext, FakeService]:
     service = FakeService()
     context = LaunchContext(environment or {"PATH": "/usr/bin:/bin"}, configurations or {},
-                            service=service)
-    context.load_description = load_file
+                            service=service, load_description=load_file)
     service.context = context
     visit([description], context)
     return context, service

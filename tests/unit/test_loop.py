@@ -49,3 +49,12 @@ def test_readers_and_signals_reach_the_loop():
     os.close(write)
     assert got == [b"ping", signal.SIGUSR1]
     assert signal.getsignal(signal.SIGUSR1) == signal.SIG_DFL
+
+
+def test_the_launch_service_and_the_tests_fake_are_both_runtimes():
+    from launcher.runtime.context import Runtime
+    from launcher.runtime.service import LaunchService
+    from tests.unit.helpers import FakeService
+
+    assert isinstance(FakeService(), Runtime)
+    assert isinstance(LaunchService(), Runtime)
