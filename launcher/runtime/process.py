@@ -8,17 +8,13 @@
 Each process runs in its own session, so it leads its own process group. Stopping sends
 SIGINT to the whole group, SIGTERM after `sigterm_timeout`, SIGKILL after `sigkill_timeout`
 more; `escalate()` sends the next signal at once. When a process exits on its own, anything it
-left running in its group is killed: nothing is left behind.
+left running in its group is killed: nothing is left behind. The operating system is reached
+only through `system` (runtime/system.py), which tests replace with a recording fake.
 """
 
 from __future__ import annotations
 
-import contextlib
-import errno
-import os
-import pty
 import signal
-import subprocess
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import Enum
@@ -26,6 +22,7 @@ from typing import Any, NamedTuple
 
 from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Record
+from launcher.runtime.system import Processes, System
 
 GIVE_UP_AFTER_SIGKILL = 2.0  # seconds; a process in uninterruptible sleep cannot be waited on
 STREAM_GRACE = 0.5  # seconds to keep reading after an exit (something else may hold the pipe)
@@ -103,7 +100,7 @@ class ManagedProcess:
     returncode: int | None = None
     respawns: int = 0
     failed: bool = False  # it exited with a non-zero code that the launcher did not cause
-    _popen: subprocess.Popen | None = field(default=None, repr=False)
+    system: Processes = field(default_factory=System, repr=False)
     _streams: list[int] = field(default_factory=list, repr=False)  # open output fds
     _leader_gone: bool = False
     _timer: Timer | None = field(default=None, repr=False)  # respawn or escalation step
@@ -129,49 +126,19 @@ class ManagedProcess:
     # --- starting ---------------------------------------------------------------------------
     def spawn(self) -> None:
         """Start the process now. OSError (not found, not executable, bad cwd) propagates."""
-        out_r, out_w = _channel(self.spec.emulate_tty)
-        err_r, err_w = _channel(self.spec.emulate_tty)
-        try:
-            self._popen = subprocess.Popen(
-                self.spec.argv, stdin=subprocess.DEVNULL, stdout=out_w, stderr=err_w,
-                cwd=self.spec.cwd, env=self.spec.env, start_new_session=True, close_fds=True,
-            )
-        except BaseException:
-            os.close(out_r)
-            os.close(err_r)
-            raise
-        finally:
-            os.close(out_w)
-            os.close(err_w)
-        self.pid, self.returncode, self._leader_gone = self._popen.pid, None, False
+        spec = self.spec
+        started = self.system.spawn(spec.argv, spec.env, spec.cwd, spec.emulate_tty)
+        self.pid, self.returncode, self._leader_gone = started.pid, None, False
         self.hooks.group(self.pid, True)
-        self._streams = [out_r, err_r]
-        for fd, stream in ((out_r, "stdout"), (err_r, "stderr")):
-            os.set_blocking(fd, False)
+        self._streams = [started.stdout, started.stderr]
+        for fd, stream in ((started.stdout, "stdout"), (started.stderr, "stderr")):
             self.loop.add_reader(fd, self._on_readable, fd, stream, bytearray())
-        self._watch_exit()
+        self.system.watch_exit(self.pid, self.loop, self._on_leader_exit)
         self._to(State.RUNNING)
         self.hooks.started(self)
 
-    def _watch_exit(self) -> None:
-        try:
-            pidfd = os.pidfd_open(self.pid)  # type: ignore[arg-type]
-        except (AttributeError, OSError):  # no pidfd on this system: poll
-            self.loop.call_later(GROUP_POLL, self._poll_exit)
-            return
-        self.loop.add_reader(pidfd, self._on_pidfd, pidfd)
-
-    def _on_pidfd(self, pidfd: int) -> None:
-        self.loop.remove_reader(pidfd)
-        os.close(pidfd)
-        self._poll_exit()
-
-    def _poll_exit(self) -> None:
-        assert self._popen is not None
-        if self._popen.poll() is None:
-            self.loop.call_later(GROUP_POLL, self._poll_exit)
-            return
-        self.returncode = self._popen.returncode
+    def _on_leader_exit(self, returncode: int | None) -> None:
+        self.returncode = returncode
         self._leader_gone = True
         if self.state is State.RUNNING:  # exited on its own: end what it left in its group
             self._kill_group(signal.SIGKILL)
@@ -180,14 +147,9 @@ class ManagedProcess:
 
     # --- output -----------------------------------------------------------------------------
     def _on_readable(self, fd: int, stream: str, buf: bytearray) -> None:
-        try:
-            data = os.read(fd, 65536)
-        except BlockingIOError:
+        data = self.system.read(fd)
+        if data is None:
             return
-        except OSError as exc:  # a pty reads EIO once the other side is closed
-            if exc.errno != errno.EIO:
-                raise
-            data = b""
         if not data:
             if buf:
                 self._emit(stream, bytes(buf))
@@ -213,7 +175,7 @@ class ManagedProcess:
         if fd in self._streams:
             self._streams.remove(fd)
             self.loop.remove_reader(fd)
-            os.close(fd)
+            self.system.close(fd)
             self._maybe_finish()
 
     def _close_streams(self, pid: int | None = None) -> None:
@@ -325,19 +287,7 @@ class ManagedProcess:
 
     def _kill_group(self, sig: int) -> None:
         if self.pid is not None:
-            with contextlib.suppress(ProcessLookupError, PermissionError):
-                os.killpg(self.pid, sig)
+            self.system.kill_group(self.pid, sig)
 
     def _group_alive(self) -> bool:
-        try:
-            os.killpg(self.pid, 0)  # type: ignore[arg-type]
-        except ProcessLookupError:
-            return False
-        except PermissionError:
-            return True
-        return True
-
-
-def _channel(tty: bool) -> tuple[int, int]:
-    """A (read, write) pair for one output stream: a pipe, or a pty when emulating a tty."""
-    return pty.openpty() if tty else os.pipe()
+        return self.pid is not None and self.system.group_alive(self.pid)

@@ -23,6 +23,7 @@ from launcher.runtime.logs import RunLog
 from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Printer, Record
 from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec
+from launcher.runtime.system import Processes, System
 
 
 class LaunchService:
@@ -39,7 +40,9 @@ class LaunchService:
         daemons: list[ProcessSpec] | None = None,
         load_description: Callable[[Path], Any] | None = None,
         packages: Any = None,
+        system: Processes | None = None,
     ) -> None:
+        self.system = system or System()
         self.printer = printer or Printer()
         self.run_log = RunLog(log_root) if log_root is not None else None
         self.context = LaunchContext(
@@ -149,7 +152,7 @@ class LaunchService:
         if self._shutting_down:
             self.log("DEBUG", spec.label, "not started: the launch is shutting down")
             return None
-        process = ManagedProcess(spec, self._hooks, self.loop)
+        process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
         process.spawn()
         self.processes.append(process)
         return process

@@ -1,0 +1,237 @@
+"""The supervision state machine replayed through event histories: a fake loop whose clock
+the test moves, and a recording fake of the operating system. No process is started; each
+history runs in milliseconds (the real-process tests are in tests/integration)."""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import signal
+
+import pytest
+
+from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec, State
+from launcher.runtime.system import Started
+
+
+class FakeTimer:
+    def __init__(self) -> None:
+        self.cancelled = False
+
+    def cancel(self) -> None:
+        self.cancelled = True
+
+
+class FakeLoop:
+    """Timers on a clock the test moves; readers the test makes ready."""
+
+    def __init__(self) -> None:
+        self.now = 0.0
+        self._timers: list = []
+        self._order = itertools.count()
+        self.readers: dict[int, tuple] = {}
+
+    def call_later(self, delay, callback, *args):
+        timer = FakeTimer()
+        heapq.heappush(self._timers, (self.now + max(delay, 0.0), next(self._order), timer,
+                                      callback, args))
+        return timer
+
+    def add_reader(self, fd, callback, *args):
+        self.readers[fd] = (callback, args)
+
+    def remove_reader(self, fd):
+        self.readers.pop(fd, None)
+
+    def advance(self, seconds: float) -> None:
+        end = self.now + seconds
+        while self._timers and self._timers[0][0] <= end:
+            when, _, timer, callback, args = heapq.heappop(self._timers)
+            self.now = when
+            if not timer.cancelled:
+                callback(*args)
+        self.now = end
+
+    def ready(self, fd: int) -> None:
+        callback, args = self.readers[fd]
+        callback(*args)
+
+
+class FakeSystem:
+    """Records spawns and signals; the test says when a process writes, exits, and whether
+    its group still holds anything."""
+
+    def __init__(self, fail_spawns: int = 0) -> None:
+        self.pids = itertools.count(100)
+        self.fds = itertools.count(10)
+        self.spawned: list[int] = []
+        self.signals: list[tuple[int, int]] = []
+        self.group: dict[int, bool] = {}
+        self.exits: dict[int, object] = {}
+        self.output: dict[int, list[bytes]] = {}
+        self.closed: list[int] = []
+        self.fail_spawns = fail_spawns
+        self.loop: FakeLoop | None = None
+
+    def spawn(self, argv, env, cwd, tty):
+        if self.fail_spawns:
+            self.fail_spawns -= 1
+            raise FileNotFoundError(2, "No such file or directory", argv[0])
+        pid = next(self.pids)
+        self.spawned.append(pid)
+        self.group[pid] = True
+        started = Started(pid, next(self.fds), next(self.fds))
+        self.output[started.stdout], self.output[started.stderr] = [], []
+        self.streams = started
+        return started
+
+    def watch_exit(self, pid, loop, exited):
+        self.exits[pid] = exited
+
+    def read(self, fd):
+        chunks = self.output[fd]
+        return chunks.pop(0) if chunks else b""
+
+    def close(self, fd):
+        self.closed.append(fd)
+
+    def kill_group(self, pgid, sig):
+        self.signals.append((pgid, sig))
+
+    def group_alive(self, pgid):
+        return self.group.get(pgid, False)
+
+    # --- what the test makes happen ---------------------------------------------------------
+    def leader_exits(self, loop: FakeLoop, pid: int, code: int, group_empty: bool = True):
+        """The leader ends with `code`: its output reaches its end, then it is reaped."""
+        self.group[pid] = not group_empty
+        for fd in (self.streams.stdout, self.streams.stderr):
+            if fd in loop.readers:
+                loop.ready(fd)
+        self.exits.pop(pid)(code)
+
+
+class Recorder:
+    def __init__(self) -> None:
+        self.logs: list[tuple[str, str]] = []
+        self.exited: list[bool] = []
+        self.lines: list[str] = []
+
+    def hooks(self) -> ProcessHooks:
+        return ProcessHooks(
+            line=lambda process, record, targets: self.lines.append(record.text),
+            started=lambda process: None,
+            exited=lambda process, respawn: self.exited.append(respawn),
+            log=lambda level, source, message: self.logs.append((level, message)),
+            group=lambda pgid, alive: None)
+
+
+def make(**spec_fields) -> tuple[ManagedProcess, FakeLoop, FakeSystem, Recorder]:
+    loop, system, recorder = FakeLoop(), FakeSystem(spec_fields.pop("fail_spawns", 0)), \
+        Recorder()
+    spec = ProcessSpec(label="worker-1", argv=["worker"], env={}, **spec_fields)
+    process = ManagedProcess(spec, recorder.hooks(), loop, system=system)  # type: ignore[arg-type]
+    process.spawn()
+    return process, loop, system, recorder
+
+
+def test_a_clean_exit_ends_in_exited_and_says_so():
+    process, loop, system, recorder = make()
+    system.output[system.streams.stdout] += [b"hello\nwor", b"ld\n"]
+    loop.ready(system.streams.stdout)
+    loop.ready(system.streams.stdout)
+    system.leader_exits(loop, 100, 0)
+    assert process.state is State.EXITED and not process.failed
+    assert recorder.lines == ["hello", "world"]
+    assert recorder.logs[-1] == ("INFO", "process has finished cleanly [pid 100]")
+    assert recorder.exited == [False]
+    assert system.signals == [(100, signal.SIGKILL)]  # whatever it left: none here
+    assert sorted(system.closed) == [10, 11]
+
+
+def test_exiting_on_its_own_kills_what_it_left_in_its_group():
+    process, loop, system, recorder = make()
+    system.leader_exits(loop, 100, 3, group_empty=False)
+    assert system.signals == [(100, signal.SIGKILL)]
+    assert process.state is State.EXITED and process.failed
+    assert "exited with code 3" in recorder.logs[-1][1]
+
+
+def test_respawn_with_a_delay_and_a_limit_then_exited():
+    process, loop, system, recorder = make(respawn=True, respawn_delay=1.0,
+                                           respawn_max_retries=2)
+    history = []
+    for _ in range(3):
+        system.leader_exits(loop, system.spawned[-1], 1)
+        history.append(process.state)
+        loop.advance(0.99)
+        history.append(process.state)
+        loop.advance(0.02)
+    assert history == [State.BACKOFF, State.BACKOFF, State.BACKOFF, State.BACKOFF,
+                       State.EXITED, State.EXITED]
+    assert len(system.spawned) == 3 and process.respawns == 2 and process.failed
+    messages = [m for _, m in recorder.logs]
+    assert "respawning in 1 s (attempt 1 of 2)" in messages[0]
+    assert "respawning in 1 s (attempt 2 of 2)" in messages[1]
+    assert recorder.exited == [True, True, False]
+
+
+def test_stop_escalates_sigint_sigterm_sigkill_on_the_group_with_their_timeouts():
+    process, loop, system, recorder = make(sigterm_timeout=5.0, sigkill_timeout=3.0)
+    process.stop()
+    process.stop()  # safe twice
+    assert process.state is State.STOPPING and system.signals == [(100, signal.SIGINT)]
+    loop.advance(4.9)
+    assert system.signals == [(100, signal.SIGINT)]
+    loop.advance(0.2)
+    assert system.signals[-1] == (100, signal.SIGTERM)
+    loop.advance(3.0)
+    assert system.signals[-1] == (100, signal.SIGKILL)
+    system.leader_exits(loop, 100, -signal.SIGKILL)
+    assert process.state is State.EXITED
+    assert recorder.logs[-1] == ("INFO", "process stopped: it was killed by SIGKILL [pid 100]")
+    assert [m for level, m in recorder.logs if level == "WARN"] == [
+        "still running; sending SIGTERM", "still running; sending SIGKILL"]
+
+
+def test_a_stopped_leader_is_not_done_while_its_group_lives_on():
+    process, loop, system, recorder = make()
+    process.stop()
+    system.leader_exits(loop, 100, -signal.SIGINT, group_empty=False)
+    loop.advance(0.5)
+    assert process.state is State.STOPPING  # a grandchild still holds the group
+    system.group[100] = False
+    loop.advance(0.05)
+    assert process.state is State.EXITED
+    assert not process.failed  # the launcher caused this exit
+
+
+def test_escalate_sends_the_next_signal_at_once():
+    process, loop, system, _ = make()
+    process.stop()
+    process.escalate()
+    assert [sig for _, sig in system.signals] == [signal.SIGINT, signal.SIGTERM]
+
+
+def test_stop_while_waiting_to_respawn_ends_without_spawning():
+    process, loop, system, recorder = make(respawn=True, respawn_delay=2.0)
+    system.leader_exits(loop, 100, 1)
+    process.stop()
+    loop.advance(5.0)
+    assert process.state is State.EXITED and system.spawned == [100]
+    assert recorder.exited == [True, False]
+
+
+def test_a_respawn_that_cannot_spawn_is_fatal():
+    process, loop, system, recorder = make(respawn=True, respawn_delay=0.5)
+    system.fail_spawns = 1
+    system.leader_exits(loop, 100, 1)
+    loop.advance(0.5)
+    assert process.state is State.FATAL
+    assert recorder.logs[-1][0] == "ERROR" and "could not respawn" in recorder.logs[-1][1]
+
+
+def test_the_state_machine_refuses_an_edge_it_does_not_have():
+    process, loop, system, _ = make()
+    with pytest.raises(RuntimeError, match="no transition RUNNING -> STARTING"):
+        process._to(State.STARTING)
