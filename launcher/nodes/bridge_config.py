@@ -4,7 +4,8 @@ YAML: a list of entries. Topics: `topic_name` (both sides) or `ros_topic_name` /
 `gz_topic_name` (either alone names both), `ros_type_name`, `gz_type_name` (both required),
 `direction` (BIDIRECTIONAL, GZ_TO_ROS, ROS_TO_GZ), `lazy`, `subscriber_queue`,
 `publisher_queue`. Services: `service_name`, `ros_type_name`, `gz_req_type_name`,
-`gz_rep_type_name`. `sim_*` keys are accepted for `gz_*` ones. The file may be a jinja2
+`gz_rep_type_name`. `sim_*` keys are accepted for `gz_*` ones. The keys are declared once
+(TopicKeys, ServiceKeys) and checked by launcher's one record builder. The file may be a jinja2
 template, rendered with the node's parameters. A bad entry is reported with its file, line
 and number and skipped; an empty file or a top level that is not a list is an error.
 
@@ -19,12 +20,37 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from launcher.errors import LaunchError, did_you_mean
+from launcher.errors import LaunchError
+from launcher.schema import Kind, attr, build
 
 DIRECTIONS = ("BIDIRECTIONAL", "GZ_TO_ROS", "ROS_TO_GZ")
-TOPIC_KEYS = {"topic_name", "ros_topic_name", "gz_topic_name", "ros_type_name", "gz_type_name",
-              "direction", "lazy", "subscriber_queue", "publisher_queue"}
-SERVICE_KEYS = {"service_name", "ros_type_name", "gz_req_type_name", "gz_rep_type_name"}
+
+
+@dataclass
+class TopicKeys:
+    """A topic entry of bridge.yaml, as ros_gz reads it."""
+
+    topic_name: str | None = attr(Kind.TEXT, doc="The topic on both sides.")
+    ros_topic_name: str | None = attr(Kind.TEXT, doc="The ROS side (alone: both sides).")
+    gz_topic_name: str | None = attr(Kind.TEXT, aliases=("sim_topic_name",),
+                                     doc="The sim side (alone: both sides).")
+    ros_type_name: str = attr(Kind.TEXT, "", required=True)
+    gz_type_name: str = attr(Kind.TEXT, "", required=True, aliases=("sim_type_name",))
+    direction: str = attr(Kind.TEXT, "BIDIRECTIONAL", choices=DIRECTIONS)
+    lazy: bool = attr(Kind.BOOL, False,
+                      doc="Subscribe to the source only while the destination is heard.")
+    subscriber_queue: int = attr(Kind.INT, 10, minimum=1)
+    publisher_queue: int = attr(Kind.INT, 10, minimum=1)
+
+
+@dataclass
+class ServiceKeys:
+    """A service entry of bridge.yaml."""
+
+    service_name: str = attr(Kind.TEXT, "", required=True)
+    ros_type_name: str = attr(Kind.TEXT, "", required=True)
+    gz_req_type_name: str = attr(Kind.TEXT, "", required=True, aliases=("sim_req_type_name",))
+    gz_rep_type_name: str = attr(Kind.TEXT, "", required=True, aliases=("sim_rep_type_name",))
 
 
 @dataclass
@@ -41,64 +67,30 @@ class Entry:
     where: str = ""
 
 
-def _spelling(raw: Mapping[str, Any]) -> dict[str, Any]:
-    """`sim_topic_name` and friends are `gz_topic_name` and friends."""
-    return {(f"gz_{key[4:]}" if key.startswith("sim_") else key): value
-            for key, value in raw.items()}
-
-
 def parse_entry(raw: Any, where: str, sim_type: Callable[[str], str]) -> Entry:
     if not isinstance(raw, Mapping):
         raise LaunchError(f"{where}: an entry must be a mapping of keys, got "
                           f"{type(raw).__name__}")
-    entry = _spelling(raw)
-    if "service_name" in entry:
-        unknown = set(entry) - SERVICE_KEYS
-        if unknown:
-            key = sorted(unknown)[0]
-            raise LaunchError(f"{where}: unknown key '{key}' in a service entry"
-                              f"{did_you_mean(key, sorted(SERVICE_KEYS))}")
-        for key in ("ros_type_name", "gz_req_type_name", "gz_rep_type_name"):
-            if not entry.get(key):
-                raise LaunchError(f"{where}: a service entry needs {key}")
-        ros_type = str(entry["ros_type_name"])
-        return Entry(str(entry["service_name"]), str(entry["service_name"]), ros_type,
-                     sim_type(f"{entry['gz_req_type_name']}|{entry['gz_rep_type_name']}"),
+    if "service_name" in raw:
+        service = build(ServiceKeys, raw, where)
+        return Entry(service.service_name, service.service_name, service.ros_type_name,
+                     sim_type(f"{service.gz_req_type_name}|{service.gz_rep_type_name}"),
                      service=True, where=where)
-    unknown = set(entry) - TOPIC_KEYS
-    if unknown:
-        key = sorted(unknown)[0]
-        raise LaunchError(f"{where}: unknown key '{key}'"
-                          f"{did_you_mean(key, sorted(TOPIC_KEYS | SERVICE_KEYS))}")
-    if "topic_name" in entry and ("ros_topic_name" in entry or "gz_topic_name" in entry):
+    values = dict(raw)
+    if isinstance(values.get("direction"), str):  # ros_gz reads it in any case
+        values["direction"] = values["direction"].upper()
+    keys = build(TopicKeys, values, where)
+    if keys.topic_name and (keys.ros_topic_name or keys.gz_topic_name):
         raise LaunchError(f"{where}: topic_name names both sides; it cannot be combined with "
                           "ros_topic_name or gz_topic_name")
-    ros_name = entry.get("topic_name") or entry.get("ros_topic_name") or \
-        entry.get("gz_topic_name")
-    sim_name = entry.get("topic_name") or entry.get("gz_topic_name") or \
-        entry.get("ros_topic_name")
-    if not ros_name:
+    ros_name = keys.topic_name or keys.ros_topic_name or keys.gz_topic_name
+    sim_name = keys.topic_name or keys.gz_topic_name or keys.ros_topic_name
+    if not ros_name or not sim_name:
         raise LaunchError(f"{where}: no topic: give topic_name, or ros_topic_name and/or "
                           "gz_topic_name")
-    for key in ("ros_type_name", "gz_type_name"):
-        if not entry.get(key):
-            raise LaunchError(f"{where}: {key} is required")
-    direction = str(entry.get("direction", "BIDIRECTIONAL")).upper()
-    if direction not in DIRECTIONS:
-        raise LaunchError(f"{where}: direction '{entry['direction']}' is not one of "
-                          f"{', '.join(DIRECTIONS)}{did_you_mean(direction, DIRECTIONS)}")
-    queues = {}
-    for key in ("subscriber_queue", "publisher_queue"):
-        value = entry.get(key, 10)
-        if not isinstance(value, int) or isinstance(value, bool) or value < 1:
-            raise LaunchError(f"{where}: {key} must be a whole number >= 1, got {value!r}")
-        queues[key] = value
-    lazy = entry.get("lazy", False)
-    if not isinstance(lazy, bool):
-        raise LaunchError(f"{where}: lazy must be true or false, got {lazy!r}")
-    return Entry(str(ros_name), str(sim_name), str(entry["ros_type_name"]),
-                 sim_type(str(entry["gz_type_name"])), direction, lazy,
-                 queues["subscriber_queue"], queues["publisher_queue"], where=where)
+    return Entry(ros_name, sim_name, keys.ros_type_name, sim_type(keys.gz_type_name),
+                 keys.direction, keys.lazy, keys.subscriber_queue, keys.publisher_queue,
+                 where=where)
 
 
 def load_file(path: str, parameters: Mapping[str, Any], sim_type: Callable[[str], str],

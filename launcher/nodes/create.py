@@ -12,19 +12,40 @@ the sim's reason, 2 on bad arguments.
 
 from __future__ import annotations
 
-import math
 import sys
 import time
+from dataclasses import asdict, dataclass
 from typing import Any
 
-from launcher.errors import LaunchError, UsageError, reported
+from launcher.errors import LaunchError, ParseError, UsageError, did_you_mean, reported
+from launcher.schema import Kind, attr, build, declared_fields, frontend_name
 
-FLAGS = {"-world": "world", "-file": "file", "-string": "string", "-param": "param",
-         "-topic": "topic", "-name": "name", "-entity": "name", "-allow_renaming":
-         "allow_renaming", "-x": "x", "-y": "y", "-z": "z", "-R": "R", "-P": "P", "-Y": "Y",
-         "-timeout": "timeout"}
-NUMBERS = ("x", "y", "z", "R", "P", "Y", "timeout")
 SOURCES = ("file", "string", "param", "topic")
+
+
+@dataclass
+class Options:
+    """create's options: ros_gz_sim's flags (`-name`, the classic spawner's `-entity`), the
+    same names as `-p` parameters."""
+
+    world: str = attr(Kind.TEXT, "", doc="The world to spawn into (default: the one sim).")
+    file: str = attr(Kind.TEXT, "", doc="A description file, model:// or package:// URI.")
+    string: str = attr(Kind.TEXT, "", doc="The description itself.")
+    param: str = attr(Kind.TEXT, "", doc="A parameter of this node holding it.")
+    topic: str = attr(Kind.TEXT, "", doc="A latched std_msgs/String topic holding it.")
+    name: str = attr(Kind.TEXT, "", aliases=("entity",))
+    allow_renaming: bool = attr(Kind.BOOL, False)
+    x: float = attr(Kind.FLOAT, 0.0)
+    y: float = attr(Kind.FLOAT, 0.0)
+    z: float = attr(Kind.FLOAT, 0.0)
+    R: float = attr(Kind.FLOAT, 0.0)
+    P: float = attr(Kind.FLOAT, 0.0)
+    Y: float = attr(Kind.FLOAT, 0.0)
+    timeout: float = attr(Kind.FLOAT, 30.0, minimum=0.0, doc="Seconds to wait for the sim.")
+
+
+NAMES = {spelling for f, spec in declared_fields(Options)
+         for spelling in (frontend_name(f, spec), *spec.aliases)}
 
 
 class SimNotFound(LaunchError):
@@ -32,46 +53,36 @@ class SimNotFound(LaunchError):
 
 
 def parse(argv: list[str], parameters: dict[str, Any]) -> dict[str, Any]:
-    options: dict[str, Any] = {key: value for key, value in parameters.items()
-                               if key in set(FLAGS.values()) or key == "entity"}
-    if "entity" in options:
-        options.setdefault("name", options.pop("entity"))
+    """The options from `-p` parameters, then the command line's flags over them."""
+    values: dict[str, Any] = {k: v for k, v in parameters.items() if k in NAMES}
     words = list(argv)
     while words:
         word = words.pop(0)
         if word in ("-h", "--help"):
             print(__doc__)
             raise SystemExit(0)
-        key = FLAGS.get(word)
-        if key is None:
-            close = [f for f in FLAGS if f.lstrip("-").lower() == word.lstrip("-").lower()]
-            hint = f"; did you mean {close[0]}?" if close else ""
-            raise UsageError(f"unknown option '{word}'{hint} (options: {', '.join(FLAGS)})")
-        if key == "allow_renaming":
-            if words and words[0].lower() in ("true", "false", "1", "0"):
-                options[key] = words.pop(0).lower() in ("true", "1")
-            else:
-                options[key] = True
+        key = word[1:] if word.startswith("-") else ""
+        if key not in NAMES:
+            flags = sorted(f"-{name}" for name in NAMES)
+            raise UsageError(f"unknown option '{word}'{did_you_mean(word, flags)} (options: "
+                             f"{', '.join(flags)})")
+        if key == "allow_renaming":  # a flag, or a flag with true/false after it
+            lowered = words[0].lower() if words else ""
+            values[key] = words.pop(0) if lowered in ("true", "false", "1", "0") else True
             continue
         if not words:
             raise UsageError(f"{word} needs a value")
-        options[key] = words.pop(0)
-    for key in NUMBERS:
-        if key in options:
-            try:
-                options[key] = float(options[key])
-            except (TypeError, ValueError):
-                raise UsageError(f"-{key} must be a number, got '{options[key]}'") from None
-            if not math.isfinite(options[key]):
-                raise UsageError(f"-{key} must be finite, got {options[key]}")
-    given = [key for key in SOURCES if options.get(key) not in (None, "")]
+        values[key] = words.pop(0)
+    try:
+        options = asdict(build(Options, values))
+    except ParseError as exc:
+        raise UsageError(f"-{exc.message}") from None
+    given = [key for key in SOURCES if options[key]]
     if not given:
         raise UsageError("nothing to spawn: give one of -file, -string, -param or -topic")
     if len(given) > 1:
         raise UsageError(f"give one source, not {', '.join('-' + g for g in given)}")
     options["source"] = given[0]
-    if isinstance(options.get("allow_renaming"), str):
-        options["allow_renaming"] = options["allow_renaming"].lower() in ("true", "1")
     return options
 
 

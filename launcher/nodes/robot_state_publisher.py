@@ -16,6 +16,7 @@ from __future__ import annotations
 import struct
 import sys
 import threading
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -26,24 +27,30 @@ from launcher.bus.wire import JointStateReader, TfLayout, pack_tf
 from launcher.errors import LaunchError
 from launcher.nodes.kinematics import Tree
 from launcher.nodes.running import run_node
+from launcher.schema import Kind, attr, build
+
+
+@dataclass
+class Parameters:
+    """robot_state_publisher's parameters, ROS 2's names and ranges."""
+
+    robot_description: str = attr(Kind.TEXT, "", doc="The URDF (required).")
+    publish_frequency: float = attr(Kind.FLOAT, 20.0, minimum=0.0, maximum=1000.0,
+                                    doc="The most /tf messages per second, Hz.")
+    ignore_timestamp: bool = attr(Kind.BOOL, False)
+    frame_prefix: str = attr(Kind.TEXT, "")
 
 
 class RobotStatePublisher:
     def __init__(self, node: Node) -> None:
         self.node = node
         self.log = node.get_logger()
-        frequency = node.declare_parameter("publish_frequency", 20.0).value
-        try:
-            self.frequency = float(frequency)
-        except (TypeError, ValueError):
-            raise LaunchError(f"publish_frequency must be a number, got {frequency!r}") from None
-        if not 0.0 <= self.frequency <= 1000.0:
-            raise LaunchError(f"publish_frequency must be between 0 and 1000 Hz, got "
-                              f"{self.frequency:g}")
-        self.ignore_timestamp = bool(node.declare_parameter("ignore_timestamp", False).value)
-        self.prefix = str(node.declare_parameter("frame_prefix", "").value or "")
-        description = node.declare_parameter("robot_description", "").value
-        if not node.has_parameter("robot_description") or not description:
+        # other parameters (use_sim_time, …) are the node's, not this publisher's
+        params = build(Parameters, node.parameters, unknown="ignore")
+        self.frequency, self.ignore_timestamp = params.publish_frequency, params.ignore_timestamp
+        self.prefix = params.frame_prefix
+        description = params.robot_description
+        if not description:
             raise LaunchError("parameter robot_description is missing or empty: give the URDF "
                               "(-p robot_description:=… or, in a launch file, "
                               "$(command 'xacro robot.xacro'))")

@@ -194,11 +194,12 @@ def _read_until(proc, needle: str) -> str:
     ("- topic_name: /a\n  ros_topic_name: /b\n  ros_type_name: std_msgs/msg/Bool\n"
      "  gz_type_name: gz.msgs.Boolean\n", "cannot be combined with ros_topic_name"),
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bool\n  gz_type_name: gz.msgs.Boolean\n"
-     "  direction: SIDEWAYS\n", "direction 'SIDEWAYS' is not one of"),
+     "  direction: SIDEWAYS\n",
+     "direction: expected one of BIDIRECTIONAL, GZ_TO_ROS, ROS_TO_GZ, got 'SIDEWAYS'"),
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bool\n  gz_type_name: gz.msgs.Boolean\n"
-     "  lazy: maybe\n", "lazy must be true or false"),
+     "  lazy: maybe\n", "entry 1: lazy: expected true or false, got 'maybe'"),
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bool\n  gz_type_name: gz.msgs.Boolean\n"
-     "  publisher_queue: 0\n", "publisher_queue must be a whole number >= 1"),
+     "  publisher_queue: 0\n", "entry 1: publisher_queue: expected a number ≥ 1, got 0"),
     ("- topic_name: /a\n  ros_type_name: tf2_msgs/msg/TFMessage\n"
      "  gz_type_name: gz.msgs.Pose_V\n  direction: ROS_TO_GZ\n", "ROS_TO_GZ is not supported"),
     ("- [1, 2]\n", "an entry must be a mapping"),

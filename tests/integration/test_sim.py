@@ -207,8 +207,9 @@ def test_create_without_a_sim_exits_1_after_its_timeout(sim_ws):
 @pytest.mark.parametrize("args, expected", [
     ([], "nothing to spawn: give one of -file, -string, -param or -topic"),
     (["-file", "a.urdf", "-string", "<robot/>"], "give one source, not -file, -string"),
-    (["-fle", "a.urdf"], "unknown option '-fle'"),
-    (["-file", "a.urdf", "-x", "nan"], "-x must be finite"),
+    (["-fle", "a.urdf"], "unknown option '-fle' (did you mean '-file'"),
+    (["-file", "a.urdf", "-x", "nan"], "-x: expected a finite number, got 'nan'"),
+    (["-file", "a.urdf", "-timeout", "-1"], "-timeout: expected a number ≥ 0, got -1"),
 ])
 def test_create_bad_arguments(sim_ws, args, expected):
     done = run_py(sim_ws, "c.py", "from launcher.nodes.create import main; "

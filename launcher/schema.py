@@ -1,0 +1,158 @@
+"""Declared fields: a record (an action, a bridge entry, a node's options or parameters, a
+sim plugin's parameters) states its fields once, as data, and one builder turns what a user
+wrote into it, with the same checks and messages everywhere.
+
+`attr(...)` goes into a dataclass field's metadata; `build(cls, values, where)` makes a record
+from values already read (YAML, a command line, XML children, ROS parameters): unknown keys
+are refused (or warned about) with "did you mean", required ones must be there, and each value
+is coerced to its kind, leniently about spelling and strictly about meaning. This module
+imports only `errors`: every layer may declare with it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import math
+from collections.abc import Callable, Mapping
+from typing import Any, NamedTuple, TypeVar
+
+from launcher.errors import ParseError, did_you_mean
+
+
+class Kind(enum.Enum):
+    TEXT = "text"  # substitution text (in launch files), text elsewhere
+    NAME = "name"  # plain text, taken as written (names that must be known before running)
+    BOOL = "bool"  # true/false, possibly from a substitution
+    FLOAT = "float"  # a number, possibly from a substitution
+    INT = "int"
+    COMMAND = "command"  # a command line: split like a shell, substitutions not split
+    ENTRIES = "entries"  # a list of nested records (env, arg, keep, choice, …)
+    ACTIONS = "actions"  # a list of actions given under this attribute (on_exit, on_start)
+    CHILDREN = "children"  # the tag's children
+    NAMES = "names"  # a list of texts (a repeatable element, as a plugin's <left_joint>)
+
+
+class Attr(NamedTuple):
+    kind: Kind
+    name: str | None = None  # the spelling users write when it differs from the field name
+    aliases: tuple[str, ...] = ()
+    required: bool = False
+    doc: str = ""
+    entry: type | None = None  # the record type of ENTRIES
+    minimum: float | None = None  # for numbers: the smallest valid value
+    choices: tuple[str, ...] = ()  # for TEXT: the valid literal values
+    maximum: float | None = None  # for numbers: the largest valid value
+
+
+LISTS = (Kind.ENTRIES, Kind.ACTIONS, Kind.CHILDREN, Kind.NAMES)
+R = TypeVar("R")
+
+
+def attr(kind: Kind, default: Any = None, **spec: Any) -> Any:
+    """A dataclass field carrying its declaration."""
+    meta = {"launch": Attr(kind, **spec)}
+    if kind in LISTS and default is None:
+        return dataclasses.field(default_factory=list, metadata=meta)
+    return dataclasses.field(default=default, metadata=meta)
+
+
+def declared_fields(cls: type) -> list[tuple[dataclasses.Field, Attr]]:
+    return [(f, f.metadata["launch"]) for f in dataclasses.fields(cls) if "launch" in f.metadata]
+
+
+def frontend_name(f: dataclasses.Field, spec: Attr) -> str:
+    return spec.name or f.name
+
+
+# --- coercion: lenient about spelling, strict about meaning --------------------------------
+_TRUE = {"true", "1", "yes", "on"}
+_FALSE = {"false", "0", "no", "off"}
+
+
+def coerce(kind: Kind, text: str, what: str, spec: Attr | None = None) -> Any:
+    """Turn `text` into the value of `kind`, or raise ParseError saying what was expected."""
+    value: Any
+    if kind is Kind.BOOL:
+        low = text.strip().lower()
+        if low in _TRUE:
+            return True
+        if low in _FALSE:
+            return False
+        raise ParseError(f"{what}: expected true or false, got '{text}'")
+    if kind in (Kind.FLOAT, Kind.INT):
+        try:
+            value = float(text) if kind is Kind.FLOAT else int(text.strip())
+        except ValueError:
+            expected = "a number" if kind is Kind.FLOAT else "a whole number"
+            raise ParseError(f"{what}: expected {expected}, got '{text}'") from None
+        if isinstance(value, float) and not math.isfinite(value):
+            raise ParseError(f"{what}: expected a finite number, got '{text}'")
+        _check_range(value, what, spec, text.strip())
+        return value
+    if spec is not None and spec.choices and text not in spec.choices:
+        raise ParseError(f"{what}: expected one of {', '.join(spec.choices)}, got '{text}'"
+                         f"{did_you_mean(text, spec.choices)}")
+    return text
+
+
+def _check_range(value: float, what: str, spec: Attr | None, shown: str) -> None:
+    if spec is None:
+        return
+    for bound, sign, outside in ((spec.minimum, "≥", value < (spec.minimum or 0)),
+                                 (spec.maximum, "≤", value > (spec.maximum or 0))):
+        if bound is not None and outside:
+            nice = int(bound) if float(bound).is_integer() else bound
+            raise ParseError(f"{what}: expected a number {sign} {nice}, got {shown}")
+
+
+def value_of(kind: Kind, value: Any, what: str, spec: Attr | None = None) -> Any:
+    """A value read from YAML, a command line or a parameter, as `kind`: text is coerced,
+    typed values are checked (a YAML `true` is no number; 3 is a fine float)."""
+    if isinstance(value, str):
+        return coerce(kind, value, what, spec)
+    if kind is Kind.BOOL and isinstance(value, bool):
+        return value
+    if kind in (Kind.FLOAT, Kind.INT) and isinstance(value, int | float) and \
+            not isinstance(value, bool):
+        if kind is Kind.INT and not float(value).is_integer():
+            raise ParseError(f"{what}: expected a whole number, got {value!r}")
+        return coerce(kind, str(int(value) if kind is Kind.INT else value), what, spec)
+    if kind is Kind.NAMES and isinstance(value, list | tuple):
+        return [str(item) for item in value]
+    if kind in (Kind.TEXT, Kind.NAME) and isinstance(value, int | float | bool):
+        return coerce(kind, str(value).lower() if isinstance(value, bool) else str(value),
+                      what, spec)
+    expected = {Kind.BOOL: "true or false", Kind.FLOAT: "a number", Kind.INT: "a whole number",
+                Kind.NAMES: "a list"}.get(kind, "text")
+    raise ParseError(f"{what}: expected {expected}, got {value!r}")
+
+
+def build(cls: type[R], values: Mapping[str, Any], where: str = "", *,
+          unknown: str = "error", warn: Callable[[str], None] | None = None) -> R:
+    """A `cls` record from `values` keyed by the spellings users write. `unknown`: "error"
+    refuses a key that is not declared, "warn" tells `warn` and goes on, "ignore" skips it."""
+    prefix = f"{where}: " if where else ""
+    fields = declared_fields(cls)
+    spellings = {}
+    for f, spec in fields:
+        for spelling in (frontend_name(f, spec), *spec.aliases):
+            spellings[spelling] = (f, spec)
+    valid = [frontend_name(f, spec) for f, spec in fields]
+    kwargs: dict[str, Any] = {}
+    for key, value in values.items():
+        if key not in spellings:
+            if unknown == "ignore":
+                continue
+            message = (f"{prefix}unknown key '{key}'{did_you_mean(str(key), valid)}; "
+                       f"expected {', '.join(valid)}")
+            if unknown == "warn" and warn is not None:
+                warn(f"{message}; it is ignored")
+                continue
+            raise ParseError(message)
+        f, spec = spellings[key]
+        kwargs[f.name] = value_of(spec.kind, value, f"{prefix}{key}", spec)
+    for f, spec in fields:
+        if spec.required and f.name not in kwargs:
+            raise ParseError(f"{prefix}{frontend_name(f, spec)} is required")
+    return cls(**kwargs)
