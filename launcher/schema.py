@@ -109,6 +109,8 @@ def _check_range(value: float, what: str, spec: Attr | None, shown: str) -> None
 def value_of(kind: Kind, value: Any, what: str, spec: Attr | None = None) -> Any:
     """A value read from YAML, a command line or a parameter, as `kind`: text is coerced,
     typed values are checked (a YAML `true` is no number; 3 is a fine float)."""
+    if kind is Kind.NAMES and isinstance(value, str):
+        return [value]  # a repeatable element given once
     if isinstance(value, str):
         return coerce(kind, value, what, spec)
     if kind is Kind.BOOL and isinstance(value, bool):

@@ -115,8 +115,10 @@ class World:
             plugin.spec_prefix = f"{model.name}/"
             try:
                 plugin.prepare(self.spec)
-            except LaunchError as exc:
-                self.transport.logger.error(f"{exc}; entity '{model.name}' runs without it")
+            except Exception as exc:  # a plugin's bug or bad config: the world still loads
+                message = str(exc) if isinstance(exc, LaunchError) else \
+                    f"plugin {plugin.label}: {type(exc).__name__}: {exc}"
+                self.transport.logger.error(f"{message}; entity '{model.name}' runs without it")
                 entity.plugins.remove(plugin)
         self.entities[model.name] = entity
 

@@ -393,6 +393,7 @@ def test_classic_gazebo_ros_diff_drive_speaks_ros_types(params, cmd_topic, odom_
         run(world, 100)
     odometry = recorder.published[odom_topic][-1]
     assert odometry.pose.pose.position.x > 0.5  # nav_msgs/Odometry's nesting
+    assert not recorder.messages("warning"), recorder.logged  # every parameter known
     assert odometry.child_frame_id == "base_link" and odometry.header.frame_id == "odom"
     if "publishOdomTF" in params:
         assert recorder.published["/tf"][-1].transforms[0].child_frame_id == "base_link"
@@ -562,3 +563,25 @@ def test_a_create_without_a_pose_puts_an_sdf_model_at_its_own_pose():
     assert spawn_pose(pose(), template) == ([0, 0, 0.5], [1, 0, 0, 0])  # the model's <pose>
     assert spawn_pose(pose(w=1.0), template) == ([0, 0, 0.5], [1, 0, 0, 0])
     assert spawn_pose(pose(x=6.0), template) == ([6.0, 0, 0], [1, 0, 0, 0])  # as given
+
+
+def test_a_systems_parameters_are_declared_a_typo_warns_and_a_bad_value_is_an_error(tmp_path):
+    plugin = """<plugin filename="gz-sim-diff-drive-system" name="gz::sim::systems::DiffDrive">
+        <left_joint>l</left_joint><right_joint>r</right_joint>{extra}</plugin>"""
+    wheels = "".join(f"""<link name="{side}_wheel"/><joint name="{side}" type="revolute">
+        <parent>link</parent><child>{side}_wheel</child></joint>""" for side in "lr")
+    model = box_model("bot", extra=wheels + plugin)
+    world, recorder = make_world(tmp_path, world_text(model.format(
+        extra="<wheel_seperation>0.5</wheel_seperation>")))
+    assert [type(p).__name__ for p in world.entities["bot"].plugins] == ["DiffDrive"]
+    warning = next(m for m in recorder.messages("warning") if "wheel_seperation" in m)
+    assert "world.sdf:" in warning and "did you mean 'wheel_separation'" in warning
+    world, recorder = make_world(tmp_path, world_text(model.format(
+        extra="<wheel_radius>-1</wheel_radius>")))
+    error = next(m for m in recorder.messages("error") if "wheel_radius" in m)
+    assert "plugin gz::sim::systems::DiffDrive: wheel_radius: expected a number ≥ 1e-06, got -1" \
+        in error and "world.sdf:" in error
+    assert world.entities["bot"].plugins == []  # the entity runs without it
+    world, recorder = make_world(tmp_path, world_text(model.replace(
+        "<right_joint>r</right_joint>", "<right_joint>l</right_joint>").format(extra="")))
+    assert any("joint 'l' is given more than once" in m for m in recorder.messages("error"))

@@ -31,10 +31,13 @@ import os
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
-from launcher.errors import LaunchError, did_you_mean
+from launcher.errors import LaunchError, ParseError, did_you_mean
+from launcher.schema import Attr, Kind, build, value_of
 from launcher.sim.mjcf import PluginConfig
+
+R = TypeVar("R")
 
 PLUGIN_PATH = "MUJOCO_SIM_PLUGIN_PATH"
 PLUGIN_VARIABLES = (PLUGIN_PATH, "GZ_SIM_SYSTEM_PLUGIN_PATH", "IGN_GAZEBO_SYSTEM_PLUGIN_PATH",
@@ -87,6 +90,7 @@ class Plugin:
 
     next_update = 0.0
     spec_prefix = ""
+    unknown_parameters = "warn"  # Gazebo ignores elements it does not know; launcher says so
 
     def __init__(self, sim: Any, entity: Any, config: PluginConfig) -> None:
         self.sim, self.entity, self.config = sim, entity, config
@@ -136,18 +140,36 @@ class Plugin:
 
     def number(self, name: str, default: float, low: float = -math.inf,
                high: float = math.inf) -> float:
+        """One number of the configuration (for plugins that do not declare theirs)."""
         raw = self.text(name)
         if raw is None:
             return default
+        bounds = Attr(Kind.FLOAT, minimum=None if math.isinf(low) else low,
+                      maximum=None if math.isinf(high) else high)
         try:
-            value = float(raw)
-        except ValueError:
-            raise PluginError(f"{self.config.where}: plugin {self.label}: <{name}> must be a "
-                              f"number, got '{raw}'") from None
-        if not (low <= value <= high) or math.isnan(value):
-            raise PluginError(f"{self.config.where}: plugin {self.label}: <{name}> must be in "
-                              f"[{low}, {high}], got {value}")
-        return value
+            return float(value_of(Kind.FLOAT, raw, f"<{name}>", bounds))
+        except ParseError as exc:
+            raise PluginError(f"{self.config.where}: plugin {self.label}: {exc.message}") \
+                from None
+
+    def parameters(self, cls: type[R]) -> R:
+        """The configuration's elements as a record of `cls`'s declared fields (a repeated
+        element is a list); unknown elements are warned about (`unknown_parameters`)."""
+        values: dict[str, Any] = {}
+        for child in self.config.element:
+            text = (child.text or "").strip()
+            if child.tag in values:
+                previous = values[child.tag]
+                values[child.tag] = [*(previous if isinstance(previous, list) else [previous]),
+                                     text]
+            else:
+                values[child.tag] = text
+        try:
+            return build(cls, values, f"{self.config.where}: plugin {self.label}",
+                         unknown=self.unknown_parameters,
+                         warn=self.sim.transport.logger.warning)
+        except ParseError as exc:
+            raise PluginError(exc.message) from None
 
     def topic(self, name: str | None, default: str) -> str:
         """Relative names live under the entity (`/model/<name>/…`), absolute ones as given."""

@@ -16,9 +16,10 @@ update_rate; joint_name.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
+from launcher.schema import Kind, attr
 from launcher.sim.plugins.diff_drive import DiffDrive, _yaw_quat
 from launcher.sim.plugins.joint_state import JointStatePublisher
 
@@ -28,6 +29,51 @@ DIFF_DRIVE = {("leftJoint", "left_joint"): "left_joint",
               ("wheelSeparation", "wheel_separation"): "wheel_separation",
               ("torque", "max_wheel_torque"): "max_wheel_torque",
               ("updateRate", "update_rate"): "odom_publish_frequency"}
+
+
+@dataclass
+class ClassicDiffDriveParameters:
+    """libgazebo_ros_diff_drive.so's parameters, ROS 1's and ROS 2's (`ros` holds ROS 2's
+    namespace and remappings); the ones the sim has no use for are accepted quietly."""
+
+    leftJoint: list[str] = attr(Kind.NAMES)  # noqa: N815 - ROS 1's spelling
+    rightJoint: list[str] = attr(Kind.NAMES)  # noqa: N815
+    wheelSeparation: float | None = attr(Kind.FLOAT, None, minimum=1e-6)  # noqa: N815
+    wheelDiameter: float | None = attr(Kind.FLOAT, None, minimum=1e-6)  # noqa: N815
+    torque: float | None = attr(Kind.FLOAT, None, minimum=0.0)
+    wheelTorque: float | None = attr(Kind.FLOAT, None, minimum=0.0)  # noqa: N815
+    wheelAcceleration: float | None = attr(Kind.FLOAT, None)  # noqa: N815
+    commandTopic: str = attr(Kind.TEXT, "")  # noqa: N815
+    odometryTopic: str = attr(Kind.TEXT, "")  # noqa: N815
+    odometryFrame: str = attr(Kind.TEXT, "")  # noqa: N815
+    robotBaseFrame: str = attr(Kind.TEXT, "")  # noqa: N815
+    odometrySource: str = attr(Kind.TEXT, "")  # noqa: N815
+    publishOdomTF: bool | None = attr(Kind.BOOL, None)  # noqa: N815
+    publishWheelTF: bool = attr(Kind.BOOL, False)  # noqa: N815
+    publishWheelJointState: bool = attr(Kind.BOOL, False)  # noqa: N815
+    publishTf: bool = attr(Kind.BOOL, True)  # noqa: N815
+    updateRate: float | None = attr(Kind.FLOAT, None, minimum=0.0)  # noqa: N815
+    robotNamespace: str = attr(Kind.TEXT, "")  # noqa: N815
+    rosDebugLevel: str = attr(Kind.TEXT, "")  # noqa: N815
+    legacyMode: bool = attr(Kind.BOOL, False)  # noqa: N815
+    left_joint: list[str] = attr(Kind.NAMES)
+    right_joint: list[str] = attr(Kind.NAMES)
+    wheel_separation: list[str] = attr(Kind.NAMES)  # several pairs in ROS 2
+    wheel_diameter: list[str] = attr(Kind.NAMES)
+    max_wheel_torque: float | None = attr(Kind.FLOAT, None, minimum=0.0)
+    max_wheel_acceleration: float | None = attr(Kind.FLOAT, None)
+    num_wheel_pairs: int = attr(Kind.INT, 1, minimum=1)
+    publish_odom: bool = attr(Kind.BOOL, True)
+    publish_odom_tf: bool | None = attr(Kind.BOOL, None)
+    publish_wheel_tf: bool = attr(Kind.BOOL, False)
+    odometry_frame: str = attr(Kind.TEXT, "")
+    robot_base_frame: str = attr(Kind.TEXT, "")
+    odometry_source: str = attr(Kind.TEXT, "")
+    update_rate: float | None = attr(Kind.FLOAT, None, minimum=0.0)
+    covariance_x: float = attr(Kind.FLOAT, 0.0)
+    covariance_y: float = attr(Kind.FLOAT, 0.0)
+    covariance_yaw: float = attr(Kind.FLOAT, 0.0)
+    ros: str = attr(Kind.TEXT, "")
 
 
 def _ros_topic(plugin: Any, ros1: str, default: str) -> str:
@@ -45,17 +91,11 @@ def _ros_topic(plugin: Any, ros1: str, default: str) -> str:
     return f"/{namespace}/{name}" if namespace else f"/{name}"
 
 
-def _flag(plugin: Any, names: tuple[str, ...], default: bool) -> bool:
-    for name in names:
-        value = plugin.text(name)
-        if value is not None:
-            return value.lower() in ("true", "1")
-    return default
-
-
 class ClassicDiffDrive(DiffDrive):
     def prepare(self, spec: Any) -> None:
+        self.classic = self.parameters(ClassicDiffDriveParameters)  # warns what it does not know
         self.config = replace(self.config, element=self._translated(self.config.element))
+        self.unknown_parameters = "ignore"  # the classic names, said above
         super().prepare(spec)
 
     @staticmethod
@@ -77,11 +117,13 @@ class ClassicDiffDrive(DiffDrive):
 
     def load(self) -> None:
         transport = self.sim.transport
-        self.frame_id = self.text("odometryFrame") or self.text("odometry_frame") or "odom"
-        self.child_frame_id = self.text("robotBaseFrame") or self.text("robot_base_frame") \
-            or "base_footprint"
-        self.publish_odom = _flag(self, ("publish_odom",), True)
-        self.publish_tf = _flag(self, ("publishOdomTF", "publish_odom_tf"), True)
+        classic = self.classic
+        self.frame_id = classic.odometryFrame or classic.odometry_frame or "odom"
+        self.child_frame_id = classic.robotBaseFrame or classic.robot_base_frame or \
+            "base_footprint"
+        self.publish_odom = classic.publish_odom
+        self.publish_tf = next((v for v in (classic.publishOdomTF, classic.publish_odom_tf)
+                                if v is not None), True)
         self.odom_pub = transport.publisher("nav_msgs/msg/Odometry",
                                             _ros_topic(self, "odometryTopic", "odom"))
         self.tf_pub = transport.publisher("tf2_msgs/msg/TFMessage", "/tf")
@@ -114,7 +156,22 @@ class ClassicDiffDrive(DiffDrive):
                 child_frame_id=self.child_frame_id, transform=transform)]))
 
 
+@dataclass
+class ClassicJointStateParameters:
+    """libgazebo_ros_joint_state_publisher.so's parameters, ROS 1's and ROS 2's."""
+
+    jointName: str = attr(Kind.TEXT, "")  # noqa: N815 - ROS 1's, comma separated
+    updateRate: float | None = attr(Kind.FLOAT, None, minimum=0.0)  # noqa: N815
+    robotNamespace: str = attr(Kind.TEXT, "")  # noqa: N815
+    topicName: str = attr(Kind.TEXT, "")  # noqa: N815
+    joint_name: list[str] = attr(Kind.NAMES)
+    update_rate: float = attr(Kind.FLOAT, 50.0, minimum=0.0)
+    ros: str = attr(Kind.TEXT, "")
+
+
 class ClassicJointStates(JointStatePublisher):
+    declared = ClassicJointStateParameters  # type: ignore[assignment]
+
     def prepare(self, spec: Any) -> None:
         element = ET.Element("plugin", dict(self.config.element.attrib))
         element.extend(list(self.config.element))

@@ -17,40 +17,69 @@ instead) and `max_wheel_torque` (none; a limit on light wheels can make the serv
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import mujoco
 
+from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
 
 CONTROL_PERIOD = 0.01  # s of sim time between acceleration-limited control updates
 
 
+@dataclass
+class Parameters:
+    """gz-sim-diff-drive-system's parameters, and launcher's own (see the module text)."""
+
+    left_joint: list[str] = attr(Kind.NAMES, required=True)
+    right_joint: list[str] = attr(Kind.NAMES, required=True)
+    wheel_separation: float = attr(Kind.FLOAT, 1.0, minimum=1e-6)
+    wheel_radius: float = attr(Kind.FLOAT, 0.2, minimum=1e-6)
+    odom_publish_frequency: float = attr(Kind.FLOAT, 50.0, minimum=0.0)
+    topic: str = attr(Kind.TEXT, "")
+    odom_topic: str = attr(Kind.TEXT, "")
+    tf_topic: str = attr(Kind.TEXT, "")
+    frame_id: str = attr(Kind.TEXT, "")
+    child_frame_id: str = attr(Kind.TEXT, "")
+    max_linear_velocity: float = attr(Kind.FLOAT, math.inf)
+    min_linear_velocity: float = attr(Kind.FLOAT, -math.inf)
+    max_angular_velocity: float = attr(Kind.FLOAT, math.inf)
+    min_angular_velocity: float = attr(Kind.FLOAT, -math.inf)
+    max_linear_acceleration: float = attr(Kind.FLOAT, math.inf)
+    min_linear_acceleration: float = attr(Kind.FLOAT, -math.inf)
+    max_angular_acceleration: float = attr(Kind.FLOAT, math.inf)
+    min_angular_acceleration: float = attr(Kind.FLOAT, -math.inf)
+    cmd_vel_timeout: float | None = attr(Kind.FLOAT, None, minimum=0.0)
+    wheel_kv: float = attr(Kind.FLOAT, 0.0, minimum=0.0)
+    wheel_response_time: float = attr(Kind.FLOAT, 0.05, minimum=1e-4)
+    max_wheel_torque: float = attr(Kind.FLOAT, math.inf, minimum=0.0)
+
+
+LIMITS = ("max_linear_velocity", "min_linear_velocity", "max_angular_velocity",
+          "min_angular_velocity", "max_linear_acceleration", "min_linear_acceleration",
+          "max_angular_acceleration", "min_angular_acceleration")
+
+
 class DiffDrive(Plugin):
     def prepare(self, spec: Any) -> None:
-        self.left = self.texts("left_joint")
-        self.right = self.texts("right_joint")
-        if not self.left or not self.right:
-            raise PluginError(f"{self.config.where}: plugin {self.label}: needs <left_joint> and "
-                              "<right_joint>")
+        p = self.params = self.parameters(Parameters)
+        self.left, self.right = p.left_joint, p.right_joint
         joints = self.joint_names(spec)
+        twice = sorted({j for j in self.left + self.right if (self.left + self.right).count(j) > 1})
+        if twice:
+            raise PluginError(f"{self.config.where}: plugin {self.label}: joint "
+                              f"'{twice[0]}' is given more than once")
         for joint in self.left + self.right:
             if joint not in joints:
                 raise PluginError(f"{self.config.where}: plugin {self.label}: joint '{joint}' is "
                                   f"not in the model (joints: {', '.join(joints)})")
-        self.separation = self.number("wheel_separation", 1.0, 1e-6)
-        self.radius = self.number("wheel_radius", 0.2, 1e-6)
-        self.frequency = self.number("odom_publish_frequency", 50.0, 0.0)
+        self.separation, self.radius = p.wheel_separation, p.wheel_radius
+        self.frequency = p.odom_publish_frequency
         watchdog = 0.5 if self.config.filename == "diff_drive" else 0.0
-        self.timeout = self.number("cmd_vel_timeout", watchdog, 0.0)
-        self.kv = self.number("wheel_kv", 0.0, 0.0)
-        self.response = self.number("wheel_response_time", 0.05, 1e-4)
-        torque = self.number("max_wheel_torque", math.inf, 0.0)
-        self.limits = {key: self.number(key, math.inf if key.startswith("max") else -math.inf)
-                       for key in ("max_linear_velocity", "min_linear_velocity",
-                                   "max_angular_velocity", "min_angular_velocity",
-                                   "max_linear_acceleration", "min_linear_acceleration",
-                                   "max_angular_acceleration", "min_angular_acceleration")}
+        self.timeout = p.cmd_vel_timeout if p.cmd_vel_timeout is not None else watchdog
+        self.kv, self.response, torque = p.wheel_kv, p.wheel_response_time, p.max_wheel_torque
+        self.limits = {key: getattr(p, key) for key in LIMITS}
         for joint in self.left + self.right:
             actuator = spec.add_actuator(name=self.in_spec(f"diff_drive_{joint}"),
                                          target=self.in_spec(joint),
@@ -64,15 +93,15 @@ class DiffDrive(Plugin):
 
     def load(self) -> None:
         name = self.entity.name
-        self.frame_id = self.text("frame_id") or f"{name}/odom"
-        self.child_frame_id = self.text("child_frame_id") or f"{name}/{self.root}"
+        self.frame_id = self.params.frame_id or f"{name}/odom"
+        self.child_frame_id = self.params.child_frame_id or f"{name}/{self.root}"
         transport = self.sim.transport
         self.odom_pub = transport.publisher("mujoco_sim/msg/Odometry",
-                                            self.topic(self.text("odom_topic"), "odometry"))
+                                            self.topic(self.params.odom_topic, "odometry"))
         self.tf_pub = transport.publisher("mujoco_sim/msg/PoseV",
-                                          self.topic(self.text("tf_topic"), "tf"))
+                                          self.topic(self.params.tf_topic, "tf"))
         self.cmd_sub = transport.subscribe("mujoco_sim/msg/Twist",
-                                           self.topic(self.text("topic"), "cmd_vel"),
+                                           self.topic(self.params.topic, "cmd_vel"),
                                            self.on_cmd_vel)
 
     def bind(self, model: Any, data: Any) -> None:

@@ -12,11 +12,28 @@ ignored with one warning.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import mujoco
 
+from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
+
+
+@dataclass
+class Parameters:
+    """gz-sim's joint position and joint (velocity) controllers' parameters."""
+
+    joint_name: str = attr(Kind.TEXT, "", required=True)
+    topic: str = attr(Kind.TEXT, "")
+    p_gain: float = attr(Kind.FLOAT, 1.0, minimum=0.0)
+    d_gain: float = attr(Kind.FLOAT, 0.1, minimum=0.0)
+    i_gain: float = attr(Kind.FLOAT, 0.0)  # accepted; MuJoCo's servos have no integral term
+    cmd_max: float = attr(Kind.FLOAT, math.inf)
+    cmd_min: float = attr(Kind.FLOAT, -math.inf)
+    initial_position: float = attr(Kind.FLOAT, 0.0)
+    initial_velocity: float = attr(Kind.FLOAT, 0.0)
 
 
 class _JointServo(Plugin):
@@ -24,7 +41,8 @@ class _JointServo(Plugin):
     default_topic = ""
 
     def prepare(self, spec: Any) -> None:
-        self.joint = self.text("joint_name") or ""
+        self.params = self.parameters(Parameters)
+        self.joint = self.params.joint_name
         joints = self.joint_names(spec)
         if self.joint not in joints:
             raise PluginError(f"{self.config.where}: plugin {self.label}: <joint_name> "
@@ -34,7 +52,7 @@ class _JointServo(Plugin):
                                      target=self.in_spec(self.joint),
                                      trntype=mujoco.mjtTrn.mjTRN_JOINT)
         self.configure(actuator)
-        low, high = self.number("cmd_min", -math.inf), self.number("cmd_max", math.inf)
+        low, high = self.params.cmd_min, self.params.cmd_max
         if math.isfinite(low) or math.isfinite(high):
             actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
             actuator.forcerange = [low if math.isfinite(low) else -1e9,
@@ -49,7 +67,7 @@ class _JointServo(Plugin):
         raise NotImplementedError
 
     def load(self) -> None:
-        topic = self.topic(self.text("topic"), self.default_topic.format(joint=self.joint))
+        topic = self.topic(self.params.topic, self.default_topic.format(joint=self.joint))
         self.subscription = self.sim.transport.subscribe("mujoco_sim/msg/Double", topic,
                                                          self.on_command)
 
@@ -83,11 +101,10 @@ class JointPositionController(_JointServo):
     default_topic = "joint/{joint}/0/cmd_pos"
 
     def configure(self, actuator: Any) -> None:
-        actuator.set_to_position(kp=self.number("p_gain", 1.0, 0.0),
-                                 kv=self.number("d_gain", 0.1, 0.0))
+        actuator.set_to_position(kp=self.params.p_gain, kv=self.params.d_gain)
 
     def initial(self) -> float:
-        return self.number("initial_position", 0.0)
+        return self.params.initial_position
 
 
 class JointVelocityController(_JointServo):
@@ -95,7 +112,7 @@ class JointVelocityController(_JointServo):
     default_topic = "joint/{joint}/cmd_vel"
 
     def configure(self, actuator: Any) -> None:
-        actuator.set_to_velocity(kv=self.number("p_gain", 1.0, 0.0))
+        actuator.set_to_velocity(kv=self.params.p_gain)
 
     def initial(self) -> float:
-        return self.number("initial_velocity", 0.0)
+        return self.params.initial_velocity

@@ -8,30 +8,44 @@ as they are in the URDF.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import mujoco
 
+from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
 
 
+@dataclass
+class Parameters:
+    """gz-sim-joint-state-publisher-system's parameters."""
+
+    joint_name: list[str] = attr(Kind.NAMES)
+    topic: str = attr(Kind.TEXT, "")
+    update_rate: float = attr(Kind.FLOAT, 50.0, minimum=0.0)
+
+
 class JointStatePublisher(Plugin):
+    declared = Parameters
+
     def prepare(self, spec: Any) -> None:
         available = self.joint_names(spec, MOVING)
-        self.joints = self.texts("joint_name") or available
+        self.params = self.parameters(self.declared)
+        self.joints = self.params.joint_name or available
         for joint in self.joints:
             if joint not in available:
                 raise PluginError(f"{self.config.where}: plugin {self.label}: joint '{joint}' is "
                                   f"not a moving joint of the model (joints: "
                                   f"{', '.join(available) or 'none'})")
-        self.rate = self.number("update_rate", 50.0, 0.0)
+        self.rate = self.params.update_rate
 
     def load(self) -> None:
         default = f"/world/{self.sim.world_name}/model/{self.entity.name}/joint_state"
         self.publisher = self.sim.transport.publisher("mujoco_sim/msg/Model",
-                                                      self.topic(self.text("topic"), default))
+                                                      self.topic(self.params.topic, default))
         self.reset()
 
     def bind(self, model: Any, data: Any) -> None:

@@ -7,14 +7,21 @@ and `/world/<w>/model_states` (ModelStates: name, pose, twist, as ROS 1's
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
+from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin
+
+
+@dataclass
+class Parameters:
+    update_rate: float = attr(Kind.FLOAT, 50.0, minimum=0.0, doc="Hz of sim time.")
 
 
 class WorldState(Plugin):
     def load(self) -> None:
-        self.rate = self.number("update_rate", 50.0, 0.0)
+        self.rate = self.parameters(Parameters).update_rate
         transport, world = self.sim.transport, self.sim.world_name
         self.poses = transport.publisher("mujoco_sim/msg/PoseV", f"/world/{world}/pose/info")
         self.states = transport.publisher("mujoco_sim/msg/ModelStates",

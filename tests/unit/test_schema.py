@@ -1,0 +1,56 @@
+"""The one record builder every config of launcher declares with (launcher/schema.py)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import pytest
+
+from launcher.errors import ParseError
+from launcher.schema import Kind, attr, build
+
+
+@dataclass
+class Record:
+    name: str = attr(Kind.TEXT, "", required=True, aliases=("entity",))
+    mode: str = attr(Kind.TEXT, "fast", choices=("fast", "slow"))
+    count: int = attr(Kind.INT, 1, minimum=1)
+    rate: float = attr(Kind.FLOAT, 20.0, minimum=0.0, maximum=1000.0)
+    on: bool = attr(Kind.BOOL, False)
+    joints: list[str] = attr(Kind.NAMES)
+
+
+def test_values_from_yaml_or_text_are_coerced_and_aliases_accepted():
+    record = build(Record, {"entity": "bot", "count": "3", "rate": 5, "on": "yes",
+                            "joints": "left"})
+    assert (record.name, record.count, record.rate, record.on) == ("bot", 3, 5.0, True)
+    assert record.joints == ["left"] and record.mode == "fast"
+    assert build(Record, {"name": "x", "joints": ["a", "b"], "on": True}).joints == ["a", "b"]
+
+
+@pytest.mark.parametrize("values, expected", [
+    ({"name": "x", "cuont": 2}, "f.yaml:3: unknown key 'cuont' (did you mean 'count'?); "
+                                "expected name, mode, count, rate, on, joints"),
+    ({}, "f.yaml:3: name is required"),
+    ({"name": "x", "mode": "fsat"}, "mode: expected one of fast, slow, got 'fsat' "
+                                    "(did you mean 'fast'?)"),
+    ({"name": "x", "count": 0}, "count: expected a number ≥ 1, got 0"),
+    ({"name": "x", "count": 1.5}, "count: expected a whole number, got 1.5"),
+    ({"name": "x", "rate": "2000"}, "rate: expected a number ≤ 1000, got 2000"),
+    ({"name": "x", "rate": "nan"}, "rate: expected a finite number, got 'nan'"),
+    ({"name": "x", "on": "maybe"}, "on: expected true or false, got 'maybe'"),
+    ({"name": "x", "on": 3}, "on: expected true or false, got 3"),
+], ids=["unknown", "required", "choice", "minimum", "whole", "maximum", "nan", "bool", "typed"])
+def test_bad_values_say_where_what_and_what_was_expected(values, expected):
+    with pytest.raises(ParseError) as caught:
+        build(Record, values, "f.yaml:3")
+    assert expected in str(caught.value)
+
+
+def test_unknown_keys_may_be_warned_about_or_ignored():
+    said: list[str] = []
+    record = build(Record, {"name": "x", "extra": 1}, "p", unknown="warn", warn=said.append)
+    assert record.name == "x" and len(said) == 1 and "unknown key 'extra'" in said[0]
+    assert build(Record, {"name": "x", "use_sim_time": True}, unknown="ignore").name == "x"
+    assert math.isclose(build(Record, {"name": "x"}).rate, 20.0)
