@@ -13,17 +13,9 @@ import os
 import signal
 import time
 
+from launcher.runtime.system import group_alive
+
 GRACE_SECONDS = 1.0
-
-
-def _alive(pgid: int) -> bool:
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
 
 
 def _signal_all(groups: set[int], sig: int) -> None:
@@ -39,7 +31,7 @@ def clean_up(groups: set[int]) -> None:
     _signal_all(groups, signal.SIGTERM)
     deadline = time.monotonic() + GRACE_SECONDS
     while groups and time.monotonic() < deadline:
-        groups.intersection_update({g for g in groups if _alive(g)})
+        groups.intersection_update({g for g in groups if group_alive(g)})
         time.sleep(0.02)
     _signal_all(groups, signal.SIGKILL)
 

@@ -109,13 +109,18 @@ class System:
             os.killpg(pgid, sig)
 
     def group_alive(self, pgid: int) -> bool:
-        try:
-            os.killpg(pgid, 0)
-        except ProcessLookupError:
-            return False
-        except PermissionError:
-            return True
+        return group_alive(pgid)
+
+
+def group_alive(pgid: int) -> bool:
+    """Whether any process is left in the group (one we may not signal counts too)."""
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
         return True
+    return True
 
 
 def _channel(tty: bool) -> tuple[int, int]:
