@@ -14,7 +14,7 @@ from typing import Any
 
 import mujoco
 
-from launcher.sim.sdf.context import Context, Origin, read
+from launcher.sim.sdf.context import Context, top_element
 from launcher.sim.sdf.model import BuiltModel, build
 from launcher.sim.sdf.pose import IDENTITY, Pose, parse_pose
 from launcher.sim.sdf.world import SdfWorld, load_world
@@ -31,17 +31,12 @@ class SdfModel:
 
 def load_model(text: str, path: Path | None, environ: Mapping[str, str] | None = None,
                packages: Any = None) -> SdfModel:
-    label = str(path) if path else "<string>"
-    root, version = read(text, label)
-    element = root.find("model")
-    if element is None:
-        found = root.find("world")
-        hint = " (this is a world: run it with `gz sim`)" if found is not None else ""
-        raise root.error(f"no <model> to spawn in this SDF{hint}")
+    element, origin = top_element(text, path, "model", " to spawn (a <world> file is run "
+                                                       "with `gz sim`)")
     context = Context(environ, packages)
     spec = mujoco.MjSpec()
     spec.modelname = element.get("name", "model")
-    built = build(spec, element, Origin(path, version), context, "", IDENTITY)
+    built = build(spec, element, origin, context, "", IDENTITY)
     return SdfModel(spec, built, parse_pose(element.find("pose")), context.warnings)
 
 

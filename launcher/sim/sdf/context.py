@@ -91,6 +91,17 @@ class Context:
 
 
 
+def top_element(text: str, path: Path | None, tag: str,
+                hint: str) -> tuple[Element, Origin]:
+    """The document's `<world>` or `<model>` (`tag`) and where it came from; its absence is
+    an error with `hint` saying what the file is for instead."""
+    root, version = read(text, str(path) if path else "<string>")
+    element = root.find(tag)
+    if element is None:
+        raise root.error(f"no <{tag}> in this SDF file{hint}")
+    return element, Origin(path, version)
+
+
 def read(text: str, label: str) -> tuple[Element, tuple[int, int]]:
     """The `<sdf>` root of a document and its version, checked."""
     root = parse(text, label)

@@ -17,7 +17,7 @@ from typing import Any
 import mujoco
 
 from launcher.sim.mjcf import PluginConfig
-from launcher.sim.sdf.context import Context, Origin, read
+from launcher.sim.sdf.context import Context, Origin, top_element
 from launcher.sim.sdf.elements import check_children, plugin_configs
 from launcher.sim.sdf.model import BuiltModel, build
 from launcher.sim.sdf.pose import IDENTITY, Pose, number, numbers, parse_pose, rotate
@@ -39,14 +39,9 @@ class SdfWorld:
 
 def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None = None,
                packages: Any = None) -> SdfWorld:
-    label = str(path) if path else "<string>"
-    root, version = read(text, label)
-    world = root.find("world")
-    if world is None:
-        raise root.error("no <world> in this SDF file (a model file is spawned with "
-                         "`create -file`, or included in a world)")
+    world, origin = top_element(text, path, "world", " (a model file is spawned with "
+                                "`create -file`, or included in a world)")
     context = Context(environ, packages)
-    origin = Origin(path, version)
     spec = mujoco.MjSpec()
     spec.modelname = world.get("name", "default")
     spec.compiler.degree = False
