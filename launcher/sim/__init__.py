@@ -1,4 +1,10 @@
-"""The MuJoCo world server (see server.py)."""
+"""The MuJoCo world server.
+
+loading.py reads a world file (SDF through sdf/, MJCF through mjcf.py); world.py is the World
+(its entities, spawning, stepping, resets) behind World.from_path; templates.py parses what is
+spawned (URDF, SDF, MJCF); plugins/ are the systems; server.py serves the world on the bus
+through transport.py; pacing.py, snapshot.py, resources.py and transform.py do one thing each.
+"""
 
 import os
 
