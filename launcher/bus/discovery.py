@@ -16,6 +16,8 @@ import socket
 from collections.abc import Mapping
 from pathlib import Path
 
+from launcher.private import private_folder, write_private
+
 ROUTER_VARIABLE = "LAUNCHER_ROUTER"
 CONFIG_VARIABLE = "LAUNCHER_ZENOH_CONFIG"
 TIMEOUT_VARIABLE = "LAUNCHER_BUS_TIMEOUT"  # seconds to wait for the router; default 5
@@ -34,10 +36,9 @@ def free_endpoint(host: str = "127.0.0.1") -> str:
 
 
 def write_run_file(endpoint: str, environ: Mapping[str, str] | None = None) -> Path:
-    folder = run_dir(environ)
-    folder.mkdir(parents=True, exist_ok=True)
+    folder = private_folder(run_dir(environ))  # the router's address: the user's only
     path = folder / f"{os.getpid()}.json"
-    path.write_text(json.dumps({"pid": os.getpid(), "router": endpoint}))
+    write_private(path, json.dumps({"pid": os.getpid(), "router": endpoint}))
     return path
 
 

@@ -15,6 +15,7 @@ from typing import Any
 import yaml
 
 from launcher.errors import ExecutionError, Location
+from launcher.private import private_folder, write_private
 from launcher.runtime.context import LaunchContext
 
 NAMESPACE = "<ros_namespace>"
@@ -115,13 +116,14 @@ def check_params_file(path: Path, where: Location | None) -> None:
 
 
 def write_params_file(folder: Path, stem: str, parameters: dict[str, Any]) -> Path:
-    folder.mkdir(parents=True, exist_ok=True)
+    """A params file, 0600 in a 0700 folder: it may hold the robot description."""
+    private_folder(folder)
     path = folder / f"{stem}.yaml"
     count = 1
     while path.exists():
         count += 1
         path = folder / f"{stem}_{count}.yaml"
     document = {"/**": {"ros__parameters": parameters}}
-    path.write_text(yaml.safe_dump(document, default_flow_style=False, sort_keys=False,
-                                   allow_unicode=True, width=float("inf")), encoding="utf-8")
+    write_private(path, yaml.safe_dump(document, default_flow_style=False, sort_keys=False,
+                                       allow_unicode=True, width=float("inf")))
     return path

@@ -12,6 +12,7 @@ import time
 from pathlib import Path
 from typing import TextIO
 
+from launcher.private import open_private, private_folder
 from launcher.runtime.output import Record, plain
 
 
@@ -28,14 +29,13 @@ class RunLog:
         stamp = time.strftime("%Y-%m-%d-%H-%M-%S", time.localtime(now))
         micros = int(now % 1 * 1_000_000)
         name = f"{stamp}-{micros:06d}-{os.uname().nodename}-{os.getpid()}"
-        self.folder = root / name
-        self.folder.mkdir(parents=True, exist_ok=True)
+        self.folder = private_folder(root / name)  # logs hold what the nodes printed
         latest = root / "latest"
         with contextlib.suppress(OSError):
             if latest.is_symlink() or latest.exists():
                 latest.unlink()
             latest.symlink_to(name)
-        self._launch_log = open(self.folder / "launch.log", "a", encoding="utf-8")  # noqa: SIM115
+        self._launch_log = open_private(self.folder / "launch.log", "a", encoding="utf-8")
         self._own: dict[str, TextIO] = {}
 
     def write(self, record: Record) -> None:
@@ -46,7 +46,7 @@ class RunLog:
         for suffix in (record.stream, "stdout_stderr"):
             key = f"{record.source}-{suffix}"
             if key not in self._own:
-                self._own[key] = open(self.folder / f"{key}.log", "a", encoding="utf-8")  # noqa: SIM115
+                self._own[key] = open_private(self.folder / f"{key}.log", "a", encoding="utf-8")
             self._own[key].write(record.text + "\n")
 
     def flush(self) -> None:

@@ -8,13 +8,14 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2] / "launcher"
 ALLOWED = {
     "schema": {"errors"},
-    "runtime": {"runtime", "errors"},
+    "private": set(),
+    "runtime": {"private", "runtime", "errors"},
     "packages": {"schema", "packages", "errors"},
-    "description": {"schema", "description", "runtime", "packages", "errors"},
+    "description": {"private", "schema", "description", "runtime", "packages", "errors"},
     "frontend": {"schema", "frontend", "description", "runtime", "errors", "compat"},
     "cli": {"schema", "cli", "frontend", "description", "runtime", "packages", "errors",
             "compat", "api", "bus", "nodes"},
-    "bus": {"schema", "bus", "errors", "packages"},
+    "bus": {"private", "schema", "bus", "errors", "packages"},
     "sim": {"schema", "sim", "bus", "errors", "packages"},
     "nodes": {"schema", "nodes", "sim", "bus", "errors", "packages"},
     "compat": {"compat", "api", "packages", "runtime", "errors"},

@@ -1,0 +1,44 @@
+"""What a launch writes is its user's own, whatever the umask: the run file that names the
+router, the run's log folder and files, and the params files that hold robot_description."""
+
+from __future__ import annotations
+
+import json
+import os
+import stat
+
+from tests.conftest import REPO
+
+
+def mode(path) -> int:
+    return stat.S_IMODE(os.stat(path).st_mode)
+
+
+def test_run_file_logs_and_params_files_are_private(ws):
+    ws.own_bus()
+    ws.env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
+    ws.write("private.launch.yaml", """
+    launch:
+      - node:
+          pkg: robot_state_publisher
+          exec: robot_state_publisher
+          output: screen
+          param:
+            - {name: robot_description, value: "<robot name='r'><link name='a'/></robot>"}
+      - timer: {period: 3.0, children: [{shutdown: {reason: enough}}]}
+    """)
+    umask = os.umask(0o022)
+    os.umask(umask)
+    proc = ws.start("launch", "private.launch.yaml", output="out.txt")
+    ws.wait_for_output("robot 'r'", 60, "out.txt")
+    (run_file,) = (ws.root / "run").glob("*.json")
+    assert mode(run_file) == 0o600 and mode(run_file.parent) == 0o700
+    assert json.loads(run_file.read_text())["router"].startswith("tcp/127.0.0.1:")
+    assert proc.wait(60) == 0
+    assert umask & 0o077 != 0o077  # with this umask, files would be readable without care
+    (folder,) = [p for p in (ws.root / "log").iterdir() if p.is_dir() and not p.is_symlink()]
+    assert mode(folder) == 0o700
+    assert mode(folder / "launch.log") == 0o600
+    (params,) = (folder / "params").glob("*.yaml")
+    assert "robot_description" in params.read_text()
+    assert mode(params) == 0o600 and mode(params.parent) == 0o700
