@@ -4,6 +4,10 @@
     service key    <domain>/<service>/<pkg>::srv::dds_::<Type>_/RIHS01_<sha256>
     liveliness     @ros2_lv/<domain>/<zid>/<nid>/<eid>/<NN|MP|MS|SS|SC>/<enclave>/<ns>/<node>
                    [/<topic>/<type>/<hash>/<qos>]        ('/' inside a name is written '%')
+    qos            <reliability>:<durability>:<history>,<depth>:<deadline s>,<ns>:<lifespan
+                   s>,<ns>:<liveliness>,<lease s>,<ns>   (six parts, as rmw_zenoh writes them
+                   since its 2024 releases; a part equal to its default profile is left empty,
+                   so the usual profile is `::,10:,:,:,,`); the older `1:2:1,10` is still read
     attachment     int64 sequence number, int64 source timestamp (ns), a byte 16, 16-byte GID
 """
 
@@ -18,6 +22,35 @@ DOMAIN = int(os.environ.get("ROS_DOMAIN_ID", "0") or 0)
 LIVELINESS = "@ros2_lv"
 NODE, PUBLISHER, SUBSCRIPTION, SERVICE, CLIENT = "NN", "MP", "MS", "SS", "SC"
 _ATTACHMENT = struct.Struct("<qqB16s")
+
+
+# rmw's enums: reliability 1 reliable, 2 best effort; durability 1 transient local,
+# 2 volatile; history 1 keep last, 2 keep all. rmw_zenoh's default profile is reliable,
+# volatile, keep last, with no deadline, lifespan or lease and automatic liveliness.
+_RELIABLE, _BEST_EFFORT, _TRANSIENT_LOCAL, _VOLATILE = "1", "2", "1", "2"
+
+
+def qos_key(reliable: bool, transient_local: bool, depth: int) -> str:
+    """The QoS part of a liveliness token."""
+    reliability = "" if reliable else _BEST_EFFORT
+    durability = _TRANSIENT_LOCAL if transient_local else ""
+    return f"{reliability}:{durability}:,{depth}:,:,:,,"
+
+
+def parse_qos_key(text: str) -> tuple[bool, bool, int] | None:
+    """(reliable, transient local, depth) of a token's QoS part (either form); None if it
+    is not one."""
+    parts = text.split(":")
+    if len(parts) not in (3, 6):
+        return None
+    if len(parts) == 6 and [p.count(",") for p in parts[3:]] != [1, 1, 2]:
+        return None  # deadline s,ns : lifespan s,ns : liveliness,lease s,ns
+    history, _, depth = parts[2].partition(",")
+    if not depth.isdigit() or parts[0] not in ("", "0", _RELIABLE, _BEST_EFFORT) or \
+            parts[1] not in ("", "0", _TRANSIENT_LOCAL, _VOLATILE) or history not in ("", "0",
+                                                                                   "1", "2"):
+        return None
+    return parts[0] != _BEST_EFFORT, parts[1] == _TRANSIENT_LOCAL, int(depth)
 
 
 def dds_type(name: str) -> str:

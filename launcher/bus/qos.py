@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from launcher.bus import keys
+
 
 @dataclass(frozen=True)
 class QoS:
@@ -12,9 +14,14 @@ class QoS:
     transient_local: bool = False  # late subscribers get the last `depth` messages
 
     def key(self) -> str:
-        """rmw_zenoh's QoS text: reliability:durability:history,depth (1 = reliable,
-        transient local, keep last; 2 = best effort, volatile)."""
-        return f"{1 if self.reliable else 2}:{1 if self.transient_local else 2}:1,{self.depth}"
+        """The QoS part of a liveliness token, in rmw_zenoh's layout (keys.py)."""
+        return keys.qos_key(self.reliable, self.transient_local, self.depth)
+
+    @classmethod
+    def from_key(cls, text: str) -> QoS | None:
+        """The QoS another node announced (None if its token's QoS part is not one)."""
+        found = keys.parse_qos_key(text)
+        return None if found is None else cls(found[2], found[0], found[1])
 
 
 def qos_of(value: QoS | int | None) -> QoS:

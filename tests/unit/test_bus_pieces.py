@@ -7,6 +7,7 @@ import pytest
 
 from launcher.bus import keys, names, ros_args
 from launcher.bus.messages import MessageError, build, to_data
+from launcher.bus.qos import QoS
 from launcher.bus.types import UnknownType, registry
 from launcher.errors import LaunchError
 
@@ -73,10 +74,10 @@ def test_keys_follow_rmw_zenoh():
     assert key == f"0/r1/cmd_vel/geometry_msgs::msg::dds_::Twist_/{h}"
     assert keys.split_topic_key(key) == ("/r1/cmd_vel", "geometry_msgs/msg/Twist", h)
     entity = keys.Entity("zid", 1, 2, keys.PUBLISHER, "/r1", "driver", "/r1/cmd_vel",
-                         "geometry_msgs/msg/Twist", h, "1:2:1,10")
+                         "geometry_msgs/msg/Twist", h, QoS().key())
     token = keys.liveliness_key(0, entity)
     assert token == (f"@ros2_lv/0/zid/1/2/MP/%/%r1/driver/%r1%cmd_vel/"
-                     f"geometry_msgs::msg::dds_::Twist_/{h}/1:2:1,10")
+                     f"geometry_msgs::msg::dds_::Twist_/{h}/::,10:,:,:,,")
     assert keys.parse_liveliness(token) == entity
     data = keys.attachment(7, 123, b"g" * 16)
     assert len(data) == 33 and keys.parse_attachment(data) == (7, 123, b"g" * 16)
@@ -136,3 +137,20 @@ def test_package_interfaces(tmp_path, monkeypatch):
     assert types.service_hash("my_interfaces/srv/Spawn").startswith("RIHS01_")
     with pytest.raises(LaunchError, match="Broken.srv: a .srv file needs exactly one '---'"):
         types.service("my_interfaces/srv/Broken")
+
+
+@pytest.mark.parametrize("qos, text", [
+    (QoS(), "::,10:,:,:,,"),  # rmw_zenoh's default profile, depth 10
+    (QoS(depth=1, transient_local=True), ":1:,1:,:,:,,"),  # latched
+    (QoS(depth=5, reliable=False), "2::,5:,:,:,,"),  # sensor data
+])
+def test_liveliness_qos_has_rmw_zenohs_six_parts_and_reads_back(qos, text):
+    assert qos.key() == text and len(text.split(":")) == 6
+    assert QoS.from_key(text) == qos
+
+
+def test_the_older_three_part_qos_is_still_read_and_junk_is_not():
+    assert QoS.from_key("1:2:1,10") == QoS()
+    assert QoS.from_key("2:1:1,3") == QoS(depth=3, reliable=False, transient_local=True)
+    for junk in ("", "1:2", "1:2:1", "9:2:1,10", "1:2:1,x", "::,10:,:,:"):
+        assert QoS.from_key(junk) is None, junk
