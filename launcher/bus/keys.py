@@ -108,6 +108,12 @@ class Entity:
         return f"{self.namespace.rstrip('/')}/{self.node}"
 
 
+def publishers_key(domain: int, topic: str, type_name: str) -> str:
+    """The liveliness key expression matching every publisher of `topic` with `type_name`."""
+    return "/".join([LIVELINESS, str(domain), "*", "*", "*", PUBLISHER, "*", "*", "*",
+                     mangle(topic), dds_type(type_name), "*", "*"])
+
+
 def liveliness_key(domain: int, entity: Entity) -> str:
     parts = [LIVELINESS, str(domain), entity.zid, str(entity.node_id), str(entity.entity_id),
              entity.kind, "%", mangle(entity.namespace), entity.node]

@@ -1,9 +1,14 @@
 """A subscription: samples on its topic's key delivered to the node's executor (or inline, on
-Zenoh's thread, when asked); a transient local one first fetches what latched publishers
-hold. A malformed payload is dropped with one warning per topic."""
+Zenoh's thread, when asked). A transient local one fetches what latched publishers hold when it
+starts, and again whenever a publisher of its topic appears (its liveliness token), shortly
+after and a little later: a latched message published once, while the routes between two new
+nodes are still forming, is not lost (what rmw_zenoh's advanced subscriber does with its
+late-publisher detection). A malformed payload is dropped with one warning per topic."""
 
 from __future__ import annotations
 
+import contextlib
+import threading
 from collections.abc import Callable
 from typing import Any
 
@@ -13,6 +18,8 @@ from launcher.bus import keys
 from launcher.bus.host import Host
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
+
+REFETCH_AFTER = (0.05, 0.5, 2.0)  # seconds after a publisher's token appears
 
 
 class Subscription:
@@ -30,10 +37,29 @@ class Subscription:
         self._token = host.announce(keys.SUBSCRIPTION, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key())
         self._warned = False
-        if qos.transient_local:  # fetch what latched publishers hold
-            for reply in host.session.get(key, timeout=host.timeout):
+        self._key, self._closed = key, False
+        self._watch: Any = None
+        if qos.transient_local:  # fetch what latched publishers hold, now and as they come
+            self._watch = host.session.liveliness().declare_subscriber(
+                keys.publishers_key(keys.DOMAIN, topic, self.type_name), self._on_publisher)
+            self.fetch()
+
+    def fetch(self) -> None:
+        """Ask the latched publishers of the topic for what they hold."""
+        if self._closed:
+            return
+        with contextlib.suppress(zenoh.ZError):
+            for reply in self._host.session.get(self._key, timeout=self._host.timeout):
                 if reply.ok is not None:
                     self._on_sample(reply.ok)
+
+    def _on_publisher(self, sample: zenoh.Sample) -> None:
+        if sample.kind != zenoh.SampleKind.PUT:
+            return
+        for delay in REFETCH_AFTER:  # its first message may follow its token by a moment
+            timer = threading.Timer(delay, self.fetch)
+            timer.daemon = True
+            timer.start()
 
     def _on_sample(self, sample: zenoh.Sample) -> None:
         if self._inline:
@@ -58,5 +84,8 @@ class Subscription:
     def destroy(self) -> None:
         if not self._host.forget(self):
             return
+        self._closed = True
+        if self._watch is not None:
+            self._watch.undeclare()
         self._subscriber.undeclare()
         self._token.undeclare()

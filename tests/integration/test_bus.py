@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import signal
+import subprocess
 import sys
 import time
 
@@ -366,3 +367,61 @@ def test_bag_record_all_includes_latched_topics(bus):
     assert stop(talker) == 130
     nothing = bus.run("bag", "record", "-o", "x")
     assert nothing.returncode == 2 and "name the topics to record, or -a" in nothing.stderr
+
+
+LATE_LISTENER = """
+from launcher.bus.node import Node
+from launcher.bus.qos import LATCHED
+node = Node("waiter")
+node.create_subscription("std_msgs/msg/String", "/late", lambda m: print("got", m.data,
+                         flush=True), LATCHED)
+print("waiting", flush=True)
+node.spin(20)
+node.destroy_node()
+"""
+# A latched publisher whose one live message was lost while routes formed: it appears after the
+# subscriber and only answers queries from its cache, as rmw_zenoh's advanced publisher does.
+CACHE_ONLY = """
+import sys, time
+import zenoh
+from launcher.bus import keys
+from launcher.bus.messages import build
+from launcher.bus.session import open_session
+from launcher.bus.types import registry
+types = registry()
+name = "std_msgs/msg/String"
+key = keys.topic_key(keys.DOMAIN, "/late", name, types.type_hash(name))
+payload = bytes(types.serialize(build(name, {"data": "latched"}), name))
+session = open_session("peer")
+queryable = session.declare_queryable(key, lambda query: query.reply(key, payload))
+entity = keys.Entity(str(session.zid()), 1, 1, keys.PUBLISHER, "", "cache", "/late", name,
+                     types.type_hash(name), ":1:,1:,:,:,,")
+token = session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
+print("serving", flush=True)
+time.sleep(float(sys.argv[1]))
+token.undeclare(); queryable.undeclare(); session.close()
+"""
+
+
+def test_a_latched_subscriber_gets_what_a_later_publisher_holds(bus):
+    proc, _ = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 60}\n")
+    deadline = time.monotonic() + 20
+    while not endpoints(bus):
+        assert time.monotonic() < deadline
+        time.sleep(0.05)
+    bus.env["LAUNCHER_ROUTER"] = endpoints(bus)[0]
+    bus.write("waiter.py", LATE_LISTENER)
+    bus.write("cache.py", CACHE_ONLY)
+    waiter = subprocess.Popen([PY, "waiter.py"], cwd=bus.root, env=bus.env,
+                              stdout=subprocess.PIPE, text=True)
+    try:
+        assert waiter.stdout.readline().strip() == "waiting"  # its first fetch found nothing
+        cache = subprocess.Popen([PY, "cache.py", "5"], cwd=bus.root, env=bus.env,
+                                 stdout=subprocess.DEVNULL)
+        line = waiter.stdout.readline().strip()  # the new publisher's token: fetched again
+        assert line == "got latched", line
+        cache.wait(30)
+    finally:
+        waiter.send_signal(signal.SIGINT)
+        waiter.wait(30)
+        assert stop(proc) == 130
