@@ -1,9 +1,11 @@
 """A subscription: samples on its topic's key delivered to the node's executor (or inline, on
 Zenoh's thread, when asked). A transient local one fetches what latched publishers hold when it
-starts, and again whenever a publisher of its topic appears (its liveliness token), shortly
-after and a little later: a latched message published once, while the routes between two new
-nodes are still forming, is not lost (what rmw_zenoh's advanced subscriber does with its
-late-publisher detection). A malformed payload is dropped with one warning per topic."""
+starts, and again whenever a publisher of its topic appears (its liveliness token), until that
+fetch brings something or a backoff of about half a minute runs out: a latched message
+published once, while the routes between new nodes are still forming (or while a loaded
+machine delays the publisher's first message), is not lost (what rmw_zenoh's advanced
+subscriber does with its late-publisher detection). A malformed payload is dropped with one
+warning per topic."""
 
 from __future__ import annotations
 
@@ -19,7 +21,8 @@ from launcher.bus.host import Host
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 
-REFETCH_AFTER = (0.05, 0.5, 2.0)  # seconds after a publisher's token appears
+REFETCH_AFTER = (0.05, 0.2, 0.5, 1.0, 2.0, 4.0, 8.0, 15.0)  # s between fetches, for a new
+# publisher, until one brings something
 
 
 class Subscription:
@@ -44,22 +47,31 @@ class Subscription:
                 keys.publishers_key(keys.DOMAIN, topic, self.type_name), self._on_publisher)
             self.fetch()
 
-    def fetch(self) -> None:
-        """Ask the latched publishers of the topic for what they hold."""
+    def fetch(self) -> int:
+        """Ask the latched publishers of the topic for what they hold; how many answered."""
+        found = 0
         if self._closed:
-            return
+            return found
         with contextlib.suppress(zenoh.ZError):
             for reply in self._host.session.get(self._key, timeout=self._host.timeout):
                 if reply.ok is not None:
+                    found += 1
                     self._on_sample(reply.ok)
+        return found
 
     def _on_publisher(self, sample: zenoh.Sample) -> None:
-        if sample.kind != zenoh.SampleKind.PUT:
-            return
-        for delay in REFETCH_AFTER:  # its first message may follow its token by a moment
-            timer = threading.Timer(delay, self.fetch)
-            timer.daemon = True
-            timer.start()
+        if sample.kind == zenoh.SampleKind.PUT:
+            self._refetch(0)
+
+    def _refetch(self, attempt: int) -> None:
+        """Fetch after the attempt's delay; again, later, while nothing comes back."""
+        def run() -> None:
+            if not self.fetch() and attempt + 1 < len(REFETCH_AFTER):
+                self._refetch(attempt + 1)
+
+        timer = threading.Timer(REFETCH_AFTER[attempt], run)
+        timer.daemon = True
+        timer.start()
 
     def _on_sample(self, sample: zenoh.Sample) -> None:
         if self._inline:
