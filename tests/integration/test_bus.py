@@ -59,6 +59,15 @@ def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
     return proc, ws.root / f"{name}.out"
 
 
+def wait_for_router(ws, timeout: float = 20) -> str:
+    """The endpoint of the router a launch of this workspace started, once it is there."""
+    deadline = time.monotonic() + timeout
+    while not endpoints(ws):
+        assert time.monotonic() < deadline, "no router started"
+        time.sleep(0.05)
+    return endpoints(ws)[0]
+
+
 def wait_text(path, needle: str, timeout: float = 30) -> str:
     """The launch output at `path` once it holds `needle`."""
     return Workspace(path.parent, "").wait_for_output(needle, timeout, path.name)
@@ -108,10 +117,7 @@ def test_two_launches_never_see_each_other(bus):
 def test_two_routers_stand_for_two_hosts(bus):
     host_a, out_a = launch(bus, "a.launch.yaml",
                            f"launch:\n  - executable: {{cmd: {PY} talker.py 7.0}}\n")
-    deadline = time.monotonic() + 20
-    while not endpoints(bus):
-        assert time.monotonic() < deadline
-        time.sleep(0.05)
+    wait_for_router(bus)
     (router_a,) = endpoints(bus)
     host_b, out_b = launch(bus, "b.launch.yaml",
                            f"launch:\n  - executable: {{cmd: {PY} listener.py, output: screen}}\n",
@@ -151,7 +157,6 @@ for _ in range(3):
 time.sleep(0.2)
 s.close()
 """)
-    import subprocess
     subprocess.run([PY, str(injector)], env=bus.env, check=True, timeout=30)
     text = wait_text(out, "dropped a malformed geometry_msgs/msg/Twist message on /cmd_vel")
     assert text.count("dropped a malformed") == 1  # said once per topic
@@ -174,10 +179,7 @@ s.close()
 ], ids=["unknown-type", "yaml-does-not-fit", "yaml-invalid", "invalid-topic"])
 def test_cli_bad_input(bus, args, expected, code):
     proc, out = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
-    deadline = time.monotonic() + 20
-    while not endpoints(bus):
-        assert time.monotonic() < deadline
-        time.sleep(0.05)
+    wait_for_router(bus)
     result = bus.run(*args, timeout=30)
     assert result.returncode == code and expected in result.stderr, result.stderr
     assert "Traceback" not in result.stderr
@@ -290,11 +292,7 @@ def test_param_list_get_set_on_a_live_node(bus):
 
 def test_a_node_never_destroyed_still_lets_its_program_exit(bus):
     proc, out = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
-    deadline = time.monotonic() + 20
-    while not endpoints(bus):
-        assert time.monotonic() < deadline
-        time.sleep(0.05)
-    import subprocess
+    wait_for_router(bus)
     script = bus.write("forgetful.py", """
 from launcher.bus.node import Node
 node = Node("forgetful")
@@ -331,7 +329,6 @@ node.destroy_node()
 
 
 def test_a_node_alone_hosts_its_own_bus(bus):
-    import subprocess
 
     from tests.conftest import launcher_argv
     node = subprocess.Popen([PY, "talker.py", "9.0"], cwd=bus.root, env=bus.env,
@@ -405,11 +402,7 @@ token.undeclare(); queryable.undeclare(); session.close()
 
 def test_a_latched_subscriber_gets_what_a_later_publisher_holds(bus):
     proc, _ = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 60}\n")
-    deadline = time.monotonic() + 20
-    while not endpoints(bus):
-        assert time.monotonic() < deadline
-        time.sleep(0.05)
-    bus.env["LAUNCHER_ROUTER"] = endpoints(bus)[0]
+    bus.env["LAUNCHER_ROUTER"] = wait_for_router(bus)
     bus.write("waiter.py", LATE_LISTENER)
     bus.write("cache.py", CACHE_ONLY)
     waiter = subprocess.Popen([PY, "waiter.py"], cwd=bus.root, env=bus.env,
