@@ -14,6 +14,7 @@ from typing import Any
 
 from launcher.sim import mjcf, sdf
 from launcher.sim.mjcf import PluginConfig
+from launcher.sim.sdf.xmltree import after_prologue
 from launcher.sim.transform import IDENTITY, Pose
 
 
@@ -43,18 +44,10 @@ def load_world_file(path: Path, values: Mapping[str, str] | None = None,
     text = path.read_text(encoding="utf-8")
     if path.name.endswith(".j2"):
         text = mjcf.render_template(text, path, values or {})
-    if _is_sdf(text):
+    if after_prologue(text).startswith("<sdf"):
         return _from_sdf(sdf.load_world(text, path, environ), path)
     source = mjcf.read(text, path, environ=environ, rendered=True)
     return LoadedWorld(mjcf.compile_spec(source), str(path), source.plugins, None)
-
-
-def _is_sdf(text: str) -> bool:
-    head = text.lstrip()
-    while head.startswith(("<?", "<!--")):
-        end = "?>" if head.startswith("<?") else "-->"
-        head = head[head.find(end) + len(end):].lstrip() if end in head else ""
-    return head.startswith("<sdf")
 
 
 def _from_sdf(world: sdf.SdfWorld, path: Path) -> LoadedWorld:

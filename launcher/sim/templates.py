@@ -20,6 +20,7 @@ from launcher.errors import LaunchError
 from launcher.sim import mjcf, sdf, urdf
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.resources import model_file, resolve_uri
+from launcher.sim.sdf.xmltree import after_prologue
 from launcher.sim.transform import IDENTITY, Pose
 
 
@@ -62,11 +63,7 @@ class Templates:
         return self._cache[key]
 
     def _parse(self, text: str, label: str, path: Path | None) -> Template:
-        stripped = text.lstrip()
-        if stripped.startswith("<?xml"):
-            stripped = stripped[stripped.find("?>") + 2:].lstrip()
-        while stripped.startswith("<!--"):
-            stripped = stripped[stripped.find("-->") + 3:].lstrip()
+        stripped = after_prologue(text)
         if not stripped:
             raise LaunchError(f"{label}: the description is empty")
         if stripped.startswith("<robot"):

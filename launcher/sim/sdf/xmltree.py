@@ -109,6 +109,16 @@ def parse(text: str, label: str) -> Element:
     return root
 
 
+def after_prologue(text: str) -> str:
+    """The text from its root element on: past the XML declaration, processing instructions
+    and comments, so the root's tag tells the format (`<sdf`, `<robot`, `<mujoco`)."""
+    head = text.lstrip()
+    while head.startswith(("<?", "<!--")):
+        end = "?>" if head.startswith("<?") else "-->"
+        head = head[head.find(end) + len(end):].lstrip() if end in head else ""
+    return head
+
+
 _CDATA = re.compile(r"<!\[CDATA\[.*?\]\]>", re.S)
 
 
