@@ -13,22 +13,13 @@ from typing import Any
 
 Data = dict[str, Any]
 
-_TIME_KEYS = ("stamp", "sim", "real", "system")
 
-
-def _time_to_gz(data: Any) -> Any:
+def _rename(data: Any, old: str, new: str) -> Any:
+    """`data` with every field called `old`, at any depth, called `new` (times' nanoseconds)."""
     if isinstance(data, dict):
-        return {("nsec" if k == "nanosec" else k): _time_to_gz(v) for k, v in data.items()}
+        return {(new if k == old else k): _rename(v, old, new) for k, v in data.items()}
     if isinstance(data, list):
-        return [_time_to_gz(v) for v in data]
-    return data
-
-
-def _time_to_sim(data: Any) -> Any:
-    if isinstance(data, dict):
-        return {("nanosec" if k == "nsec" else k): _time_to_sim(v) for k, v in data.items()}
-    if isinstance(data, list):
-        return [_time_to_sim(v) for v in data]
+        return [_rename(v, old, new) for v in data]
     return data
 
 
@@ -91,13 +82,13 @@ IGNORED = {"Pose": {"id", "header"}, "WorldControl": {"seed", "run_to_sim_time"}
 
 def to_gz(short: str, data: Data) -> Data:
     convert = TO_GZ.get(short)
-    return _time_to_gz(convert(data) if convert else data)
+    return _rename(convert(data) if convert else data, "nanosec", "nsec")
 
 
 def to_sim(short: str, data: Data) -> Data:
     data = {k: v for k, v in data.items() if k not in IGNORED.get(short, ())}
     convert = TO_SIM.get(short)
-    return _time_to_sim(convert(data) if convert else data)
+    return _rename(convert(data) if convert else data, "nsec", "nanosec")
 
 
 def reply_to_gz(short: str, response: Data) -> Data:
