@@ -10,6 +10,8 @@ import contextlib
 import itertools
 import os
 import queue
+import threading
+import time
 from collections.abc import Callable
 from typing import Any
 
@@ -29,7 +31,13 @@ class Host:
         self.timeout = 2.0  # for queries made on the caller's behalf (latched samples)
         self.node_id = next(_node_ids)
         self._entity_ids = itertools.count(1)
-        self.queue: queue.SimpleQueue[tuple[Callable[..., Any], tuple]] = queue.SimpleQueue()
+        self._queue: queue.SimpleQueue[tuple[Callable[..., Any], tuple]] = queue.SimpleQueue()
+        # The executor waits on this lock, not in SimpleQueue.get(timeout): that waits for ever
+        # when a signal handler outlasts what was left of its timeout (CPython 3.11), and the
+        # sim's loop waits in slices of a millisecond, so a Ctrl-C landing there went unseen.
+        # A lock's timed acquire gives up instead. Released ("rung") after each put.
+        self._bell = threading.Lock()
+        self._bell.acquire()
         self.entities: list[Any] = []
         self._graph_session: zenoh.Session | None = None
 
@@ -43,7 +51,26 @@ class Host:
 
     def enqueue(self, callback: Callable[..., Any], *args: Any) -> None:
         """Work for the node's executor (spin), from any thread."""
-        self.queue.put((callback, args))
+        self._queue.put((callback, args))
+        with contextlib.suppress(RuntimeError):  # rung already, by another thread
+            if self._bell.locked():
+                self._bell.release()
+
+    def next_work(self, timeout: float | None) -> tuple[Callable[..., Any], tuple] | None:
+        """The executor's next callback and its arguments, waiting up to `timeout` (None:
+        until one comes); None if none came."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while True:
+            try:
+                return self._queue.get_nowait()
+            except queue.Empty:
+                pass
+            if deadline is None:
+                self._bell.acquire()
+            else:
+                left = deadline - time.monotonic()
+                if left <= 0 or not self._bell.acquire(timeout=left):
+                    return None
 
     def adopt(self, entity: Any) -> Any:
         self.entities.append(entity)

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import atexit
 import contextlib
-import queue
 import sys
 import threading
 import time
@@ -173,10 +172,10 @@ class Node:
             wait = first.next - now if timeout is None else min(timeout, first.next - now)
         else:
             wait = timeout
-        try:
-            callback, args = self._host.queue.get(timeout=wait)
-        except queue.Empty:
+        work = self._host.next_work(wait)
+        if work is None:
             return False
+        callback, args = work
         callback(*args)
         return True
 

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -10,6 +13,7 @@ from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.qos import QoS
 from launcher.bus.types import UnknownType, registry
 from launcher.errors import LaunchError
+from tests.conftest import REPO
 
 
 @pytest.mark.parametrize("name, expected", [
@@ -154,3 +158,33 @@ def test_the_older_three_part_qos_is_still_read_and_junk_is_not():
     assert QoS.from_key("2:1:1,3") == QoS(depth=3, reliable=False, transient_local=True)
     for junk in ("", "1:2", "1:2:1", "9:2:1,10", "1:2:1,x", "::,10:,:,:"):
         assert QoS.from_key(junk) is None, junk
+
+
+SIGNAL_DURING_WAIT = """
+import signal, time
+from launcher.bus.host import Host
+from launcher.bus.logging import Logger
+
+def slow_handler(*_):  # outlasts what is left of the wait
+    end = time.monotonic() + 0.05
+    while time.monotonic() < end:
+        pass
+
+signal.signal(signal.SIGALRM, slow_handler)
+host = Host(None, "", "waiter", Logger("waiter"))
+for _ in range(10):
+    signal.setitimer(signal.ITIMER_REAL, 0.005)
+    assert host.next_work(0.02) is None
+host.enqueue(print, "every wait ended")
+callback, args = host.next_work(None)
+callback(*args)
+"""
+
+
+def test_a_signal_handler_longer_than_the_executors_wait_does_not_make_it_wait_forever():
+    # The sim's loop waits for work in slices of a millisecond; a Ctrl-C handled inside one
+    # must not turn it into a wait for ever (the sim then ignored SIGINT and SIGTERM).
+    done = subprocess.run([sys.executable, "-c", SIGNAL_DURING_WAIT], capture_output=True,
+                          text=True, timeout=120, cwd=REPO)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "every wait ended\n"
