@@ -69,17 +69,20 @@ def stop(proc: subprocess.Popen) -> None:
 
 
 def start_router() -> tuple[dict[str, str], subprocess.Popen]:
-    """A Zenoh router of the benchmark's own on a free loopback port, and the environment
-    that puts child processes (and this process) on it."""
+    """A graph of the benchmark's own (a run folder of its own, with a standing router), and
+    the environment that puts child processes (and this process) on it."""
     from launcher.bus import discovery
 
-    endpoint = discovery.free_endpoint()
-    env = {**os.environ, discovery.ROUTER_VARIABLE: endpoint,
-           "LAUNCHER_RUN_DIR": tempfile.mkdtemp()}
-    os.environ.update({discovery.ROUTER_VARIABLE: endpoint})
-    router = subprocess.Popen([sys.executable, "-m", "launcher.bus.router", "--listen",
-                               endpoint], stdout=subprocess.DEVNULL)
-    time.sleep(0.5)
+    run = tempfile.mkdtemp(prefix="launcher-bench-")
+    env = {**os.environ, "LAUNCHER_RUN_DIR": run}
+    env.pop(discovery.ROUTER_VARIABLE, None)
+    os.environ.update({"LAUNCHER_RUN_DIR": run})
+    os.environ.pop(discovery.ROUTER_VARIABLE, None)
+    router = subprocess.Popen([sys.executable, "-m", "launcher.bus.router"], env=env,
+                              stdout=subprocess.DEVNULL)
+    deadline = time.monotonic() + 10
+    while not discovery.answers(discovery.socket_path(env)) and time.monotonic() < deadline:
+        time.sleep(0.05)
     return env, router
 
 

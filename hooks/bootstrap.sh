@@ -29,6 +29,18 @@ if ! ldconfig -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
     fi
 fi
 
+# The tests put a graph across two network namespaces (`ip`, iproute2) and act as another
+# user (`setpriv`, util-linux).
+if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv; } >/dev/null 2>&1; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        echo "installing iproute2 and util-linux (ip, setpriv) for the tests"
+        apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+            iproute2 util-linux >/dev/null
+    else
+        echo "note: the tests need ip and setpriv: apt-get install iproute2 util-linux" >&2
+    fi
+fi
+
 if [ ! -x .venv/bin/python ]; then
     "$(find_python)" -m venv .venv
 fi

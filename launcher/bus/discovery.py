@@ -1,45 +1,112 @@
-"""Finding the bus of a run, without importing zenoh (the launcher uses this).
+"""Finding the graph's router, and starting it when none runs (without importing zenoh: the
+launcher uses this).
 
-Each `launcher launch` hosts a Zenoh router on a free loopback port and tells its children
-through LAUNCHER_ROUTER (e.g. `tcp/127.0.0.1:40123`). It also writes a run file,
-`<LAUNCHER_RUN_DIR or ~/.launcher/run>/<pid>.json`, so that a node or a CLI started by hand in
-another terminal finds the newest running launch with no configuration, as `ros2 topic echo`
-does. LAUNCHER_ROUTER picks a given run (or a router on another host);
-LAUNCHER_ZENOH_CONFIG names a full Zenoh config file for multi-host set-ups.
+One graph per user and ROS_DOMAIN_ID (0–232, default 0), as in ROS 2: every launch, node and
+CLI of the user joins it with nothing to set. Its router listens on a Unix socket,
+`<run folder>/domain-<N>.sock`, in a 0700 folder (LAUNCHER_RUN_DIR, else
+$XDG_RUNTIME_DIR/launcher, else ~/.launcher/run), so other local users cannot reach it.
+
+The router's life: the first process that needs the graph and finds no router answering
+starts one (`python -m launcher.bus.router`, detached), holding `domain-<N>.lock` exclusively
+until the router listens, so two starting at the same instant make one router. Processes
+connect holding that lock shared; the router takes it exclusively before it stops, which it
+does once nothing has been connected to it for LINGER seconds (LAUNCHER_ROUTER_LINGER). So
+the router outlives the launch that started it while anything else uses it, and nothing
+stays behind for good.
+`launcher router` runs a standing one (and can listen beyond this host).
+
+LAUNCHER_ROUTER=ENDPOINT[,ENDPOINT…] connects there instead and starts nothing (another
+host's router, or an explicit set-up).
 """
 
 from __future__ import annotations
 
-import json
+import contextlib
+import fcntl
 import os
+import re
 import socket
-from collections.abc import Mapping
+import subprocess
+import sys
+import time
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 
-from launcher.private import private_folder, write_private
+from launcher.errors import LaunchError, UsageError
+from launcher.private import open_private, private_folder
 
 ROUTER_VARIABLE = "LAUNCHER_ROUTER"
-CONFIG_VARIABLE = "LAUNCHER_ZENOH_CONFIG"
-TIMEOUT_VARIABLE = "LAUNCHER_BUS_TIMEOUT"  # seconds to wait for the router; default 5
+TIMEOUT_VARIABLE = "LAUNCHER_BUS_TIMEOUT"  # seconds to wait for a router; default 5
+DOMAIN_VARIABLE = "ROS_DOMAIN_ID"
 DEFAULT_TIMEOUT = 5.0
+LINGER = 3.0  # seconds a started router waits with nothing connected before it stops
+LINGER_VARIABLE = "LAUNCHER_ROUTER_LINGER"  # sets that
+MAX_DOMAIN = 232  # as ROS 2 allows
+PEER_PREFIX = "peer-"
+_SOCKET_PATH_MAX = 107  # sun_path, less its terminating NUL
+_ENDPOINT = re.compile(r"(?P<protocol>tcp|udp|tls|quic|ws)/(?P<host>\[[0-9a-fA-F:.]+\]|[^/:\s"
+                       r"\[\]]+):(?P<port>\d{1,5})(?:#.*)?$|unixsock-stream/(?P<path>/\S+)$")
+
+
+class NoRouter(LaunchError):
+    pass
+
+
+def domain_id(environ: Mapping[str, str] | None = None) -> int:
+    env = os.environ if environ is None else environ
+    text = env.get(DOMAIN_VARIABLE, "").strip()
+    if not text:
+        return 0
+    if not text.isdigit() or int(text) > MAX_DOMAIN:
+        raise UsageError(f"{DOMAIN_VARIABLE}={text!r}: expected a whole number from 0 to "
+                         f"{MAX_DOMAIN} (as ROS 2 allows)")
+    return int(text)
 
 
 def run_dir(environ: Mapping[str, str] | None = None) -> Path:
     env = os.environ if environ is None else environ
-    return Path(env.get("LAUNCHER_RUN_DIR") or Path.home() / ".launcher" / "run")
+    if env.get("LAUNCHER_RUN_DIR"):
+        return Path(env["LAUNCHER_RUN_DIR"])
+    runtime = env.get("XDG_RUNTIME_DIR")
+    if runtime and os.path.isdir(runtime):
+        return Path(runtime) / "launcher"
+    return Path.home() / ".launcher" / "run"
 
 
-def free_endpoint(host: str = "127.0.0.1") -> str:
-    with socket.socket() as probe:
-        probe.bind((host, 0))
-        return f"tcp/{host}:{probe.getsockname()[1]}"
-
-
-def write_run_file(endpoint: str, environ: Mapping[str, str] | None = None) -> Path:
-    folder = private_folder(run_dir(environ))  # the router's address: the user's only
-    path = folder / f"{os.getpid()}.json"
-    write_private(path, json.dumps({"pid": os.getpid(), "router": endpoint}))
+def socket_path(environ: Mapping[str, str] | None = None) -> Path:
+    path = run_dir(environ) / f"domain-{domain_id(environ)}.sock"
+    if len(str(path)) > _SOCKET_PATH_MAX:
+        raise UsageError(f"the run folder {path.parent} is too long a path for the graph's "
+                         f"socket ({len(str(path))} > {_SOCKET_PATH_MAX} characters); set "
+                         "LAUNCHER_RUN_DIR to a shorter folder")
     return path
+
+
+def local_endpoint(environ: Mapping[str, str] | None = None) -> str:
+    return f"unixsock-stream/{socket_path(environ)}"
+
+
+def is_local(endpoint: str) -> bool:
+    """Whether the endpoint is a Unix socket (this host, guarded by file permissions)."""
+    return endpoint.startswith("unixsock-stream/")
+
+
+def peer_endpoint(environ: Mapping[str, str] | None = None) -> str:
+    """A Unix socket for a peer to listen on, in the run folder (its pid in the name, so that
+    a dead peer's files can be swept)."""
+    import secrets
+
+    folder = socket_path(environ).parent
+    return f"unixsock-stream/{folder}/{PEER_PREFIX}{os.getpid()}-{secrets.token_hex(4)}.sock"
+
+
+def sweep_peer_sockets(folder: Path) -> None:
+    """Remove the socket files of peers that died without closing them (SIGKILL)."""
+    for path in folder.glob(f"{PEER_PREFIX}*.sock*"):
+        pid = path.name[len(PEER_PREFIX):].split("-", 1)[0]
+        if pid.isdigit() and not _alive(int(pid)):
+            with contextlib.suppress(OSError):
+                path.unlink()
 
 
 def _alive(pid: int) -> bool:
@@ -52,32 +119,20 @@ def _alive(pid: int) -> bool:
     return True
 
 
-def running_endpoints(environ: Mapping[str, str] | None = None) -> list[str]:
-    """Routers of launches still running, newest first (stale run files are removed)."""
-    found: list[tuple[float, str]] = []
-    folder = run_dir(environ)
-    try:
-        files = list(folder.glob("*.json"))
-    except OSError:
-        return []
-    for path in files:
-        try:
-            data = json.loads(path.read_text())
-            if not _alive(int(data["pid"])):
-                path.unlink(missing_ok=True)
-                continue
-            found.append((path.stat().st_mtime, str(data["router"])))
-        except (OSError, ValueError, KeyError):
-            continue
-    return [endpoint for _, endpoint in sorted(found, reverse=True)]
+def check_endpoint(text: str, where: str) -> str:
+    """`text` if it is a Zenoh endpoint launcher can use, else a UsageError naming `where`."""
+    match = _ENDPOINT.match(text.strip())
+    if match is None or (match["port"] and not 0 < int(match["port"]) < 65536):
+        raise UsageError(f"{where}: {text!r} is not an endpoint: expected PROTOCOL/HOST:PORT "
+                         "(e.g. tcp/192.168.1.5:7447, tcp/[::1]:7447) or "
+                         "unixsock-stream/PATH")
+    return text.strip()
 
 
-def router_endpoint(environ: Mapping[str, str] | None = None) -> str | None:
+def explicit_endpoints(environ: Mapping[str, str] | None = None) -> list[str]:
     env = os.environ if environ is None else environ
-    if env.get(ROUTER_VARIABLE):
-        return env[ROUTER_VARIABLE]
-    endpoints = running_endpoints(env)
-    return endpoints[0] if endpoints else None
+    text = env.get(ROUTER_VARIABLE, "").strip()
+    return [check_endpoint(part, ROUTER_VARIABLE) for part in text.split(",")] if text else []
 
 
 def timeout(environ: Mapping[str, str] | None = None) -> float:
@@ -86,3 +141,88 @@ def timeout(environ: Mapping[str, str] | None = None) -> float:
         return float(env.get(TIMEOUT_VARIABLE, DEFAULT_TIMEOUT))
     except ValueError:
         return DEFAULT_TIMEOUT
+
+
+def linger(environ: Mapping[str, str] | None = None) -> float:
+    env = os.environ if environ is None else environ
+    try:
+        return max(0.0, float(env.get(LINGER_VARIABLE, LINGER)))
+    except ValueError:
+        return LINGER
+
+
+def answers(path: Path) -> bool:
+    """Whether a router listens on the socket (a stale file of a dead one does not)."""
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as probe:
+        try:
+            probe.connect(str(path))
+        except OSError:
+            return False
+    return True
+
+
+def _own_folder(folder: Path) -> None:
+    """The run folder, made 0700 (and found to be this user's), or a clear error."""
+    try:
+        private_folder(folder)
+    except OSError as exc:
+        raise NoRouter(f"cannot use the run folder {folder}: {exc.strerror} (it must be "
+                       "this user's own; LAUNCHER_RUN_DIR chooses another)") from None
+
+
+def lock_path(sock: Path) -> Path:
+    return sock.with_suffix(".lock")
+
+
+def log_path(sock: Path) -> Path:
+    return sock.with_suffix(".log")
+
+
+@contextlib.contextmanager
+def router(environ: Mapping[str, str] | None = None) -> Iterator[list[str]]:
+    """The endpoints to connect to, the graph's router started first if none answers; while
+    inside, the router does not stop (connect before leaving)."""
+    env = dict(os.environ if environ is None else environ)
+    explicit = explicit_endpoints(env)
+    if explicit:
+        yield explicit
+        return
+    sock = socket_path(env)
+    _own_folder(sock.parent)
+    with open_private(lock_path(sock), "a") as lock:
+        fcntl.flock(lock, fcntl.LOCK_SH)
+        if not answers(sock):
+            fcntl.flock(lock, fcntl.LOCK_UN)
+            start(env)
+            fcntl.flock(lock, fcntl.LOCK_SH)  # the router holds it exclusively until it listens
+            if not answers(sock):
+                raise NoRouter(f"the graph's router did not start (its log: {log_path(sock)})")
+        yield [f"unixsock-stream/{sock}"]
+
+
+def start(environ: Mapping[str, str] | None = None) -> None:
+    """Start the graph's router unless one answers (or LAUNCHER_ROUTER names one); returns at
+    once, the router still starting (connecting through `router()` waits for it)."""
+    env = dict(os.environ if environ is None else environ)
+    if explicit_endpoints(env):
+        return
+    sock = socket_path(env)
+    _own_folder(sock.parent)
+    with open_private(lock_path(sock), "a") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if answers(sock):
+            return
+        with contextlib.suppress(FileNotFoundError):
+            sock.unlink()  # a dead router's
+        with open_private(log_path(sock), "a") as log:
+            log.write(f"--- {time.strftime('%Y-%m-%d %H:%M:%S')} started by pid {os.getpid()}\n")
+            log.flush()
+            # Through sh, which exits at once: the router is nobody's child (no zombie in a
+            # long-lived node that started it); it inherits the lock and lets it go when it
+            # listens.
+            argv = [sys.executable, "-m", "launcher.bus.router", "--lock-fd",
+                    str(lock.fileno()), "--linger", str(linger(env))]
+            subprocess.run(["/bin/sh", "-c", '"$@" &', "launcher-router", *argv],
+                           stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=log,
+                           env=env, pass_fds=(lock.fileno(),), start_new_session=True,
+                           check=True)

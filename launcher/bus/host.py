@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import contextlib
 import itertools
-import os
 import queue
 import threading
 import time
@@ -17,7 +16,7 @@ from typing import Any
 
 import zenoh
 
-from launcher.bus import discovery, keys
+from launcher.bus import keys
 from launcher.bus.logging import Logger
 from launcher.bus.session import NoRouter, open_session
 
@@ -26,8 +25,10 @@ _node_ids = itertools.count()
 
 class Host:
     def __init__(self, session: zenoh.Session, namespace: str, name: str,
-                 logger: Logger) -> None:
+                 logger: Logger, space: keys.Space = keys.ROS) -> None:
         self.session, self.namespace, self.name, self.logger = session, namespace, name, logger
+        self.space = space  # where its entities are, unless one says otherwise
+        self._elsewhere: dict[keys.Space, Any] = {}  # its node token in the other space
         self.timeout = 2.0  # for queries made on the caller's behalf (latched samples)
         self.node_id = next(_node_ids)
         self._entity_ids = itertools.count(1)
@@ -42,12 +43,16 @@ class Host:
         self._graph_session: zenoh.Session | None = None
 
     def announce(self, kind: str, name: str = "", type_name: str = "", type_hash: str = "",
-                 qos: str = "") -> Any:
+                 qos: str = "", space: keys.Space | None = None) -> Any:
         """The liveliness token of this node (kind NODE) or of one of its entities."""
+        space = space or self.space
+        if kind != keys.NODE and space != self.space and space not in self._elsewhere:
+            self._elsewhere[space] = self.announce(keys.NODE, space=space)  # seen there too
         number = 0 if kind == keys.NODE else next(self._entity_ids)
         entity = keys.Entity(str(self.session.zid()), self.node_id, number, kind,
                              self.namespace, self.name, name, type_name, type_hash, qos)
-        return self.session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
+        return self.session.liveliness().declare_token(
+            keys.liveliness_key(keys.DOMAIN, entity, space))
 
     def enqueue(self, callback: Callable[..., Any], *args: Any) -> None:
         """Work for the node's executor (spin), from any thread."""
@@ -87,13 +92,11 @@ class Host:
         """The session to ask who is on the bus. A peer's liveliness query reaches only the
         peers it has links to, and with dozens of nodes starting at once some links come late
         or not at all (ten robots' `create`s never saw the sim); the router answers a client
-        with every token. Opened at the first question; a node hosting its own bus, or on a
-        config of the user's, asks through its own session."""
+        with every token. Opened at the first question."""
         if self._graph_session is None:
             self._graph_session = self.session
-            if not os.environ.get(discovery.CONFIG_VARIABLE):
-                with contextlib.suppress(NoRouter):
-                    self._graph_session = open_session("client")
+            with contextlib.suppress(NoRouter):
+                self._graph_session = open_session("client")
         return self._graph_session
 
     def close_graph_session(self) -> None:

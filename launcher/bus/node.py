@@ -45,7 +45,10 @@ class Parameter:
 
 class Node:
     def __init__(self, name: str, *, namespace: str = "", argv: list[str] | None = None,
-                 session: zenoh.Session | None = None, parameter_services: bool = True) -> None:
+                 session: zenoh.Session | None = None, parameter_services: bool = True,
+                 space: keys.Space = keys.ROS) -> None:
+        """`space` keys.SIM makes a node of the simulator's own side (the sim, the `gz`
+        tools): off the ROS graph; an entity may still say where it goes (`space=`)."""
         parsed = ros_args.parse(sys.argv[1:] if argv is None else argv)
         self.name = names.check_node_name(parsed.node_name or name)
         self.namespace = names.check_namespace(parsed.namespace or namespace)
@@ -56,8 +59,8 @@ class Node:
         for path in parsed.params_files:
             self._parameters.update(ros_args.load_params_file(path, self.name, self.namespace))
         self._parameters.update(parsed.parameters)
-        self._host = Host(session or open_session("peer", host_if_alone=True), self.namespace,
-                          self.name, logger)
+        self._host = Host(session or open_session("peer"), self.namespace,
+                          self.name, logger, space)
         self.session = self._host.session
         self._timers: list[Timer] = []
         self._token = self._host.announce(keys.NODE)
@@ -86,28 +89,33 @@ class Node:
         return names.remap(full, self.remaps, self.name, self.namespace)
 
     # --- endpoints --------------------------------------------------------------------------
-    def create_publisher(self, type_name: str, topic: str, qos: QoS | int = 10) -> Publisher:
+    def create_publisher(self, type_name: str, topic: str, qos: QoS | int = 10,
+                         space: keys.Space | None = None) -> Publisher:
         return self._host.adopt(Publisher(self._host, type_name, self.resolve(topic),
-                                          qos_of(qos)))
+                                          qos_of(qos), space))
 
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
                             qos: QoS | int = 10, raw: bool = False,
-                            inline: bool = False, remote_only: bool = False) -> Subscription:
+                            inline: bool = False, remote_only: bool = False,
+                            space: keys.Space | None = None) -> Subscription:
         """`raw=True` hands the callback the CDR bytes instead of a message. `inline=True`
         runs the callback on Zenoh's delivery thread instead of the executor: no hand-over
         between threads (it halves the CPU of a 1 kHz stream), but the callback must be
         thread-safe against the node's other callbacks and must not block. `remote_only=True`
         ignores what this process publishes (a two-way bridge must not hear itself)."""
         return self._host.adopt(Subscription(self._host, type_name, self.resolve(topic), callback,
-                                             qos_of(qos), raw, inline, remote_only))
+                                             qos_of(qos), raw, inline, remote_only, space))
 
     def create_service(self, type_name: str, name: str,
-                       callback: Callable[[Any, Any], Any]) -> Service:
+                       callback: Callable[[Any, Any], Any],
+                       space: keys.Space | None = None) -> Service:
         return self._host.adopt(Service(self._host, type_name,
-                                        self.resolve(name, "service name"), callback))
+                                        self.resolve(name, "service name"), callback, space))
 
-    def create_client(self, type_name: str, name: str) -> Client:
-        return self._host.adopt(Client(self._host, type_name, self.resolve(name, "service name")))
+    def create_client(self, type_name: str, name: str,
+                      space: keys.Space | None = None) -> Client:
+        return self._host.adopt(Client(self._host, type_name,
+                                       self.resolve(name, "service name"), space))
 
     def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
         if period <= 0:

@@ -1,34 +1,146 @@
-"""The router of a run: `python -m launcher.bus.router --listen tcp/127.0.0.1:PORT`.
+"""The graph's router (see discovery.py for its life).
 
-`--connect` joins other routers (another host's launch): routers connect to routers.
-It runs until SIGINT or SIGTERM.
+Started by discovery (`--lock-fd`): it listens on the domain's socket, lets the start lock go,
+and stops once nothing has been connected for `--linger` seconds. Run by `launcher router`
+(standing): it serves the domain's socket itself, unless a router already does, and with
+`--listen` it is also the gateway for other hosts: a second router session, joined to the
+local one, listening there and admitting only those who present the user's credentials.
+It runs until SIGINT or SIGTERM. Both sweep the socket files of peers that died.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import fcntl
+import os
 import signal
 import sys
 import threading
+import time
 
 import zenoh
 
+from launcher.bus import credentials, discovery
 from launcher.bus.session import config
+from launcher.errors import LaunchError, reported
+from launcher.private import open_private, private_folder
+
+POLL = 0.25  # seconds between two looks at what is connected
+SWEEP = 10.0  # seconds between two sweeps of dead peers' socket files (standing)
+
+
+def serve(listen: list[str], linger: float | None, lock_fd: int | None,
+          stop: threading.Event) -> int:
+    """Run the router until `stop` (or, with `linger`, until idle that long); its exit status."""
+    sock = discovery.socket_path()
+    remote = [discovery.check_endpoint(e, "--listen") for e in listen]
+    if remote:
+        credentials.load()  # a bad credentials file is said before the router starts
+    private_folder(sock.parent)
+    discovery.sweep_peer_sockets(sock.parent)
+    sessions: list[zenoh.Session] = []
+    try:
+        hosting = lock_fd is not None or not discovery.answers(sock)
+        if hosting:
+            sessions.append(_local_router(sock, lock_fd))
+        if remote:  # checks credentials, which the local router cannot ask of its peers
+            try:
+                sessions.append(zenoh.open(config("router", remote,
+                                                  [f"unixsock-stream/{sock}"],
+                                                  check_others=True)))
+            except zenoh.ZError as exc:
+                reason = str(exc).split(" at /")[0]
+                raise LaunchError(f"--listen {', '.join(remote)}: cannot listen there "
+                                  f"({reason}); is the address this host's, and the port "
+                                  "free?") from None
+        where = ", ".join(([str(sock)] if hosting else []) + remote)
+        print(f"router of domain {discovery.domain_id()} listening on {where}"
+              + ("" if hosting else f" (joined to the router on {sock})"), flush=True)
+        if linger is None:
+            while not stop.wait(SWEEP):
+                discovery.sweep_peer_sockets(sock.parent)
+        else:
+            _until_idle(sessions[0], linger, stop)
+    finally:
+        for session in sessions:
+            with contextlib.suppress(zenoh.ZError):
+                session.close()
+    return 0
+
+
+def _local_router(sock: os.PathLike, lock_fd: int | None) -> zenoh.Session:
+    """The router on the domain's socket; the start lock is held until it listens."""
+    with contextlib.ExitStack() as held:
+        if lock_fd is None:  # standing: take the socket as discovery.start would
+            lock = held.enter_context(open_private(discovery.lock_path(sock), "a"))
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(sock)
+        session = zenoh.open(config("router", [f"unixsock-stream/{sock}"], []))
+    if lock_fd is not None:
+        os.close(lock_fd)  # listening: whoever waits to connect may go on
+    return session
+
+
+class Connections:
+    """What is connected, from Zenoh's transport events (asking for the list of transports
+    now and then, instead, upset the router's routing)."""
+
+    def __init__(self, session: zenoh.Session) -> None:
+        self._open: set[str] = set()
+        self._lock = threading.Lock()
+        self._listener = session.info.declare_transport_events_listener(self._on_event,
+                                                                        history=True)
+
+    def _on_event(self, event: zenoh.TransportEvent) -> None:
+        with self._lock:
+            if event.kind == zenoh.SampleKind.PUT:
+                self._open.add(str(event.transport.zid))
+            else:
+                self._open.discard(str(event.transport.zid))
+
+    def any(self) -> bool:
+        with self._lock:
+            return bool(self._open)
+
+
+def _until_idle(session: zenoh.Session, linger: float, stop: threading.Event) -> None:
+    """Return once nothing has been connected for `linger` seconds, holding the start lock
+    exclusively so that nobody is halfway through connecting."""
+    connections = Connections(session)
+    idle_since = time.monotonic()
+    while not stop.wait(POLL):
+        if connections.any():
+            idle_since = time.monotonic()
+            continue
+        if time.monotonic() - idle_since < linger:
+            continue
+        lock = open_private(discovery.lock_path(discovery.socket_path()), "a")
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if connections.any():
+            lock.close()
+            idle_since = time.monotonic()
+            continue
+        discovery.sweep_peer_sockets(discovery.socket_path().parent)
+        session.close()  # the socket goes with it; the lock goes when this process does
+        return
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="launcher-router")
-    parser.add_argument("--listen", action="append", default=[], metavar="ENDPOINT")
-    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT")
+    parser = argparse.ArgumentParser(prog="launcher router", description=(
+        "Run the graph's router for ROS_DOMAIN_ID until Ctrl-C; --listen lets other hosts "
+        "join (they set LAUNCHER_ROUTER to that endpoint and hold a copy of "
+        "~/.launcher/credentials: every link is authenticated)."))
+    parser.add_argument("--listen", action="append", default=[], metavar="ENDPOINT",
+                        help="also listen here, e.g. tcp/0.0.0.0:7447")
+    parser.add_argument("--linger", type=float, default=None, help=argparse.SUPPRESS)
+    parser.add_argument("--lock-fd", type=int, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     stop = threading.Event()
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda *_: stop.set())
-    session = zenoh.open(config("router", args.listen or ["tcp/127.0.0.1:0"], args.connect))
-    print(f"router {session.zid()} listening on {', '.join(args.listen)}", flush=True)
-    stop.wait()
-    session.close()
-    return 0
+    return reported(lambda: serve(args.listen, args.linger, args.lock_fd, stop), "router")
 
 
 if __name__ == "__main__":

@@ -1,9 +1,12 @@
-"""Zenoh sessions on safe defaults: no multicast scouting, loopback listeners, gossip on.
+"""Zenoh sessions on safe defaults: no multicast scouting, listeners only where the user alone
+can reach them, gossip on.
 
 Never the default config (it scouts the LAN by multicast and listens on every interface).
-A node is a peer connected to its run's router; opening waits (bounded) until the router
-answers. CLI tools connect as clients. LAUNCHER_ZENOH_CONFIG replaces all of this with a
-config file of the user's (multi-host).
+On this host a node is a peer: connected to the graph's router (see discovery.py), it listens
+on a Unix socket of its own in the same 0700 run folder, where other peers link to it directly
+for data; CLI tools connect as clients. Through a router on another host (LAUNCHER_ROUTER with
+a TCP endpoint), every process is a client of that router and presents the user's credentials
+(credentials.py), which the router checks.
 """
 
 from __future__ import annotations
@@ -11,71 +14,96 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Mapping
+from pathlib import Path
 
 import zenoh
 
-from launcher.bus import discovery
-from launcher.errors import LaunchError
+from launcher.bus import credentials, discovery
+from launcher.bus.discovery import NoRouter
+from launcher.private import write_private
 
-
-class NoRouter(LaunchError):
-    pass
+__all__ = ["NoRouter", "config", "open_session", "write_session_config"]
 
 
 def config(mode: str, listen: list[str], connect: list[str],
-           timeout_s: float = discovery.DEFAULT_TIMEOUT) -> zenoh.Config:
+           timeout_s: float = discovery.DEFAULT_TIMEOUT,
+           environ: Mapping[str, str] | None = None, check_others: bool = False) -> zenoh.Config:
     c = zenoh.Config()
-    c.insert_json5("mode", json.dumps(mode))
-    c.insert_json5("scouting/multicast/enabled", "false")
-    c.insert_json5("scouting/gossip/enabled", "true")
-    c.insert_json5("scouting/delay", "0")
-    c.insert_json5("listen/endpoints", json.dumps(listen))
-    c.insert_json5("connect/endpoints", json.dumps(connect))
-    if connect:
-        ms = int(timeout_s * 1000)
-        c.insert_json5("connect/timeout_ms", json.dumps({"router": ms, "peer": ms,
-                                                         "client": ms}))
-        c.insert_json5("connect/exit_on_failure", json.dumps({"router": False, "peer": True,
-                                                              "client": True}))
-        c.insert_json5("connect/retry", json.dumps({"period_init_ms": 20,
-                                                    "period_max_ms": 500,
-                                                    "period_increase_factor": 2}))
+    for key, value in settings(mode, listen, connect, timeout_s, environ,
+                               check_others).items():
+        c.insert_json5(key, json.dumps(value))
     return c
 
 
+def settings(mode: str, listen: list[str], connect: list[str],
+             timeout_s: float = discovery.DEFAULT_TIMEOUT,
+             environ: Mapping[str, str] | None = None,
+             check_others: bool = False) -> dict[str, object]:
+    """The config as key paths and values (also written out for other Zenoh programs).
+    Credentials are presented where a connect endpoint leaves this host; `check_others` (a
+    router listening beyond it) checks those who connect against them."""
+    values: dict[str, object] = {
+        "mode": mode,
+        "scouting/multicast/enabled": False,
+        "scouting/gossip/enabled": True,
+        "scouting/delay": 0,
+        # as rmw_zenoh's default config: advanced publishers (latched topics) need it
+        "timestamping/enabled": {"router": True, "peer": True, "client": True},
+        "listen/endpoints": listen,
+        "connect/endpoints": connect,
+    }
+    if check_others:
+        values["transport/auth/usrpwd"] = {
+            "dictionary_file": str(credentials.load(environ).file)}
+    elif any(not discovery.is_local(endpoint) for endpoint in connect):
+        secret = credentials.load(environ)
+        values["transport/auth/usrpwd"] = {"user": secret.user, "password": secret.password}
+    if connect:
+        ms = int(timeout_s * 1000)
+        values["connect/timeout_ms"] = {"router": ms, "peer": ms, "client": ms}
+        values["connect/exit_on_failure"] = {"router": False, "peer": True, "client": True}
+        values["connect/retry"] = {"period_init_ms": 20, "period_max_ms": 500,
+                                   "period_increase_factor": 2}
+    return values
+
+
+def write_session_config(environ: Mapping[str, str] | None = None) -> Path:
+    """Write, next to the graph's socket and 0600, a Zenoh config file that puts another Zenoh
+    program (rmw_zenoh's ZENOH_SESSION_CONFIG_URI) on the graph: a client of its router,
+    which passes all its data on (one config for any number of programs: a peer would need a
+    listener of its own); its path."""
+    path = discovery.socket_path(environ).with_suffix(".json5")
+    with discovery.router(environ) as endpoints:
+        values = settings("client", [], endpoints, environ=environ)
+    tree: dict[str, object] = {}
+    for key, value in values.items():
+        *parents, leaf = key.split("/")
+        node = tree
+        for part in parents:
+            node = node.setdefault(part, {})  # type: ignore[assignment]
+        node[leaf] = value  # type: ignore[index]
+    write_private(path, json.dumps(tree, indent=2) + "\n")
+    return path
+
+
 def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
-                 listen: list[str] | None = None, host_if_alone: bool = False) -> zenoh.Session:
-    """A session of `mode` (peer or client) on the run's bus.
-
-    With no launch running, `host_if_alone` makes this session the router of a bus of its
-    own (on a free loopback port, with a run file so others find it); otherwise that is an
-    error saying nothing is running.
-    """
+                 listen: list[str] | None = None) -> zenoh.Session:
+    """A session of `mode` (peer or client) on the graph, its router started if none runs
+    (a client, whatever `mode`, of a router on another host)."""
     env = os.environ if environ is None else environ
-    if env.get(discovery.CONFIG_VARIABLE):
-        return zenoh.open(zenoh.Config.from_file(env[discovery.CONFIG_VARIABLE]))
-    endpoint = discovery.router_endpoint(env)
-    if endpoint is None and host_if_alone:
-        return _host(env)
-    if endpoint is None:
-        raise NoRouter("no launch is running (no router to connect to); start one with "
-                       "`launcher launch …`, or set LAUNCHER_ROUTER=tcp/HOST:PORT")
+    discovery.domain_id(env)  # a bad ROS_DOMAIN_ID is said before anything else
     wait = discovery.timeout(env)
-    default_listen = ["tcp/127.0.0.1:0"] if mode == "peer" else []
-    try:
-        return zenoh.open(config(mode, default_listen if listen is None else listen,
-                                 endpoint.split(","), wait))
-    except zenoh.ZError as exc:
-        raise NoRouter(f"no router reachable at {endpoint} within {wait:g} s "
-                       f"({discovery.TIMEOUT_VARIABLE} sets the wait): {exc}") from None
-
-
-def _host(environ: Mapping[str, str]) -> zenoh.Session:
-    """A router session of this process's own; its run file goes when the process does."""
-    import atexit
-
-    endpoint = discovery.free_endpoint()
-    session = zenoh.open(config("router", [endpoint], []))
-    run_file = discovery.write_run_file(endpoint, environ)
-    atexit.register(run_file.unlink, missing_ok=True)
-    return session
+    with discovery.router(env) as endpoints:
+        if not all(discovery.is_local(e) for e in endpoints):
+            mode = "client"
+        if listen is None:
+            listen = [discovery.peer_endpoint(env)] if mode == "peer" else []
+        try:
+            return zenoh.open(config(mode, listen, endpoints, wait, env))
+        except zenoh.ZError as exc:
+            place, reason = ",".join(endpoints), str(exc).split(" at /")[0]
+            raise NoRouter(
+                f"no router answered at {place} within {wait:g} s ({reason}); is it running"
+                + ("" if all(discovery.is_local(e) for e in endpoints) else
+                   f", and does it hold the same credentials as {credentials.path(env)}")
+                + f"? ({discovery.TIMEOUT_VARIABLE} sets the wait)") from None

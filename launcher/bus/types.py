@@ -46,11 +46,14 @@ def _distro_fielddefs() -> dict[str, Any]:
     from importlib import import_module
 
     fielddefs = dict(import_module(f"rosbags.typesys.stores.{DISTRO}").FIELDDEFS)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_suffix(f".{os.getpid()}.tmp")
-    with open(temporary, "wb") as handle:
-        pickle.dump(fielddefs, handle, protocol=pickle.HIGHEST_PROTOCOL)
-    os.replace(temporary, path)
+    try:  # a cache only: a home that cannot be written costs start-up time, nothing else
+        path.parent.mkdir(parents=True, exist_ok=True)
+        temporary = path.with_suffix(f".{os.getpid()}.tmp")
+        with open(temporary, "wb") as handle:
+            pickle.dump(fielddefs, handle, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(temporary, path)
+    except OSError:
+        pass
     return fielddefs
 
 

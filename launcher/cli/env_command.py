@@ -16,6 +16,9 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         description="Print the changes that every package's environment hooks make, as "
                     "commands for a shell (eval \"$(launcher env)\") or as JSON.")
     p.add_argument("--shell", choices=("sh", "bash", "zsh", "json"), default="sh")
+    p.add_argument("--zenoh", action="store_true",
+                   help="instead, the settings that put another Zenoh program on the graph "
+                        "(rmw_zenoh's ZENOH_SESSION_CONFIG_URI)")
     p.set_defaults(run=run)
 
 
@@ -25,6 +28,8 @@ def changes(before: dict[str, str], after: dict[str, str]) -> dict[str, str | No
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.zenoh:
+        return zenoh_settings(args.shell)
     before = dict(os.environ)
     diff = changes(before, hooked_environment(load_index(), before))
     if args.shell == "json":
@@ -32,4 +37,18 @@ def run(args: argparse.Namespace) -> int:
         return 0
     for name, value in diff.items():
         print(f"unset {name}" if value is None else f"export {name}={shlex.quote(value)}")
+    return 0
+
+
+def zenoh_settings(shell: str) -> int:
+    """Write the graph's Zenoh session config (0600: it holds the credentials) next to its
+    socket and print the variable that points a real rmw_zenoh node (or any Zenoh program
+    that reads it) there."""
+    from launcher.bus.session import write_session_config
+
+    path = write_session_config()
+    if shell == "json":
+        print(json.dumps({"ZENOH_SESSION_CONFIG_URI": str(path)}, indent=2))
+    else:
+        print(f"export ZENOH_SESSION_CONFIG_URI={shlex.quote(str(path))}")
     return 0

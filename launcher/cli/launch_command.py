@@ -21,7 +21,6 @@ from launcher.frontend.loader import load_file
 from launcher.packages.index import PackageIndex
 from launcher.runtime.logs import log_root
 from launcher.runtime.output import Printer
-from launcher.runtime.process import ProcessSpec
 from launcher.runtime.service import LaunchService, default_environment
 
 _ASSIGNMENT = re.compile(r"^([A-Za-z_][A-Za-z0-9_\-./]*):=(.*)$", re.S)
@@ -95,7 +94,7 @@ def show(args: argparse.Namespace, description: LaunchDescription,
 
 def launch(args: argparse.Namespace, description: LaunchDescription,
            configurations: dict[str, str], index: PackageIndex) -> int:
-    """Run the description with the bus's router, until it ends or is stopped."""
+    """Run the description on the user's graph, until it ends or is stopped."""
     check_required(description.actions, configurations)
     root: list = [description]
     if args.duration is not None:
@@ -104,18 +103,14 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
         root.append(TimerAction(period=args.duration, actions=[Shutdown(
             reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
     environment = children_environment(index, args.debug)
-    router = bus_router(environment)
-    run_file = discovery.write_run_file(environment[discovery.ROUTER_VARIABLE])
-    service = LaunchService(daemons=[router],
+    discovery.start(environment)  # the graph's router, unless one runs: ready when nodes are
+    service = LaunchService(
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
         load_description=load_file, packages=index,
     )
-    try:
-        return service.run(LaunchDescription(root))
-    finally:
-        run_file.unlink(missing_ok=True)
+    return service.run(LaunchDescription(root))
 
 
 def children_environment(index: PackageIndex, debug: bool) -> dict[str, str]:
@@ -138,16 +133,3 @@ def tools_on_path(environment: dict[str, str]) -> None:
     path = environment.get("PATH", "")
     if folder not in path.split(os.pathsep):
         environment["PATH"] = folder + (os.pathsep + path if path else "")
-
-
-def bus_router(environment: dict[str, str]) -> ProcessSpec:
-    """The run's Zenoh router on a free loopback port; children learn it from the environment.
-    A LAUNCHER_ROUTER already set (another host's run) is joined: routers connect to routers."""
-    endpoint = discovery.free_endpoint()
-    argv = [sys.executable, "-m", "launcher.bus.router", "--listen", endpoint]
-    if environment.get(discovery.ROUTER_VARIABLE):
-        argv += ["--connect", environment[discovery.ROUTER_VARIABLE]]
-    environment[discovery.ROUTER_VARIABLE] = endpoint
-    return ProcessSpec(label="router", argv=argv, env=dict(environment), daemon=True,
-                       stdout_to=frozenset({"log"}), stderr_to=frozenset({"log"}),
-                       sigterm_timeout=1.0, sigkill_timeout=1.0)

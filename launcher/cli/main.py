@@ -22,6 +22,7 @@ COMMANDS = {
     "service": ("launcher.cli.service_command", "services: list, call"),
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "param": ("launcher.cli.param_command", "parameters of a running node: list, get, set"),
+    "router": ("launcher.cli.router_command", "run a standing router of the graph"),
     "sim": ("launcher.cli.sim_command", "run the MuJoCo world server"),
     "gz": ("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model)"),
 }

@@ -66,7 +66,6 @@ class ProcessSpec:
     respawn_delay: float = 0.0
     respawn_max_retries: int = -1
     origin: Any = None  # the action that asked for this process (for event handlers)
-    daemon: bool = False  # a helper of the run (the bus router): does not keep it alive
 
 
 class ProcessHooks(NamedTuple):
@@ -281,8 +280,8 @@ class ManagedProcess:
         self._to(State.EXITED)  # before closing streams, which call back into _maybe_finish
         self._close_streams()
         if self._leader_gone:
-            self._log("DEBUG" if self.spec.daemon else "INFO",
-                      f"process stopped: it {describe_exit(self.returncode)} [pid {self.pid}]")
+            self._log("INFO", f"process stopped: it {describe_exit(self.returncode)} "
+                              f"[pid {self.pid}]")
         self._gone(respawn=False)
 
     def _kill_group(self, sig: int) -> None:

@@ -37,7 +37,6 @@ class LaunchService:
         launch_prefix: str = "",
         debug: bool = False,
         loop: EventLoop | None = None,
-        daemons: list[ProcessSpec] | None = None,
         load_description: Callable[[Path], Any] | None = None,
         packages: Any = None,
         system: Processes | None = None,
@@ -54,7 +53,6 @@ class LaunchService:
         self.launch_prefix = launch_prefix
         self.debug = debug
         self.processes: list[ManagedProcess] = []
-        self._daemons = list(daemons or [])
         self._queue: deque[Any] = deque()
         self._draining = False
         self._handlers: list[events.EventHandler] = []
@@ -79,8 +77,6 @@ class LaunchService:
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
                                            f"{self.run_log.folder}")
-            for spec in self._daemons:
-                self.start_process(spec)
             self.schedule([description])
             self.loop.run()
         finally:
@@ -170,8 +166,7 @@ class LaunchService:
                                        record.text))
 
     def _on_started(self, process: ManagedProcess) -> None:
-        level = "DEBUG" if process.spec.daemon else "INFO"
-        self.log(level, process.label, f"process started with pid [{process.pid}]")
+        self.log("INFO", process.label, f"process started with pid [{process.pid}]")
         self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
 
     def _on_exited(self, process: ManagedProcess, _respawn_pending: bool) -> None:
@@ -252,13 +247,10 @@ class LaunchService:
                 process.escalate()
 
     def _check_idle(self) -> None:
-        """The launch ends when nothing but daemons runs and no timer or action is pending."""
+        """The launch ends when no process runs and no timer or action is pending."""
         if self._finished or self._queue or self._draining or self._timers:
             return
-        if any(p.alive and not p.spec.daemon for p in self.processes):
-            return
         if any(p.alive for p in self.processes):
-            self.shutdown("nothing left to run")  # stops the daemons; we come back here
             return
         self._finished = True
         self.loop.stop()

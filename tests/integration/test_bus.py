@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import signal
 import subprocess
 import sys
@@ -10,6 +9,7 @@ import time
 
 import pytest
 
+from launcher.bus.discovery import answers
 from tests.conftest import Workspace
 
 PY = sys.executable
@@ -48,8 +48,8 @@ def bus(ws):
     return ws
 
 
-def endpoints(ws) -> list[str]:
-    return [json.loads(p.read_text())["router"] for p in (ws.root / "run").glob("*.json")]
+def graph_socket(ws, domain: int = 0):
+    return ws.root / "run" / f"domain-{domain}.sock"
 
 
 def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
@@ -59,13 +59,20 @@ def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
     return proc, ws.root / f"{name}.out"
 
 
-def wait_for_router(ws, timeout: float = 20) -> str:
-    """The endpoint of the router a launch of this workspace started, once it is there."""
+def wait_for_router(ws, timeout: float = 20, domain: int = 0) -> str:
+    """The endpoint of the graph's router of this workspace, once it answers."""
     deadline = time.monotonic() + timeout
-    while not endpoints(ws):
+    while not answers(graph_socket(ws, domain)):
         assert time.monotonic() < deadline, "no router started"
         time.sleep(0.05)
-    return endpoints(ws)[0]
+    return f"unixsock-stream/{graph_socket(ws, domain)}"
+
+
+def wait_router_gone(ws, timeout: float = 20) -> None:
+    deadline = time.monotonic() + timeout
+    while answers(graph_socket(ws)):
+        assert time.monotonic() < deadline, "the router did not stop"
+        time.sleep(0.1)
 
 
 def wait_text(path, needle: str, timeout: float = 30) -> str:
@@ -96,34 +103,57 @@ def test_topic_cli_against_a_live_node_and_latched_delivery(bus):
     assert "process stopped" in out.read_text()
 
 
-def test_two_launches_never_see_each_other(bus):
-    body = "launch:\n  - executable: {{cmd: {py} talker.py {v}, output: screen}}\n"
-    first, out1 = launch(bus, "one.launch.yaml", body.format(py=PY, v="1.0"))
-    second, out2 = launch(bus, "two.launch.yaml", body.format(py=PY, v="2.0"))
+def test_launches_of_one_domain_share_its_graph_and_other_domains_stay_apart(bus):
+    body = "launch:\n  - executable: {{cmd: {py} {script} {v}, output: screen}}\n"
+    first, out1 = launch(bus, "one.launch.yaml", body.format(py=PY, script="talker.py", v="1.0"))
+    other, out2 = launch(bus, "two.launch.yaml", body.format(py=PY, script="talker.py", v="2.0"),
+                         env={"ROS_DOMAIN_ID": "7"})
     wait_text(out1, "talking")
     wait_text(out2, "talking")
-    routers = endpoints(bus)
-    assert len(routers) == 2
-    seen = set()
-    for endpoint in routers:
-        bus.env["LAUNCHER_ROUTER"] = endpoint
-        for _ in range(3):
-            result = bus.run("topic", "echo", "/cmd_vel", "--field", "linear.x", "--once")
-            seen.add((endpoint, result.stdout.split()[0]))
-    assert len(seen) == 2 and {v for _, v in seen} == {"1.0", "2.0"}
-    assert stop(first) == 130 and stop(second) == 130
+    listener, out3 = launch(bus, "three.launch.yaml",
+                            body.format(py=PY, script="listener.py", v=""))
+    wait_text(out3, "heard 1.0")  # a second launch of domain 0 joins the first one's graph
+    seen = {bus.run("topic", "echo", "/cmd_vel", "--field", "linear.x", "--once").stdout.split()[0]
+            for _ in range(3)}
+    assert seen == {"1.0"}
+    bus.env["ROS_DOMAIN_ID"] = "7"
+    seen = {bus.run("topic", "echo", "/cmd_vel", "--field", "linear.x", "--once").stdout.split()[0]
+            for _ in range(3)}
+    assert seen == {"2.0"}
+    assert answers(graph_socket(bus, 0)) and answers(graph_socket(bus, 7))
+    assert stop(first) == 130  # the launch that started the router ends: the others go on
+    bus.env.pop("ROS_DOMAIN_ID")
+    bus.run("topic", "pub", "/cmd_vel", "geometry_msgs/msg/Twist", "{linear: {x: 4.5}}",
+            "--times", "3", "--rate", "10")
+    wait_text(out3, "heard 4.5")
+    assert "heard 2.0" not in out3.read_text()
+    assert stop(listener) == 130 and stop(other) == 130
+    wait_router_gone(bus)  # nothing uses domain 0 any more: its router stops
 
 
-def test_two_routers_stand_for_two_hosts(bus):
+def test_a_standing_router_stands_for_another_host(bus):
     host_a, out_a = launch(bus, "a.launch.yaml",
                            f"launch:\n  - executable: {{cmd: {PY} talker.py 7.0}}\n")
-    wait_for_router(bus)
-    (router_a,) = endpoints(bus)
+    port = free_port()
+    standing = bus.start("router", "--listen", f"tcp/127.0.0.1:{port}", output="router.out")
+    wait_text(bus.root / "router.out", f"tcp/127.0.0.1:{port}")
+    other_host = {"LAUNCHER_ROUTER": f"tcp/127.0.0.1:{port}",
+                  "LAUNCHER_RUN_DIR": str(bus.root / "elsewhere")}
     host_b, out_b = launch(bus, "b.launch.yaml",
                            f"launch:\n  - executable: {{cmd: {PY} listener.py, output: screen}}\n",
-                           env={"LAUNCHER_ROUTER": router_a})
+                           env=other_host)
     wait_text(out_b, "heard 7.0")
+    assert not (bus.root / "elsewhere" / "domain-0.sock").exists()  # it started no router
     assert stop(host_b) == 130 and stop(host_a) == 130
+    assert stop(standing) == 0
+
+
+def free_port() -> int:
+    import socket
+
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
 
 
 def test_names_params_and_topic_pub_into_a_node(bus):
@@ -142,7 +172,7 @@ def test_a_malformed_payload_is_dropped_and_the_node_goes_on(bus):
     proc, out = launch(bus, "l.launch.yaml",
                        f"launch:\n  - executable: {{cmd: {PY} listener.py, output: screen}}\n")
     wait_text(out, "listening on /cmd_vel")
-    (endpoint,) = endpoints(bus)
+    endpoint = wait_for_router(bus)
     injector = bus.write("inject.py", f"""
 import time, zenoh
 from launcher.bus import keys
@@ -192,10 +222,13 @@ def test_no_router_reachable_is_a_clear_error(bus):
     start = time.monotonic()
     result = bus.run("topic", "list", timeout=30)
     assert result.returncode == 1 and time.monotonic() - start < 15
-    assert "no router reachable at tcp/127.0.0.1:9 within 1 s" in result.stderr
+    assert "no router answered at tcp/127.0.0.1:9 within 1 s" in result.stderr
+    assert "Traceback" not in result.stderr
+    assert not (bus.root / "run" / "domain-0.sock").exists()  # it started none
     bus.env.pop("LAUNCHER_ROUTER")
-    nothing = bus.run("topic", "list", timeout=30)
-    assert nothing.returncode == 1 and "no launch is running" in nothing.stderr
+    nothing = bus.run("topic", "list", timeout=30)  # nothing running: an empty graph
+    assert nothing.returncode == 0 and nothing.stdout == "", nothing.stderr
+    wait_router_gone(bus)
 
 
 def test_bag_record_info_play_round_trip(bus):
@@ -328,7 +361,7 @@ node.destroy_node()
     assert stop(proc) == 130
 
 
-def test_a_node_alone_hosts_its_own_bus(bus):
+def test_a_node_alone_starts_the_graph_which_stops_after_it(bus):
 
     from tests.conftest import launcher_argv
     node = subprocess.Popen([PY, "talker.py", "9.0"], cwd=bus.root, env=bus.env,
@@ -349,7 +382,7 @@ def test_a_node_alone_hosts_its_own_bus(bus):
     finally:
         node.send_signal(signal.SIGINT)
         node.wait(10)
-    assert not list((bus.root / "run").glob("*.json"))  # its run file went with it
+    wait_router_gone(bus)
 
 
 def test_bag_record_all_includes_latched_topics(bus):
@@ -376,11 +409,11 @@ print("waiting", flush=True)
 node.spin(20)
 node.destroy_node()
 """
-# A latched publisher whose one live message was lost while routes formed: it appears after the
-# subscriber and only answers queries from its cache, as rmw_zenoh's advanced publisher does.
+# An rmw_zenoh-style latched publisher that appears after the subscriber and whose one message
+# is put before anyone listens: only zenoh-ext's advanced publisher cache holds it.
 CACHE_ONLY = """
 import sys, time
-import zenoh
+import zenoh, zenoh.ext
 from launcher.bus import keys
 from launcher.bus.messages import build
 from launcher.bus.session import open_session
@@ -390,13 +423,15 @@ name = "std_msgs/msg/String"
 key = keys.topic_key(keys.DOMAIN, "/late", name, types.type_hash(name))
 payload = bytes(types.serialize(build(name, {"data": "latched"}), name))
 session = open_session("peer")
-queryable = session.declare_queryable(key, lambda query: query.reply(key, payload))
+publisher = zenoh.ext.declare_advanced_publisher(
+    session, key, cache=zenoh.ext.CacheConfig(1), publisher_detection=True)
+publisher.put(payload)
 entity = keys.Entity(str(session.zid()), 1, 1, keys.PUBLISHER, "", "cache", "/late", name,
                      types.type_hash(name), ":1:,1:,:,:,,")
 token = session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
 print("serving", flush=True)
 time.sleep(float(sys.argv[1]))
-token.undeclare(); queryable.undeclare(); session.close()
+token.undeclare(); publisher.undeclare(); session.close()
 """
 
 

@@ -1,9 +1,9 @@
-"""What a launch writes is its user's own, whatever the umask: the run file that names the
-router, the run's log folder and files, and the params files that hold robot_description."""
+"""What a launch writes is its user's own, whatever the umask: the graph's run folder (its
+socket, lock and router log), the run's log folder and files, and the
+params files that hold robot_description."""
 
 from __future__ import annotations
 
-import json
 import os
 import stat
 
@@ -29,9 +29,9 @@ def test_run_file_logs_and_params_files_are_private(ws):
     """)
     proc = ws.start("launch", "private.launch.yaml", output="out.txt")
     ws.wait_for_output("robot 'r'", 60, "out.txt")
-    (run_file,) = (ws.root / "run").glob("*.json")
-    assert mode(run_file) == 0o600 and mode(run_file.parent) == 0o700
-    assert json.loads(run_file.read_text())["router"].startswith("tcp/127.0.0.1:")
+    run = ws.root / "run"
+    assert mode(run) == 0o700 and (run / "domain-0.sock").is_socket()
+    assert mode(run / "domain-0.lock") == 0o600 and mode(run / "domain-0.log") == 0o600
     assert proc.wait(60) == 0
     (folder,) = [p for p in (ws.root / "log").iterdir() if p.is_dir() and not p.is_symlink()]
     assert mode(folder) == 0o700
