@@ -42,8 +42,10 @@ def one_way(node, pub_type: str, source: str, sink_type: str, sink: str, count: 
             payload_of, key_of=lambda payload: FIRST.unpack_from(payload)[0]) -> list[float]:
     """Latencies (s) of `count` messages sent at 1 kHz from `source` and received on `sink`;
     `payload_of(i)` makes message i, `key_of(payload)` finds i in what arrives."""
+    from launcher.bus import keys
     from launcher.bus.qos import QoS
 
+    side = keys.SIM if pub_type.startswith("mujoco_sim/") else keys.ROS  # the sim's own side
     sent: dict[float, float] = {}
     out: list[float] = []
 
@@ -53,7 +55,7 @@ def one_way(node, pub_type: str, source: str, sink_type: str, sink: str, count: 
 
     subscription = node.create_subscription(sink_type, sink, on, QoS(depth=1000), raw=True,
                                             inline=True)
-    publisher = node.create_publisher(pub_type, source, QoS(depth=1000))
+    publisher = node.create_publisher(pub_type, source, QoS(depth=1000), space=side)
     time.sleep(0.5)
     start_time = time.perf_counter()
     for i in range(count):

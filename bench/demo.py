@@ -23,6 +23,7 @@ REPO = Path(__file__).resolve().parent.parent
 # arrives (wall time), then the sim's real-time factor over a window once all have arrived.
 PROBE = """
 import json, sys, time
+from launcher.bus import keys
 from launcher.bus.node import Node
 topics, window = sys.argv[1].split(","), float(sys.argv[2])
 node = Node("bench_probe")
@@ -37,7 +38,7 @@ for topic in topics:
     node.create_subscription("nav_msgs/msg/Odometry", topic, heard(topic))
 def tick(c):
     clocks.append((time.monotonic(), c.sim.sec + c.sim.nanosec * 1e-9))
-node.create_subscription("mujoco_sim/msg/Clock", "/world/robot/clock", tick)
+node.create_subscription("mujoco_sim/msg/Clock", "/world/robot/clock", tick, space=keys.SIM)
 while len(first) < len(topics):
     node.spin_once(0.05)
 print("PROBE " + json.dumps({"all": True}), flush=True)

@@ -46,6 +46,7 @@ def unpaced(robots: int, steps: int) -> tuple[float, float]:
     """(server steps/s, raw mj_step steps/s) on the same model and state."""
     import mujoco
 
+    from launcher.bus import keys
     from launcher.bus.node import Node
     from launcher.sim import mjcf
     from launcher.sim.resources import find_world
@@ -55,7 +56,7 @@ def unpaced(robots: int, steps: int) -> tuple[float, float]:
 
     path = find_world("empty.xml")
     source = mjcf.read(path.read_text(), path)
-    node = Node(f"bench_sim_{robots}", argv=[])
+    node = Node(f"bench_sim_{robots}", argv=[], space=keys.SIM)
     world = World(mjcf.compile_spec(source), str(path), quiet_transport(node), source.plugins)
     server = SimServer(world, node, rtf=0.0, running=True)
     template = world.templates.from_file(str(ROBOT))
@@ -79,10 +80,11 @@ def unpaced(robots: int, steps: int) -> tuple[float, float]:
 
 
 def paced(env: dict[str, str], seconds: float) -> dict[str, float]:
+    from launcher.bus import keys
     from launcher.bus.node import Node
 
     sim = subprocess.Popen([PY, "-m", "launcher.nodes.sim", "-r"], env=env)
-    node = Node("bench_probe", argv=[])
+    node = Node("bench_probe", argv=[], space=keys.SIM)  # the sim's own side
     try:
         create = subprocess.run([PY, "-m", "launcher.nodes.create", "-name", "bot", "-file",
                                  str(ROBOT), "-z", "0.06"], env=env, capture_output=True,

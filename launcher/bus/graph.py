@@ -18,9 +18,11 @@ class TopicInfo:
     subscribers: list[keys.Entity] = field(default_factory=list)
 
 
-def entities(session: zenoh.Session, timeout: float = 1.0) -> list[keys.Entity]:
+def entities(session: zenoh.Session, timeout: float = 1.0,
+             space: keys.Space = keys.ROS) -> list[keys.Entity]:
     found = []
-    for reply in session.liveliness().get(f"{keys.LIVELINESS}/{keys.DOMAIN}/**", timeout=timeout):
+    for reply in session.liveliness().get(f"{space.liveliness}/{keys.DOMAIN}/**",
+                                          timeout=timeout):
         if reply.ok is not None:
             entity = keys.parse_liveliness(str(reply.ok.key_expr))
             if entity is not None:
@@ -28,9 +30,9 @@ def entities(session: zenoh.Session, timeout: float = 1.0) -> list[keys.Entity]:
     return found
 
 
-def topics(session: zenoh.Session) -> dict[str, TopicInfo]:
+def topics(session: zenoh.Session, space: keys.Space = keys.ROS) -> dict[str, TopicInfo]:
     table: dict[str, TopicInfo] = defaultdict(lambda: TopicInfo(""))
-    for entity in entities(session):
+    for entity in entities(session, space=space):
         if entity.kind not in (keys.PUBLISHER, keys.SUBSCRIPTION):
             continue
         info = table[entity.topic]

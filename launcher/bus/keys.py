@@ -9,6 +9,15 @@
                    since its 2024 releases; a part equal to its default profile is left empty,
                    so the usual profile is `::,10:,:,:,,`); the older `1:2:1,10` is still read
     attachment     int64 sequence number, int64 source timestamp (ns), a byte 16, 16-byte GID
+    latched        zenoh-ext's advanced publisher and subscriber on the topic key (their own
+                   `<key>/@adv/…` keys), as rmw_zenoh makes transient local endpoints
+
+Followed: rmw_zenoh_cpp's rolling branch as of late 2025 (liveliness_utils.cpp,
+rmw_publisher_data.cpp, rmw_subscription_data.cpp, attachment_helpers.cpp).
+
+The simulator's own topics and services (Gazebo's gz-transport side) use the same layout
+under other first chunks, `@sim/<domain>/…` and `@sim_lv/…`, so that they stay off the ROS
+graph (`@` chunks match no wildcard) and the bridge and the `gz` tools find them (SIM).
 """
 
 from __future__ import annotations
@@ -17,9 +26,26 @@ import os
 import struct
 from dataclasses import dataclass
 
-DOMAIN = int(os.environ.get("ROS_DOMAIN_ID", "0") or 0)
+_DOMAIN_TEXT = os.environ.get("ROS_DOMAIN_ID", "").strip()
+# checked (0–232) where sessions open (discovery.domain_id): a bad one is said there
+DOMAIN = int(_DOMAIN_TEXT) if _DOMAIN_TEXT.isdigit() else 0
 
 LIVELINESS = "@ros2_lv"
+
+
+@dataclass(frozen=True)
+class Space:
+    """Where a graph's keys and tokens live: ROS 2's, or the simulator's own."""
+
+    data: str  # the first chunk of topic and service keys, before the domain ("" for ROS)
+    liveliness: str
+
+    def prefix(self, domain: int) -> str:
+        return f"{self.data}{domain}"
+
+
+ROS = Space("", LIVELINESS)
+SIM = Space("@sim/", "@sim_lv")
 NODE, PUBLISHER, SUBSCRIPTION, SERVICE, CLIENT = "NN", "MP", "MS", "SS", "SC"
 _ATTACHMENT = struct.Struct("<qqB16s")
 
@@ -65,16 +91,20 @@ def ros_type(dds: str) -> str:
     return f"{package}/{kind}/{message.rstrip('_')}"
 
 
-def topic_key(domain: int, topic: str, type_name: str, type_hash: str) -> str:
-    return f"{domain}/{topic.strip('/')}/{dds_type(type_name)}/{type_hash}"
+def topic_key(domain: int, topic: str, type_name: str, type_hash: str,
+              space: Space = ROS) -> str:
+    return f"{space.prefix(domain)}/{topic.strip('/')}/{dds_type(type_name)}/{type_hash}"
 
 
-def service_key(domain: int, service: str, type_name: str, type_hash: str) -> str:
-    return f"{domain}/{service.strip('/')}/{dds_type(type_name)}/{type_hash}"
+def service_key(domain: int, service: str, type_name: str, type_hash: str,
+                space: Space = ROS) -> str:
+    return f"{space.prefix(domain)}/{service.strip('/')}/{dds_type(type_name)}/{type_hash}"
 
 
 def split_topic_key(key: str) -> tuple[str, str, str]:
-    """(topic, ROS type, hash) of a topic key."""
+    """(topic, ROS type, hash) of a topic key (of either space)."""
+    if key.startswith(SIM.data):
+        key = key[len(SIM.data):]
     _, rest = key.split("/", 1)
     topic, dds, type_hash = rest.rsplit("/", 2)
     return "/" + topic, ros_type(dds), type_hash
@@ -108,14 +138,8 @@ class Entity:
         return f"{self.namespace.rstrip('/')}/{self.node}"
 
 
-def publishers_key(domain: int, topic: str, type_name: str) -> str:
-    """The liveliness key expression matching every publisher of `topic` with `type_name`."""
-    return "/".join([LIVELINESS, str(domain), "*", "*", "*", PUBLISHER, "*", "*", "*",
-                     mangle(topic), dds_type(type_name), "*", "*"])
-
-
-def liveliness_key(domain: int, entity: Entity) -> str:
-    parts = [LIVELINESS, str(domain), entity.zid, str(entity.node_id), str(entity.entity_id),
+def liveliness_key(domain: int, entity: Entity, space: Space = ROS) -> str:
+    parts = [space.liveliness, str(domain), entity.zid, str(entity.node_id), str(entity.entity_id),
              entity.kind, "%", mangle(entity.namespace), entity.node]
     if entity.kind != NODE:
         parts += [mangle(entity.topic), dds_type(entity.type_name), entity.type_hash,
@@ -125,7 +149,7 @@ def liveliness_key(domain: int, entity: Entity) -> str:
 
 def parse_liveliness(key: str) -> Entity | None:
     parts = key.split("/")
-    if len(parts) < 9 or parts[0] != LIVELINESS:
+    if len(parts) < 9 or parts[0] not in (ROS.liveliness, SIM.liveliness):
         return None
     _, _, zid, nid, eid, kind, _, namespace, node, *rest = parts
     entity = Entity(zid, int(nid), int(eid), kind, unmangle(namespace), node)

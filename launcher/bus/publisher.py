@@ -1,45 +1,55 @@
-"""A publisher: CDR payloads put on its topic's key with rmw_zenoh's attachment; a transient
-local one keeps its last `depth` messages and answers late subscribers' queries with them."""
+"""A publisher: CDR payloads put on its topic's key with rmw_zenoh's attachment. A transient
+local one is what rmw_zenoh makes of it: zenoh-ext's advanced publisher, keeping its last
+`depth` messages for late subscribers, detectable by them (`<key>/@adv/pub/…`), and with
+sporadic heartbeats when reliable, so that a subscriber can tell it missed one."""
 
 from __future__ import annotations
 
 import itertools
 import os
 import time
-from collections import deque
 from collections.abc import Callable
 from typing import Any
 
 import zenoh
+import zenoh.ext
 
 from launcher.bus import keys
 from launcher.bus.host import Host
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 
+HEARTBEAT = 0.5  # s, a reliable latched publisher's sporadic heartbeat (rmw_zenoh's period)
+
 
 class Publisher:
-    def __init__(self, host: Host, type_name: str, topic: str, qos: QoS) -> None:
+    def __init__(self, host: Host, type_name: str, topic: str, qos: QoS,
+                 space: keys.Space | None = None) -> None:
         types = registry()
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host = topic, qos, host
-        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name))
+        self.space = space or host.space
+        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name),
+                             self.space)
         # Reliable means "do not drop": block under congestion, as ROS 2 reliable QoS does.
-        if qos.reliable:
-            self._publisher = host.session.declare_publisher(
-                key, reliability=zenoh.Reliability.RELIABLE,
-                congestion_control=zenoh.CongestionControl.BLOCK)
-        else:
-            self._publisher = host.session.declare_publisher(
-                key, reliability=zenoh.Reliability.BEST_EFFORT,
-                congestion_control=zenoh.CongestionControl.DROP)
+        options: dict[str, Any] = {
+            "reliability": zenoh.Reliability.RELIABLE, "congestion_control":
+            zenoh.CongestionControl.BLOCK} if qos.reliable else {
+            "reliability": zenoh.Reliability.BEST_EFFORT,
+            "congestion_control": zenoh.CongestionControl.DROP}
+        # Whether anyone listens (a plain publisher tells, an advanced one does not).
+        self._publisher = host.session.declare_publisher(key, **options)
+        self._latched: Any = None
+        if qos.transient_local:
+            self._latched = zenoh.ext.declare_advanced_publisher(
+                host.session, key, **options, publisher_detection=True,
+                cache=zenoh.ext.CacheConfig(qos.depth),
+                sample_miss_detection=zenoh.ext.MissDetectionConfig(
+                    heartbeat=None, sporadic_heartbeat=HEARTBEAT) if qos.reliable else None)
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
-        self._cache: deque[tuple[bytes, bytes]] = deque(maxlen=qos.depth)
-        self._queryable = host.session.declare_queryable(key, self._replay) \
-            if qos.transient_local else None
         self._token = host.announce(keys.PUBLISHER, topic, self.type_name,
-                                    types.type_hash(self.type_name), qos.key())
+                                    types.type_hash(self.type_name), qos.key(), self.space)
         # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
         self._matching = self._publisher.matching_status.matching
         self._watchers: list[Callable[[bool], None]] = []
@@ -63,17 +73,11 @@ class Publisher:
     def publish_raw(self, payload: bytes) -> None:
         """Publish a CDR payload as it is (bag play, bridges)."""
         attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
-        if self._queryable is not None:
-            self._cache.append((payload, attachment))
         try:
-            self._publisher.put(payload, attachment=attachment)
+            (self._latched or self._publisher).put(payload, attachment=attachment)
         except zenoh.ZError:
             if not self._closed:  # a callback on Zenoh's thread may race destroy(): quiet
                 raise
-
-    def _replay(self, query: zenoh.Query) -> None:
-        for payload, attachment in list(self._cache):
-            query.reply(self._publisher.key_expr, payload, attachment=attachment)
 
     def get_subscription_count(self) -> int:
         """1 while any subscriber matches (Zenoh does not count them), else 0."""
@@ -83,6 +87,6 @@ class Publisher:
         if not self._host.forget(self):
             return
         self._closed = True
-        for item in (self._listener, self._queryable, self._publisher, self._token):
+        for item in (self._listener, self._latched, self._publisher, self._token):
             if item is not None:
                 item.undeclare()

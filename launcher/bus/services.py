@@ -26,15 +26,17 @@ class Service:
     """Answers requests: `callback(request, response) -> response`, run by the executor."""
 
     def __init__(self, host: Host, type_name: str, name: str,
-                 callback: Any) -> None:
+                 callback: Any, space: keys.Space | None = None) -> None:
         types = registry()
         self.type_name = type_name
         self.request_type, self.response_type = types.service(type_name)
         self.name, self._host, self._callback = name, host, callback
-        key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name))
+        space = space or host.space
+        key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name),
+                               space)
         self._queryable = host.session.declare_queryable(key, self._on_query)
         self._token = host.announce(keys.SERVICE, name, type_name,
-                                    types.service_hash(type_name), QoS().key())
+                                    types.service_hash(type_name), QoS().key(), space)
 
     def _on_query(self, query: zenoh.Query) -> None:
         self._host.enqueue(self._answer, query)
@@ -61,13 +63,16 @@ class Service:
 class Client:
     """Calls a service: `call(request, timeout)` waits; `call_async` returns a Future."""
 
-    def __init__(self, host: Host, type_name: str, name: str) -> None:
+    def __init__(self, host: Host, type_name: str, name: str,
+                 space: keys.Space | None = None) -> None:
         types = registry()
         self.type_name, self.name, self._host = type_name, name, host
         self.request_type, self.response_type = types.service(type_name)
-        self._key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name))
+        self.space = space or host.space
+        self._key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name),
+                                     self.space)
         self._token = host.announce(keys.CLIENT, name, type_name, types.service_hash(type_name),
-                                    QoS().key())
+                                    QoS().key(), self.space)
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
 
@@ -102,7 +107,7 @@ class Client:
         while time.monotonic() < deadline:
             if any(e.kind == keys.SERVICE and e.topic == self.name and
                    e.type_name == self.type_name  # another type by that name will not answer
-                   for e in graph.entities(self._host.graph_session(), 0.5)):
+                   for e in graph.entities(self._host.graph_session(), 0.5, self.space)):
                 return True
             time.sleep(0.05)
         return False

@@ -26,11 +26,20 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     call.add_argument("values", nargs="?", default="{}", help="the request as YAML")
     call.add_argument("--timeout", type=float, default=5.0)
     call.set_defaults(run=run_call)
+    for verb in (listing, call):
+        verb.add_argument("--sim", action="store_true",
+                          help="the simulator's own services (Gazebo's gz-transport side), not "
+                               "the ROS graph's")
+
+
+def _space(args: argparse.Namespace) -> keys.Space:
+    return keys.SIM if args.sim else keys.ROS
 
 
 def run_list(args: argparse.Namespace) -> int:
     session = open_session("client")
-    found = {(e.topic, e.type_name) for e in graph.entities(session) if e.kind == keys.SERVICE}
+    found = {(e.topic, e.type_name) for e in graph.entities(session, space=_space(args))
+             if e.kind == keys.SERVICE}
     for name, type_name in sorted(found):
         print(f"{name} [{type_name}]" if args.show_types else name)
     session.close()
@@ -44,7 +53,8 @@ def run_call(args: argparse.Namespace) -> int:
         raise UsageError(f"the request is not valid YAML: {exc}") from None
     request_type, _ = registry().service(args.type)
     request = build(request_type, values)
-    node = Node("_launcher_service_call", argv=[], parameter_services=False)
+    node = Node("_launcher_service_call", argv=[], parameter_services=False,
+                space=_space(args))
     try:
         client = node.create_client(args.type, args.name)
         print(f"requester: making request: {to_data(request)}\n")

@@ -10,7 +10,7 @@ from typing import Any
 
 import yaml
 
-from launcher.bus import graph
+from launcher.bus import graph, keys
 from launcher.bus.messages import build, to_data
 from launcher.bus.names import expand
 from launcher.bus.node import Node, Rate
@@ -49,19 +49,30 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     hz.set_defaults(run=run_hz)
     info = verbs.add_parser("info", help="type and endpoints of a topic")
     info.add_argument("topic")
+    info.add_argument("-v", "--verbose", action="store_true",
+                      help="each publisher and subscription: node, type, QoS")
     info.set_defaults(run=run_info)
+    for verb in (listing, echo, pub, hz, info):
+        verb.add_argument("--sim", action="store_true",
+                          help="the simulator's own topics (Gazebo's gz-transport side), not "
+                               "the ROS graph's")
+
+
+def _space(args: argparse.Namespace) -> keys.Space:
+    return keys.SIM if args.sim else keys.ROS
 
 
 def _topic(name: str) -> str:
     return expand(name)
 
 
-def _type_of(session: Any, topic: str, given: str | None) -> str:
+def _type_of(session: Any, topic: str, given: str | None,
+             space: keys.Space = keys.ROS) -> str:
     if given:
         return given
     deadline = time.monotonic() + 5.0
     while True:
-        table = graph.topics(session)
+        table = graph.topics(session, space)
         info = table.get(topic)
         if info and info.publishers:
             return sorted(info.types)[0]
@@ -74,7 +85,7 @@ def _type_of(session: Any, topic: str, given: str | None) -> str:
 
 def run_list(args: argparse.Namespace) -> int:
     session = open_session("client")
-    for name, info in sorted(graph.topics(session).items()):
+    for name, info in sorted(graph.topics(session, _space(args)).items()):
         print(f"{name} [{', '.join(sorted(info.types))}]" if args.show_types else name)
     session.close()
     return 0
@@ -100,8 +111,9 @@ def _csv(data: Any) -> str:
 def run_echo(args: argparse.Namespace) -> int:
     session = open_session("client")
     topic = _topic(args.topic)
-    type_name = _type_of(session, topic, args.type)
-    node = Node("_launcher_topic_echo", argv=[], parameter_services=False, session=session)
+    type_name = _type_of(session, topic, args.type, _space(args))
+    node = Node("_launcher_topic_echo", argv=[], parameter_services=False, session=session,
+                space=_space(args))
     done = threading.Event()
 
     def show(message: Any) -> None:
@@ -131,7 +143,7 @@ def run_pub(args: argparse.Namespace) -> int:
     except yaml.YAMLError as exc:
         raise UsageError(f"the message is not valid YAML: {exc}") from None
     message = build(args.type, values)
-    node = Node("_launcher_topic_pub", argv=[], parameter_services=False)
+    node = Node("_launcher_topic_pub", argv=[], parameter_services=False, space=_space(args))
     qos = QoS(depth=1, transient_local=True) if args.latched else QoS()
     publisher = node.create_publisher(args.type, _topic(args.topic), qos)
     time.sleep(0.2)  # let subscribers find the publisher
@@ -156,9 +168,10 @@ def run_pub(args: argparse.Namespace) -> int:
 def run_hz(args: argparse.Namespace) -> int:
     session = open_session("client")
     topic = _topic(args.topic)
-    node = Node("_launcher_topic_hz", argv=[], parameter_services=False, session=session)
+    node = Node("_launcher_topic_hz", argv=[], parameter_services=False, session=session,
+                space=_space(args))
     stamps: list[float] = []
-    node.create_subscription(_type_of(session, topic, None), topic,
+    node.create_subscription(_type_of(session, topic, None, _space(args)), topic,
                                             lambda _m: stamps.append(time.monotonic()))
     while not node.interrupted:
         node.spin(args.window)
@@ -172,11 +185,15 @@ def run_hz(args: argparse.Namespace) -> int:
 def run_info(args: argparse.Namespace) -> int:
     session = open_session("client")
     topic = _topic(args.topic)
-    info = graph.topics(session).get(topic)
+    info = graph.topics(session, _space(args)).get(topic)
+    session.close()
     if info is None:
         raise LaunchError(f"unknown topic '{topic}'")
     print(f"Type: {', '.join(sorted(info.types))}")
-    print(f"Publisher count: {len(info.publishers)}")
-    print(f"Subscription count: {len(info.subscribers)}")
-    session.close()
+    for title, endpoints in (("Publisher", info.publishers),
+                             ("Subscription", info.subscribers)):
+        print(f"{title} count: {len(endpoints)}")
+        if args.verbose:
+            for entity in sorted(endpoints, key=lambda e: e.node_fqn):
+                print(f"  {entity.node_fqn}  {entity.type_name}  QoS {entity.qos}")
     return 0

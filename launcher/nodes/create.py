@@ -92,7 +92,7 @@ def find_world(node: Any, deadline: float, timeout: float, service: str = "creat
     from launcher.bus import graph, keys
 
     while True:
-        found = graph.entities(node.graph_session(), 0.5)
+        found = graph.entities(node.graph_session(), 0.5, keys.SIM)
         worlds = sorted({e.topic.split("/")[2] for e in found
                          if e.kind == keys.SERVICE and e.topic.startswith("/world/")
                          and e.topic.endswith(f"/{service}")
@@ -149,6 +149,7 @@ def run(argv: list[str]) -> int:
 
 
 def spawn(node: Any) -> int:
+    from launcher.bus import keys
     from launcher.sim.transform import pose_from  # no MuJoCo, no numpy
 
     options = parse(node.args, node.parameters)
@@ -156,7 +157,8 @@ def spawn(node: Any) -> int:
     deadline = time.monotonic() + timeout
     world = options.get("world") or find_world(node, deadline, timeout)
     text, file = description(node, options, deadline)
-    client = node.create_client("mujoco_sim/srv/Create", f"/world/{world}/create")
+    client = node.create_client("mujoco_sim/srv/Create", f"/world/{world}/create",
+                                space=keys.SIM)
     if not client.wait_for_service(max(0.0, deadline - time.monotonic())):
         raise SimNotFound(f"the sim's /world/{world}/create service did not answer within "
                           f"{timeout:g} s")

@@ -5,7 +5,8 @@ See bridge_config.py for the YAML and the command-line forms and conversions.py 
 pairs. Namespaces and remaps apply to the ROS side only: sim names are used as written
 (relative ones from `/`), so one bridge per robot (in its namespace) and one bridge for all
 robots (absolute per-robot entries) both work. A bad entry is reported and skipped; the
-bridge runs with the rest.
+bridge runs with the rest. The sim's side is its own (keys.SIM), as gz-transport is apart from
+ROS: the bridge is what puts a sim topic on the ROS graph.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from __future__ import annotations
 import sys
 from typing import Any
 
+from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.errors import LaunchError
@@ -44,17 +46,17 @@ class Bridge:
         ros_name = self.node.resolve(entry.ros_name)
         ways = []
         if entry.direction in ("BIDIRECTIONAL", "GZ_TO_ROS"):
-            ways.append((entry.sim_type, sim_name, entry.ros_type, ros_name, conversion.to_ros,
-                         "GZ_TO_ROS"))
+            ways.append(((entry.sim_type, sim_name, keys.SIM),
+                         (entry.ros_type, ros_name, keys.ROS), conversion.to_ros, "GZ_TO_ROS"))
         if entry.direction in ("BIDIRECTIONAL", "ROS_TO_GZ"):
-            ways.append((entry.ros_type, ros_name, entry.sim_type, sim_name, conversion.to_sim,
-                         "ROS_TO_GZ"))
+            ways.append(((entry.ros_type, ros_name, keys.ROS),
+                         (entry.sim_type, sim_name, keys.SIM), conversion.to_sim, "ROS_TO_GZ"))
         for *_, convert, way in ways:
             if convert is None:
                 raise LaunchError(f"{entry.ros_type} ⇄ gz.msgs.{entry.sim_type.rsplit('/')[-1]}"
                                   f" can only go one way; {way} is not supported")
-        for source_type, source, target_type, target, convert, _ in ways:
-            self._one_way(entry, source_type, source, target_type, target, convert)
+        for source, target, convert, _ in ways:
+            self._one_way(entry, source, target, convert)
         arrow = {"BIDIRECTIONAL": "<->", "GZ_TO_ROS": "->", "ROS_TO_GZ": "<-"}[entry.direction]
         self.log.info(f"bridging {sim_name} ({entry.sim_type}) {arrow} {ros_name} "
                       f"({entry.ros_type}){' lazily' if entry.lazy else ''}")
@@ -65,7 +67,7 @@ class Bridge:
 
         conversion = conversions.find_service(entry.ros_type, entry.sim_type)
         sim_name = entry.sim_name if entry.sim_name.startswith("/") else f"/{entry.sim_name}"
-        client = self.node.create_client(entry.sim_type, sim_name)
+        client = self.node.create_client(entry.sim_type, sim_name, space=keys.SIM)
         request_type = f"{entry.sim_type}_Request"
 
         def forward(request: Any, response: Any) -> Any:
@@ -80,18 +82,20 @@ class Bridge:
         self.log.info(f"bridging service {sim_name} ({entry.sim_type}) <- {server.name} "
                       f"({entry.ros_type})")
 
-    def _one_way(self, entry: Entry, source_type: str, source: str, target_type: str,
-                 target: str, convert: Any) -> None:
-        publisher = self.node.create_publisher(target_type, target,
-                                               QoS(depth=entry.publisher_queue))
+    def _one_way(self, entry: Entry, source: tuple[str, str, keys.Space],
+                 target: tuple[str, str, keys.Space], convert: Any) -> None:
+        """Forward (type, name, space) `source` to `target`, converting each payload."""
+        publisher = self.node.create_publisher(target[0], target[1],
+                                               QoS(depth=entry.publisher_queue),
+                                               space=target[2])
 
         def forward(payload: bytes) -> None:
             publisher.publish_raw(convert(payload))
 
         def subscribe() -> Any:
             return self.node.create_subscription(
-                source_type, source, forward, QoS(depth=entry.subscriber_queue), raw=True,
-                inline=True, remote_only=True)
+                source[0], source[1], forward, QoS(depth=entry.subscriber_queue), raw=True,
+                inline=True, remote_only=True, space=source[2])
 
         if not entry.lazy:
             subscribe()

@@ -82,6 +82,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def run(args: argparse.Namespace, ros: list[str]) -> int:
+    from launcher.bus import keys
     from launcher.bus.node import Node
     from launcher.sim.resources import find_world
     from launcher.sim.server import SimServer, install_signal_handlers
@@ -90,7 +91,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
 
     path = find_world(args.world)
     values = world_values(args.world_arg)
-    node = Node("sim", argv=ros)
+    node = Node("sim", argv=ros, space=keys.SIM)  # off the ROS graph, as gz sim is
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
         world = World.from_path(path, BusTransport(node), values)

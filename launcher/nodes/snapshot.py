@@ -38,6 +38,7 @@ def parse(argv: list[str]) -> argparse.Namespace:
 
 
 def take(argv: list[str]) -> int:
+    from launcher.bus import keys
     from launcher.bus.node import Node
 
     args = parse(argv)
@@ -48,7 +49,7 @@ def take(argv: list[str]) -> int:
     if not output.parent.is_dir():
         raise LaunchError(f"cannot write '{output}': the folder '{output.parent}' does not "
                           "exist")
-    node = Node("snapshot", argv=[])
+    node = Node("snapshot", argv=[], parameter_services=False, space=keys.SIM)
     try:
         deadline = time.monotonic() + args.timeout
         try:
@@ -59,7 +60,7 @@ def take(argv: list[str]) -> int:
         client = node.create_client(SERVICE_TYPE, f"/world/{world}/snapshot")
         if not client.wait_for_service(max(0.0, deadline - time.monotonic())):
             raise LaunchError(f"no sim with world '{world}' answered within "
-                              f"{args.timeout:g} s (`launcher service list` shows the "
+                              f"{args.timeout:g} s (`launcher gz service -l` shows the "
                               "running ones)")
         request = node.message(f"{SERVICE_TYPE}_Request", width=args.width,
                                height=args.height, camera=args.camera, track=args.track)

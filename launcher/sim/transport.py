@@ -1,6 +1,10 @@
 """What the world and its plugins use of the bus: the `Transport` protocol, and the one that
 speaks over a real node (`BusTransport`, with fast message construction). Unit tests hand the
-world a recording stand-in that satisfies the same protocol."""
+world a recording stand-in that satisfies the same protocol.
+
+The sim's topics and services are on the simulator's own side (keys.SIM), apart from the ROS
+graph as gz-transport is from ROS; `ros=True` puts one on the ROS graph instead, as gazebo_ros's
+classic plugins do."""
 
 from __future__ import annotations
 
@@ -8,6 +12,7 @@ import math
 from collections.abc import Callable, Sequence
 from typing import Any, Protocol, runtime_checkable
 
+from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
@@ -18,9 +23,10 @@ from launcher.bus.wire import nanoseconds
 class Transport(Protocol):
     logger: Any
 
-    def publisher(self, type_name: str, topic: str, qos: Any = 10) -> Any: ...
+    def publisher(self, type_name: str, topic: str, qos: Any = 10, ros: bool = False) -> Any: ...
 
-    def subscribe(self, type_name: str, topic: str, callback: Callable[[Any], None]) -> Any: ...
+    def subscribe(self, type_name: str, topic: str, callback: Callable[[Any], None],
+                  ros: bool = False) -> Any: ...
 
     def message(self, type_name: str, **fields: Any) -> Any: ...
 
@@ -48,11 +54,13 @@ class BusTransport:
     def message(self, type_name: str, **fields: Any) -> Any:
         return self.cls(type_name)(**fields)
 
-    def publisher(self, type_name: str, topic: str, qos: QoS | int = 10) -> Any:
-        return self.node.create_publisher(type_name, topic, qos)
+    def publisher(self, type_name: str, topic: str, qos: QoS | int = 10,
+                  ros: bool = False) -> Any:
+        return self.node.create_publisher(type_name, topic, qos, space=keys.ROS if ros else None)
 
-    def subscribe(self, type_name: str, topic: str, callback: Any) -> Any:
-        return self.node.create_subscription(type_name, topic, callback)
+    def subscribe(self, type_name: str, topic: str, callback: Any, ros: bool = False) -> Any:
+        return self.node.create_subscription(type_name, topic, callback,
+                                             space=keys.ROS if ros else None)
 
     def time(self, seconds: float) -> Any:
         sec = math.floor(seconds)

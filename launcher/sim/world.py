@@ -66,6 +66,16 @@ class Entity:
     placed: dict[str, Pose] = field(default_factory=dict)  # static roots as loaded
 
 
+def world_name(name: str) -> str:
+    """The name in `/world/<name>/…`: the MJCF model's or the SDF world's, made a valid name
+    part; MuJoCo's own default ("MuJoCo Model", an MJCF without `model=`) is Gazebo's
+    "default"."""
+    if not name or name == "MuJoCo Model":
+        return "default"
+    name = re.sub(r"\W", "_", name, flags=re.ASCII)
+    return f"_{name}" if name[0].isdigit() else name
+
+
 class World:
     real_time_factor: float | None = None  # the world file's own pace, if it sets one
 
@@ -87,7 +97,10 @@ class World:
                  models: Sequence[WorldModel] | None = None) -> None:
         """`models`: the world file's models (SDF); None takes MJCF's top-level bodies."""
         self.spec, self.label, self.transport = spec, label, transport
-        self.world_name = spec.modelname or "default"
+        self.world_name = world_name(spec.modelname)
+        if self.world_name not in (spec.modelname, "default"):
+            transport.logger.warning(f"world name '{spec.modelname}' is not a valid ROS name "
+                                     f"part; its topics use '{self.world_name}'")
         self.templates = templates or Templates()
         self.entities: dict[str, Entity] = {}
         self.iterations = 0

@@ -63,7 +63,7 @@ def test_the_demo_drives_publishes_tf_and_clock_and_stops_cleanly(demo):
         before = sim_seconds(demo)
         demo.wait_for_output("X: 1.5", 60, "demo.out")
         assert sim_seconds(demo) > before
-        names = demo.run("topic", "echo", "/world/robot/model_states", "--once", "--field",
+        names = demo.run("topic", "echo", "--sim", "/world/robot/model_states", "--once", "--field",
                          "name").stdout
         assert "my_robot" in names and "crate" in names
     finally:
@@ -80,7 +80,7 @@ def test_overrides_pick_the_arena_and_leave_the_driver_out(demo):
                       output="demo.out")
     try:
         demo.wait_for_output("spawned 'my_robot' into world 'arena'", 90, "demo.out")
-        names = demo.run("topic", "echo", "/world/arena/model_states", "--once", "--field",
+        names = demo.run("topic", "echo", "--sim", "/world/arena/model_states", "--once", "--field",
                          "name").stdout
         assert "my_robot" in names
         assert "[driver" not in demo.output("demo.out")
@@ -104,7 +104,7 @@ def test_three_robots_from_one_launch_file_move_independently(demo):
     try:
         for i in range(3):
             demo.wait_for_output(f"spawned 'robot_{i}' into world 'robot'", 90, "multi.out")
-        names = demo.run("topic", "echo", "/world/robot/model_states", "--once", "--field",
+        names = demo.run("topic", "echo", "--sim", "/world/robot/model_states", "--once", "--field",
                          "name").stdout
         assert all(f"robot_{i}" in names for i in range(3))
         demo.wait_for_output("X: 1.", 90, "multi.out")  # the fastest is past a metre

@@ -110,7 +110,8 @@ def bridge_ws(ws):
 
 
 def subscriber_count(ws, topic: str) -> int:
-    info = ws.run("topic", "info", topic)
+    """Subscriptions to a topic of the sim's own side (the bridge's, when it listens)."""
+    info = ws.run("topic", "info", "--sim", topic)
     line = next((x for x in info.stdout.splitlines() if x.startswith("Subscription count")), "")
     return int(line.split(":")[1]) if line else 0
 
@@ -143,7 +144,7 @@ def test_the_bridge_carries_clock_cmd_vel_odom_and_is_lazy_where_asked(bridge_ws
                                "ros_gz_interfaces/srv/ControlWorld",
                                "{world_control: {pause: true}}")
         assert "success: true" in paused.stdout, paused.stderr
-        clock = bridge_ws.run("topic", "echo", "/world/empty/clock", "--once", "--field",
+        clock = bridge_ws.run("topic", "echo", "--sim", "/world/empty/clock", "--once", "--field",
                               "paused")
         assert clock.stdout.strip().lower().startswith("true"), clock.stdout
         spawned = bridge_ws.run("service", "call", "/world/empty/create",

@@ -23,8 +23,9 @@ launch:
 # Talks to the running sim over the bus, as any node would, and prints what it saw as JSON.
 PROBE = """
 import json, time
+from launcher.bus import keys
 from launcher.bus.node import Node
-node = Node("probe")
+node = Node("probe", space=keys.SIM)  # the sim's own side, as a gz-transport client
 result = {}
 clocks = []
 odom = []
@@ -186,7 +187,7 @@ launch:
                                     cwd=sim_ws.root, env=sim_ws.env, capture_output=True,
                                     text=True, timeout=60)
         assert from_param.returncode == 0, from_param.stderr
-        states = sim_ws.run("topic", "echo", "/world/empty/model_states", "--once",
+        states = sim_ws.run("topic", "echo", "--sim", "/world/empty/model_states", "--once",
                             "--field", "name")
         assert "my_robot" in states.stdout and "third" in states.stdout, states.stderr
     finally:

@@ -35,12 +35,12 @@ class Recorder:
     def _logs(self, level):
         return lambda message, once=False: self.logged.append((level, message))
 
-    def publisher(self, type_name, topic, qos=10):
+    def publisher(self, type_name, topic, qos=10, ros=False):
         box = self.published.setdefault(topic, [])
         return SimpleNamespace(publish=box.append, destroy=lambda: None,
                                get_subscription_count=lambda: 1)
 
-    def subscribe(self, type_name, topic, callback):
+    def subscribe(self, type_name, topic, callback, ros=False):
         self.callbacks[topic] = callback
         return SimpleNamespace(destroy=lambda: self.callbacks.pop(topic, None))
 
@@ -527,3 +527,12 @@ def test_encode_png_round_trips_the_pixels():
     rows = zlib.decompress(data[idat + 4:idat + 4 + struct.unpack(">I", data[idat - 4:idat])[0]])
     assert rows == b"".join(b"\x00" + pixels[r].tobytes() for r in range(4))
     assert data.endswith(b"IEND\xaeB`\x82")
+
+
+@pytest.mark.parametrize("given, expected", [("", "default"), ("MuJoCo Model", "default"),
+                                             ("arena", "arena"), ("my world", "my_world"),
+                                             ("2d-room", "_2d_room")])
+def test_world_names_are_valid_topic_name_parts(given, expected):
+    from launcher.sim.world import world_name
+
+    assert world_name(given) == expected

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import time
 
+from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.errors import LaunchError, UsageError, did_you_mean
 from launcher.nodes.conversions import SIM
@@ -24,7 +25,7 @@ def model(argv: list[str]) -> int:
     args = parser.parse_args(argv)
     if not args.list and not args.model:
         parser.error("give --list or -m NAME")
-    node = Node("_launcher_gz_model", argv=[], parameter_services=False)
+    node = Node("_launcher_gz_model", argv=[], parameter_services=False, space=keys.SIM)
     try:
         deadline = time.monotonic() + args.timeout
         try:

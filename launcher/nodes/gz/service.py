@@ -11,7 +11,7 @@ from launcher.bus.node import Node
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
-from launcher.nodes.conversions import SIM, _short, sim_type
+from launcher.nodes.conversions import _short, sim_type
 from launcher.nodes.gz.common import Parser, print_names
 
 
@@ -38,8 +38,7 @@ def service(argv: list[str]) -> int:
 
 
 def _services(session: Any) -> list[keys.Entity]:
-    return [e for e in graph.entities(session)
-            if e.kind == keys.SERVICE and e.type_name.startswith(f"{SIM}/")]
+    return [e for e in graph.entities(session, space=keys.SIM) if e.kind == keys.SERVICE]
 
 
 def _service_list() -> int:
@@ -67,7 +66,7 @@ def _call(name: str, reqtype: str, reptype: str, text: str, timeout: float) -> i
         raise UsageError(exc.message) from None
     request_short = _short(reqtype)
     data = gz_msgs.to_sim(request_short, prototext.parse(text, "--req"))
-    node = Node("_launcher_gz_service", argv=[], parameter_services=False)
+    node = Node("_launcher_gz_service", argv=[], parameter_services=False, space=keys.SIM)
     try:
         client = node.create_client(service_type, name)
         try:

@@ -17,7 +17,6 @@ from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
-from launcher.nodes.conversions import SIM
 from launcher.nodes.gz.common import Parser, gz_name, message_type, print_names
 
 
@@ -51,8 +50,8 @@ def topic(argv: list[str]) -> int:
 
 
 def _sim_topics(session: Any) -> dict[str, graph.TopicInfo]:
-    return {name: info for name, info in graph.topics(session).items()
-            if any(t.startswith(f"{SIM}/") for t in info.types)}
+    """The topics of the sim's own side (gz-transport's, where Gazebo has them)."""
+    return graph.topics(session, keys.SIM)
 
 
 def _topic_list() -> int:
@@ -62,7 +61,7 @@ def _topic_list() -> int:
 def _topic_info(name: str) -> int:
     session = open_session("client")
     try:
-        found = [e for e in graph.entities(session) if e.topic == name
+        found = [e for e in graph.entities(session, space=keys.SIM) if e.topic == name
                  and e.kind in (keys.PUBLISHER, keys.SUBSCRIPTION)]
     finally:
         session.close()
@@ -95,7 +94,8 @@ def _echo(name: str, count: int | None, duration: float | None, as_json: bool) -
     deadline = time.monotonic() + duration if duration is not None else None
     type_name = _type_of(session, name, deadline)
     short = type_name.rsplit("/", 1)[-1]
-    node = Node("_launcher_gz_topic", argv=[], parameter_services=False, session=session)
+    node = Node("_launcher_gz_topic", argv=[], parameter_services=False, session=session,
+                space=keys.SIM)
     received = [0]
     done = threading.Event()
 
@@ -132,12 +132,13 @@ def _publish(name: str, gz_type: str, text: str) -> int:
     message = parse_message(gz_type, text, "-p")
     type_name = message_type(gz_type)[0]
     session = open_session("client")
-    info = _sim_topics(session).get(name) or graph.topics(session).get(name)
+    info = _sim_topics(session).get(name)
     if info is not None and info.types and type_name not in info.types:
         session.close()
         raise LaunchError(f"topic [{name}] carries {', '.join(map(gz_name, info.types))}, "
                           f"not {gz_type}")
-    node = Node("_launcher_gz_topic", argv=[], parameter_services=False, session=session)
+    node = Node("_launcher_gz_topic", argv=[], parameter_services=False, session=session,
+                space=keys.SIM)
     try:
         publisher = node.create_publisher(type_name, name, QoS(depth=1))
         deadline = time.monotonic() + 1.0

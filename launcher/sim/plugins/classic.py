@@ -1,9 +1,10 @@
 """gazebo_ros's classic plugins in URDF `<gazebo>` tags, with their ROS 1 and ROS 2 parameters.
 
-They speak ROS directly, as in Gazebo classic: `libgazebo_ros_diff_drive.so` subscribes
-geometry_msgs/Twist on `cmd_vel` and publishes nav_msgs/Odometry on `odom` (and odom → base
-on /tf), `libgazebo_ros_joint_state_publisher.so` publishes sensor_msgs/JointState on
-`joint_states`, each in the plugin's namespace (ROS 1 `robotNamespace`, ROS 2
+They speak ROS directly (on the ROS graph, not the sim's own side), as in Gazebo classic:
+`libgazebo_ros_diff_drive.so` subscribes geometry_msgs/Twist on `cmd_vel` and publishes
+nav_msgs/Odometry on `odom` (and odom → base on /tf),
+`libgazebo_ros_joint_state_publisher.so` publishes sensor_msgs/JointState on `joint_states`,
+each in the plugin's namespace (ROS 1 `robotNamespace`, ROS 2
 `<ros><namespace>`, and ROS 2 `<remapping>from:=to</remapping>`).
 
 ROS 1 names: leftJoint, rightJoint, wheelSeparation, wheelDiameter, torque, commandTopic,
@@ -125,11 +126,11 @@ class ClassicDiffDrive(DiffDrive):
         self.publish_tf = next((v for v in (classic.publishOdomTF, classic.publish_odom_tf)
                                 if v is not None), True)
         self.odom_pub = transport.publisher("nav_msgs/msg/Odometry",
-                                            _ros_topic(self, "odometryTopic", "odom"))
-        self.tf_pub = transport.publisher("tf2_msgs/msg/TFMessage", "/tf")
+                                            _ros_topic(self, "odometryTopic", "odom"), ros=True)
+        self.tf_pub = transport.publisher("tf2_msgs/msg/TFMessage", "/tf", ros=True)
         self.cmd_sub = transport.subscribe("geometry_msgs/msg/Twist",
                                            _ros_topic(self, "commandTopic", "cmd_vel"),
-                                           self.on_cmd_vel)
+                                           self.on_cmd_vel, ros=True)
 
     def _publish(self, now: float) -> None:
         odom_wanted = self.publish_odom and self.odom_pub.get_subscription_count() > 0
@@ -187,7 +188,8 @@ class ClassicJointStates(JointStatePublisher):
 
     def load(self) -> None:
         self.publisher = self.sim.transport.publisher(
-            "sensor_msgs/msg/JointState", _ros_topic(self, "topicName", "joint_states"))
+            "sensor_msgs/msg/JointState", _ros_topic(self, "topicName", "joint_states"),
+            ros=True)
         self.reset()
 
     def state(self, transport: Any, now: float, data: Any) -> Any:
