@@ -17,19 +17,11 @@ import uuid
 from pathlib import Path
 
 from _harness import launcher_cmd, summary, table, workdir
+from bus import ECHO  # the same echo node as on one host
 
 PY = sys.executable
 REPO = Path(__file__).resolve().parent.parent
 
-ECHO = """
-from launcher.bus.node import Node
-from launcher.bus.qos import QoS
-node = Node("echo")
-pub = node.create_publisher("geometry_msgs/msg/Twist", "pong", QoS(depth=1000))
-node.create_subscription("geometry_msgs/msg/Twist", "ping", pub.publish, QoS(depth=1000))
-print("ready", flush=True)
-node.spin()
-"""
 PINGER = """
 import json, sys, time
 from launcher.bus.messages import build
