@@ -68,6 +68,15 @@ class UsageError(LaunchError):
     exit_code = 2
 
 
+class Interrupted(KeyboardInterrupt):
+    """SIGINT or SIGTERM, raised where the launcher was busy (loading, evaluating, waiting on
+    a `$(command)`); the exit status is 128 + the signal's number, as a shell reports it."""
+
+    def __init__(self, signum: int = 2) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """' (did you mean 'x'?)' when a close match exists, else ''."""
     import difflib  # only when reporting an error: start-up time
@@ -82,7 +91,7 @@ def report(exc: BaseException, label: str = "", debug: bool = False) -> int:
     """Print a failure as one line on stderr (with its traceback when debugging); the exit
     status it means: the LaunchError's own, 130 for Ctrl-C, 1 for anything else."""
     if isinstance(exc, KeyboardInterrupt):
-        return 130
+        return 128 + getattr(exc, "signum", 2)
     if debug or os.environ.get(DEBUG_VARIABLE) == "1":
         import traceback  # only when debugging: start-up time
 

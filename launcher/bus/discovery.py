@@ -32,6 +32,7 @@ import time
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 
+from launcher import lineage
 from launcher.errors import LaunchError, UsageError
 from launcher.private import open_private, private_folder
 
@@ -218,11 +219,11 @@ def start(environ: Mapping[str, str] | None = None) -> None:
             log.write(f"--- {time.strftime('%Y-%m-%d %H:%M:%S')} started by pid {os.getpid()}\n")
             log.flush()
             # Through sh, which exits at once: the router is nobody's child (no zombie in a
-            # long-lived node that started it); it inherits the lock and lets it go when it
-            # listens.
+            # long-lived node that started it), and detached: no launch's sweep stops it
+            # (lineage.py). It inherits the lock and lets it go when it listens.
             argv = [sys.executable, "-m", "launcher.bus.router", "--lock-fd",
                     str(lock.fileno()), "--linger", str(linger(env))]
             subprocess.run(["/bin/sh", "-c", '"$@" &', "launcher-router", *argv],
                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=log,
-                           env=env, pass_fds=(lock.fileno(),), start_new_session=True,
-                           check=True)
+                           env=lineage.detached(env), pass_fds=(lock.fileno(),),
+                           start_new_session=True, check=True)

@@ -19,6 +19,7 @@ from launcher.description.substitution import to_text
 from launcher.errors import DEBUG_VARIABLE, UsageError
 from launcher.frontend.loader import load_file
 from launcher.packages.index import PackageIndex
+from launcher.runtime.custody import Custody
 from launcher.runtime.logs import log_root
 from launcher.runtime.output import Printer
 from launcher.runtime.service import LaunchService, default_environment
@@ -102,9 +103,11 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
             raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
         root.append(TimerAction(period=args.duration, actions=[Shutdown(
             reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
+    custody = Custody()
+    custody.begin()  # before the hooks run: whatever they start is the launch's too
     environment = children_environment(index, args.debug)
     discovery.start(environment)  # the graph's router, unless one runs: ready when nodes are
-    service = LaunchService(
+    service = LaunchService(custody=custody,
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,

@@ -3,7 +3,10 @@
 The launcher uses this rather than asyncio because importing asyncio alone takes ~75 ms on
 the reference machine, most of the 0.10 s budget for having ten processes running; this
 loop does what supervision needs (readers, monotonic timers, signals through a wakeup fd) in
-about a hundred lines. Signal handlers only hand the signal to the loop.
+about a hundred lines. Signal handlers only hand the signal to the loop, except inside
+`interruptible()`: there the signal raises `Interrupted` at once, so that a long evaluation or
+a `$(command)` being waited for does not hold up Ctrl-C (the loop then does not see that
+signal a second time).
 """
 
 from __future__ import annotations
@@ -15,8 +18,11 @@ import os
 import selectors
 import signal
 import time
-from collections.abc import Callable
+from collections import Counter
+from collections.abc import Callable, Iterator
 from typing import Any
+
+from launcher.errors import Interrupted
 
 
 class Timer:
@@ -36,7 +42,10 @@ class EventLoop:
         self._timers: list[tuple[float, int, Timer]] = []
         self._sequence = itertools.count()
         self._signals: dict[int, Callable[[int], None]] = {}
+        self._previous: dict[int, Any] = {}
         self._wakeup: tuple[int, int] | None = None
+        self._busy = 0  # depth of interruptible() sections
+        self._raised: Counter[int] = Counter()  # signals already raised as Interrupted
         self._stopped = False
 
     # --- scheduling -----------------------------------------------------------------------
@@ -65,12 +74,15 @@ class EventLoop:
             signal.set_wakeup_fd(write, warn_on_full_buffer=False)
             self.add_reader(read, self._on_signals)
         self._signals[sig] = callback
-        signal.signal(sig, _no_op)  # the wakeup fd carries it to the loop
+        previous = signal.signal(sig, self._on_signal)  # the wakeup fd carries it to the loop
+        self._previous.setdefault(sig, previous)
 
     def remove_signal_handlers(self) -> None:
         for sig in self._signals:
-            signal.signal(sig, signal.SIG_DFL)
+            previous = self._previous.get(sig)
+            signal.signal(sig, previous if previous is not None else signal.SIG_DFL)
         self._signals.clear()
+        self._previous.clear()
         if self._wakeup is not None:
             signal.set_wakeup_fd(-1)
             self.remove_reader(self._wakeup[0])
@@ -78,12 +90,29 @@ class EventLoop:
                 os.close(fd)
             self._wakeup = None
 
+    @contextlib.contextmanager
+    def interruptible(self) -> Iterator[None]:
+        """A section that a signal handed to the loop interrupts with `Interrupted`."""
+        self._busy += 1
+        try:
+            yield
+        finally:
+            self._busy -= 1
+
+    def _on_signal(self, signum: int, _frame: Any) -> None:
+        if self._busy and signum in (signal.SIGINT, signal.SIGTERM):
+            self._raised[signum] += 1
+            raise Interrupted(signum)
+
     def _on_signals(self) -> None:
         try:
             data = os.read(self._wakeup[0], 256)  # type: ignore[index]
         except BlockingIOError:
             return
         for number in data:
+            if self._raised[number]:  # it interrupted a section already
+                self._raised[number] -= 1
+                continue
             handler = self._signals.get(number)
             if handler is not None:
                 handler(number)
@@ -116,7 +145,3 @@ class EventLoop:
     def close(self) -> None:
         self.remove_signal_handlers()
         self._selector.close()
-
-
-def _no_op(_signum: int, _frame: Any) -> None:
-    return None

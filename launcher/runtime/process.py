@@ -111,6 +111,11 @@ class ManagedProcess:
         return self.spec.label
 
     @property
+    def leader_running(self) -> bool:
+        """Its process (the group's leader) has not been collected yet."""
+        return self.pid is not None and not self._leader_gone
+
+    @property
     def alive(self) -> bool:
         return self.state in (State.STARTING, State.RUNNING, State.BACKOFF, State.STOPPING)
 

@@ -1,47 +1,83 @@
 """The watchdog that ends a launch's processes if the launcher itself dies, even by SIGKILL.
 
-`fork_watchdog()` forks the launcher (before it has threads or children) into a small process
-in its own session that reads a pipe. The launcher writes `+PGID` when it starts a process
-group and `-PGID` when the group is gone. When the pipe closes (the launcher exited, however
-it exited) every group still listed gets SIGTERM, and SIGKILL after a grace period. Terminal
-signals are ignored; SIGTERM to the watchdog itself runs the same clean-up.
+`fork_watchdog(mark)` forks the launcher (before it has threads or children) into a small
+process in its own session that reads a pipe. The launcher writes `+PGID` when it starts a
+process group and `-PGID` when the group is gone, and `p+PID` / `p-PID` for a process it
+adopted (see lineage.py). When the pipe closes (the launcher exited, however it exited) the
+watchdog ends everything that is still the launch's: those groups and processes, and every
+process carrying the launch's mark, including ones that were only being spawned when the
+launcher died (it looks again until a look finds nothing). SIGTERM first, SIGKILL after a
+grace period. Terminal signals are ignored; SIGTERM to the watchdog itself runs the same
+clean-up.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import time
 
+from launcher import lineage
 from launcher.runtime.system import group_alive
 
 GRACE_SECONDS = 1.0
+LOOKS = 3  # looks for marked processes that find nothing before the watchdog is done
+LOOK_INTERVAL = 0.05  # seconds between them
 
 
-def _signal_all(groups: set[int], sig: int) -> None:
-    for pgid in list(groups):
-        try:
+class Launch:
+    """What the watchdog knows of the launch."""
+
+    def __init__(self, mark: str | None) -> None:
+        self.mark = mark
+        self.groups: set[int] = set()
+        self.pids: set[int] = set()
+
+    def follow(self, line: bytes) -> None:
+        kind, number = (line[:2], line[2:]) if line.startswith(b"p") else (line[:1], line[1:])
+        with contextlib.suppress(ValueError):
+            target = self.pids if kind.startswith(b"p") else self.groups
+            (target.add if kind.endswith(b"+") else target.discard)(int(number))
+
+    def live(self) -> tuple[set[int], set[int]]:
+        """(groups, pids) of the launch still running."""
+        self.groups = lineage.live_groups({g for g in self.groups if group_alive(g)})
+        self.pids = {p for p in self.pids if lineage.alive(p)}
+        if self.mark:
+            self.pids |= lineage.marked(self.mark)
+        return self.groups, self.pids
+
+    def clean_up(self) -> None:
+        """End everything of the launch: SIGTERM, then SIGKILL after the grace period."""
+        quiet = 0
+        while quiet < LOOKS:
+            groups, pids = self.live()
+            if not groups and not pids:
+                quiet += 1
+                time.sleep(LOOK_INTERVAL)
+                continue
+            quiet = 0
+            _signal(groups, pids, signal.SIGTERM)
+            deadline = time.monotonic() + GRACE_SECONDS
+            while time.monotonic() < deadline and any(self.live()):
+                time.sleep(0.02)
+            _signal(*self.live(), signal.SIGKILL)
+
+
+def _signal(groups: set[int], pids: set[int], sig: int) -> None:
+    for pgid in groups:
+        with contextlib.suppress(ProcessLookupError, PermissionError):
             os.killpg(pgid, sig)
-        except (ProcessLookupError, PermissionError):
-            groups.discard(pgid)
+    lineage.signal_all(pids, sig)
 
 
-def clean_up(groups: set[int]) -> None:
-    """SIGTERM every group, then SIGKILL what is left after the grace period."""
-    _signal_all(groups, signal.SIGTERM)
-    deadline = time.monotonic() + GRACE_SECONDS
-    while groups and time.monotonic() < deadline:
-        groups.intersection_update({g for g in groups if group_alive(g)})
-        time.sleep(0.02)
-    _signal_all(groups, signal.SIGKILL)
-
-
-def watch(fd: int) -> None:
-    """Follow the `+PGID`/`-PGID` lines on fd until it closes, then clean up."""
-    groups: set[int] = set()
+def watch(fd: int, mark: str | None) -> None:
+    """Follow the lines on fd until it closes, then clean up."""
+    launch = Launch(mark)
 
     def on_term(_signum: int, _frame: object) -> None:
-        clean_up(groups)
+        launch.clean_up()
         os._exit(0)
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
@@ -51,14 +87,11 @@ def watch(fd: int) -> None:
     while chunk := os.read(fd, 4096):
         *lines, pending = (pending + chunk).split(b"\n")
         for line in lines:
-            if line.startswith(b"+"):
-                groups.add(int(line[1:]))
-            elif line.startswith(b"-"):
-                groups.discard(int(line[1:]))
-    clean_up(groups)
+            launch.follow(line)
+    launch.clean_up()
 
 
-def fork_watchdog() -> tuple[int, int]:
+def fork_watchdog(mark: str | None = None) -> tuple[int, int]:
     """Start the watchdog; return (its pid, the fd to write to). Call before any thread."""
     read, write = os.pipe()
     pid = os.fork()
@@ -67,7 +100,7 @@ def fork_watchdog() -> tuple[int, int]:
         try:
             os.setsid()
             os.close(write)
-            watch(read)
+            watch(read, mark)
         except BaseException:  # noqa: BLE001 - nothing to report to; still clean up
             code = 1
         finally:

@@ -1,10 +1,14 @@
 """The launch service: visits actions, runs processes and timers, shuts down, and exits.
 
 Actions are visited depth first on the event loop. Processes are supervised by
-`ManagedProcess`; a watchdog process (`reaper.py`) ends them if this process dies.
+`ManagedProcess`; `Custody` (custody.py) holds on to everything they start in turn, and its
+watchdog ends it all if this process dies. The launch ends when no process, timer or action is
+left; what the processes left running (daemons, processes that left their group) is stopped
+then, with the same escalation.
 Exit status: 0 when everything ended cleanly; 1 when the launch description was invalid, an
 action failed, or a process exited with a non-zero code the launcher did not cause; 130 after
-SIGINT and 143 after SIGTERM.
+SIGINT and 143 after SIGTERM. A signal during a shutdown that something else began hurries
+the shutdown on (the next signal of the escalation) and keeps that shutdown's exit status.
 """
 
 from __future__ import annotations
@@ -16,9 +20,10 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from launcher.errors import ExecutionError, LaunchError
-from launcher.runtime import events, reaper
+from launcher.errors import ExecutionError, Interrupted, LaunchError
+from launcher.runtime import events
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.custody import TICK, Custody, Sweep
 from launcher.runtime.logs import RunLog
 from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Printer, Record
@@ -40,6 +45,7 @@ class LaunchService:
         load_description: Callable[[Path], Any] | None = None,
         packages: Any = None,
         system: Processes | None = None,
+        custody: Custody | None = None,
     ) -> None:
         self.system = system or System()
         self.printer = printer or Printer()
@@ -63,16 +69,22 @@ class LaunchService:
         self._signals = 0
         self._error = False
         self._finished = False
-        self._watchdog: tuple[int, int] | None = None  # (pid, pipe fd)
+        self.custody = custody or Custody()
+        self._sweep: Sweep | None = None
         self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
                                    exited=self._on_exited, log=self.log, group=self._on_group)
 
     # --- entry point ------------------------------------------------------------------------
     def run(self, description: Any) -> int:
         """Run the description until the launch ends; return the exit status."""
-        self._start_watchdog()  # first: the fork must not inherit signal handling
+        # First: the watchdog's fork must not inherit signal handling. (`launcher launch` has
+        # begun the custody already, before the hooks ran; this is for the API's launches.)
+        self.custody.begin(self.context.environment)
         for sig in (signal.SIGINT, signal.SIGTERM):
             self.loop.add_signal_handler(sig, self._on_signal)
+        if self.custody.subreaper:  # collect adopted processes as they exit, and look anyway
+            self.loop.add_signal_handler(signal.SIGCHLD, self._on_child)
+            self.loop.call_later(TICK, self._tick)
         try:
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
@@ -81,7 +93,7 @@ class LaunchService:
             self.loop.run()
         finally:
             self.loop.close()
-            self._stop_watchdog()
+            self.custody.end()
             if self.run_log is not None:
                 self.run_log.close()
         return self.exit_code
@@ -107,7 +119,11 @@ class LaunchService:
             while self._queue:
                 action = self._queue.popleft()
                 try:
-                    more = action.visit(self.context)
+                    with self.loop.interruptible():
+                        more = action.visit(self.context)
+                except Interrupted as exc:  # Ctrl-C while evaluating: stop at once
+                    self._on_signal(exc.signum)
+                    continue
                 except LaunchError as exc:
                     self.fail(exc)
                     continue
@@ -148,6 +164,7 @@ class LaunchService:
         if self._shutting_down:
             self.log("DEBUG", spec.label, "not started: the launch is shutting down")
             return None
+        spec.env = self.custody.stamp(spec.env)
         process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
         process.spawn()
         self.processes.append(process)
@@ -175,11 +192,16 @@ class LaunchService:
         self._check_idle()
 
     def _on_group(self, pgid: int, alive: bool) -> None:
-        if self._watchdog is not None:
-            try:
-                os.write(self._watchdog[1], f"{'+' if alive else '-'}{pgid}\n".encode())
-            except OSError:  # the watchdog is gone; supervision goes on without it
-                self._watchdog = None
+        self.custody.group(pgid, alive)
+
+    def _tick(self) -> None:
+        if self._finished:
+            return
+        self._on_child()
+        self.loop.call_later(TICK, self._tick)
+
+    def _on_child(self, _signum: int = 0) -> None:
+        self.custody.tick({p.pid for p in self.processes if p.leader_running and p.pid})
 
     # --- events and timers ------------------------------------------------------------------
     def register_handler(self, handler: events.EventHandler) -> None:
@@ -190,7 +212,11 @@ class LaunchService:
             if not handler.matches(event):
                 continue
             try:
-                actions = handler.handle(event, self.context)
+                with self.loop.interruptible():
+                    actions = handler.handle(event, self.context)
+            except Interrupted as exc:
+                self._on_signal(exc.signum)
+                continue
             except LaunchError as exc:
                 self.fail(exc)
                 continue
@@ -235,7 +261,11 @@ class LaunchService:
     def _on_signal(self, sig: int) -> None:
         self._signals += 1
         name = signal.Signals(sig).name
-        if self._signals == 1:
+        if self._signals == 1 and self._shutting_down:  # hurry on; keep its exit status
+            self.log("WARN", "launch", f"{name} during the shutdown: escalating to the next "
+                                       f"signal")
+            self._escalate()
+        elif self._signals == 1:
             self._signal_code = 128 + sig
             what = "user interrupted with ctrl-c (SIGINT)" if sig == signal.SIGINT else \
                 f"received {name}"
@@ -243,32 +273,35 @@ class LaunchService:
             self.shutdown(f"signal {name}")
         else:
             self.log("WARN", "launch", f"{name} again: escalating to the next signal")
-            for process in self.processes:
-                process.escalate()
+            self._escalate()
+
+    def _escalate(self) -> None:
+        for process in self.processes:
+            process.escalate()
+        if self._sweep is not None:
+            self._sweep.escalate()
 
     def _check_idle(self) -> None:
-        """The launch ends when no process runs and no timer or action is pending."""
+        """The launch ends when no process runs and no timer or action is pending, and what
+        its processes left running is stopped."""
         if self._finished or self._queue or self._draining or self._timers:
             return
         if any(p.alive for p in self.processes):
             return
+        if self._sweep is None:
+            left = self.custody.leftovers()
+            if left:
+                specs = [p.spec for p in self.processes]  # their leftovers get their timeouts
+                self._sweep = Sweep(self.custody, self.loop,
+                                    lambda level, text: self.log(level, "launch", text),
+                                    self._check_idle,
+                                    max((s.sigterm_timeout for s in specs), default=5.0),
+                                    max((s.sigkill_timeout for s in specs), default=5.0))
+                self._sweep.start(left)
+        if self._sweep is not None and not self._sweep.finished:
+            return
         self._finished = True
         self.loop.stop()
-
-    # --- the watchdog -----------------------------------------------------------------------
-    def _start_watchdog(self) -> None:
-        try:
-            self._watchdog = reaper.fork_watchdog()
-        except OSError as exc:  # the launch still runs; only the SIGKILL guarantee is lost
-            self.log("WARN", "launch", f"could not start the process watchdog: {exc}")
-
-    def _stop_watchdog(self) -> None:
-        if self._watchdog is None:
-            return
-        pid, fd = self._watchdog
-        self._watchdog = None
-        os.close(fd)  # EOF: with every group gone, it exits at once
-        os.waitpid(pid, 0)
 
     # --- the launcher's own messages --------------------------------------------------------
     def log(self, level: str, source: str, message: str) -> None:

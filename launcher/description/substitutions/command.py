@@ -5,17 +5,19 @@ most values do not mind; strip it with `$(eval)` where it matters). A non-zero e
 fails and shows the command's stderr; the second argument decides what stderr on success
 does: `fail` (the default) fails, `warn` logs it, `ignore` drops it, `capture` appends it to
 the output. The command is split like a shell command line but never run by a shell.
-`xacro` calls run in-process when that gives the same result (see packages.xacro).
+`xacro` calls run in-process when that gives the same result (see packages.xacro). The
+command runs in a session of its own: Ctrl-C stops it (and all it started) at once, and the
+launch's watchdog ends it if the launcher is killed.
 """
 
 from __future__ import annotations
 
 import shlex
-import subprocess
 from dataclasses import dataclass
 
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
 from launcher.errors import LaunchError
+from launcher.lineage import run_to_end
 from launcher.packages.xacro import run_xacro, runs_in_process
 from launcher.runtime.context import LaunchContext
 
@@ -53,19 +55,26 @@ class Command(Substitution):
             raise self.fail(f"command: no executable '{argv[0]}' (command: {text})") from None
         except PermissionError:
             raise self.fail(f"command: '{argv[0]}' is not executable (command: {text})") from None
-        if result.returncode != 0:
-            stderr = (result.stderr or "").strip()
-            detail = f"; its stderr:\n{stderr}" if stderr else " (no stderr output)"
-            raise self.fail(f"command '{text}' failed with exit code {result.returncode}{detail}")
-        if result.stderr and mode == "fail":
+        code, stdout, stderr = result
+        if code != 0:
+            detail = f"; its stderr:\n{stderr.strip()}" if stderr.strip() else \
+                " (no stderr output)"
+            raise self.fail(f"command '{text}' failed with exit code {code}{detail}")
+        if stderr and mode == "fail":
             raise self.fail(f"command '{text}' wrote to stderr (use $(command '…' warn) or "
-                            f"ignore to allow it):\n{result.stderr.strip()}")
-        if result.stderr and mode == "warn":
-            context.log("WARN", f"command '{text}' wrote to stderr:\n{result.stderr.strip()}")
-        return result.stdout
+                            f"ignore to allow it):\n{stderr.strip()}")
+        if stderr and mode == "warn":
+            context.log("WARN", f"command '{text}' wrote to stderr:\n{stderr.strip()}")
+        return stdout
 
 
-def _run(argv: list[str], mode: str, context: LaunchContext) -> subprocess.CompletedProcess:
-    stderr = subprocess.STDOUT if mode == "capture" else subprocess.PIPE
-    return subprocess.run(argv, stdout=subprocess.PIPE, stderr=stderr, text=True,
-                          env=context.environment, stdin=subprocess.DEVNULL, check=False)
+def _run(argv: list[str], mode: str, context: LaunchContext) -> tuple[int, str, str]:
+    """(exit status, stdout, stderr): in a session of its own, stopped whole on Ctrl-C, and
+    nothing it started in its group left running (lineage.run_to_end)."""
+    code, out, err = run_to_end(argv, context.environment, merge_stderr=mode == "capture")
+    return code, _text(out), _text(err)
+
+
+def _text(data: bytes) -> str:
+    """Decoded with universal newlines, as ROS 2 reads a command's output."""
+    return data.decode(errors="replace").replace("\r\n", "\n").replace("\r", "\n")

@@ -1,0 +1,57 @@
+"""The `launcher` command's first lines: from here on, Ctrl-C and SIGTERM end any command
+cleanly, with the exit status a shell reports for them (130, 143) and no traceback.
+
+The handlers come first, before any other import (`_signal` is the C module: `signal` would
+import enum first). Until the command is done, either signal raises a KeyboardInterrupt
+wherever the launcher is (importing, loading, evaluating); `launcher launch` takes them over
+once its event loop runs. After the command, they end the process at once with that status.
+(A signal in the interpreter's own first milliseconds, before this module runs, ends it by the
+signal itself: the shell shows the same 130 or 143.)
+"""
+
+import _signal
+import posix
+
+_running = False  # main() has begun: from then on a signal raises, to be caught there
+
+
+class _Interrupted(KeyboardInterrupt):  # launcher.errors.Interrupted, before it can be imported
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _interrupt(signum: int, _frame: object) -> None:
+    if not _running:  # still importing this module: nothing to clean up yet
+        posix._exit(128 + signum)
+    raise _Interrupted(signum)
+
+
+_signal.signal(_signal.SIGINT, _interrupt)
+_signal.signal(_signal.SIGTERM, _interrupt)
+
+import contextlib  # noqa: E402 - after the handlers, on purpose
+import os  # noqa: E402
+import signal  # noqa: E402
+import sys  # noqa: E402
+
+
+def _leave(signum: int, _frame: object) -> None:
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(OSError, ValueError):
+            stream.flush()
+    os._exit(128 + signum)
+
+
+def main() -> int:
+    global _running
+    try:
+        _running = True
+        from launcher.cli.main import main as run_command
+
+        code = run_command()
+    except KeyboardInterrupt as exc:
+        code = 128 + getattr(exc, "signum", signal.SIGINT)
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, _leave)
+    return code

@@ -1,0 +1,318 @@
+"""Nothing escapes a launch: descendants that leave their group or session, daemons, the process
+of a `$(command)`, a hook's background job, a signal during start-up; and a fault campaign of
+randomized signals, stubborn children, grandchildren, respawn storms and crashes, each run
+checked for leftovers by the test's marker."""
+
+from __future__ import annotations
+
+import os
+import random
+import re
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from tests.conftest import Workspace, tagged_processes
+from tests.unit.test_packages import make_tree, manifest
+
+PY = sys.executable
+
+# Each of these leaves its process group or session, or double-forks, and sleeps.
+DAEMON = """
+import os, time
+if os.fork():
+    os._exit(0)
+os.setsid()
+if os.fork():
+    os._exit(0)
+time.sleep(120)
+"""
+GRANDCHILD_SETPGID = ("import os, subprocess, time; subprocess.Popen(['python3', '-c', "
+                      "'import os, time; os.setpgid(0, 0); time.sleep(120)']); time.sleep(120)")
+ESCAPES = f"""
+launch:
+  - executable: {{cmd: "sh -c 'setsid sleep 120 & sleep 120'", sigterm_timeout: 1}}
+  - executable: {{cmd: "{PY} daemon.py", sigterm_timeout: 1}}
+  - executable: {{cmd: "sh -c 'set -m; sleep 120 & sleep 120'", sigterm_timeout: 1}}
+  - executable: {{cmd: "{PY} -c \\"{GRANDCHILD_SETPGID}\\"", sigterm_timeout: 1}}
+  - executable: {{cmd: "echo started", output: screen}}
+"""
+
+
+def no_leftovers(ws: Workspace, timeout: float = 20.0) -> None:
+    """Nothing carrying the test's marker runs (waiting for a watchdog's clean-up)."""
+    deadline = time.monotonic() + timeout
+    while (left := tagged_processes(ws.tag)) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not left, [p.pid for p in left]
+
+
+def launcher_text(ws: Workspace) -> str:
+    """The launcher's own lines (not its processes' output) and its stderr."""
+    own = [line for line in ws.output().splitlines()
+           if re.match(r"\[(INFO|WARN|ERROR|DEBUG)\] ", line)]
+    return "\n".join(own) + "\n" + ws.output("stderr.txt")
+
+
+def handles_signals(pid: int, timeout: float = 30.0) -> None:
+    """Wait until `pid` catches SIGTERM: the launcher's own handlers are in place (cli/entry.py;
+    the interpreter's own first milliseconds are before that, and Python's)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        try:
+            with open(f"/proc/{pid}/status") as handle:
+                status = handle.read()
+        except OSError:
+            return
+        caught = int(re.search(r"SigCgt:\s*([0-9a-f]+)", status).group(1), 16)
+        if caught & (1 << (signal.SIGTERM - 1)):
+            return
+        time.sleep(0.001)
+    raise AssertionError("the launcher never caught SIGTERM")
+
+
+def escapes(ws: Workspace) -> None:
+    ws.write("daemon.py", DAEMON)
+    ws.write("escape.launch.yaml", ESCAPES)
+
+
+def wait_for_sleepers(ws: Workspace, count: int) -> None:
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:
+        sleepers = [p for p in tagged_processes(ws.tag) if "120" in " ".join(p.cmdline())]
+        if len(sleepers) >= count:
+            return
+        time.sleep(0.05)
+    raise AssertionError(f"only {len(sleepers)} of {count} sleepers started")
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM, signal.SIGKILL])
+def test_descendants_that_leave_their_group_are_stopped(ws, sig):
+    escapes(ws)
+    proc = ws.start("launch", "escape.launch.yaml")
+    ws.wait_for_output("[echo-5] started")
+    wait_for_sleepers(ws, 7)  # setsid, sleep, daemon, set -m ×2, setpgid grandchild, its parent
+    proc.send_signal(sig)
+    assert proc.wait(60) == (-9 if sig == signal.SIGKILL else 128 + sig)
+    no_leftovers(ws)
+    if sig != signal.SIGKILL:
+        assert "left behind still run" in ws.output()  # the sweep said what it stopped
+    assert "Traceback" not in launcher_text(ws)
+
+
+def test_a_launch_that_ends_stops_what_its_processes_left_running(ws):
+    ws.write("daemon.py", DAEMON)
+    ws.write("gone.launch.yaml", f"""
+    launch:
+      - executable: {{cmd: "sh -c 'setsid sleep 120 & sleep 0.5'"}}
+      - executable: {{cmd: "sh -c '{PY} daemon.py; sleep 0.5'"}}
+    """)  # (the pauses: the daemons have left the group when it ends)
+    result = ws.run("launch", "gone.launch.yaml")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "2 process(es) that the launch's processes left behind still run" in result.stdout
+    no_leftovers(ws, 5)
+
+
+def test_the_graph_router_is_not_the_launch_s_to_stop(ws):
+    """The router that a launch's node started outlives the launch (it stops when idle)."""
+    ws.env["LAUNCHER_ROUTER_LINGER"] = "3"
+    ws.write("node.launch.yaml", """
+    launch:
+      - executable:
+          cmd: "launcher topic pub --times 1 /chatter std_msgs/msg/String 'data: hi'"
+    """)
+    result = ws.run("launch", "node.launch.yaml")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "left behind" not in result.stdout
+    routers = [p for p in tagged_processes(ws.tag) if "launcher.bus.router" in p.cmdline()]
+    assert routers, "the router was stopped with the launch"
+    no_leftovers(ws, 15)  # and it goes by itself once idle
+
+
+def test_a_command_substitution_stops_at_once_on_ctrl_c(ws):
+    ws.write("cmd.launch.yaml", """
+    launch:
+      - arg: {name: x, default: "$(command 'sleep 20')"}
+      - executable: {cmd: "echo $(var x)", output: screen}
+    """)
+    proc = ws.start("launch", "cmd.launch.yaml")
+    deadline = time.monotonic() + 30
+    while not [p for p in tagged_processes(ws.tag) if p.cmdline() == ["sleep", "20"]]:
+        assert time.monotonic() < deadline, "the command never started"
+        time.sleep(0.02)
+    sent = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(30) == 130
+    assert time.monotonic() - sent < 4  # it waited for nothing like the 20 s of the command
+    no_leftovers(ws, 5)
+    assert "Traceback" not in launcher_text(ws)
+
+
+def test_a_command_substitution_dies_with_a_killed_launcher(ws):
+    ws.write("cmd.launch.yaml", """
+    launch:
+      - arg: {name: x, default: "$(command 'sleep 20')"}
+    """)
+    proc = ws.start("launch", "cmd.launch.yaml")
+    deadline = time.monotonic() + 30
+    while not [p for p in tagged_processes(ws.tag) if p.cmdline() == ["sleep", "20"]]:
+        assert time.monotonic() < deadline, "the command never started"
+        time.sleep(0.02)
+    proc.kill()
+    proc.wait(10)
+    no_leftovers(ws)
+
+
+@pytest.fixture
+def hooked(ws):
+    make_tree(ws.root / "src", {
+        "busy/package.xml": manifest("busy"),
+        "busy/hooks/busy.sh": "sleep 60 &\nexport BUSY_HOOK=ran\n",
+    })
+    ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "src")
+    ws.env["LAUNCHER_CACHE_DIR"] = str(ws.root / "cache")
+    return ws
+
+
+def test_a_hook_s_background_job_neither_holds_up_the_launch_nor_stays(hooked):
+    hooked.write("hooked.launch.yaml", """
+    launch:
+      - executable: {cmd: "sh -c 'echo hook=$BUSY_HOOK'", output: screen}
+    """)
+    started = time.monotonic()
+    result = hooked.run("launch", "hooked.launch.yaml", timeout=50)
+    assert time.monotonic() - started < 40  # not the hook's 60 s
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "hook=ran" in result.stdout
+    no_leftovers(hooked, 5)
+
+
+def test_a_shell_hook_with_a_syntax_error_says_where(hooked):
+    (hooked.root / "src/busy/hooks/busy.sh").write_text("export A=1\nif then\n")
+    hooked.write("hooked.launch.yaml", "launch: []\n")
+    result = hooked.run("launch", "hooked.launch.yaml")
+    assert result.returncode == 1
+    assert f"{hooked.root}/src/busy/hooks/busy.sh:2: hook failed" in result.stderr
+    assert "Traceback" not in result.stderr
+    no_leftovers(hooked, 5)
+
+
+def test_a_signal_during_start_up_exits_cleanly(ws):
+    """Signals in the launcher's first half second (importing, loading, starting the router
+    and the processes): the status a shell expects, no traceback, nothing left. (From the
+    moment its handlers are in place: the interpreter's own first milliseconds are Python's,
+    see cli/entry.py.)"""
+    ws.write("start.launch.yaml", """
+    launch:
+      - executable: {cmd: "sleep 120", sigterm_timeout: 0.5}
+      - executable: {cmd: "sh -c 'setsid sleep 120 & sleep 120'", sigterm_timeout: 0.5}
+    """)
+    rng = random.Random(7)
+    for attempt in range(12):
+        sig = (signal.SIGINT, signal.SIGTERM)[attempt % 2]
+        proc = ws.start("launch", "start.launch.yaml")
+        handles_signals(proc.pid)
+        time.sleep(rng.uniform(0, 0.5))
+        proc.send_signal(sig)
+        assert proc.wait(30) == 128 + sig, (attempt, ws.output("stderr.txt"))
+        text = launcher_text(ws)
+        assert "Traceback" not in text and "KeyboardInterrupt" not in text, text
+        no_leftovers(ws)
+
+
+def test_a_signal_during_a_failure_s_shutdown_keeps_its_status(ws):
+    ws.write("stubborn.py", """
+    import signal, time
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    print("ready", flush=True)
+    time.sleep(120)
+    """)
+    ws.write("fail.launch.yaml", f"""
+    launch:
+      - executable: {{cmd: "{PY} stubborn.py", output: screen, sigterm_timeout: 30}}
+      - timer:
+          period: 1.0
+          children: [{{executable: {{cmd: "sh -c 'exit 4'", on_exit: shutdown}}}}]
+    """)
+    proc = ws.start("launch", "fail.launch.yaml")
+    ws.wait_for_output("process exited with code 4")
+    proc.send_signal(signal.SIGINT)  # hurries the shutdown on, SIGTERM to the stubborn one
+    assert proc.wait(20) == 1
+    assert "SIGINT during the shutdown: escalating" in ws.output()
+    no_leftovers(ws, 5)
+
+
+# --- the fault campaign ---------------------------------------------------------------------
+STUBBORN = """
+import signal, sys, time
+for name in sys.argv[1:]:
+    signal.signal(getattr(signal, name), signal.SIG_IGN)
+time.sleep(120)
+"""
+KINDS = {
+    "sleeper": "sleep 120",
+    "setsid": "sh -c 'setsid sleep 120 & sleep 120'",
+    "job control": "sh -c 'set -m; sleep 120 & sleep 120'",
+    "daemon": f"{PY} daemon.py",
+    "ignores SIGINT": f"{PY} stubborn.py SIGINT",
+    "ignores both": f"{PY} stubborn.py SIGINT SIGTERM",
+    "crash": "sh -c 'sleep 0.1; kill -SEGV $$'",
+    "fails": "sh -c 'exit 3'",
+    "respawn storm": "sh -c 'sleep 120 & exit 0'",
+}
+
+
+def campaign_launch(rng: random.Random) -> str:
+    lines = ["launch:"]
+    for _ in range(rng.randint(1, 20)):
+        kind = rng.choice(list(KINDS))
+        cmd = KINDS[kind].replace('"', '\\"')
+        extra = ", respawn: true, respawn_delay: 0" if kind == "respawn storm" else ""
+        lines.append(f'  - executable: {{cmd: "{cmd}", sigterm_timeout: 0.3, '
+                     f'sigkill_timeout: 0.3{extra}}}')
+    return "\n".join(lines) + "\n"
+
+
+def test_fault_campaign_leaves_nothing_behind(tmp_path):
+    """120 runs: a random launch of 1–20 children of the kinds above, hit by SIGINT, SIGTERM
+    or SIGKILL at a random moment of its first 1.5 s (often inside the first 0.4 s, while
+    the children are being spawned), or by two signals in a row."""
+    rng = random.Random(int(os.environ.get("LAUNCHER_CAMPAIGN_SEED", "15")))
+    faults = {"SIGINT": 0, "SIGTERM": 0, "SIGKILL": 0, "twice": 0}
+    for run in range(120):
+        ws = Workspace(tmp_path / f"run{run}", f"campaign-{os.getpid()}-{run}")
+        ws.env["LAUNCHER_ROUTER"] = f"unixsock-stream/{tmp_path}/no-router.sock"  # no nodes
+        ws.root.mkdir()
+        ws.write("daemon.py", DAEMON)
+        ws.write("stubborn.py", STUBBORN)
+        ws.write("campaign.launch.yaml", campaign_launch(rng))
+        proc = ws.start("launch", "campaign.launch.yaml")
+        fault = rng.choice(list(faults))
+        if fault != "SIGKILL":
+            handles_signals(proc.pid)
+        time.sleep(rng.choice([rng.uniform(0, 0.4), rng.uniform(0, 1.5)]))
+        faults[fault] += 1
+        if fault == "twice":
+            proc.send_signal(signal.SIGINT)
+            time.sleep(rng.uniform(0, 0.3))
+            proc.send_signal(signal.SIGINT)
+        else:
+            proc.send_signal(getattr(signal, fault))
+        try:
+            code = proc.wait(60)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            raise AssertionError(f"run {run} ({fault}) did not end:\n"
+                                 f"{ws.output('campaign.launch.yaml')}\n{ws.output()}") from None
+        assert code in (-9, 0, 1, 130, 143), (run, code)
+        text = launcher_text(ws)
+        assert "Traceback" not in text, (run, text)
+        try:
+            no_leftovers(ws)
+        except AssertionError as exc:
+            raise AssertionError(f"run {run} ({fault}) left processes behind: {exc}\n"
+                                 f"{ws.output('campaign.launch.yaml')}\n{text}") from None
+    assert min(faults.values()) > 10, faults
