@@ -10,10 +10,10 @@ and `/NS/NAME` apply to the node they match. Nested maps flatten to dotted names
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from launcher.errors import LaunchError, Location
+from launcher.user_files import read_text
 
 
 @dataclass
@@ -93,7 +93,7 @@ def load_params_file(path: str, node: str, namespace: str) -> dict[str, Any]:
     import yaml  # only for -p values and params files: node start-up time
 
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        text = read_text(path)
     except OSError as exc:
         raise LaunchError(f"cannot read params file: {exc.strerror}", Location(path)) from None
     try:

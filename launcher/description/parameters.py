@@ -17,6 +17,7 @@ import yaml
 from launcher.errors import ExecutionError, Location
 from launcher.private import private_folder, write_private
 from launcher.runtime.context import LaunchContext
+from launcher.user_files import read_text
 
 NAMESPACE = "<ros_namespace>"
 GLOBAL_PARAMETERS = "<global_parameters>"  # a tuple of (name, value)
@@ -101,7 +102,7 @@ def join_namespace(outer: str, inner: str) -> str:
 def check_params_file(path: Path, where: Location | None) -> None:
     """A params file must exist and be valid YAML (errors name its line)."""
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_text(path)
     except FileNotFoundError:
         raise ExecutionError(f"parameters file '{path}' does not exist", where) from None
     except OSError as exc:

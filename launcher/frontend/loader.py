@@ -6,11 +6,12 @@ import os
 from pathlib import Path
 
 from launcher.description.action import LaunchDescription
-from launcher.errors import Location, ParseError
+from launcher.errors import LaunchError, Location, ParseError
 from launcher.frontend.builder import build_description
 from launcher.frontend.python_loader import load_python
 from launcher.frontend.xml_loader import load_xml
 from launcher.frontend.yaml_loader import load_yaml
+from launcher.user_files import check_readable, read_bytes
 
 FORMATS = (".yaml", ".yml", ".xml", ".py")
 # Parsed YAML/XML descriptions, by path and modification time: including a file N times (one
@@ -30,29 +31,38 @@ def launch_format(path: Path) -> str:
 def load_file(path: Path) -> LaunchDescription:
     path = Path(os.path.abspath(path))
     kind = launch_format(path)
-    if kind == ".py":
-        return load_python(path)
     try:
-        stamp = path.stat().st_mtime_ns
-        cached = _cache.get(path)
-        if cached and cached[0] == stamp:
-            return cached[1]
-        data = path.read_bytes()
+        if kind == ".py":
+            check_readable(path)
+        else:
+            stamp = path.stat().st_mtime_ns
+            cached = _cache.get(path)
+            if cached and cached[0] == stamp:
+                return cached[1]
+            data = read_bytes(path)
+    except LaunchError as exc:
+        raise ParseError(f"cannot be a launch file: {exc.message}",
+                         Location(str(path))) from None
     except FileNotFoundError:
         raise ParseError("no such launch file", Location(str(path))) from None
     except IsADirectoryError:
         raise ParseError("this is a folder, not a launch file", Location(str(path))) from None
     except OSError as exc:
         raise ParseError(f"cannot read: {exc.strerror}", Location(str(path))) from None
-    if kind == ".xml":
-        root = load_xml(data, str(path))
-    else:
-        try:
-            text = data.decode("utf-8")
-        except UnicodeDecodeError as exc:
-            raise ParseError(f"not UTF-8 text: {exc.reason} at byte {exc.start}",
-                             Location(str(path))) from None
-        root = load_yaml(text, str(path))
-    description = build_description(root, path)
+    if kind == ".py":
+        return load_python(path)
+    try:
+        if kind == ".xml":
+            root = load_xml(data, str(path))
+        else:
+            try:
+                text = data.decode("utf-8")
+            except UnicodeDecodeError as exc:
+                raise ParseError(f"not UTF-8 text: {exc.reason} at byte {exc.start}",
+                                 Location(str(path))) from None
+            root = load_yaml(text, str(path))
+        description = build_description(root, path)
+    except RecursionError:  # nested past what the loaders check for (`- - - - …` on one line)
+        raise ParseError("nested too deeply to read", Location(str(path))) from None
     _cache[path] = (stamp, description)
     return description

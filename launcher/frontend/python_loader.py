@@ -14,7 +14,7 @@ import traceback
 from pathlib import Path
 
 from launcher import compat
-from launcher.description.action import LaunchDescription
+from launcher.description.action import Action, LaunchDescription
 from launcher.errors import Location, ParseError
 
 _counter = itertools.count()
@@ -40,22 +40,51 @@ def load_python(path: Path) -> LaunchDescription:
     except SyntaxError as exc:
         where = Location(str(path), exc.lineno or 0, exc.offset or 0)
         raise ParseError(f"invalid Python: {exc.msg}", where) from None
+    except SystemExit as exc:  # sys.exit() in a launch file: an error, not the launcher's end
+        raise _user_error(exc, path, f"the launch file called sys.exit({exc.code!r}); a launch "
+                                     f"file returns a LaunchDescription instead") from None
+    except RecursionError as exc:
+        raise _user_error(exc, path, "the launch file recursed too deeply") from None
     except Exception as exc:  # the user's code failed: show where, in their file
         raise _user_error(exc, path) from None
     finally:
         sys.modules.pop(name, None)
+    where = _definition(generate, path)
     if not isinstance(result, LaunchDescription):
         raise ParseError(f"generate_launch_description() returned {type(result).__name__}, "
-                         "expected a LaunchDescription", Location(str(path)))
+                         "expected a LaunchDescription", where)
+    _check_entities(result, where)
     result.file = path
     return result
 
 
-def _user_error(exc: Exception, path: Path) -> ParseError:
+def _definition(function: object, path: Path) -> Location:
+    """Where generate_launch_description is defined (the file, when unknown)."""
+    code = getattr(function, "__code__", None)
+    return Location(str(path), code.co_firstlineno) if code is not None else Location(str(path))
+
+
+def _check_entities(description: LaunchDescription, where: Location) -> None:
+    """Everything in the description must be a launch action (ROS 2 fails later, deep inside
+    its launch service, on `LaunchDescription([42])`)."""
+    todo = [description]
+    while todo:
+        for number, entity in enumerate(todo.pop().actions, 1):
+            if isinstance(entity, LaunchDescription):
+                todo.append(entity)
+            elif not isinstance(entity, Action):
+                raise ParseError(f"the LaunchDescription holds {entity!r:.60} "
+                                 f"({type(entity).__name__}) as entry {number}; expected launch "
+                                 f"actions (launch.actions…, launch_ros.actions…)", where)
+
+
+def _user_error(exc: BaseException, path: Path, message: str | None = None) -> ParseError:
     frames = traceback.extract_tb(exc.__traceback__)
     mine = [f for f in frames if Path(f.filename) == path]
     last = mine[-1] if mine else None
     where = Location(str(path), last.lineno or 0) if last else Location(str(path))
+    if message is not None:
+        return ParseError(message, where)
     trace = "".join(traceback.format_list(mine)).rstrip()
     text = f"{type(exc).__name__}: {exc}"
     return ParseError(f"the launch file raised {text}" + (f"\n{trace}" if trace else ""), where)

@@ -22,6 +22,7 @@ from typing import Any
 
 from launcher.errors import LaunchError
 from launcher.schema import Kind, attr, build
+from launcher.user_files import read_text
 
 DIRECTIONS = ("BIDIRECTIONAL", "GZ_TO_ROS", "ROS_TO_GZ")
 
@@ -101,7 +102,7 @@ def load_file(path: str, parameters: Mapping[str, Any], sim_type: Callable[[str]
     file = Path(path)
     if not file.is_file():
         raise LaunchError(f"bridge config file '{path}' does not exist")
-    text = file.read_text(encoding="utf-8")
+    text = read_text(file)
     if file.name.endswith(".j2") or "{{" in text or "{%" in text:
         text = _render(text, file, parameters)
     try:

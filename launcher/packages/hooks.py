@@ -22,6 +22,7 @@ from launcher.packages.index import PackageIndex
 from launcher.packages.manifest import Package
 from launcher.packages.shell_hooks import run_shell_hook
 from launcher.packages.templates import configure, template_variables
+from launcher.user_files import read_text
 
 TIERS = ("builtin", "checkout", "workspace")
 SHELLS = {".sh": "sh", ".bash": "bash"}
@@ -41,7 +42,8 @@ class Hook:
 def package_hooks(package: Package) -> list[Hook]:
     folder = package.path / "hooks"
     try:
-        files = sorted(p for p in folder.iterdir() if p.is_file())
+        # (not only regular files: a FIFO named as a hook is refused when read, not skipped)
+        files = sorted(p for p in folder.iterdir() if p.exists() and not p.is_dir())
     except OSError:
         return []
     by_stem: dict[str, dict[str, Path]] = {}
@@ -113,7 +115,7 @@ class HookRunner:
             self._active.pop()
 
     def _apply(self, package: Package, prefix: Path, path: Path) -> None:
-        text = path.read_text(encoding="utf-8")
+        text = read_text(path)
         templated = path.name.endswith(".in")
         if templated:
             text = configure(text, template_variables(package, prefix), path)

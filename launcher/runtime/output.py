@@ -2,7 +2,9 @@
 
 Every line from every process, and every message of the launcher itself, becomes a `Record`.
 `Printer.format` turns one into a line (`[name-1] text`, `[INFO] [launch]: text`), coloured only
-when writing to a terminal; `Printer.emit` writes it.
+when writing to a terminal; `Printer.emit` writes it. A launcher message of several lines (a
+command's stderr, a value with a newline in it) has its further lines indented, and carriage
+returns shown as `\r`, so no text the user controls can pass for a line of the launcher's own.
 """
 
 from __future__ import annotations
@@ -39,7 +41,7 @@ class Printer:
 
     def format(self, record: Record) -> str:
         if record.level is not None:
-            line = f"[{record.level}] [{record.source}]: {record.text}"
+            line = f"[{record.level}] [{record.source}]: {contained(record.text)}"
             code = _LEVEL_COLORS.get(record.level, 0)
             return f"\x1b[{code}m{line}\x1b[0m" if self.color and code else line
         label = f"[{record.source}]"
@@ -60,5 +62,13 @@ def plain(record: Record) -> str:
     """The record as it goes into log files: with a timestamp, never coloured."""
     stamp = f"{record.time or time.time():.7f}"
     if record.level is not None:
-        return f"{stamp} [{record.level}] [{record.source}]: {record.text}"
+        return f"{stamp} [{record.level}] [{record.source}]: {contained(record.text)}"
     return f"{stamp} [{record.source}] {record.text}"
+
+
+CONTINUATION = "    "
+
+
+def contained(text: str) -> str:
+    """A message's further lines indented; no bare carriage return."""
+    return text.replace("\r", "\\r").replace("\n", "\n" + CONTINUATION)

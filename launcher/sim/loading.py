@@ -16,6 +16,7 @@ from launcher.sim import mjcf, sdf
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.sdf.xmltree import after_prologue
 from launcher.sim.transform import IDENTITY, Pose
+from launcher.user_files import read_text
 
 
 @dataclass
@@ -41,7 +42,7 @@ class LoadedWorld:
 
 def load_world_file(path: Path, values: Mapping[str, str] | None = None,
                     environ: Mapping[str, str] | None = None) -> LoadedWorld:
-    text = path.read_text(encoding="utf-8")
+    text = read_text(path)
     if path.name.endswith(".j2"):
         text = mjcf.render_template(text, path, values or {})
     if after_prologue(text).startswith("<sdf"):

@@ -49,7 +49,7 @@ def find_world(name: str, environ: Mapping[str, str] | None = None) -> Path:
     """A world as a path, then in each resource folder, then among the built-in worlds."""
     env = os.environ if environ is None else environ
     candidate = Path(name).expanduser()
-    if candidate.is_file():
+    if candidate.exists() and not candidate.is_dir():  # (a FIFO too: refused when read)
         return candidate.resolve()
     searched = [f"the path {candidate.resolve()}"]
     if not candidate.is_absolute():

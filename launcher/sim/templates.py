@@ -22,6 +22,7 @@ from launcher.sim.mjcf import PluginConfig
 from launcher.sim.resources import model_file, resolve_uri
 from launcher.sim.sdf.xmltree import after_prologue
 from launcher.sim.transform import IDENTITY, Pose
+from launcher.user_files import read_text
 
 
 @dataclass
@@ -59,7 +60,7 @@ class Templates:
         stat = path.stat()
         key = f"{path}:{stat.st_mtime_ns}:{stat.st_size}"
         if key not in self._cache:
-            self._cache[key] = self._parse(path.read_text(encoding="utf-8"), str(path), path)
+            self._cache[key] = self._parse(read_text(path), str(path), path)
         return self._cache[key]
 
     def _parse(self, text: str, label: str, path: Path | None) -> Template:

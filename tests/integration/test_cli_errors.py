@@ -4,6 +4,15 @@ from __future__ import annotations
 
 import pytest
 
+
+def _nested_yaml(depth: int) -> str:
+    lines, indent = ["launch:"], "  "
+    for _ in range(depth):
+        lines += [indent + "- group:", indent + "    children:"]
+        indent += "      "
+    return "\n".join([*lines, indent + "- log: {message: deep}"]) + "\n"
+
+
 CASES = {
     "malformed-yaml": ("launch:\n  - arg: {name: x\n", "bad.launch.yaml:3:1: malformed YAML"),
     "malformed-xml": ("<launch><arg name='x'></launch>", "bad.launch.xml:1:25: malformed XML"),
@@ -34,7 +43,7 @@ CASES = {
                "{value: real}]}\n", "bad.launch.yaml:2:5: argument 'mode' is 'simm'; "
                "expected one of: sim, real (did you mean 'sim'?)"),
     "failing-command": ("launch:\n  - log: {message: \"$(command 'sh -c \\\"echo oops >&2; "
-                        "exit 4\\\"')\"}\n", "failed with exit code 4; its stderr:\noops"),
+                        "exit 4\\\"')\"}\n", "failed with exit code 4; its stderr:\n    oops"),
     "eval-not-allowed": ("launch:\n  - log: {message: \"$(eval '__import__(1)')\"}\n",
                          "unknown name '__import__'"),
     "eval-fails": ("launch:\n  - log: {message: \"$(eval '1/0')\"}\n",
@@ -48,14 +57,43 @@ CASES = {
                          "executable.sigkill_timeout: expected a number ≥ 0, got -2"),
     "include-missing": ("launch:\n  - include: {file: nowhere.launch.yaml}\n",
                         "bad.launch.yaml:2:5: included file 'nowhere.launch.yaml' does not exist"),
+    # inputs that would hang or starve the launcher, or crash it without a line number
+    "eval-factorial": ("launch:\n  - log: {message: \"$(eval 'math.factorial(100000000)')\"}\n",
+                       "bad.launch.yaml:2:21: $(eval 'math.factorial(100000000)'): "
+                       "factorial(100000000) would be too large"),
+    "eval-format": ("launch:\n  - log: {message: \"$(eval '\\\"%0999999999d\\\" % 1')\"}\n",
+                    "the width 999999999 is past the limit of 10000"),
+    "for-too-long": ("launch:\n  - for:\n      len: 100000000\n      name: i\n      children:\n"
+                     "        - log: {message: '$(index i)'}\n",
+                     "bad.launch.yaml:2:5: for: 100,000,000 iterations is past the limit of "
+                     "10,000"),
+    "nul-byte": ('launch:\n  - log: {message: "a\0b"}\n',
+                 "bad.launch.yaml:2:22: malformed YAML: control characters are not allowed"),
+    "nested-groups": (_nested_yaml(3000), "levels deep; launcher reads YAML nested up to 100"),
+    "nested-groups-xml": ("<launch>" + "<group>" * 3000 + "<log message='x'/>" +
+                          "</group>" * 3000 + "</launch>",
+                          "bad.launch.xml:1:702: <group> is nested 101 elements deep"),
+    "bogus-encoding-xml": ('<?xml version="1.0" encoding="bogus-enc"?>\n<launch/>\n',
+                           "bad.launch.xml:1:1: cannot decode the file: unknown encoding: "
+                           "bogus-enc"),
+    "non-action-py": ("from launch import LaunchDescription\n\n"
+                      "def generate_launch_description():\n"
+                      "    return LaunchDescription([42])\n",
+                      "bad.launch.py:3: the LaunchDescription holds 42 (int) as entry 1"),
+    "sys-exit-py": ("import sys\n\ndef generate_launch_description():\n    sys.exit(3)\n",
+                    "bad.launch.py:4: the launch file called sys.exit(3)"),
 }
+
+
+def _suffix(name: str) -> str:
+    return ".xml" if name.endswith("xml") else ".py" if name.endswith("-py") else ".yaml"
+
 
 
 @pytest.mark.parametrize("name", list(CASES))
 def test_bad_launch_file(ws, name):
     text, expected = CASES[name]
-    suffix = ".xml" if name == "malformed-xml" else ".yaml"
-    path = ws.write(f"bad.launch{suffix}", text)
+    path = ws.write(f"bad.launch{_suffix(name)}", text)
     result = ws.run("launch", str(path))
     assert result.returncode == 1, result.stdout + result.stderr
     message = result.stderr + result.stdout

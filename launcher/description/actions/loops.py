@@ -1,4 +1,8 @@
-"""Loops: `for` (N copies, `$(index NAME)`) and `for_each` (`$(for-var NAME)`)."""
+"""Loops: `for` (N copies, `$(index NAME)`) and `for_each` (`$(for-var NAME)`).
+
+A loop runs at most MAX_ITERATIONS times: a launch file's typo (`len: 100000000`) is an error
+that says so, not a launcher that fills memory.
+"""
 
 from __future__ import annotations
 
@@ -15,6 +19,14 @@ from launcher.description.substitution import perform_text, to_text
 from launcher.description.substitutions.configuration import loop_key
 from launcher.errors import ExecutionError
 from launcher.runtime.context import LaunchContext
+
+MAX_ITERATIONS = 10_000
+
+
+def _check_count(tag: str, count: int) -> None:
+    if count > MAX_ITERATIONS:
+        raise ExecutionError(f"{tag}: {count:,} iterations is past the limit of "
+                             f"{MAX_ITERATIONS:,}")
 
 
 def _iteration(values: dict[str, Any], body: Sequence[Action]) -> list[Action]:
@@ -34,6 +46,7 @@ class ForLoop(Action):
     def execute(self, context: LaunchContext) -> list[Action]:
         spec = type(self).__dataclass_fields__["length"].metadata["launch"]
         count = resolve(context, self.length, Kind.INT, "len", spec)
+        _check_count("for", count)
         out: list[Action] = []
         for i in range(count):
             body = list(self.function(i) or []) if self.function else self.actions
@@ -56,8 +69,10 @@ class ForEach(Action):
 
     def execute(self, context: LaunchContext) -> list[Action]:
         text = perform_text(context, to_text(self.input_values))
+        chunks = [c for c in (c.strip() for c in text.split(";")) if c]
+        _check_count("for_each", len(chunks))
         out: list[Action] = []
-        for number, chunk in enumerate(filter(None, (c.strip() for c in text.split(";"))), 1):
+        for number, chunk in enumerate(chunks, 1):
             try:
                 values = yaml.safe_load(chunk)
             except yaml.YAMLError as exc:

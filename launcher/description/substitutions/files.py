@@ -16,6 +16,7 @@ from launcher.description.substitution import (
     to_text,
 )
 from launcher.runtime.context import LaunchContext
+from launcher.user_files import read_text
 
 
 def _current_file(sub: Substitution, context: LaunchContext) -> Path:
@@ -55,7 +56,7 @@ class FileContent(Substitution):
         if not path.is_absolute() and context.current_file is not None:
             path = context.current_file.parent / path
         try:
-            return path.read_text(encoding="utf-8")
+            return read_text(path)
         except FileNotFoundError:
             raise self.fail(f"file-content: no file '{path}'") from None
         except (OSError, UnicodeDecodeError) as exc:

@@ -17,6 +17,7 @@ from typing import Any
 from launcher.errors import LaunchError
 from launcher.sim.resources import SDF_VERSIONS, model_file, resolve_uri
 from launcher.sim.sdf.xmltree import Element, SdfError, parse
+from launcher.user_files import read_text
 
 OLDEST, NEWEST = SDF_VERSIONS
 
@@ -77,7 +78,7 @@ class Context:
         if path in self._stack:
             chain = " -> ".join(str(p) for p in [*self._stack[self._stack.index(path):], path])
             raise element.error(f"<include> of '{uri}' makes a cycle: {chain}")
-        root, version = read(path.read_text(encoding="utf-8"), str(path))
+        root, version = read(read_text(path), str(path))
         model = root.find("model")
         if model is None:
             raise root.error(f"'{uri}' ({path}) holds no <model> to include")
