@@ -217,7 +217,7 @@ class Node:
         self._host.close_graph_session()
         for entity in list(self._host.entities):
             # the session must close whatever happened to one entity
-            with contextlib.suppress(zenoh.ZError):
+            with contextlib.suppress(zenoh.ZError, RuntimeError):
                 entity.destroy()
         self._token.undeclare()
         self.session.close()

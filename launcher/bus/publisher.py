@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import itertools
 import os
+import threading
 import time
 from collections.abc import Callable
 from typing import Any
@@ -54,6 +55,7 @@ class Publisher:
         self._matching = self._publisher.matching_status.matching
         self._watchers: list[Callable[[bool], None]] = []
         self._closed = False
+        self._lock = threading.Lock()
         self._listener = self._publisher.declare_matching_listener(self._on_matching)
 
     def _on_matching(self, status: Any) -> None:
@@ -73,11 +75,10 @@ class Publisher:
     def publish_raw(self, payload: bytes) -> None:
         """Publish a CDR payload as it is (bag play, bridges)."""
         attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
-        try:
+        with self._lock:  # a callback on Zenoh's thread may race destroy() (a bridge's)
+            if self._closed:
+                return
             (self._latched or self._publisher).put(payload, attachment=attachment)
-        except zenoh.ZError:
-            if not self._closed:  # a callback on Zenoh's thread may race destroy(): quiet
-                raise
 
     def get_subscription_count(self) -> int:
         """1 while any subscriber matches (Zenoh does not count them), else 0."""
@@ -86,7 +87,8 @@ class Publisher:
     def destroy(self) -> None:
         if not self._host.forget(self):
             return
-        self._closed = True
-        for item in (self._listener, self._latched, self._publisher, self._token):
-            if item is not None:
-                item.undeclare()
+        with self._lock:  # never while a put is under way: Zenoh says "Already borrowed"
+            self._closed = True
+            for item in (self._listener, self._latched, self._publisher, self._token):
+                if item is not None:
+                    item.undeclare()

@@ -2,10 +2,17 @@
 Zenoh's thread, when asked). A transient local one is what rmw_zenoh makes of it: zenoh-ext's
 advanced subscriber, which asks every latched (advanced) publisher for what it holds, at the
 start and whenever one appears later, and, when reliable, recovers a message it missed from
-the publisher's heartbeat. A malformed payload is dropped with one warning per topic."""
+the publisher's heartbeat. A malformed payload is dropped with one warning per topic.
+
+Samples wait for the executor in a queue of the subscription's own, `depth` deep (KEEP_LAST, as
+in ROS 2): when the node cannot keep up, the oldest are dropped, so a flood on one topic costs
+bounded memory, and the executor's queue holds one turn per subscription, not one per sample,
+so other callbacks (and the sim's physics) still get theirs."""
 
 from __future__ import annotations
 
+import threading
+from collections import deque
 from collections.abc import Callable
 from typing import Any
 
@@ -26,6 +33,11 @@ class Subscription:
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host, self._callback = topic, qos, host, callback
         self._raw, self._inline = raw, inline
+        # (before declaring: a transient local subscriber gets history samples at once)
+        self._pending: deque[bytes] = deque(maxlen=max(qos.depth, 1))
+        self._lock = threading.Lock()
+        self._turn_queued = False
+        self._warned = False
         self.space = space or host.space
         key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name),
                              self.space)
@@ -43,13 +55,32 @@ class Subscription:
                                                                allowed_origin=origin)
         self._token = host.announce(keys.SUBSCRIPTION, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)
-        self._warned = False
 
     def _on_sample(self, sample: zenoh.Sample) -> None:
+        payload = sample.payload.to_bytes()
         if self._inline:
-            self._deliver(sample.payload.to_bytes())
-        else:
-            self._host.enqueue(self._deliver, sample.payload.to_bytes())
+            self._deliver(payload)
+            return
+        with self._lock:
+            self._pending.append(payload)  # full: the oldest goes (KEEP_LAST)
+            if self._turn_queued:
+                return
+            self._turn_queued = True
+        self._host.enqueue(self._take)
+
+    def _take(self) -> None:
+        """The executor's turn: deliver the oldest waiting sample; queue another turn if more
+        are waiting (behind whatever else is queued)."""
+        with self._lock:
+            if not self._pending:
+                self._turn_queued = False
+                return
+            payload = self._pending.popleft()
+            more = bool(self._pending)
+            self._turn_queued = more
+        if more:
+            self._host.enqueue(self._take)
+        self._deliver(payload)
 
     def _deliver(self, payload: bytes) -> None:
         if self._raw:

@@ -1,1 +1,17 @@
 """The command line: thin commands over the layers below."""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+
+def positive_number(text: str) -> float:
+    """An argparse type: a finite number > 0 (a rate of 0 would divide by zero)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got '{text}'") from None
+    if not math.isfinite(value) or value <= 0:
+        raise argparse.ArgumentTypeError(f"expected a number > 0, got '{text}'")
+    return value

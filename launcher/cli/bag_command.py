@@ -7,6 +7,7 @@ from pathlib import Path
 
 from launcher.bus import bag
 from launcher.bus.node import Node
+from launcher.cli import positive_number
 from launcher.errors import UsageError
 
 
@@ -24,7 +25,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     info.set_defaults(run=run_info)
     play = verbs.add_parser("play", help="publish a bag's messages again")
     play.add_argument("path", metavar="DIR")
-    play.add_argument("-r", "--rate", type=float, default=1.0)
+    play.add_argument("-r", "--rate", type=positive_number, default=1.0)
     play.add_argument("-l", "--loop", action="store_true")
     play.set_defaults(run=run_play)
 

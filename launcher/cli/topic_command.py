@@ -16,6 +16,7 @@ from launcher.bus.names import expand
 from launcher.bus.node import Node, Rate
 from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
+from launcher.cli import positive_number
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
@@ -38,14 +39,15 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     pub.add_argument("topic")
     pub.add_argument("type")
     pub.add_argument("values", nargs="?", default="{}", help="the message as YAML")
-    pub.add_argument("-r", "--rate", type=float, default=1.0)
+    pub.add_argument("-r", "--rate", type=positive_number, default=1.0,
+                     help="messages per second (> 0)")
     pub.add_argument("-1", "--once", action="store_true")
     pub.add_argument("-t", "--times", type=int, default=0)
     pub.add_argument("--latched", action="store_true", help="transient local")
     pub.set_defaults(run=run_pub)
     hz = verbs.add_parser("hz", help="the rate of a topic")
     hz.add_argument("topic")
-    hz.add_argument("--window", type=float, default=2.0)
+    hz.add_argument("--window", type=positive_number, default=2.0)
     hz.set_defaults(run=run_hz)
     info = verbs.add_parser("info", help="type and endpoints of a topic")
     info.add_argument("topic")

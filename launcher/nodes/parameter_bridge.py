@@ -119,11 +119,13 @@ def setup(node: Node) -> Bridge:
     if config:
         entries += bridge_config.load_file(str(config), node.parameters, conversions.sim_type,
                                            node.get_logger().error)
-    if not entries:
+    if not entries and not config and not node.args:
         raise LaunchError("nothing to bridge: give TOPIC@ROS_TYPE@GZ_TYPE arguments or "
                           "--ros-args -p config_file:=bridge.yaml")
     for entry in entries:
         bridge.add(entry)
+    if not bridge.count:  # every entry was refused (each said why, with its place)
+        raise LaunchError("nothing to bridge: every entry was left out (see above)")
     node.get_logger().info(f"bridging {bridge.count} of {len(entries)} entries")
     return bridge
 

@@ -13,7 +13,6 @@ going backwards (a sim reset) clears the rate limiter.
 
 from __future__ import annotations
 
-import struct
 import sys
 import threading
 from dataclasses import dataclass
@@ -65,6 +64,7 @@ class RobotStatePublisher:
         # joint_states is handled on Zenoh's thread (at 1 kHz the hand-over to the executor
         # cost more than the work); a lock keeps it apart from parameter changes.
         self._lock = threading.Lock()
+        self._bad_warned = False
         node.create_subscription("sensor_msgs/msg/JointState", "joint_states", self.on_payload,
                                  QoS(depth=10, reliable=False), raw=True, inline=True)
         node.add_on_set_parameters_callback(self.on_parameter)
@@ -101,21 +101,25 @@ class RobotStatePublisher:
             self._load(tree, str(value))
 
     def on_payload(self, payload: bytes) -> None:
+        """One joint_states message (on Zenoh's thread). A malformed one is dropped with one
+        warning for them all, never a traceback per message."""
         try:
             sec, nanosec, names, positions = self.reader.read(payload)
-        except (struct.error, ValueError, IndexError, UnicodeDecodeError):
-            self.log.warning("dropping a joint_states message that is not a valid "
-                             "sensor_msgs/msg/JointState", once=True)
-            return
-        with self._lock:
-            self.on_joints(sec, nanosec, names, positions)
+            with self._lock:
+                self.on_joints(sec, nanosec, names, positions)
+        except Exception as exc:  # noqa: BLE001 - whatever a message holds, keep running
+            if not self._bad_warned:
+                self._bad_warned = True
+                self.log.warning(f"dropping joint_states messages that are not a valid "
+                                 f"sensor_msgs/msg/JointState (the first: {exc or type(exc)}); "
+                                 f"warned once")
 
     def on_joints(self, sec: int, nanosec: int, names: list[str],
                   positions: np.ndarray) -> None:
         if len(names) != len(positions):
-            self.log.warning(f"dropping a joint_states message: {len(names)} names but "
-                             f"{len(positions)} positions")
-            return
+            raise ValueError(f"{len(names)} names but {len(positions)} positions")
+        if not np.all(np.isfinite(positions)):
+            raise ValueError("a position is not finite")
         stamp = sec + nanosec * 1e-9
         if not self.ignore_timestamp:
             if self._last_stamp is not None and stamp < self._last_stamp:

@@ -2,7 +2,13 @@
 
 One thread does everything: bus callbacks (services, cmd_vel) run between batches of steps,
 so the world is never touched from two threads. While paused or ahead of schedule the loop
-waits on the node's queue, so services and spawning stay responsive.
+waits on the node's queue, so services and spawning stay responsive. Between two batches,
+callbacks get at most CALLBACK_BUDGET of wall time, so that no flood of messages or requests
+can hold physics back (each subscription keeps only its last `depth` samples: a `/cmd_vel`
+flood is the latest command, not a backlog). A control request's `multi_step` is stepped by
+the loop in batches, the bus served between them: the request is answered at once, a later
+request (pause, run, reset, another step) replaces the steps still to go, and more than
+MAX_MULTI_STEP is refused.
 
 Topics (sim-native types from the mujoco_sim package, Gazebo's names):
   /clock and /world/<w>/clock                Clock, after every batch of steps (paused: 20 Hz)
@@ -15,7 +21,10 @@ Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/s
 
 from __future__ import annotations
 
+import os
 import signal
+import sys
+import threading
 import time
 from typing import Any
 
@@ -30,6 +39,8 @@ from launcher.sim.snapshot import Camera
 from launcher.sim.world import World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
+CALLBACK_BUDGET = 0.002  # s of callbacks between two batches of steps
+MAX_MULTI_STEP = 100_000_000
 
 
 def route_mujoco_warnings(logger: Any) -> None:
@@ -45,6 +56,7 @@ class SimServer:
         route_mujoco_warnings(self.log)
         self.paused = not running
         self.stopped = False
+        self.steps_to_go = 0  # of a multi_step request
         self.pacer = Pacer(world.model.opt.timestep, rtf)
         name = world.world_name
         self._clocks = [node.create_publisher("mujoco_sim/msg/Clock", "/clock"),
@@ -75,6 +87,17 @@ class SimServer:
         while not self.stopped:
             if iterations is not None and world.iterations >= iterations:
                 break
+            if self.paused and self.steps_to_go:  # a multi_step, batch by batch
+                self.serve()
+                if self.paused and self.steps_to_go and not self.stopped:
+                    batch = min(self.steps_to_go, MAX_BATCH)
+                    if iterations is not None:
+                        batch = min(batch, iterations - world.iterations)
+                    batch = world.steps_until_update(batch)
+                    world.step(batch)
+                    self.steps_to_go -= batch
+                    self.publish_clock()
+                continue
             if self.paused:  # serve the bus; the clock says "paused" 20 times a second
                 if not node.spin_once(0.05):
                     self.publish_clock()
@@ -87,8 +110,7 @@ class SimServer:
                 if due == 0:
                     continue
             else:
-                while node.spin_once(0):  # callbacks first: commands apply to this batch
-                    pass
+                self.serve()  # callbacks first: commands apply to this batch
                 if self.paused or self.stopped:
                     continue
             batch = min(due, MAX_BATCH)
@@ -98,6 +120,12 @@ class SimServer:
             world.step(batch)
             pacer.stepped(batch)
             self.publish_clock()
+
+    def serve(self) -> None:
+        """Run the callbacks that are ready, for up to CALLBACK_BUDGET."""
+        end = time.monotonic() + CALLBACK_BUDGET
+        while not self.stopped and self.node.spin_once(0) and time.monotonic() < end:
+            pass
 
     def publish_clock(self) -> None:
         wanted = [p for p in self._clocks if p.get_subscription_count()]
@@ -117,18 +145,20 @@ class SimServer:
         if request.reset_all or request.reset_time_only or request.reset_model_only:
             world.reset(time=request.reset_all or request.reset_time_only,
                         poses=request.reset_all or request.reset_model_only)
-        was_paused, self.paused = self.paused, request.pause
         steps = request.multi_step or (1 if request.step else 0)
-        if steps and self.paused:
-            while steps > 0:
-                batch = world.steps_until_update(min(steps, MAX_BATCH))
-                world.step(batch)
-                steps -= batch
+        if steps > MAX_MULTI_STEP:
+            response.success = False
+            response.message = (f"multi_step {steps} is past the limit of {MAX_MULTI_STEP:,} "
+                                f"steps in one request")
+            return response
+        was_paused, self.paused = self.paused, request.pause
+        self.steps_to_go = steps if self.paused else 0  # replaces what was still to go
         if (was_paused and not self.paused) or request.reset_all or request.reset_time_only:
             self.pacer.restart()
         self.publish_clock()
         response.success = True
-        response.message = "paused" if self.paused else "running"
+        response.message = (f"paused; stepping {steps}" if steps and self.paused else
+                            "paused" if self.paused else "running")
         return response
 
     def on_create(self, request: Any, response: Any) -> Any:
@@ -217,6 +247,29 @@ def spawn_pose(pose: Any, template: Any) -> tuple[list[float], list[float]]:
     return position, quat
 
 
+EXIT_GRACE = 3.0  # s from SIGINT/SIGTERM to a forced exit, should shutting down ever stall
+
+
 def install_signal_handlers(server: SimServer) -> None:
-    signal.signal(signal.SIGTERM, server.stop)
-    signal.signal(signal.SIGINT, server.stop)
+    """SIGINT and SIGTERM end the loop; the sim then closes its session and exits. Should that
+    stall (a bus call that never returns), it exits anyway after EXIT_GRACE: a stop request
+    always stops the sim, well before the launcher's own SIGTERM/SIGKILL escalation."""
+    armed: list[threading.Timer] = []
+
+    def stop(signum: int, _frame: Any) -> None:
+        server.stop()
+        if not armed:
+            timer = threading.Timer(EXIT_GRACE, _force_exit, (128 + signum,))
+            timer.daemon = True
+            timer.start()
+            armed.append(timer)
+
+    signal.signal(signal.SIGTERM, stop)
+    signal.signal(signal.SIGINT, stop)
+
+
+def _force_exit(code: int) -> None:
+    sys.stderr.write(f"[sim] did not stop within {EXIT_GRACE:g} s of the stop request; "
+                     f"exiting\n")
+    sys.stderr.flush()
+    os._exit(code)

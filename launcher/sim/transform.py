@@ -77,9 +77,17 @@ def pose_from(values: Sequence[float]) -> tuple[list[float], list[float]]:
     return list(pose.pos), list(pose.quat)
 
 
+MAX_COORDINATE = 1e6  # metres from the world's origin: a pose past it is refused (MuJoCo
+# resets a simulation whose positions pass 1e10, so `x: 1e300` would reset it every step)
+
+
 def check_pose(position: Iterable[float], quat: Iterable[float]) -> None:
+    position = list(position)
     values = [*position, *quat]
     if not all(math.isfinite(v) for v in values):
         raise PoseError(f"the pose must be finite, got {values}")
+    if any(abs(v) > MAX_COORDINATE for v in position):
+        raise PoseError(f"the position {position} is out of range: each coordinate must be "
+                        f"within ±{MAX_COORDINATE:g} m of the world's origin")
     if sum(q * q for q in quat) < 1e-12:
         raise PoseError("the pose's orientation quaternion is zero")

@@ -27,7 +27,7 @@ from typing import Any
 
 import mujoco
 
-from launcher.errors import LaunchError, did_you_mean
+from launcher.errors import LaunchError, Location, did_you_mean
 from launcher.sim.loading import WorldModel, load_world_file
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.plugins import (
@@ -40,6 +40,7 @@ from launcher.sim.plugins import (
 from launcher.sim.templates import Template, Templates
 from launcher.sim.transform import IDENTITY, Pose, PoseError, check_pose, pose_from
 from launcher.sim.transport import Transport
+from launcher.user_files import read_text
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
             mujoco.mjtWarning.mjWARN_BADQACC)
@@ -454,7 +455,30 @@ def frame_pose(frame: Any) -> Pose:
 
 def _compile(spec: mujoco.MjSpec, label: str) -> Any:
     try:
-        return spec.compile()
+        model = spec.compile()
     except ValueError as exc:
-        raise LaunchError(f"{label}: MuJoCo could not compile the world: "
-                          f"{' '.join(str(exc).split())}") from None
+        message = " ".join(str(exc).split())
+        raise LaunchError(f"MuJoCo could not compile the world: {message}",
+                          locate(label, message)) from None
+    if not model.opt.timestep > 0:
+        raise LaunchError(f"the timestep must be > 0 s, got {model.opt.timestep:g} (MuJoCo "
+                          f"would never advance)", locate(label, "'timestep'")) from None
+    return model
+
+
+def locate(label: str, message: str) -> Location:
+    """Where in the file `label` a MuJoCo message points: the line it names, else the first
+    place the file holds a name the message quotes (a mesh's file name)."""
+    found = re.search(r"\bline (\d+)", message)
+    if found:
+        return Location(label, int(found.group(1)))
+    try:
+        text = read_text(label)
+    except (OSError, LaunchError, UnicodeDecodeError):
+        return Location(label)
+    for name in re.findall(r"'([^']+)'", message):
+        at = text.find(name)
+        if at >= 0:
+            line = text.count("\n", 0, at) + 1
+            return Location(label, line, at - (text.rfind("\n", 0, at) + 1) + 1)
+    return Location(label)

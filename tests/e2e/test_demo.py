@@ -4,15 +4,17 @@ driver processes on a real Zenoh router; the worlds are SDF, found through the h
 
 from __future__ import annotations
 
+import random
 import re
 import shutil
 import signal
 import subprocess
+import time
 
 import psutil
 import pytest
 
-from tests.conftest import REPO, launcher_argv
+from tests.conftest import REPO, launcher_argv, tagged_processes
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 
@@ -294,3 +296,27 @@ def test_the_seeds_gazebo_launch_py_runs_its_sdf_world_through_the_hooks(demo):
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(60) == 130
+
+
+def test_the_demo_hit_by_a_signal_at_a_random_moment_leaves_nothing(demo):
+    """SIGINT, SIGTERM or SIGKILL to the launcher anywhere from its start-up to the robot
+    driving: every process of the demo goes (the router, shared by the graph, goes by itself
+    once idle). The sim exits on SIGINT or SIGTERM by itself: never SIGKILLed."""
+    rng = random.Random(11)
+    for run, sig in enumerate([signal.SIGKILL, signal.SIGINT, signal.SIGTERM, signal.SIGKILL,
+                               signal.SIGINT]):
+        name = f"demo{run}.out"
+        proc = demo.start("launch", LAUNCH, output=name)
+        time.sleep(rng.uniform(0.3, 4.0))
+        proc.send_signal(sig)
+        code = proc.wait(60)
+        assert code in (-9, 130, 143), (run, code)
+        deadline = time.monotonic() + 20
+        while [p for p in tagged_processes(demo.tag) if "launcher.bus.router" not in
+               " ".join(p.cmdline())] and time.monotonic() < deadline:
+            time.sleep(0.05)
+        left = [p for p in tagged_processes(demo.tag)
+                if "launcher.bus.router" not in " ".join(p.cmdline())]
+        assert not left, (run, sig, [p.cmdline() for p in left])
+        text = demo.output(name)
+        assert "sending SIGKILL" not in text, text
