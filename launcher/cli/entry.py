@@ -30,10 +30,19 @@ def _interrupt(signum: int, _frame: object) -> None:
 _signal.signal(_signal.SIGINT, _interrupt)
 _signal.signal(_signal.SIGTERM, _interrupt)
 
-import contextlib  # noqa: E402 - after the handlers, on purpose
+import atexit  # noqa: E402 - after the handlers, on purpose
+import contextlib  # noqa: E402
 import os  # noqa: E402
 import signal  # noqa: E402
 import sys  # noqa: E402
+
+
+@atexit.register  # registered first, so it runs last, just before Python's own teardown
+def _hold_signals() -> None:
+    """The command is done and the status decided: the interpreter's teardown resets the
+    handlers, and a signal landing after that would end the process by the signal, not with
+    the status. So they are held (blocked) from here to the exit."""
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
 
 
 def _leave(signum: int, _frame: object) -> None:

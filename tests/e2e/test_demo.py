@@ -312,11 +312,18 @@ def test_the_demo_hit_by_a_signal_at_a_random_moment_leaves_nothing(demo):
         code = proc.wait(60)
         assert code in (-9, 130, 143), (run, code)
         deadline = time.monotonic() + 20
-        while [p for p in tagged_processes(demo.tag) if "launcher.bus.router" not in
-               " ".join(p.cmdline())] and time.monotonic() < deadline:
+        def left() -> list[psutil.Process]:
+            found = []
+            for proc in tagged_processes(demo.tag):
+                try:
+                    if "launcher.bus.router" not in " ".join(proc.cmdline()):
+                        found.append(proc)
+                except psutil.Error:  # gone since it was listed
+                    continue
+            return found
+
+        while left() and time.monotonic() < deadline:
             time.sleep(0.05)
-        left = [p for p in tagged_processes(demo.tag)
-                if "launcher.bus.router" not in " ".join(p.cmdline())]
-        assert not left, (run, sig, [p.cmdline() for p in left])
+        assert not left(), (run, sig, [p.pid for p in left()])
         text = demo.output(name)
         assert "sending SIGKILL" not in text, text

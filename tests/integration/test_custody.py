@@ -13,6 +13,7 @@ import subprocess
 import sys
 import time
 
+import psutil
 import pytest
 
 from tests.conftest import Workspace, tagged_processes
@@ -74,6 +75,13 @@ def handles_signals(pid: int, timeout: float = 30.0) -> None:
     raise AssertionError("the launcher never caught SIGTERM")
 
 
+def command(proc: psutil.Process) -> str:
+    try:
+        return " ".join(proc.cmdline())
+    except psutil.Error:  # gone, or a zombie, since it was listed
+        return ""
+
+
 def escapes(ws: Workspace) -> None:
     ws.write("daemon.py", DAEMON)
     ws.write("escape.launch.yaml", ESCAPES)
@@ -82,7 +90,7 @@ def escapes(ws: Workspace) -> None:
 def wait_for_sleepers(ws: Workspace, count: int) -> None:
     deadline = time.monotonic() + 30
     while time.monotonic() < deadline:
-        sleepers = [p for p in tagged_processes(ws.tag) if "120" in " ".join(p.cmdline())]
+        sleepers = [p for p in tagged_processes(ws.tag) if "120" in command(p)]
         if len(sleepers) >= count:
             return
         time.sleep(0.05)
@@ -127,7 +135,7 @@ def test_the_graph_router_is_not_the_launch_s_to_stop(ws):
     result = ws.run("launch", "node.launch.yaml")
     assert result.returncode == 0, result.stdout + result.stderr
     assert "left behind" not in result.stdout
-    routers = [p for p in tagged_processes(ws.tag) if "launcher.bus.router" in p.cmdline()]
+    routers = [p for p in tagged_processes(ws.tag) if "launcher.bus.router" in command(p)]
     assert routers, "the router was stopped with the launch"
     no_leftovers(ws, 15)  # and it goes by itself once idle
 
@@ -140,7 +148,7 @@ def test_a_command_substitution_stops_at_once_on_ctrl_c(ws):
     """)
     proc = ws.start("launch", "cmd.launch.yaml")
     deadline = time.monotonic() + 30
-    while not [p for p in tagged_processes(ws.tag) if p.cmdline() == ["sleep", "20"]]:
+    while not [p for p in tagged_processes(ws.tag) if command(p) == "sleep 20"]:
         assert time.monotonic() < deadline, "the command never started"
         time.sleep(0.02)
     sent = time.monotonic()
@@ -158,7 +166,7 @@ def test_a_command_substitution_dies_with_a_killed_launcher(ws):
     """)
     proc = ws.start("launch", "cmd.launch.yaml")
     deadline = time.monotonic() + 30
-    while not [p for p in tagged_processes(ws.tag) if p.cmdline() == ["sleep", "20"]]:
+    while not [p for p in tagged_processes(ws.tag) if command(p) == "sleep 20"]:
         assert time.monotonic() < deadline, "the command never started"
         time.sleep(0.02)
     proc.kill()
@@ -226,9 +234,10 @@ def test_a_signal_during_start_up_exits_cleanly(ws):
 def test_a_signal_during_a_failure_s_shutdown_keeps_its_status(ws):
     ws.write("stubborn.py", """
     import signal, time
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGINT, lambda *_: print("got SIGINT", flush=True))  # and goes on
     print("ready", flush=True)
-    time.sleep(120)
+    while True:
+        time.sleep(0.05)
     """)
     ws.write("fail.launch.yaml", f"""
     launch:
@@ -239,6 +248,7 @@ def test_a_signal_during_a_failure_s_shutdown_keeps_its_status(ws):
     """)
     proc = ws.start("launch", "fail.launch.yaml")
     ws.wait_for_output("process exited with code 4")
+    ws.wait_for_output("got SIGINT")  # the failure's shutdown has begun
     proc.send_signal(signal.SIGINT)  # hurries the shutdown on, SIGTERM to the stubborn one
     assert proc.wait(20) == 1
     assert "SIGINT during the shutdown: escalating" in ws.output()
