@@ -193,7 +193,8 @@ def _bits(value: Any) -> float:
 def _check_power(base: Any, exponent: Any) -> None:
     if isinstance(base, int) and isinstance(exponent, int) and exponent > 0 and \
             abs(base) > 1 and _bits(base) * exponent > MAX_INT_BITS:
-        raise _too_large(f"{ast.unparse(ast.Constant(base))[:20]} ** {exponent}")
+        shown = str(base) if _bits(base) < 64 else f"(an integer of {base.bit_length()} bits)"
+        raise _too_large(f"{shown} ** {exponent}")
 
 
 def _check_size(left: Any, right: Any) -> None:

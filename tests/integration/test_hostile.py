@@ -8,20 +8,10 @@ import json
 import os
 import signal
 import subprocess
-import sys
-from pathlib import Path
 
 import pytest
 
-PY = sys.executable
-ROBOT = str(Path(__file__).resolve().parent.parent / "data" / "diffbot.urdf")
-
-SIM_LAUNCH = f"""
-launch:
-  - node: {{pkg: mujoco_sim, exec: sim, args: "-v 3 -r", output: screen}}
-  - node: {{pkg: mujoco_sim, exec: create, output: screen,
-           args: "-name bot -file {ROBOT} -z 0.06"}}
-"""
+from tests.integration.test_sim import PY, ROBOT, SIM_LAUNCH
 
 # The sim's own side, as a gz-transport client: requests that would freeze or brick it.
 PROBE = """

@@ -20,6 +20,7 @@ HOSTILE = {
     "math.prod([10**999]*999999)": "the product would be too large",
     "((10**1000)**1000)**1000": "would be too large",
     "10**10**6": "10 ** 1000000 would be too large",
+    "(2**99999)**2": "(an integer of 100000 bits) ** 2 would be too large",
     '"%0999999999d" % 1': "the width 999999999 is past the limit",
     '"%.999999999f" % 1.0': "the width 999999999 is past the limit",
     "'%*d' % (10**9, 1)": "'*' widths are not allowed",
