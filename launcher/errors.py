@@ -109,5 +109,11 @@ def reported(run: Callable[[], int | None], label: str = "", debug: bool = False
     """`run()`'s exit status; whatever it raises goes through `report`."""
     try:
         return int(run() or 0)
+    except BrokenPipeError:  # `launcher topic echo … | head`: the reader is done, so are we
+        import os
+
+        with open(os.devnull, "w") as devnull:  # nothing more reaches the closed pipe
+            os.dup2(devnull.fileno(), sys.stdout.fileno())
+        return 0
     except (Exception, KeyboardInterrupt) as exc:
         return report(exc, label, debug)

@@ -7,6 +7,7 @@ import json
 import os
 import shlex
 
+from launcher import compat
 from launcher.cli.workspace import hooked_environment, load_index
 
 
@@ -31,7 +32,9 @@ def run(args: argparse.Namespace) -> int:
     if args.zenoh:
         return zenoh_settings(args.shell)
     before = dict(os.environ)
-    diff = changes(before, hooked_environment(load_index(), before))
+    after = hooked_environment(load_index(), before)
+    compat.node_apis_for_shell(after)
+    diff = changes(before, after)
     if args.shell == "json":
         print(json.dumps(diff, indent=2, sort_keys=True))
         return 0

@@ -22,6 +22,7 @@ COMMANDS = {
     "service": ("launcher.cli.service_command", "services: list, call"),
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "param": ("launcher.cli.param_command", "parameters of a running node: list, get, set"),
+    "run": ("launcher.cli.run_command", "run an executable of a package (as ros2 run / rosrun)"),
     "router": ("launcher.cli.router_command", "run a standing router of the graph"),
     "sim": ("launcher.cli.sim_command", "run the MuJoCo world server"),
     "gz": ("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model)"),
@@ -49,6 +50,10 @@ def main(argv: list[str] | None = None) -> int:
         from launcher.cli.sim_command import run_sim
 
         return reported(lambda: run_sim(argv[1:]), "sim")
+    if argv[:1] == ["run"]:  # every word after PACKAGE EXECUTABLE is the executable's own
+        from launcher.cli.run_command import run_run
+
+        return reported(lambda: run_run(argv[1:]), "run", "--debug" in argv[1:3])
     if argv[:1] == ["gz"]:  # Gazebo's own flags, -h included
         from launcher.cli.gz_command import run_gz
 

@@ -1,6 +1,7 @@
-"""Shims so ROS 2 Python code runs unchanged without ROS: `launch`, `launch_ros` and
-`ament_index_python` (the last is what xacro's `$(find pkg)` imports), and Gazebo's `gz`
-command for launched processes.
+"""Shims so ROS Python code runs unchanged without ROS: `launch`, `launch_ros` and
+`ament_index_python` (the last is what xacro's `$(find pkg)` imports), Gazebo's `gz` command
+for launched processes, and for nodes `rclpy`, `rospy` and the message packages (finder.py,
+installed at interpreter start by site/sitecustomize.py).
 
 The shims folder goes on sys.path (and PYTHONPATH for children) only where the real modules
 are not installed; they answer from a package index built from the environment (its search
@@ -17,6 +18,7 @@ from collections.abc import MutableMapping
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz
 SHIMMED = ("ament_index_python", "launch", "launch_ros")
+SITE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "site")  # node APIs' hook
 
 
 def _real_installed(name: str) -> bool:
@@ -32,13 +34,24 @@ def enable_in_process() -> None:
 
 
 def enable_for_children(environment: MutableMapping[str, str]) -> None:
-    """Make the shims importable in child processes (xacro as a command, user nodes)."""
-    if _real_installed("ament_index_python"):
-        return
+    """Make the shims importable in child processes (xacro as a command, user nodes), and
+    rclpy, rospy and the message packages wherever no real ones are installed."""
     old = environment.get("PYTHONPATH", "")
     parts = old.split(os.pathsep) if old else []
-    if SHIMS not in parts:
-        environment["PYTHONPATH"] = os.pathsep.join([*parts, SHIMS])
+    if SITE not in parts:
+        parts.append(SITE)
+    if SHIMS not in parts and not _real_installed("ament_index_python"):
+        parts.append(SHIMS)
+    environment["PYTHONPATH"] = os.pathsep.join(parts)
+
+
+def node_apis_for_shell(environment: MutableMapping[str, str]) -> None:
+    """What `launcher env` adds for the user's shell: rclpy, rospy and message modules (each
+    only where no real one is installed: the finder comes last)."""
+    old = environment.get("PYTHONPATH", "")
+    parts = old.split(os.pathsep) if old else []
+    if SITE not in parts:
+        environment["PYTHONPATH"] = os.pathsep.join([*parts, SITE])
 
 
 def commands_for_children(environment: MutableMapping[str, str]) -> None:
@@ -48,3 +61,26 @@ def commands_for_children(environment: MutableMapping[str, str]) -> None:
     parts = path.split(os.pathsep) if path else []
     if COMMANDS not in parts:
         environment["PATH"] = os.pathsep.join([*parts, COMMANDS])
+
+
+def real_node_apis(environment: MutableMapping[str, str]) -> str:
+    """A note when a real rclpy or rospy is installed where the children look (their
+    PYTHONPATH, then this interpreter's path): theirs wins, and how to choose ours."""
+    from launcher.compat.finder import CHOICE_VARIABLE
+
+    if environment.get(CHOICE_VARIABLE) == "launcher":
+        return ""
+    extra = [p for p in environment.get("PYTHONPATH", "").split(os.pathsep) if p]
+    found = []
+    for name in ("rclpy", "rospy"):
+        for folder in [*extra, *sys.path]:
+            if folder and folder != SHIMS and os.path.isfile(
+                    os.path.join(folder, name, "__init__.py")) and \
+                    not folder.startswith(os.path.dirname(SHIMS)):
+                found.append(f"{name} in {folder}")
+                break
+    if not found:
+        return ""
+    return (f"a real ROS client library is installed ({', '.join(found)}): nodes use it, "
+            f"and it does not join launcher's graph; set {CHOICE_VARIABLE}=launcher to "
+            "use launcher's instead")

@@ -50,14 +50,31 @@ def executables(package: Package) -> dict[str, Executable]:
         for entry in entries:
             if entry.is_file() and not entry.name.startswith((".", "_")) \
                     and entry.name not in found:
-                path = Path(entry.path)
-                found[entry.name] = Executable(entry.name, (str(path),), path,
-                                               runnable=os.access(path, os.X_OK))
+                found[entry.name] = _file_executable(Path(entry.path))
     for name, target in _declared_entry_points(package):
         found.setdefault(name, Executable(
             name, (sys.executable, "-m", "launcher.packages.entry", target),
             pythonpath=(str(package.path),)))
     return found
+
+
+def _file_executable(path: Path) -> Executable:
+    if _python_script(path):
+        return Executable(path.name, (sys.executable, str(path)), path)
+    return Executable(path.name, (str(path),), path, runnable=os.access(path, os.X_OK))
+
+
+def _python_script(path: Path) -> bool:
+    """Whether to run it with launcher's interpreter (see the module's text)."""
+    try:
+        with open(path, "rb") as handle:
+            first = handle.readline(256).strip()
+    except OSError:
+        return False
+    if first.startswith(b"#!"):
+        words = first[2:].split()
+        return bool(words[:2] == [b"/usr/bin/env", b"python"] or words[:1] == [b"/usr/bin/python"])
+    return path.suffix == ".py"
 
 
 def find_executable(package: Package, name: str) -> Executable:
@@ -88,4 +105,9 @@ def _declared_entry_points(package: Package) -> list[tuple[str, str]]:
             if "=" in line:
                 name, target = (part.strip() for part in line.split("=", 1))
                 declared.append((name, target))
+    setup_py = package.path / "setup.py"
+    if setup_py.is_file():
+        from launcher.packages.setup_py import console_scripts
+
+        declared += [(name, target) for name, target, _line in console_scripts(setup_py)]
     return [(n, t) for n, t in declared if n and _ENTRY.match(t)]

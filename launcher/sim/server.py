@@ -151,7 +151,11 @@ class SimServer:
             response.message = (f"multi_step {steps} is past the limit of {MAX_MULTI_STEP:,} "
                                 f"steps in one request")
             return response
-        was_paused, self.paused = self.paused, request.pause
+        resetting = request.reset_all or request.reset_time_only or request.reset_model_only
+        # A reset alone keeps a paused world paused, as Gazebo does; pause/step say otherwise
+        was_paused = self.paused
+        if not (resetting and not request.pause and not steps):
+            self.paused = request.pause
         self.steps_to_go = steps if self.paused else 0  # replaces what was still to go
         if (was_paused and not self.paused) or request.reset_all or request.reset_time_only:
             self.pacer.restart()
@@ -201,6 +205,10 @@ class SimServer:
         try:
             self.world.set_pose(request.name, [pose.position.x, pose.position.y,
                                                pose.position.z], quat)
+            if request.set_twist:
+                linear, angular = request.twist.linear, request.twist.angular
+                self.world.set_twist(request.name, [linear.x, linear.y, linear.z],
+                                     [angular.x, angular.y, angular.z])
         except LaunchError as exc:
             response.success, response.message = False, str(exc)
             return response
@@ -218,6 +226,11 @@ class SimServer:
                                             linear=transport.vector(*v[:3]),
                                             angular=transport.vector(*v[3:6]))
                           for v in world.velocities(names)]
+        response.sim_time = float(world.data.time)
+        response.time_step = float(world.model.opt.timestep)
+        response.paused = self.paused
+        response.real_time_factor = float(self.pacer.rtf)
+        response.gravity = transport.vector(*world.model.opt.gravity.tolist())
         return response
 
     def on_snapshot(self, request: Any, response: Any) -> Any:

@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 import mujoco
+import numpy as np
 
 from launcher.errors import LaunchError, Location, did_you_mean
 from launcher.sim.loading import WorldModel, load_world_file
@@ -45,6 +46,7 @@ from launcher.user_files import read_text
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
             mujoco.mjtWarning.mjWARN_BADQACC)
 _QPOS, _QVEL, _QACC = (int(kind) for kind in UNSTABLE)  # indices into data.warning
+MAX_SPEED = 1e4  # m/s and rad/s: the fastest a set_model_state may make an entity move
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 
@@ -347,6 +349,25 @@ class World:
         move = target * self._body_pose(entity.body).inverse()
         for root in entity.roots:
             self._place_root(self.model.body(root).id, move)
+        mujoco.mj_forward(self.model, self.data)
+
+    def set_twist(self, name: str, linear: Sequence[float], angular: Sequence[float]) -> None:
+        """Give the entity's root this velocity (world frame); one without a free joint (a
+        static model) cannot move and says so."""
+        entity = self.entity(name)
+        if entity.dof < 0:
+            raise SpawnError(f"'{name}' has no free joint (a static model): it cannot be "
+                             "given a velocity")
+        for value in (*linear, *angular):
+            if not math.isfinite(value) or abs(value) > MAX_SPEED:
+                raise SpawnError(f"velocity {value} of '{name}' is not a finite number "
+                                 f"within ±{MAX_SPEED:g}")
+        self.data.qvel[entity.dof:entity.dof + 3] = linear
+        local = np.zeros(3)
+        inverse = np.zeros(4)
+        mujoco.mju_negQuat(inverse, self.data.xquat[entity.body])
+        mujoco.mju_rotVecQuat(local, np.asarray(angular, dtype=float), inverse)
+        self.data.qvel[entity.dof + 3:entity.dof + 6] = local
         mujoco.mj_forward(self.model, self.data)
 
     def _body_pose(self, body: int) -> Pose:

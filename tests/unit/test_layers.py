@@ -21,7 +21,7 @@ ALLOWED = {
     "bus": {"user_files", "private", "lineage", "schema", "bus", "errors", "packages"},
     "sim": {"user_files", "schema", "sim", "bus", "errors", "packages"},
     "nodes": {"user_files", "schema", "nodes", "sim", "bus", "errors", "packages"},
-    "compat": {"compat", "api", "packages", "runtime", "errors"},
+    "compat": {"compat", "api", "packages", "runtime", "bus", "errors"},
 }
 
 

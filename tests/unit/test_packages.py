@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 import textwrap
 from pathlib import Path
 
@@ -113,20 +114,30 @@ def test_executables_files_and_entry_points(tmp_path):
         "app/package.xml": manifest("app", extra='<export><executable name="driver" '
                                                  'module="app_py.driver:main"/></export>'),
         "app/scripts/tool.sh": "#!/bin/sh\necho tool\n",
-        "app/scripts/notexec.py": "print(1)\n",
+        "app/scripts/notexec.sh": "echo 1\n",
+        "app/scripts/plain.py": "print(1)\n",
+        "app/scripts/ros1.py": "#!/usr/bin/env python \nimport rospy\n",
+        "app/scripts/py3": "#!/usr/bin/env python3\nprint(3)\n",
         "app/setup.cfg": "[options.entry_points]\nconsole_scripts =\n    square = app_py.sq:main\n",
-    }, executable=("app/scripts/tool.sh",))
+    }, executable=("app/scripts/tool.sh", "app/scripts/ros1.py", "app/scripts/py3"))
     package = index_for(ws).get("app")
     found = executables(package)
-    assert set(found) == {"tool.sh", "notexec.py", "driver", "square"}
+    assert set(found) == {"tool.sh", "notexec.sh", "plain.py", "ros1.py", "py3", "driver",
+                          "square"}
+    # Python scripts without a usable #! line, or with ROS 1's `python`, run with launcher's
+    # interpreter (executable bit or not); a python3 script runs as the system runs it
+    assert found["plain.py"].argv == (sys.executable, str(package.path / "scripts/plain.py"))
+    assert found["ros1.py"].argv == (sys.executable, str(package.path / "scripts/ros1.py"))
+    assert found["py3"].argv == (str(package.path / "scripts/py3"),)
     assert found["driver"].argv[1:] == ("-m", "launcher.packages.entry", "app_py.driver:main")
     assert found["driver"].environment({})["PYTHONPATH"] == str(package.path)
     with pytest.raises(LaunchError, match="has no executable 'drivr' \\(did you mean 'driver'"
-                                          "\\?\\); it has: driver, notexec.py, square, tool.sh"):
+                                          "\\?\\); it has: driver, notexec.sh, plain.py, py3, ros1.py, "
+                                          "square, tool.sh"):
         find_executable(package, "drivr")
-    with pytest.raises(LaunchError, match="notexec.py' in package 'app' is not executable; make "
+    with pytest.raises(LaunchError, match="notexec.sh' in package 'app' is not executable; make "
                                           "it so with: chmod \\+x"):
-        find_executable(package, "notexec.py")
+        find_executable(package, "notexec.sh")
 
 
 def test_xacro_in_process_finds_packages_in_the_index_given_and_leaves_nothing_behind(tmp_path):

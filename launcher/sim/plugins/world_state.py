@@ -26,6 +26,8 @@ class WorldState(Plugin):
         self.poses = transport.publisher("mujoco_sim/msg/PoseV", f"/world/{world}/pose/info")
         self.states = transport.publisher("mujoco_sim/msg/ModelStates",
                                           f"/world/{world}/model_states")
+        self.links = transport.publisher("mujoco_sim/msg/ModelStates",
+                                         f"/world/{world}/link_states")
         self.reset()
 
     def reset(self) -> None:
@@ -38,6 +40,8 @@ class WorldState(Plugin):
         self.next_update = now + 1.0 / self.rate
         want_poses = self.poses.get_subscription_count() > 0
         want_states = self.states.get_subscription_count() > 0
+        if self.links.get_subscription_count() > 0:
+            self.publish_links(model, data)
         if not (want_poses or want_states):
             return
         names, positions, quats = self.sim.poses()
@@ -58,6 +62,32 @@ class WorldState(Plugin):
         self.states.publish(transport.message("mujoco_sim/msg/ModelStates", header=header,
                                               name=names, pose=poses, twist=twists))
 
+    def publish_links(self, model: Any, data: Any) -> None:
+        """Every link of every entity as `entity::link` (gazebo_ros's link_states): the pose
+        of the body frame and its velocity in the world frame."""
+        import mujoco
+        import numpy as np
+
+        entities = set(self.sim.poses()[0])
+        transport = self.sim.transport
+        names, poses, twists = [], [], []
+        velocity = np.zeros(6)
+        for body in range(1, model.nbody):
+            entity, _, link = model.body(body).name.partition("/")
+            if not link or entity not in entities:
+                continue
+            p, q = data.xpos[body], data.xquat[body]
+            mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_BODY, body, velocity, 0)
+            names.append(f"{entity}::{link}")
+            poses.append(transport.pose(p[0], p[1], p[2], (q[1], q[2], q[3], q[0])))
+            twists.append(transport.message("geometry_msgs/msg/Twist",
+                                            linear=transport.vector(*velocity[3:6]),
+                                            angular=transport.vector(*velocity[:3])))
+        self.links.publish(transport.message(
+            "mujoco_sim/msg/ModelStates", header=transport.header(data.time, "world"),
+            name=names, pose=poses, twist=twists))
+
     def close(self) -> None:
+        self.links.destroy()
         self.poses.destroy()
         self.states.destroy()

@@ -1,0 +1,147 @@
+"""The import hook that makes ROS node code importable without ROS: `rclpy`, `rospy` and the
+message packages (`geometry_msgs.msg`, `std_srvs.srv`, a workspace's own `my_msgs.msg`).
+
+It sits at the end of `sys.meta_path`, so it is asked only after every other finder has come
+up empty: a real rclpy, rospy or message package that the user installed (pip, /opt/ros on
+PYTHONPATH) always wins. `LAUNCHER_ROS_MODULES=launcher` puts it first instead, to use
+launcher's graph from a shell where a real ROS is installed too.
+
+It is installed at interpreter start by the `sitecustomize` in `compat/site/` (on the
+PYTHONPATH of every process a launch or `launcher run` starts, and of the shell that sourced
+hooks/setup.sh), because message imports often come before `import rclpy`.
+"""
+
+from __future__ import annotations
+
+import importlib.abc
+import importlib.machinery
+import os
+import sys
+import types
+from collections.abc import Sequence
+from typing import Any
+
+NODE_APIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "nodes")
+_API_NAMES = ("rclpy", "rospy")
+_KINDS = ("msg", "srv")
+CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
+
+
+class InterfaceFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    def __init__(self) -> None:
+        self._packages: set[str] | None = None
+
+    # --- finding ------------------------------------------------------------------------------
+    def find_spec(self, fullname: str, path: Sequence[str] | None = None,
+                  target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
+        top, _, rest = fullname.partition(".")
+        if top in _API_NAMES:
+            if rest:
+                return None  # submodules come from the package's own __path__
+            return importlib.machinery.PathFinder.find_spec(fullname, [NODE_APIS])
+        if rest and rest not in _KINDS:
+            return None
+        if not self._is_interface_package(top):
+            return None
+        spec = importlib.machinery.ModuleSpec(fullname, self, is_package=not rest)
+        if not rest:
+            spec.submodule_search_locations = []
+        return spec
+
+    def _is_interface_package(self, name: str) -> bool:
+        if not name.isidentifier() or name.startswith("_"):
+            return False
+        if self._packages is None:
+            self._packages = _interface_packages()
+        if name in self._packages:
+            return True
+        return _workspace_interface_package(name)
+
+    # --- loading ------------------------------------------------------------------------------
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> None:
+        return None
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        package, _, kind = module.__name__.partition(".")
+        module.__file__ = None
+        if not kind:
+            module.__doc__ = f"{package}: interfaces from launcher's type store"
+            return
+        module.__doc__ = f"{package}.{kind}: {kind} classes from launcher's type store"
+        module.__getattr__ = _lazy_types(package, kind)  # type: ignore[attr-defined]
+
+
+def _lazy_types(package: str, kind: str) -> Any:
+    def get(name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        from launcher.bus.types import UnknownType
+        from launcher.compat import rosidl
+
+        type_name = f"{package}/{kind}/{name}"
+        try:
+            cls = rosidl.service_class(type_name) if kind == "srv" else \
+                rosidl.message_class(type_name)
+        except UnknownType:
+            raise ImportError(_unknown(package, kind, name),
+                              name=f"{package}.{kind}") from None
+        setattr(sys.modules[f"{package}.{kind}"], name, cls)
+        return cls
+    return get
+
+
+def _unknown(package: str, kind: str, name: str) -> str:
+    from launcher.bus.types import registry
+    from launcher.errors import did_you_mean
+
+    known = [t.rsplit("/", 1)[-1] for t in registry().known() if t.startswith(f"{package}/{kind}/")
+             and not t.endswith(("_Request", "_Response", "_Event"))]
+    if kind == "srv" or not known:
+        known += _package_definitions(package, kind)
+    listing = ", ".join(sorted(set(known))[:20]) or "none"
+    return (f"cannot import name '{name}' from '{package}.{kind}': no {kind} type "
+            f"'{package}/{kind}/{name}'{did_you_mean(name, known)}; {package}.{kind} has: "
+            f"{listing}")
+
+
+def _interface_packages() -> set[str]:
+    """The packages of the type store's distro (no package index needed for those)."""
+    from launcher.bus.types import registry
+
+    return {name.split("/", 1)[0] for name in registry().known()}
+
+
+def _workspace_interface_package(name: str) -> bool:
+    """A package of the index with `msg/` or `srv/` definitions."""
+    folder = _package_folder(name)
+    return folder is not None and any(os.path.isdir(os.path.join(folder, k)) for k in _KINDS)
+
+
+def _package_folder(name: str) -> str | None:
+    from launcher.bus.types import registry
+
+    index = registry()._package_index()
+    if name not in index:
+        return None
+    return str(index.share(name))
+
+
+def _package_definitions(package: str, kind: str) -> list[str]:
+    folder = _package_folder(package)
+    if folder is None:
+        return []
+    try:
+        return [f[:-4] for f in os.listdir(os.path.join(folder, kind)) if f.endswith(f".{kind}")]
+    except OSError:
+        return []
+
+
+def install() -> None:
+    """Add the finder to this interpreter (once): last, or first if the user chose launcher's."""
+    if any(isinstance(f, InterfaceFinder) for f in sys.meta_path):
+        return
+    finder = InterfaceFinder()
+    if os.environ.get(CHOICE_VARIABLE) == "launcher":
+        sys.meta_path.insert(0, finder)
+    else:
+        sys.meta_path.append(finder)

@@ -1,0 +1,135 @@
+"""rclpy for launcher's graph: the API of ROS 2's Python client library (Jazzy/Kilted) over
+launcher's bus, for processes where no real rclpy is installed (see launcher/compat/finder.py).
+
+    import rclpy
+    from std_msgs.msg import String
+
+    with rclpy.init():
+        node = rclpy.create_node("talker")
+        pub = node.create_publisher(String, "chatter", 10)
+        ...
+        rclpy.spin(node)
+
+Not here (yet): actions (`rclpy.action`), lifecycle nodes, waitables, type adaptation,
+content filters, QoS events (kept, never raised) and the loaned-message API.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from typing import Any
+
+from rclpy.utilities import get_default_context, ok, shutdown, try_shutdown  # noqa: F401
+
+__all__ = ["create_node", "get_global_executor", "init", "ok", "shutdown", "spin",
+           "spin_once", "spin_until_future_complete", "try_shutdown"]
+
+_global_executor: Any = None
+
+
+class SignalHandlerOptions:
+    NO = 0
+    SIGINT = 1
+    SIGTERM = 2
+    ALL = 3
+
+
+class InitContextManager:
+    """What `rclpy.init()` returns: `with rclpy.init(): …` shuts down at the end."""
+
+    def __init__(self, context: Any) -> None:
+        self.context = context
+
+    def __enter__(self) -> InitContextManager:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.context.try_shutdown()
+
+
+def init(*, args: list[str] | None = None, context: Any = None, domain_id: int | None = None,
+         signal_handler_options: int | None = None) -> InitContextManager:
+    context = context or get_default_context()
+    context.init(args, domain_id=domain_id)
+    options = SignalHandlerOptions.ALL if signal_handler_options is None else \
+        signal_handler_options
+    if options & SignalHandlerOptions.SIGTERM:
+        _on_sigterm(context)
+    return InitContextManager(context)
+
+
+def _on_sigterm(context: Any) -> None:
+    """SIGTERM ends spinning with ExternalShutdownException, as rclpy's handler does (a
+    handler the program installed itself stays)."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    if signal.getsignal(signal.SIGTERM) not in (signal.SIG_DFL, None):
+        return
+
+    def stop(number: int, frame: Any) -> None:
+        from rclpy.executors import ExternalShutdownException
+
+        context.interrupt()
+        raise ExternalShutdownException()
+    signal.signal(signal.SIGTERM, stop)
+
+
+def get_global_executor() -> Any:
+    global _global_executor
+    if _global_executor is None:
+        from rclpy.executors import SingleThreadedExecutor
+
+        _global_executor = SingleThreadedExecutor()
+    return _global_executor
+
+
+def create_node(node_name: str, **kwargs: Any) -> Any:
+    from rclpy.node import Node
+
+    return Node(node_name, **kwargs)
+
+
+def _executor_for(node: Any, executor: Any) -> Any:
+    executor = executor or get_global_executor()
+    node._check_alive()
+    executor.add_node(node)
+    return executor
+
+
+def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
+    executor = _executor_for(node, executor)
+    try:
+        executor.spin_once(timeout_sec=timeout_sec)
+    finally:
+        executor.remove_node(node)
+
+
+def spin(node: Any, executor: Any = None) -> None:
+    executor = _executor_for(node, executor)
+    try:
+        while executor.context.ok():
+            executor.spin_once()
+    finally:
+        executor.remove_node(node)
+
+
+def spin_until_future_complete(node: Any, future: Any, executor: Any = None,
+                               timeout_sec: float | None = None) -> None:
+    executor = _executor_for(node, executor)
+    try:
+        executor.spin_until_future_complete(future, timeout_sec)
+    finally:
+        executor.remove_node(node)
+
+
+def __getattr__(name: str) -> Any:
+    """`rclpy.executors`, `rclpy.qos`, … without importing them first."""
+    import importlib
+
+    if name.startswith("_"):
+        raise AttributeError(name)
+    try:
+        return importlib.import_module(f"rclpy.{name}")
+    except ModuleNotFoundError:
+        raise AttributeError(f"module 'rclpy' has no attribute '{name}'") from None

@@ -1,0 +1,64 @@
+"""rclpy.callback_groups: which callbacks may run at the same time (MultiThreadedExecutor)."""
+
+from __future__ import annotations
+
+import threading
+from typing import Any
+
+
+class CallbackGroup:
+    def __init__(self) -> None:
+        self.entities: list[Any] = []
+
+    def add_entity(self, entity: Any) -> None:
+        self.entities.append(entity)
+
+    def has_entity(self, entity: Any) -> bool:
+        return entity in self.entities
+
+    def can_execute(self, entity: Any) -> bool:
+        raise NotImplementedError
+
+    def beginning_execution(self, entity: Any) -> bool:
+        raise NotImplementedError
+
+    def ending_execution(self, entity: Any) -> None:
+        raise NotImplementedError
+
+
+class ReentrantCallbackGroup(CallbackGroup):
+    """Its callbacks may run in parallel."""
+
+    def can_execute(self, entity: Any) -> bool:
+        return True
+
+    def beginning_execution(self, entity: Any) -> bool:
+        return True
+
+    def ending_execution(self, entity: Any) -> None:
+        pass
+
+
+class MutuallyExclusiveCallbackGroup(CallbackGroup):
+    """One of its callbacks at a time (a callback that spins the executor itself may still
+    run another of its group: reentry on one thread does not deadlock, as it does in rclpy)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._lock = threading.RLock()
+
+    def can_execute(self, entity: Any) -> bool:
+        if self._lock.acquire(blocking=False):
+            self._lock.release()
+            return True
+        return False
+
+    def beginning_execution(self, entity: Any) -> bool:
+        return self._lock.acquire(blocking=False)
+
+    def ending_execution(self, entity: Any) -> None:
+        self._lock.release()
+
+    def run(self, callback: Any, *args: Any) -> Any:
+        with self._lock:
+            return callback(*args)

@@ -1,0 +1,88 @@
+"""rclpy.client.Client over launcher's bus client.
+
+`call_async` returns a Future completed by the node's executor (so its done callbacks and
+awaiting coroutines run there, as in rclpy); `call` waits for the answer on the calling thread
+without needing an executor spinning elsewhere (rclpy's `call` deadlocks in a callback: this
+one does not)."""
+
+from __future__ import annotations
+
+import threading
+from typing import Any
+
+from launcher.compat import rosidl
+from rclpy.task import Future
+
+CALL_TIMEOUT = 3600.0  # s, the longest a call waits for its answer unless told
+
+
+class Client:
+    def __init__(self, node: Any, bus: Any, srv_type: Any, srv_name: str,
+                 callback_group: Any, qos_profile: Any) -> None:
+        self._node, self._bus, self.srv_type = node, bus, srv_type
+        self.callback_group, self.qos_profile = callback_group, qos_profile
+        self._pending: set[Future] = set()
+
+    @property
+    def service_name(self) -> str:
+        return self._bus.name
+
+    @property
+    def srv_name(self) -> str:
+        return self._bus.name
+
+    def _check(self, request: Any) -> Any:
+        if type(request) is not self.srv_type.Request:
+            raise TypeError(f"Request must be instance of {self.srv_type.Request}, "
+                            f"got {type(request)}")
+        return rosidl.to_store(request)
+
+    def call(self, request: Any, timeout_sec: float | None = None) -> Any:
+        answer = self._bus.call(self._check(request),
+                                CALL_TIMEOUT if timeout_sec is None else timeout_sec)
+        return rosidl.from_store(answer, self._bus.response_type)
+
+    def call_async(self, request: Any) -> Future:
+        payload = self._check(request)
+        future = Future(executor=self._node.executor)
+        self._pending.add(future)
+        host = self._node._host_or_none()
+
+        def finish(method: Any, value: Any) -> None:
+            self._pending.discard(future)
+            method(value)
+
+        def run() -> None:
+            try:
+                answer = rosidl.from_store(self._bus.call(payload, CALL_TIMEOUT),
+                                           self._bus.response_type)
+                outcome: tuple[Any, Any] = (future.set_result, answer)
+            except Exception as exc:  # the caller sees it from future.result()
+                outcome = (future.set_exception, exc)
+            if host is not None:
+                host.enqueue(finish, *outcome)  # completed by the executor
+            else:
+                finish(*outcome)
+        threading.Thread(target=run, daemon=True).start()
+        return future
+
+    def remove_pending_request(self, future: Future) -> None:
+        self._pending.discard(future)
+
+    def service_is_ready(self) -> bool:
+        return self._bus.wait_for_service(0.05)
+
+    def wait_for_service(self, timeout_sec: float | None = None) -> bool:
+        if timeout_sec is None:
+            while not self._bus.wait_for_service(1.0):
+                if not self._node.context.ok():
+                    return False
+            return True
+        return self._bus.wait_for_service(max(timeout_sec, 0.0))
+
+    def destroy(self) -> None:
+        self._bus.destroy()
+
+    @property
+    def handle(self) -> Any:
+        return self._bus

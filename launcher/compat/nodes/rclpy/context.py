@@ -1,0 +1,84 @@
+"""rclpy.context.Context: init/shutdown state, the arguments given to init, and the bell that
+wakes executors (every node's bus queue rings it)."""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+import weakref
+from collections.abc import Callable
+from typing import Any
+
+
+class Context:
+    def __init__(self) -> None:
+        self._ok = False
+        self._cleaned = True  # nothing to clean up before init
+        self._args: list[str] | None = None
+        self._lock = threading.RLock()
+        self._callbacks: list[Callable[[], None]] = []
+        self._nodes: weakref.WeakSet[Any] = weakref.WeakSet()
+        self.bell = threading.Lock()  # released when work comes; executors wait on it
+        self.bell.acquire()
+        self.domain_id = 0
+
+    def init(self, args: list[str] | None = None, *, initialize_logging: bool = True,
+             domain_id: int | None = None) -> None:
+        with self._lock:
+            if self._ok:
+                raise RuntimeError("Context.init() must only be called once")
+            self._args, self._ok, self._cleaned = args, True, False
+            if domain_id is not None:
+                self.domain_id = domain_id
+
+    def ok(self) -> bool:
+        return self._ok
+
+    def shutdown(self) -> None:
+        with self._lock:
+            if self._cleaned:
+                raise RuntimeError("Context must be initialized before it can be shutdown")
+        self.try_shutdown()
+
+    def try_shutdown(self) -> None:
+        with self._lock:
+            self._ok = False
+            if self._cleaned:
+                return
+            self._cleaned = True
+        for callback in list(self._callbacks):
+            callback()
+        for node in list(self._nodes):
+            with contextlib.suppress(Exception):
+                node.destroy_node()
+        self.ring()
+
+    def interrupt(self) -> None:
+        """A signal asked to stop: not ok from now on, spinning ends; the nodes are destroyed
+        by the shutdown that follows (never inside the signal handler)."""
+        self._ok = False
+        self.ring()
+
+    def ring(self) -> None:
+        with contextlib.suppress(RuntimeError):
+            if self.bell.locked():
+                self.bell.release()
+
+    def on_shutdown(self, callback: Callable[[], None]) -> None:
+        self._callbacks.append(callback)
+
+    def track_node(self, node: Any) -> None:
+        self._nodes.add(node)
+
+    def get_domain_id(self) -> int:
+        return self.domain_id
+
+    @property
+    def args(self) -> list[str] | None:
+        return self._args
+
+    def __enter__(self) -> Context:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.try_shutdown()

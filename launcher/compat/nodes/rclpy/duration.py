@@ -1,0 +1,84 @@
+"""rclpy.duration.Duration."""
+
+from __future__ import annotations
+
+from typing import Any
+
+_S = 1_000_000_000
+
+
+class Duration:
+    __slots__ = ("_nanoseconds",)
+
+    def __init__(self, *, seconds: float = 0, nanoseconds: int = 0) -> None:
+        total = int(seconds * _S) + int(nanoseconds)
+        if not -2**63 <= total < 2**63:
+            raise OverflowError("Total nanoseconds value is too large to store in C duration.")
+        self._nanoseconds = total
+
+    @property
+    def nanoseconds(self) -> int:
+        return self._nanoseconds
+
+    def __repr__(self) -> str:
+        return f"Duration(nanoseconds={self._nanoseconds})"
+
+    def __str__(self) -> str:
+        return f"{self._nanoseconds} nanoseconds"
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, Duration):
+            return self._nanoseconds == other._nanoseconds
+        return NotImplemented
+
+    def __lt__(self, other: Duration) -> bool:
+        return self._nanoseconds < _ns(other)
+
+    def __le__(self, other: Duration) -> bool:
+        return self._nanoseconds <= _ns(other)
+
+    def __gt__(self, other: Duration) -> bool:
+        return self._nanoseconds > _ns(other)
+
+    def __ge__(self, other: Duration) -> bool:
+        return self._nanoseconds >= _ns(other)
+
+    def __hash__(self) -> int:
+        return hash(self._nanoseconds)
+
+    def __add__(self, other: Any) -> Any:
+        if isinstance(other, Duration):
+            return Duration(nanoseconds=self._nanoseconds + other._nanoseconds)
+        return NotImplemented
+
+    def __sub__(self, other: Any) -> Any:
+        if isinstance(other, Duration):
+            return Duration(nanoseconds=self._nanoseconds - other._nanoseconds)
+        return NotImplemented
+
+    def __mul__(self, factor: float) -> Duration:
+        return Duration(nanoseconds=int(self._nanoseconds * factor))
+
+    __rmul__ = __mul__
+
+    def to_msg(self) -> Any:
+        from builtin_interfaces.msg import Duration as Message
+
+        sec, nanosec = divmod(self._nanoseconds, _S)
+        return Message(sec=sec, nanosec=nanosec)
+
+    @classmethod
+    def from_msg(cls, message: Any) -> Duration:
+        return cls(seconds=message.sec, nanoseconds=message.nanosec)
+
+    def get_c_duration(self) -> Duration:
+        return self
+
+
+def _ns(other: Any) -> int:
+    if not isinstance(other, Duration):
+        raise TypeError("Can't compare duration with object of type: ", type(other))
+    return other._nanoseconds
+
+
+Infinite = Duration(nanoseconds=2**63 - 1)

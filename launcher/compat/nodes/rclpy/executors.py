@@ -1,0 +1,217 @@
+"""rclpy.executors: run the callbacks of nodes.
+
+Every node's bus entities put their work on the node's queue and ring the context's bell; an
+executor takes work from the queues of its nodes, runs due timers, and tasks (coroutines and
+future callbacks). SingleThreadedExecutor runs one callback at a time on the spinning thread;
+MultiThreadedExecutor hands them to a pool, one at a time per mutually exclusive group.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import queue
+import threading
+import time
+from collections import deque
+from concurrent.futures import ThreadPoolExecutor
+from typing import Any
+
+from rclpy.task import Future, Task
+from rclpy.utilities import get_default_context
+
+
+class ExternalShutdownException(Exception):
+    """The context was shut down (a signal, or another thread) while spinning."""
+
+
+class ShutdownException(Exception):
+    """The executor was shut down."""
+
+    def __init__(self) -> None:
+        Exception.__init__(self, "Executor is shutdown")
+
+
+class TimeoutException(Exception):
+    pass
+
+
+class ConditionReachedException(Exception):
+    pass
+
+
+class Executor:
+    def __init__(self, *, context: Any = None) -> None:
+        self._context = context or get_default_context()
+        self._nodes: list[Any] = []
+        self._ready: deque[Task] = deque()
+        self._lock = threading.RLock()
+        self._is_shutdown = False
+        self._context.on_shutdown(self.wake)
+
+    @property
+    def context(self) -> Any:
+        return self._context
+
+    # --- nodes ------------------------------------------------------------------------------
+    def add_node(self, node: Any) -> bool:
+        node._check_alive()
+        with self._lock:
+            if node in self._nodes:
+                return False
+            self._nodes.append(node)
+            node.executor = self
+        self.wake()
+        return True
+
+    def remove_node(self, node: Any) -> None:
+        with self._lock:
+            if node in self._nodes:
+                self._nodes.remove(node)
+
+    def get_nodes(self) -> list[Any]:
+        with self._lock:
+            return list(self._nodes)
+
+    def wake(self) -> None:
+        self._context.ring()
+
+    def create_task(self, callback: Any, *args: Any, **kwargs: Any) -> Task:
+        task = Task(callback, args, kwargs, executor=self)
+        self._add_ready(task)
+        return task
+
+    def _add_ready(self, task: Task) -> None:
+        self._ready.append(task)
+        self.wake()
+
+    def shutdown(self, timeout_sec: float | None = None) -> bool:
+        self._is_shutdown = True
+        with self._lock:
+            for node in self._nodes:
+                if getattr(node, "executor", None) is self:
+                    node.executor = None
+            self._nodes.clear()
+        self.wake()
+        return True
+
+    # --- waiting ----------------------------------------------------------------------------
+    def _next_work(self, timeout_sec: float | None) -> tuple[Any, Any, tuple] | None:
+        """(node or None, callback, args) of the next ready work, waiting up to timeout_sec
+        (None: until some comes); None when none came."""
+        deadline = None if timeout_sec is None or timeout_sec < 0 else \
+            time.monotonic() + timeout_sec
+        while True:
+            if self._is_shutdown:
+                raise ShutdownException()
+            if not self._context.ok():
+                raise ExternalShutdownException()
+            if self._ready:
+                task = self._ready.popleft()
+                return None, task, ()
+            now = time.monotonic()
+            soonest = None
+            for node in self.get_nodes():
+                host = node._host_or_none()
+                if host is None:
+                    continue
+                with contextlib.suppress(queue.Empty):
+                    callback, args = host._queue.get_nowait()
+                    return node, callback, args
+                for timer in node._timers:
+                    if timer.is_canceled():
+                        continue
+                    if timer._next <= now:
+                        timer._next = max(timer._next + timer._period, now)
+                        timer._last = now
+                        return node, timer._fire, ()
+                    soonest = timer._next if soonest is None else min(soonest, timer._next)
+            ends = [t for t in (deadline, soonest) if t is not None]
+            wait = min(ends) - now if ends else None
+            if deadline is not None and now >= deadline:
+                return None
+            if wait is None:
+                self._context.bell.acquire()
+            elif wait > 0:
+                self._context.bell.acquire(timeout=wait)
+
+    def _run(self, node: Any, callback: Any, args: tuple) -> None:
+        if isinstance(callback, Task):
+            callback()
+            exc = callback.exception()
+            if exc is not None and callback.done():
+                raise exc
+            return
+        result = callback(*args)
+        if hasattr(result, "send") and hasattr(result, "throw"):  # an async callback
+            task = Task(lambda: result, executor=self)
+            task()
+
+    # --- spinning ---------------------------------------------------------------------------
+    def spin_once(self, timeout_sec: float | None = None) -> None:
+        work = self._next_work(timeout_sec)
+        if work is not None:
+            self._run(*work)
+
+    def spin(self) -> None:
+        while self._context.ok() and not self._is_shutdown:
+            self.spin_once()
+
+    def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None
+                                   ) -> None:
+        future.add_done_callback(lambda _f: self.wake())
+        if timeout_sec is None or timeout_sec < 0:
+            while self._context.ok() and not future.done() and not self._is_shutdown:
+                self.spin_once_until_future_complete(future, None)
+            return
+        end = time.monotonic() + timeout_sec
+        while self._context.ok() and not future.done() and not self._is_shutdown:
+            left = end - time.monotonic()
+            if left <= 0:
+                return
+            self.spin_once_until_future_complete(future, left)
+
+    def spin_once_until_future_complete(self, future: Future,
+                                        timeout_sec: float | None = None) -> None:
+        if future.done():
+            return
+        self.spin_once(timeout_sec)
+
+
+class SingleThreadedExecutor(Executor):
+    pass
+
+
+class MultiThreadedExecutor(Executor):
+    """Callbacks run on a pool of `num_threads` (default: the CPU count); a mutually
+    exclusive group's callbacks one at a time, a reentrant group's in parallel."""
+
+    def __init__(self, num_threads: int | None = None, *, context: Any = None) -> None:
+        super().__init__(context=context)
+        import os
+
+        self._pool = ThreadPoolExecutor(max_workers=num_threads or os.cpu_count() or 2)
+        self._errors: deque[BaseException] = deque()
+
+    def _run(self, node: Any, callback: Any, args: tuple) -> None:
+        # (each callback holds its group's lock while it runs: see Node._grouped)
+        def work() -> None:
+            try:
+                Executor._run(self, node, callback, args)
+            except BaseException as exc:  # re-raised on the spinning thread
+                self._errors.append(exc)
+                self.wake()
+        self._pool.submit(work)
+
+    def spin_once(self, timeout_sec: float | None = None) -> None:
+        if self._errors:
+            raise self._errors.popleft()
+        super().spin_once(timeout_sec)
+
+    def shutdown(self, timeout_sec: float | None = None) -> bool:
+        super().shutdown(timeout_sec)
+        self._pool.shutdown(wait=timeout_sec is None or timeout_sec > 0)
+        return True
+
+
+class EventsExecutor(SingleThreadedExecutor):
+    """rclpy.experimental's EventsExecutor: the same as SingleThreadedExecutor here."""

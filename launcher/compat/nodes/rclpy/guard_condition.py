@@ -1,0 +1,18 @@
+"""rclpy.guard_condition.GuardCondition: trigger() runs its callback on the executor."""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+class GuardCondition:
+    def __init__(self, callback: Any, callback_group: Any, host: Any) -> None:
+        self.callback, self.callback_group, self._host = callback, callback_group, host
+        self._run = None  # set by the node: the callback run in its group
+
+    def trigger(self) -> None:
+        if self._host is not None and self._run is not None:
+            self._host.enqueue(self._run)
+
+    def destroy(self) -> None:
+        self._host = None

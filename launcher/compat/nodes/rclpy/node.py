@@ -1,0 +1,489 @@
+"""rclpy.node.Node over launcher's bus node: same names, same argument order and defaults.
+
+Each Node owns one launcher bus node (its Zenoh session, graph tokens and parameter
+services). Its entities' callbacks go on the node's queue; the executor it is spun by runs
+them (see executors.py). Parameters follow rclpy: declared before use unless
+`allow_undeclared_parameters`, overrides from `--ros-args -p` and params files win over
+defaults, `add_on_set_parameters_callback` may refuse a change.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from launcher.bus import graph, keys
+from launcher.bus.node import Node as BusNode
+from launcher.compat import rosidl
+from launcher.errors import LaunchError
+from rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
+from rclpy.client import Client
+from rclpy.clock import ROSClock
+from rclpy.exceptions import (
+    InvalidNamespaceException,
+    InvalidNodeNameException,
+    InvalidParameterTypeException,
+    NotInitializedException,
+    ParameterAlreadyDeclaredException,
+    ParameterNotDeclaredException,
+)
+from rclpy.guard_condition import GuardCondition
+from rclpy.logging import RcutilsLogger
+from rclpy.parameter import Parameter
+from rclpy.publisher import Publisher
+from rclpy.qos import QoSProfile, qos_profile_services_default, to_launcher
+from rclpy.service import Service
+from rclpy.subscription import Subscription
+from rclpy.timer import Rate, Timer
+from rclpy.utilities import get_default_context
+
+
+class Node:
+    PARAM_REL_TOL = 1e-6
+
+    def __init__(self, node_name: str, *, context: Any = None, cli_args: list[str] | None = None,
+                 namespace: str | None = None, use_global_arguments: bool = True,
+                 enable_rosout: bool = True, rosout_qos_profile: Any = None,
+                 start_parameter_services: bool = True,
+                 parameter_overrides: list[Parameter] | None = None,
+                 allow_undeclared_parameters: bool = False,
+                 automatically_declare_parameters_from_overrides: bool = False,
+                 enable_logger_service: bool = False) -> None:
+        self._context = context or get_default_context()
+        if not self._context.ok():
+            raise NotInitializedException("cannot create node")
+        argv: list[str] = []
+        if use_global_arguments:
+            import sys
+
+            given = self._context.args
+            argv += list(sys.argv[1:] if given is None else given[1:])
+        argv += list(cli_args or [])
+        try:
+            self._bus = BusNode(node_name, namespace=namespace or "", argv=argv,
+                                parameter_services=start_parameter_services)
+        except LaunchError as exc:
+            text = str(exc)
+            if "namespace" in text:
+                raise InvalidNamespaceException(text) from None
+            raise InvalidNodeNameException(text) from None
+        self._host = self._bus._host
+        self._host._bell = self._context.bell  # its work wakes whichever executor spins it
+        self._destroyed = False
+        self.executor: Any = None
+        self._timers: list[Timer] = []
+        self._entities: list[Any] = []
+        self.default_callback_group = MutuallyExclusiveCallbackGroup()
+        self._callback_groups = [self.default_callback_group]
+        self._logger = RcutilsLogger(
+            f"{self._bus.namespace.strip('/').replace('/', '.')}.{self._bus.name}"
+            if self._bus.namespace.strip("/") else self._bus.name)
+        self._allow_undeclared = allow_undeclared_parameters
+        self._overrides: dict[str, Any] = dict(self._bus._parameters)
+        for parameter in parameter_overrides or []:
+            self._overrides[parameter.name] = parameter.value
+        self._declared: dict[str, Parameter] = {}
+        self._descriptors: dict[str, Any] = {}
+        self._set_callbacks: list[Callable[[list[Parameter]], Any]] = []
+        self._bus._parameters.clear()  # what is declared, as rclpy lists it
+        self._declare_now("use_sim_time", self._overrides.get("use_sim_time", False))
+        if automatically_declare_parameters_from_overrides:
+            for name, value in self._overrides.items():
+                if name not in self._declared:
+                    self._declare_now(name, value)
+        self._bus.add_on_set_parameters_callback(self._on_bus_set)
+        self._clock = ROSClock(self._bus.get_clock())
+        self._context.track_node(self)
+
+    # --- identity ---------------------------------------------------------------------------
+    @property
+    def context(self) -> Any:
+        return self._context
+
+    @property
+    def handle(self) -> Any:
+        return self._bus
+
+    def get_name(self) -> str:
+        return self._bus.name
+
+    def get_namespace(self) -> str:
+        return self._bus.namespace or "/"
+
+    def get_fully_qualified_name(self) -> str:
+        return self._bus.fully_qualified_name
+
+    def get_logger(self) -> RcutilsLogger:
+        return self._logger
+
+    def get_clock(self) -> ROSClock:
+        return self._clock
+
+    def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
+        return self._bus.resolve(topic)
+
+    def resolve_service_name(self, service: str, *, only_expand: bool = False) -> str:
+        return self._bus.resolve(service, "service name")
+
+    @property
+    def callback_groups(self) -> list[CallbackGroup]:
+        return list(self._callback_groups)
+
+    def add_waitable(self, waitable: Any) -> None:
+        raise NotImplementedError("waitables are not supported by launcher's rclpy")
+
+    def _host_or_none(self) -> Any:
+        return None if self._destroyed else self._host
+
+    def _check_alive(self) -> None:
+        if self._destroyed:
+            from rclpy.exceptions import InvalidHandle
+
+            raise InvalidHandle("cannot use Destroyable because destruction was requested")
+
+    def _grouped(self, group: CallbackGroup | None, callback: Callable[..., Any]
+                 ) -> Callable[..., Any]:
+        """The callback as its group runs it: under the group's lock if mutually exclusive."""
+        group = group or self.default_callback_group
+        if group not in self._callback_groups:
+            self._callback_groups.append(group)
+        if isinstance(group, MutuallyExclusiveCallbackGroup):
+            def run(*args: Any) -> Any:
+                return group.run(callback, *args)
+            return run
+        return callback
+
+    # --- endpoints --------------------------------------------------------------------------
+    def create_publisher(self, msg_type: Any, topic: str, qos_profile: QoSProfile | int,
+                         *, callback_group: Any = None, event_callbacks: Any = None,
+                         qos_overriding_options: Any = None,
+                         publisher_class: Any = Publisher) -> Publisher:
+        self._check_alive()
+        qos = to_launcher(qos_profile)
+        bus = self._bus.create_publisher(rosidl.type_name_of(msg_type), topic, qos)
+        publisher = publisher_class(bus, msg_type, topic, qos_profile, event_callbacks)
+        self._entities.append(publisher)
+        return publisher
+
+    def create_subscription(self, msg_type: Any, topic: str, callback: Callable[[Any], Any],
+                            qos_profile: QoSProfile | int, *, callback_group: Any = None,
+                            event_callbacks: Any = None, qos_overriding_options: Any = None,
+                            raw: bool = False, content_filter_options: Any = None,
+                            ) -> Subscription:
+        self._check_alive()
+        type_name = rosidl.type_name_of(msg_type)
+        run = self._grouped(callback_group, callback)
+        if raw:
+            deliver = run
+        else:
+            rosidl.message_class(type_name)  # made now, not on the first message
+
+            def deliver(message: Any) -> Any:
+                return run(rosidl.from_store(message, type_name))
+        bus = self._bus.create_subscription(type_name, topic, deliver, to_launcher(qos_profile),
+                                            raw=raw)
+        subscription = Subscription(bus, msg_type, topic, callback, callback_group,
+                                    qos_profile, raw, event_callbacks)
+        self._entities.append(subscription)
+        return subscription
+
+    def create_service(self, srv_type: Any, srv_name: str,
+                       callback: Callable[[Any, Any], Any], *,
+                       qos_profile: QoSProfile = qos_profile_services_default,
+                       callback_group: Any = None) -> Service:
+        self._check_alive()
+        type_name = rosidl.type_name_of(srv_type)
+        request_type = type_name + "_Request"
+
+        def answer(request: Any, _store_response: Any) -> Any:
+            response = srv_type.Response()
+            result = callback(rosidl.from_store(request, request_type), response)
+            if result is None:
+                raise RuntimeError("the service callback returned None: return the response")
+            return rosidl.to_store(result)
+        bus = self._bus.create_service(type_name, srv_name,
+                                       self._grouped(callback_group, answer))
+        service = Service(bus, srv_type, srv_name, callback, callback_group, qos_profile)
+        self._entities.append(service)
+        return service
+
+    def create_client(self, srv_type: Any, srv_name: str, *,
+                      qos_profile: QoSProfile = qos_profile_services_default,
+                      callback_group: Any = None) -> Client:
+        self._check_alive()
+        bus = self._bus.create_client(rosidl.type_name_of(srv_type), srv_name)
+        rosidl.service_class(rosidl.type_name_of(srv_type))
+        client = Client(self, bus, srv_type, srv_name, callback_group, qos_profile)
+        self._entities.append(client)
+        return client
+
+    def create_timer(self, timer_period_sec: float, callback: Callable[[], Any],
+                     callback_group: Any = None, clock: Any = None,
+                     autostart: bool = True) -> Timer:
+        self._check_alive()
+        if timer_period_sec <= 0:
+            raise ValueError(f"timer period must be > 0, got {timer_period_sec}")
+        timer = Timer(callback, callback_group, int(timer_period_sec * 1e9), clock or
+                      self._clock, context=self._context, autostart=autostart)
+        timer._fire = self._grouped(callback_group, callback)
+        self._timers.append(timer)
+        if self.executor is not None:
+            self.executor.wake()
+        return timer
+
+    def create_rate(self, frequency: float, clock: Any = None) -> Rate:
+        return Rate(frequency, context=self._context)
+
+    def create_guard_condition(self, callback: Callable[[], Any],
+                               callback_group: Any = None) -> GuardCondition:
+        guard = GuardCondition(callback, callback_group, self._host)
+        guard._run = self._grouped(callback_group, callback)
+        self._entities.append(guard)
+        return guard
+
+    # --- destroying -------------------------------------------------------------------------
+    def _destroy_entity(self, entity: Any) -> bool:
+        if entity in self._entities:
+            self._entities.remove(entity)
+            entity.destroy()
+            return True
+        return False
+
+    def destroy_publisher(self, publisher: Publisher) -> bool:
+        return self._destroy_entity(publisher)
+
+    def destroy_subscription(self, subscription: Subscription) -> bool:
+        return self._destroy_entity(subscription)
+
+    def destroy_service(self, service: Service) -> bool:
+        return self._destroy_entity(service)
+
+    def destroy_client(self, client: Client) -> bool:
+        return self._destroy_entity(client)
+
+    def destroy_guard_condition(self, guard: GuardCondition) -> bool:
+        return self._destroy_entity(guard)
+
+    def destroy_timer(self, timer: Timer) -> bool:
+        if timer in self._timers:
+            self._timers.remove(timer)
+            timer.destroy()
+            return True
+        return False
+
+    def destroy_rate(self, rate: Rate) -> bool:
+        return True
+
+    def destroy_node(self) -> None:
+        if self._destroyed:
+            return
+        self._destroyed = True
+        if self.executor is not None:
+            self.executor.remove_node(self)
+        for timer in self._timers:
+            timer.destroy()
+        self._timers.clear()
+        self._entities.clear()
+        self._bus.destroy_node()
+
+    @property
+    def publishers(self) -> list[Publisher]:
+        return [e for e in self._entities if isinstance(e, Publisher)]
+
+    @property
+    def subscriptions(self) -> list[Subscription]:
+        return [e for e in self._entities if isinstance(e, Subscription)]
+
+    @property
+    def timers(self) -> list[Timer]:
+        return list(self._timers)
+
+    @property
+    def clients(self) -> list[Client]:
+        return [e for e in self._entities if isinstance(e, Client)]
+
+    @property
+    def services(self) -> list[Service]:
+        return [e for e in self._entities if isinstance(e, Service)]
+
+    # --- the graph --------------------------------------------------------------------------
+    def _entities_on_graph(self) -> list[keys.Entity]:
+        self._check_alive()
+        return graph.entities(self._bus.graph_session(), 0.5)
+
+    def count_publishers(self, topic_name: str) -> int:
+        topic = self._bus.resolve(topic_name)
+        return sum(1 for e in self._entities_on_graph()
+                   if e.kind == keys.PUBLISHER and e.topic == topic)
+
+    def count_subscribers(self, topic_name: str) -> int:
+        topic = self._bus.resolve(topic_name)
+        return sum(1 for e in self._entities_on_graph()
+                   if e.kind == keys.SUBSCRIPTION and e.topic == topic)
+
+    def count_services(self, service_name: str) -> int:
+        name = self._bus.resolve(service_name, "service name")
+        return sum(1 for e in self._entities_on_graph()
+                   if e.kind == keys.SERVICE and e.topic == name)
+
+    def count_clients(self, service_name: str) -> int:
+        name = self._bus.resolve(service_name, "service name")
+        return sum(1 for e in self._entities_on_graph()
+                   if e.kind == keys.CLIENT and e.topic == name)
+
+    def _names_and_types(self, kinds: tuple[str, ...]) -> list[tuple[str, list[str]]]:
+        table: dict[str, set[str]] = {}
+        for entity in self._entities_on_graph():
+            if entity.kind in kinds:
+                table.setdefault(entity.topic, set()).add(entity.type_name)
+        return sorted((name, sorted(types)) for name, types in table.items())
+
+    def get_topic_names_and_types(self, no_demangle: bool = False
+                                  ) -> list[tuple[str, list[str]]]:
+        return self._names_and_types((keys.PUBLISHER, keys.SUBSCRIPTION))
+
+    def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
+        return self._names_and_types((keys.SERVICE,))
+
+    def get_node_names(self) -> list[str]:
+        return [e.node for e in self._entities_on_graph() if e.kind == keys.NODE]
+
+    def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
+        return [(e.node, e.namespace or "/") for e in self._entities_on_graph()
+                if e.kind == keys.NODE]
+
+    def wait_for_node(self, fully_qualified_node_name: str, timeout: float) -> bool:
+        end = time.monotonic() + timeout
+        while time.monotonic() < end:
+            if any(f"{ns.rstrip('/')}/{n}" == fully_qualified_node_name
+                   for n, ns in self.get_node_names_and_namespaces()):
+                return True
+            time.sleep(0.1)
+        return False
+
+    # --- parameters -------------------------------------------------------------------------
+    def _declare_now(self, name: str, value: Any) -> Parameter:
+        parameter = Parameter(name, value=_plain(value))
+        self._declared[name] = parameter
+        self._bus._parameters[name] = parameter.value
+        return parameter
+
+    def declare_parameter(self, name: str, value: Any = None, descriptor: Any = None,
+                          ignore_override: bool = False) -> Parameter:
+        if isinstance(value, Parameter.Type):  # declare_parameter(name, Parameter.Type.X)
+            value = None
+        if name in self._declared:
+            raise ParameterAlreadyDeclaredException([name])
+        if not name:
+            from rclpy.exceptions import InvalidParameterException
+
+            raise InvalidParameterException(name)
+        chosen = value if ignore_override or name not in self._overrides else \
+            self._overrides[name]
+        if value is not None and chosen is not None and not ignore_override and \
+                name in self._overrides and _kind(value) != _kind(chosen) and \
+                not (descriptor is not None and getattr(descriptor, "dynamic_typing", False)):
+            raise InvalidParameterTypeException(Parameter(name, value=_plain(chosen)),
+                                                Parameter(name, value=_plain(value)).type_.name)
+        if descriptor is not None:
+            self._descriptors[name] = descriptor
+        return self._declare_now(name, chosen)
+
+    def declare_parameters(self, namespace: str, parameters: Sequence[Any],
+                           ignore_override: bool = False) -> list[Parameter]:
+        declared = []
+        for entry in parameters:
+            name, *rest = entry if isinstance(entry, tuple) else (entry,)
+            full = f"{namespace}.{name}" if namespace else name
+            declared.append(self.declare_parameter(full, *rest[:2],
+                                                   ignore_override=ignore_override))
+        return declared
+
+    def undeclare_parameter(self, name: str) -> None:
+        if name not in self._declared:
+            raise ParameterNotDeclaredException(name)
+        del self._declared[name]
+        self._bus._parameters.pop(name, None)
+
+    def has_parameter(self, name: str) -> bool:
+        return name in self._declared
+
+    def get_parameter(self, name: str) -> Parameter:
+        if name in self._declared:
+            return self._declared[name]
+        if self._allow_undeclared:
+            return Parameter(name, Parameter.Type.NOT_SET, None)
+        raise ParameterNotDeclaredException(name)
+
+    def get_parameter_or(self, name: str, alternative_value: Parameter | None = None
+                         ) -> Parameter:
+        if alternative_value is None:
+            alternative_value = Parameter(name, Parameter.Type.NOT_SET)
+        return self._declared.get(name, alternative_value)
+
+    def get_parameters(self, names: list[str]) -> list[Parameter]:
+        return [self.get_parameter(name) for name in names]
+
+    def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
+        start = f"{prefix}." if prefix else ""
+        return {name[len(start):]: p for name, p in self._declared.items()
+                if name.startswith(start)}
+
+    @property
+    def parameters(self) -> dict[str, Parameter]:
+        return dict(self._declared)
+
+    def describe_parameter(self, name: str) -> Any:
+        from rcl_interfaces.msg import ParameterDescriptor
+
+        if name not in self._declared:
+            raise ParameterNotDeclaredException(name)
+        return self._descriptors.get(name) or ParameterDescriptor(
+            name=name, type=self._declared[name].type_.value)
+
+    def add_on_set_parameters_callback(self, callback: Callable[[list[Parameter]], Any]
+                                       ) -> Callable[[list[Parameter]], Any]:
+        self._set_callbacks.insert(0, callback)
+        return callback
+
+    def remove_on_set_parameters_callback(self, callback: Any) -> None:
+        self._set_callbacks.remove(callback)
+
+    def set_parameters(self, parameter_list: list[Parameter]) -> list[Any]:
+        return [self.set_parameters_atomically([p]) for p in parameter_list]
+
+    def set_parameters_atomically(self, parameter_list: list[Parameter]) -> Any:
+        from rcl_interfaces.msg import SetParametersResult
+
+        for parameter in parameter_list:
+            if parameter.name not in self._declared and not self._allow_undeclared:
+                raise ParameterNotDeclaredException(parameter.name)
+        for callback in self._set_callbacks:
+            result = callback(list(parameter_list))
+            if result is not None and not result.successful:
+                return result
+        for parameter in parameter_list:
+            self._declared[parameter.name] = parameter
+            self._bus._parameters[parameter.name] = parameter.value
+        return SetParametersResult(successful=True)
+
+    def _on_bus_set(self, name: str, value: Any) -> None:
+        """`launcher param set` (or ros2 param) changed one: the callbacks hear of it."""
+        parameter = Parameter(name, value=_plain(value))
+        if self._declared.get(name) == parameter:
+            return
+        self._declared[name] = parameter
+        for callback in self._set_callbacks:
+            callback([parameter])
+
+
+def _plain(value: Any) -> Any:
+    return list(value) if isinstance(value, tuple) else value
+
+
+def _kind(value: Any) -> Any:
+    try:
+        return Parameter.Type.from_parameter_value(_plain(value))
+    except TypeError:
+        return None

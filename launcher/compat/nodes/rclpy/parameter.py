@@ -1,0 +1,131 @@
+"""rclpy.parameter.Parameter: a name, a value and its ROS 2 parameter type."""
+
+from __future__ import annotations
+
+import array
+from enum import Enum
+from typing import Any
+
+__all__ = ["Parameter", "parameter_value_to_python"]
+
+
+class _Type(Enum):
+    NOT_SET = 0
+    BOOL = 1
+    INTEGER = 2
+    DOUBLE = 3
+    STRING = 4
+    BYTE_ARRAY = 5
+    BOOL_ARRAY = 6
+    INTEGER_ARRAY = 7
+    DOUBLE_ARRAY = 8
+    STRING_ARRAY = 9
+
+    @classmethod
+    def from_parameter_value(cls, value: Any) -> _Type:
+        if value is None:
+            return cls.NOT_SET
+        if isinstance(value, bool):
+            return cls.BOOL
+        if isinstance(value, int):
+            return cls.INTEGER
+        if isinstance(value, float):
+            return cls.DOUBLE
+        if isinstance(value, str):
+            return cls.STRING
+        if isinstance(value, list | tuple | array.array) or type(value).__name__ == "ndarray":
+            items = list(value)
+            if isinstance(value, bytes) or all(isinstance(v, bytes) for v in items) and items:
+                return cls.BYTE_ARRAY
+            if all(isinstance(v, bool) for v in items):
+                return cls.BOOL_ARRAY
+            if all(isinstance(v, int) and not isinstance(v, bool) for v in items):
+                return cls.INTEGER_ARRAY
+            if all(isinstance(v, float) for v in items):
+                return cls.DOUBLE_ARRAY
+            if all(isinstance(v, str) for v in items):
+                return cls.STRING_ARRAY
+        raise TypeError(f"The given value is not one of the allowed types '{value}'.")
+
+    def check(self, value: Any) -> bool:
+        if self == _Type.NOT_SET:
+            return value is None
+        try:
+            return _Type.from_parameter_value(value) == self or (
+                self in (_Type.BOOL_ARRAY, _Type.INTEGER_ARRAY, _Type.DOUBLE_ARRAY,
+                         _Type.STRING_ARRAY, _Type.BYTE_ARRAY) and len(list(value)) == 0)
+        except TypeError:
+            return False
+
+
+class Parameter:
+    Type = _Type
+
+    def __init__(self, name: str, type_: Any = None, value: Any = None) -> None:
+        if type_ is None:
+            type_ = _Type.from_parameter_value(value)
+        elif not isinstance(type_, _Type):  # Parameter(name, value) as some code writes it
+            if value is None:
+                value, type_ = type_, _Type.from_parameter_value(type_)
+            else:
+                raise TypeError("type must be an instance of 'Parameter.Type'")
+        if not type_.check(value):
+            raise ValueError(f"Type '{type_}' and value '{value}' do not agree")
+        self._name, self._type_, self._value = name, type_, value
+
+    @property
+    def name(self) -> str:
+        return self._name
+
+    @property
+    def type_(self) -> _Type:
+        return self._type_
+
+    @property
+    def value(self) -> Any:
+        return self._value
+
+    def __repr__(self) -> str:
+        return f"Parameter(name={self._name!r}, type_={self._type_}, value={self._value!r})"
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Parameter) and (self._name, self._type_, self._value) == (
+            other._name, other._type_, other._value)
+
+    def get_parameter_value(self) -> Any:
+        from rcl_interfaces.msg import ParameterValue
+
+        value = ParameterValue(type=self._type_.value)
+        field = {_Type.BOOL: "bool_value", _Type.INTEGER: "integer_value",
+                 _Type.DOUBLE: "double_value", _Type.STRING: "string_value",
+                 _Type.BYTE_ARRAY: "byte_array_value", _Type.BOOL_ARRAY: "bool_array_value",
+                 _Type.INTEGER_ARRAY: "integer_array_value",
+                 _Type.DOUBLE_ARRAY: "double_array_value",
+                 _Type.STRING_ARRAY: "string_array_value"}.get(self._type_)
+        if field is not None:
+            setattr(value, field, list(self._value) if isinstance(self._value, tuple)
+                    else self._value)
+        return value
+
+    def to_parameter_msg(self) -> Any:
+        from rcl_interfaces.msg import Parameter as Message
+
+        return Message(name=self._name, value=self.get_parameter_value())
+
+    @classmethod
+    def from_parameter_msg(cls, message: Any) -> Parameter:
+        return cls(message.name, value=parameter_value_to_python(message.value))
+
+
+def parameter_value_to_python(value: Any) -> Any:
+    kind = _Type(value.type)
+    field = {_Type.BOOL: "bool_value", _Type.INTEGER: "integer_value",
+             _Type.DOUBLE: "double_value", _Type.STRING: "string_value",
+             _Type.BYTE_ARRAY: "byte_array_value", _Type.BOOL_ARRAY: "bool_array_value",
+             _Type.INTEGER_ARRAY: "integer_array_value",
+             _Type.DOUBLE_ARRAY: "double_array_value",
+             _Type.STRING_ARRAY: "string_array_value"}.get(kind)
+    if field is None:
+        return None
+    found = getattr(value, field)
+    return list(found) if kind.name.endswith("ARRAY") else found

@@ -1,0 +1,27 @@
+"""rclpy.service.Service over launcher's bus service."""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+class Service:
+    def __init__(self, bus: Any, srv_type: Any, srv_name: str, callback: Any,
+                 callback_group: Any, qos_profile: Any) -> None:
+        self._bus, self.srv_type, self.callback = bus, srv_type, callback
+        self.callback_group, self.qos_profile = callback_group, qos_profile
+
+    @property
+    def service_name(self) -> str:
+        return self._bus.name
+
+    @property
+    def srv_name(self) -> str:
+        return self._bus.name
+
+    def destroy(self) -> None:
+        self._bus.destroy()
+
+    @property
+    def handle(self) -> Any:
+        return self._bus

@@ -1,0 +1,131 @@
+"""rclpy.task: Future (awaitable, with done callbacks) and Task (a coroutine run by an
+executor, resumed when the future it awaits is done)."""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from typing import Any
+
+
+class Future:
+    def __init__(self, *, executor: Any = None) -> None:
+        self._state = "pending"  # pending, finished, cancelled
+        self._result: Any = None
+        self._exception: BaseException | None = None
+        self._callbacks: list[Callable[[Future], None]] = []
+        self._lock = threading.Lock()
+        self._executor = executor
+
+    def __await__(self) -> Any:
+        while self._state == "pending":
+            yield self
+        return self.result()
+
+    def cancel(self) -> None:
+        self._finish("cancelled")
+
+    def cancelled(self) -> bool:
+        return self._state == "cancelled"
+
+    def done(self) -> bool:
+        return self._state != "pending"
+
+    def result(self) -> Any:
+        if self._exception is not None:
+            raise self._exception
+        return self._result
+
+    def exception(self) -> BaseException | None:
+        return self._exception
+
+    def set_result(self, result: Any) -> None:
+        self._result = result
+        self._finish("finished")
+
+    def set_exception(self, exception: BaseException) -> None:
+        self._exception = exception
+        self._finish("finished")
+
+    def _finish(self, state: str) -> None:
+        with self._lock:
+            if self._state != "pending":
+                return
+            self._state = state
+            callbacks, self._callbacks = self._callbacks, []
+        for callback in callbacks:
+            self._schedule(callback)
+
+    def _schedule(self, callback: Callable[[Future], None]) -> None:
+        executor = self._executor
+        if executor is not None:
+            executor.create_task(callback, self)
+        else:
+            callback(self)
+
+    def add_done_callback(self, callback: Callable[[Future], None]) -> None:
+        with self._lock:
+            if self._state == "pending":
+                self._callbacks.append(callback)
+                return
+        self._schedule(callback)
+
+    def remove_done_callback(self, callback: Callable[[Future], None]) -> bool:
+        with self._lock:
+            if callback in self._callbacks:
+                self._callbacks.remove(callback)
+                return True
+        return False
+
+    def _set_executor(self, executor: Any) -> None:
+        self._executor = executor
+
+
+class Task(Future):
+    """A callback or coroutine run by the executor; a coroutine resumes when what it awaits
+    is done."""
+
+    def __init__(self, handler: Any, args: tuple = (), kwargs: dict | None = None,
+                 executor: Any = None) -> None:
+        super().__init__(executor=executor)
+        self._handler, self._args, self._kwargs = handler, args, kwargs or {}
+        self._coroutine: Any = None
+        self._running = threading.Lock()
+
+    def __call__(self) -> None:
+        if self.done() or not self._running.acquire(blocking=False):
+            return
+        try:
+            if self._coroutine is None:
+                result = self._handler(*self._args, **self._kwargs)
+                if hasattr(result, "send") and hasattr(result, "throw"):
+                    self._coroutine = result
+                else:
+                    self.set_result(result)
+                    return
+            self._step()
+        finally:
+            self._running.release()
+
+    def _step(self) -> None:
+        try:
+            awaited = self._coroutine.send(None)
+        except StopIteration as end:
+            self.set_result(end.value)
+            return
+        except Exception as exc:  # the task's error: kept on the task, re-raised by the executor
+            self.set_exception(exc)
+            raise
+        if isinstance(awaited, Future):
+            awaited.add_done_callback(lambda _f: self._resume())
+        else:
+            self._resume()
+
+    def _resume(self) -> None:
+        if self._executor is not None:
+            self._executor._add_ready(self)
+        else:
+            self()
+
+    def executing(self) -> bool:
+        return self._running.locked()

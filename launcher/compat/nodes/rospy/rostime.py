@@ -1,0 +1,138 @@
+"""rospy's Time and Duration. A Time is a `builtin_interfaces/Time` message too, so
+`msg.header.stamp = rospy.Time.now()` works as in ROS 1; it answers to `secs`/`nsecs`
+(ROS 1) and `sec`/`nanosec` (ROS 2)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launcher.compat import rosidl
+
+_S = 1_000_000_000
+_TimeMessage: Any = rosidl.message_class("builtin_interfaces/msg/Time")
+_DurationMessage: Any = rosidl.message_class("builtin_interfaces/msg/Duration")
+
+
+def _split(secs: Any, nsecs: int) -> tuple[int, int]:
+    total = int(round(secs * _S)) + int(nsecs) if isinstance(secs, float) else \
+        int(secs) * _S + int(nsecs)
+    return divmod(total, _S)
+
+
+class _Arithmetic:
+    __slots__ = ()
+
+    def to_nsec(self) -> int:
+        return self.sec * _S + self.nanosec  # type: ignore[attr-defined]
+
+    def to_sec(self) -> float:
+        return self.to_nsec() / 1e9
+
+    def is_zero(self) -> bool:
+        return self.to_nsec() == 0
+
+    def __lt__(self, other: Any) -> bool:
+        return self.to_nsec() < other.to_nsec()
+
+    def __le__(self, other: Any) -> bool:
+        return self.to_nsec() <= other.to_nsec()
+
+    def __gt__(self, other: Any) -> bool:
+        return self.to_nsec() > other.to_nsec()
+
+    def __ge__(self, other: Any) -> bool:
+        return self.to_nsec() >= other.to_nsec()
+
+    def __eq__(self, other: Any) -> bool:
+        return hasattr(other, "to_nsec") and self.to_nsec() == other.to_nsec()
+
+    def __hash__(self) -> int:
+        return hash(self.to_nsec())
+
+    def __bool__(self) -> bool:
+        return not self.is_zero()
+
+
+class Duration(_Arithmetic, _DurationMessage):
+    __slots__ = ()
+
+    def __init__(self, secs: Any = 0, nsecs: int = 0) -> None:
+        seconds, nanos = _split(secs, nsecs)
+        _DurationMessage.__init__(self, sec=seconds, nanosec=nanos)
+
+    @property
+    def secs(self) -> int:
+        return self.sec
+
+    @property
+    def nsecs(self) -> int:
+        return self.nanosec
+
+    @classmethod
+    def from_sec(cls, seconds: float) -> Duration:
+        return cls(float(seconds))
+
+    def __add__(self, other: Any) -> Any:
+        if isinstance(other, Time):
+            return other + self
+        if isinstance(other, Duration):
+            return Duration(0, self.to_nsec() + other.to_nsec())
+        return NotImplemented
+
+    def __sub__(self, other: Any) -> Any:
+        if isinstance(other, Duration):
+            return Duration(0, self.to_nsec() - other.to_nsec())
+        return NotImplemented
+
+    def __neg__(self) -> Duration:
+        return Duration(0, -self.to_nsec())
+
+    def __mul__(self, factor: float) -> Duration:
+        return Duration(0, int(self.to_nsec() * factor))
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other: Any) -> Any:
+        if isinstance(other, Duration):
+            return self.to_nsec() / other.to_nsec()
+        return Duration(0, int(self.to_nsec() / other))
+
+    def __repr__(self) -> str:
+        return f"rospy.Duration[{self.to_nsec()}]"
+
+
+class Time(_Arithmetic, _TimeMessage):
+    __slots__ = ()
+
+    def __init__(self, secs: Any = 0, nsecs: int = 0) -> None:
+        seconds, nanos = _split(secs, nsecs)
+        if seconds < 0:
+            raise TypeError("time values must be positive")
+        _TimeMessage.__init__(self, sec=seconds, nanosec=nanos)
+
+    @classmethod
+    def from_sec(cls, seconds: float) -> Time:
+        return cls(float(seconds))
+
+    @classmethod
+    def now(cls) -> Time:
+        from rospy import get_rostime
+
+        return get_rostime()
+
+    def __add__(self, other: Any) -> Any:
+        if isinstance(other, Duration):
+            return Time(0, self.to_nsec() + other.to_nsec())
+        return NotImplemented
+
+    __radd__ = __add__
+
+    def __sub__(self, other: Any) -> Any:
+        if isinstance(other, Time):
+            return Duration(0, self.to_nsec() - other.to_nsec())
+        if isinstance(other, Duration):
+            return Time(0, self.to_nsec() - other.to_nsec())
+        return NotImplemented
+
+    def __repr__(self) -> str:
+        return f"rospy.Time[{self.to_nsec()}]"
