@@ -17,6 +17,7 @@ import importlib.abc
 import importlib.machinery
 import os
 import sys
+import threading
 import types
 from collections.abc import Sequence
 from typing import Any
@@ -30,6 +31,7 @@ CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 class InterfaceFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
     def __init__(self) -> None:
         self._packages: set[str] | None = None
+        self._busy = threading.local()  # finding imports modules too: those are not ours
 
     # --- finding ------------------------------------------------------------------------------
     def find_spec(self, fullname: str, path: Sequence[str] | None = None,
@@ -39,10 +41,14 @@ class InterfaceFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
             if rest:
                 return None  # submodules come from the package's own __path__
             return importlib.machinery.PathFinder.find_spec(fullname, [NODE_APIS])
-        if rest and rest not in _KINDS:
+        if rest and rest not in _KINDS or getattr(self._busy, "on", False):
             return None
-        if not self._is_interface_package(top):
-            return None
+        self._busy.on = True
+        try:
+            if not self._is_interface_package(top):
+                return None
+        finally:
+            self._busy.on = False
         spec = importlib.machinery.ModuleSpec(fullname, self, is_package=not rest)
         if not rest:
             spec.submodule_search_locations = []
@@ -73,16 +79,26 @@ class InterfaceFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
 
 def _lazy_types(package: str, kind: str) -> Any:
     def get(name: str) -> Any:
-        if name.startswith("__"):
-            raise AttributeError(name)
+        # Only what looks like a type name (CamelCase) is looked up; the rest (dunders,
+        # getattr(module, "X", default) probes) is a plain AttributeError.
+        if not (name[:1].isupper() and any(c.islower() for c in name)):
+            raise AttributeError(f"module '{package}.{kind}' has no attribute '{name}'")
         from launcher.bus.types import UnknownType
         from launcher.compat import rosidl
 
         type_name = f"{package}/{kind}/{name}"
+        half = next((h for h in ("Request", "Response") if kind == "srv" and name.endswith(h)
+                     and len(name) > len(h)), "")
         try:
-            cls = rosidl.service_class(type_name) if kind == "srv" else \
-                rosidl.message_class(type_name)
+            if half:  # ROS 1's TriggerRequest, and Trigger_Request
+                service = rosidl.service_class(type_name[:-len(half)].rstrip("_"))
+                cls = getattr(service, half)
+            else:
+                cls = rosidl.service_class(type_name) if kind == "srv" else \
+                    rosidl.message_class(type_name)
         except UnknownType:
+            # ImportError, not AttributeError: `from pkg.msg import Twst` shows this text
+            # (Python replaces an AttributeError's with its own "cannot import name")
             raise ImportError(_unknown(package, kind, name),
                               name=f"{package}.{kind}") from None
         setattr(sys.modules[f"{package}.{kind}"], name, cls)

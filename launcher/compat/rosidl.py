@@ -70,26 +70,26 @@ class Message:
     """What every generated class shares; the class attributes are set per type."""
 
     __slots__ = ()
-    _type: str = ""
-    _fields: tuple[str, ...] = ()
-    _defaults: tuple[Callable[[], Any], ...] = ()
-    _fields_and_field_types: dict[str, str] = {}
-    _needs_store_copy = False
+    _TYPE: str = ""
+    _FIELDS: tuple[str, ...] = ()
+    _DEFAULTS: tuple[Callable[[], Any], ...] = ()
+    _FIELD_TYPES: dict[str, str] = {}
+    _NEEDS_STORE_COPY = False
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
-        if len(args) > len(self._fields):
-            raise TypeError(f"{type(self).__name__}() takes at most {len(self._fields)} "
+        if len(args) > len(self._FIELDS):
+            raise TypeError(f"{type(self).__name__}() takes at most {len(self._FIELDS)} "
                             f"positional arguments ({len(args)} given)")
-        unknown = sorted(k for k in kwargs if k not in self._fields)
+        unknown = sorted(k for k in kwargs if k not in self._FIELDS)
         if unknown:
             raise AssertionError("Invalid arguments passed to constructor: "
                                  + ", ".join(unknown))
-        values = dict(zip(self._fields, args, strict=False))
+        values = dict(zip(self._FIELDS, args, strict=False))
         for name in kwargs:
             if name in values:
                 raise TypeError(f"{type(self).__name__}() got multiple values for '{name}'")
         values.update(kwargs)
-        for name, default in zip(self._fields, self._defaults, strict=True):
+        for name, default in zip(self._FIELDS, self._DEFAULTS, strict=True):
             if name in values:
                 setattr(self, name, values[name])
             else:
@@ -97,17 +97,17 @@ class Message:
 
     @classmethod
     def get_fields_and_field_types(cls) -> dict[str, str]:
-        return dict(cls._fields_and_field_types)
+        return dict(cls._FIELD_TYPES)
 
     def __repr__(self) -> str:
         cls = type(self)
-        parts = [f"{name}={_repr(getattr(self, name))}" for name in self._fields]
+        parts = [f"{name}={_repr(getattr(self, name))}" for name in self._FIELDS]
         return f"{cls.__module__}.{cls.__qualname__}({', '.join(parts)})"
 
     def __eq__(self, other: object) -> bool:
         if type(other) is not type(self):
             return False
-        return all(_equal(getattr(self, n), getattr(other, n)) for n in self._fields)
+        return all(_equal(getattr(self, n), getattr(other, n)) for n in self._FIELDS)
 
     __hash__ = None  # type: ignore[assignment]  # mutable, as rclpy's messages are
 
@@ -180,7 +180,7 @@ def _checker(field: str, kind: Nodetype, detail: Any) -> Callable[[Any], Any]:
         short = detail.rsplit("/", 1)[-1]
 
         def nested(value: Any) -> Any:
-            if not (isinstance(value, Message) and value._type == detail):
+            if not (isinstance(value, Message) and detail == value._TYPE):
                 raise AssertionError(f"The '{field}' field must be a sub message of type "
                                      f"'{short}'")
             return value
@@ -311,12 +311,12 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
                                                           else ()),
         "__module__": module or f"{package}.{kind}",
         "__qualname__": qualname or short,
-        "_type": name,
-        "_fields": tuple(f for f, _ in fields),
-        "_defaults": tuple(_default(k, d) for _, (k, d) in fields),
-        "_fields_and_field_types": {f: _idl(k, d) for f, (k, d) in fields},
+        "_TYPE": name,
+        "_FIELDS": tuple(f for f, _ in fields),
+        "_DEFAULTS": tuple(_default(k, d) for _, (k, d) in fields),
+        "_FIELD_TYPES": {f: _idl(k, d) for f, (k, d) in fields},
         "SLOT_TYPES": tuple(Slot(_idl(k, d)) for _, (k, d) in fields),
-        "_needs_store_copy": _has_numeric_sequence(name, set()),
+        "_NEEDS_STORE_COPY": _has_numeric_sequence(name, set()),
     }
     for field, (k, d) in fields:
         namespace[field] = _property(field, _checker(field, k, d))
@@ -369,7 +369,7 @@ def service_class(type_name: str) -> type:
     package, kind, short = name.split("/")
     module = f"{package}.{kind}"
     cls = type(short, (), {
-        "__module__": module, "_type": name,
+        "__module__": module, "_TYPE": name,
         "Request": message_class(request, module, f"{short}_Request"),
         "Response": message_class(response, module, f"{short}_Response"),
     })
@@ -381,7 +381,7 @@ def type_name_of(value: Any) -> str:
     """`pkg/msg/Name` (or `pkg/srv/Name`) of a class from here, or a type name given as text."""
     if isinstance(value, str):
         return normalize(value)
-    name = getattr(value, "_type", None)
+    name = getattr(value, "_TYPE", None)
     if not isinstance(name, str) or "/" not in name:
         raise TypeError(f"expected a message or service class, got {value!r}")
     return name
@@ -407,15 +407,15 @@ def _has_numeric_sequence(name: str, seen: set[str]) -> bool:
 # --- to and from the type store's messages --------------------------------------------------
 def to_store(message: Any) -> Any:
     """What the type store serialises: the message itself, unless it holds array.arrays."""
-    if not getattr(message, "_needs_store_copy", False):
+    if not getattr(message, "_NEEDS_STORE_COPY", False):
         return message
     return _copy_out(message)
 
 
 def _copy_out(value: Any) -> Any:
     if isinstance(value, Message):
-        store_class = registry().message_class(value._type)
-        return store_class(*(_copy_out(getattr(value, f)) for f in value._fields))
+        store_class = registry().message_class(value._TYPE)
+        return store_class(*(_copy_out(getattr(value, f)) for f in value._FIELDS))
     if isinstance(value, array.array):
         import numpy
 
@@ -457,7 +457,7 @@ def _plan(cls: Any) -> list[tuple[str, Any]]:
     if found is not None:
         return found
     plan: list[tuple[str, Any]] = []
-    for field, (kind, detail) in registry().fields(cls._type):
+    for field, (kind, detail) in registry().fields(cls._TYPE):
         if kind == Nodetype.NAME:
             plan.append((field, message_class(detail)))
         elif kind in (Nodetype.SEQUENCE, Nodetype.ARRAY) and detail[0][0] == Nodetype.NAME:

@@ -52,7 +52,7 @@ def get_available_rmw_implementations() -> set[str]:
 
 
 def check_for_type_support(message_type: Any) -> None:
-    if not hasattr(message_type, "_type"):
+    if not hasattr(message_type, "_TYPE"):
         from rclpy.exceptions import NoTypeSupportImportedException
 
         raise NoTypeSupportImportedException(f"{message_type!r} is not a message type")

@@ -392,7 +392,7 @@ class Publisher:
     def __init__(self, name: str, data_class: Any, subscriber_listener: Any = None,
                  tcp_nodelay: bool = False, latch: bool = False, headers: Any = None,
                  queue_size: int | None = None) -> None:
-        if not isinstance(data_class, type) or not hasattr(data_class, "_type"):
+        if not isinstance(data_class, type) or not hasattr(data_class, "_TYPE"):
             raise ValueError(f"data_class [{data_class}] is not a message data class")
         self.data_class, self.type = data_class, rosidl.type_name_of(data_class)
         self._qos = QoS(depth=1, transient_local=True) if latch else \
@@ -432,7 +432,7 @@ class Subscriber:
     def __init__(self, name: str, data_class: Any, callback: Callable[..., Any] | None = None,
                  callback_args: Any = None, queue_size: int | None = None,
                  buff_size: int = 65536, tcp_nodelay: bool = False) -> None:
-        if not isinstance(data_class, type) or not hasattr(data_class, "_type"):
+        if not isinstance(data_class, type) or not hasattr(data_class, "_TYPE"):
             raise ValueError(f"data_class [{data_class}] is not a message data class")
         self.data_class, self.type = data_class, rosidl.type_name_of(data_class)
         self.callback, self.callback_args = callback, callback_args

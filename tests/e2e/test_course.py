@@ -1,0 +1,130 @@
+"""The course's ROS 1 workflow on the demo stack: its publisher.py (rospy), copied verbatim
+from the course text, runs as a package executable and drives the robot; its `/gazebo/*`
+commands work with the course's own message text through gazebo_ros's interface node.
+Real sim, bridge, robot_state_publisher, create and nodes on a real Zenoh router."""
+
+from __future__ import annotations
+
+import re
+import signal
+import time
+
+import pytest
+
+from tests.conftest import REPO
+
+COURSE = REPO.parent / "shared" / "seeds" / "000_a847380181b3b659.txt"
+LAUNCH = REPO / "launch_files" / "robot.launch.yaml"
+
+
+def course_text() -> str:
+    return COURSE.read_text(encoding="utf-8")
+
+
+def course_publisher() -> str:
+    """publisher.py as the course prints it, from its #! line to the end of its code."""
+    text = course_text()
+    start = text.index("#!/usr/bin/env python")
+    end = text.index("It was shown the commonly used plugins")
+    return text[start:end].rstrip() + "\n"
+
+
+def course_set_model_state() -> str:
+    """The message text of the course's `rostopic pub /gazebo/set_model_state …`."""
+    found = re.search(r'rostopic pub /gazebo/set_model_state gazebo_msgs/ModelState "(.*?)"',
+                      course_text(), re.S)
+    assert found is not None
+    return found.group(1)
+
+
+@pytest.fixture
+def course(ws):
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = f"{REPO / 'packages'}:{ws.root / 'ws'}"
+    script = ws.write("ws/course_nodes/scripts/publisher.py", course_publisher())
+    script.chmod(0o755)
+    ws.write("ws/course_nodes/package.xml", """
+    <?xml version="1.0"?>
+    <package format="2"><name>course_nodes</name><version>0.0.1</version>
+    <description>The course's nodes</description><maintainer email="a@b.c">a</maintainer>
+    <license>MIT</license></package>
+    """)
+    ws.write("course.launch.yaml", f"""
+    launch:
+      - include: {{file: "{LAUNCH}", arg: [{{name: drive, value: "false"}}]}}
+      - node: {{pkg: gazebo_ros, exec: gazebo_ros_api, output: screen}}
+    """)
+    proc = ws.start("launch", "course.launch.yaml", output="launch.out")
+    ws.wait_for_output("spawned 'my_robot' into world 'robot'", 90, "launch.out")
+    ws.wait_for_output("serving /gazebo/* for world 'robot'", 60, "launch.out")
+    yield ws
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(60) == 130
+
+
+def test_the_course_publisher_drives_the_robot_and_prints_x_and_y(course):
+    node = course.start("run", "course_nodes", "publisher.py", output="publisher.out")
+    try:
+        text = course.wait_for_output("X: 1.", 90, "publisher.out")  # driven past a metre
+        points = [(float(x), float(y)) for x, y in
+                  re.findall(r"X: (-?[\d.e-]+), Y: (-?[\d.e-]+)", text)]
+        assert len(points) > 10 and points[-1][0] > points[0][0] + 0.5
+        assert points[-1][1] > points[0][1]  # angular.z 0.2: it turns left
+    finally:
+        node.send_signal(signal.SIGINT)
+        assert node.wait(20) == 0, course.output("publisher.out")  # ROSInterruptException
+
+
+def call(ws, service: str, type_name: str, request: str = "{}") -> str:
+    done = ws.run("service", "call", service, type_name, request)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def field(text: str, name: str) -> float:
+    return float(re.search(rf"{name}: (-?[\d.e+-]+)", text).group(1))
+
+
+def test_the_course_gazebo_commands_with_the_course_text(course):
+    box = ("<sdf version='1.6'><model name='unit_box'><link name='link'><inertial><mass>1"
+           "</mass></inertial><collision name='c'><geometry><box><size>1 1 1</size></box>"
+           "</geometry></collision><visual name='v'><geometry><box><size>1 1 1</size></box>"
+           "</geometry></visual></link></model></sdf>")
+    spawned = call(course, "/gazebo/spawn_sdf_model", "gazebo_msgs/srv/SpawnModel",
+                   f'{{model_name: unit_box, model_xml: "{box}", initial_pose: {{position: '
+                   f'{{x: 2.0, y: -2.0, z: 0.5}}}}}}')
+    assert "success: true" in spawned, spawned
+    call(course, "/gazebo/pause_physics", "std_srvs/srv/Empty")
+    sent = course.run("topic", "pub", "--once", "/gazebo/set_model_state",
+                      "gazebo_msgs/ModelState", course_set_model_state())
+    assert sent.returncode == 0, sent.stderr
+    deadline = time.monotonic() + 10
+    while True:
+        state = call(course, "/gazebo/get_model_state", "gazebo_msgs/srv/GetModelState",
+                     "{model_name: unit_box}")
+        if field(state, "x") == pytest.approx(10.0) or time.monotonic() > deadline:
+            break
+        time.sleep(0.2)
+    assert (field(state, "x"), field(state, "y"), field(state, "z")) == \
+        pytest.approx((10.0, 20.0, 1.0))  # paused: it stays where the course put it
+    physics = call(course, "/gazebo/get_physics_properties",
+                   "gazebo_msgs/srv/GetPhysicsProperties")
+    assert "pause: true" in physics and field(physics, "time_step") == 0.001
+    call(course, "/gazebo/reset_world", "std_srvs/srv/Empty")  # the course's rosservice call
+    state = call(course, "/gazebo/get_model_state", "gazebo_msgs/srv/GetModelState",
+                 "{model_name: unit_box}")
+    assert (field(state, "x"), field(state, "y")) == pytest.approx((2.0, -2.0))
+    physics = call(course, "/gazebo/get_physics_properties",
+                   "gazebo_msgs/srv/GetPhysicsProperties")
+    assert "pause: true" in physics  # a reset keeps a paused world paused, as Gazebo does
+    call(course, "/gazebo/unpause_physics", "std_srvs/srv/Empty")
+    states = course.run("topic", "echo", "/gazebo/model_states", "--once", "--field", "name",
+                        timeout=30)
+    assert "- unit_box" in states.stdout and "- my_robot" in states.stdout, states.stderr
+    deleted = call(course, "/gazebo/delete_model", "gazebo_msgs/srv/DeleteModel",
+                   "{model_name: unit_box}")
+    assert "success: true" in deleted
+    world = call(course, "/gazebo/get_world_properties", "gazebo_msgs/srv/GetWorldProperties")
+    assert "my_robot" in world and "unit_box" not in world
+    missing = call(course, "/gazebo/get_model_state", "gazebo_msgs/srv/GetModelState",
+                   "{model_name: unit_box}")
+    assert "success: false" in missing and "model [unit_box] does not exist" in missing

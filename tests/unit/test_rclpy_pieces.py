@@ -1,0 +1,92 @@
+"""The parts of launcher's rclpy that need no bus: time, durations, parameters, QoS, futures
+and logging, with rclpy's semantics (expectations from ros2/rclpy's sources)."""
+
+from __future__ import annotations
+
+import pytest
+
+from launcher.bus.qos import QoS
+from launcher.compat import finder
+
+finder.install()
+
+import rclpy.logging  # noqa: E402
+from rclpy.duration import Duration  # noqa: E402
+from rclpy.parameter import Parameter  # noqa: E402
+from rclpy.qos import (  # noqa: E402
+    DurabilityPolicy,
+    HistoryPolicy,
+    QoSProfile,
+    ReliabilityPolicy,
+    qos_profile_sensor_data,
+    to_launcher,
+)
+from rclpy.task import Future, Task  # noqa: E402
+from rclpy.time import Time  # noqa: E402
+
+
+def test_time_and_duration_arithmetic_and_messages():
+    start = Time(seconds=1, nanoseconds=500)
+    later = start + Duration(seconds=0.5)
+    assert later.nanoseconds == 1_500_000_500
+    assert later - start == Duration(nanoseconds=500_000_000)
+    assert later > start and later.seconds_nanoseconds() == (1, 500_000_500)
+    message = later.to_msg()
+    assert (message.sec, message.nanosec) == (1, 500_000_500)
+    assert Time.from_msg(message).nanoseconds == later.nanoseconds
+    with pytest.raises(ValueError, match="Seconds value must not be negative"):
+        Time(seconds=-1)
+    with pytest.raises(TypeError):
+        _ = start < 3
+
+
+def test_parameters_type_themselves_and_refuse_a_mismatch():
+    assert Parameter("a", value=3).type_ == Parameter.Type.INTEGER
+    assert Parameter("b", value=[1.0, 2.0]).type_ == Parameter.Type.DOUBLE_ARRAY
+    assert Parameter("c", Parameter.Type.STRING, "x").value == "x"
+    with pytest.raises(ValueError, match="do not agree"):
+        Parameter("d", Parameter.Type.INTEGER, "x")
+    message = Parameter("e", value=True).to_parameter_msg()
+    assert message.value.type == 1 and message.value.bool_value is True
+    assert Parameter.from_parameter_msg(message).value is True
+
+
+def test_qos_profiles_map_onto_launchers_qos():
+    assert to_launcher(7) == QoS(depth=7)
+    assert to_launcher(qos_profile_sensor_data) == QoS(depth=5, reliable=False)
+    latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL,
+                         reliability=ReliabilityPolicy.RELIABLE)
+    assert to_launcher(latched) == QoS(depth=1, transient_local=True)
+    assert to_launcher(QoSProfile(history=HistoryPolicy.KEEP_ALL)).depth == 1000
+    with pytest.raises(Exception, match="History and/or depth settings are required"):
+        QoSProfile()
+    with pytest.raises(TypeError, match="Expected QoSProfile or int"):
+        to_launcher("10")
+
+
+def test_futures_and_tasks_run_coroutines_to_the_end():
+    future = Future()
+    seen = []
+    future.add_done_callback(lambda f: seen.append(f.result()))
+
+    async def wait() -> int:
+        return await future + 1
+    task = Task(wait)
+    task()
+    assert not task.done()
+    future.set_result(41)
+    assert seen == [41] and task.done() and task.result() == 42
+
+
+def test_logging_layout_and_levels(capsys):
+    logger = rclpy.logging.get_logger("talker")
+    logger.info("hello")
+    logger.debug("hidden")
+    logger.set_level(rclpy.logging.LoggingSeverity.DEBUG)
+    logger.get_child("part").debug("shown")
+    for _ in range(2):
+        logger.warning("once", once=True)
+    out, err = capsys.readouterr()
+    assert out.startswith("[INFO] [") and out.splitlines()[0].endswith("] [talker]: hello")
+    assert "hidden" not in out and "[talker.part]: shown" in out
+    assert err.count("once") == 1 and err.startswith("[WARN]")
