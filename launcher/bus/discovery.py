@@ -26,7 +26,6 @@ import fcntl
 import os
 import re
 import socket
-import subprocess
 import sys
 import time
 from collections.abc import Iterator, Mapping
@@ -223,6 +222,8 @@ def start(environ: Mapping[str, str] | None = None) -> None:
             # (lineage.py). It inherits the lock and lets it go when it listens.
             argv = [sys.executable, "-m", "launcher.bus.router", "--lock-fd",
                     str(lock.fileno()), "--linger", str(linger(env))]
+            import subprocess  # only to start a router (~20 ms of a node's start otherwise)
+
             subprocess.run(["/bin/sh", "-c", '"$@" &', "launcher-router", *argv],
                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=log,
                            env=lineage.detached(env), pass_fds=(lock.fileno(),),

@@ -97,14 +97,16 @@ class Node:
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
                             qos: QoS | int = 10, raw: bool = False,
                             inline: bool = False, remote_only: bool = False,
-                            space: keys.Space | None = None) -> Subscription:
+                            space: keys.Space | None = None,
+                            make: Callable[[str, list[Any]], Any] | None = None) -> Subscription:
         """`raw=True` hands the callback the CDR bytes instead of a message. `inline=True`
         runs the callback on Zenoh's delivery thread instead of the executor: no hand-over
         between threads (it halves the CPU of a 1 kHz stream), but the callback must be
         thread-safe against the node's other callbacks and must not block. `remote_only=True`
-        ignores what this process publishes (a two-way bridge must not hear itself)."""
+        ignores what this process publishes (a two-way bridge must not hear itself). `make`
+        builds messages of other classes from field values (see TypeRegistry.deserialize)."""
         return self._host.adopt(Subscription(self._host, type_name, self.resolve(topic), callback,
-                                             qos_of(qos), raw, inline, remote_only, space))
+                                             qos_of(qos), raw, inline, remote_only, space, make))
 
     def create_service(self, type_name: str, name: str,
                        callback: Callable[[Any, Any], Any],

@@ -28,11 +28,12 @@ from launcher.bus.types import registry
 class Subscription:
     def __init__(self, host: Host, type_name: str, topic: str, callback: Callable[[Any], None],
                  qos: QoS, raw: bool = False, inline: bool = False,
-                 remote_only: bool = False, space: keys.Space | None = None) -> None:
+                 remote_only: bool = False, space: keys.Space | None = None,
+                 make: Callable[[str, list[Any]], Any] | None = None) -> None:
         types = registry()
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host, self._callback = topic, qos, host, callback
-        self._raw, self._inline = raw, inline
+        self._raw, self._inline, self._make = raw, inline, make
         # (before declaring: a transient local subscriber gets history samples at once)
         self._pending: deque[bytes] = deque(maxlen=max(qos.depth, 1))
         self._lock = threading.Lock()
@@ -87,7 +88,7 @@ class Subscription:
             self._callback(payload)
             return
         try:
-            message = registry().deserialize(payload, self.type_name)
+            message = registry().deserialize(payload, self.type_name, self._make)
         except Exception as exc:  # malformed payload: dropped, said once per topic
             if not self._warned:
                 self._warned = True

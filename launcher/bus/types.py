@@ -75,6 +75,8 @@ class TypeRegistry:
         self._hashes: dict[str, str] = {}
         self.services: dict[str, dict[str, Any]] = {}  # service -> its hashing definitions
         self._index: Any = None
+        self._codec: Any = None
+        self._numeric_fields: dict[str, list[tuple[int, str]]] = {}
 
     # --- definitions ------------------------------------------------------------------------
     def _definitions(self) -> dict[str, Any]:
@@ -168,11 +170,53 @@ class TypeRegistry:
     def message_class(self, name: str) -> type:
         return self.store.types[self.ensure(name)]
 
-    def serialize(self, message: Any, name: str) -> bytes:
-        return bytes(self.store.serialize_cdr(message, self.ensure(name)))
+    @property
+    def codec(self) -> Any:
+        if self._codec is None:
+            from launcher.bus.cdr import Codec
 
-    def deserialize(self, data: bytes | memoryview, name: str) -> Any:
-        return self.store.deserialize_cdr(data, self.ensure(name))
+            self._codec = Codec(self.fields)
+        return self._codec
+
+    def serialize(self, message: Any, name: str) -> bytes:
+        """CDR of a message (any object with the type's fields as attributes)."""
+        from launcher.bus.cdr import Unsupported
+
+        name = self.ensure(name)
+        try:
+            return self.codec.serialize(message, name)
+        except Unsupported:
+            return bytes(self.store.serialize_cdr(message, name))
+
+    def deserialize(self, data: bytes | memoryview, name: str,
+                    make: Any = None) -> Any:
+        """The message in a CDR payload: rosbags' dataclass (numeric arrays as numpy arrays),
+        or what `make(type, values)` builds from each type's field values."""
+        from launcher.bus.cdr import CdrError, Unsupported
+
+        name = self.ensure(name)
+        try:
+            return self.codec.deserialize(data, name, make or self._store_message)
+        except Unsupported:
+            return self.store.deserialize_cdr(data, name)
+        except CdrError as exc:
+            raise ValueError(f"malformed {name}: {exc}") from None
+
+    def _store_message(self, name: str, values: list[Any]) -> Any:
+        arrays = self._numeric_fields.get(name)
+        if arrays is None:
+            from launcher.bus.cdr import PRIMS
+
+            arrays = [(i, detail[4]) for i, (_f, kind, detail) in
+                      enumerate(self.codec.plan(name)) if kind == PRIMS]
+            self._numeric_fields[name] = arrays
+        if arrays:
+            import numpy  # rosbags' classes hold numeric arrays as numpy arrays
+
+            for index, base in arrays:
+                dtype = {"byte": "uint8", "char": "uint8"}.get(base, base)
+                values[index] = numpy.array(values[index], dtype=dtype)
+        return self.store.types[name](*values)
 
     def type_hash(self, name: str) -> str:
         name = self.ensure(name)

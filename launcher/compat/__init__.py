@@ -10,10 +10,13 @@ paths and the working folder).
 
 from __future__ import annotations
 
-import importlib.util
 import os
 import sys
-from collections.abc import MutableMapping
+
+TYPE_CHECKING = False  # (typing.TYPE_CHECKING without importing typing)
+
+if TYPE_CHECKING:  # imported by every node's start (the finder): nothing more than needed
+    from collections.abc import MutableMapping
 
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz
@@ -22,6 +25,8 @@ SITE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "site")  # node 
 
 
 def _real_installed(name: str) -> bool:
+    import importlib.util
+
     if any(os.path.abspath(p) == SHIMS for p in sys.path):
         return False
     return importlib.util.find_spec(name) is not None

@@ -13,14 +13,17 @@ hooks/setup.sh), because message imports often come before `import rclpy`.
 
 from __future__ import annotations
 
-import importlib.abc
 import importlib.machinery
 import os
 import sys
 import threading
-import types
-from collections.abc import Sequence
-from typing import Any
+
+TYPE_CHECKING = False  # (typing.TYPE_CHECKING without importing typing)
+
+if TYPE_CHECKING:  # (typing's names are not imported at run time: this runs at every start)
+    import types
+    from collections.abc import Sequence
+    from typing import Any
 
 NODE_APIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "nodes")
 _API_NAMES = ("rclpy", "rospy")
@@ -28,7 +31,10 @@ _KINDS = ("msg", "srv")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 
 
-class InterfaceFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+class InterfaceFinder:
+    """A meta path finder and the loader of what it finds (the importlib.abc protocols,
+    without importing importlib.abc: this runs at every interpreter start)."""
+
     def __init__(self) -> None:
         self._packages: set[str] | None = None
         self._busy = threading.local()  # finding imports modules too: those are not ours
@@ -55,8 +61,8 @@ class InterfaceFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         return spec
 
     def _is_interface_package(self, name: str) -> bool:
-        if not name.isidentifier() or name.startswith("_"):
-            return False
+        if not name.isidentifier() or name.startswith("_") or name in sys.stdlib_module_names:
+            return False  # (Windows-only modules that Linux code tries, like msvcrt)
         if self._packages is None:
             self._packages = _interface_packages()
         if name in self._packages:

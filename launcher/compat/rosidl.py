@@ -316,7 +316,7 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
         "_DEFAULTS": tuple(_default(k, d) for _, (k, d) in fields),
         "_FIELD_TYPES": {f: _idl(k, d) for f, (k, d) in fields},
         "SLOT_TYPES": tuple(Slot(_idl(k, d)) for _, (k, d) in fields),
-        "_NEEDS_STORE_COPY": _has_numeric_sequence(name, set()),
+        "_NEEDS_STORE_COPY": _has_numeric_sequence(name, set()) and _left_to_rosbags(name),
     }
     for field, (k, d) in fields:
         namespace[field] = _property(field, _checker(field, k, d))
@@ -387,6 +387,16 @@ def type_name_of(value: Any) -> str:
     return name
 
 
+def _left_to_rosbags(name: str) -> bool:
+    from launcher.bus.cdr import Unsupported
+
+    try:
+        registry().codec.plan(name)
+    except Unsupported:
+        return True
+    return False
+
+
 def _has_numeric_sequence(name: str, seen: set[str]) -> bool:
     """Whether the type's tree holds an `array.array` (which the store cannot write)."""
     if name in seen:
@@ -406,7 +416,8 @@ def _has_numeric_sequence(name: str, seen: set[str]) -> bool:
 
 # --- to and from the type store's messages --------------------------------------------------
 def to_store(message: Any) -> Any:
-    """What the type store serialises: the message itself, unless it holds array.arrays."""
+    """What the type store serialises: the message itself (launcher's CDR writer takes
+    array.arrays), unless the type is one left to rosbags' writer (wstring fields)."""
     if not getattr(message, "_NEEDS_STORE_COPY", False):
         return message
     return _copy_out(message)
@@ -423,6 +434,36 @@ def _copy_out(value: Any) -> Any:
     if isinstance(value, list):
         return [_copy_out(v) for v in value]
     return value
+
+
+def make(type_name: str, values: list[Any]) -> Any:
+    """A message from its field values as the CDR reader gives them (registry().deserialize's
+    `make`): numeric sequences stay array.arrays, fixed numeric arrays become numpy arrays."""
+    cls = _classes.get(type_name) or message_class(type_name)
+    message = object.__new__(cls)
+    fixed = _fixed_arrays(cls)
+    for index, (name, value) in enumerate(zip(cls._FIELDS, values, strict=True)):
+        if index in fixed:
+            import numpy
+
+            value = numpy.array(value, dtype=fixed[index])
+        object.__setattr__(message, "_" + name, value)
+    return message
+
+
+_fixed: dict[type, dict[int, str]] = {}
+
+
+def _fixed_arrays(cls: Any) -> dict[int, str]:
+    found = _fixed.get(cls)
+    if found is None:
+        found = {}
+        for index, (_, (kind, detail)) in enumerate(registry().fields(cls._TYPE)):
+            if kind == Nodetype.ARRAY and detail[0][0] == Nodetype.BASE \
+                    and detail[0][1][0] in _TYPECODES:
+                found[index] = _DTYPES.get(detail[0][1][0], detail[0][1][0])
+        _fixed[cls] = found
+    return found
 
 
 def from_store(value: Any, type_name: str) -> Any:

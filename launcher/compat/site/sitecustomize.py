@@ -3,7 +3,7 @@ PYTHONPATH): installs launcher's fallback finder for rclpy, rospy and message pa
 launcher/compat/finder.py), then runs the `sitecustomize` this one stands in front of, if the
 interpreter has one. Without launcher importable (another interpreter), it does nothing."""
 
-import importlib.util
+import importlib.machinery
 import os
 import sys
 
@@ -21,7 +21,9 @@ def _chain() -> None:
     spec = importlib.machinery.PathFinder.find_spec("sitecustomize", rest)
     if spec is None or spec.loader is None:
         return
-    module = importlib.util.module_from_spec(spec)
+    from importlib.util import module_from_spec  # (only here: ~7 ms of every start)
+
+    module = module_from_spec(spec)
     sys.modules["sitecustomize"] = module
     spec.loader.exec_module(module)
 

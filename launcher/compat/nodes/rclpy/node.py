@@ -174,15 +174,10 @@ class Node:
         self._check_alive()
         type_name = rosidl.type_name_of(msg_type)
         run = self._grouped(callback_group, callback)
-        if raw:
-            deliver = run
-        else:
+        if not raw:
             rosidl.message_class(type_name)  # made now, not on the first message
-
-            def deliver(message: Any) -> Any:
-                return run(rosidl.from_store(message, type_name))
-        bus = self._bus.create_subscription(type_name, topic, deliver, to_launcher(qos_profile),
-                                            raw=raw)
+        bus = self._bus.create_subscription(type_name, topic, run, to_launcher(qos_profile),
+                                            raw=raw, make=rosidl.make)
         subscription = Subscription(bus, msg_type, topic, callback, callback_group,
                                     qos_profile, raw, event_callbacks)
         self._entities.append(subscription)

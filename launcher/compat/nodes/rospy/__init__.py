@@ -451,8 +451,7 @@ class Subscriber:
     def _attach(self, node: Any) -> None:
         type_name = self.type
 
-        def deliver(message: Any) -> None:
-            converted = rosidl.from_store(message, type_name)
+        def deliver(converted: Any) -> None:
             for callback, extra in list(self._callbacks):
                 if extra is None:
                     callback(converted)
@@ -460,7 +459,8 @@ class Subscriber:
                     callback(converted, extra)
         # latched publishers' last message reaches late subscribers, as in ROS 1
         qos = QoS(depth=self._qos.depth, transient_local=True)
-        self._bus = node.create_subscription(type_name, self._given, deliver, qos)
+        self._bus = node.create_subscription(type_name, self._given, deliver, qos,
+                                             make=rosidl.make)
         self.name = self.resolved_name = self._bus.topic
 
     def get_num_connections(self) -> int:

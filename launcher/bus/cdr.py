@@ -1,0 +1,261 @@
+"""CDR (little-endian, XCDR1 as ROS 2 writes it) without code generation and without numpy.
+
+rosbags generates a serializer per type on first use and its generated code imports numpy:
+together ~0.1–0.2 s before a node's first message of each type. Here each type gets a small
+plan of its fields, made once, and messages are written and read by walking it, with the
+standard library's struct. Messages are any objects with the fields as attributes (rosbags'
+dataclasses, launcher's rclpy classes); reading builds them through a `make(type, values)`
+the caller gives, so each API gets its own classes without a copy. Numeric arrays are read as
+`array.array`s; the caller turns them into what its classes hold.
+
+Types with `wstring` fields are left to rosbags (TypeRegistry falls back to it).
+"""
+
+from __future__ import annotations
+
+import array
+import struct
+from collections.abc import Callable
+from typing import Any
+
+from rosbags.interfaces import Nodetype
+
+HEADER = b"\x00\x01\x00\x00"  # CDR, little-endian
+_FORMATS = {"bool": "?", "byte": "B", "char": "B", "int8": "b", "uint8": "B",
+            "int16": "h", "uint16": "H", "int32": "i", "uint32": "I", "int64": "q",
+            "uint64": "Q", "float32": "f", "float64": "d"}
+TYPECODES = {"byte": "B", "char": "B", "int8": "b", "uint8": "B", "int16": "h",
+             "uint16": "H", "int32": "i", "uint32": "I", "int64": "q", "uint64": "Q",
+             "float32": "f", "float64": "d"}
+_KINDS = {"f": "f", "d": "f", "b": "i", "h": "i", "i": "i", "q": "i", "B": "u", "H": "u",
+          "I": "u", "Q": "u", "?": "b"}
+_U32 = struct.Struct("<I")
+
+# plan ops: (field, kind, detail)
+PRIM, STRING, MSG, PRIMS, STRINGS, MSGS = range(6)
+
+
+class Unsupported(Exception):
+    """A type this codec leaves to rosbags (wstring)."""
+
+
+class CdrError(ValueError):
+    pass
+
+
+class Codec:
+    def __init__(self, fields_of: Callable[[str], list[tuple[str, Any]]]) -> None:
+        self._fields_of = fields_of
+        self._plans: dict[str, list[tuple[str, int, Any]]] = {}
+
+    def plan(self, name: str) -> list[tuple[str, int, Any]]:
+        found = self._plans.get(name)
+        if found is not None:
+            return found
+        ops: list[tuple[str, int, Any]] = []
+        for field, (kind, detail) in self._fields_of(name):
+            if kind == Nodetype.BASE:
+                ops.append((field, *_base(detail[0])))
+            elif kind == Nodetype.NAME:
+                ops.append((field, MSG, detail))
+            else:
+                (inner_kind, inner_detail), count = detail
+                fixed = count if kind == Nodetype.ARRAY else None
+                if inner_kind == Nodetype.NAME:
+                    ops.append((field, MSGS, (inner_detail, fixed)))
+                elif inner_detail[0] in ("string", "wstring"):
+                    if inner_detail[0] == "wstring":
+                        raise Unsupported(name)
+                    ops.append((field, STRINGS, fixed))
+                else:
+                    base = inner_detail[0]
+                    size = struct.calcsize(_FORMATS[base])
+                    code = TYPECODES.get(base, "")
+                    ops.append((field, PRIMS, (_FORMATS[base], size, fixed, code, base)))
+        self._plans[name] = ops
+        for _, kind, detail in ops:  # nested plans now: a wstring anywhere is found here
+            if kind == MSG:
+                self.plan(detail)
+            elif kind == MSGS:
+                self.plan(detail[0])
+        return ops
+
+    # --- writing ----------------------------------------------------------------------------
+    def serialize(self, message: Any, name: str) -> bytes:
+        out = bytearray(HEADER)
+        self._write(out, message, self.plan(name))
+        return bytes(out)
+
+    def _write(self, out: bytearray, message: Any, ops: list[tuple[str, int, Any]]) -> None:
+        for field, kind, detail in ops:
+            value = getattr(message, field)
+            if kind == PRIM:
+                fmt, size = detail
+                pad = -(len(out) - 4) % size
+                if pad:
+                    out += b"\x00" * pad
+                try:
+                    out += struct.pack("<" + fmt, value)
+                except struct.error as exc:
+                    raise CdrError(f"{field}: {exc} ({value!r})") from None
+            elif kind == STRING:
+                self._string(out, value)
+            elif kind == MSG:
+                self._write(out, value, self.plan(detail))
+            elif kind == PRIMS:
+                fmt, size, fixed, code, _ = detail
+                count = len(value)
+                if fixed is None:
+                    _align(out, 4)
+                    out += _U32.pack(count)
+                elif count != fixed:
+                    raise CdrError(f"{field}: expected {fixed} items, got {count}")
+                if count:
+                    _align(out, size)
+                    out += _packed(value, fmt, size, code, count)
+            elif kind == STRINGS:
+                if detail is None:
+                    _align(out, 4)
+                    out += _U32.pack(len(value))
+                elif len(value) != detail:
+                    raise CdrError(f"{field}: expected {detail} items, got {len(value)}")
+                for item in value:
+                    self._string(out, item)
+            else:  # MSGS
+                inner, fixed = detail
+                if fixed is None:
+                    _align(out, 4)
+                    out += _U32.pack(len(value))
+                elif len(value) != fixed:
+                    raise CdrError(f"{field}: expected {fixed} items, got {len(value)}")
+                inner_ops = self.plan(inner)
+                for item in value:
+                    self._write(out, item, inner_ops)
+
+    @staticmethod
+    def _string(out: bytearray, value: str) -> None:
+        data = value.encode()
+        _align(out, 4)
+        out += _U32.pack(len(data) + 1)
+        out += data
+        out += b"\x00"
+
+    # --- reading ----------------------------------------------------------------------------
+    def deserialize(self, data: bytes | memoryview, name: str,
+                    make: Callable[[str, list[Any]], Any]) -> Any:
+        view = memoryview(data)
+        if len(view) < 4:
+            raise CdrError("a CDR payload needs at least its 4-byte header")
+        if view[1] != 1:
+            raise CdrError("only little-endian CDR is read here")
+        message, _ = self._read(view[4:], 0, name, make)
+        return message
+
+    def _read(self, view: memoryview, pos: int, name: str,
+              make: Callable[[str, list[Any]], Any]) -> tuple[Any, int]:
+        values: list[Any] = []
+        try:
+            for _field, kind, detail in self.plan(name):
+                if kind == PRIM:
+                    fmt, size = detail
+                    pos += -pos % size
+                    values.append(struct.unpack_from("<" + fmt, view, pos)[0])
+                    pos += size
+                elif kind == STRING:
+                    text, pos = _read_string(view, pos)
+                    values.append(text)
+                elif kind == MSG:
+                    item, pos = self._read(view, pos, detail, make)
+                    values.append(item)
+                elif kind == PRIMS:
+                    fmt, size, fixed, code, base = detail
+                    count = fixed
+                    if count is None:
+                        pos += -pos % 4
+                        count = _U32.unpack_from(view, pos)[0]
+                        pos += 4
+                    if count:
+                        pos += -pos % size
+                    end = pos + count * size
+                    if end > len(view):
+                        raise CdrError("the payload ends inside an array")
+                    if base == "bool":
+                        values.append(list(struct.unpack_from(f"<{count}?", view, pos)))
+                    else:
+                        items = array.array(code)
+                        items.frombytes(view[pos:end])
+                        values.append(items)
+                    pos = end
+                elif kind == STRINGS:
+                    count = detail
+                    if count is None:
+                        pos += -pos % 4
+                        count = _U32.unpack_from(view, pos)[0]
+                        pos += 4
+                    _check_count(count, view, pos)
+                    items = []
+                    for _ in range(count):
+                        text, pos = _read_string(view, pos)
+                        items.append(text)
+                    values.append(items)
+                else:  # MSGS
+                    inner, count = detail
+                    if count is None:
+                        pos += -pos % 4
+                        count = _U32.unpack_from(view, pos)[0]
+                        pos += 4
+                    _check_count(count, view, pos)
+                    items = []
+                    for _ in range(count):
+                        item, pos = self._read(view, pos, inner, make)
+                        items.append(item)
+                    values.append(items)
+        except struct.error:
+            raise CdrError(f"the payload ends inside a {name}") from None
+        return make(name, values), pos
+
+
+def _base(kind: str) -> tuple[int, Any]:
+    if kind == "string":
+        return STRING, None
+    if kind == "wstring":
+        raise Unsupported(kind)
+    fmt = _FORMATS[kind]
+    return PRIM, (fmt, struct.calcsize(fmt))
+
+
+def _align(out: bytearray, size: int) -> None:
+    pad = -(len(out) - 4) % size
+    if pad:
+        out += b"\x00" * pad
+
+
+def _packed(value: Any, fmt: str, size: int, code: str, count: int) -> bytes:
+    """A numeric array's bytes: straight from an array.array or numpy array of the type."""
+    if isinstance(value, array.array) and value.typecode == code:
+        return value.tobytes()
+    dtype = getattr(value, "dtype", None)  # a numpy array, read without importing numpy
+    if dtype is not None and dtype.itemsize == size and dtype.kind == _KINDS[fmt] \
+            and dtype.byteorder in "=<|":
+        return value.tobytes()
+    try:
+        return struct.pack(f"<{count}{fmt}", *(v.item() if hasattr(v, "item") else v
+                                               for v in value))
+    except struct.error as exc:
+        raise CdrError(f"{exc}") from None
+
+
+def _read_string(view: memoryview, pos: int) -> tuple[str, int]:
+    pos += -pos % 4
+    length = _U32.unpack_from(view, pos)[0]
+    pos += 4
+    if pos + length > len(view):
+        raise CdrError("the payload ends inside a string")
+    end = pos + length - 1 if length else pos
+    return bytes(view[pos:end]).decode(errors="replace"), pos + length
+
+
+def _check_count(count: int, view: memoryview, pos: int) -> None:
+    """A sequence cannot have more items than bytes left (a hostile count allocates nothing)."""
+    if count > len(view) - pos:
+        raise CdrError(f"a sequence of {count} items in {len(view) - pos} bytes")
