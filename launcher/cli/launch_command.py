@@ -122,6 +122,9 @@ def children_environment(index: PackageIndex, debug: bool) -> dict[str, str]:
     if debug:  # the built-in nodes print tracebacks with their errors too
         environment[DEBUG_VARIABLE] = "1"
     compat.enable_for_children(environment)
+    real = compat.real_node_apis(environment)
+    if real:
+        print(f"[INFO] [launch]: {real}", file=sys.stderr)
     tools_on_path(environment)
     compat.commands_for_children(environment)
     return environment

@@ -313,6 +313,7 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
         "__qualname__": qualname or short,
         "_TYPE": name,
         "_FIELDS": tuple(f for f, _ in fields),
+        "_SLOTS": tuple("_" + f for f, _ in fields),
         "_DEFAULTS": tuple(_default(k, d) for _, (k, d) in fields),
         "_FIELD_TYPES": {f: _idl(k, d) for f, (k, d) in fields},
         "SLOT_TYPES": tuple(Slot(_idl(k, d)) for _, (k, d) in fields),
@@ -441,13 +442,17 @@ def make(type_name: str, values: list[Any]) -> Any:
     `make`): numeric sequences stay array.arrays, fixed numeric arrays become numpy arrays."""
     cls = _classes.get(type_name) or message_class(type_name)
     message = object.__new__(cls)
-    fixed = _fixed_arrays(cls)
-    for index, (name, value) in enumerate(zip(cls._FIELDS, values, strict=True)):
-        if index in fixed:
-            import numpy
+    fixed = _fixed.get(cls)
+    if fixed is None:
+        fixed = _fixed_arrays(cls)
+    if fixed:
+        import numpy
 
-            value = numpy.array(value, dtype=fixed[index])
-        object.__setattr__(message, "_" + name, value)
+        for index, dtype in fixed.items():
+            values[index] = numpy.array(values[index], dtype=dtype)
+    setter = object.__setattr__
+    for slot, value in zip(cls._SLOTS, values, strict=True):
+        setter(message, slot, value)
     return message
 
 

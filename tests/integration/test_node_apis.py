@@ -4,13 +4,16 @@ on a real Zenoh router; each test checks that nothing it started is left."""
 
 from __future__ import annotations
 
+import json
 import os
+import re
 import signal
 import time
 from pathlib import Path
 
 import pytest
 
+from launcher.compat import SITE
 from tests.conftest import REPO
 
 EXAMPLES = REPO.parent / "shared" / "external" / "ros2_examples" / "rclpy"
@@ -80,23 +83,63 @@ def test_each_example_client_gets_the_sum_from_a_service(examples, client):
         assert stop(server, signal.SIGTERM) == 0, examples.output("service.txt")
 
 
-def test_the_examples_in_a_launch_file(examples):
-    examples.write("talk.launch.yaml", """
-    launch:
-      - node: {pkg: examples_rclpy_minimal_service, exec: service_member_function}
-      - node: {pkg: examples_rclpy_minimal_subscriber, exec: subscriber_member_function,
-               output: screen}
-      - node: {pkg: examples_rclpy_minimal_publisher, exec: publisher_member_function,
-               output: screen, remap: [{from: topic, to: topic}]}
-      - timer:
-          period: 1.0
-          children:
-            - node: {pkg: examples_rclpy_minimal_client, exec: client, output: screen}
-    """)
-    done = examples.run("launch", "talk.launch.yaml", "--duration", "6", timeout=90)
+def test_every_example_executable_in_one_launch_file(examples):
+    """All twelve executables of the four packages as `node` actions (renamed, so that no two
+    share a name): every subscriber hears, every client gets its sum."""
+    nodes = []
+    for exe in PUBLISHERS:
+        nodes.append(f"- node: {{pkg: examples_rclpy_minimal_publisher, exec: {exe}, "
+                     f"name: {exe}, output: log}}")
+    for exe in SUBSCRIBERS:
+        nodes.append(f"- node: {{pkg: examples_rclpy_minimal_subscriber, exec: {exe}, "
+                     f"name: {exe}, output: screen}}")
+    for exe in SERVICES:
+        nodes.append(f"- node: {{pkg: examples_rclpy_minimal_service, exec: {exe}, "
+                     f"name: {exe}, output: log}}")
+    clients = "\n".join(
+        f"        - node: {{pkg: examples_rclpy_minimal_client, exec: {exe}, name: {exe}, "
+        f"output: screen}}" for exe in CLIENTS)
+    body = "\n".join("  " + line for line in nodes)
+    examples.write("all.launch.yaml", f"""
+launch:
+{body}
+  - timer:
+      period: 1.0
+      children:
+{clients}
+""")
+    done = examples.run("launch", "all.launch.yaml", "--duration", "8", timeout=120)
     assert done.returncode == 0, done.stderr
-    assert 'I heard: "Hello World: 3"' in done.stdout, done.stdout
-    assert "Result of add_two_ints: for 41 + 1 = 42" in done.stdout
+    for exe in SUBSCRIBERS:
+        assert re.search(rf"\[{exe}-\d+\] .*\[{exe}\]: I heard: \"Hello World: \d+\"",
+                         done.stdout), (exe, done.stdout)
+    for exe in CLIENTS:
+        assert re.search(rf"\[{exe}-\d+\] .*Result of add_two_ints: for 41 \+ 1 = 42",
+                         done.stdout), (exe, done.stdout)
+    for exe in CLIENTS:  # each ends by itself once it has its answer
+        assert re.search(rf"\[INFO\] \[{exe}-\d+\]: process has finished cleanly",
+                         done.stderr + done.stdout), exe
+
+
+def test_a_python3_command_and_the_users_shell_get_the_modules_too(examples):
+    """`executable: {cmd: python3 node.py}` imports rclpy and messages as a package node
+    does; `launcher env` gives a shell the same (the site hook on PYTHONPATH)."""
+    examples.write("node.py", """
+    import rclpy
+    from std_msgs.msg import String
+    with rclpy.init():
+        node = rclpy.create_node('plain')
+        print('plain node:', node.get_fully_qualified_name(), String(data='x'), flush=True)
+    """)
+    examples.write("plain.launch.yaml", """
+    launch:
+      - executable: {cmd: python3 node.py, output: screen}
+    """)
+    done = examples.run("launch", "plain.launch.yaml", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "plain node: /plain std_msgs.msg.String(data='x')" in done.stdout
+    shell = examples.run("env", "--shell", "json")
+    assert SITE in json.loads(shell.stdout)["PYTHONPATH"].split(os.pathsep)
 
 
 def test_rclpy_api_parameters_executors_and_errors(examples):

@@ -8,7 +8,6 @@ MultiThreadedExecutor hands them to a pool, one at a time per mutually exclusive
 
 from __future__ import annotations
 
-import contextlib
 import queue
 import threading
 import time
@@ -42,7 +41,7 @@ class ConditionReachedException(Exception):
 class Executor:
     def __init__(self, *, context: Any = None) -> None:
         self._context = context or get_default_context()
-        self._nodes: list[Any] = []
+        self._nodes: tuple[Any, ...] = ()  # replaced, never changed: read without the lock
         self._ready: deque[Task] = deque()
         self._lock = threading.RLock()
         self._is_shutdown = False
@@ -58,7 +57,7 @@ class Executor:
         with self._lock:
             if node in self._nodes:
                 return False
-            self._nodes.append(node)
+            self._nodes = (*self._nodes, node)
             node.executor = self
         self.wake()
         return True
@@ -66,7 +65,7 @@ class Executor:
     def remove_node(self, node: Any) -> None:
         with self._lock:
             if node in self._nodes:
-                self._nodes.remove(node)
+                self._nodes = tuple(n for n in self._nodes if n is not node)
 
     def get_nodes(self) -> list[Any]:
         with self._lock:
@@ -90,7 +89,7 @@ class Executor:
             for node in self._nodes:
                 if getattr(node, "executor", None) is self:
                     node.executor = None
-            self._nodes.clear()
+            self._nodes = ()
         self.wake()
         return True
 
@@ -108,15 +107,10 @@ class Executor:
             if self._ready:
                 task = self._ready.popleft()
                 return None, task, ()
+            nodes = self._nodes
             now = time.monotonic()
             soonest = None
-            for node in self.get_nodes():
-                host = node._host_or_none()
-                if host is None:
-                    continue
-                with contextlib.suppress(queue.Empty):
-                    callback, args = host._queue.get_nowait()
-                    return node, callback, args
+            for node in nodes:  # due timers first (a flood must not starve them)
                 for timer in node._timers:
                     if timer.is_canceled():
                         continue
@@ -125,6 +119,14 @@ class Executor:
                         timer._last = now
                         return node, timer._fire, ()
                     soonest = timer._next if soonest is None else min(soonest, timer._next)
+            for node in nodes:  # then waiting work
+                host = node._host_or_none()
+                if host is not None:
+                    try:
+                        callback, args = host._queue.get_nowait()
+                    except queue.Empty:
+                        continue
+                    return node, callback, args
             ends = [t for t in (deadline, soonest) if t is not None]
             wait = min(ends) - now if ends else None
             if deadline is not None and now >= deadline:
