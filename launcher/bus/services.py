@@ -77,18 +77,27 @@ class Client:
         self._gid = os.urandom(16)
 
     def call(self, request: Any, timeout: float = 5.0) -> Any:
+        """The response, waiting up to `timeout`. A query that no server matched ends at once
+        (a session just opened may not yet know of a server that exists): it is sent again
+        until one answers or the time is up, so a call right after start waits for the
+        service as `ros2 service call` does. A server that got it never gets it twice."""
         types = registry()
         payload = types.serialize(request, self.request_type)
-        attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
-        replies = self._host.session.get(self._key, payload=payload, attachment=attachment,
-                                         timeout=timeout)
-        for reply in replies:
-            if reply.ok is not None:
-                return types.deserialize(reply.ok.payload.to_bytes(), self.response_type)
-            raise LaunchError(f"service {self.name} failed: "
-                              f"{reply.err.payload.to_bytes().decode(errors='replace')}")
-        raise LaunchError(f"service {self.name} did not answer within {timeout:g} s "
-                          "(is its server running?)")
+        deadline = time.monotonic() + timeout
+        while True:
+            left = deadline - time.monotonic()
+            attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
+            replies = self._host.session.get(self._key, payload=payload, attachment=attachment,
+                                             timeout=max(left, 0.001))
+            for reply in replies:
+                if reply.ok is not None:
+                    return types.deserialize(reply.ok.payload.to_bytes(), self.response_type)
+                raise LaunchError(f"service {self.name} failed: "
+                                  f"{reply.err.payload.to_bytes().decode(errors='replace')}")
+            if deadline - time.monotonic() < 0.05:
+                raise LaunchError(f"service {self.name} did not answer within {timeout:g} s "
+                                  "(is its server running?)")
+            time.sleep(0.05)
 
     def call_async(self, request: Any, timeout: float = 5.0) -> Future:
         future = Future()

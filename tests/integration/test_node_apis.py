@@ -177,13 +177,14 @@ ran = []
 def slow():
     both.wait()  # two timers inside at once: only with a pool and a reentrant group
     ran.append(1)
-node.create_timer(0.05, slow, callback_group=group)
-node.create_timer(0.05, slow, callback_group=group)
+timers = [node.create_timer(0.05, slow, callback_group=group) for _ in range(2)]
 executor = MultiThreadedExecutor(num_threads=2)
 executor.add_node(node)
 while len(ran) < 2:
     executor.spin_once(timeout_sec=1.0)
 print("parallel:", len(ran) >= 2)
+for timer in timers:
+    timer.cancel()
 executor.shutdown()
 guard_ran = []
 guard = node.create_guard_condition(lambda: guard_ran.append(1))
