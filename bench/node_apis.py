@@ -60,15 +60,9 @@ rospy.signal_shutdown('done')
 """,
 }
 
-# argv: mode (latency|flood), seconds. Prints one line when done.
-PUBLISH = {
-    "launcher": """
-import sys, time
-from launcher.bus.node import Node
-mode, seconds = sys.argv[1], float(sys.argv[2])
-node = Node('sender')
-pub = node.create_publisher('geometry_msgs/msg/Twist', 'bench_twist')
-message = node.message('geometry_msgs/msg/Twist')
+# argv: mode (latency|flood), seconds. Prints one line when done. Each API makes `pub` and
+# `message`; the loop is the same for all.
+SEND_LOOP = """
 time.sleep(1.0)
 end = time.monotonic() + seconds
 period, next_at, sent = 0.001, time.monotonic(), 0
@@ -83,59 +77,32 @@ while time.monotonic() < end:
             time.sleep(delay)
 print('sent', sent, flush=True)
 time.sleep(0.5)
-node.destroy_node()
-""",
-    "rclpy": """
-import sys, time
+"""
+SEND_SETUP = {
+    "launcher": ("""
+from launcher.bus.node import Node
+node = Node('sender')
+pub = node.create_publisher('geometry_msgs/msg/Twist', 'bench_twist')
+message = node.message('geometry_msgs/msg/Twist')
+""", "node.destroy_node()"),
+    "rclpy": ("""
 import rclpy
 from geometry_msgs.msg import Twist
-mode, seconds = sys.argv[1], float(sys.argv[2])
 rclpy.init()
 node = rclpy.create_node('sender')
 pub = node.create_publisher(Twist, 'bench_twist', 10)
 message = Twist()
-time.sleep(1.0)
-end = time.monotonic() + seconds
-period, next_at, sent = 0.001, time.monotonic(), 0
-while time.monotonic() < end:
-    message.linear.x = time.time()
-    pub.publish(message)
-    sent += 1
-    if mode == 'latency':
-        next_at += period
-        delay = next_at - time.monotonic()
-        if delay > 0:
-            time.sleep(delay)
-print('sent', sent, flush=True)
-time.sleep(0.5)
-node.destroy_node()
-rclpy.shutdown()
-""",
-    "rospy": """
-import sys, time
+""", "node.destroy_node()\nrclpy.shutdown()"),
+    "rospy": ("""
 import rospy
 from geometry_msgs.msg import Twist
-mode, seconds = sys.argv[1], float(sys.argv[2])
 rospy.init_node('sender', disable_signals=True)
 pub = rospy.Publisher('bench_twist', Twist, queue_size=10)
 message = Twist()
-time.sleep(1.0)
-end = time.monotonic() + seconds
-period, next_at, sent = 0.001, time.monotonic(), 0
-while time.monotonic() < end:
-    message.linear.x = time.time()
-    pub.publish(message)
-    sent += 1
-    if mode == 'latency':
-        next_at += period
-        delay = next_at - time.monotonic()
-        if delay > 0:
-            time.sleep(delay)
-print('sent', sent, flush=True)
-time.sleep(0.5)
-rospy.signal_shutdown('done')
-""",
+""", "rospy.signal_shutdown('done')"),
 }
+PUBLISH = {api: "import sys, time\nmode, seconds = sys.argv[1], float(sys.argv[2])\n" + setup +
+           SEND_LOOP + end for api, (setup, end) in SEND_SETUP.items()}
 
 # Receives for `seconds` after the first message; prints the p50 latency (ms) and the rate.
 RECEIVE = {

@@ -104,30 +104,17 @@ class Codec:
                 self._write(out, value, self.plan(detail))
             elif kind == PRIMS:
                 fmt, size, fixed, code, _ = detail
-                count = len(value)
-                if fixed is None:
-                    _align(out, 4)
-                    out += _U32.pack(count)
-                elif count != fixed:
-                    raise CdrError(f"{field}: expected {fixed} items, got {count}")
+                count = _write_count(out, field, len(value), fixed)
                 if count:
                     _align(out, size)
                     out += _packed(value, fmt, size, code, count)
             elif kind == STRINGS:
-                if detail is None:
-                    _align(out, 4)
-                    out += _U32.pack(len(value))
-                elif len(value) != detail:
-                    raise CdrError(f"{field}: expected {detail} items, got {len(value)}")
+                _write_count(out, field, len(value), detail)
                 for item in value:
                     self._string(out, item)
             else:  # MSGS
                 inner, fixed = detail
-                if fixed is None:
-                    _align(out, 4)
-                    out += _U32.pack(len(value))
-                elif len(value) != fixed:
-                    raise CdrError(f"{field}: expected {fixed} items, got {len(value)}")
+                _write_count(out, field, len(value), fixed)
                 inner_ops = self.plan(inner)
                 for item in value:
                     self._write(out, item, inner_ops)
@@ -169,11 +156,7 @@ class Codec:
                     values.append(item)
                 elif kind == PRIMS:
                     fmt, size, fixed, code, base = detail
-                    count = fixed
-                    if count is None:
-                        pos += -pos % 4
-                        count = _U32.unpack_from(view, pos)[0]
-                        pos += 4
+                    count, pos = _read_count(view, pos, fixed)
                     if count:
                         pos += -pos % size
                     end = pos + count * size
@@ -187,11 +170,7 @@ class Codec:
                         values.append(items)
                     pos = end
                 elif kind == STRINGS:
-                    count = detail
-                    if count is None:
-                        pos += -pos % 4
-                        count = _U32.unpack_from(view, pos)[0]
-                        pos += 4
+                    count, pos = _read_count(view, pos, detail)
                     _check_count(count, view, pos)
                     items = []
                     for _ in range(count):
@@ -199,11 +178,8 @@ class Codec:
                         items.append(text)
                     values.append(items)
                 else:  # MSGS
-                    inner, count = detail
-                    if count is None:
-                        pos += -pos % 4
-                        count = _U32.unpack_from(view, pos)[0]
-                        pos += 4
+                    inner, fixed = detail
+                    count, pos = _read_count(view, pos, fixed)
                     _check_count(count, view, pos)
                     items = []
                     for _ in range(count):
@@ -228,6 +204,24 @@ def _align(out: bytearray, size: int) -> None:
     pad = -(len(out) - 4) % size
     if pad:
         out += b"\x00" * pad
+
+
+def _write_count(out: bytearray, field: str, count: int, fixed: int | None) -> int:
+    """A sequence's count (aligned), or the check of a fixed array's length."""
+    if fixed is None:
+        _align(out, 4)
+        out += _U32.pack(count)
+    elif count != fixed:
+        raise CdrError(f"{field}: expected {fixed} items, got {count}")
+    return count
+
+
+def _read_count(view: memoryview, pos: int, fixed: int | None) -> tuple[int, int]:
+    """(count, position after it): a sequence's count, or a fixed array's length."""
+    if fixed is not None:
+        return fixed, pos
+    pos += -pos % 4
+    return _U32.unpack_from(view, pos)[0], pos + 4
 
 
 def _packed(value: Any, fmt: str, size: int, code: str, count: int) -> bytes:

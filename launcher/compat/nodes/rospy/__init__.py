@@ -388,23 +388,40 @@ def _build(data_class: Any, args: tuple, kwargs: dict) -> Any:
     return data_class(*args, **kwargs)
 
 
-class Publisher:
-    def __init__(self, name: str, data_class: Any, subscriber_listener: Any = None,
-                 tcp_nodelay: bool = False, latch: bool = False, headers: Any = None,
-                 queue_size: int | None = None) -> None:
+class _Endpoint:
+    """What a Publisher and a Subscriber share: the type, the name, and joining the graph at
+    `init_node` when made before it."""
+
+    def __init__(self, name: str, data_class: Any, qos: QoS) -> None:
         if not isinstance(data_class, type) or not hasattr(data_class, "_TYPE"):
             raise ValueError(f"data_class [{data_class}] is not a message data class")
         self.data_class, self.type = data_class, rosidl.type_name_of(data_class)
-        self._qos = QoS(depth=1, transient_local=True) if latch else \
-            QoS(depth=max(queue_size or 10, 1))
-        self._given, self._bus = name, None
-        self.name = name
-        self.resolved_name = name
+        self._qos, self._given, self._bus = qos, name, None
+        self.name = self.resolved_name = name
+
+    def _join(self) -> None:
         with _state.lock:
             if _state.node is None:
                 _state.pending.append(self)
             else:
                 self._attach(_state.node)
+
+    def _attach(self, node: Any) -> None:
+        raise NotImplementedError
+
+    def unregister(self) -> None:
+        if self._bus is not None:
+            self._bus.destroy()
+            self._bus = None
+
+
+class Publisher(_Endpoint):
+    def __init__(self, name: str, data_class: Any, subscriber_listener: Any = None,
+                 tcp_nodelay: bool = False, latch: bool = False, headers: Any = None,
+                 queue_size: int | None = None) -> None:
+        super().__init__(name, data_class, QoS(depth=1, transient_local=True) if latch else
+                         QoS(depth=max(queue_size or 10, 1)))
+        self._join()
 
     def _attach(self, node: Any) -> None:
         self._bus = node.create_publisher(self.type, self._given, self._qos)
@@ -422,31 +439,17 @@ class Publisher:
     def get_num_connections(self) -> int:
         return 0 if self._bus is None else self._bus.get_subscription_count()
 
-    def unregister(self) -> None:
-        if self._bus is not None:
-            self._bus.destroy()
-            self._bus = None
 
-
-class Subscriber:
+class Subscriber(_Endpoint):
     def __init__(self, name: str, data_class: Any, callback: Callable[..., Any] | None = None,
                  callback_args: Any = None, queue_size: int | None = None,
                  buff_size: int = 65536, tcp_nodelay: bool = False) -> None:
-        if not isinstance(data_class, type) or not hasattr(data_class, "_TYPE"):
-            raise ValueError(f"data_class [{data_class}] is not a message data class")
-        self.data_class, self.type = data_class, rosidl.type_name_of(data_class)
+        super().__init__(name, data_class, QoS(depth=max(queue_size or 10, 1)))
         self.callback, self.callback_args = callback, callback_args
-        self._qos = QoS(depth=max(queue_size or 10, 1))
-        self._given, self._bus = name, None
-        self.name = self.resolved_name = name
         self._callbacks: list[tuple[Callable[..., Any], Any]] = []
         if callback is not None:
             self._callbacks.append((callback, callback_args))
-        with _state.lock:
-            if _state.node is None:
-                _state.pending.append(self)
-            else:
-                self._attach(_state.node)
+        self._join()
 
     def _attach(self, node: Any) -> None:
         type_name = self.type
@@ -465,11 +468,6 @@ class Subscriber:
 
     def get_num_connections(self) -> int:
         return 0
-
-    def unregister(self) -> None:
-        if self._bus is not None:
-            self._bus.destroy()
-            self._bus = None
 
 
 def wait_for_message(topic: str, topic_type: Any, timeout: float | None = None) -> Any:
