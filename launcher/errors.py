@@ -90,8 +90,13 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
 def report(exc: BaseException, label: str = "", debug: bool = False) -> int:
     """Print a failure as one line on stderr (with its traceback when debugging); the exit
     status it means: the LaunchError's own, 130 for Ctrl-C, 1 for anything else."""
-    if isinstance(exc, KeyboardInterrupt):
-        return 128 + getattr(exc, "signum", 2)
+    behind: BaseException | None = exc
+    for _ in range(100):  # a failure in cleanup that a signal interrupted is the signal's
+        if behind is None or isinstance(behind, KeyboardInterrupt):
+            break
+        behind = behind.__context__ or behind.__cause__
+    if isinstance(behind, KeyboardInterrupt):
+        return 128 + getattr(behind, "signum", 2)
     if debug or os.environ.get(DEBUG_VARIABLE) == "1":
         import traceback  # only when debugging: start-up time
 

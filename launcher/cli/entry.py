@@ -52,6 +52,18 @@ def _leave(signum: int, _frame: object) -> None:
     os._exit(128 + signum)
 
 
+def interrupt_behind(exc: BaseException) -> BaseException | None:
+    """The KeyboardInterrupt this exception arose while handling, if any."""
+    seen = 0
+    current: BaseException | None = exc
+    while current is not None and seen < 100:
+        if isinstance(current, KeyboardInterrupt):
+            return current
+        current = current.__context__ or current.__cause__
+        seen += 1
+    return None
+
+
 def main() -> int:
     global _running
     try:
@@ -61,6 +73,13 @@ def main() -> int:
         code = run_command()
     except KeyboardInterrupt as exc:
         code = 128 + getattr(exc, "signum", signal.SIGINT)
+    except Exception as exc:
+        # A signal raised inside a library's try whose cleanup then failed (argparse restores
+        # attributes it never saved): the failure is the signal's, not an error to show.
+        cause = interrupt_behind(exc)
+        if cause is None:
+            raise
+        code = 128 + getattr(cause, "signum", signal.SIGINT)
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, _leave)
     return code
