@@ -87,15 +87,23 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     return " (did you mean " + " or ".join(f"'{c}'" for c in close) + "?)"
 
 
+def interrupt_behind(exc: BaseException) -> BaseException | None:
+    """The KeyboardInterrupt (Ctrl-C, SIGTERM) this exception is, or arose while handling: a
+    library's cleanup that fails because a signal cut its `try` short (argparse restores
+    attributes it never saved) is the signal's doing."""
+    current: BaseException | None = exc
+    for _ in range(100):
+        if current is None or isinstance(current, KeyboardInterrupt):
+            return current
+        current = current.__context__ or current.__cause__
+    return None
+
+
 def report(exc: BaseException, label: str = "", debug: bool = False) -> int:
     """Print a failure as one line on stderr (with its traceback when debugging); the exit
     status it means: the LaunchError's own, 130 for Ctrl-C, 1 for anything else."""
-    behind: BaseException | None = exc
-    for _ in range(100):  # a failure in cleanup that a signal interrupted is the signal's
-        if behind is None or isinstance(behind, KeyboardInterrupt):
-            break
-        behind = behind.__context__ or behind.__cause__
-    if isinstance(behind, KeyboardInterrupt):
+    behind = interrupt_behind(exc)  # a failure in cleanup a signal interrupted: the signal's
+    if behind is not None:
         return 128 + getattr(behind, "signum", 2)
     if debug or os.environ.get(DEBUG_VARIABLE) == "1":
         import traceback  # only when debugging: start-up time

@@ -8,7 +8,7 @@ dataclasses, launcher's rclpy classes); reading builds them through a `make(type
 the caller gives, so each API gets its own classes without a copy. Numeric arrays are read as
 `array.array`s; the caller turns them into what its classes hold.
 
-Types with `wstring` fields are left to rosbags (TypeRegistry falls back to it).
+Types with `wstring` fields are refused (rosbags' CDR has no `wstring` either).
 """
 
 from __future__ import annotations
@@ -31,12 +31,14 @@ _KINDS = {"f": "f", "d": "f", "b": "i", "h": "i", "i": "i", "q": "i", "B": "u", 
           "I": "u", "Q": "u", "?": "b"}
 _U32 = struct.Struct("<I")
 
+_WSTRING = "wstring fields are not supported (use string: UTF-8)"
+
 # plan ops: (field, kind, detail)
 PRIM, STRING, MSG, PRIMS, STRINGS, MSGS = range(6)
 
 
 class Unsupported(Exception):
-    """A type this codec leaves to rosbags (wstring)."""
+    """A type with a field this codec cannot write (wstring)."""
 
 
 class CdrError(ValueError):
@@ -65,7 +67,7 @@ class Codec:
                     ops.append((field, MSGS, (inner_detail, fixed)))
                 elif inner_detail[0] in ("string", "wstring"):
                     if inner_detail[0] == "wstring":
-                        raise Unsupported(name)
+                        raise Unsupported(_WSTRING)
                     ops.append((field, STRINGS, fixed))
                 else:
                     base = inner_detail[0]
@@ -195,7 +197,7 @@ def _base(kind: str) -> tuple[int, Any]:
     if kind == "string":
         return STRING, None
     if kind == "wstring":
-        raise Unsupported(kind)
+        raise Unsupported(_WSTRING)
     fmt = _FORMATS[kind]
     return PRIM, (fmt, struct.calcsize(fmt))
 

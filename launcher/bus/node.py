@@ -110,14 +110,18 @@ class Node:
 
     def create_service(self, type_name: str, name: str,
                        callback: Callable[[Any, Any], Any],
-                       space: keys.Space | None = None) -> Service:
+                       space: keys.Space | None = None,
+                       make: Callable[[str, list[Any]], Any] | None = None,
+                       new_response: Callable[[], Any] | None = None) -> Service:
         return self._host.adopt(Service(self._host, type_name,
-                                        self.resolve(name, "service name"), callback, space))
+                                        self.resolve(name, "service name"), callback, space,
+                                        make, new_response))
 
     def create_client(self, type_name: str, name: str,
-                      space: keys.Space | None = None) -> Client:
+                      space: keys.Space | None = None,
+                      make: Callable[[str, list[Any]], Any] | None = None) -> Client:
         return self._host.adopt(Client(self._host, type_name,
-                                       self.resolve(name, "service name"), space))
+                                       self.resolve(name, "service name"), space, make))
 
     def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
         if period <= 0:

@@ -11,6 +11,7 @@ import itertools
 import os
 import threading
 import time
+from collections.abc import Callable
 from typing import Any
 
 import zenoh
@@ -23,14 +24,21 @@ from launcher.errors import LaunchError
 
 
 class Service:
-    """Answers requests: `callback(request, response) -> response`, run by the executor."""
+    """Answers requests: `callback(request, response) -> response`, run by the executor.
+    `make` and `new_response` give requests and responses of other classes (rclpy's, see
+    TypeRegistry.deserialize)."""
 
     def __init__(self, host: Host, type_name: str, name: str,
-                 callback: Any, space: keys.Space | None = None) -> None:
+                 callback: Any, space: keys.Space | None = None,
+                 make: Callable[[str, list[Any]], Any] | None = None,
+                 new_response: Callable[[], Any] | None = None) -> None:
         types = registry()
         self.type_name = type_name
         self.request_type, self.response_type = types.service(type_name)
         self.name, self._host, self._callback = name, host, callback
+        self._make = make
+        self._new_response = new_response or (lambda: types.message_class(
+            self.response_type)(**_zero_fields(self.response_type)))
         space = space or host.space
         key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name),
                                space)
@@ -44,9 +52,9 @@ class Service:
     def _answer(self, query: zenoh.Query) -> None:
         types = registry()
         try:
-            request = types.deserialize(query.payload.to_bytes(), self.request_type)
-            response = self._callback(request, types.message_class(self.response_type)(
-                **_zero_fields(self.response_type)))
+            request = types.deserialize(query.payload.to_bytes(), self.request_type,
+                                        self._make)
+            response = self._callback(request, self._new_response())
             query.reply(query.key_expr, types.serialize(response, self.response_type),
                         attachment=query.attachment)
         except Exception as exc:  # the caller gets an error, the node goes on
@@ -64,9 +72,10 @@ class Client:
     """Calls a service: `call(request, timeout)` waits; `call_async` returns a Future."""
 
     def __init__(self, host: Host, type_name: str, name: str,
-                 space: keys.Space | None = None) -> None:
+                 space: keys.Space | None = None,
+                 make: Callable[[str, list[Any]], Any] | None = None) -> None:
         types = registry()
-        self.type_name, self.name, self._host = type_name, name, host
+        self.type_name, self.name, self._host, self._make = type_name, name, host, make
         self.request_type, self.response_type = types.service(type_name)
         self.space = space or host.space
         self._key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name),
@@ -91,7 +100,8 @@ class Client:
                                              timeout=max(left, 0.001))
             for reply in replies:
                 if reply.ok is not None:
-                    return types.deserialize(reply.ok.payload.to_bytes(), self.response_type)
+                    return types.deserialize(reply.ok.payload.to_bytes(), self.response_type,
+                                             self._make)
                 raise LaunchError(f"service {self.name} failed: "
                                   f"{reply.err.payload.to_bytes().decode(errors='replace')}")
             if deadline - time.monotonic() < 0.05:

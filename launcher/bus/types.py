@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.bus import interfaces
+from launcher.bus.cdr import PRIMS, CdrError, Codec, Unsupported
 from launcher.errors import LaunchError, did_you_mean
 
 DISTRO = "ros2_jazzy"
@@ -173,40 +174,32 @@ class TypeRegistry:
     @property
     def codec(self) -> Any:
         if self._codec is None:
-            from launcher.bus.cdr import Codec
-
             self._codec = Codec(self.fields)
         return self._codec
 
     def serialize(self, message: Any, name: str) -> bytes:
         """CDR of a message (any object with the type's fields as attributes)."""
-        from launcher.bus.cdr import Unsupported
-
         name = self.ensure(name)
         try:
             return self.codec.serialize(message, name)
-        except Unsupported:
-            return bytes(self.store.serialize_cdr(message, name))
+        except Unsupported as exc:
+            raise LaunchError(f"{name}: {exc}") from None
 
     def deserialize(self, data: bytes | memoryview, name: str,
                     make: Any = None) -> Any:
         """The message in a CDR payload: rosbags' dataclass (numeric arrays as numpy arrays),
         or what `make(type, values)` builds from each type's field values."""
-        from launcher.bus.cdr import CdrError, Unsupported
-
         name = self.ensure(name)
         try:
             return self.codec.deserialize(data, name, make or self._store_message)
-        except Unsupported:
-            return self.store.deserialize_cdr(data, name)
+        except Unsupported as exc:
+            raise LaunchError(f"{name}: {exc}") from None
         except CdrError as exc:
             raise ValueError(f"malformed {name}: {exc}") from None
 
     def _store_message(self, name: str, values: list[Any]) -> Any:
         arrays = self._numeric_fields.get(name)
         if arrays is None:
-            from launcher.bus.cdr import PRIMS
-
             arrays = [(i, detail[4]) for i, (_f, kind, detail) in
                       enumerate(self.codec.plan(name)) if kind == PRIMS]
             self._numeric_fields[name] = arrays

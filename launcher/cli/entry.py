@@ -52,18 +52,6 @@ def _leave(signum: int, _frame: object) -> None:
     os._exit(128 + signum)
 
 
-def interrupt_behind(exc: BaseException) -> BaseException | None:
-    """The KeyboardInterrupt this exception arose while handling, if any."""
-    seen = 0
-    current: BaseException | None = exc
-    while current is not None and seen < 100:
-        if isinstance(current, KeyboardInterrupt):
-            return current
-        current = current.__context__ or current.__cause__
-        seen += 1
-    return None
-
-
 def main() -> int:
     global _running
     try:
@@ -74,8 +62,8 @@ def main() -> int:
     except KeyboardInterrupt as exc:
         code = 128 + getattr(exc, "signum", signal.SIGINT)
     except Exception as exc:
-        # A signal raised inside a library's try whose cleanup then failed (argparse restores
-        # attributes it never saved): the failure is the signal's, not an error to show.
+        from launcher.errors import interrupt_behind  # (argparse's cleanup cut short)
+
         cause = interrupt_behind(exc)
         if cause is None:
             raise

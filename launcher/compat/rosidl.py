@@ -12,8 +12,9 @@ Fixed-size numeric arrays are numpy arrays and numeric sequences `array.array`s,
 `std_msgs/Header` carries a `seq` that is not sent (ROS 2 has none). rospy also takes whole
 numbers for floats (`lenient()`), as ROS 1 did.
 
-Instances are CDR-serialised directly by the type store (its code reads fields by name);
-received messages are turned into these classes field by field, without the checks.
+Instances are written as CDR directly (launcher's CDR writer reads fields by name); received
+messages, requests and responses are built as these classes by the reader (`make`), without
+the checks.
 """
 
 from __future__ import annotations
@@ -74,7 +75,6 @@ class Message:
     _FIELDS: tuple[str, ...] = ()
     _DEFAULTS: tuple[Callable[[], Any], ...] = ()
     _FIELD_TYPES: dict[str, str] = {}
-    _NEEDS_STORE_COPY = False
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         if len(args) > len(self._FIELDS):
@@ -317,7 +317,6 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
         "_DEFAULTS": tuple(_default(k, d) for _, (k, d) in fields),
         "_FIELD_TYPES": {f: _idl(k, d) for f, (k, d) in fields},
         "SLOT_TYPES": tuple(Slot(_idl(k, d)) for _, (k, d) in fields),
-        "_NEEDS_STORE_COPY": _has_numeric_sequence(name, set()) and _left_to_rosbags(name),
     }
     for field, (k, d) in fields:
         namespace[field] = _property(field, _checker(field, k, d))
@@ -388,63 +387,13 @@ def type_name_of(value: Any) -> str:
     return name
 
 
-def _left_to_rosbags(name: str) -> bool:
-    from launcher.bus.cdr import Unsupported
-
-    try:
-        registry().codec.plan(name)
-    except Unsupported:
-        return True
-    return False
-
-
-def _has_numeric_sequence(name: str, seen: set[str]) -> bool:
-    """Whether the type's tree holds an `array.array` (which the store cannot write)."""
-    if name in seen:
-        return False
-    seen.add(name)
-    for _, (kind, detail) in registry().fields(name):
-        if kind == Nodetype.SEQUENCE and detail[0][0] == Nodetype.BASE \
-                and detail[0][1][0] in _TYPECODES:
-            return True
-        inner = detail if kind == Nodetype.NAME else (
-            detail[0][1] if kind in (Nodetype.SEQUENCE, Nodetype.ARRAY)
-            and detail[0][0] == Nodetype.NAME else None)
-        if inner and _has_numeric_sequence(inner, seen):
-            return True
-    return False
-
-
-# --- to and from the type store's messages --------------------------------------------------
-def to_store(message: Any) -> Any:
-    """What the type store serialises: the message itself (launcher's CDR writer takes
-    array.arrays), unless the type is one left to rosbags' writer (wstring fields)."""
-    if not getattr(message, "_NEEDS_STORE_COPY", False):
-        return message
-    return _copy_out(message)
-
-
-def _copy_out(value: Any) -> Any:
-    if isinstance(value, Message):
-        store_class = registry().message_class(value._TYPE)
-        return store_class(*(_copy_out(getattr(value, f)) for f in value._FIELDS))
-    if isinstance(value, array.array):
-        import numpy
-
-        return numpy.array(value, dtype=value.typecode)
-    if isinstance(value, list):
-        return [_copy_out(v) for v in value]
-    return value
-
-
+# --- from received payloads ------------------------------------------------------------
 def make(type_name: str, values: list[Any]) -> Any:
     """A message from its field values as the CDR reader gives them (registry().deserialize's
     `make`): numeric sequences stay array.arrays, fixed numeric arrays become numpy arrays."""
     cls = _classes.get(type_name) or message_class(type_name)
     message = object.__new__(cls)
-    fixed = _fixed.get(cls)
-    if fixed is None:
-        fixed = _fixed_arrays(cls)
+    fixed = _fixed_arrays(cls)
     if fixed:
         import numpy
 
@@ -469,49 +418,3 @@ def _fixed_arrays(cls: Any) -> dict[int, str]:
                 found[index] = _DTYPES.get(detail[0][1][0], detail[0][1][0])
         _fixed[cls] = found
     return found
-
-
-def from_store(value: Any, type_name: str) -> Any:
-    """A received message (the store's class) as this module's class, unchecked."""
-    cls = message_class(type_name)
-    return _copy_in(value, cls)
-
-
-def _copy_in(value: Any, cls: type) -> Any:
-    message = object.__new__(cls)
-    for field, kind in _plan(cls):
-        item = getattr(value, field)
-        if kind is None:
-            pass
-        elif isinstance(kind, type):
-            item = _copy_in(item, kind)
-        elif isinstance(kind, tuple):
-            item = [_copy_in(x, kind[0]) for x in item]
-        else:  # a numeric sequence: numpy from the store, array.array in rclpy
-            item = array.array(kind, item.tobytes()) if hasattr(item, "tobytes") else \
-                array.array(kind, item)
-        object.__setattr__(message, "_" + field, item)
-    return message
-
-
-_plans: dict[type, list[tuple[str, Any]]] = {}
-
-
-def _plan(cls: Any) -> list[tuple[str, Any]]:
-    """Per field: None (as it is), a class (nested), (class,) (a list of them) or a typecode."""
-    found = _plans.get(cls)
-    if found is not None:
-        return found
-    plan: list[tuple[str, Any]] = []
-    for field, (kind, detail) in registry().fields(cls._TYPE):
-        if kind == Nodetype.NAME:
-            plan.append((field, message_class(detail)))
-        elif kind in (Nodetype.SEQUENCE, Nodetype.ARRAY) and detail[0][0] == Nodetype.NAME:
-            plan.append((field, (message_class(detail[0][1]),)))
-        elif kind == Nodetype.SEQUENCE and detail[0][0] == Nodetype.BASE \
-                and detail[0][1][0] in _TYPECODES:
-            plan.append((field, _TYPECODES[detail[0][1][0]]))
-        else:
-            plan.append((field, None))
-    _plans[cls] = plan
-    return plan

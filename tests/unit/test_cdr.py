@@ -50,3 +50,13 @@ def test_malformed_payloads_are_refused_without_allocating():
     names[4 + 16:4 + 20] = struct.pack("<I", 2**30)  # after the header: the name count
     with pytest.raises(ValueError, match="malformed"):
         types.deserialize(bytes(names), name)
+
+
+def test_a_wstring_field_is_refused_with_the_reason():
+    from rosbags.interfaces import Nodetype
+
+    from launcher.bus.cdr import Codec, Unsupported
+
+    codec = Codec(lambda name: [("text", (Nodetype.BASE, ("wstring", 0)))])
+    with pytest.raises(Unsupported, match="wstring fields are not supported"):
+        codec.serialize(object(), "x/msg/Wide")

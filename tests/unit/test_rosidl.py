@@ -71,17 +71,15 @@ def test_numeric_sequences_are_arrays_and_fixed_arrays_numpy_and_cdr_round_trips
 
     state = JointState(name=["a", "b"], position=[1.0, 2.0])
     assert isinstance(state.position, array.array) and state.position.typecode == "d"
-    data = registry().serialize(rosidl.to_store(state), "sensor_msgs/msg/JointState")
-    back = rosidl.from_store(registry().deserialize(data, "sensor_msgs/msg/JointState"),
-                             "sensor_msgs/msg/JointState")
+    data = registry().serialize(state, "sensor_msgs/msg/JointState")
+    back = registry().deserialize(data, "sensor_msgs/msg/JointState", rosidl.make)
     assert back == state and type(back) is JointState
     odometry = Odometry()
     odometry.pose.pose.position.x = 3.0
     assert type(odometry.pose.covariance).__name__ == "ndarray"  # float64[36], as rclpy
     odometry.pose.covariance[0] = 0.5
-    data = registry().serialize(rosidl.to_store(odometry), "nav_msgs/msg/Odometry")
-    back = rosidl.from_store(registry().deserialize(data, "nav_msgs/msg/Odometry"),
-                             "nav_msgs/msg/Odometry")
+    data = registry().serialize(odometry, "nav_msgs/msg/Odometry")
+    back = registry().deserialize(data, "nav_msgs/msg/Odometry", rosidl.make)
     assert back == odometry and back.pose.covariance[0] == 0.5
 
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 import threading
 from typing import Any
 
-from launcher.compat import rosidl
 from rclpy.task import Future
 
 CALL_TIMEOUT = 3600.0  # s, the longest a call waits for its answer unless told
@@ -35,12 +34,11 @@ class Client:
         if type(request) is not self.srv_type.Request:
             raise TypeError(f"Request must be instance of {self.srv_type.Request}, "
                             f"got {type(request)}")
-        return rosidl.to_store(request)
+        return request
 
     def call(self, request: Any, timeout_sec: float | None = None) -> Any:
-        answer = self._bus.call(self._check(request),
-                                CALL_TIMEOUT if timeout_sec is None else timeout_sec)
-        return rosidl.from_store(answer, self._bus.response_type)
+        return self._bus.call(self._check(request),
+                              CALL_TIMEOUT if timeout_sec is None else timeout_sec)
 
     def call_async(self, request: Any) -> Future:
         payload = self._check(request)
@@ -54,9 +52,8 @@ class Client:
 
         def run() -> None:
             try:
-                answer = rosidl.from_store(self._bus.call(payload, CALL_TIMEOUT),
-                                           self._bus.response_type)
-                outcome: tuple[Any, Any] = (future.set_result, answer)
+                outcome: tuple[Any, Any] = (future.set_result,
+                                            self._bus.call(payload, CALL_TIMEOUT))
             except Exception as exc:  # the caller sees it from future.result()
                 outcome = (future.set_exception, exc)
             if host is not None:

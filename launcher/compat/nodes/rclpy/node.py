@@ -189,16 +189,15 @@ class Node:
                        callback_group: Any = None) -> Service:
         self._check_alive()
         type_name = rosidl.type_name_of(srv_type)
-        request_type = type_name + "_Request"
 
-        def answer(request: Any, _store_response: Any) -> Any:
-            response = srv_type.Response()
-            result = callback(rosidl.from_store(request, request_type), response)
+        def answer(request: Any, response: Any) -> Any:
+            result = callback(request, response)
             if result is None:
                 raise RuntimeError("the service callback returned None: return the response")
-            return rosidl.to_store(result)
+            return result
         bus = self._bus.create_service(type_name, srv_name,
-                                       self._grouped(callback_group, answer))
+                                       self._grouped(callback_group, answer),
+                                       make=rosidl.make, new_response=srv_type.Response)
         service = Service(bus, srv_type, srv_name, callback, callback_group, qos_profile)
         self._entities.append(service)
         return service
@@ -207,7 +206,8 @@ class Node:
                       qos_profile: QoSProfile = qos_profile_services_default,
                       callback_group: Any = None) -> Client:
         self._check_alive()
-        bus = self._bus.create_client(rosidl.type_name_of(srv_type), srv_name)
+        bus = self._bus.create_client(rosidl.type_name_of(srv_type), srv_name,
+                                      make=rosidl.make)
         rosidl.service_class(rosidl.type_name_of(srv_type))
         client = Client(self, bus, srv_type, srv_name, callback_group, qos_profile)
         self._entities.append(client)

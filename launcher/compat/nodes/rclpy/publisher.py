@@ -4,8 +4,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from launcher.compat import rosidl
-
 
 class Publisher:
     def __init__(self, bus: Any, msg_type: Any, topic: str, qos_profile: Any,
@@ -32,7 +30,7 @@ class Publisher:
             return
         if type(msg) is not self.msg_type:
             raise TypeError(f"Expected {self.msg_type}, got {type(msg)}")
-        self._serialize(rosidl.to_store(msg))
+        self._serialize(msg)
 
     def get_subscription_count(self) -> int:
         return self._bus.get_subscription_count()

@@ -434,7 +434,7 @@ class Publisher(_Endpoint):
         if _state.shutdown.is_set():
             raise ROSException("publish() to a closed topic")
         message = _build(self.data_class, args, kwargs)
-        self._bus.publish(rosidl.to_store(message))
+        self._bus.publish(message)
 
     def get_num_connections(self) -> int:
         return 0 if self._bus is None else self._bus.get_subscription_count()
@@ -525,12 +525,11 @@ class Service:
         self.service_class, self.handler = service_class, handler
         self.type = rosidl.type_name_of(service_class)
         node = _need_node("Service")
-        request_type = self.type + "_Request"
 
-        def answer(request: Any, _store_response: Any) -> Any:
-            return rosidl.to_store(_response(service_class,
-                                             handler(rosidl.from_store(request, request_type))))
-        self._bus = node.create_service(self.type, name, answer)
+        def answer(request: Any, _given: Any) -> Any:
+            return _response(service_class, handler(request))
+        self._bus = node.create_service(self.type, name, answer, make=rosidl.make,
+                                        new_response=service_class.Response)
         self.resolved_name = self._bus.name
 
     def shutdown(self, reason: str = "") -> None:
@@ -556,7 +555,7 @@ class ServiceProxy:
     def _client(self) -> Any:
         if self._bus is None:
             node = _need_node("ServiceProxy")
-            self._bus = node.create_client(self.type, self._given)
+            self._bus = node.create_client(self.type, self._given, make=rosidl.make)
             self.resolved_name = self._bus.name
         return self._bus
 
@@ -569,11 +568,10 @@ class ServiceProxy:
         request = _build(self.request_class, args, kwargs)
         client = self._client()
         try:
-            answer = client.call(rosidl.to_store(request), 30.0)
+            return client.call(request, 30.0)
         except LaunchError as exc:
             raise ServiceException(f"service [{self.resolved_name}] call failed: {exc}"
                                    ) from None
-        return rosidl.from_store(answer, self.type + "_Response")
 
     __call__ = call
 
