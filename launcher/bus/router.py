@@ -123,7 +123,11 @@ def _until_idle(session: zenoh.Session, linger: float, stop: threading.Event) ->
             idle_since = time.monotonic()
             continue
         discovery.sweep_peer_sockets(discovery.socket_path().parent)
-        session.close()  # the socket goes with it; the lock goes when this process does
+        # the path goes first, so that nobody sees a socket that no longer answers; the lock
+        # goes when this process does
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(discovery.socket_path())
+        session.close()
         return
 
 
