@@ -3,10 +3,13 @@
 rosbags generates a serializer per type on first use and its generated code imports numpy:
 together ~0.1–0.2 s before a node's first message of each type. Here each type gets a small
 plan of its fields, made once, and messages are written and read by walking it, with the
-standard library's struct. Messages are any objects with the fields as attributes (rosbags'
-dataclasses, launcher's rclpy classes); reading builds them through a `make(type, values)`
-the caller gives, so each API gets its own classes without a copy. Numeric arrays are read as
-`array.array`s; the caller turns them into what its classes hold.
+standard library's struct: consecutive fixed-size fields, nested messages of them included
+(a Twist, a Pose, a header's stamp), are one run read and written by one precompiled struct per
+start alignment, their values gathered by one attrgetter. Messages are any objects with the
+fields as attributes (rosbags' dataclasses, launcher's rclpy classes); reading builds them
+through a `make(type, values)` the caller gives, so each API gets its own classes without a
+copy. Numeric arrays are read as `array.array`s; the caller turns them into what its classes
+hold.
 
 Types with `wstring` fields are refused (rosbags' CDR has no `wstring` either).
 """
@@ -14,6 +17,7 @@ Types with `wstring` fields are refused (rosbags' CDR has no `wstring` either).
 from __future__ import annotations
 
 import array
+import operator
 import struct
 from collections.abc import Callable
 from typing import Any
@@ -34,7 +38,7 @@ _U32 = struct.Struct("<I")
 _WSTRING = "wstring fields are not supported (use string: UTF-8)"
 
 # plan ops: (field, kind, detail)
-PRIM, STRING, MSG, PRIMS, STRINGS, MSGS = range(6)
+PRIM, STRING, MSG, PRIMS, STRINGS, MSGS, RUN = range(7)
 
 
 class Unsupported(Exception):
@@ -49,6 +53,8 @@ class Codec:
     def __init__(self, fields_of: Callable[[str], list[tuple[str, Any]]]) -> None:
         self._fields_of = fields_of
         self._plans: dict[str, list[tuple[str, int, Any]]] = {}
+        self._ops: dict[str, list[tuple[str, int, Any]]] = {}
+        self._leaves: dict[str, list[tuple[str, str]] | None] = {}
 
     def plan(self, name: str) -> list[tuple[str, int, Any]]:
         found = self._plans.get(name)
@@ -82,13 +88,74 @@ class Codec:
                 self.plan(detail[0])
         return ops
 
+    # --- runs of fixed-size fields --------------------------------------------------------
+    def _fixed_leaves(self, name: str) -> list[tuple[str, str]] | None:
+        """(dotted path, struct format) of every field of a type made of fixed-size
+        primitives and messages of them only; None for any other type."""
+        if name in self._leaves:
+            return self._leaves[name]
+        leaves: list[tuple[str, str]] | None = []
+        for field, kind, detail in self.plan(name):
+            inner = self._fixed_leaves(detail) if kind == MSG else None
+            if kind == PRIM:
+                leaves.append((field, detail[0]))
+            elif inner is not None:
+                leaves += [(f"{field}.{path}", fmt) for path, fmt in inner]
+            else:
+                leaves = None
+                break
+        self._leaves[name] = leaves
+        return leaves
+
+    def ops(self, name: str) -> list[tuple[str, int, Any]]:
+        """The plan with each stretch of fixed-size fields made one RUN."""
+        found = self._ops.get(name)
+        if found is not None:
+            return found
+        ops: list[tuple[str, int, Any]] = []
+        stretch: list[tuple[str, int, Any]] = []
+        for op in self.plan(name):
+            field, kind, detail = op
+            if kind == PRIM or (kind == MSG and self._fixed_leaves(detail) is not None):
+                stretch.append(op)
+                continue
+            if stretch:
+                ops.append(("", RUN, _Run(self, stretch)))
+                stretch = []
+            ops.append(op)
+        if stretch:
+            ops.append(("", RUN, _Run(self, stretch)))
+        self._ops[name] = ops
+        return ops
+
     # --- writing ----------------------------------------------------------------------------
     def serialize(self, message: Any, name: str) -> bytes:
         out = bytearray(HEADER)
-        self._write(out, message, self.plan(name))
+        try:
+            self._write_fast(out, message, self.ops(name))
+        except struct.error:  # written again field by field, to say which field
+            out = bytearray(HEADER)
+            self._write(out, message, self.plan(name))
         return bytes(out)
 
-    def _write(self, out: bytearray, message: Any, ops: list[tuple[str, int, Any]]) -> None:
+    def _write_fast(self, out: bytearray, message: Any, ops: list[tuple[str, int, Any]]
+                    ) -> None:
+        for field, kind, detail in ops:
+            if kind == RUN:
+                out += detail.structs[(len(out) - 4) % 8].pack(*detail.values(message))
+            elif kind == MSG:
+                self._write_fast(out, getattr(message, field), self.ops(detail))
+            elif kind == MSGS:
+                inner, fixed = detail
+                value = getattr(message, field)
+                _write_count(out, field, len(value), fixed)
+                inner_ops = self.ops(inner)
+                for item in value:
+                    self._write_fast(out, item, inner_ops)
+            else:
+                self._write(out, message, ((field, kind, detail),))
+
+    def _write(self, out: bytearray, message: Any, ops: Any) -> None:
         for field, kind, detail in ops:
             value = getattr(message, field)
             if kind == PRIM:
@@ -144,8 +211,16 @@ class Codec:
               make: Callable[[str, list[Any]], Any]) -> tuple[Any, int]:
         values: list[Any] = []
         try:
-            for _field, kind, detail in self.plan(name):
-                if kind == PRIM:
+            for _field, kind, detail in self.ops(name):
+                if kind == RUN:
+                    structure = detail.structs[pos % 8]
+                    flat = structure.unpack_from(view, pos)
+                    pos += structure.size
+                    if detail.shape is None:
+                        values += flat
+                    else:
+                        _rebuild(detail.shape, flat, 0, make, values)
+                elif kind == PRIM:
                     fmt, size = detail
                     pos += -pos % size
                     values.append(struct.unpack_from("<" + fmt, view, pos)[0])
@@ -191,6 +266,62 @@ class Codec:
         except struct.error:
             raise CdrError(f"the payload ends inside a {name}") from None
         return make(name, values), pos
+
+
+class _Run:
+    """Consecutive fixed-size fields of a message: their values gathered by one attrgetter,
+    written and read by one struct per start alignment (CDR aligns each primitive to its size,
+    at most 8, from the start of the payload after its header), and on reading rebuilt into
+    the nested messages they came from (`shape`; None when they are all primitives)."""
+
+    def __init__(self, codec: Codec, ops: list[tuple[str, int, Any]]) -> None:
+        leaves: list[tuple[str, str]] = []
+        self.shape: list[Any] | None = None
+        for field, kind, detail in ops:
+            if kind == PRIM:
+                leaves.append((field, detail[0]))
+            else:
+                inner = codec._fixed_leaves(detail) or []
+                leaves += [(f"{field}.{path}", fmt) for path, fmt in inner]
+                self.shape = []
+        if self.shape is not None:
+            self.shape = [_shape(codec, kind, detail) for _field, kind, detail in ops]
+        getter = operator.attrgetter(*(path for path, _ in leaves))
+        self.values = getter if len(leaves) > 1 else lambda message: (getter(message),)
+        self.structs = [_aligned([fmt for _, fmt in leaves], start) for start in range(8)]
+
+
+def _shape(codec: Codec, kind: int, detail: Any) -> Any:
+    """None for a primitive; (type, [shapes of its fields]) for a nested message."""
+    if kind == PRIM:
+        return None
+    return detail, [_shape(codec, k, d) for _f, k, d in codec.plan(detail)]
+
+
+def _rebuild(shape: list[Any], flat: tuple[Any, ...], index: int,
+             make: Callable[[str, list[Any]], Any], values: list[Any]) -> int:
+    """Append the values of `shape`'s fields, nested messages made, from flat[index:]; the
+    index after them."""
+    for item in shape:
+        if item is None:
+            values.append(flat[index])
+            index += 1
+        else:
+            inner: list[Any] = []
+            index = _rebuild(item[1], flat, index, make, inner)
+            values.append(make(item[0], inner))
+    return index
+
+
+def _aligned(formats: list[str], start: int) -> struct.Struct:
+    """One struct for primitives written from a position `start` (mod 8), with CDR's padding."""
+    text, position = ["<"], start
+    for fmt in formats:
+        size = struct.calcsize(fmt)
+        pad = -position % size
+        text.append("x" * pad + fmt)
+        position += pad + size
+    return struct.Struct("".join(text))
 
 
 def _base(kind: str) -> tuple[int, Any]:

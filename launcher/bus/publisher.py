@@ -49,6 +49,7 @@ class Publisher:
                     heartbeat=None, sporadic_heartbeat=HEARTBEAT) if qos.reliable else None)
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
+        self._write = types.writer(self.type_name)
         self._token = host.announce(keys.PUBLISHER, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)
         # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
@@ -70,7 +71,7 @@ class Publisher:
         self._host.enqueue(callback, self._matching)
 
     def publish(self, message: Any) -> None:
-        self.publish_raw(registry().serialize(message, self.type_name))
+        self.publish_raw(self._write(message))
 
     def publish_raw(self, payload: bytes) -> None:
         """Publish a CDR payload as it is (bag play, bridges)."""

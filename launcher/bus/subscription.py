@@ -33,7 +33,8 @@ class Subscription:
         types = registry()
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host, self._callback = topic, qos, host, callback
-        self._raw, self._inline, self._make = raw, inline, make
+        self._raw, self._inline = raw, inline
+        self._read = types.reader(self.type_name, make)
         # (before declaring: a transient local subscriber gets history samples at once)
         self._pending: deque[bytes] = deque(maxlen=max(qos.depth, 1))
         self._lock = threading.Lock()
@@ -88,7 +89,7 @@ class Subscription:
             self._callback(payload)
             return
         try:
-            message = registry().deserialize(payload, self.type_name, self._make)
+            message = self._read(payload)
         except Exception as exc:  # malformed payload: dropped, said once per topic
             if not self._warned:
                 self._warned = True

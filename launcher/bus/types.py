@@ -11,7 +11,7 @@ from __future__ import annotations
 import importlib.util
 import os
 import pickle
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
@@ -184,6 +184,32 @@ class TypeRegistry:
             return self.codec.serialize(message, name)
         except Unsupported as exc:
             raise LaunchError(f"{name}: {exc}") from None
+
+    def writer(self, name: str) -> Callable[[Any], bytes]:
+        """serialize() for one type, its name resolved once (a publisher's)."""
+        name = self.ensure(name)
+        serialize = self.codec.serialize
+
+        def write(message: Any) -> bytes:
+            try:
+                return serialize(message, name)
+            except Unsupported as exc:
+                raise LaunchError(f"{name}: {exc}") from None
+        return write
+
+    def reader(self, name: str, make: Any = None) -> Callable[[bytes | memoryview], Any]:
+        """deserialize() for one type, its name resolved once (a subscription's)."""
+        name = self.ensure(name)
+        deserialize, make = self.codec.deserialize, make or self._store_message
+
+        def read(data: bytes | memoryview) -> Any:
+            try:
+                return deserialize(data, name, make)
+            except Unsupported as exc:
+                raise LaunchError(f"{name}: {exc}") from None
+            except CdrError as exc:
+                raise ValueError(f"malformed {name}: {exc}") from None
+        return read
 
     def deserialize(self, data: bytes | memoryview, name: str,
                     make: Any = None) -> Any:

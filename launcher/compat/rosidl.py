@@ -21,7 +21,9 @@ from __future__ import annotations
 
 import array
 import math
+import operator
 from collections.abc import Callable
+from itertools import repeat
 from typing import Any
 
 from rosbags.interfaces import Nodetype
@@ -287,12 +289,10 @@ def _base_checker(field: str, base: str, bound: int) -> Callable[[Any], Any]:
 def _property(field: str, check: Callable[[Any], Any]) -> property:
     slot = "_" + field
 
-    def get(self: Any) -> Any:
-        return getattr(self, slot)
-
     def put(self: Any, value: Any) -> None:
         object.__setattr__(self, slot, check(value))
-    return property(get, put, doc=f"Message field '{field}'.")
+    # (a getter in C: reading fields is what serialising a message does most)
+    return property(operator.attrgetter(slot), put, doc=f"Message field '{field}'.")
 
 
 # --- the classes ----------------------------------------------------------------------------
@@ -392,17 +392,21 @@ def make(type_name: str, values: list[Any]) -> Any:
     """A message from its field values as the CDR reader gives them (registry().deserialize's
     `make`): numeric sequences stay array.arrays, fixed numeric arrays become numpy arrays."""
     cls = _classes.get(type_name) or message_class(type_name)
-    message = object.__new__(cls)
-    fixed = _fixed_arrays(cls)
+    message = _new(cls)
+    fixed = _fixed.get(cls)
+    if fixed is None:
+        fixed = _fixed_arrays(cls)
     if fixed:
         import numpy
 
         for index, dtype in fixed.items():
             values[index] = numpy.array(values[index], dtype=dtype)
-    setter = object.__setattr__
-    for slot, value in zip(cls._SLOTS, values, strict=True):
-        setter(message, slot, value)
+    # every slot set by one C loop (object.__setattr__ gives None, so `any` runs it through)
+    any(map(_set, repeat(message), cls._SLOTS, values))
     return message
+
+
+_new, _set = object.__new__, object.__setattr__
 
 
 _fixed: dict[type, dict[int, str]] = {}

@@ -60,3 +60,29 @@ def test_a_wstring_field_is_refused_with_the_reason():
     codec = Codec(lambda name: [("text", (Nodetype.BASE, ("wstring", 0)))])
     with pytest.raises(Unsupported, match="wstring fields are not supported"):
         codec.serialize(object(), "x/msg/Wide")
+
+
+@pytest.mark.parametrize("frame", ["", "a", "ab", "abc", "abcd", "abcde", "abcdef", "abcdefg"])
+def test_runs_of_fixed_fields_are_padded_from_wherever_a_string_left_them(frame):
+    """After a string of each length mod 8, the runs (orientation, covariances, vectors) start
+    at every alignment; the bytes and the values read back are rosbags'."""
+    types = registry()
+    name = "sensor_msgs/msg/Imu"
+    message = build(name, {"header": {"frame_id": frame, "stamp": {"sec": -3, "nanosec": 9}},
+                           "orientation": {"x": 0.5, "w": -1.25},
+                           "angular_velocity": {"y": 2.0}, "linear_acceleration": {"z": 9.81},
+                           "orientation_covariance": [float(i) for i in range(9)]})
+    data = types.serialize(message, name)
+    assert data == bytes(types.store.serialize_cdr(message, name))
+    back = types.deserialize(data, name)
+    assert back.header.frame_id == frame and back.header.stamp.sec == -3
+    assert (back.orientation.x, back.orientation.w) == (0.5, -1.25)
+    assert back.linear_acceleration.z == 9.81 and back.orientation_covariance[8] == 8.0
+
+
+def test_a_value_of_the_wrong_kind_in_a_run_names_its_field():
+    types = registry()
+    message = build("geometry_msgs/msg/Twist", {})
+    message.angular.z = "fast"
+    with pytest.raises(Exception, match="z"):
+        types.serialize(message, "geometry_msgs/msg/Twist")

@@ -45,6 +45,7 @@ class Executor:
         self._ready: deque[Task] = deque()
         self._lock = threading.RLock()
         self._is_shutdown = False
+        self._waiting = 0  # threads in _next_work: a node added is news only to them
         self._context.on_shutdown(self.wake)
 
     @property
@@ -59,7 +60,8 @@ class Executor:
                 return False
             self._nodes = (*self._nodes, node)
             node.executor = self
-        self.wake()
+            if self._waiting:
+                self.wake()
         return True
 
     def remove_node(self, node: Any) -> None:
@@ -97,6 +99,15 @@ class Executor:
     def _next_work(self, timeout_sec: float | None) -> tuple[Any, Any, tuple] | None:
         """(node or None, callback, args) of the next ready work, waiting up to timeout_sec
         (None: until some comes); None when none came."""
+        with self._lock:
+            self._waiting += 1
+        try:
+            return self._wait_for_work(timeout_sec)
+        finally:
+            with self._lock:
+                self._waiting -= 1
+
+    def _wait_for_work(self, timeout_sec: float | None) -> tuple[Any, Any, tuple] | None:
         deadline = None if timeout_sec is None or timeout_sec < 0 else \
             time.monotonic() + timeout_sec
         while True:
