@@ -22,7 +22,7 @@ import struct
 from collections.abc import Callable
 from typing import Any
 
-from rosbags.interfaces import Nodetype
+from launcher.bus import kinds
 
 HEADER = b"\x00\x01\x00\x00"  # CDR, little-endian
 _FORMATS = {"bool": "?", "byte": "B", "char": "B", "int8": "b", "uint8": "B",
@@ -62,14 +62,14 @@ class Codec:
             return found
         ops: list[tuple[str, int, Any]] = []
         for field, (kind, detail) in self._fields_of(name):
-            if kind == Nodetype.BASE:
+            if kind == kinds.BASE:
                 ops.append((field, *_base(detail[0])))
-            elif kind == Nodetype.NAME:
+            elif kind == kinds.NAME:
                 ops.append((field, MSG, detail))
             else:
                 (inner_kind, inner_detail), count = detail
-                fixed = count if kind == Nodetype.ARRAY else None
-                if inner_kind == Nodetype.NAME:
+                fixed = count if kind == kinds.ARRAY else None
+                if inner_kind == kinds.NAME:
                     ops.append((field, MSGS, (inner_detail, fixed)))
                 elif inner_detail[0] in ("string", "wstring"):
                     if inner_detail[0] == "wstring":

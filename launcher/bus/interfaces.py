@@ -11,9 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from rosbags.interfaces import Nodetype as T
-from rosbags.typesys import get_types_from_msg
-
+from launcher.bus import kinds as T
 from launcher.errors import LaunchError, Location
 
 EVENT_INFO = "service_msgs/msg/ServiceEventInfo"
@@ -24,6 +22,8 @@ EVENT_INFO_FIELDS = ([], [("event_type", (T.BASE, ("uint8", 0))), ("stamp", (T.N
 
 
 def parse_msg(text: str, name: str, file: Path) -> dict[str, Any]:
+    from rosbags.typesys import get_types_from_msg  # (only for packages' own definitions)
+
     try:
         parsed = dict(get_types_from_msg(text, name))
     except Exception as exc:  # rosbags' parser errors carry the reason

@@ -8,8 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from rosbags.interfaces import Nodetype
-
+from launcher.bus import kinds
 from launcher.bus.types import registry
 from launcher.errors import LaunchError, did_you_mean
 
@@ -46,22 +45,22 @@ def build(type_name: str, values: Any, path: str = "") -> Any:
     return types.message_class(name)(**kwargs)
 
 
-def _value(kind: Nodetype, detail: Any, value: Any, path: str) -> Any:
-    if kind == Nodetype.BASE:
+def _value(kind: int, detail: Any, value: Any, path: str) -> Any:
+    if kind == kinds.BASE:
         return _primitive(detail[0], value, path)
-    if kind == Nodetype.NAME:
+    if kind == kinds.NAME:
         return build(detail, value, f"{path}.")
     (inner_kind, inner_detail), count = detail
     items = [] if value is None else value
     if not isinstance(items, list | tuple) and type(items).__name__ != "ndarray":
         raise MessageError(f"{path}: expected a list, got {value!r}")
-    if kind == Nodetype.ARRAY and value is None:
+    if kind == kinds.ARRAY and value is None:
         items = [None] * count
-    if kind == Nodetype.ARRAY and len(items) != count:
+    if kind == kinds.ARRAY and len(items) != count:
         raise MessageError(f"{path}: expected {count} items, got {len(items)}")
     converted = [_value(inner_kind, inner_detail, item, f"{path}[{i}]")
                  for i, item in enumerate(items)]
-    if inner_kind == Nodetype.BASE and inner_detail[0] not in ("string", "wstring"):
+    if inner_kind == kinds.BASE and inner_detail[0] not in ("string", "wstring"):
         import numpy as np  # rosbags wants primitive arrays as numpy arrays
 
         return np.array(converted, dtype=_DTYPES.get(inner_detail[0], inner_detail[0]))

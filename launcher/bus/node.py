@@ -112,10 +112,11 @@ class Node:
                        callback: Callable[[Any, Any], Any],
                        space: keys.Space | None = None,
                        make: Callable[[str, list[Any]], Any] | None = None,
-                       new_response: Callable[[], Any] | None = None) -> Service:
+                       new_response: Callable[[], Any] | None = None,
+                       type_hash: str | None = None) -> Service:
         return self._host.adopt(Service(self._host, type_name,
                                         self.resolve(name, "service name"), callback, space,
-                                        make, new_response))
+                                        make, new_response, type_hash))
 
     def create_client(self, type_name: str, name: str,
                       space: keys.Space | None = None,

@@ -13,6 +13,13 @@ BOOL_ARRAY, INTEGER_ARRAY, DOUBLE_ARRAY, STRING_ARRAY = 6, 7, 8, 9
 VALUE = "rcl_interfaces/msg/ParameterValue"
 LIST, GET, SET = ("rcl_interfaces/srv/ListParameters", "rcl_interfaces/srv/GetParameters",
                   "rcl_interfaces/srv/SetParameters")
+# Their RIHS01 hashes (Jazzy's rcl_interfaces; tests/unit check them against the .srv files):
+# with them, a node offers the services without reading their definitions until asked.
+HASHES = {
+    LIST: "RIHS01_3e6062bfbb27bfb8730d4cef2558221f51a11646d78e7bb30a1e83afac3aad9d",
+    GET: "RIHS01_bf9803d5c74cf989a5de3e0c2e99444599a627c7ff75f97b8c05b01003675cbc",
+    SET: "RIHS01_56eed9a67e169f9cb6c1f987bc88f868c14a8fc9f743a263bc734c154015d7e0",
+}
 
 
 def to_message(value: Any) -> Any:
@@ -74,6 +81,6 @@ def serve(node: Any) -> None:
         response.results = results
         return response
 
-    node.create_service(LIST, "~/list_parameters", list_parameters)
-    node.create_service(GET, "~/get_parameters", get_parameters)
-    node.create_service(SET, "~/set_parameters", set_parameters)
+    node.create_service(LIST, "~/list_parameters", list_parameters, type_hash=HASHES[LIST])
+    node.create_service(GET, "~/get_parameters", get_parameters, type_hash=HASHES[GET])
+    node.create_service(SET, "~/set_parameters", set_parameters, type_hash=HASHES[SET])

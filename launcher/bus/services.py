@@ -26,25 +26,42 @@ from launcher.errors import LaunchError
 class Service:
     """Answers requests: `callback(request, response) -> response`, run by the executor.
     `make` and `new_response` give requests and responses of other classes (rclpy's, see
-    TypeRegistry.deserialize)."""
+    TypeRegistry.deserialize). Given its `type_hash` (a fixed type's, like the parameter
+    services every node offers), the type's definitions are read at the first request, not at
+    the node's start."""
 
     def __init__(self, host: Host, type_name: str, name: str,
                  callback: Any, space: keys.Space | None = None,
                  make: Callable[[str, list[Any]], Any] | None = None,
-                 new_response: Callable[[], Any] | None = None) -> None:
+                 new_response: Callable[[], Any] | None = None,
+                 type_hash: str | None = None) -> None:
         types = registry()
         self.type_name = type_name
-        self.request_type, self.response_type = types.service(type_name)
+        self._halves: tuple[str, str] | None = None
+        if type_hash is None:  # an unknown type is an error now
+            self._halves = types.service(type_name)
+            type_hash = types.service_hash(type_name)
         self.name, self._host, self._callback = name, host, callback
         self._make = make
         self._new_response = new_response or (lambda: types.message_class(
             self.response_type)(**_zero_fields(self.response_type)))
         space = space or host.space
-        key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name),
-                               space)
+        key = keys.service_key(keys.DOMAIN, name, type_name, type_hash, space)
         self._queryable = host.session.declare_queryable(key, self._on_query)
-        self._token = host.announce(keys.SERVICE, name, type_name,
-                                    types.service_hash(type_name), QoS().key(), space)
+        self._token = host.announce(keys.SERVICE, name, type_name, type_hash, QoS().key(),
+                                    space)
+
+    @property
+    def request_type(self) -> str:
+        if self._halves is None:
+            self._halves = registry().service(self.type_name)
+        return self._halves[0]
+
+    @property
+    def response_type(self) -> str:
+        if self._halves is None:
+            self._halves = registry().service(self.type_name)
+        return self._halves[1]
 
     def _on_query(self, query: zenoh.Query) -> None:
         self._host.enqueue(self._answer, query)

@@ -2,12 +2,15 @@
 
 Definitions come from rosbags' Jazzy typestore (one pinned distro, so hashes do not move) and
 from `msg/*.msg` and `srv/*.srv` files of packages. Building the whole Jazzy typestore takes
-~0.2 s, so its field definitions are cached once as a pickle (per rosbags version) and only
-the types a process uses are registered.
+~0.2 s, so its field definitions and type hashes are cached once as a pickle (per rosbags
+version), with plain numbers for the kinds of fields, so that a node reads them without
+importing rosbags. rosbags' Typestore itself (its message classes, for launcher's own node API
+and bags; hashes of package types) is made on first use, with the types used so far.
 """
 
 from __future__ import annotations
 
+import contextlib
 import importlib.util
 import os
 import pickle
@@ -15,8 +18,8 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-from launcher.bus import interfaces
-from launcher.bus.cdr import PRIMS, CdrError, Codec, Unsupported
+from launcher.bus import interfaces, kinds
+from launcher.bus.cdr import MSG, MSGS, PRIMS, CdrError, Codec, Unsupported
 from launcher.errors import LaunchError, did_you_mean
 
 DISTRO = "ros2_jazzy"
@@ -28,34 +31,50 @@ class UnknownType(LaunchError):
 
 def _cache_file() -> Path:
     """Named after the store file's size and time: a new rosbags makes a new cache."""
-    spec = importlib.util.find_spec("rosbags.typesys")
-    assert spec is not None and spec.origin is not None
-    store = os.path.join(os.path.dirname(spec.origin), "stores", f"{DISTRO}.py")
+    spec = importlib.util.find_spec("rosbags")  # (found, not imported)
+    assert spec is not None and spec.submodule_search_locations
+    store = os.path.join(spec.submodule_search_locations[0], "typesys", "stores",
+                         f"{DISTRO}.py")
     stat = os.stat(store)
     base = os.environ.get("LAUNCHER_CACHE_DIR") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "launcher")
-    return Path(base) / f"types-{DISTRO}-{stat.st_size}-{int(stat.st_mtime)}.pickle"
+    return Path(base) / f"types2-{DISTRO}-{stat.st_size}-{int(stat.st_mtime)}.pickle"
 
 
-def _distro_fielddefs() -> dict[str, Any]:
+def _distro() -> tuple[dict[str, Any], dict[str, str]]:
+    """(field definitions, RIHS01 hashes) of every type of the distro."""
     path = _cache_file()
     try:
         with open(path, "rb") as handle:
-            return pickle.load(handle)
-    except (OSError, pickle.UnpicklingError, EOFError):
+            fielddefs, hashes = pickle.load(handle)
+        return fielddefs, hashes
+    except (OSError, pickle.UnpicklingError, EOFError, ValueError, TypeError):
         pass
-    from importlib import import_module
+    from rosbags.typesys import Stores, get_typestore
 
-    fielddefs = dict(import_module(f"rosbags.typesys.stores.{DISTRO}").FIELDDEFS)
+    store = get_typestore(getattr(Stores, DISTRO.upper()))
+    fielddefs = {name: plain(definition) for name, definition in store.fielddefs.items()}
+    hashes = {name: store.hash_rihs01(name) for name in fielddefs}
     try:  # a cache only: a home that cannot be written costs start-up time, nothing else
         path.parent.mkdir(parents=True, exist_ok=True)
         temporary = path.with_suffix(f".{os.getpid()}.tmp")
         with open(temporary, "wb") as handle:
-            pickle.dump(fielddefs, handle, protocol=pickle.HIGHEST_PROTOCOL)
+            pickle.dump((fielddefs, hashes), handle, protocol=pickle.HIGHEST_PROTOCOL)
         os.replace(temporary, path)
     except OSError:
         pass
-    return fielddefs
+    return fielddefs, hashes
+
+
+def plain(value: Any) -> Any:
+    """A field definition with rosbags' Nodetype members as the numbers they are."""
+    if isinstance(value, tuple):
+        return tuple(plain(item) for item in value)
+    if isinstance(value, list):
+        return [plain(item) for item in value]
+    if isinstance(value, int) and not isinstance(value, bool):
+        return int(value)
+    return value
 
 
 def normalize(name: str) -> str:
@@ -68,12 +87,13 @@ def normalize(name: str) -> str:
 
 class TypeRegistry:
     def __init__(self) -> None:
-        from rosbags.typesys.store import Typestore
-
-        self.store = Typestore()
+        self.fielddefs: dict[str, Any] = {}  # the types in use, with what they name
+        self._store: Any = None
+        self._unregistered: dict[str, Any] = {}  # ensured since the store last looked
         self._available: dict[str, Any] = {}
         self._loaded_distro = False
         self._hashes: dict[str, str] = {}
+        self._distro_hashes: dict[str, str] = {}
         self.services: dict[str, dict[str, Any]] = {}  # service -> its hashing definitions
         self._index: Any = None
         self._codec: Any = None
@@ -82,23 +102,40 @@ class TypeRegistry:
     # --- definitions ------------------------------------------------------------------------
     def _definitions(self) -> dict[str, Any]:
         if not self._loaded_distro:
-            self._available = {**_distro_fielddefs(), **self._available}
+            fielddefs, self._distro_hashes = _distro()
+            self._available = {**fielddefs, **self._available}
             self._loaded_distro = True
         return self._available
+
+    @property
+    def store(self) -> Any:
+        """rosbags' Typestore with every type in use registered (made on first use)."""
+        if self._store is None:
+            from rosbags.typesys.store import Typestore
+
+            self._store = Typestore()
+            self._unregistered = dict(self.fielddefs)
+        if self._unregistered:
+            self._store.register({k: v for k, v in self._unregistered.items()
+                                  if k not in self._store.fielddefs})
+            self._unregistered = {}
+        return self._store
 
     def known(self) -> Iterable[str]:
         return self._definitions().keys()
 
     def ensure(self, name: str) -> str:
         name = normalize(name)
-        if name in self.store.fielddefs:
+        if name in self.fielddefs:
             return name
         available = self._definitions()
         if name not in available and not self._from_package(name):
             raise UnknownType(f"unknown message type '{name}'{did_you_mean(name, available)}")
         needed: dict[str, Any] = {}
         self._collect(name, available, needed)
-        self.store.register({k: v for k, v in needed.items() if k not in self.store.fielddefs})
+        self.fielddefs.update(needed)
+        if self._store is not None:
+            self._unregistered.update(needed)
         return name
 
     def _from_package(self, name: str) -> bool:
@@ -150,16 +187,19 @@ class TypeRegistry:
             from rosbags.typesys.store import Typestore
 
             hashing = Typestore()
-            hashing.fielddefs.update({t: self.store.fielddefs[t] for t in self.store.fielddefs})
+            hashing.fielddefs.update(self.fielddefs)
             hashing.fielddefs.update(self.services[normalize(name)])
             hashing.fielddefs.setdefault(interfaces.TIME, self._definitions()[interfaces.TIME])
             self._hashes[name] = hashing.hash_rihs01(normalize(name))
         return self._hashes[name]
 
     def _collect(self, name: str, available: dict[str, Any], out: dict[str, Any]) -> None:
-        if name in out or name in self.store.fielddefs:
+        if name in out or name in self.fielddefs:
             return
-        out[name] = available[name]
+        constants, fields = available[name]
+        # an empty structure is one uint8, as rosbags and ROS 2 write it
+        out[name] = (constants, fields or [("structure_needs_at_least_one_member",
+                                            (kinds.BASE, ("uint8", 0)))])
         for _, (kind, detail) in available[name][1]:
             for candidate in _referenced(kind, detail):
                 if candidate not in available and "/" in candidate:
@@ -169,7 +209,8 @@ class TypeRegistry:
 
     # --- messages ---------------------------------------------------------------------------
     def message_class(self, name: str) -> type:
-        return self.store.types[self.ensure(name)]
+        name = self.ensure(name)  # (before the store, which registers what is ensured)
+        return self.store.types[name]
 
     @property
     def codec(self) -> Any:
@@ -200,6 +241,11 @@ class TypeRegistry:
     def reader(self, name: str, make: Any = None) -> Callable[[bytes | memoryview], Any]:
         """deserialize() for one type, its name resolved once (a subscription's)."""
         name = self.ensure(name)
+        if make is None:  # rosbags' classes (and numpy for their arrays) now, not at the
+            self.store  # noqa: B018 - first message
+            with contextlib.suppress(Unsupported):  # (said at the first message)
+                if self._numeric_arrays(name, set()):
+                    import numpy  # noqa: F401
         deserialize, make = self.codec.deserialize, make or self._store_message
 
         def read(data: bytes | memoryview) -> Any:
@@ -210,6 +256,16 @@ class TypeRegistry:
             except CdrError as exc:
                 raise ValueError(f"malformed {name}: {exc}") from None
         return read
+
+    def _numeric_arrays(self, name: str, seen: set[str]) -> bool:
+        """Whether a type holds numeric arrays, itself or in the types it names."""
+        seen.add(name)
+        for _field, kind, detail in self.codec.plan(name):
+            inner = detail if kind == MSG else detail[0] if kind == MSGS else None
+            if kind == PRIMS or (inner is not None and inner not in seen
+                                 and self._numeric_arrays(inner, seen)):
+                return True
+        return False
 
     def deserialize(self, data: bytes | memoryview, name: str,
                     make: Any = None) -> Any:
@@ -240,11 +296,14 @@ class TypeRegistry:
     def type_hash(self, name: str) -> str:
         name = self.ensure(name)
         if name not in self._hashes:
-            self._hashes[name] = self.store.hash_rihs01(name)
+            if name in self._distro_hashes:  # (a package cannot redefine a distro type)
+                self._hashes[name] = self._distro_hashes[name]
+            else:
+                self._hashes[name] = self.store.hash_rihs01(name)
         return self._hashes[name]
 
     def fields(self, name: str) -> list[tuple[str, Any]]:
-        return list(self.store.fielddefs[self.ensure(name)][1])
+        return list(self.fielddefs[self.ensure(name)][1])
 
 
 def _referenced(kind: Any, detail: Any) -> list[str]:

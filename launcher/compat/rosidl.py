@@ -26,8 +26,7 @@ from collections.abc import Callable
 from itertools import repeat
 from typing import Any
 
-from rosbags.interfaces import Nodetype
-
+from launcher.bus import kinds
 from launcher.bus.types import normalize, registry
 
 _INT_RANGES = {"byte": (0, 255), "char": (0, 255), "octet": (0, 255),
@@ -129,23 +128,23 @@ def _equal(a: Any, b: Any) -> bool:
 
 
 # --- field kinds --------------------------------------------------------------------------
-def _idl(kind: Nodetype, detail: Any) -> str:
-    if kind == Nodetype.BASE:
+def _idl(kind: int, detail: Any) -> str:
+    if kind == kinds.BASE:
         base, bound = detail
         name = _IDL_NAMES.get(base, base)
         return f"{name}<={bound}" if bound and base in ("string", "wstring") else name
-    if kind == Nodetype.NAME:
+    if kind == kinds.NAME:
         package, _, name = detail.split("/")
         return f"{package}/{name}"
     (inner_kind, inner_detail), count = detail
     inner = _idl(inner_kind, inner_detail)
-    if kind == Nodetype.ARRAY:
+    if kind == kinds.ARRAY:
         return f"{inner}[{count}]"
     return f"sequence<{inner}, {count}>" if count else f"sequence<{inner}>"
 
 
-def _default(kind: Nodetype, detail: Any) -> Callable[[], Any]:
-    if kind == Nodetype.BASE:
+def _default(kind: int, detail: Any) -> Callable[[], Any]:
+    if kind == kinds.BASE:
         base = detail[0]
         if base in ("string", "wstring"):
             return str
@@ -154,12 +153,12 @@ def _default(kind: Nodetype, detail: Any) -> Callable[[], Any]:
         if base in ("float32", "float64"):
             return float
         return int
-    if kind == Nodetype.NAME:
+    if kind == kinds.NAME:
         return lambda: message_class(detail)()
     (inner_kind, inner_detail), count = detail
-    if inner_kind == Nodetype.BASE and inner_detail[0] not in ("string", "wstring", "bool"):
+    if inner_kind == kinds.BASE and inner_detail[0] not in ("string", "wstring", "bool"):
         code = _TYPECODES[inner_detail[0]]
-        if kind == Nodetype.ARRAY:
+        if kind == kinds.ARRAY:
             dtype = _DTYPES.get(inner_detail[0], inner_detail[0])
 
             def zeros() -> Any:
@@ -168,17 +167,17 @@ def _default(kind: Nodetype, detail: Any) -> Callable[[], Any]:
                 return numpy.zeros(count, dtype=dtype)
             return zeros
         return lambda: array.array(code)
-    if kind == Nodetype.ARRAY:
+    if kind == kinds.ARRAY:
         item = _default(inner_kind, inner_detail)
         return lambda: [item() for _ in range(count)]
     return list
 
 
-def _checker(field: str, kind: Nodetype, detail: Any) -> Callable[[Any], Any]:
+def _checker(field: str, kind: int, detail: Any) -> Callable[[Any], Any]:
     """A function that checks a value for the field and returns what is stored."""
-    if kind == Nodetype.BASE:
+    if kind == kinds.BASE:
         return _base_checker(field, detail[0], detail[1])
-    if kind == Nodetype.NAME:
+    if kind == kinds.NAME:
         short = detail.rsplit("/", 1)[-1]
 
         def nested(value: Any) -> Any:
@@ -188,8 +187,8 @@ def _checker(field: str, kind: Nodetype, detail: Any) -> Callable[[Any], Any]:
             return value
         return nested
     (inner_kind, inner_detail), count = detail
-    fixed = kind == Nodetype.ARRAY
-    if inner_kind == Nodetype.BASE and inner_detail[0] not in ("string", "wstring", "bool"):
+    fixed = kind == kinds.ARRAY
+    if inner_kind == kinds.BASE and inner_detail[0] not in ("string", "wstring", "bool"):
         base = inner_detail[0]
         python = "float" if base in ("float32", "float64") else "int"
         each = f"each value of type '{python}'"
@@ -218,7 +217,7 @@ def _checker(field: str, kind: Nodetype, detail: Any) -> Callable[[Any], Any]:
             return array.array(_TYPECODES[base], items)
         return numbers
     item_check = _checker(field, inner_kind, inner_detail)
-    label = (inner_detail.rsplit("/", 1)[-1] if inner_kind == Nodetype.NAME else
+    label = (inner_detail.rsplit("/", 1)[-1] if inner_kind == kinds.NAME else
              {"string": "str", "wstring": "str", "bool": "bool"}.get(inner_detail[0], "?"))
 
     def items(value: Any) -> Any:
@@ -304,7 +303,7 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
         return found
     types = registry()
     fields = types.fields(name)  # registers it (and what it names) for CDR
-    constants = types.store.fielddefs[name][0]
+    constants = types.fielddefs[name][0]
     package, kind, short = name.split("/")
     namespace: dict[str, Any] = {
         "__slots__": tuple("_" + f for f, _ in fields) + (("_seq",) if _ros1_header(name)
@@ -417,7 +416,7 @@ def _fixed_arrays(cls: Any) -> dict[int, str]:
     if found is None:
         found = {}
         for index, (_, (kind, detail)) in enumerate(registry().fields(cls._TYPE)):
-            if kind == Nodetype.ARRAY and detail[0][0] == Nodetype.BASE \
+            if kind == kinds.ARRAY and detail[0][0] == kinds.BASE \
                     and detail[0][1][0] in _TYPECODES:
                 found[index] = _DTYPES.get(detail[0][1][0], detail[0][1][0])
         _fixed[cls] = found

@@ -8,6 +8,8 @@ import json
 import os
 import re
 import signal
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -351,3 +353,38 @@ def test_a_node_started_by_launcher_run_leaves_nothing_after_sigkill_of_its_pare
     proc.kill()
     proc.wait(10)
     time.sleep(0.2)
+
+
+LEAN = """
+import sys, time
+import rclpy
+from geometry_msgs.msg import Twist
+from std_msgs.msg import String
+rclpy.init()
+node = rclpy.create_node('lean')
+heard = []
+node.create_subscription(String, 'lean_topic', heard.append, 10)
+pub = node.create_publisher(String, 'lean_topic', 10)
+twist = node.create_publisher(Twist, 'lean_twist', 10)
+end = time.monotonic() + 30
+while not heard and time.monotonic() < end:
+    pub.publish(String(data='hi'))
+    twist.publish(Twist())
+    rclpy.spin_once(node, timeout_sec=0.05)
+heavy = sorted(m for m in sys.modules if m.split('.')[0] in ('numpy', 'mujoco', 'rosbags'))
+print('heard', heard[0].data if heard else None, 'heavy', heavy)
+node.destroy_node()
+rclpy.shutdown()
+"""
+
+
+def test_an_rclpy_node_imports_no_numpy_mujoco_or_rosbags(examples):
+    """A node that publishes, subscribes and offers its parameter services reads its types'
+    definitions from launcher's cache: none of the heavy modules at start or on the first
+    message."""
+    script = examples.write("lean.py", LEAN)
+    done = subprocess.run([sys.executable, str(script)], cwd=examples.root,
+                          env={**examples.env, "PYTHONPATH": SITE}, capture_output=True,
+                          text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "heard hi heavy []" in done.stdout, done.stdout + done.stderr

@@ -120,6 +120,14 @@ def test_service_hash_matches_ros2():
                                                           "std_srvs/srv/SetBool_Response")
 
 
+def test_the_parameter_services_known_hashes_are_those_of_their_srv_files():
+    """A node offers them under these hashes before reading their definitions."""
+    from launcher.bus import parameters
+
+    assert {name: registry().service_hash(name) for name in parameters.HASHES} == \
+        parameters.HASHES
+
+
 def test_package_interfaces(tmp_path, monkeypatch):
     pkg = tmp_path / "ws" / "my_interfaces"
     (pkg / "msg").mkdir(parents=True)
