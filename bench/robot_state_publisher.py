@@ -44,9 +44,11 @@ def main() -> None:
     node = Node("bench_joint_states", argv=[])
     try:
         received = [0]
+        # counted as they arrive (on Zenoh's thread): this loop does not spin while it sends,
+        # and the executor's queue would keep only the last `depth`
         node.create_subscription("tf2_msgs/msg/TFMessage", "/tf",
                                  lambda payload: received.__setitem__(0, received[0] + 1),
-                                 QoS(depth=1000), raw=True)
+                                 QoS(depth=1000), raw=True, inline=True)
         publisher = node.create_publisher("sensor_msgs/msg/JointState", "joint_states",
                                           QoS(depth=1000))
         message = node.message("sensor_msgs/msg/JointState",

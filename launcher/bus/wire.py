@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import math
 import struct
-
-import numpy as np
+from collections.abc import Sequence
 
 CDR_HEADER = b"\x00\x01\x00\x00"  # CDR, little-endian
 _STAMP = struct.Struct("<iI")
+_STAMP_WORDS = struct.Struct("<II")
+_SEVEN = struct.Struct("<7d")
 _COUNT = struct.Struct("<I")
 _CLOCK = struct.Struct("<4siIiI?7xQ")
 
@@ -59,22 +60,18 @@ class TfLayout:
             out += b"\0" * (-(len(out) - 4) % 8)
             self.numbers.append(len(out))
             out += bytes(56)
-        out += b"\0" * (-(len(out) - 4) % 8)  # whole 8-byte words after the CDR header
         self.template = bytes(out)
-        # Word indices (in the 8-byte words after the header) of each transform's numbers,
-        # and of each stamp in 4-byte words: one numpy assignment writes them all.
-        numbers = (np.array(self.numbers, dtype=np.intp) - 4) // 8
-        self._number_words = (numbers[:, None] + np.arange(7)).ravel()
-        self._stamp_words = (np.array(self.stamps, dtype=np.intp) - 4) // 4
+        self._places = list(zip(self.stamps, self.numbers, strict=True))
 
-    def pack(self, sec: int, nanosec: int, translations: np.ndarray, quats: np.ndarray) -> bytes:
+    def pack(self, sec: int, nanosec: int, translations: Sequence[Sequence[float]],
+             quats: Sequence[Sequence[float]]) -> bytes:
         out = bytearray(self.template)
-        body = np.frombuffer(out, dtype=np.uint8)[4:]
-        body.view("<f8")[self._number_words] = np.concatenate([translations, quats],
-                                                                axis=1).ravel()
-        words = body.view("<u4")
-        words[self._stamp_words] = sec & 0xFFFFFFFF
-        words[self._stamp_words + 1] = nanosec
+        sec &= 0xFFFFFFFF
+        stamp, seven = _STAMP_WORDS.pack_into, _SEVEN.pack_into
+        for (stamp_at, numbers_at), (x, y, z), (qx, qy, qz, qw) in zip(
+                self._places, translations, quats, strict=True):
+            stamp(out, stamp_at, sec, nanosec)
+            seven(out, numbers_at, x, y, z, qx, qy, qz, qw)
         return bytes(out)
 
 
@@ -86,13 +83,13 @@ class JointStateReader:
         self._block = b""
         self._names: list[str] = []
 
-    def read(self, payload: bytes) -> tuple[int, int, list[str], np.ndarray]:
+    def read(self, payload: bytes) -> tuple[int, int, list[str], Sequence[float]]:
         if payload[1] != 1:  # big-endian CDR: rare; let the generic reader do it
             from launcher.bus.types import registry
 
             message = registry().deserialize(payload, "sensor_msgs/msg/JointState")
             return (message.header.stamp.sec, message.header.stamp.nanosec, list(message.name),
-                    np.asarray(message.position, dtype=float))
+                    [float(v) for v in message.position])
         data = memoryview(payload)[4:]
         sec, nanosec = _STAMP.unpack_from(data, 0)
         position = 12 + _COUNT.unpack_from(data, 8)[0]  # past frame_id
@@ -115,10 +112,10 @@ class JointStateReader:
         values = _COUNT.unpack_from(data, position)[0]
         position += 4
         position += -position % 8
-        return sec, nanosec, names, np.frombuffer(data, "<f8", values, position)
+        return sec, nanosec, names, struct.unpack_from(f"<{values}d", data, position)
 
 
 def pack_tf(sec: int, nanosec: int, parents: list[str], children: list[str],
-            translations: np.ndarray, quats: np.ndarray) -> bytes:
+            translations: Sequence[Sequence[float]], quats: Sequence[Sequence[float]]) -> bytes:
     """tf2_msgs/msg/TFMessage as CDR (see TfLayout)."""
     return TfLayout(parents, children).pack(sec, nanosec, translations, quats)

@@ -1,19 +1,22 @@
-"""A URDF's joint tree and its forward kinematics, every joint in one vectorised pass.
+"""A URDF's joint tree and its forward kinematics.
 
 `Tree.parse(text)` checks the URDF (XML, one root, no loops, joints naming real links) and
 keeps each joint's origin, axis, type and mimic. `Tree.transforms(positions)` gives, for the
-moving joints, the parent → child transform (translation, quaternion x y z w) as numpy arrays,
-as robot_state_publisher publishes them on /tf. Fixed joints' transforms are constant
+moving joints, the parent → child transform (translation, quaternion x y z w), as
+robot_state_publisher publishes them on /tf. Fixed joints' transforms are constant
 (`Tree.fixed`). Floating and planar joints are skipped, as ROS's robot_state_publisher does.
+
+Plain Python, no numpy: what is fixed per joint is worked out once, so a joint costs one sine,
+one cosine and a few products per message (20 joints at 1 kHz: a few % of a core), and the
+node starts without numpy's ~0.1 s import.
 """
 
 from __future__ import annotations
 
 import math
 import xml.etree.ElementTree as ET
+from collections.abc import Sequence
 from dataclasses import dataclass, field
-
-import numpy as np
 
 from launcher.errors import LaunchError
 from launcher.sim.urdf_tree import parse_robot, root_link
@@ -61,32 +64,36 @@ class Tree:
         return tree
 
     def _arrays(self) -> None:
-        moving = self.moving
-        self.index = {j.name: i for i, j in enumerate(moving)}
-        self.origin_xyz = np.array([j.xyz for j in moving], dtype=float).reshape(-1, 3)
-        self.origin_quat = np.array([j.quat for j in moving], dtype=float).reshape(-1, 4)
-        axes = np.array([j.axis for j in moving], dtype=float).reshape(-1, 3)
-        norms = np.linalg.norm(axes, axis=1, keepdims=True)
-        self.axis = np.divide(axes, norms, out=np.zeros_like(axes), where=norms > 0)
-        prismatic = np.array([j.kind == "prismatic" for j in moving], dtype=bool)
-        # A revolute joint's rotation is origin ⊗ (axis·sin(q/2), cos(q/2)), which is linear in
-        # sin and cos: origin ⊗ (axis, 0) · sin + origin · cos. A prismatic joint moves its
-        # child along the axis turned into the parent frame. Both parts are fixed per joint.
-        self.half = np.where(prismatic, 0.0, 0.5)
-        self.turn = _multiply(self.origin_quat,
-                              np.concatenate([self.axis, np.zeros((len(moving), 1))], axis=1))
-        self.slide = _rotate(self.origin_quat, self.axis) * prismatic[:, None]
+        """Per moving joint: its origin, how it slides (prismatic), the quaternions of its turn
+        (revolute): origin ⊗ (axis·sin(q/2), cos(q/2)) is linear in sin and cos, so
+        turn·sin + origin·cos with turn = origin ⊗ (axis, 0)."""
+        self.index = {j.name: i for i, j in enumerate(self.moving)}
+        self._parts: list[tuple[float, ...]] = []
+        for joint in self.moving:
+            ax, ay, az = joint.axis
+            norm = math.sqrt(ax * ax + ay * ay + az * az)
+            axis = (ax / norm, ay / norm, az / norm) if norm > 0 else (0.0, 0.0, 0.0)
+            prismatic = joint.kind == "prismatic"
+            slide = _rotate(joint.quat, axis) if prismatic else (0.0, 0.0, 0.0)
+            turn = _multiply(joint.quat, (*axis, 0.0))
+            self._parts.append((*joint.xyz, *slide, 0.0 if prismatic else 0.5, *turn,
+                                *joint.quat))
 
-    def transforms(self, positions: np.ndarray,
-                   rows: np.ndarray | slice = slice(None)) -> tuple[np.ndarray, np.ndarray]:
-        """(translations n×3, quaternions n×4 x y z w) of the moving joints `rows` (all by
-        default) at `positions` (one per row)."""
-        q = np.asarray(positions, dtype=float)
-        half = q * self.half[rows]
-        quat = self.turn[rows] * np.sin(half)[:, None] + \
-            self.origin_quat[rows] * np.cos(half)[:, None]
-        translation = self.origin_xyz[rows] + self.slide[rows] * q[:, None]
-        return translation, quat
+    def transforms(self, positions: Sequence[float], rows: Sequence[int] | None = None
+                   ) -> tuple[list[tuple[float, float, float]],
+                              list[tuple[float, float, float, float]]]:
+        """(translations, quaternions x y z w) of the moving joints `rows` (all by default)
+        at `positions` (one per row)."""
+        parts = self._parts if rows is None else [self._parts[row] for row in rows]
+        translations, quats = [], []
+        sin, cos = math.sin, math.cos
+        for q, (ox, oy, oz, sx, sy, sz, half, tx, ty, tz, tw, qx, qy, qz, qw) in zip(
+                positions, parts, strict=True):
+            q = float(q)
+            s, c = sin(q * half), cos(q * half)
+            translations.append((ox + sx * q, oy + sy * q, oz + sz * q))
+            quats.append((tx * s + qx * c, ty * s + qy * c, tz * s + qz * c, tw * s + qw * c))
+        return translations, quats
 
 
 def _joint(element: ET.Element, label: str) -> Joint:
@@ -134,18 +141,20 @@ def rpy_quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float,
             cr * cp * sy - sr * sp * cy, cr * cp * cy + sr * sp * sy)
 
 
-def _multiply(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Row-wise quaternion products a ⊗ b (x y z w)."""
-    ax, ay, az, aw = a.T
-    bx, by, bz, bw = b.T
-    return np.stack([aw * bx + ax * bw + ay * bz - az * by,
-                     aw * by - ax * bz + ay * bw + az * bx,
-                     aw * bz + ax * by - ay * bx + az * bw,
-                     aw * bw - ax * bx - ay * by - az * bz], axis=1)
+def _multiply(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, float, float]:
+    """The quaternion product a ⊗ b (x y z w)."""
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz)
 
 
-def _rotate(quat: np.ndarray, vectors: np.ndarray) -> np.ndarray:
-    """Row-wise rotation of vectors by quaternions (x y z w)."""
-    u, w = quat[:, :3], quat[:, 3:4]
-    t = 2 * np.cross(u, vectors)
-    return vectors + w * t + np.cross(u, t)
+def _rotate(quat: Sequence[float], vector: Sequence[float]) -> tuple[float, float, float]:
+    """`vector` rotated by `quat` (x y z w)."""
+    ux, uy, uz, w = quat
+    vx, vy, vz = vector
+    tx, ty, tz = 2 * (uy * vz - uz * vy), 2 * (uz * vx - ux * vz), 2 * (ux * vy - uy * vx)
+    return (vx + w * tx + (uy * tz - uz * ty), vy + w * ty + (uz * tx - ux * tz),
+            vz + w * tz + (ux * ty - uy * tx))

@@ -13,12 +13,12 @@ going backwards (a sim reset) clears the rate limiter.
 
 from __future__ import annotations
 
+import math
 import sys
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
-
-import numpy as np
 
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
@@ -80,8 +80,7 @@ class RobotStatePublisher:
         self.description_pub.publish(self.node.message("std_msgs/msg/String", data=description))
         fixed = tree.fixed
         if fixed:
-            xyz = np.array([j.xyz for j in fixed], dtype=float)
-            quat = np.array([j.quat for j in fixed], dtype=float)
+            xyz, quat = [j.xyz for j in fixed], [j.quat for j in fixed]
             sec, nanosec = divmod(self.node.get_clock().now().nanoseconds, 1_000_000_000)
             self.static_pub.publish_raw(pack_tf(
                 sec, nanosec, [self.prefix + j.parent for j in fixed],
@@ -115,10 +114,10 @@ class RobotStatePublisher:
                                  f"warned once")
 
     def on_joints(self, sec: int, nanosec: int, names: list[str],
-                  positions: np.ndarray) -> None:
+                  positions: Sequence[float]) -> None:
         if len(names) != len(positions):
             raise ValueError(f"{len(names)} names but {len(positions)} positions")
-        if not np.all(np.isfinite(positions)):
+        if not all(map(math.isfinite, positions)):
             raise ValueError("a position is not finite")
         stamp = sec + nanosec * 1e-9
         if not self.ignore_timestamp:
@@ -135,15 +134,17 @@ class RobotStatePublisher:
         take, rows, mimics, layout = plan
         if layout is None:
             return
-        values = positions[take]
-        if mimics:
-            values = np.concatenate([values, values[mimics[0]] * mimics[1] + mimics[2]])
+        values = [positions[i] for i in take]
+        for master, multiplier, offset in mimics:
+            values.append(values[master] * multiplier + offset)
         translation, quat = self.tree.transforms(values, rows)
         self.tf_pub.publish_raw(layout.pack(sec, nanosec, translation, quat))
 
-    def _plan(self, names: list[str]) -> tuple[Any, Any, Any, TfLayout | None]:
-        """For one list of joint names: which positions to use, for which joints (mimics
-        appended), and the /tf layout. Unknown names are warned about once."""
+    def _plan(self, names: list[str]) -> tuple[list[int], list[int] | None,
+                                               list[tuple[int, float, float]], TfLayout | None]:
+        """For one list of joint names: which positions to use, for which joints (None: all,
+        in order), the mimic joints appended (the index of their master among the values,
+        multiplier, offset), and the /tf layout. Unknown names are warned about once."""
         index = self.tree.index
         take, rows = [], []
         for position, name in enumerate(names):
@@ -156,24 +157,18 @@ class RobotStatePublisher:
                 continue
             take.append(position)
             rows.append(row)
-        masters, multipliers, offsets = [], [], []
+        mimics = []
         for row, master, multiplier, offset in self._mimics:
             if master in rows and row not in rows:
-                masters.append(rows.index(master))
-                multipliers.append(multiplier)
-                offsets.append(offset)
+                mimics.append((rows.index(master), multiplier, offset))
                 rows.append(row)
-        mimics = (np.array(masters), np.array(multipliers), np.array(offsets)) if masters \
-            else None
         if not rows:
-            return np.array(take, dtype=int), np.array(rows, dtype=int), mimics, None
+            return take, rows, mimics, None
         moving = self.tree.moving
         layout = TfLayout([self.prefix + moving[r].parent for r in rows],
                           [self.prefix + moving[r].child for r in rows])
-        selected: np.ndarray | slice = np.array(rows, dtype=int)
-        if rows == list(range(len(moving))):
-            selected = slice(None)  # every joint, in order: no gathering
-        return np.array(take, dtype=int), selected, mimics, layout
+        every = rows == list(range(len(moving)))  # every joint, in order: no gathering
+        return take, None if every else rows, mimics, layout
 
 
 def main() -> int:
