@@ -1,5 +1,6 @@
 """The import hook that makes ROS node code importable without ROS: `rclpy`, `rospy` and the
-message packages (`geometry_msgs.msg`, `std_srvs.srv`, a workspace's own `my_msgs.msg`).
+message packages (`geometry_msgs.msg`, `std_srvs.srv`, a workspace's own `my_msgs.msg`), and
+the shims of `launch`, `launch_ros` and `ament_index_python`.
 
 It sits at the end of `sys.meta_path`, so it is asked only after every other finder has come
 up empty: a real rclpy, rospy or message package that the user installed (pip, /opt/ros on
@@ -27,6 +28,10 @@ if TYPE_CHECKING:  # (typing's names are not imported at run time: this runs at 
 
 NODE_APIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "nodes")
 _API_NAMES = ("rclpy", "rospy")
+# launch files' and xacro's modules (compat/shims): found here too, so that a shell with
+# `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
+SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
+_SHIM_NAMES = ("ament_index_python", "launch", "launch_ros")
 _KINDS = ("msg", "srv")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 
@@ -47,7 +52,12 @@ class InterfaceFinder:
             if rest:
                 return None  # submodules come from the package's own __path__
             return importlib.machinery.PathFinder.find_spec(fullname, [NODE_APIS])
-        if rest and rest not in _KINDS or getattr(self._busy, "on", False):
+        if top in _SHIM_NAMES:
+            if rest:
+                return None
+            return importlib.machinery.PathFinder.find_spec(fullname, [SHIMS])
+        if rest and rest not in _KINDS or getattr(self._busy, "on", False) \
+                or _inside_standard_import():
             return None
         self._busy.on = True
         try:
@@ -81,6 +91,18 @@ class InterfaceFinder:
             return
         module.__doc__ = f"{package}.{kind}: {kind} classes from launcher's type store"
         module.__getattr__ = _lazy_types(package, kind)  # type: ignore[attr-defined]
+
+
+def _inside_standard_import() -> bool:
+    """Whether a standard library module is being imported: its optional imports (copy's
+    `org.python.core`) are never interface packages, and looking them up would import modules
+    that need it whole (ElementTree needs copy.deepcopy)."""
+    for name, module in list(sys.modules.items()):
+        spec = getattr(module, "__spec__", None)
+        if getattr(spec, "_initializing", False) and \
+                name.partition(".")[0] in sys.stdlib_module_names:
+            return True
+    return False
 
 
 def _lazy_types(package: str, kind: str) -> Any:

@@ -127,6 +127,32 @@ def test_a_real_install_wins_and_the_choice_variable_flips_it(tmp_path):
     assert done.stdout.split() == ["False", "False"], done.stderr
 
 
+def test_standard_modules_with_optional_imports_load_under_the_hook():
+    """copy.py tries `org.python.core` while it loads; answering that must not import
+    ElementTree (which needs copy whole): xml.dom.minidom, as xacro imports it."""
+    env = dict(os.environ, PYTHONPATH=SITE)
+    done = run_python("import xml.dom.minidom, copy; print(callable(copy.deepcopy))", env)
+    assert done.returncode == 0 and done.stdout.strip() == "True", done.stderr
+
+
+def test_the_launch_and_xacro_shims_come_from_the_hook_after_any_real_one(tmp_path):
+    """What a shell with `launcher env` gets: launch, launch_ros and ament_index_python from
+    launcher where none is installed, a real one where it is."""
+    env = dict(os.environ, PYTHONPATH=SITE)
+    code = """
+        import ament_index_python, launch, launch_ros
+        print(*(getattr(m, 'REAL', m.__file__.split('/compat/')[-1].split('/')[0])
+                for m in (ament_index_python, launch, launch_ros)))
+    """
+    done = run_python(code, env)
+    assert done.stdout.split() == ["shims"] * 3, done.stderr
+    (tmp_path / "real" / "launch").mkdir(parents=True)
+    (tmp_path / "real" / "launch" / "__init__.py").write_text("REAL = True\n")
+    env["PYTHONPATH"] = f"{tmp_path / 'real'}{os.pathsep}{SITE}"
+    done = run_python(code, env)
+    assert done.stdout.split() == ["shims", "True", "shims"], done.stderr
+
+
 def test_workspace_messages_are_importable_where_the_site_hook_is_on_the_path(tmp_path):
     package = tmp_path / "ws" / "my_msgs"
     (package / "msg").mkdir(parents=True)
