@@ -112,6 +112,8 @@ class World:
         self._unstable_total = 0
         self._plugin_configs = list(plugins)
         self._all: list[Plugin] = []
+        self._pre: list[Plugin] = []
+        self._post: list[Plugin] = []
         self._warned: set[str] = set()
         for model in models if models is not None else _top_level_models(spec):
             self._add_world_model(model)
@@ -199,13 +201,16 @@ class World:
             found += entity.plugins
         self._all = found
         self._pre = [p for p in found if type(p).pre_step is not Plugin.pre_step]
+        # only these bound the batches: a plugin without a post_step (one that spawns a
+        # model at load) would otherwise make every batch a single step
+        self._post = [p for p in found if type(p).post_step is not Plugin.post_step]
 
     # --- stepping --------------------------------------------------------------------------
     def steps_until_update(self, limit: int) -> int:
         """How many steps may run before a plugin needs its post_step (at least 1)."""
-        if not self._all:
+        if not self._post:
             return max(1, limit)
-        due = min(p.next_update for p in self._all) - self.data.time
+        due = min(p.next_update for p in self._post) - self.data.time
         return max(1, min(limit, math.ceil(due / self.model.opt.timestep - 1e-9)))
 
     def step(self, count: int = 1) -> None:
@@ -223,7 +228,7 @@ class World:
                 self._unstable_total:
             self._check_unstable()
         now = data.time + 1e-9
-        for plugin in self._all:
+        for plugin in self._post:
             if plugin.next_update <= now:
                 try:
                     plugin.post_step(model, data)

@@ -410,6 +410,10 @@ class SpawnCrate(Plugin):
 class Broken(Plugin):
     def post_step(self, model, data):
         raise RuntimeError("wheels fell off")
+
+class LoadOnly(Plugin):
+    def load(self):
+        self.sim.spawn_file(self.text("model"), "crate", (5, 4, 0.2, 0, 0, 0))
 '''
 
 
@@ -440,6 +444,26 @@ def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped
     assert sum("plugin Broken raised in post_step: RuntimeError: wheels fell off" in m
                for m in errors) == 1
     assert [p.label for p in world.plugins] == ["SpawnCrate"] and world.plugins[0].steps == 2
+
+
+def test_a_plugin_without_post_step_does_not_cut_the_batches(tmp_path, monkeypatch):
+    """The seed's crate dropper spawns at load and has no post_step: batches stay whole
+    (it made every batch one step: the sim at half the speed of raw mj_step)."""
+    (tmp_path / "plugins").mkdir()
+    (tmp_path / "plugins" / "crate_spawner.py").write_text(PLUGIN)
+    (tmp_path / "crate.xml").write_text('<mujoco model="crate"><worldbody><body name="box">'
+                                        '<geom type="box" size=".2 .2 .2"/></body></worldbody>'
+                                        "</mujoco>")
+    monkeypatch.setenv("MUJOCO_SIM_PLUGIN_PATH", str(tmp_path / "plugins"))
+    world_file = tmp_path / "w.xml"
+    world_file.write_text(f"""<mujoco model="w">
+  <plugin filename="crate_spawner" name="LoadOnly"><model>{tmp_path / 'crate.xml'}</model>
+  </plugin>
+  <worldbody><geom type="plane" size="0 0 1"/></worldbody>
+</mujoco>""")
+    world = make_world(path=world_file)
+    assert "crate" in world.entities
+    assert world.steps_until_update(100) == 100
 
 
 def test_resets_all_time_only_and_poses_only(world):
