@@ -34,7 +34,7 @@ class Subscription:
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host, self._callback = topic, qos, host, callback
         self._raw, self._inline = raw, inline
-        self._read = types.reader(self.type_name, make)
+        self._read = None if raw else types.reader(self.type_name, make)
         # (before declaring: a transient local subscriber gets history samples at once)
         self._pending: deque[bytes] = deque(maxlen=max(qos.depth, 1))
         self._lock = threading.Lock()

@@ -18,6 +18,7 @@ import sys
 import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any
 
 from launcher.bus.node import Node
@@ -77,7 +78,8 @@ class RobotStatePublisher:
         self._plans: dict[tuple[str, ...], Any] = {}
         self._warned: set[str] = set()
         self._last_stamp: float | None = None
-        self.description_pub.publish(self.node.message("std_msgs/msg/String", data=description))
+        # any object with the fields serialises: no message classes (rosbags') needed here
+        self.description_pub.publish(SimpleNamespace(data=description))
         fixed = tree.fixed
         if fixed:
             xyz, quat = [j.xyz for j in fixed], [j.quat for j in fixed]

@@ -371,6 +371,13 @@ while not heard and time.monotonic() < end:
     pub.publish(String(data='hi'))
     twist.publish(Twist())
     rclpy.spin_once(node, timeout_sec=0.05)
+from launcher.bus.node import Node
+from launcher.nodes.robot_state_publisher import RobotStatePublisher
+urdf = ('<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="revolute">'
+        '<parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>')
+rsp = Node('rsp', argv=['--ros-args', '-p', 'robot_description:=' + urdf])
+RobotStatePublisher(rsp)
+rsp.destroy_node()
 heavy = sorted(m for m in sys.modules if m.split('.')[0] in ('numpy', 'mujoco', 'rosbags'))
 print('heard', heard[0].data if heard else None, 'heavy', heavy)
 node.destroy_node()
@@ -381,7 +388,7 @@ rclpy.shutdown()
 def test_an_rclpy_node_imports_no_numpy_mujoco_or_rosbags(examples):
     """A node that publishes, subscribes and offers its parameter services reads its types'
     definitions from launcher's cache: none of the heavy modules at start or on the first
-    message."""
+    message; nor does a robot_state_publisher set up beside it."""
     script = examples.write("lean.py", LEAN)
     done = subprocess.run([sys.executable, str(script)], cwd=examples.root,
                           env={**examples.env, "PYTHONPATH": SITE}, capture_output=True,
