@@ -10,8 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any
 
+from launcher.bus import kinds
 from launcher.bus.types import registry
 from launcher.errors import LaunchError, did_you_mean
 
@@ -71,15 +73,56 @@ def _same(payload: bytes) -> bytes:
 
 
 def _via(source: str, target: str, build: Callable[[Any], dict[str, Any]]) -> Convert:
-    types = registry()
+    """Read `source` as plain objects, `build` the target's fields, write them: no message
+    classes (rosbags' would import numpy for arrays at the first message)."""
+    made: list[Callable[..., Any]] = []  # reader and writer, made at the first use
 
     def convert(payload: bytes) -> bytes:
-        from launcher.bus.messages import build as make
-
-        message = types.deserialize(payload, source)
-        return types.serialize(make(target, build(message)), target)
+        if not made:
+            made[:] = registry().reader(source, _plain), registry().writer(target)
+        read, write = made
+        return write(_filled(target, build(read(payload))))
 
     return convert
+
+
+_names: dict[str, tuple[str, ...]] = {}
+
+
+def _plain(type_name: str, values: list[Any]) -> SimpleNamespace:
+    """A message read as an object with its fields (the CDR reader's `make`)."""
+    names = _names.get(type_name)
+    if names is None:
+        names = _names[type_name] = tuple(f for f, _ in registry().fields(type_name))
+    return SimpleNamespace(**dict(zip(names, values, strict=True)))
+
+
+def _filled(type_name: str, given: dict[str, Any]) -> SimpleNamespace:
+    """An object with every field of the type: `given`'s values (nested dicts filled too),
+    the type's zero values for the rest."""
+    out = SimpleNamespace()
+    for field, (kind, detail) in registry().fields(type_name):
+        value = given.get(field)
+        if kind == kinds.NAME:
+            value = _filled(detail, value if isinstance(value, dict) else {}) \
+                if value is None or isinstance(value, dict) else value
+        elif kind == kinds.BASE:
+            value = _zero(detail[0]) if value is None else value
+        else:
+            (inner_kind, inner_detail), count = detail
+            if value is None:
+                value = [] if kind == kinds.SEQUENCE else \
+                    [_zero(inner_detail[0]) if inner_kind == kinds.BASE else
+                     _filled(inner_detail, {}) for _ in range(count)]
+            elif inner_kind == kinds.NAME:
+                value = [_filled(inner_detail, v) if isinstance(v, dict) else v for v in value]
+        setattr(out, field, value)
+    return out
+
+
+def _zero(base: str) -> Any:
+    return "" if base in ("string", "wstring") else False if base == "bool" else \
+        0.0 if base.startswith("float") else 0
 
 
 def _pose(p: Any) -> dict[str, Any]:

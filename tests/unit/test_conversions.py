@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -123,3 +126,29 @@ def test_unsupported_pairs_and_unknown_types_say_what_is_supported():
 def test_the_command_line_form(text, direction, service):
     entry = bridge_config.parse_argument(text, conversions.sim_type)
     assert entry.direction == direction and entry.service == service
+
+
+def test_converting_reads_and_writes_plain_objects_without_numpy():
+    """The bridge's first joint_states message used to import numpy (~0.1 s) for the
+    message classes' arrays; the conversion needs none, and writes the same bytes."""
+    code = """
+import sys
+from types import SimpleNamespace as N
+from launcher.bus.types import registry
+from launcher.nodes import conversions
+types = registry()
+model = N(header=N(stamp=N(sec=3, nanosec=5), frame_id='f'), name='bot', joint_name=['a'],
+          position=[1.5], velocity=[0.5], effort=[0.0])
+payload = types.writer('mujoco_sim/msg/Model')(model)
+out = conversions.find('sensor_msgs/msg/JointState', 'mujoco_sim/msg/Model').to_ros(payload)
+print('numpy' in sys.modules, out.hex())
+"""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=60)
+    imported, payload = done.stdout.split()
+    assert imported == "False", done.stderr
+    expected = build("sensor_msgs/msg/JointState", {
+        "header": {"stamp": {"sec": 3, "nanosec": 5}, "frame_id": "f"}, "name": ["a"],
+        "position": [1.5], "velocity": [0.5], "effort": [0.0]})
+    assert bytes.fromhex(payload) == bytes(registry().store.serialize_cdr(
+        expected, "sensor_msgs/msg/JointState"))
