@@ -6,6 +6,8 @@ the type it expected (`linear.x: expected float64, got 'fast'`).
 
 from __future__ import annotations
 
+import array
+from types import SimpleNamespace
 from typing import Any
 
 from launcher.bus import kinds
@@ -26,7 +28,10 @@ class MessageError(LaunchError):
     pass
 
 
-def build(type_name: str, values: Any, path: str = "") -> Any:
+def build(type_name: str, values: Any, path: str = "", plain: bool = False) -> Any:
+    """The message of `values` (a map of fields): rosbags' class, numeric arrays as numpy
+    arrays; `plain`: objects with the fields and lists (no classes, no numpy), which
+    serialise the same."""
     types = registry()
     name = types.ensure(type_name)
     if values is None:
@@ -40,27 +45,28 @@ def build(type_name: str, values: Any, path: str = "") -> Any:
         if key not in known:
             raise MessageError(f"{path}{key}: {name} has no field '{key}'"
                                f"{did_you_mean(str(key), known)}; fields: {', '.join(known)}")
-    kwargs = {f: _value(kind, detail, values.get(f), f"{path}{f}") for f, (kind, detail) in
-              fields}
-    return types.message_class(name)(**kwargs)
+    kwargs = {f: _value(kind, detail, values.get(f), f"{path}{f}", plain)
+              for f, (kind, detail) in fields}
+    return SimpleNamespace(**kwargs) if plain else types.message_class(name)(**kwargs)
 
 
-def _value(kind: int, detail: Any, value: Any, path: str) -> Any:
+def _value(kind: int, detail: Any, value: Any, path: str, plain: bool) -> Any:
     if kind == kinds.BASE:
         return _primitive(detail[0], value, path)
     if kind == kinds.NAME:
-        return build(detail, value, f"{path}.")
+        return build(detail, value, f"{path}.", plain)
     (inner_kind, inner_detail), count = detail
     items = [] if value is None else value
-    if not isinstance(items, list | tuple) and type(items).__name__ != "ndarray":
+    if not isinstance(items, list | tuple | array.array) and \
+            type(items).__name__ != "ndarray":
         raise MessageError(f"{path}: expected a list, got {value!r}")
     if kind == kinds.ARRAY and value is None:
         items = [None] * count
     if kind == kinds.ARRAY and len(items) != count:
         raise MessageError(f"{path}: expected {count} items, got {len(items)}")
-    converted = [_value(inner_kind, inner_detail, item, f"{path}[{i}]")
+    converted = [_value(inner_kind, inner_detail, item, f"{path}[{i}]", plain)
                  for i, item in enumerate(items)]
-    if inner_kind == kinds.BASE and inner_detail[0] not in ("string", "wstring"):
+    if not plain and inner_kind == kinds.BASE and inner_detail[0] not in ("string", "wstring"):
         import numpy as np  # rosbags wants primitive arrays as numpy arrays
 
         return np.array(converted, dtype=_DTYPES.get(inner_detail[0], inner_detail[0]))

@@ -51,17 +51,19 @@ class Service:
         self._token = host.announce(keys.SERVICE, name, type_name, type_hash, QoS().key(),
                                     space)
 
-    @property
-    def request_type(self) -> str:
+    def _types(self) -> tuple[str, str]:
+        """(request type, response type), looked up at the first need."""
         if self._halves is None:
             self._halves = registry().service(self.type_name)
-        return self._halves[0]
+        return self._halves
+
+    @property
+    def request_type(self) -> str:
+        return self._types()[0]
 
     @property
     def response_type(self) -> str:
-        if self._halves is None:
-            self._halves = registry().service(self.type_name)
-        return self._halves[1]
+        return self._types()[1]
 
     def _on_query(self, query: zenoh.Query) -> None:
         self._host.enqueue(self._answer, query)

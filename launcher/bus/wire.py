@@ -48,20 +48,18 @@ class TfLayout:
     def __init__(self, parents: list[str], children: list[str]) -> None:
         out = bytearray(CDR_HEADER)
         out += _COUNT.pack(len(parents))
-        self.stamps: list[int] = []
-        self.numbers: list[int] = []
+        self._places: list[tuple[int, int]] = []  # (stamp, numbers) of each transform
         for parent, child in zip(parents, children, strict=True):
             out += b"\0" * (-(len(out) - 4) % 4)
-            self.stamps.append(len(out))
+            stamp = len(out)
             out += bytes(8)
             out += _string(parent)
             out += b"\0" * (-(len(out) - 4) % 4)
             out += _string(child)
             out += b"\0" * (-(len(out) - 4) % 8)
-            self.numbers.append(len(out))
+            self._places.append((stamp, len(out)))
             out += bytes(56)
         self.template = bytes(out)
-        self._places = list(zip(self.stamps, self.numbers, strict=True))
 
     def pack(self, sec: int, nanosec: int, translations: Sequence[Sequence[float]],
              quats: Sequence[Sequence[float]]) -> bytes:

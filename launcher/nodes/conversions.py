@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from types import SimpleNamespace
 from typing import Any
 
-from launcher.bus import kinds
+from launcher.bus import messages
 from launcher.bus.types import registry
 from launcher.errors import LaunchError, did_you_mean
 
@@ -81,7 +81,7 @@ def _via(source: str, target: str, build: Callable[[Any], dict[str, Any]]) -> Co
         if not made:
             made[:] = registry().reader(source, _plain), registry().writer(target)
         read, write = made
-        return write(_filled(target, build(read(payload))))
+        return write(messages.build(target, build(read(payload)), plain=True))
 
     return convert
 
@@ -95,34 +95,6 @@ def _plain(type_name: str, values: list[Any]) -> SimpleNamespace:
     if names is None:
         names = _names[type_name] = tuple(f for f, _ in registry().fields(type_name))
     return SimpleNamespace(**dict(zip(names, values, strict=True)))
-
-
-def _filled(type_name: str, given: dict[str, Any]) -> SimpleNamespace:
-    """An object with every field of the type: `given`'s values (nested dicts filled too),
-    the type's zero values for the rest."""
-    out = SimpleNamespace()
-    for field, (kind, detail) in registry().fields(type_name):
-        value = given.get(field)
-        if kind == kinds.NAME:
-            value = _filled(detail, value if isinstance(value, dict) else {}) \
-                if value is None or isinstance(value, dict) else value
-        elif kind == kinds.BASE:
-            value = _zero(detail[0]) if value is None else value
-        else:
-            (inner_kind, inner_detail), count = detail
-            if value is None:
-                value = [] if kind == kinds.SEQUENCE else \
-                    [_zero(inner_detail[0]) if inner_kind == kinds.BASE else
-                     _filled(inner_detail, {}) for _ in range(count)]
-            elif inner_kind == kinds.NAME:
-                value = [_filled(inner_detail, v) if isinstance(v, dict) else v for v in value]
-        setattr(out, field, value)
-    return out
-
-
-def _zero(base: str) -> Any:
-    return "" if base in ("string", "wstring") else False if base == "bool" else \
-        0.0 if base.startswith("float") else 0
 
 
 def _pose(p: Any) -> dict[str, Any]:

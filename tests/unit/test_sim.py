@@ -417,8 +417,9 @@ class LoadOnly(Plugin):
 '''
 
 
-def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped(
-        tmp_path, monkeypatch):
+def plugin_world(tmp_path, monkeypatch, plugins: str):
+    """A world with `plugins` (PLUGIN's classes on the plugin path; `{crate}` is a crate's
+    model file) on a plane."""
     (tmp_path / "plugins").mkdir()
     (tmp_path / "plugins" / "crate_spawner.py").write_text(PLUGIN)
     (tmp_path / "crate.xml").write_text('<mujoco model="crate"><worldbody><body name="box">'
@@ -426,15 +427,20 @@ def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped
                                         "</mujoco>")
     monkeypatch.setenv("MUJOCO_SIM_PLUGIN_PATH", str(tmp_path / "plugins"))
     world_file = tmp_path / "w.xml"
-    world_file.write_text(f"""<mujoco model="w">
-  <plugin filename="crate_spawner" name="SpawnCrate">
-    <model>{tmp_path / 'crate.xml'}</model><x>5</x>
-  </plugin>
-  <plugin filename="crate_spawner.py" name="Broken"/>
-  <plugin filename="crate_spawner.py" name="Missing"/>
+    world_file.write_text(f"""<mujoco model="w">{plugins.format(crate=tmp_path / 'crate.xml')}
   <worldbody><geom type="plane" size="0 0 1"/></worldbody>
 </mujoco>""")
-    world = make_world(path=world_file)
+    return make_world(path=world_file)
+
+
+def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped(
+        tmp_path, monkeypatch):
+    world = plugin_world(tmp_path, monkeypatch, """
+  <plugin filename="crate_spawner" name="SpawnCrate">
+    <model>{crate}</model><x>5</x>
+  </plugin>
+  <plugin filename="crate_spawner.py" name="Broken"/>
+  <plugin filename="crate_spawner.py" name="Missing"/>""")
     assert "crate" in world.entities
     assert world.data.xpos[world.entities["crate"].body][:2] == pytest.approx([5, 4])
     world.step(5)
@@ -449,19 +455,8 @@ def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped
 def test_a_plugin_without_post_step_does_not_cut_the_batches(tmp_path, monkeypatch):
     """The seed's crate dropper spawns at load and has no post_step: batches stay whole
     (it made every batch one step: the sim at half the speed of raw mj_step)."""
-    (tmp_path / "plugins").mkdir()
-    (tmp_path / "plugins" / "crate_spawner.py").write_text(PLUGIN)
-    (tmp_path / "crate.xml").write_text('<mujoco model="crate"><worldbody><body name="box">'
-                                        '<geom type="box" size=".2 .2 .2"/></body></worldbody>'
-                                        "</mujoco>")
-    monkeypatch.setenv("MUJOCO_SIM_PLUGIN_PATH", str(tmp_path / "plugins"))
-    world_file = tmp_path / "w.xml"
-    world_file.write_text(f"""<mujoco model="w">
-  <plugin filename="crate_spawner" name="LoadOnly"><model>{tmp_path / 'crate.xml'}</model>
-  </plugin>
-  <worldbody><geom type="plane" size="0 0 1"/></worldbody>
-</mujoco>""")
-    world = make_world(path=world_file)
+    world = plugin_world(tmp_path, monkeypatch, """
+  <plugin filename="crate_spawner" name="LoadOnly"><model>{crate}</model></plugin>""")
     assert "crate" in world.entities
     assert world.steps_until_update(100) == 100
 
