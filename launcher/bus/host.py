@@ -40,6 +40,7 @@ class Host:
         self._bell = threading.Lock()
         self._bell.acquire()
         self.entities: list[Any] = []
+        self.publisher_gids: set[bytes] = set()  # its publishers', to know its own samples
         self._graph_session: zenoh.Session | None = None
 
     def announce(self, kind: str, name: str = "", type_name: str = "", type_hash: str = "",

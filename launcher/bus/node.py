@@ -23,7 +23,7 @@ from typing import Any
 
 import zenoh
 
-from launcher.bus import keys, names, ros_args
+from launcher.bus import components, keys, names, ros_args
 from launcher.bus.clock import Clock
 from launcher.bus.host import Host
 from launcher.bus.logging import Logger
@@ -49,6 +49,10 @@ class Node:
                  space: keys.Space = keys.ROS) -> None:
         """`space` keys.SIM makes a node of the simulator's own side (the sim, the `gz`
         tools): off the ROS graph; an entity may still say where it goes (`space=`)."""
+        within = components.current()  # made by a component container: its arguments
+        if within is not None:
+            argv, session = within.argv, within.session
+        self._owns_session = session is None
         parsed = ros_args.parse(sys.argv[1:] if argv is None else argv)
         self.name = names.check_node_name(parsed.node_name or name)
         self.namespace = names.check_namespace(parsed.namespace or namespace)
@@ -59,6 +63,10 @@ class Node:
         for path in parsed.params_files:
             self._parameters.update(ros_args.load_params_file(path, self.name, self.namespace))
         self._parameters.update(parsed.parameters)
+        if within is not None:
+            self._parameters.update(within.parameters)
+            within.nodes.append(self)
+        self.owner: Any = None  # the rclpy node wrapping this one, if any
         self._host = Host(session or open_session("peer"), self.namespace,
                           self.name, logger, space)
         self.session = self._host.session
@@ -103,7 +111,7 @@ class Node:
         runs the callback on Zenoh's delivery thread instead of the executor: no hand-over
         between threads (it halves the CPU of a 1 kHz stream), but the callback must be
         thread-safe against the node's other callbacks and must not block. `remote_only=True`
-        ignores what this process publishes (a two-way bridge must not hear itself). `make`
+        ignores what this node publishes (a two-way bridge must not hear itself). `make`
         builds messages of other classes from field values (see TypeRegistry.deserialize)."""
         return self._host.adopt(Subscription(self._host, type_name, self.resolve(topic), callback,
                                              qos_of(qos), raw, inline, remote_only, space, make))
@@ -212,6 +220,11 @@ class Node:
     def shutdown(self) -> None:
         self._stopped.set()
 
+    @property
+    def is_shutdown(self) -> bool:
+        """shutdown() was called: spin() returns (a one-shot component says it is done)."""
+        return self._stopped.is_set()
+
     def graph_session(self) -> zenoh.Session:
         """The session to ask who is on the bus (see Host.graph_session)."""
         return self._host.graph_session()
@@ -227,5 +240,6 @@ class Node:
             with contextlib.suppress(zenoh.ZError, RuntimeError):
                 entity.destroy()
         self._token.undeclare()
-        self.session.close()
+        if self._owns_session:
+            self.session.close()
 

@@ -49,6 +49,7 @@ class Publisher:
                     heartbeat=None, sporadic_heartbeat=HEARTBEAT) if qos.reliable else None)
         self._sequence = itertools.count(1)
         self._gid = os.urandom(16)
+        host.publisher_gids.add(self._gid)
         self._write = types.writer(self.type_name)
         self._token = host.announce(keys.PUBLISHER, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)

@@ -43,7 +43,10 @@ class Subscription:
         self.space = space or host.space
         key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name),
                              self.space)
-        origin = zenoh.Locality.REMOTE if remote_only else zenoh.Locality.ANY
+        # its node's own samples are told by their publisher's gid (the attachment's last 16
+        # bytes), not by Zenoh's locality: in a component container, nodes share a session
+        self._own = host.publisher_gids if remote_only else None
+        origin = zenoh.Locality.ANY
         if qos.transient_local:
             self._subscriber: Any = zenoh.ext.declare_advanced_subscriber(
                 host.session, key, self._on_sample, allowed_origin=origin,
@@ -59,6 +62,10 @@ class Subscription:
                                     types.type_hash(self.type_name), qos.key(), self.space)
 
     def _on_sample(self, sample: zenoh.Sample) -> None:
+        if self._own is not None:
+            attachment = sample.attachment
+            if attachment is not None and attachment.to_bytes()[-16:] in self._own:
+                return
         payload = sample.payload.to_bytes()
         if self._inline:
             self._deliver(payload)

@@ -13,7 +13,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from launcher.bus import graph, keys
+from launcher.bus import components, graph, keys
 from launcher.bus.node import Node as BusNode
 from launcher.compat import rosidl
 from launcher.errors import LaunchError
@@ -50,7 +50,8 @@ class Node:
                  allow_undeclared_parameters: bool = False,
                  automatically_declare_parameters_from_overrides: bool = False,
                  enable_logger_service: bool = False) -> None:
-        self._context = context or get_default_context()
+        within = components.current()  # loaded by a component container: its own context
+        self._context = context or (within and within.context) or get_default_context()
         if not self._context.ok():
             raise NotInitializedException("cannot create node")
         argv: list[str] = []
@@ -68,6 +69,7 @@ class Node:
             if "namespace" in text:
                 raise InvalidNamespaceException(text) from None
             raise InvalidNodeNameException(text) from None
+        self._bus.owner = self
         self._host = self._bus._host
         self._host._bell = self._context.bell  # its work wakes whichever executor spins it
         self._destroyed = False
