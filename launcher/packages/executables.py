@@ -91,23 +91,29 @@ def find_executable(package: Package, name: str) -> Executable:
 
 
 def _declared_entry_points(package: Package) -> list[tuple[str, str]]:
-    declared = [(e.get("name", ""), e.get("module", ""))
-                for e in package.exports.get("executable", [])]
+    return declared(package, "executable", "console_scripts")
+
+
+def declared(package: Package, tag: str, group: str, key: str = "name") -> list[tuple[str, str]]:
+    """(name, 'module:attribute') pairs a package declares: package.xml's
+    `<export><TAG KEY=… module=…/>`, then the entry-point GROUP of setup.cfg and setup.py."""
+    found = [(e.get(key, ""), e.get("module", "")) for e in package.exports.get(tag, [])]
     setup_cfg = package.path / "setup.cfg"
     if setup_cfg.is_file():
-        parser = configparser.ConfigParser()
+        parser = configparser.ConfigParser(delimiters=("=",))
+        parser.optionxform = str  # type: ignore[assignment,method-assign]  # keep the case
         try:
             parser.read(setup_cfg)
-            lines = parser.get("options.entry_points", "console_scripts", fallback="")
+            lines = parser.get("options.entry_points", group, fallback="")
         except configparser.Error:
             lines = ""
         for line in lines.splitlines():
             if "=" in line:
                 name, target = (part.strip() for part in line.split("=", 1))
-                declared.append((name, target))
+                found.append((name, target))
     setup_py = package.path / "setup.py"
     if setup_py.is_file():
-        from launcher.packages.setup_py import console_scripts
+        from launcher.packages.setup_py import entry_points
 
-        declared += [(name, target) for name, target, _line in console_scripts(setup_py)]
-    return [(n, t) for n, t in declared if n and _ENTRY.match(t)]
+        found += [(name, target) for name, target, _line in entry_points(setup_py, group)]
+    return [(n, t) for n, t in found if n and _ENTRY.match(t)]

@@ -1,6 +1,7 @@
-"""The console scripts an ament_python package's `setup.py` declares, read without running it.
+"""The entry points an ament_python package's `setup.py` declares, read without running it.
 
-    setup(..., entry_points={'console_scripts': ['talker = pkg.talker:main']})
+    setup(..., entry_points={'console_scripts': ['talker = pkg.talker:main'],
+                             'rclpy_components': ['pkg::Talker = pkg.talker:Talker']})
 
 The file is parsed, never executed: `entry_points` is evaluated from literals, names bound at
 the file's top level to literals (`package_name = 'pkg'`), `+` of strings, f-strings and
@@ -26,6 +27,11 @@ class Unreadable(Exception):
 
 def console_scripts(path: Path) -> list[tuple[str, str, int]]:
     """(name, 'module:function', line) for each console script; [] if it declares none."""
+    return entry_points(path, "console_scripts")
+
+
+def entry_points(path: Path, group: str) -> list[tuple[str, str, int]]:
+    """(name, 'module:attribute', line) for each entry point of `group`."""
     text = read_text(path)
     try:
         tree = ast.parse(text, str(path))
@@ -50,11 +56,11 @@ def console_scripts(path: Path) -> list[tuple[str, str, int]]:
                 where = problem.node
                 raise LaunchError(
                     f"cannot read setup.py's entry_points without running it: {problem}; "
-                    "write the console_scripts as literal strings (or declare them in "
+                    f"write the {group} as literal strings (or declare them in "
                     "setup.cfg's [options.entry_points])",
                     Location(str(path), getattr(where, "lineno", 0),
                              getattr(where, "col_offset", -1) + 1)) from None
-            scripts = value.get("console_scripts", []) if isinstance(value, dict) else []
+            scripts = value.get(group, []) if isinstance(value, dict) else []
             if isinstance(scripts, str):
                 scripts = scripts.splitlines()
             for line in scripts:

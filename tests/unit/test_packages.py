@@ -157,3 +157,39 @@ def test_xacro_in_process_finds_packages_in_the_index_given_and_leaves_nothing_b
     out = run_xacro(["xacro", str(ws / "desc" / "urdf" / "robot.xacro")], index)
     assert '<link name="wheel"/>' in out and '<link name="base"/>' in out
     assert substitution_args._eval_find is before  # the resolver was for that call only
+
+
+def test_components_from_package_xml_setup_cfg_and_setup_py(tmp_path):
+    from launcher.packages.components import components, find_component
+
+    ws = make_tree(tmp_path / "ws", {
+        "app/package.xml": manifest("app", extra='<export><component plugin="app::Driver" '
+                                                 'module="app_py.driver:Driver"/></export>'),
+        "app/setup.cfg": "[options.entry_points]\nrclpy_components =\n"
+                         "    app::Square = app_py.square:Square\n",
+        "app/setup.py": "from setuptools import setup\nname = 'app'\nsetup(entry_points={"
+                        "'rclpy_components': [name + '::Talker = app_py.talk:Talker']})\n",
+    })
+    package = index_for(ws).get("app")
+    found = components(package)
+    assert {k: v.target for k, v in found.items()} == {
+        "app::Driver": "app_py.driver:Driver", "app::Square": "app_py.square:Square",
+        "app::Talker": "app_py.talk:Talker"}
+    assert found["app::Driver"].folder == str(package.path)
+    with pytest.raises(LaunchError, match="package 'app' has no component 'app::Drivr' \\(did "
+                                          "you mean 'app::Driver'\\?\\); it offers: app::Driver, "
+                                          "app::Square, app::Talker"):
+        find_component(package, "app::Drivr")
+
+
+def test_the_builtin_nodes_are_components_too():
+    from launcher.packages.components import components
+
+    index = PackageIndex.from_environment({"LAUNCHER_PACKAGE_PATH": ""}, cwd=Path("/"))
+    plugins = {name for package in index for name in components(package)}
+    assert {"robot_state_publisher::RobotStatePublisher", "ros_gz_bridge::RosGzBridge",
+            "ros_gz_sim::Create", "mujoco_sim::Create",
+            "mujoco_bridge::ParameterBridge"} <= plugins
+    executables_ = executables(index.get("rclcpp_components"))
+    assert {"component_container", "component_container_mt",
+            "component_container_isolated"} <= set(executables_)
