@@ -176,6 +176,26 @@ def spawn(node: Any) -> int:
     return 0
 
 
+def component() -> Any:
+    """create in a component container: it spawns once, from its parameters (`name`, `x`,
+    `topic`, …, as its flags), on its own thread, then ends its spin and is unloaded. A
+    failure (no sim, a refused spawn) is raised there: the container reports and unloads it."""
+    from launcher.bus.node import Node
+
+    node = Node("create")
+    parse([], node.parameters)  # bad options are the load's error
+
+    def once() -> None:
+        timer.cancel()
+        try:
+            spawn(node)
+        finally:
+            node.shutdown()
+
+    timer = node.create_timer(1e-6, once)
+    return node
+
+
 def main() -> int:
     return reported(lambda: run(sys.argv[1:]), "create")
 

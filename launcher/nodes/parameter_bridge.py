@@ -18,9 +18,8 @@ from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.errors import LaunchError
-from launcher.nodes import bridge_config, conversions
+from launcher.nodes import bridge_config, conversions, running
 from launcher.nodes.bridge_config import Entry
-from launcher.nodes.running import run_node
 
 
 class Bridge:
@@ -130,8 +129,11 @@ def setup(node: Node) -> Bridge:
     return bridge
 
 
+component = running.component("parameter_bridge", setup)
+
+
 def main() -> int:
-    return run_node("parameter_bridge", setup)
+    return running.run_node("parameter_bridge", setup)
 
 
 if __name__ == "__main__":

@@ -25,8 +25,8 @@ from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
 from launcher.bus.wire import JointStateReader, TfLayout, pack_tf
 from launcher.errors import LaunchError
+from launcher.nodes import running
 from launcher.nodes.kinematics import Tree
-from launcher.nodes.running import run_node
 from launcher.schema import Kind, attr, build
 
 
@@ -173,8 +173,11 @@ class RobotStatePublisher:
         return take, None if every else rows, mimics, layout
 
 
+component = running.component("robot_state_publisher", RobotStatePublisher)
+
+
 def main() -> int:
-    return run_node("robot_state_publisher", RobotStatePublisher)
+    return running.run_node("robot_state_publisher", RobotStatePublisher)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 """How a built-in node runs: set up, spin until Ctrl-C or SIGTERM; errors through the one
-reporter (`[name] error: …` on stderr)."""
+reporter (`[name] error: …` on stderr). The same set-up is the node's component, for a
+component container (see launcher/packages/components.py)."""
 
 from __future__ import annotations
 
@@ -22,3 +23,19 @@ def _spin(name: str, setup: Callable[[Node], object]) -> int:
     finally:
         node.destroy_node()
     return 0
+
+
+def component(name: str, setup: Callable[[Node], object]) -> Callable[[], Node]:
+    """The callable a container loads: it makes the node (the container gives it its name,
+    namespace, remaps and parameters) and sets it up."""
+    def make() -> Node:
+        node = Node(name)
+        try:
+            setup(node)
+        except BaseException:
+            node.destroy_node()
+            raise
+        return node
+
+    make.__name__ = make.__qualname__ = f"{name}_component"
+    return make

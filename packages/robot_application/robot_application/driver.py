@@ -11,7 +11,8 @@ import time
 from launcher.bus.node import Node
 
 
-def main() -> int:
+def Driver() -> Node:  # noqa: N802  # the component's name, as a class would have it
+    """The driver as a component (robot_application::Driver): the node, set up, not spun."""
     node = Node("driver")
     speed = float(node.declare_parameter("speed", 0.5).value)
     turn = float(node.declare_parameter("turn", 0.2).value)
@@ -30,6 +31,11 @@ def main() -> int:
     command = node.message("geometry_msgs/msg/Twist", linear={"x": speed}, angular={"z": turn})
     node.create_timer(0.1, lambda: publisher.publish(command))
     node.get_logger().info(f"driving at {speed} m/s, turning at {turn} rad/s")
+    return node
+
+
+def main() -> int:
+    node = Driver()
     node.spin()
     node.destroy_node()
     return 0
