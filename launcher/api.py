@@ -11,6 +11,7 @@ from typing import Any
 
 from launcher.description import action as _action
 from launcher.description.actions import arguments as _arguments
+from launcher.description.actions import composition as _composition
 from launcher.description.actions import environment as _environment
 from launcher.description.actions import group as _group
 from launcher.description.actions import log as _log
@@ -52,7 +53,8 @@ __all__ = [
     "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown", "Substitution",
     "TextSubstitution", "ThisLaunchFileDir", "TimerAction", "UnlessCondition",
     "UnsetEnvironmentVariable", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
-    "Node", "FindPackageShare", "FindPackagePrefix", "ParameterValue", "PushRosNamespace",
+    "Node", "ComposableNodeContainer", "LoadComposableNodes", "ComposableNode",
+    "FindPackageShare", "FindPackagePrefix", "ParameterValue", "PushRosNamespace",
     "SetParameter", "SetRemap", "SetUseSimTime", "SetParametersFromFile",
 ]
 
@@ -185,7 +187,45 @@ class ParameterValue:
 
 def Node(*, package: Any, executable: Any, name: Any = None, namespace: Any = None,  # noqa: N802
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
-         arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (), **kw: Any) -> Any:
+         arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (),
+         _kind: type = _node.Node, **kw: Any) -> Any:
+    return _kind(package=package, executable=executable, node_name=name,
+                 namespace=namespace, exec_name=exec_name, parameters=_parameters(parameters),
+                 remappings=list(remappings), arguments=list(arguments) or None,
+                 ros_arguments=list(ros_arguments) or None, **kw)
+
+
+def ComposableNodeContainer(*, name: Any, namespace: Any,  # noqa: N802
+                            package: Any = "rclcpp_components",
+                            executable: Any = "component_container",
+                            composable_node_descriptions: Sequence[Any] = (),
+                            **kw: Any) -> Any:
+    """launch_ros.actions.ComposableNodeContainer: a container and the nodes to load into it."""
+    return Node(package=package, executable=executable, name=name, namespace=namespace,
+                composable_nodes=list(composable_node_descriptions),
+                _kind=_composition.NodeContainer, **kw)
+
+
+def LoadComposableNodes(*, composable_node_descriptions: Sequence[Any],  # noqa: N802
+                        target_container: Any, **kw: Any) -> Any:
+    """launch_ros.actions.LoadComposableNodes: load into a running container (its name, or
+    the ComposableNodeContainer action)."""
+    return _composition.LoadComposableNodes(target=target_container,
+                                            composable_nodes=list(composable_node_descriptions),
+                                            **kw)
+
+
+def ComposableNode(*, package: Any, plugin: Any, name: Any = None,  # noqa: N802
+                   namespace: Any = None, parameters: Sequence[Any] = (),
+                   remappings: Sequence[Any] = (), extra_arguments: Sequence[Any] = ()) -> Any:
+    """launch_ros.descriptions.ComposableNode."""
+    return _composition.ComposableNode(package=package, plugin=plugin, node_name=name,
+                                       namespace=namespace, parameters=_parameters(parameters),
+                                       remappings=list(remappings),
+                                       extra_arguments=list(extra_arguments))
+
+
+def _parameters(parameters: Sequence[Any]) -> list[Any]:
     entries = []
     for item in parameters:
         if isinstance(item, dict):
@@ -193,10 +233,7 @@ def Node(*, package: Any, executable: Any, name: Any = None, namespace: Any = No
                 entries.append(_parameter(key, value))
         else:
             entries.append(_node.ParamEntry(from_file=to_text(item)))
-    return _node.Node(package=package, executable=executable, node_name=name,
-                      namespace=namespace, exec_name=exec_name, parameters=entries,
-                      remappings=list(remappings), arguments=list(arguments) or None,
-                      ros_arguments=list(ros_arguments) or None, **kw)
+    return entries
 
 
 def _parameter(name: Any, value: Any) -> Any:

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from launcher import compat
 from launcher.bus import discovery
+from launcher.cli.components import BusLoader
 from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
 from launcher.description.actions.arguments import check_required
@@ -111,7 +112,7 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
-        load_description=load_file, packages=index,
+        load_description=load_file, packages=index, loader=BusLoader(),
     )
     return service.run(LaunchDescription(root))
 

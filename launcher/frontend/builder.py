@@ -141,6 +141,8 @@ def _record(cls: type, entity: Entity, registry: Registry, what: str) -> Any:
     if children:
         raise ParseError(f"{what}: entries take no child tag '{children[0].tag}'",
                          children[0].location)
+    if "where" in getattr(cls, "__dataclass_fields__", {}):  # an entry that reports later
+        kwargs["where"] = entity.location
     return cls(**kwargs)
 
 

@@ -47,6 +47,8 @@ class EventLoop:
         self._busy = 0  # depth of interruptible() sections
         self._raised: Counter[int] = Counter()  # signals already raised as Interrupted
         self._stopped = False
+        self._posted: list[tuple[Callable[..., Any], tuple]] = []  # from other threads
+        self._post_pipe: tuple[int, int] | None = None
 
     # --- scheduling -----------------------------------------------------------------------
     def call_soon(self, callback: Callable[..., Any], *args: Any) -> Timer:
@@ -56,6 +58,30 @@ class EventLoop:
         timer = Timer(self.time() + max(delay, 0.0), callback, args)
         heapq.heappush(self._timers, (timer.when, next(self._sequence), timer))
         return timer
+
+    def call_soon_threadsafe(self, callback: Callable[..., Any], *args: Any) -> None:
+        """`callback(*args)` on the loop's thread, from any thread (a worker's result)."""
+        if self._post_pipe is None:
+            raise RuntimeError("call open_posting() on the loop's thread first")
+        self._posted.append((callback, args))  # list.append is atomic
+        with contextlib.suppress(BlockingIOError, OSError):
+            os.write(self._post_pipe[1], b"\0")
+
+    def open_posting(self) -> None:
+        """Make call_soon_threadsafe ready (a pipe the loop reads); idempotent."""
+        if self._post_pipe is None:
+            read, write = os.pipe()
+            os.set_blocking(read, False)
+            os.set_blocking(write, False)
+            self._post_pipe = (read, write)
+            self.add_reader(read, self._on_posted)
+
+    def _on_posted(self) -> None:
+        with contextlib.suppress(BlockingIOError):
+            os.read(self._post_pipe[0], 4096)  # type: ignore[index]
+        while self._posted:
+            callback, args = self._posted.pop(0)
+            callback(*args)
 
     def add_reader(self, fd: int, callback: Callable[..., Any], *args: Any) -> None:
         self._selector.register(fd, selectors.EVENT_READ, (callback, args))
@@ -144,4 +170,9 @@ class EventLoop:
 
     def close(self) -> None:
         self.remove_signal_handlers()
+        if self._post_pipe is not None:
+            self.remove_reader(self._post_pipe[0])
+            for fd in self._post_pipe:
+                os.close(fd)
+            self._post_pipe = None
         self._selector.close()

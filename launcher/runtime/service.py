@@ -22,6 +22,7 @@ from typing import Any
 
 from launcher.errors import ExecutionError, Interrupted, LaunchError
 from launcher.runtime import events
+from launcher.runtime.composition import Loader, LoadRequest
 from launcher.runtime.context import LaunchContext
 from launcher.runtime.custody import TICK, Custody, Sweep
 from launcher.runtime.logs import RunLog
@@ -46,6 +47,7 @@ class LaunchService:
         packages: Any = None,
         system: Processes | None = None,
         custody: Custody | None = None,
+        loader: Loader | None = None,
     ) -> None:
         self.system = system or System()
         self.printer = printer or Printer()
@@ -71,6 +73,8 @@ class LaunchService:
         self._finished = False
         self.custody = custody or Custody()
         self._sweep: Sweep | None = None
+        self.loader = loader
+        self._loads = 0  # composable nodes asked for and not answered yet
         self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
                                    exited=self._on_exited, log=self.log, group=self._on_group)
 
@@ -92,6 +96,8 @@ class LaunchService:
             self.schedule([description])
             self.loop.run()
         finally:
+            if self.loader is not None:
+                self.loader.close()
             self.loop.close()
             self.custody.end()
             if self.run_log is not None:
@@ -203,6 +209,34 @@ class LaunchService:
     def _on_child(self, _signum: int = 0) -> None:
         self.custody.tick({p.pid for p in self.processes if p.leader_running and p.pid})
 
+    # --- composable nodes -------------------------------------------------------------------
+    def load_components(self, container: str, requests: list[LoadRequest],
+                        alive: Callable[[], bool] | None) -> None:
+        """Ask `container` to load `requests`; each answer is logged, a failure reported (the
+        launch goes on, its exit status becomes 1). The launch does not end while one is out."""
+        if self.loader is None:
+            raise ExecutionError("composable nodes need the bus, which this run lacks "
+                                 "(run it with `launcher launch`)")
+        if not requests or self._shutting_down:
+            return
+        self.loop.open_posting()
+        self._loads += len(requests)
+
+        def done(request: LoadRequest, name: str, error: str) -> None:  # a loader's thread
+            self.loop.call_soon_threadsafe(self._on_loaded, container, request, name, error)
+
+        self.loader.load(container, requests, dict(self.context.environment), alive, done)
+
+    def _on_loaded(self, container: str, request: LoadRequest, name: str, error: str) -> None:
+        self._loads = max(0, self._loads - 1)
+        if error and not self._shutting_down:
+            self.report(ExecutionError(f"composable node '{request.label}' "
+                                       f"({request.plugin}) was not loaded into "
+                                       f"'{container}': {error}", request.where))
+        elif not error:
+            self.log("INFO", "launch", f"Loaded node '{name}' in container '{container}'")
+        self._check_idle()
+
     # --- events and timers ------------------------------------------------------------------
     def register_handler(self, handler: events.EventHandler) -> None:
         self._handlers.append(handler)
@@ -256,6 +290,9 @@ class LaunchService:
                 del self._timers[timer]
         for process in self.processes:
             process.stop()
+        if self.loader is not None:
+            self.loader.cancel()
+        self._loads = 0
         self._check_idle()
 
     def _on_signal(self, sig: int) -> None:
@@ -284,7 +321,7 @@ class LaunchService:
     def _check_idle(self) -> None:
         """The launch ends when no process runs and no timer or action is pending, and what
         its processes left running is stopped."""
-        if self._finished or self._queue or self._draining or self._timers:
+        if self._finished or self._queue or self._draining or self._timers or self._loads:
             return
         if any(p.alive for p in self.processes):
             return

@@ -139,3 +139,64 @@ def test_node_parameters_nest_in_xml_and_yaml():
         limits, from_file = node.parameters
         assert isinstance(limits, ParamEntry) and len(limits.children) == 2
         assert from_file.from_file is not None and len(node.remappings) == 1
+
+
+def test_node_container_and_load_composable_node_in_xml_and_yaml():
+    from launcher.description.actions.composition import LoadComposableNodes, NodeContainer
+
+    xml = xml_description("""
+    <launch>
+      <node_container pkg="rclcpp_components" exec="component_container" name="box"
+                      namespace="r1">
+        <composable_node pkg="p" plugin="p::A" name="a" namespace="ns">
+          <param name="speed" value="1.5"/>
+          <remap from="x" to="y"/>
+          <extra_arg name="use_intra_process_comms" value="true"/>
+        </composable_node>
+      </node_container>
+      <load_composable_node target="/r1/box">
+        <composable_node pkg="p" plugin="p::B"/>
+      </load_composable_node>
+    </launch>
+    """)
+    yml = yaml_description("""
+    launch:
+      - node_container:
+          pkg: rclcpp_components
+          exec: component_container
+          name: box
+          namespace: r1
+          composable_node:
+            - pkg: p
+              plugin: p::A
+              name: a
+              namespace: ns
+              param: [{name: speed, value: "1.5"}]
+              remap: [{from: x, to: y}]
+              extra_arg: [{name: use_intra_process_comms, value: "true"}]
+      - load_composable_node:
+          target: /r1/box
+          composable_node: [{pkg: p, plugin: p::B}]
+    """)
+    for description in (xml, yml):
+        box, load = description.actions
+        assert isinstance(box, NodeContainer) and isinstance(load, LoadComposableNodes)
+        (first,) = box.composable_nodes
+        assert len(first.parameters) == len(first.remappings) == 1
+        assert len(first.extra_arguments) == 1
+        assert first.where is not None and first.where.line > 1  # errors point at the entry
+        assert len(load.composable_nodes) == 1
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("launch:\n  - node_container: {pkg: p, exec: e, name: b, composable_node: [{pkg: p}]}\n",
+     "test.launch.yaml:2:66: node_container.composable_node: each entry needs 'plugin'"),
+    ("launch:\n  - load_composable_node: {composable_node: []}\n",
+     "'load_composable_node' needs the attribute 'target'"),
+    ("launch:\n  - load_composable_node: {target: b, composable_node: [{pkg: p, plugin: q,"
+     " nmae: x}]}\n", "unknown key 'nmae' (did you mean 'name'?)"),
+])
+def test_composition_errors(text, expected):
+    with pytest.raises(ParseError, match=expected.replace("(", "\\(").replace(")", "\\)")
+                       .replace("?", "\\?")):
+        yaml_description(text)

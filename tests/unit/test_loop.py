@@ -58,3 +58,24 @@ def test_the_launch_service_and_the_tests_fake_are_both_runtimes():
 
     assert isinstance(FakeService(), Runtime)
     assert isinstance(LaunchService(), Runtime)
+
+
+def test_work_posted_from_other_threads_runs_on_the_loop_in_order():
+    import threading
+
+    loop = EventLoop()
+    loop.open_posting()
+    seen: list[tuple[int, bool]] = []
+
+    def post(number: int) -> None:
+        loop.call_soon_threadsafe(lambda: seen.append(
+            (number, threading.current_thread() is threading.main_thread())))
+
+    workers = [threading.Thread(target=post, args=(i,)) for i in range(3)]
+    for worker in workers:
+        worker.start()
+        worker.join()
+    loop.call_later(0.2, loop.stop)
+    loop.run()
+    loop.close()
+    assert seen == [(0, True), (1, True), (2, True)]

@@ -145,10 +145,15 @@ class ExecuteProcess(Action):
         spec = self.spec(context)
         self._register_reactions(context, spec.label)
         try:
-            context.service.start_process(spec)
+            process = context.service.start_process(spec)
         except OSError as exc:
             raise ExecutionError(f"cannot start '{spec.argv[0]}': {exc.strerror or exc}") from None
+        if process is not None:
+            self.started(context, process)
         return None
+
+    def started(self, context: LaunchContext, process: Any) -> None:
+        """Called once the process is spawned (a container then loads its nodes)."""
 
     def _register_reactions(self, context: LaunchContext, label: str) -> None:
         for handler_type, reaction in ((OnProcessExit, self.on_exit),

@@ -1,6 +1,8 @@
 """launch_ros.actions (launcher.api)."""
 
 from launcher.api import (  # noqa: F401
+    ComposableNodeContainer,
+    LoadComposableNodes,
     Node,
     PushRosNamespace,
     SetParameter,

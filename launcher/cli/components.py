@@ -1,0 +1,150 @@
+"""The launch's Loader (runtime/composition.py): it asks containers over the bus.
+
+It joins the graph only when a launch has composable nodes, as a node named
+`launch_ros_<pid>` (launch_ros's name for it), from one worker thread per container, so
+requests to one container are sent in order and one slow container does not hold up another.
+
+launch_ros waits for a container's service for ever, printing nothing; here a container this
+launch started is waited for while it runs (its exit fails what it was asked at once), and any
+other container for WAIT seconds (LAUNCHER_LOAD_TIMEOUT sets it), after which the error lists
+the containers that are running.
+"""
+
+from __future__ import annotations
+
+import os
+import queue
+import threading
+import time
+from collections.abc import Callable
+from typing import Any
+
+from launcher.errors import LaunchError, did_you_mean
+from launcher.runtime.composition import Done, LoadRequest
+
+LOAD = "composition_interfaces/srv/LoadNode"
+SUFFIX = "/_container/load_node"
+WAIT = 30.0  # s for a container not started by this launch to appear
+WAIT_VARIABLE = "LAUNCHER_LOAD_TIMEOUT"
+ANSWER_WAIT = 75.0  # s for one load's answer (the container gives a constructor 60 s)
+
+
+class BusLoader:
+    def __init__(self) -> None:
+        self._node: Any = None
+        self._lock = threading.Lock()
+        self._workers: dict[str, queue.SimpleQueue[Any]] = {}
+        self._cancelled = threading.Event()
+
+    def load(self, container: str, requests: list[LoadRequest], environment: dict[str, str],
+             alive: Callable[[], bool] | None, done: Done) -> None:
+        with self._lock:
+            work = self._workers.get(container)
+            if work is None:
+                work = self._workers[container] = queue.SimpleQueue()
+                threading.Thread(target=self._serve, args=(container, work),
+                                 name=f"load-{container}", daemon=True).start()
+        work.put((requests, environment, alive, done))
+
+    def cancel(self) -> None:
+        self._cancelled.set()
+
+    def close(self) -> None:
+        self._cancelled.set()
+        with self._lock:
+            node, self._node = self._node, None
+        if node is not None:
+            node.destroy_node()
+
+    # --- the workers ------------------------------------------------------------------------
+    def _serve(self, container: str, work: queue.SimpleQueue[Any]) -> None:
+        client = None
+        while not self._cancelled.is_set():
+            requests, environment, alive, done = work.get()
+            try:
+                if client is None:
+                    client = self._bus(environment).create_client(LOAD, container + SUFFIX)
+                self._wait(client, container, alive, _wait_time(environment))
+            except LaunchError as exc:
+                for request in requests:
+                    done(request, "", exc.message)
+                client = None if alive is not None else client
+                continue
+            for request in requests:
+                if self._cancelled.is_set():
+                    return
+                done(request, *self._load(client, request))
+
+    def _bus(self, environment: dict[str, str]) -> Any:
+        with self._lock:
+            if self._node is None:
+                from launcher.bus.node import Node
+                from launcher.bus.session import open_session
+
+                self._node = Node(f"launch_ros_{os.getpid()}", argv=[],
+                                  session=open_session(environ=environment),
+                                  parameter_services=False)
+            return self._node
+
+    def _wait(self, client: Any, container: str, alive: Callable[[], bool] | None,
+              wait: float) -> None:
+        deadline = time.monotonic() + wait
+        while not client.wait_for_service(0.1):
+            if self._cancelled.is_set():
+                raise LaunchError("the launch is ending")
+            if alive is not None and not alive():
+                raise LaunchError(f"the container '{container}' exited before it loaded it")
+            if alive is None and time.monotonic() > deadline:
+                running = self._containers()
+                raise LaunchError(
+                    f"no container named '{container}' answered within {wait:g} s"
+                    f"{did_you_mean(container, running)}; containers running: "
+                    f"{', '.join(running) or 'none'}")
+
+    def _containers(self) -> list[str]:
+        from launcher.bus import graph, keys
+
+        found = graph.entities(self._node.graph_session(), 0.5)
+        return sorted({e.topic[:-len(SUFFIX)] for e in found
+                       if e.kind == keys.SERVICE and e.topic.endswith(SUFFIX)})
+
+    def _load(self, client: Any, request: LoadRequest) -> tuple[str, str]:
+        """(full node name, error)."""
+        from launcher.bus import ros_args
+        from launcher.bus.parameters import to_message
+
+        try:
+            values: dict[str, Any] = {}
+            for path in request.param_files:
+                values.update(ros_args.load_params_file(path, request.node_name,
+                                                        request.namespace))
+            values.update(request.parameters)
+            node = self._node
+            message = node.message(
+                LOAD + "_Request", package_name=request.package, plugin_name=request.plugin,
+                node_name=request.node_name, node_namespace=request.namespace,
+                remap_rules=[f"{a}:={b}" for a, b in request.remaps])
+            message.parameters = [_parameter(node, name, to_message(value))
+                                  for name, value in values.items()]
+            message.extra_arguments = [_parameter(node, name, to_message(value))
+                                       for name, value in request.extra_arguments.items()]
+            response = client.call(message, timeout=ANSWER_WAIT)
+        except LaunchError as exc:
+            return "", exc.message
+        if not response.success:
+            return "", response.error_message or "the container refused it"
+        return response.full_node_name, ""
+
+
+def _wait_time(environment: dict[str, str]) -> float:
+    text = environment.get(WAIT_VARIABLE, "")
+    try:
+        return max(0.0, float(text)) if text else WAIT
+    except ValueError:
+        raise LaunchError(f"{WAIT_VARIABLE}={text!r}: expected seconds, e.g. 30") from None
+
+
+def _parameter(node: Any, name: str, value: Any) -> Any:
+    parameter = node.message("rcl_interfaces/msg/Parameter", name=name)
+    parameter.value = value
+    return parameter

@@ -1,0 +1,182 @@
+"""Composition, as launch_ros does it: `node_container` runs a component container and loads its
+`composable_node`s into it; `load_composable_node` loads more into a running container.
+
+    - node_container:
+        pkg: rclcpp_components
+        exec: component_container
+        name: robot_container
+        namespace: r1
+        composable_node:
+          - {pkg: robot_state_publisher, plugin: robot_state_publisher::RobotStatePublisher,
+             name: robot_state_publisher, param: [{name: robot_description, value: …}]}
+    - load_composable_node:
+        target: /r1/robot_container
+        composable_node: [{pkg: robot_application, plugin: robot_application::Driver}]
+
+A composable node takes the launch's namespace, `set_remap`s and `set_parameter`s as a node
+does. Its plugin is checked against what the package declares before the container is asked
+(a located error, with did-you-mean); the container's answer for each node is logged, and a
+failure is reported at the composable_node, the rest of the launch going on.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from launcher.description import parameters as params
+from launcher.description.action import Action
+from launcher.description.actions.node import (
+    Node,
+    ParamEntry,
+    RemapEntry,
+    _collect,
+    _python_parameters,
+)
+from launcher.description.fields import Kind, attr
+from launcher.description.registry import action
+from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.errors import ExecutionError, LaunchError
+from launcher.packages.components import find_component
+from launcher.runtime.composition import LoadRequest
+from launcher.runtime.context import LaunchContext
+
+
+@dataclass(eq=False)
+class ExtraArgument:
+    name: Text_ = attr(Kind.TEXT, required=True, doc="use_intra_process_comms, …")
+    value: Text_ = attr(Kind.TEXT, required=True, doc="Its value.")
+
+
+@dataclass(eq=False)
+class ComposableNode:
+    package: Any = attr(Kind.TEXT, name="pkg", aliases=("package",), required=True,
+                        doc="The package declaring the component.")
+    plugin: Any = attr(Kind.TEXT, required=True, doc="The component's plugin name (pkg::Name).")
+    node_name: Any = attr(Kind.TEXT, name="name", doc="The node's name.")
+    namespace: Any = attr(Kind.TEXT, aliases=("ns",), doc="The node's namespace.")
+    parameters: list[Any] = attr(Kind.ENTRIES, name="param", entry=ParamEntry,
+                                 doc="Parameters: name/value, nested, or from a file.")
+    remappings: list[Any] = attr(Kind.ENTRIES, name="remap", entry=RemapEntry,
+                                 doc="Topic and service remappings.")
+    extra_arguments: list[Any] = attr(Kind.ENTRIES, name="extra_arg", entry=ExtraArgument,
+                                      doc="Arguments for the container about this node.")
+    where: Any = None
+
+    def __post_init__(self) -> None:
+        self.parameters = _python_parameters(self.parameters)
+        self.remappings = [r if isinstance(r, RemapEntry) else
+                           RemapEntry(to_text(r[0]), to_text(r[1])) for r in self.remappings]
+        extras: list[Any] = []
+        for entry in self.extra_arguments:  # Python: [{'use_intra_process_comms': True}]
+            if isinstance(entry, dict):
+                extras += [ExtraArgument(to_text(k), to_text(str(v).lower()
+                                                             if isinstance(v, bool) else v))
+                           for k, v in entry.items()]
+            else:
+                extras.append(entry)
+        self.extra_arguments = extras
+        for name in ("package", "plugin", "node_name", "namespace"):
+            value = getattr(self, name)
+            if value is not None and not isinstance(value, list):
+                setattr(self, name, to_text(value))
+
+    def request(self, context: LaunchContext) -> LoadRequest:
+        """What the container is asked, with the launch's namespace, remaps and parameters."""
+        package = perform_text(context, self.package)
+        plugin = perform_text(context, self.plugin)
+        if context.packages is not None:
+            try:
+                find_component(context.packages.get(package), plugin)
+            except LaunchError as exc:
+                raise ExecutionError(exc.message, exc.location or self.where) from None
+        own = perform_text(context, self.namespace) if self.namespace is not None else ""
+        node_name = perform_text(context, self.node_name) if self.node_name is not None else ""
+        files = list(params.global_parameter_files(context))
+        inline: dict[str, Any] = dict(params.global_parameters(context))
+        for entry in self.parameters:
+            if entry.from_file is not None:
+                path = Path(perform_text(context, entry.from_file))
+                params.check_params_file(path, self.where)
+                files.append(str(path))
+            else:
+                _collect(context, entry, "", inline)
+        mine = [(perform_text(context, r.source), perform_text(context, r.target))
+                for r in self.remappings]
+        extra = {perform_text(context, e.name): params.typed(perform_text(context, e.value))
+                 for e in self.extra_arguments}
+        return LoadRequest(package, plugin, node_name,
+                           params.join_namespace(params.namespace(context), own),
+                           [*params.remaps(context), *mine], inline, files, extra, self.where)
+
+
+def _requests(context: LaunchContext, nodes: list[ComposableNode],
+              where: Any) -> list[LoadRequest]:
+    """The requests; a node that cannot be asked for (an unknown plugin) is reported, and the
+    others are loaded (as a container's refusal is)."""
+    made = []
+    for node in nodes:
+        try:
+            made.append(node.request(context))
+        except LaunchError as exc:
+            context.service.report(exc if exc.location else exc.at(node.where or where))
+    return made
+
+
+@action("node_container")
+@dataclass(kw_only=True, eq=False)
+class NodeContainer(Node):
+    """A component container (rclcpp_components' component_container, or any executable that
+    offers `~/_container/load_node`) with the composable nodes to load into it."""
+
+    composable_nodes: list[Any] = attr(Kind.ENTRIES, name="composable_node",
+                                       entry=ComposableNode, doc="The nodes to load into it.")
+    fqn: str = ""  # the container's name, once started
+
+    def started(self, context: LaunchContext, process: Any) -> None:
+        node = self._node_name(context)
+        if not node:
+            raise ExecutionError("node_container needs a 'name': composable nodes are loaded "
+                                 "into it by name", self.where)
+        space = self._namespace(context)
+        self.fqn = f"{space.rstrip('/')}/{node}"
+        requests = _requests(context, self.composable_nodes, self.where)
+        alive: Callable[[], bool] = lambda: process.alive  # noqa: E731
+        context.service.load_components(self.fqn, requests, alive)
+
+
+@action("load_composable_node")
+@dataclass(kw_only=True, eq=False)
+class LoadComposableNodes(Action):
+    target: Any = attr(Kind.TEXT, name="target", aliases=("target_container",), required=True,
+                       doc="The container's node name (relative names take the namespace).")
+    composable_nodes: list[Any] = attr(Kind.ENTRIES, name="composable_node",
+                                       entry=ComposableNode, doc="The nodes to load.")
+
+    container: Any = None  # Python: target_container=a ComposableNodeContainer action
+
+    def __post_init__(self) -> None:
+        if isinstance(self.target, NodeContainer):
+            self.container, self.target = self.target, ""
+        super().__post_init__()
+
+    def execute(self, context: LaunchContext) -> Sequence[Action] | None:
+        if context.service is None:
+            return None
+        target = self.container or self.target
+        if isinstance(target, NodeContainer):  # Python: target_container=the action
+            if not target.fqn:
+                raise ExecutionError("load_composable_node: its target container has not "
+                                     "been started", self.where)
+            name = target.fqn
+        else:
+            name = params.join_namespace(params.namespace(context),
+                                         perform_text(context, to_text(target)))
+        requests = _requests(context, self.composable_nodes, self.where)
+        process = next((p for p in reversed(context.service.processes)
+                        if getattr(p.spec.origin, "fqn", None) == name), None)
+        alive = (lambda: process.alive) if process is not None else None
+        context.service.load_components(name, requests, alive)
+        return None
