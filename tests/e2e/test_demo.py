@@ -100,9 +100,13 @@ def test_a_bad_world_name_names_the_places_searched(demo):
     assert done.returncode == 1  # the seed's file has no on_exit: the sim's exit 1 counts
 
 
-def test_three_robots_from_one_launch_file_move_independently(demo):
+@pytest.mark.parametrize("container", ["all", "per_robot", "none"])
+def test_three_robots_from_one_launch_file_move_independently(demo, container):
+    """Each robot's nodes in one component container for all (the default), one per robot,
+    or a process per node: the same robots, the same motion."""
     launch = str(REPO / "launch_files" / "multi_robot.launch.yaml")
-    proc = demo.start("launch", launch, "count:=3", output="multi.out")
+    proc = demo.start("launch", launch, "count:=3", f"container:={container}",
+                      output="multi.out")
     try:
         for i in range(3):
             demo.wait_for_output(f"spawned 'robot_{i}' into world 'robot'", 90, "multi.out")
@@ -118,6 +122,9 @@ def test_three_robots_from_one_launch_file_move_independently(demo):
         assert xs[0] < xs[1] < xs[2] and xs[0] > 0.1, xs
         frames = first_line_with(demo, ["topic", "echo", "/tf"], "child_frame_id: robot_2/")
         assert frames  # tf frames carry each robot's prefix
+        containers = {"all": 1, "per_robot": 3, "none": 0}[container]
+        assert len([p for p in psutil.Process(proc.pid).children(recursive=True)
+                    if "component_container" in " ".join(p.cmdline())]) == containers
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(60) == 130
