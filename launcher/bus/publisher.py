@@ -16,7 +16,7 @@ import zenoh
 import zenoh.ext
 
 from launcher.bus import keys
-from launcher.bus.host import Host
+from launcher.bus.host import Host, direct
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 
@@ -58,7 +58,7 @@ class Publisher:
         self._watchers: list[Callable[[bool], None]] = []
         self._closed = False
         self._lock = threading.Lock()
-        self._listener = self._publisher.declare_matching_listener(self._on_matching)
+        self._listener = self._publisher.declare_matching_listener(direct(self._on_matching))
 
     def _on_matching(self, status: Any) -> None:
         self._matching = status.matching

@@ -17,7 +17,7 @@ from typing import Any
 import zenoh
 
 from launcher.bus import graph, keys
-from launcher.bus.host import Host
+from launcher.bus.host import Host, direct
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
@@ -47,7 +47,7 @@ class Service:
             self.response_type)(**_zero_fields(self.response_type)))
         space = space or host.space
         key = keys.service_key(keys.DOMAIN, name, type_name, type_hash, space)
-        self._queryable = host.session.declare_queryable(key, self._on_query)
+        self._queryable = host.session.declare_queryable(key, direct(self._on_query))
         self._token = host.announce(keys.SERVICE, name, type_name, type_hash, QoS().key(),
                                     space)
 
