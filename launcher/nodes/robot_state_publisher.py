@@ -66,9 +66,20 @@ class RobotStatePublisher:
         # cost more than the work); a lock keeps it apart from parameter changes.
         self._lock = threading.Lock()
         self._bad_warned = False
-        node.create_subscription("sensor_msgs/msg/JointState", "joint_states", self.on_payload,
-                                 QoS(depth=10, reliable=False), raw=True, inline=True)
+        # joint_states is listened to only while /tf has a subscriber: with no one to tell,
+        # the transforms are not worked out (and a lazy bridge, the sim behind it, rest too)
+        self._joint_states: Any = None
+        self.tf_pub.watch_subscribers(self._on_tf_subscribers)
         node.add_on_set_parameters_callback(self.on_parameter)
+
+    def _on_tf_subscribers(self, matching: bool) -> None:
+        if matching and self._joint_states is None:
+            self._joint_states = self.node.create_subscription(
+                "sensor_msgs/msg/JointState", "joint_states", self.on_payload,
+                QoS(depth=10, reliable=False), raw=True, inline=True)
+        elif not matching and self._joint_states is not None:
+            self._joint_states.destroy()
+            self._joint_states = None
 
     def _load(self, tree: Tree, description: str) -> None:
         self.tree = tree
