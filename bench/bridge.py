@@ -73,6 +73,7 @@ def one_way(node, pub_type: str, source: str, sink_type: str, sink: str, count: 
 
 
 def throughput(node, count: int) -> float:
+    from launcher.bus import keys
     from launcher.bus.messages import build
     from launcher.bus.qos import QoS
     from launcher.bus.types import registry
@@ -87,7 +88,8 @@ def throughput(node, count: int) -> float:
 
     subscription = node.create_subscription("geometry_msgs/msg/Twist", "/flood", on,
                                             QoS(depth=100000), raw=True, inline=True)
-    publisher = node.create_publisher("mujoco_sim/msg/Twist", "/flood", QoS(depth=100000))
+    publisher = node.create_publisher("mujoco_sim/msg/Twist", "/flood", QoS(depth=100000),
+                                      space=keys.SIM)  # the sim's side
     time.sleep(0.5)
     payload = registry().serialize(build("mujoco_sim/msg/Twist", {}), "mujoco_sim/msg/Twist")
     for _ in range(count):

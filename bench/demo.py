@@ -20,32 +20,44 @@ from _harness import launcher_cmd, summary, table, workdir
 REPO = Path(__file__).resolve().parent.parent
 
 # A node started by the same launch: prints a JSON line when each topic's first message
-# arrives (wall time), then the sim's real-time factor over a window once all have arrived.
+# arrives (wall time), then the sim's real-time factor over a window once all have arrived
+# (from one clock message at each end of the window).
 PROBE = """
 import json, sys, time
 from launcher.bus import keys
 from launcher.bus.node import Node
 topics, window = sys.argv[1].split(","), float(sys.argv[2])
 node = Node("bench_probe")
-first, clocks = {}, []
+first = {}
 def heard(topic):
     def first_message(message):
         if topic not in first:
             first[topic] = time.time()
             print("PROBE " + json.dumps({"first": {topic: first[topic]}}), flush=True)
     return first_message
-for topic in topics:
-    node.create_subscription("nav_msgs/msg/Odometry", topic, heard(topic))
-def tick(c):
-    clocks.append((time.monotonic(), c.sim.sec + c.sim.nanosec * 1e-9))
-node.create_subscription("mujoco_sim/msg/Clock", "/world/robot/clock", tick, space=keys.SIM)
+subscriptions = [node.create_subscription("nav_msgs/msg/Odometry", topic, heard(topic))
+                 for topic in topics]
+def clock_now():
+    # (wall, sim) time from one clock message: subscribed only for it, so the sim does not
+    # publish its 1 kHz clock for the probe's sake the rest of the time
+    got = []
+    sub = node.create_subscription("mujoco_sim/msg/Clock", "/world/robot/clock",
+                                   lambda c: got.append((time.monotonic(),
+                                                         c.sim.sec + c.sim.nanosec * 1e-9)),
+                                   space=keys.SIM)
+    while not got:
+        node.spin_once(0.05)
+    sub.destroy()
+    return got[0]
 while len(first) < len(topics):
     node.spin_once(0.05)
 print("PROBE " + json.dumps({"all": True}), flush=True)
+for subscription in subscriptions:  # heard: no load of the probe's from here on
+    subscription.destroy()
 node.spin(2.0)  # let start-up settle
-clocks.clear()
+w0, s0 = clock_now()
 node.spin(window)
-(w0, s0), (w1, s1) = clocks[0], clocks[-1]
+w1, s1 = clock_now()
 print("PROBE " + json.dumps({"rtf": (s1 - s0) / (w1 - w0)}), flush=True)
 node.spin(1000)
 """
