@@ -200,16 +200,21 @@ def router(environ: Mapping[str, str] | None = None) -> Iterator[list[str]]:
         yield [f"unixsock-stream/{sock}"]
 
 
-def start(environ: Mapping[str, str] | None = None) -> None:
+def start(environ: Mapping[str, str] | None = None, wait: bool = True) -> None:
     """Start the graph's router unless one answers (or LAUNCHER_ROUTER names one); returns at
-    once, the router still starting (connecting through `router()` waits for it)."""
+    once, the router still starting (connecting through `router()` waits for it). With
+    `wait=False`, a router another process is starting is left to it (no waiting for its
+    lock)."""
     env = dict(os.environ if environ is None else environ)
     if explicit_endpoints(env):
         return
     sock = socket_path(env)
     _own_folder(sock.parent)
     with open_private(lock_path(sock), "a") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
+        except BlockingIOError:
+            return
         if answers(sock):
             return
         with contextlib.suppress(FileNotFoundError):

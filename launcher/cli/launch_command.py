@@ -107,12 +107,17 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
     custody = Custody()
     custody.begin()  # before the hooks run: whatever they start is the launch's too
     environment = children_environment(index, args.debug)
-    discovery.start(environment)  # the graph's router, unless one runs: ready when nodes are
+    discovery.explicit_endpoints(environment)  # a bad LAUNCHER_ROUTER, ROS_DOMAIN_ID or
+    discovery.socket_path(environment)  # run folder is said now, not at the first node
     service = LaunchService(custody=custody,
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
         load_description=load_file, packages=index, loader=BusLoader(),
+        # the graph's router, unless one runs, once the first process that may join the graph
+        # is spawned (so it starts while that one imports); a launch of system programs needs
+        # none, and a node that opens its session sooner starts it itself
+        on_graph=lambda: discovery.start(environment, wait=False),
     )
     return service.run(LaunchDescription(root))
 

@@ -66,6 +66,7 @@ class ProcessSpec:
     respawn_delay: float = 0.0
     respawn_max_retries: int = -1
     origin: Any = None  # the action that asked for this process (for event handlers)
+    joins_graph: bool = False  # it may be a ROS node (the launch then starts the router)
 
 
 class ProcessHooks(NamedTuple):

@@ -48,6 +48,7 @@ class LaunchService:
         system: Processes | None = None,
         custody: Custody | None = None,
         loader: Loader | None = None,
+        on_graph: Callable[[], None] | None = None,
     ) -> None:
         self.system = system or System()
         self.printer = printer or Printer()
@@ -74,6 +75,9 @@ class LaunchService:
         self.custody = custody or Custody()
         self._sweep: Sweep | None = None
         self.loader = loader
+        # once, when the first process that may join the graph is spawned (`launcher launch`
+        # starts the graph's router there)
+        self._on_graph = on_graph
         self._loads = 0  # composable nodes asked for and not answered yet
         self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
                                    exited=self._on_exited, log=self.log, group=self._on_group)
@@ -111,6 +115,15 @@ class LaunchService:
         if self._error or any(p.failed for p in self.processes):
             return 1
         return 0
+
+    def _graph_needed(self) -> None:
+        hook, self._on_graph = self._on_graph, None
+        if hook is None:
+            return
+        try:
+            hook()
+        except LaunchError as exc:
+            self.report(exc)
 
     # --- visiting actions -------------------------------------------------------------------
     def schedule(self, actions: Sequence[Any]) -> None:
@@ -174,6 +187,8 @@ class LaunchService:
         process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
         process.spawn()
         self.processes.append(process)
+        if spec.joins_graph and self._on_graph is not None:
+            self._graph_needed()  # now: the router starts while this process imports
         return process
 
     def _on_line(self, process: ManagedProcess, record: Record, targets: frozenset[str]) -> None:

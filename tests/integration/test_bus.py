@@ -59,6 +59,11 @@ def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
     return proc, ws.root / f"{name}.out"
 
 
+# A launch that hosts the graph: a Python program may be a node, so the launch starts the
+# graph's router with it (a launch of system programs alone starts none).
+IDLE = "launch:\n  - executable: {{cmd: {py} -c 'import time; time.sleep({seconds})'}}\n"
+
+
 def wait_for_router(ws, timeout: float = 20, domain: int = 0) -> str:
     """The endpoint of the graph's router of this workspace, once it answers."""
     deadline = time.monotonic() + timeout
@@ -208,7 +213,7 @@ s.close()
      "invalid topic name '/bad-name': the part 'bad-name' holds a character other than", 1),
 ], ids=["unknown-type", "yaml-does-not-fit", "yaml-invalid", "invalid-topic"])
 def test_cli_bad_input(bus, args, expected, code):
-    proc, out = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
+    proc, out = launch(bus, "idle.launch.yaml", IDLE.format(py=PY, seconds=30))
     wait_for_router(bus)
     result = bus.run(*args, timeout=30)
     assert result.returncode == code and expected in result.stderr, result.stderr
@@ -324,7 +329,7 @@ def test_param_list_get_set_on_a_live_node(bus):
 
 
 def test_a_node_never_destroyed_still_lets_its_program_exit(bus):
-    proc, out = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 30}\n")
+    proc, out = launch(bus, "idle.launch.yaml", IDLE.format(py=PY, seconds=30))
     wait_for_router(bus)
     script = bus.write("forgetful.py", """
 from launcher.bus.node import Node
@@ -436,7 +441,7 @@ token.undeclare(); publisher.undeclare(); session.close()
 
 
 def test_a_latched_subscriber_gets_what_a_later_publisher_holds(bus):
-    proc, _ = launch(bus, "idle.launch.yaml", "launch:\n  - executable: {cmd: sleep 60}\n")
+    proc, _ = launch(bus, "idle.launch.yaml", IDLE.format(py=PY, seconds=60))
     bus.env["LAUNCHER_ROUTER"] = wait_for_router(bus)
     bus.write("waiter.py", LATE_LISTENER)
     bus.write("cache.py", CACHE_ONLY)

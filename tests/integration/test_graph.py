@@ -133,6 +133,26 @@ def test_routers_life_one_for_many_starts_and_none_left_after(ws):
     assert not (ws.root / "run" / "domain-0.sock").exists()
 
 
+def test_a_launch_starts_the_router_with_its_first_node_and_plain_programs_need_none(ws):
+    ws.own_bus()
+    ws.write("plain.launch.yaml", "launch:\n  - executable: {cmd: 'true'}\n")
+    done = ws.run("launch", "plain.launch.yaml")
+    assert done.returncode == 0, done.stderr
+    assert not (ws.root / "run" / "domain-0.log").exists()  # no router was started
+    ws.write("node.launch.yaml", """
+    launch:
+      - executable: {cmd: 'sleep 0.5'}
+      - node: {pkg: robot_state_publisher, exec: robot_state_publisher, output: screen,
+               param: [{name: robot_description, value: "<robot name='r'><link name='a'/></robot>"}]}
+      - timer: {period: 3.0, children: [{shutdown: {}}]}
+    """)
+    done = ws.run("launch", "node.launch.yaml")
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "robot 'r': 0 moving joints" in done.stdout
+    log = (ws.root / "run" / "domain-0.log").read_text()
+    assert log.count("started by pid") == 1, log
+
+
 def test_a_stale_socket_of_a_dead_router_is_replaced(ws):
     ws.own_bus()
     run = ws.root / "run"

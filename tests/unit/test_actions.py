@@ -175,3 +175,24 @@ def test_shell_gets_the_text_whole():
     """)
     _, service = run(description)
     assert service.specs[0].argv == ["/bin/sh", "-c", "echo \"it's here\" | wc -c"]
+
+
+def test_which_programs_may_join_the_graph(tmp_path):
+    """The launch starts the graph's router with the first of these (not for sleep or sh)."""
+    import os
+    import sys
+
+    from launcher.description.actions.executable import _may_join_graph
+
+    tool = tmp_path / "bin" / "gz"
+    tool.parent.mkdir()
+    tool.write_text("#!/bin/sh\n")
+    tool.chmod(0o755)
+    env = {"PATH": f"/usr/bin:/bin:{tool.parent}"}
+    assert not _may_join_graph("sleep", env, None)
+    assert not _may_join_graph("/bin/sh", env, None)
+    assert _may_join_graph("gz", env, None)
+    assert _may_join_graph(sys.executable, env, None)
+    assert _may_join_graph("no-such-program", env, None)
+    assert _may_join_graph("./bin/gz", env, str(tmp_path))
+    assert os.path.isfile("/usr/bin/python3") is False or _may_join_graph("python3", env, None)

@@ -130,6 +130,7 @@ class ExecuteProcess(Action):
 
         return ProcessSpec(
             label=context.service.next_label(base), argv=argv, env=env, cwd=cwd,
+            joins_graph=_may_join_graph(argv[0], env, cwd),
             emulate_tty=resolve(context, self.emulate_tty, Kind.BOOL, "emulate_tty"),
             stdout_to=frozenset(stdout_to), stderr_to=frozenset(stderr_to),
             sigterm_timeout=num("sigterm_timeout", Kind.FLOAT),
@@ -186,6 +187,21 @@ class _LabelHandler:
 
 def _field_spec(obj: Any, name: str) -> Any:
     return type(obj).__dataclass_fields__[name].metadata["launch"]
+
+
+SYSTEM_FOLDERS = ("/bin", "/sbin", "/usr/bin", "/usr/sbin", "/usr/local/bin", "/usr/local/sbin")
+
+
+def _may_join_graph(program: str, env: dict[str, str], cwd: str | None) -> bool:
+    """Whether the program may be a ROS node: anything but a system tool (sleep, sh, …)
+    that is not Python. A wrong yes only starts the graph's router a little early."""
+    found = program if "/" in program else shutil.which(program, path=env.get("PATH"))
+    if found is None:
+        return True
+    if cwd is not None and not os.path.isabs(found):
+        found = os.path.join(cwd, found)
+    folder, name = os.path.split(os.path.realpath(found))
+    return folder not in SYSTEM_FOLDERS or name.startswith("python")
 
 
 def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> None:

@@ -117,7 +117,9 @@ class Node(ExecuteProcess):
         label = self.exec_name if self.exec_name is not None else self.node_name
         base = perform_text(context, label) if label is not None else found.name
         env = found.environment(self.environment(context))
-        return self.process_spec(context, argv, env, base)
+        spec = self.process_spec(context, argv, env, base)
+        spec.joins_graph = True
+        return spec
 
     def _node_name(self, context: LaunchContext) -> str:
         return perform_text(context, self.node_name) if self.node_name is not None else ""
