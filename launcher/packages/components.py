@@ -13,8 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from launcher.errors import LaunchError, did_you_mean
-from launcher.packages.executables import declared
+from launcher.packages.executables import declared, lookup
 from launcher.packages.manifest import Package
 
 GROUP = "rclpy_components"
@@ -35,10 +34,4 @@ def components(package: Package) -> dict[str, Component]:
 
 
 def find_component(package: Package, plugin: str) -> Component:
-    available = components(package)
-    found = available.get(plugin)
-    if found is None:
-        listing = ", ".join(sorted(available)) or "none"
-        raise LaunchError(f"package '{package.name}' has no component '{plugin}'"
-                          f"{did_you_mean(plugin, available)}; it offers: {listing}")
-    return found
+    return lookup(package, "component", plugin, components(package), "it offers")

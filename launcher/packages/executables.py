@@ -16,6 +16,7 @@ import re
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from launcher.errors import LaunchError, did_you_mean
 from launcher.packages.manifest import Package
@@ -78,15 +79,21 @@ def _python_script(path: Path) -> bool:
 
 
 def find_executable(package: Package, name: str) -> Executable:
-    available = executables(package)
-    found = available.get(name)
-    if found is None:
-        listing = ", ".join(sorted(available)) or "none"
-        raise LaunchError(f"package '{package.name}' has no executable '{name}'"
-                          f"{did_you_mean(name, available)}; it has: {listing}")
+    found = lookup(package, "executable", name, executables(package), "it has")
     if not found.runnable:
         raise LaunchError(f"'{found.path}' in package '{package.name}' is not executable; "
                           f"make it so with: chmod +x {found.path}")
+    return found
+
+
+def lookup(package: Package, kind: str, name: str, available: dict[str, Any],
+           listed: str) -> Any:
+    """`available[name]`, or an error naming what is close and all there is."""
+    found = available.get(name)
+    if found is None:
+        listing = ", ".join(sorted(available)) or "none"
+        raise LaunchError(f"package '{package.name}' has no {kind} '{name}'"
+                          f"{did_you_mean(name, available)}; {listed}: {listing}")
     return found
 
 
