@@ -45,6 +45,7 @@ class Loaded:
     plugin: str
     scope: components.Scope
     made: threading.Event = field(default_factory=threading.Event)
+    registered: threading.Event = field(default_factory=threading.Event)
     error: str = ""
     refused: bool = False  # the load was answered as failed: stop once made
     thread: threading.Thread | None = None
@@ -129,24 +130,27 @@ class Container:
         loaded.thread = threading.Thread(target=self._run, args=(loaded, component),
                                          name=f"component-{loaded.unique_id}", daemon=True)
         loaded.thread.start()
-        if not loaded.made.wait(CONSTRUCT_WAIT):
-            loaded.refused = True
-            raise LaunchError(f"{plugin}: its constructor did not return within "
-                              f"{CONSTRUCT_WAIT:g} s")
-        if loaded.error:
-            raise LaunchError(f"{plugin}: its constructor raised {loaded.error}")
-        if not loaded.names:
-            loaded.refused = True
-            raise LaunchError(f"{plugin}: it made no node (a component is a callable that "
-                              "makes a launcher or rclpy node)")
         try:
+            if not loaded.made.wait(CONSTRUCT_WAIT):
+                loaded.refused = True
+                raise LaunchError(f"{plugin}: its constructor did not return within "
+                                  f"{CONSTRUCT_WAIT:g} s")
+            if loaded.error:
+                raise LaunchError(f"{plugin}: its constructor raised {loaded.error}")
+            if not loaded.names:
+                loaded.refused = True
+                raise LaunchError(f"{plugin}: it made no node (a component is a callable "
+                                  "that makes a launcher or rclpy node)")
             with self._lock:
-                for name in loaded.names:
-                    self._check_free(name)
+                try:
+                    for name in loaded.names:
+                        self._check_free(name)
+                except LaunchError:
+                    loaded.refused = True  # its thread destroys what it made
+                    raise
                 self._loaded[loaded.unique_id] = loaded
-        except LaunchError:
-            self.stop(loaded)
-            raise
+        finally:
+            loaded.registered.set()  # only now may its thread spin (or end, and unlist it)
         self.node.get_logger().info(f"loaded {plugin} as {', '.join(loaded.names)} "
                                     f"(unique id {loaded.unique_id})")
         return loaded
@@ -184,7 +188,9 @@ class Container:
             loaded.made.set()
             return
         loaded.made.set()
-        if loaded.refused:
+        loaded.registered.wait()
+        if loaded.refused:  # refused after it was made: too late, or a name taken
+            _destroy(loaded)
             return
         try:
             self._spin(loaded)
