@@ -64,9 +64,13 @@ def course(ws):
 def test_the_course_publisher_drives_the_robot_and_prints_x_and_y(course):
     node = course.start("run", "course_nodes", "publisher.py", output="publisher.out")
     try:
-        text = course.wait_for_output("X: 1.", 90, "publisher.out")  # driven past a metre
-        points = [(float(x), float(y)) for x, y in
-                  re.findall(r"X: (-?[\d.e-]+), Y: (-?[\d.e-]+)", text)]
+        deadline = time.monotonic() + 90
+        points: list[tuple[float, float]] = []
+        while not points or points[-1][0] < 1.0:  # driven past a metre (the course prints
+            assert time.monotonic() < deadline, course.output("publisher.out")  # raw floats:
+            time.sleep(0.2)  # "X: 1.5e-05" is not past it)
+            points = [(float(x), float(y)) for x, y in re.findall(
+                r"X: (-?[\d.e+-]+), Y: (-?[\d.e+-]+)", course.output("publisher.out"))]
         assert len(points) > 10 and points[-1][0] > points[0][0] + 0.5
         assert points[-1][1] > points[0][1]  # angular.z 0.2: it turns left
     finally:
