@@ -46,19 +46,16 @@ class Subscription:
         # its node's own samples are told by their publisher's gid (the attachment's last 16
         # bytes), not by Zenoh's locality: in a component container, nodes share a session
         self._own = host.publisher_gids if remote_only else None
-        origin = zenoh.Locality.ANY
-        handler = self._on_sample  # on zenoh-python's own thread: see host.direct
         if qos.transient_local:
             self._subscriber: Any = zenoh.ext.declare_advanced_subscriber(
-                host.session, key, handler, allowed_origin=origin,
+                host.session, key, self._on_sample,  # zenoh-python's thread: see host.direct
                 history=zenoh.ext.HistoryConfig(detect_late_publishers=True,
                                                 max_samples=qos.depth),
                 recovery=zenoh.ext.RecoveryConfig(periodic_queries=None, heartbeat=True)
                 if qos.reliable else None,
                 subscriber_detection=True)
         else:
-            self._subscriber = host.session.declare_subscriber(key, handler,
-                                                               allowed_origin=origin)
+            self._subscriber = host.session.declare_subscriber(key, self._on_sample)
         self._token = host.announce(keys.SUBSCRIPTION, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)
 

@@ -18,7 +18,7 @@ import os
 import selectors
 import signal
 import time
-from collections import Counter
+from collections import Counter, deque
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -47,7 +47,7 @@ class EventLoop:
         self._busy = 0  # depth of interruptible() sections
         self._raised: Counter[int] = Counter()  # signals already raised as Interrupted
         self._stopped = False
-        self._posted: list[tuple[Callable[..., Any], tuple]] = []  # from other threads
+        self._posted: deque[tuple[Callable[..., Any], tuple]] = deque()  # from other threads
         self._post_pipe: tuple[int, int] | None = None
 
     # --- scheduling -----------------------------------------------------------------------
@@ -63,7 +63,7 @@ class EventLoop:
         """`callback(*args)` on the loop's thread, from any thread (a worker's result)."""
         if self._post_pipe is None:
             raise RuntimeError("call open_posting() on the loop's thread first")
-        self._posted.append((callback, args))  # list.append is atomic
+        self._posted.append((callback, args))  # deque.append is atomic
         with contextlib.suppress(BlockingIOError, OSError):
             os.write(self._post_pipe[1], b"\0")
 
@@ -80,7 +80,7 @@ class EventLoop:
         with contextlib.suppress(BlockingIOError):
             os.read(self._post_pipe[0], 4096)  # type: ignore[index]
         while self._posted:
-            callback, args = self._posted.pop(0)
+            callback, args = self._posted.popleft()
             callback(*args)
 
     def add_reader(self, fd: int, callback: Callable[..., Any], *args: Any) -> None:

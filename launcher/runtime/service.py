@@ -187,7 +187,7 @@ class LaunchService:
         process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
         process.spawn()
         self.processes.append(process)
-        if spec.joins_graph and self._on_graph is not None:
+        if spec.joins_graph:
             self._graph_needed()  # now: the router starts while this process imports
         return process
 

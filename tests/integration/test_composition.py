@@ -335,3 +335,19 @@ def test_the_builtin_nodes_load_as_components(comp):
         assert twist.stdout.removesuffix("---\n").strip() == "0.25", twist.stdout
     finally:
         assert stop(launch) == 130
+
+
+def test_a_container_without_a_name_is_refused_before_it_starts(comp):
+    comp.write("c.launch.yaml", """
+    launch:
+    - node_container:
+        pkg: rclcpp_components
+        exec: component_container
+        composable_node: [{pkg: testcomp, plugin: testcomp::Talker}]
+    """)
+    done = comp.run("launch", "c.launch.yaml", timeout=60)
+    out = done.stdout + done.stderr
+    assert done.returncode == 1, out
+    assert "c.launch.yaml:2:3: node_container needs a 'name': composable nodes are loaded " \
+           "into it by name" in out, out
+    assert "process started" not in out and "Traceback" not in out

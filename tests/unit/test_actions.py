@@ -178,21 +178,22 @@ def test_shell_gets_the_text_whole():
 
 
 def test_which_programs_may_join_the_graph(tmp_path):
-    """The launch starts the graph's router with the first of these (not for sleep or sh)."""
-    import os
+    """The launch starts the graph's router with the first of these (not for sleep or sh);
+    the path is the one the spawn check found."""
+    import shutil
     import sys
 
-    from launcher.description.actions.executable import _may_join_graph
+    from launcher.description.actions.executable import _check_runnable, _may_join_graph
 
     tool = tmp_path / "bin" / "gz"
     tool.parent.mkdir()
     tool.write_text("#!/bin/sh\n")
     tool.chmod(0o755)
     env = {"PATH": f"/usr/bin:/bin:{tool.parent}"}
-    assert not _may_join_graph("sleep", env, None)
-    assert not _may_join_graph("/bin/sh", env, None)
-    assert _may_join_graph("gz", env, None)
-    assert _may_join_graph(sys.executable, env, None)
-    assert _may_join_graph("no-such-program", env, None)
-    assert _may_join_graph("./bin/gz", env, str(tmp_path))
-    assert os.path.isfile("/usr/bin/python3") is False or _may_join_graph("python3", env, None)
+    assert not _may_join_graph(_check_runnable("sleep", env, None))
+    assert not _may_join_graph(_check_runnable("/bin/sh", env, None))
+    assert _may_join_graph(_check_runnable("gz", env, None))
+    assert _may_join_graph(_check_runnable("./bin/gz", env, str(tmp_path)))
+    assert _may_join_graph(sys.executable)
+    python = shutil.which("python3", path="/usr/bin:/bin")
+    assert python is None or _may_join_graph(python)

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 from launcher.description import parameters as params
@@ -32,8 +31,8 @@ from launcher.description.actions.node import (
     Node,
     ParamEntry,
     RemapEntry,
-    _collect,
     _python_parameters,
+    gather_parameters,
 )
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
@@ -94,22 +93,15 @@ class ComposableNode:
                 raise ExecutionError(exc.message, exc.location or self.where) from None
         own = perform_text(context, self.namespace) if self.namespace is not None else ""
         node_name = perform_text(context, self.node_name) if self.node_name is not None else ""
-        files = list(params.global_parameter_files(context))
-        inline: dict[str, Any] = dict(params.global_parameters(context))
-        for entry in self.parameters:
-            if entry.from_file is not None:
-                path = Path(perform_text(context, entry.from_file))
-                params.check_params_file(path, self.where)
-                files.append(str(path))
-            else:
-                _collect(context, entry, "", inline)
+        files, inline = gather_parameters(context, self.parameters, self.where)
         mine = [(perform_text(context, r.source), perform_text(context, r.target))
                 for r in self.remappings]
         extra = {perform_text(context, e.name): params.typed(perform_text(context, e.value))
                  for e in self.extra_arguments}
         return LoadRequest(package, plugin, node_name,
                            params.join_namespace(params.namespace(context), own),
-                           [*params.remaps(context), *mine], inline, files, extra, self.where)
+                           [*params.remaps(context), *mine], inline, [str(f) for f in files],
+                           extra, self.where)
 
 
 def _requests(context: LaunchContext, nodes: list[ComposableNode],
@@ -135,13 +127,15 @@ class NodeContainer(Node):
                                        entry=ComposableNode, doc="The nodes to load into it.")
     fqn: str = ""  # the container's name, once started
 
-    def started(self, context: LaunchContext, process: Any) -> None:
+    def spec(self, context: LaunchContext):  # type: ignore[override]
         node = self._node_name(context)
-        if not node:
+        if not node:  # said before anything is started
             raise ExecutionError("node_container needs a 'name': composable nodes are loaded "
                                  "into it by name", self.where)
-        space = self._namespace(context)
-        self.fqn = f"{space.rstrip('/')}/{node}"
+        self.fqn = f"{self._namespace(context).rstrip('/')}/{node}"
+        return super().spec(context)
+
+    def started(self, context: LaunchContext, process: Any) -> None:
         requests = _requests(context, self.composable_nodes, self.where)
         alive: Callable[[], bool] = lambda: process.alive  # noqa: E731
         context.service.load_components(self.fqn, requests, alive)

@@ -120,7 +120,7 @@ class ExecuteProcess(Action):
         if not argv:
             raise ExecutionError("the command line is empty")
         cwd = None if self.cwd is None else perform_text(context, self.cwd)
-        _check_runnable(argv[0], env, cwd)
+        program = _check_runnable(argv[0], env, cwd)
         mode = resolve(context, self.output or "log", Kind.TEXT, "output",
                        _field_spec(self, "output"))
         stdout_to, stderr_to = OUTPUT_MODES[mode]
@@ -130,7 +130,7 @@ class ExecuteProcess(Action):
 
         return ProcessSpec(
             label=context.service.next_label(base), argv=argv, env=env, cwd=cwd,
-            joins_graph=_may_join_graph(argv[0], env, cwd),
+            joins_graph=_may_join_graph(program),
             emulate_tty=resolve(context, self.emulate_tty, Kind.BOOL, "emulate_tty"),
             stdout_to=frozenset(stdout_to), stderr_to=frozenset(stderr_to),
             sigterm_timeout=num("sigterm_timeout", Kind.FLOAT),
@@ -192,20 +192,15 @@ def _field_spec(obj: Any, name: str) -> Any:
 SYSTEM_FOLDERS = ("/bin", "/sbin", "/usr/bin", "/usr/sbin", "/usr/local/bin", "/usr/local/sbin")
 
 
-def _may_join_graph(program: str, env: dict[str, str], cwd: str | None) -> bool:
-    """Whether the program may be a ROS node: anything but a system tool (sleep, sh, …)
-    that is not Python. A wrong yes only starts the graph's router a little early."""
-    found = program if "/" in program else shutil.which(program, path=env.get("PATH"))
-    if found is None:
-        return True
-    if cwd is not None and not os.path.isabs(found):
-        found = os.path.join(cwd, found)
-    folder, name = os.path.split(os.path.realpath(found))
+def _may_join_graph(program: str) -> bool:
+    """Whether the program (its path) may be a ROS node: anything but a system tool (sleep,
+    sh, …) that is not Python. A wrong yes only starts the graph's router a little early."""
+    folder, name = os.path.split(os.path.realpath(program))
     return folder not in SYSTEM_FOLDERS or name.startswith("python")
 
 
-def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> None:
-    """Clear errors for the usual mistakes, before trying to spawn."""
+def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> str:
+    """The program's path; clear errors for the usual mistakes, before trying to spawn."""
     if cwd is not None and not os.path.isdir(cwd):
         raise ExecutionError(f"cwd '{cwd}' does not exist or is not a folder")
     if "/" in program:
@@ -214,11 +209,13 @@ def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> None:
             raise ExecutionError(f"executable '{program}' does not exist")
         if not os.access(path, os.X_OK) or os.path.isdir(path):
             raise ExecutionError(f"'{program}' is not executable")
-        return
+        return path
     search = env.get("PATH", os.defpath)
-    if shutil.which(program, path=search) is None:
+    found = shutil.which(program, path=search)
+    if found is None:
         raise ExecutionError(f"executable '{program}' not found on PATH"
                              f"{did_you_mean(program, _programs_on(search))}")
+    return found
 
 
 def _programs_on(search: str) -> set[str]:

@@ -129,15 +129,7 @@ class Node(ExecuteProcess):
         return params.join_namespace(params.namespace(context), own)
 
     def _params_files(self, context: LaunchContext, stem: str) -> list[Path]:
-        files = [Path(f) for f in params.global_parameter_files(context)]
-        inline: dict[str, Any] = dict(params.global_parameters(context))
-        for entry in self.parameters:
-            if entry.from_file is not None:
-                path = Path(perform_text(context, entry.from_file))
-                params.check_params_file(path, self.where)
-                files.append(path)
-            else:
-                _collect(context, entry, "", inline)
+        files, inline = gather_parameters(context, self.parameters, self.where)
         if inline:
             folder = Path(context.log_dir) / "params" if context.log_dir else \
                 Path(tempfile.gettempdir()) / "launcher-params"
@@ -151,6 +143,22 @@ class Node(ExecuteProcess):
             context.log("WARN", f"two nodes are named '{fqn}': at {other} and at {self.where}")
         context.node_names.setdefault(fqn, self.where)
 
+
+
+def gather_parameters(context: LaunchContext, entries: list[ParamEntry],
+                      where: Any) -> tuple[list[Path], dict[str, Any]]:
+    """(params files, inline values) for a node: the launch's `set_parameters_from_file`s and
+    `set_parameter`s first, then its own entries, in order."""
+    files = [Path(f) for f in params.global_parameter_files(context)]
+    inline: dict[str, Any] = dict(params.global_parameters(context))
+    for entry in entries:
+        if entry.from_file is not None:
+            path = Path(perform_text(context, entry.from_file))
+            params.check_params_file(path, where)
+            files.append(path)
+        else:
+            _collect(context, entry, "", inline)
+    return files, inline
 
 
 def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[str, Any]) -> None:
