@@ -125,6 +125,16 @@ class EventLoop:
         finally:
             self._busy -= 1
 
+    @contextlib.contextmanager
+    def shielded(self) -> Iterator[None]:
+        """A section a signal must not cut in two (a process being spawned and recorded): the
+        signal waits for the loop, as outside `interruptible()`."""
+        busy, self._busy = self._busy, 0
+        try:
+            yield
+        finally:
+            self._busy = busy
+
     def _on_signal(self, signum: int, _frame: Any) -> None:
         if self._busy and signum in (signal.SIGINT, signal.SIGTERM):
             self._raised[signum] += 1

@@ -185,8 +185,11 @@ class LaunchService:
             return None
         spec.env = self.custody.stamp(spec.env)
         process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
-        process.spawn()
-        self.processes.append(process)
+        # Ctrl-C in between would leave a running process that the shutdown does not know
+        # (and that respawns for ever): the signal waits until it is recorded
+        with self.loop.shielded():
+            process.spawn()
+            self.processes.append(process)
         if spec.joins_graph:
             self._graph_needed()  # now: the router starts while this process imports
         return process

@@ -231,6 +231,49 @@ def test_a_signal_during_start_up_exits_cleanly(ws):
         no_leftovers(ws)
 
 
+MID_SPAWN = """
+import os, signal, sys
+from launcher.frontend.loader import load_file
+from launcher.runtime.output import Printer
+from launcher.runtime.service import LaunchService
+
+class SignalledWhilePrinting(Printer):  # the signal lands as the start is said
+    signalled = False
+
+    def emit(self, record):
+        super().emit(record)
+        if "process started" in record.text and not self.signalled:
+            self.signalled = True
+            os.kill(os.getpid(), signal.SIGINT)
+
+service = LaunchService(printer=SignalledWhilePrinting(color=False), load_description=load_file)
+sys.exit(service.run(load_file(sys.argv[1])))
+"""
+
+
+def test_a_signal_while_a_process_is_spawned_stops_it_too(ws):
+    """Ctrl-C landing while a process is being spawned (a launch's start, a respawn storm's
+    every moment): the launch still knows that process and stops it, instead of letting it
+    respawn for ever behind the shutdown's back."""
+    ws.write("mid_spawn.py", MID_SPAWN)
+    ws.write("storm.launch.yaml", """
+    launch:
+      - executable: {cmd: "sh -c 'sleep 120 & exit 0'", respawn: true, respawn_delay: 0,
+                     sigterm_timeout: 0.3, sigkill_timeout: 0.3}
+    """)
+    proc = subprocess.Popen([PY, str(ws.root / "mid_spawn.py"), str(ws.root / "storm.launch.yaml")],
+                            env=ws.env, cwd=ws.root, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    try:
+        out, _ = proc.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        raise AssertionError(f"the launch did not end: {proc.communicate()[0][-2000:]}") from None
+    assert proc.returncode == 130, out
+    assert "respawning" not in out, out
+    no_leftovers(ws, 5)
+
+
 def test_a_signal_during_a_failure_s_shutdown_keeps_its_status(ws):
     ws.write("stubborn.py", """
     import signal, time

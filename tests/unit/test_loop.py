@@ -79,3 +79,26 @@ def test_work_posted_from_other_threads_runs_on_the_loop_in_order():
     loop.run()
     loop.close()
     assert seen == [(0, True), (1, True), (2, True)]
+
+
+def test_a_signal_inside_a_shielded_section_waits_for_the_loop():
+    from launcher.errors import Interrupted
+
+    loop = EventLoop()
+    got = []
+    loop.add_signal_handler(signal.SIGINT, lambda sig: (got.append(sig), loop.stop()))
+    try:
+        with loop.interruptible():
+            with loop.shielded():
+                os.kill(os.getpid(), signal.SIGINT)  # handled in here: must not raise
+                got.append("recorded")
+            with_raise = False
+            try:
+                os.kill(os.getpid(), signal.SIGINT)  # interruptible again: raises
+            except Interrupted:
+                with_raise = True
+        loop.run()  # the shielded one's byte reaches the handler; the raised one's does not
+    finally:
+        loop.close()
+    assert with_raise
+    assert got == ["recorded", signal.SIGINT]
