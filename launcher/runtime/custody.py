@@ -87,10 +87,13 @@ class Custody:
         return found
 
     # --- the end ----------------------------------------------------------------------------
-    def end(self) -> None:
-        """Let the watchdog go (it exits at once when nothing of the launch is left)."""
+    def end(self, nothing_left: bool = False) -> None:
+        """Let the watchdog go. `nothing_left`: the launch found nothing of its own running
+        at its end (its sweep), so the watchdog need not look for stragglers."""
         if self.watchdog is None:
             return
+        if nothing_left:
+            self._tell("=")
         pid, fd = self.watchdog
         self.watchdog = None
         os.close(fd)
@@ -119,6 +122,7 @@ class Sweep:
         self._timer: Timer | None = None
         self._left: set[int] = set()
         self.finished = False
+        self.gave_up = False  # some were still there after SIGKILL
 
     def start(self, left: set[int]) -> None:
         self._left = left
@@ -137,6 +141,7 @@ class Sweep:
             self.log("ERROR", f"still running after SIGKILL: "
                               f"{', '.join(describe(p) for p in sorted(self._left))}; "
                               f"giving up on them")
+            self.gave_up = True
             self._finish()
             return
         sig, wait = self._steps.pop(0)

@@ -8,7 +8,8 @@ watchdog ends everything that is still the launch's: those groups and processes,
 process carrying the launch's mark, including ones that were only being spawned when the
 launcher died (it looks again until a look finds nothing). SIGTERM first, SIGKILL after a
 grace period. Terminal signals are ignored; SIGTERM to the watchdog itself runs the same
-clean-up.
+clean-up. A launch that ended and found nothing of its own left says `=` last: the watchdog
+then only checks the groups it was told of, and exits.
 """
 
 from __future__ import annotations
@@ -33,8 +34,13 @@ class Launch:
         self.mark = mark
         self.groups: set[int] = set()
         self.pids: set[int] = set()
+        self.ended = False  # the launcher said it ended with nothing of the launch left
 
     def follow(self, line: bytes) -> None:
+        if line == b"=":
+            self.ended = True
+            return
+        self.ended = False  # (nothing follows "=" from a launcher that keeps its word)
         kind, number = (line[:2], line[2:]) if line.startswith(b"p") else (line[:1], line[1:])
         with contextlib.suppress(ValueError):
             target = self.pids if kind.startswith(b"p") else self.groups
@@ -50,6 +56,8 @@ class Launch:
 
     def clean_up(self) -> None:
         """End everything of the launch: SIGTERM, then SIGKILL after the grace period."""
+        if self.ended and not lineage.live_groups({g for g in self.groups if group_alive(g)}):
+            return  # the launcher looked last: nothing of the launch was left
         quiet = 0
         while quiet < LOOKS:
             groups, pids = self.live()

@@ -103,7 +103,9 @@ class LaunchService:
             if self.loader is not None:
                 self.loader.close()
             self.loop.close()
-            self.custody.end()
+            # its last look (the sweep) found nothing left: the watchdog need not look again
+            self.custody.end(nothing_left=self._finished and not (
+                self._sweep is not None and self._sweep.gave_up))
             if self.run_log is not None:
                 self.run_log.close()
         return self.exit_code

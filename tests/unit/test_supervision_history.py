@@ -235,3 +235,43 @@ def test_the_state_machine_refuses_an_edge_it_does_not_have():
     process, loop, system, _ = make()
     with pytest.raises(RuntimeError, match="no transition RUNNING -> STARTING"):
         process._to(State.STARTING)
+
+
+# --- the watchdog's last look (runtime/reaper.py) --------------------------------------------
+def test_the_watchdog_skips_its_looks_when_the_launch_ended_clean(monkeypatch):
+    from launcher.runtime import reaper
+
+    looked = []
+    monkeypatch.setattr(reaper.lineage, "marked", lambda mark: looked.append(mark) or set())
+    monkeypatch.setattr(reaper.time, "sleep", lambda seconds: None)
+    launch = reaper.Launch("MARK")
+    for line in (b"+4000001", b"-4000001", b"="):  # a group that came and went, then the end
+        launch.follow(line)
+    launch.clean_up()
+    assert looked == []
+    unclean = reaper.Launch("MARK")  # no "=": a launcher that died; it looks until quiet
+    unclean.follow(b"+4000001")
+    unclean.clean_up()
+    assert len(looked) == reaper.LOOKS
+
+
+def test_the_watchdog_still_stops_a_group_it_was_told_of_after_a_clean_end(monkeypatch):
+    from launcher.runtime import reaper
+
+    alive = {4000002}
+    killed = []
+
+    def killpg(pgid, sig):
+        killed.append((pgid, sig))
+        alive.discard(pgid)
+
+    monkeypatch.setattr(reaper, "group_alive", lambda pgid: pgid in alive)
+    monkeypatch.setattr(reaper.lineage, "live_groups", lambda groups: set(groups))
+    monkeypatch.setattr(reaper.lineage, "marked", lambda mark: set())
+    monkeypatch.setattr(reaper.os, "killpg", killpg)
+    monkeypatch.setattr(reaper.time, "sleep", lambda seconds: None)
+    launch = reaper.Launch("MARK")
+    launch.follow(b"+4000002")
+    launch.follow(b"=")
+    launch.clean_up()
+    assert killed == [(4000002, signal.SIGTERM)]
