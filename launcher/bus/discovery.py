@@ -25,7 +25,6 @@ import contextlib
 import fcntl
 import os
 import re
-import socket
 import sys
 import time
 from collections.abc import Iterator, Mapping
@@ -153,6 +152,8 @@ def linger(environ: Mapping[str, str] | None = None) -> float:
 
 def answers(path: Path) -> bool:
     """Whether a router listens on the socket (a stale file of a dead one does not)."""
+    import socket  # here: the launch imports this module at start, and seldom gets here
+
     with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as probe:
         try:
             probe.connect(str(path))

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 
 from launcher import __version__
@@ -29,10 +30,39 @@ COMMANDS = {
 }
 
 
+class _Formatter(argparse.HelpFormatter):
+    """argparse's formatter, sized without importing shutil (argparse makes one for every
+    option it adds, and shutil is a good part of a launch's start-up imports)."""
+
+    def __init__(self, prog: str, indent_increment: int = 2, max_help_position: int = 24,
+                 width: int | None = None) -> None:
+        if width is None:
+            width = _columns() - 2
+        super().__init__(prog, indent_increment, max_help_position, width)
+
+
+def _columns() -> int:
+    """What shutil.get_terminal_size() says: $COLUMNS, the terminal's width, or 80."""
+    try:
+        return int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        pass
+    try:
+        return os.get_terminal_size(sys.__stdout__.fileno()).columns or 80
+    except (AttributeError, ValueError, OSError):
+        return 80
+
+
+class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        kwargs.setdefault("formatter_class", _Formatter)
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+
+
 def build_parser(selected: str | None) -> tuple[argparse.ArgumentParser,
                                                  argparse._SubParsersAction]:
     """The parser, and its subcommands (only the selected one's module is imported)."""
-    parser = argparse.ArgumentParser(
+    parser = _Parser(  # (its subcommands' parsers are _Parsers too)
         prog="launcher", description="ROS 2-style launch files for simulated robots.")
     parser.add_argument("--version", action="version", version=f"launcher {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)

@@ -7,11 +7,13 @@ from pathlib import Path
 
 from launcher.description.action import LaunchDescription
 from launcher.errors import LaunchError, Location, ParseError
+from launcher.frontend import parse_cache
 from launcher.frontend.builder import build_description
-from launcher.frontend.python_loader import load_python
-from launcher.frontend.xml_loader import load_xml
-from launcher.frontend.yaml_loader import load_yaml
+from launcher.frontend.entity import Entity
 from launcher.user_files import check_readable, read_bytes
+
+# Each format's loader is imported when a file of that format is parsed (PyYAML alone is a
+# fifth of `launcher launch`'s imports), and parse_cache keeps what it parsed for the next run.
 
 FORMATS = (".yaml", ".yml", ".xml", ".py")
 # Parsed YAML/XML descriptions, by path and modification time: including a file N times (one
@@ -50,19 +52,31 @@ def load_file(path: Path) -> LaunchDescription:
     except OSError as exc:
         raise ParseError(f"cannot read: {exc.strerror}", Location(str(path))) from None
     if kind == ".py":
+        from launcher.frontend.python_loader import load_python
+
         return load_python(path)
     try:
-        if kind == ".xml":
-            root = load_xml(data, str(path))
-        else:
-            try:
-                text = data.decode("utf-8")
-            except UnicodeDecodeError as exc:
-                raise ParseError(f"not UTF-8 text: {exc.reason} at byte {exc.start}",
-                                 Location(str(path))) from None
-            root = load_yaml(text, str(path))
+        root = parse_cache.get(path, data)
+        if root is None:
+            root = _parse(kind, data, path)
+            parse_cache.put(path, data, root)
         description = build_description(root, path)
     except RecursionError:  # nested past what the loaders check for (`- - - - …` on one line)
         raise ParseError("nested too deeply to read", Location(str(path))) from None
     _cache[path] = (stamp, description)
     return description
+
+
+def _parse(kind: str, data: bytes, path: Path) -> Entity:
+    if kind == ".xml":
+        from launcher.frontend.xml_loader import load_xml
+
+        return load_xml(data, str(path))
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ParseError(f"not UTF-8 text: {exc.reason} at byte {exc.start}",
+                         Location(str(path))) from None
+    from launcher.frontend.yaml_loader import load_yaml
+
+    return load_yaml(text, str(path))

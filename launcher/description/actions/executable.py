@@ -3,9 +3,7 @@
 from __future__ import annotations
 
 import os
-import shutil
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.description.action import Action
@@ -16,6 +14,7 @@ from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError, did_you_mean
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 from launcher.runtime.process import ProcessSpec
 
@@ -211,11 +210,20 @@ def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> str:
             raise ExecutionError(f"'{program}' is not executable")
         return path
     search = env.get("PATH", os.defpath)
-    found = shutil.which(program, path=search)
+    found = _which(program, search)
     if found is None:
         raise ExecutionError(f"executable '{program}' not found on PATH"
                              f"{did_you_mean(program, _programs_on(search))}")
     return found
+
+
+def _which(program: str, search: str) -> str | None:
+    """shutil.which for a bare name (shutil is a good part of a launch's start-up imports)."""
+    for folder in search.split(os.pathsep):
+        path = os.path.join(folder or os.curdir, program)
+        if os.access(path, os.X_OK) and not os.path.isdir(path):
+            return path
+    return None
 
 
 def _programs_on(search: str) -> set[str]:

@@ -4,8 +4,6 @@
 from __future__ import annotations
 
 import os
-import shutil
-from dataclasses import dataclass
 from pathlib import Path
 
 from launcher.description.substitution import (
@@ -15,6 +13,7 @@ from launcher.description.substitution import (
     substitution,
     to_text,
 )
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 from launcher.user_files import read_text
 
@@ -72,6 +71,8 @@ class FindExecutable(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         name = perform_text(context, self.name)
+        import shutil
+
         found = shutil.which(name, path=context.environment.get("PATH", os.defpath))
         if found is None:
             raise self.fail(f"find-exec: no executable '{name}' on PATH")
