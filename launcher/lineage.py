@@ -19,7 +19,6 @@ from __future__ import annotations
 import contextlib
 import os
 import signal
-import subprocess
 import time
 from collections.abc import Iterable, Mapping
 from pathlib import Path
@@ -166,7 +165,8 @@ def run_to_end(argv: list[str], env: Mapping[str, str], *, cwd: str | None = Non
     background job it leaves cannot hold the launch up; once it exits, whatever it left in its
     group is stopped. Interrupted (Ctrl-C) or past `timeout`, the whole group is stopped and
     the exception (subprocess.TimeoutExpired) goes on."""
-    import tempfile  # only when a helper runs: start-up time
+    import subprocess  # only when a helper runs: a node's start-up time
+    import tempfile
 
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         child = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=out,

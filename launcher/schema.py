@@ -11,12 +11,12 @@ imports only `errors`: every layer may declare with it.
 
 from __future__ import annotations
 
-import dataclasses
 import enum
 import math
 from collections.abc import Callable, Mapping
 from typing import Any, NamedTuple, TypeVar
 
+from launcher import records
 from launcher.errors import ParseError, did_you_mean
 
 
@@ -53,15 +53,15 @@ def attr(kind: Kind, default: Any = None, **spec: Any) -> Any:
     """A dataclass field carrying its declaration."""
     meta = {"launch": Attr(kind, **spec)}
     if kind in LISTS and default is None:
-        return dataclasses.field(default_factory=list, metadata=meta)
-    return dataclasses.field(default=default, metadata=meta)
+        return records.field(default_factory=list, metadata=meta)
+    return records.field(default=default, metadata=meta)
 
 
-def declared_fields(cls: type) -> list[tuple[dataclasses.Field, Attr]]:
-    return [(f, f.metadata["launch"]) for f in dataclasses.fields(cls) if "launch" in f.metadata]
+def declared_fields(cls: type) -> list[tuple[records.Field, Attr]]:
+    return [(f, f.metadata["launch"]) for f in records.fields(cls) if "launch" in f.metadata]
 
 
-def frontend_name(f: dataclasses.Field, spec: Attr) -> str:
+def frontend_name(f: records.Field, spec: Attr) -> str:
     return spec.name or f.name
 
 

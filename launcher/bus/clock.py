@@ -7,10 +7,10 @@ first message it reads zero. Timers and Rate stay on the monotonic wall clock.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.bus.qos import QoS
+from launcher.records import dataclass
 
 
 @dataclass(frozen=True)

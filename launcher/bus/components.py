@@ -12,8 +12,9 @@ from __future__ import annotations
 import contextlib
 import threading
 from collections.abc import Iterator
-from dataclasses import dataclass, field
 from typing import Any
+
+from launcher.records import dataclass, field
 
 _local = threading.local()
 

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import secrets
 from collections.abc import Mapping
 from pathlib import Path
 from typing import NamedTuple
@@ -66,10 +65,10 @@ def _create(file: Path) -> None:
     """Write a fresh file under a temporary name and link it into place: two processes
     making it at once end up with the same one."""
     private_folder(file.parent)
-    temporary = file.with_name(f".{file.name}.{os.getpid()}.{secrets.token_hex(4)}")
+    temporary = file.with_name(f".{file.name}.{os.getpid()}.{os.urandom(4).hex()}")
     descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
     with os.fdopen(descriptor, "w", encoding="utf-8") as handle:
-        handle.write(f"{USER}:{secrets.token_hex(24)}\n")
+        handle.write(f"{USER}:{os.urandom(24).hex()}\n")
     try:
         os.link(temporary, file)
     except FileExistsError:

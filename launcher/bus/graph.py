@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 from collections import defaultdict
-from dataclasses import dataclass, field
 
 import zenoh
 
 from launcher.bus import keys
+from launcher.records import dataclass, field
 
 
 @dataclass

@@ -24,7 +24,8 @@ from __future__ import annotations
 
 import os
 import struct
-from dataclasses import dataclass
+
+from launcher.records import dataclass
 
 _DOMAIN_TEXT = os.environ.get("ROS_DOMAIN_ID", "").strip()
 # checked (0–232) where sessions open (discovery.domain_id): a bad one is said there

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from launcher.bus import keys
+from launcher.records import dataclass
 
 
 @dataclass(frozen=True)

@@ -9,10 +9,10 @@ and `/NS/NAME` apply to the node they match. Nested maps flatten to dotted names
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import Any
 
 from launcher.errors import LaunchError, Location
+from launcher.records import dataclass, field
 from launcher.user_files import read_text
 
 

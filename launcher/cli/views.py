@@ -7,10 +7,10 @@ and defaults known so far; otherwise the include is shown unresolved.
 from __future__ import annotations
 
 import contextlib
-import dataclasses
 from collections.abc import Iterator
 from typing import Any
 
+from launcher import records
 from launcher.description.action import Action, LaunchDescription
 from launcher.description.actions.arguments import DeclareLaunchArgument
 from launcher.description.actions.include import IncludeLaunchDescription
@@ -108,7 +108,7 @@ def print_tree(description: LaunchDescription, configurations: dict[str, str],
 def _describe(item: Action) -> str:
     tag = item.tags[0] if item.tags else type(item).__name__
     parts = [tag]
-    if dataclasses.is_dataclass(item):
+    if records.is_record(item):
         for field, spec in declared_fields(type(item)):
             value = getattr(item, field.name, None)
             if value in (None, [], (), field.default) or spec.kind.value == "children":
@@ -130,9 +130,9 @@ def _show(value: Any) -> str:
 def _show_entry(value: Any) -> str:
     if isinstance(value, Action):
         return _describe(value)
-    if dataclasses.is_dataclass(value):
+    if records.is_record(value):
         return "{" + ", ".join(f"{f.name}: {_show(getattr(value, f.name))}"
-                               for f in dataclasses.fields(value)) + "}"
+                               for f in records.fields(value)) + "}"
     return _show(value)
 
 

@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from launcher.description.condition import Condition
 from launcher.description.fields import normalize
 from launcher.errors import LaunchError, Location
+from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext, Snapshot
 
 

@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from launcher.description.substitution import Text_, describe_text, perform_text, to_text
 from launcher.errors import Location, SubstitutionError
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Iterable
-from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
+from launcher import records
 from launcher.errors import Location, SubstitutionError
+from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext
 
 
@@ -25,8 +25,8 @@ class Substitution:
     @classmethod
     def from_args(cls, args: list[Text_], where: Location | None) -> Substitution:
         """Build from `$(name a b …)` arguments, mapped in order onto the dataclass fields."""
-        params = [f for f in dataclasses.fields(cls) if f.init and not f.kw_only]
-        required = [f for f in params if f.default is dataclasses.MISSING]
+        params = [f for f in records.fields(cls) if f.init and not f.kw_only]
+        required = [f for f in params if f.default is records.MISSING]
         name = cls.names[0] if cls.names else cls.__name__
         if not len(required) <= len(args) <= len(params):
             expected = _arity(params, required)
@@ -38,7 +38,7 @@ class Substitution:
         return cls(*args, where=where)
 
     def describe(self) -> str:
-        values = [v for f in dataclasses.fields(self) if f.init and not f.kw_only
+        values = [v for f in records.fields(self) if f.init and not f.kw_only
                   if (v := getattr(self, f.name)) is not None]
         args = " ".join(_quote(describe_text(v)) if isinstance(v, tuple) else str(v)
                         for v in values)

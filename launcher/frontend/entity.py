@@ -6,9 +6,8 @@ entities. The builder turns entities into actions; it never looks at YAML or XML
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from launcher.errors import Location
+from launcher.records import dataclass, field
 
 
 @dataclass

@@ -16,11 +16,11 @@ type with `/srv/` makes a service.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from launcher.errors import LaunchError
+from launcher.records import dataclass
 from launcher.schema import Kind, attr, build
 from launcher.user_files import read_text
 

@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import sys
 import time
-from dataclasses import asdict, dataclass
 from typing import Any
 
 from launcher.errors import LaunchError, ParseError, UsageError, did_you_mean, reported
+from launcher.records import asdict, dataclass
 from launcher.schema import Kind, attr, build, declared_fields, frontend_name
 
 SOURCES = ("file", "string", "param", "topic")

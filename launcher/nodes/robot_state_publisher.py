@@ -17,7 +17,6 @@ import math
 import sys
 import threading
 from collections.abc import Sequence
-from dataclasses import dataclass
 from types import SimpleNamespace
 from typing import Any
 
@@ -27,6 +26,7 @@ from launcher.bus.wire import JointStateReader, TfLayout, pack_tf
 from launcher.errors import LaunchError
 from launcher.nodes import running
 from launcher.nodes.kinematics import Tree
+from launcher.records import dataclass
 from launcher.schema import Kind, attr, build
 
 

@@ -11,10 +11,9 @@ name, namespace, remaps and parameters that the container was asked for.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from launcher.packages.executables import declared, lookup
 from launcher.packages.manifest import Package
+from launcher.records import dataclass
 
 GROUP = "rclpy_components"
 

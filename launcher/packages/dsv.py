@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from launcher.errors import Location, ParseError, did_you_mean
+from launcher.records import dataclass, field
 
 TYPES = {"prepend-non-duplicate": 2, "prepend-non-duplicate-if-exists": 2,
          "append-non-duplicate": 2, "set": 2, "set-if-unset": 2, "source": 1}

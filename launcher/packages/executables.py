@@ -14,12 +14,12 @@ import configparser
 import os
 import re
 import sys
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from launcher.errors import LaunchError, did_you_mean
 from launcher.packages.manifest import Package
+from launcher.records import dataclass, field
 
 _ENTRY = re.compile(r"^[A-Za-z_][\w.]*:[A-Za-z_][\w.]*$")
 

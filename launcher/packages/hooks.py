@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
 from pathlib import Path
 
 from launcher.errors import Location, ParseError
@@ -22,6 +21,7 @@ from launcher.packages.index import PackageIndex
 from launcher.packages.manifest import Package
 from launcher.packages.shell_hooks import run_shell_hook
 from launcher.packages.templates import configure, template_variables
+from launcher.records import dataclass
 from launcher.user_files import read_text
 
 TIERS = ("builtin", "checkout", "workspace")

@@ -18,11 +18,11 @@ from __future__ import annotations
 import os
 import zlib
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from launcher.errors import LaunchError, did_you_mean
 from launcher.packages.manifest import Package, read_manifest
+from launcher.records import dataclass, field
 
 BUILTIN_ROOT = Path(__file__).resolve().parent.parent / "builtin"
 IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE")

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
 from xml.etree import ElementTree
 
 from launcher.errors import Location, ParseError
+from launcher.records import dataclass, field
 
 NAME_RULE = re.compile(r"^[a-z][a-z0-9_]*$")
 DEPENDENCY_TAGS = ("depend", "build_depend", "build_export_depend", "buildtool_depend",

@@ -10,8 +10,9 @@ the service a Loader (cli/components.py).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from typing import Any, Protocol
+
+from launcher.records import dataclass, field
 
 
 @dataclass

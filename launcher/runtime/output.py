@@ -12,8 +12,9 @@ from __future__ import annotations
 import sys
 import time
 import zlib
-from dataclasses import dataclass, field
 from typing import NamedTuple, TextIO
+
+from launcher.records import dataclass, field
 
 LEVELS = ("DEBUG", "INFO", "WARN", "ERROR")
 

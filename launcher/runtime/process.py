@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import signal
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any, NamedTuple
 
+from launcher.records import dataclass, field
 from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Record
 from launcher.runtime.system import Processes, System

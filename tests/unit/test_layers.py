@@ -7,20 +7,22 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2] / "launcher"
 ALLOWED = {
-    "schema": {"errors"},
+    "records": set(),
+    "schema": {"errors", "records"},
     "private": set(),
     "lineage": set(),
     "user_files": {"errors"},
-    "runtime": {"private", "lineage", "runtime", "errors"},
-    "packages": {"user_files", "schema", "lineage", "packages", "errors"},
-    "description": {"user_files", "private", "lineage", "schema", "description", "runtime",
-                    "packages", "errors"},
-    "frontend": {"user_files", "schema", "frontend", "description", "runtime", "errors", "compat"},
-    "cli": {"user_files", "schema", "cli", "frontend", "description", "runtime", "packages",
-            "errors", "compat", "api", "bus", "nodes"},
-    "bus": {"user_files", "private", "lineage", "schema", "bus", "errors", "packages"},
-    "sim": {"user_files", "schema", "sim", "bus", "errors", "packages"},
-    "nodes": {"user_files", "schema", "nodes", "sim", "bus", "errors", "packages"},
+    "runtime": {"records", "private", "lineage", "runtime", "errors"},
+    "packages": {"records", "user_files", "schema", "lineage", "packages", "errors"},
+    "description": {"records", "user_files", "private", "lineage", "schema", "description",
+                    "runtime", "packages", "errors"},
+    "frontend": {"records", "user_files", "private", "schema", "frontend", "description", "runtime",
+                 "errors", "compat"},
+    "cli": {"records", "user_files", "schema", "cli", "frontend", "description", "runtime",
+            "packages", "errors", "compat", "api", "bus", "nodes"},
+    "bus": {"records", "user_files", "private", "lineage", "schema", "bus", "errors", "packages"},
+    "sim": {"records", "user_files", "schema", "sim", "bus", "errors", "packages"},
+    "nodes": {"records", "user_files", "schema", "nodes", "sim", "bus", "errors", "packages"},
     "compat": {"compat", "api", "packages", "runtime", "bus", "errors"},
 }
 

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import pytest
 
 from launcher.errors import ParseError
+from launcher.records import dataclass
 from launcher.schema import Kind, attr, build
 
 

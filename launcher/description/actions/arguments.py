@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.description.action import Action
@@ -11,6 +10,7 @@ from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, describe_text, perform_text
 from launcher.errors import ExecutionError, did_you_mean
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

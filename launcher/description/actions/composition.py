@@ -22,7 +22,6 @@ failure is reported at the composable_node, the rest of the launch going on.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.description import parameters as params
@@ -39,6 +38,7 @@ from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError, LaunchError
 from launcher.packages.components import find_component
+from launcher.records import dataclass
 from launcher.runtime.composition import LoadRequest
 from launcher.runtime.context import LaunchContext
 

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.description.action import Action
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

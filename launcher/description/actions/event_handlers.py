@@ -8,10 +8,10 @@ Handler actions run in the scope in which the handler was registered.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from typing import Any
 
 from launcher.description.action import Action, Replay
+from launcher.records import dataclass, field
 from launcher.runtime import events
 from launcher.runtime.context import LaunchContext, Snapshot
 

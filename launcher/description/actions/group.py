@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.description.action import Action, PopScope, PushScope
@@ -11,6 +10,7 @@ from launcher.description.actions.arguments import KeepEntry
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import perform_text, to_text
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

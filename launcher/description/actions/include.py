@@ -8,7 +8,6 @@ next to the including file first, then in the working directory.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +17,7 @@ from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError, LaunchError
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

@@ -7,7 +7,6 @@ that says so, not a launcher that fills memory.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from typing import Any
 
 import yaml
@@ -18,6 +17,7 @@ from launcher.description.registry import action
 from launcher.description.substitution import perform_text, to_text
 from launcher.description.substitutions.configuration import loop_key
 from launcher.errors import ExecutionError
+from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext
 
 MAX_ITERATIONS = 10_000

@@ -13,7 +13,6 @@ such a node is one error and the rest of the launch runs (ROS 2 would end the wh
 from __future__ import annotations
 
 import tempfile
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +24,7 @@ from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
 from launcher.packages.executables import find_executable
 from launcher.packages.index import PackageNotFound
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 GUI_TOOLS = ("rviz2", "rviz", "rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",

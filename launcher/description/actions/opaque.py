@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from typing import Any
 
 from launcher.description.action import Action
+from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext
 
 

@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from launcher.description.action import Action
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

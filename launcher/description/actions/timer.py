@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from launcher.description.action import Action, Replay
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

@@ -13,12 +13,12 @@ launch's watchdog ends it if the launcher is killed.
 from __future__ import annotations
 
 import shlex
-from dataclasses import dataclass
 
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
 from launcher.errors import LaunchError
 from launcher.lineage import run_to_end
 from launcher.packages.xacro import run_xacro, runs_in_process
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 _MODES = ("fail", "warn", "ignore", "capture")

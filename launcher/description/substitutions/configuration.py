@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
 from launcher.errors import did_you_mean
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

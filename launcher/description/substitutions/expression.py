@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from launcher.description.safe_expression import ExpressionError, evaluate
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

@@ -6,8 +6,6 @@ booleans, as numbers when both are numbers, else as text. Results are `true`/`fa
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from launcher.description.condition import evaluate_condition_text
 from launcher.description.substitution import (
     Substitution,
@@ -17,6 +15,7 @@ from launcher.description.substitution import (
     substitution,
 )
 from launcher.errors import Location, SubstitutionError
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

@@ -4,12 +4,12 @@ ROS 1's `$(find PKG)`, and `$(param NAME [default])` (a parameter set with set_p
 from __future__ import annotations
 
 import shlex
-from dataclasses import dataclass
 
 from launcher.description.parameters import global_parameters
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
 from launcher.errors import LaunchError
 from launcher.packages.executables import find_executable
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 

@@ -17,9 +17,9 @@ update_rate; joint_name.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass, replace
 from typing import Any
 
+from launcher.records import dataclass, replace
 from launcher.schema import Kind, attr
 from launcher.sim.plugins.diff_drive import DiffDrive, _yaw_quat
 from launcher.sim.plugins.joint_state import JointStatePublisher

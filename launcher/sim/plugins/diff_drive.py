@@ -17,11 +17,11 @@ instead) and `max_wheel_torque` (none; a limit on light wheels can make the serv
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import mujoco
 
+from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
 

@@ -12,11 +12,11 @@ ignored with one warning.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import mujoco
 
+from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
 

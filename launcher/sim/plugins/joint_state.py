@@ -8,11 +8,11 @@ as they are in the URDF.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import mujoco
 
+from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
 

@@ -7,9 +7,9 @@ and `/world/<w>/model_states` (ModelStates: name, pose, twist, as ROS 1's
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
+from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin
 
