@@ -6,7 +6,7 @@ plan of its fields, made once, and messages are written and read by walking it, 
 standard library's struct: consecutive fixed-size fields, nested messages of them included
 (a Twist, a Pose, a header's stamp), are one run read and written by one precompiled struct per
 start alignment, their values gathered by one attrgetter. Messages are any objects with the
-fields as attributes (rosbags' dataclasses, launcher's rclpy classes); reading builds them
+fields as attributes (the node API's classes, launcher's rclpy classes); reading builds them
 through a `make(type, values)` the caller gives, so each API gets its own classes without a
 copy. Numeric arrays are read as `array.array`s; the caller turns them into what its classes
 hold.

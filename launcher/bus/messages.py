@@ -29,7 +29,7 @@ class MessageError(LaunchError):
 
 
 def build(type_name: str, values: Any, path: str = "", plain: bool = False) -> Any:
-    """The message of `values` (a map of fields): rosbags' class, numeric arrays as numpy
+    """The message of `values` (a map of fields): the type's class, numeric arrays as numpy
     arrays; `plain`: objects with the fields and lists (no classes, no numpy), which
     serialise the same."""
     types = registry()

@@ -4,8 +4,9 @@ Definitions come from rosbags' Jazzy typestore (one pinned distro, so hashes do 
 from `msg/*.msg` and `srv/*.srv` files of packages. Building the whole Jazzy typestore takes
 ~0.2 s, so its field definitions and type hashes are cached once as a pickle (per rosbags
 version), with plain numbers for the kinds of fields, so that a node reads them without
-importing rosbags. rosbags' Typestore itself (its message classes, for launcher's own node API
-and bags; hashes of package types) is made on first use, with the types used so far.
+importing rosbags. The message classes of launcher's own node API are made here too
+(message_class.py, shaped as rosbags makes them); rosbags' Typestore itself (for bags, and the
+hashes of package types) is made on first use, with the types used so far.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-from launcher.bus import interfaces, kinds
+from launcher.bus import interfaces, kinds, message_class
 from launcher.bus.cdr import MSG, MSGS, PRIMS, CdrError, Codec, Unsupported
 from launcher.errors import LaunchError, did_you_mean
 
@@ -98,6 +99,7 @@ class TypeRegistry:
         self._index: Any = None
         self._codec: Any = None
         self._numeric_fields: dict[str, list[tuple[int, str]]] = {}
+        self._classes: dict[str, type] = {}
 
     # --- definitions ------------------------------------------------------------------------
     def _definitions(self) -> dict[str, Any]:
@@ -209,8 +211,15 @@ class TypeRegistry:
 
     # --- messages ---------------------------------------------------------------------------
     def message_class(self, name: str) -> type:
-        name = self.ensure(name)  # (before the store, which registers what is ensured)
-        return self.store.types[name]
+        """The class of a type's messages for launcher's node API (message_class.py)."""
+        found = self._classes.get(name)
+        if found is None:
+            name = self.ensure(name)
+            found = self._classes.get(name)
+            if found is None:
+                found = message_class.make(name, [f for f, _ in self.fields(name)])
+                self._classes[name] = found
+        return found
 
     @property
     def codec(self) -> Any:
@@ -241,12 +250,12 @@ class TypeRegistry:
     def reader(self, name: str, make: Any = None) -> Callable[[bytes | memoryview], Any]:
         """deserialize() for one type, its name resolved once (a subscription's)."""
         name = self.ensure(name)
-        if make is None:  # rosbags' classes (and numpy for their arrays) now, not at the
-            self.store  # noqa: B018 - first message
+        if make is None:  # the class (and numpy for its arrays) now, not at the first message
+            self.message_class(name)
             with contextlib.suppress(Unsupported):  # (said at the first message)
                 if self._numeric_arrays(name, set()):
                     import numpy  # noqa: F401
-        deserialize, make = self.codec.deserialize, make or self._store_message
+        deserialize, make = self.codec.deserialize, make or self._new_message
 
         def read(data: bytes | memoryview) -> Any:
             try:
@@ -269,29 +278,29 @@ class TypeRegistry:
 
     def deserialize(self, data: bytes | memoryview, name: str,
                     make: Any = None) -> Any:
-        """The message in a CDR payload: rosbags' dataclass (numeric arrays as numpy arrays),
+        """The message in a CDR payload: the type's class (numeric arrays as numpy arrays),
         or what `make(type, values)` builds from each type's field values."""
         name = self.ensure(name)
         try:
-            return self.codec.deserialize(data, name, make or self._store_message)
+            return self.codec.deserialize(data, name, make or self._new_message)
         except Unsupported as exc:
             raise LaunchError(f"{name}: {exc}") from None
         except CdrError as exc:
             raise ValueError(f"malformed {name}: {exc}") from None
 
-    def _store_message(self, name: str, values: list[Any]) -> Any:
+    def _new_message(self, name: str, values: list[Any]) -> Any:
         arrays = self._numeric_fields.get(name)
         if arrays is None:
             arrays = [(i, detail[4]) for i, (_f, kind, detail) in
                       enumerate(self.codec.plan(name)) if kind == PRIMS]
             self._numeric_fields[name] = arrays
         if arrays:
-            import numpy  # rosbags' classes hold numeric arrays as numpy arrays
+            import numpy  # the classes hold numeric arrays as numpy arrays, as rosbags' do
 
             for index, base in arrays:
                 dtype = {"byte": "uint8", "char": "uint8"}.get(base, base)
                 values[index] = numpy.array(values[index], dtype=dtype)
-        return self.store.types[name](*values)
+        return self.message_class(name)(*values)
 
     def type_hash(self, name: str) -> str:
         name = self.ensure(name)

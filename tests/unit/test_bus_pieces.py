@@ -196,3 +196,38 @@ def test_a_signal_handler_longer_than_the_executors_wait_does_not_make_it_wait_f
                           text=True, timeout=120, cwd=REPO)
     assert done.returncode == 0, done.stderr
     assert done.stdout == "every wait ended\n"
+
+
+def test_node_api_message_classes_are_shaped_as_rosbags_makes_them_without_rosbags():
+    import subprocess
+    import sys
+
+    code = """
+import sys
+from rosbags.typesys import get_typestore, Stores
+from launcher.bus.types import registry
+ours = registry().message_class('geometry_msgs/msg/Vector3')
+theirs = get_typestore(Stores.ROS2_JAZZY).types['geometry_msgs/msg/Vector3']
+a, b = ours(1.0, 2.0, 3.0), theirs(1.0, 2.0, 3.0)
+assert repr(a) == repr(b), (repr(a), repr(b))
+assert ours(x=1.0, y=2.0, z=3.0) == a and a != ours(1.0, 2.0, 4.0)
+assert ours.__msgtype__ == theirs.__msgtype__ == 'geometry_msgs/msg/Vector3'
+for bad, text in ((lambda: ours(1.0), "missing 2 required arguments: 'y', 'z'"),
+                  (lambda: ours(1.0, 2.0, 3.0, w=1), "unexpected keyword argument 'w'"),
+                  (lambda: ours(1.0, 2.0, 3.0, 4.0), "positional arguments"),
+                  (lambda: ours(1.0, x=2.0, y=1, z=1), "multiple values for argument 'x'")):
+    try:
+        bad()
+    except TypeError as exc:
+        assert text in str(exc), exc
+    else:
+        raise AssertionError(text)
+print('ok')
+"""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.stdout.strip() == "ok", done.stderr
+    lean = ("import sys; from launcher.bus.types import registry; "
+            "registry().message_class('geometry_msgs/msg/Twist'); "
+            "print(sorted(m for m in sys.modules if m.startswith(('rosbags', 'numpy'))))")
+    done = subprocess.run([sys.executable, "-c", lean], capture_output=True, text=True)
+    assert done.stdout.strip() == "[]", done.stdout + done.stderr
