@@ -212,7 +212,7 @@ a, b = ours(1.0, 2.0, 3.0), theirs(1.0, 2.0, 3.0)
 assert repr(a) == repr(b), (repr(a), repr(b))
 assert ours(x=1.0, y=2.0, z=3.0) == a and a != ours(1.0, 2.0, 4.0)
 assert ours.__msgtype__ == theirs.__msgtype__ == 'geometry_msgs/msg/Vector3'
-for bad, text in ((lambda: ours(1.0), "missing 2 required arguments: 'y', 'z'"),
+for bad, text in ((lambda: ours(1.0), "missing 2 required positional arguments: 'y' and 'z'"),
                   (lambda: ours(1.0, 2.0, 3.0, w=1), "unexpected keyword argument 'w'"),
                   (lambda: ours(1.0, 2.0, 3.0, 4.0), "positional arguments"),
                   (lambda: ours(1.0, x=2.0, y=1, z=1), "multiple values for argument 'x'")):
@@ -220,8 +220,13 @@ for bad, text in ((lambda: ours(1.0), "missing 2 required arguments: 'y', 'z'"),
         bad()
     except TypeError as exc:
         assert text in str(exc), exc
+        assert str(exc).startswith('geometry_msgs__msg__Vector3.__init__()'), exc
     else:
         raise AssertionError(text)
+assert registry().message_class('geometry_msgs/msg/Vector3') is ours  # made once
+from launcher.bus import message_class
+odd = message_class.make('p/msg/T', ['x);import os;os._exit(3)#', 'y'])  # names never run
+assert getattr(odd(1, 2), 'x);import os;os._exit(3)#') == 1
 print('ok')
 """
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
