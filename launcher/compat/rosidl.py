@@ -23,10 +23,10 @@ import array
 import math
 import operator
 from collections.abc import Callable
-from itertools import repeat
 from typing import Any
 
 from launcher.bus import kinds
+from launcher.bus.message_class import assigner
 from launcher.bus.types import normalize, registry
 
 _INT_RANGES = {"byte": (0, 255), "char": (0, 255), "octet": (0, 255),
@@ -390,22 +390,24 @@ def type_name_of(value: Any) -> str:
 def make(type_name: str, values: list[Any]) -> Any:
     """A message from its field values as the CDR reader gives them (registry().deserialize's
     `make`): numeric sequences stay array.arrays, fixed numeric arrays become numpy arrays."""
-    cls = _classes.get(type_name) or message_class(type_name)
-    message = _new(cls)
-    fixed = _fixed.get(cls)
-    if fixed is None:
-        fixed = _fixed_arrays(cls)
+    fill = _fillers.get(type_name)
+    if fill is None:
+        cls = _classes.get(type_name) or message_class(type_name)
+        fill = _fillers[type_name] = (cls, assigner(cls._SLOTS, f"{cls.__qualname__}.fill"),
+                                      _fixed_arrays(cls))
+    cls, assign, fixed = fill
     if fixed:
         import numpy
 
         for index, dtype in fixed.items():
             values[index] = numpy.array(values[index], dtype=dtype)
-    # every slot set by one C loop (object.__setattr__ gives None, so `any` runs it through)
-    any(map(_set, repeat(message), cls._SLOTS, values))
+    message = _new(cls)
+    assign(message, *values)  # every slot, by code as fast as written out
     return message
 
 
-_new, _set = object.__new__, object.__setattr__
+_fillers: dict[str, tuple[type, Callable[..., None], dict[int, str]]] = {}
+_new = object.__new__
 
 
 _fixed: dict[type, dict[int, str]] = {}

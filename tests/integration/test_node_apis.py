@@ -193,6 +193,11 @@ guard = node.create_guard_condition(lambda: guard_ran.append(1))
 guard.trigger()
 rclpy.spin_once(node, timeout_sec=1.0)
 print("guard:", guard_ran)
+shared = rclpy.get_global_executor()  # rclpy.spin_once leaves the node out of it after
+print("lent:", node not in shared.get_nodes())
+shared.add_node(node)
+rclpy.spin_once(node, timeout_sec=0)
+print("taken back:", node not in shared.get_nodes())
 node.destroy_node()
 try:
     rclpy.spin(node)
@@ -211,6 +216,7 @@ print("ok:", rclpy.ok())
     assert "set 5: True" in out and "set 50: False 5.0" in out
     assert "fqn: /robot/checks /robot" in out
     assert "parallel: True" in out and "guard: [1]" in out
+    assert "lent: True" in out and "taken back: True" in out
     assert "destroyed: InvalidHandle cannot use Destroyable because destruction was requested" \
         in out
     assert "ok: False" in out

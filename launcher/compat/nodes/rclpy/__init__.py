@@ -16,6 +16,7 @@ content filters, QoS events (kept, never raised) and the loaned-message API.
 
 from __future__ import annotations
 
+import functools
 import signal
 import threading
 from typing import Any
@@ -98,11 +99,23 @@ def _executor_for(node: Any, executor: Any) -> Any:
 
 
 def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
+    executor = executor or _global_executor or get_global_executor()
+    if type(executor).spin_once is _plain_spin_once():  # (not a subclass's own spin_once)
+        node._check_alive()
+        executor.spin_once_lent(node, timeout_sec)
+        return
     executor = _executor_for(node, executor)
     try:
         executor.spin_once(timeout_sec=timeout_sec)
     finally:
         executor.remove_node(node)
+
+
+@functools.cache
+def _plain_spin_once() -> Any:
+    from rclpy.executors import Executor
+
+    return Executor.spin_once
 
 
 def spin(node: Any, executor: Any = None) -> None:

@@ -45,7 +45,6 @@ class Executor:
         self._ready: deque[Task] = deque()
         self._lock = threading.RLock()
         self._is_shutdown = False
-        self._waiting = 0  # threads in _next_work: a node added is news only to them
         self._context.on_shutdown(self.wake)
 
     @property
@@ -60,8 +59,7 @@ class Executor:
                 return False
             self._nodes = (*self._nodes, node)
             node.executor = self
-            if self._waiting:
-                self.wake()
+        self.wake()  # a spin waiting now looks at the new node's work too
         return True
 
     def remove_node(self, node: Any) -> None:
@@ -96,18 +94,10 @@ class Executor:
         return True
 
     # --- waiting ----------------------------------------------------------------------------
-    def _next_work(self, timeout_sec: float | None) -> tuple[Any, Any, tuple] | None:
-        """(node or None, callback, args) of the next ready work, waiting up to timeout_sec
-        (None: until some comes); None when none came."""
-        with self._lock:
-            self._waiting += 1
-        try:
-            return self._wait_for_work(timeout_sec)
-        finally:
-            with self._lock:
-                self._waiting -= 1
-
-    def _wait_for_work(self, timeout_sec: float | None) -> tuple[Any, Any, tuple] | None:
+    def _next_work(self, timeout_sec: float | None, lent: tuple[Any, ...] = ()
+                   ) -> tuple[Any, Any, tuple] | None:
+        """(node or None, callback, args) of the next ready work of the executor's nodes and
+        `lent` ones, waiting up to timeout_sec (None: until some comes); None when none came."""
         deadline = None if timeout_sec is None or timeout_sec < 0 else \
             time.monotonic() + timeout_sec
         while True:
@@ -118,7 +108,7 @@ class Executor:
             if self._ready:
                 task = self._ready.popleft()
                 return None, task, ()
-            nodes = self._nodes
+            nodes = self._nodes + lent if lent else self._nodes
             now = time.monotonic()
             soonest = None
             for node in nodes:  # due timers first (a flood must not starve them)
@@ -155,7 +145,8 @@ class Executor:
                 raise exc
             return
         result = callback(*args)
-        if hasattr(result, "send") and hasattr(result, "throw"):  # an async callback
+        if result is not None and hasattr(result, "send") and hasattr(result, "throw"):
+            # an async callback
             task = Task(lambda: result, executor=self)
             task()
 
@@ -168,6 +159,16 @@ class Executor:
     def spin(self) -> None:
         while self._context.ok() and not self._is_shutdown:
             self.spin_once()
+
+    def spin_once_lent(self, node: Any, timeout_sec: float | None = None) -> None:
+        """`rclpy.spin_once(node)`: one turn with `node` lent for it, which is then not among
+        the executor's nodes (as rclpy has it), without adding and removing it each turn."""
+        if node in self._nodes:
+            self.remove_node(node)
+        node.executor = self
+        work = self._next_work(timeout_sec, (node,))
+        if work is not None:
+            self._run(*work)
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None
                                    ) -> None:

@@ -151,8 +151,11 @@ class Node:
         if group not in self._callback_groups:
             self._callback_groups.append(group)
         if isinstance(group, MutuallyExclusiveCallbackGroup):
+            lock = group._lock  # (group.run, one call less per message)
+
             def run(*args: Any) -> Any:
-                return group.run(callback, *args)
+                with lock:
+                    return callback(*args)
             return run
         return callback
 
