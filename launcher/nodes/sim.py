@@ -14,9 +14,12 @@ launcher offers instead.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
+from typing import Any
 
 from launcher.errors import UsageError, reported
+from launcher.sim import viewer
 
 VERBOSITY = {0: 60, 1: 40, 2: 30, 3: 20, 4: 10}
 
@@ -34,8 +37,21 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
                         metavar="LEVEL", help="0 quiet, 1 errors, 2 warnings, 3 info, 4 debug")
     parser.add_argument("-r", "--run", action="store_true", help="run at start")
     parser.add_argument("-s", "--server", action="store_true", help="server only (always)")
-    parser.add_argument("-g", "--gui", action="store_true",
-                        help="Gazebo's GUI: not available; says what to use instead")
+    parser.add_argument("-g", dest="gui_only", action="store_true",
+                        help="Gazebo's GUI alone: not available; says what to use instead")
+    parser.add_argument("--gui", action="store_true",
+                        help=f"serve the world to a browser (MuJoCo Studio's web viewer, "
+                             f"mujoco>=4) on 127.0.0.1; --gui=PORT for another port than "
+                             f"{viewer.DEFAULT_PORT}")
+    parser.add_argument("--gui-port", type=_port, default=viewer.DEFAULT_PORT,
+                        help=argparse.SUPPRESS)
+    parser.add_argument("--gui-host", default="127.0.0.1", metavar="ADDRESS",
+                        help="the address the viewer listens on (default 127.0.0.1). The "
+                             "viewer has no authentication: another address lets anyone who "
+                             "can reach it watch the world and read the model")
+    parser.add_argument("--gui-rate", type=float, default=viewer.DEFAULT_RATE, metavar="HZ",
+                        help=f"how often the viewer gets the state (1 to {viewer.MAX_RATE:g}, "
+                             f"default {viewer.DEFAULT_RATE:g})")
     parser.add_argument("--headless-rendering", action="store_true",
                         help="accepted: rendering is always headless (EGL)")
     parser.add_argument("--render-engine", default=None, metavar="ENGINE",
@@ -50,12 +66,29 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
                         help="a value for a .j2 world template (repeatable)")
     parser.add_argument("--state-rate", type=float, default=50.0, metavar="HZ",
                         help="rate of pose/info and model_states in sim time")
+    # --gui=PORT; a bare --gui takes no value (it would take the world's name)
+    argv = [w for a in argv for w in (["--gui", "--gui-port", a[6:]]
+                                      if a.startswith("--gui=") else [a])]
     args = parser.parse_args(argv)
+    if not 1 <= args.gui_rate <= viewer.MAX_RATE:
+        parser.error(f"--gui-rate must be between 1 and {viewer.MAX_RATE:g} Hz, "
+                     f"got {args.gui_rate:g}")
     for name, value in (("--iterations", args.iterations), ("-z", args.rate),
                         ("--rtf", args.rtf)):
         if value is not None and value < 0:
             parser.error(f"{name} must be >= 0, got {value}")
     return args, ros
+
+
+def _port(text: str) -> int:
+    try:
+        port = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a port number (1-65535), got "
+                                         f"'{text}'") from None
+    if not 1 <= port <= 65535:
+        raise argparse.ArgumentTypeError(f"expected a port number (1-65535), got {port}")
+    return port
 
 
 def world_values(pairs: list[str]) -> dict[str, str]:
@@ -75,7 +108,7 @@ GUI_INSTEAD = ("launcher has no Gazebo GUI: watch the world with `launcher sim s
 
 def main(argv: list[str] | None = None) -> int:
     args, ros = parse(sys.argv[1:] if argv is None else argv)
-    if args.gui:  # `gz sim -g` is the GUI alone: there is no server to run
+    if args.gui_only:  # `gz sim -g` is the GUI alone: there is no server to run
         print(f"[sim] {GUI_INSTEAD}", file=sys.stderr, flush=True)
         return 0
     return reported(lambda: run(args, ros), "sim")
@@ -92,6 +125,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     path = find_world(args.world)
     values = world_values(args.world_arg)
     node = Node("sim", argv=ros, space=keys.SIM)  # off the ROS graph, as gz sim is
+    view = None
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
         world = World.from_path(path, BusTransport(node), values)
@@ -100,7 +134,9 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         rtf = args.rtf if args.rtf is not None else \
             (args.rate * timestep if args.rate is not None else default_rtf)
         server = SimServer(world, node, rtf, args.run, args.state_rate)
-        install_signal_handlers(server)
+        install_signal_handlers(server)  # (before the viewer's URL: a stop after it is clean)
+        if args.gui:
+            server.view = view = start_view(args, node.get_logger())
         node.get_logger().info(
             f"world '{world.world_name}' from {path}: timestep {timestep} s, "
             f"{'running' if args.run else 'paused'}, "
@@ -108,7 +144,28 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         server.run(args.iterations)
     finally:
         node.destroy_node()
+    if view is not None:
+        # Studio's native threads can outlive its close() by a moment and crash the
+        # interpreter's teardown (SIGSEGV): with a viewer, the sim ends here, its output
+        # flushed and its session closed already
+        for stream in (sys.stdout, sys.stderr):
+            stream.flush()
+        os._exit(0)
     return 0
+
+
+def start_view(args: argparse.Namespace, log: Any) -> viewer.WebView | None:
+    """The web viewer, or None (said why) when it cannot start: the sim runs on headless."""
+    try:
+        view = viewer.WebView.start(args.gui_port, args.gui_host, args.gui_rate)
+    except viewer.ViewerError as exc:
+        log.error(f"{exc}; the sim runs on without it")
+        return None
+    if args.gui_host not in ("127.0.0.1", "localhost", "::1"):
+        log.warning(f"the web viewer listens on {args.gui_host}: it has no authentication, "
+                    f"anyone who can reach that address can watch the world")
+    log.info(f"the world in a browser: {view.url}")
+    return view
 
 
 if __name__ == "__main__":

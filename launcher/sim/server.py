@@ -50,8 +50,9 @@ def route_mujoco_warnings(logger: Any) -> None:
 
 class SimServer:
     def __init__(self, world: World, node: Node, rtf: float, running: bool,
-                 state_rate: float = 50.0) -> None:
+                 state_rate: float = 50.0, view: Any = None) -> None:
         self.world, self.node, self.transport = world, node, world.transport
+        self.view = view  # the web viewer (viewer.py), if one is served
         self.log = node.get_logger()
         route_mujoco_warnings(self.log)
         self.paused = not running
@@ -80,6 +81,8 @@ class SimServer:
             self._loop(iterations)
         finally:
             self.camera.close()
+            if self.view is not None:
+                self.view.close()
 
     def _loop(self, iterations: int | None) -> None:
         world, pacer, node = self.world, self.pacer, self.node
@@ -128,6 +131,8 @@ class SimServer:
             pass
 
     def publish_clock(self) -> None:
+        if self.view is not None:  # (after every batch, and while paused: rate-limited)
+            self.view.follow(self.world.model, self.world.data)
         wanted = [p for p in self._clocks if p.get_subscription_count()]
         if not wanted:
             return
