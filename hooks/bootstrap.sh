@@ -41,6 +41,21 @@ if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv; } >/dev/null 
     fi
 fi
 
+# The viewer's test looks at the page in a real browser: Debian's Chromium, driven headless
+# through its chromedriver (selenium comes with the test extras).
+if [ "${1:-}" = test ] && ! { command -v chromium && command -v chromedriver; } >/dev/null 2>&1
+then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        echo "installing chromium and chromium-driver for the web viewer's browser test" \
+            "(about a minute, once)"
+        apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+            chromium chromium-driver >/dev/null
+    else
+        echo "note: the web viewer's browser test needs: apt-get install chromium" \
+            "chromium-driver" >&2
+    fi
+fi
+
 if [ ! -x .venv/bin/python ]; then
     "$(find_python)" -m venv .venv
 fi

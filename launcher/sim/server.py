@@ -132,7 +132,7 @@ class SimServer:
 
     def publish_clock(self) -> None:
         if self.view is not None:  # (after every batch, and while paused: rate-limited)
-            self.view.follow(self.world.model, self.world.data)
+            self.view.follow(self.world)
         wanted = [p for p in self._clocks if p.get_subscription_count()]
         if not wanted:
             return

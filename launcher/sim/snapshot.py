@@ -60,7 +60,7 @@ class Camera:
 
     # --- the view --------------------------------------------------------------------------
     def _view(self, camera: str, track: str) -> Any:
-        model, data = self.world.model, self.world.data
+        model = self.world.model
         if camera:
             names = [model.camera(i).name for i in range(model.ncam)]
             if camera not in names:
@@ -72,25 +72,14 @@ class Camera:
         if track and track not in entities:
             raise LaunchError(f"no entity '{track}' in world '{self.world.world_name}'"
                               f"{did_you_mean(track, list(entities))}")
-        chosen = [entities[track]] if track else \
-            [e for e in entities.values() if not self._is_ground(e.body)]
         view = mujoco.MjvCamera()
         mujoco.mjv_defaultFreeCamera(model, view)
-        if chosen:  # frame the entities rather than the whole (often huge) ground
-            points = np.array([data.xpos[e.body] for e in chosen])
-            view.lookat[:] = points.mean(axis=0)
-            spread = float(np.max(np.linalg.norm(points - view.lookat, axis=1)))
-            view.distance = max(2.0, 2.5 * spread + 1.5)
-        view.azimuth, view.elevation = 135.0, -30.0
+        framed = framing(self.world, [track] if track else None)
+        if framed is not None:  # the entities rather than the whole (often huge) ground
+            view.lookat[:], view.distance = framed
+        view.azimuth, view.elevation = AZIMUTH, ELEVATION
         return view
 
-    def _is_ground(self, body: int) -> bool:
-        """A ground plane (Gazebo's `ground_plane` model) is framed by nothing: it is
-        everywhere."""
-        model = self.world.model
-        start, count = int(model.body_geomadr[body]), int(model.body_geomnum[body])
-        return any(model.geom_type[g] == mujoco.mjtGeom.mjGEOM_PLANE
-                   for g in range(start, start + count))
 
     def _renderer_for(self, width: int, height: int) -> Any:
         model = self.world.model
@@ -112,3 +101,27 @@ class Camera:
         self._key = key
         return self._renderer
 
+
+AZIMUTH, ELEVATION = 135.0, -30.0  # the free view's direction: from the side, above
+
+
+def framing(world: World, names: list[str] | None = None) -> tuple[Any, float] | None:
+    """(look-at point, distance) of a free view that frames the named entities, or every one
+    but the ground (a plane is everywhere); None when there is nothing to frame."""
+    model, data, entities = world.model, world.data, world.entities
+    chosen = [entities[n] for n in names] if names is not None else \
+        [e for e in entities.values() if not _is_ground(model, e.body)]
+    if not chosen:
+        return None
+    points = np.array([data.xpos[e.body] for e in chosen])
+    center = points.mean(axis=0)
+    spread = float(np.max(np.linalg.norm(points - center, axis=1)))
+    return center, max(2.0, 2.5 * spread + 1.5)
+
+
+def _is_ground(model: Any, body: int) -> bool:
+    """A ground plane (Gazebo's `ground_plane` model) is framed by nothing: it is
+    everywhere."""
+    start, count = int(model.body_geomadr[body]), int(model.body_geomnum[body])
+    return any(model.geom_type[g] == mujoco.mjtGeom.mjGEOM_PLANE
+               for g in range(start, start + count))

@@ -4,7 +4,8 @@
 Studio binds every interface and has no authentication, so another address is used only when
 asked for (`--gui-host`). `follow()` is called by the sim's loop after its steps; it sends the
 world's state at most `rate` times a second (a recompiled model, after a spawn or a removal,
-goes as a new model, which the page reloads). The viewer gets a copy of the world's data, so
+goes as a new model, which the page reloads, with the view framed as `launcher sim snapshot`
+frames it). The viewer gets a copy of the world's data, so
 nothing done in the page (a reset, a dragged state, a model dropped onto it) reaches the
 simulation. When Studio cannot start (an older MuJoCo, the port taken), `start()` raises
 ViewerError with the reason and the sim runs on headless.
@@ -28,8 +29,9 @@ class ViewerError(LaunchError):
 
 
 class WebView:
-    def __init__(self, handle: Any, port: int, host: str, rate: float) -> None:
-        self._handle, self.port, self.host = handle, port, host
+    def __init__(self, handle: Any, port: int, host: str, rate: float,
+                 camera: Any = None) -> None:
+        self._handle, self.port, self.host, self._camera = handle, port, host, camera
         self._period = 1.0 / min(max(rate, 1.0), MAX_RATE)
         self._next = 0.0
         self._model: Any = None  # the world's model the viewer shows
@@ -44,13 +46,20 @@ class WebView:
     def start(cls, port: int, host: str = "127.0.0.1", rate: float = DEFAULT_RATE) -> WebView:
         try:
             import mujoco
-            from mujoco.studio import launch_web, viewer_protocol
+            from mujoco.studio import launch_thread, viewer_protocol, web_viewer
             from mujoco.studio.web import web_server
         except ImportError as exc:
             version = _mujoco_version()
             raise ViewerError(f"the web viewer needs MuJoCo Studio (mujoco>=4); this is "
                               f"mujoco {version} ({exc})") from None
-        del mujoco
+        camera = mujoco.MjvCamera()  # the viewer's, which follow() frames on a new model
+        config = viewer_protocol.ViewerConfig(gfx="web", http_port=port, open_browser=False,
+                                              title="launcher sim")
+
+        def serve(endpoint: Any) -> None:  # Studio's launch_web.launch, with our camera
+            viewer = web_viewer.WebViewer(config, endpoint, camera=camera)
+            viewer_protocol.run_viewer_loop(viewer)
+
         _check_free(host, port)
         bind = web_server.bind_public_socket
         # Studio binds "::" (every interface) with no way to say otherwise: the address is
@@ -58,9 +67,8 @@ class WebView:
         web_server.bind_public_socket = lambda _host, wanted: bind(host, wanted)
         try:
             with contextlib.redirect_stdout(None):  # its banner names the wrong address
-                handle = launch_web.launch(viewer_protocol.ViewerConfig(
-                    gfx="web", http_port=port, open_browser=False, title="launcher sim"))
-                view = cls(handle, port, host, rate)
+                handle = launch_thread.launch_thread(serve, sim_plugins=[])
+                view = cls(handle, port, host, rate, camera)
                 _wait_until_serving(handle, view.url)
         except OSError as exc:
             raise ViewerError(f"the web viewer cannot listen on {host} port {port}: "
@@ -69,7 +77,7 @@ class WebView:
             web_server.bind_public_socket = bind
         return view
 
-    def follow(self, model: Any, data: Any, now: float | None = None) -> None:
+    def follow(self, world: Any, now: float | None = None) -> None:
         """Send the world's state if its turn has come (at most `rate` times a second)."""
         now = time.monotonic() if now is None else now
         if now < self._next:
@@ -77,13 +85,33 @@ class WebView:
         self._next = now + self._period
         import mujoco
 
-        if model is not self._model:  # a new world (a spawn recompiles): a new model
-            self._model, self._data = model, mujoco.MjData(model)
-            mujoco.mj_copyData(self._data, model, data)
-            self._handle.set_model(model, data=self._data)
+        if world.model is not self._model:  # a new world (a spawn recompiles): a new model
+            self._model = world.model
+            self._data = mujoco.MjData(world.model)
+            mujoco.mj_copyData(self._data, world.model, world.data)
+            if self._camera is not None:
+                self._frame(world)
+            self._handle.set_model(world.model, data=self._data)  # (the viewer copies it)
         else:
-            mujoco.mj_copyData(self._data, model, data)
-        self._handle.sync(self._model, self._data)  # what the page did is not read back
+            mujoco.mj_copyData(self._data, world.model, world.data)
+        self._handle.sync(world.model, self._data)  # what the page did is not read back
+
+    def _frame(self, world: Any) -> None:
+        """The free view `launcher sim snapshot` takes: from the side and above, framing every
+        entity but the ground (Studio's own default sits at the origin, often in the floor)."""
+        import mujoco
+
+        from launcher.sim.snapshot import AZIMUTH, ELEVATION, framing
+
+        camera = self._camera
+        camera.type = mujoco.mjtCamera.mjCAMERA_FREE
+        framed = framing(world)
+        if framed is not None:
+            camera.lookat[:], camera.distance = framed
+        else:  # nothing to frame: the world's own extent
+            camera.lookat[:] = world.model.stat.center
+            camera.distance = 1.5 * float(world.model.stat.extent)
+        camera.azimuth, camera.elevation = AZIMUTH, ELEVATION
 
     def close(self) -> None:
         with contextlib.suppress(Exception):  # the viewer's own failure is no reason to

@@ -4,12 +4,18 @@ installs Chromium.)"""
 
 from __future__ import annotations
 
+import io
+import shutil
 import socket
 import time
 import urllib.request
 
 import psutil
 import pytest
+
+from tests.conftest import REPO
+
+ARTEFACTS = REPO / "test-artefacts" / "viewer"  # a failing browser test's screenshots
 
 
 @pytest.fixture
@@ -107,3 +113,118 @@ def test_a_mujoco_without_studio_is_said_and_the_sim_runs_on_headless(view_ws):
         assert "runs on without it" in text and proc.poll() is None
     finally:
         stop(proc)
+
+
+# --- in a real browser: Debian's Chromium, headless, software GL --------------------------
+DIFF_DRIVE = REPO.parent / "shared" / "external" / "gz-sim" / "worlds" / "diff_drive.sdf"
+SCENE = (0, 0, 800, 400)  # the 3D view of an 800×600 window, above the page's status bar
+BLUE, GREEN, RED = (0.2, 0.2, 0.8), (0.2, 0.8, 0.2), (0.8, 0.2, 0.2)
+
+
+@pytest.fixture
+def browser():
+    from selenium import webdriver
+    from selenium.webdriver.chrome.options import Options
+    from selenium.webdriver.chrome.service import Service
+
+    options = Options()
+    for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
+                     "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                     "--window-size=800,600"):
+        options.add_argument(argument)
+    driver = webdriver.Chrome(options=options,
+                              service=Service(shutil.which("chromedriver") or "chromedriver"))
+    driver.shots = []
+    try:
+        yield driver
+    finally:
+        driver.quit()
+
+
+def keep_shots(driver, name: str) -> None:
+    """A failing run's screenshots, kept as its artefacts."""
+    folder = ARTEFACTS / name
+    folder.mkdir(parents=True, exist_ok=True)
+    for index, shot in enumerate(driver.shots):
+        (folder / f"{index:02d}.png").write_bytes(shot)
+
+
+def picture(driver):
+    """The page's 3D view now, as an image (and kept for a failing run)."""
+    from PIL import Image
+
+    shot = driver.get_screenshot_as_png()
+    driver.shots.append(shot)
+    return Image.open(io.BytesIO(shot)).convert("RGB").crop(SCENE)
+
+
+def share_of(image, colour, tolerance: float = 0.2) -> float:
+    """The part of the picture near `colour` (channel fractions, shading allowed for)."""
+    data = image.tobytes()
+    pixels = list(zip(data[0::3], data[1::3], data[2::3], strict=True))
+    near = 0
+    for r, g, b in pixels:
+        total = r + g + b
+        if total < 60:
+            continue
+        shares = (r / total, g / total, b / total)
+        wanted = [c / sum(colour) for c in colour]
+        if all(abs(s - w) < tolerance for s, w in zip(shares, wanted, strict=True)):
+            near += 1
+    return near / len(pixels)
+
+
+def difference(a, b) -> float:
+    from PIL import ImageChops
+
+    histogram = ImageChops.difference(a, b).convert("L").histogram()
+    return sum(histogram[25:]) / (a.width * a.height)  # pixels that changed visibly
+
+
+def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spawn_appears(
+        view_ws, browser):
+    view_ws.env["GZ_SIM_RESOURCE_PATH"] = str(DIFF_DRIVE.parent)
+    port = free_port()
+    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", str(DIFF_DRIVE))
+    try:
+        wait_for(lambda: "the world in a browser" in said(view_ws))
+        browser.get(f"http://127.0.0.1:{port}/")
+        # the scene: both vehicles of gz-sim's diff_drive.sdf, framed as a snapshot frames
+        def both_vehicles():
+            shown = picture(browser)
+            return shown if share_of(shown, BLUE) > 0.01 and share_of(shown, GREEN) > 0.01 \
+                else None
+
+        first = wait_for(both_vehicles, 90)
+        assert share_of(first, RED) < 0.001
+        # driving: the picture changes
+        sent = view_ws.run("gz", "topic", "-t", "/model/vehicle_blue/cmd_vel", "-m",
+                           "gz.msgs.Twist", "-p", "linear: {x: 2.0}, angular: {z: 1.0}")
+        assert sent.returncode == 0, sent.stderr
+        time.sleep(2)
+        assert difference(first, picture(browser)) > 0.005
+        # paused: it stops changing
+        paused = view_ws.run("gz", "service", "-s", "/world/diff_drive/control", "--reqtype",
+                             "gz.msgs.WorldControl", "--reptype", "gz.msgs.Boolean",
+                             "--req", "pause: true")
+        assert paused.returncode == 0, paused.stderr
+        time.sleep(1)
+        still = picture(browser)
+        time.sleep(2)
+        assert difference(still, picture(browser)) < 0.002
+        # a spawned robot appears (the model is sent again, the page reloads it)
+        box = ('<sdf version="1.6"><model name="red_box"><pose>0 -2 0.5 0 0 0</pose><link '
+               'name="l"><visual name="v"><geometry><box><size>1 1 1</size></box></geometry>'
+               '<material><diffuse>0.8 0.1 0.1 1</diffuse><ambient>0.8 0.1 0.1 1</ambient>'
+               '</material></visual></link></model></sdf>')
+        spawned = view_ws.run("gz", "service", "-s", "/world/diff_drive/create", "--reqtype",
+                              "gz.msgs.EntityFactory", "--reptype", "gz.msgs.Boolean",
+                              "--req", f"sdf: '{box}'", timeout=60)
+        assert spawned.returncode == 0, spawned.stdout + spawned.stderr
+        wait_for(lambda: share_of(picture(browser), RED) > 0.005, 60)
+    except BaseException:
+        keep_shots(browser, "robots_drawn_move_pause_spawn")
+        raise
+    finally:
+        stop(proc)
+    assert proc.returncode == 0
