@@ -222,9 +222,31 @@ def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spaw
                               "--req", f"sdf: '{box}'", timeout=60)
         assert spawned.returncode == 0, spawned.stdout + spawned.stderr
         wait_for(lambda: share_of(picture(browser), RED) > 0.005, 60)
+        # the page left and opened again (a reload is a disconnect and a reconnect)
+        browser.get("about:blank")
+        time.sleep(1)
+        browser.get(f"http://127.0.0.1:{port}/")
+        wait_for(lambda: share_of(picture(browser), RED) > 0.005, 60)
+        assert proc.poll() is None
     except BaseException:
         keep_shots(browser, "robots_drawn_move_pause_spawn")
         raise
+    finally:
+        stop(proc)
+    assert proc.returncode == 0
+
+
+def test_a_world_with_nothing_to_frame_is_served_too(view_ws):
+    view_ws.write("void.sdf", """
+        <sdf version="1.9"><world name="void"></world></sdf>
+    """)
+    port = free_port()
+    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", "void.sdf")
+    try:
+        wait_for(lambda: "the world in a browser" in said(view_ws))
+        time.sleep(0.5)  # a few turns of the viewer on a world with no geometry
+        page = urllib.request.urlopen(f"http://127.0.0.1:{port}/model", timeout=10).read()
+        assert page and proc.poll() is None
     finally:
         stop(proc)
     assert proc.returncode == 0
