@@ -164,7 +164,8 @@ def start_view(args: argparse.Namespace, log: Any) -> viewer.WebView | None:
     if args.gui_host not in ("127.0.0.1", "localhost", "::1"):
         log.warning(f"the web viewer listens on {args.gui_host}: it has no authentication, "
                     f"anyone who can reach that address can watch the world")
-    log.info(f"the world in a browser: {view.url}")
+    # on the screen at any verbosity, as Gazebo's window would be
+    print(f"[sim] the world in a browser: {view.url}", file=sys.stderr, flush=True)
     return view
 
 

@@ -5,10 +5,10 @@ Studio binds every interface and has no authentication, so another address is us
 asked for (`--gui-host`). `follow()` is called by the sim's loop after its steps; it sends the
 world's state at most `rate` times a second (a recompiled model, after a spawn or a removal,
 goes as a new model, which the page reloads, with the view framed as `launcher sim snapshot`
-frames it). The viewer gets a copy of the world's data, so
-nothing done in the page (a reset, a dragged state, a model dropped onto it) reaches the
-simulation. When Studio cannot start (an older MuJoCo, the port taken), `start()` raises
-ViewerError with the reason and the sim runs on headless.
+frames it). The viewer gets a copy of the world's data, so nothing done in the page (a reset,
+a dragged state, a model dropped onto it) reaches the simulation. When Studio cannot start (an
+older MuJoCo, the port taken), `start()` raises ViewerError with the reason and the sim runs
+on headless.
 """
 
 from __future__ import annotations

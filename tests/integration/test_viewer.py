@@ -55,7 +55,7 @@ def stop(proc) -> None:
 
 def test_the_sim_serves_the_world_on_loopback_only_and_says_where(view_ws):
     port = free_port()
-    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", "empty.sdf")
+    proc = view_ws.start("sim", "-r", f"--gui={port}", "empty.sdf")  # (default verbosity)
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
         text = said(view_ws)
