@@ -410,16 +410,10 @@ _fillers: dict[str, tuple[type, Callable[..., None], dict[int, str]]] = {}
 _new = object.__new__
 
 
-_fixed: dict[type, dict[int, str]] = {}
-
-
 def _fixed_arrays(cls: Any) -> dict[int, str]:
-    found = _fixed.get(cls)
-    if found is None:
-        found = {}
-        for index, (_, (kind, detail)) in enumerate(registry().fields(cls._TYPE)):
-            if kind == kinds.ARRAY and detail[0][0] == kinds.BASE \
-                    and detail[0][1][0] in _TYPECODES:
-                found[index] = _DTYPES.get(detail[0][1][0], detail[0][1][0])
-        _fixed[cls] = found
+    """{field index: numpy dtype} of the type's fixed numeric arrays (kept in `_fillers`)."""
+    found = {}
+    for index, (_, (kind, detail)) in enumerate(registry().fields(cls._TYPE)):
+        if kind == kinds.ARRAY and detail[0][0] == kinds.BASE and detail[0][1][0] in _TYPECODES:
+            found[index] = _DTYPES.get(detail[0][1][0], detail[0][1][0])
     return found

@@ -29,8 +29,7 @@ class ViewerError(LaunchError):
 
 
 class WebView:
-    def __init__(self, handle: Any, port: int, host: str, rate: float,
-                 camera: Any = None) -> None:
+    def __init__(self, handle: Any, port: int, host: str, rate: float, camera: Any) -> None:
         self._handle, self.port, self.host, self._camera = handle, port, host, camera
         self._period = 1.0 / min(max(rate, 1.0), MAX_RATE)
         self._next = 0.0
@@ -89,8 +88,7 @@ class WebView:
             self._model = world.model
             self._data = mujoco.MjData(world.model)
             mujoco.mj_copyData(self._data, world.model, world.data)
-            if self._camera is not None:
-                self._frame(world)
+            self._frame(world)
             self._handle.set_model(world.model, data=self._data)  # (the viewer copies it)
         else:
             mujoco.mj_copyData(self._data, world.model, world.data)

@@ -99,7 +99,7 @@ def _executor_for(node: Any, executor: Any) -> Any:
 
 
 def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
-    executor = executor or _global_executor or get_global_executor()
+    executor = executor or get_global_executor()
     if type(executor).spin_once is _plain_spin_once():  # (not a subclass's own spin_once)
         node._check_alive()
         executor.spin_once_lent(node, timeout_sec)
