@@ -70,6 +70,9 @@ class SimServer:
         self.camera = Camera(world)  # its GL context is made at the first snapshot
         node.create_service("mujoco_sim/srv/Snapshot", f"/world/{name}/snapshot",
                             self.on_snapshot)
+        # the web viewer on request (`gz sim -g`), made by start_view(port) if one is given
+        self.start_view: Any = None
+        node.create_service("mujoco_sim/srv/Gui", f"/world/{name}/gui", self.on_gui)
         world.load_world_plugins(before=[config_from(
             f'<plugin filename="world_state" name="WorldState">'
             f"<update_rate>{state_rate}</update_rate></plugin>", "the sim")])
@@ -104,6 +107,8 @@ class SimServer:
             if self.paused:  # serve the bus; the clock says "paused" 20 times a second
                 if not node.spin_once(0.05):
                     self.publish_clock()
+                elif self.view is not None:  # (a busy bus: the page is still served)
+                    self.view.follow(self.world, self.paused)
                 continue
             due = pacer.due()
             if due == 0:  # ahead of schedule: serve the bus until the next step is due
@@ -132,7 +137,7 @@ class SimServer:
 
     def publish_clock(self) -> None:
         if self.view is not None:  # (after every batch, and while paused: rate-limited)
-            self.view.follow(self.world)
+            self.view.follow(self.world, self.paused)
         wanted = [p for p in self._clocks if p.get_subscription_count()]
         if not wanted:
             return
@@ -143,6 +148,32 @@ class SimServer:
 
     def stop(self, *_: Any) -> None:
         self.stopped = True
+
+    def show(self, view: Any) -> None:
+        """Serve the world to `view` (viewer.py's WebView), whose page's buttons act as the
+        control service's requests do."""
+        self.view = view
+        view.on_action = self.on_page_action
+
+    def on_gui(self, request: Any, response: Any) -> Any:
+        if self.view is None and self.start_view is not None:
+            view = self.start_view(request.port or None)
+            if view is not None:
+                self.show(view)
+        if self.view is None:
+            response.success = False
+            response.message = "the sim could not serve its web viewer (its log says why)"
+            return response
+        response.success, response.url = True, self.view.url
+        return response
+
+    def on_page_action(self, action: str) -> None:
+        """The page's Pause, Run, Step or Reset, as a `/world/<w>/control` request."""
+        pause = action in ("pause", "step") or (action == "reset" and self.paused)
+        request = self.node.message("mujoco_sim/srv/Control_Request", pause=pause,
+                                    step=action == "step", reset_all=action == "reset")
+        self.on_control(request, self.node.message("mujoco_sim/srv/Control_Response"))
+        self.log.info(f"the web viewer's page: {action}")
 
     # --- services --------------------------------------------------------------------------
     def on_control(self, request: Any, response: Any) -> Any:

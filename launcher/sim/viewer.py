@@ -2,19 +2,23 @@
 
 `WebView.start()` starts Studio's web viewer (MuJoCo 4's `mujoco.studio`) on 127.0.0.1 only:
 Studio binds every interface and has no authentication, so another address is used only when
-asked for (`--gui-host`). `follow()` is called by the sim's loop after its steps; it sends the
-world's state at most `rate` times a second (a recompiled model, after a spawn or a removal,
-goes as a new model, which the page reloads, with the view framed as `launcher sim snapshot`
-frames it). The viewer gets a copy of the world's data, so nothing done in the page (a reset,
-a dragged state, a model dropped onto it) reaches the simulation. When Studio cannot start (an
-older MuJoCo, the port taken), `start()` raises ViewerError with the reason and the sim runs
-on headless.
+asked for (`--gui-host`). `follow()` is called by the sim's loop after its steps; while a
+browser watches, it sends the world's state at most `rate` times a second (a recompiled model,
+after a spawn or a removal, goes as a new model, which the page reloads, with the view framed
+as `launcher sim snapshot` frames it); while none does, it sends nothing but a new model. The
+page's Pause/Run, Step and Reset buttons come back from `follow()` as actions for the sim's
+control path (`on_action`); nothing else done in the page reaches the simulation: the viewer
+has a copy of the world's data, and a state dragged, a model dropped onto the page or physics
+options changed there are dropped (viewer_page.py). When Studio cannot start (an older MuJoCo,
+the port taken), `start()` raises ViewerError with the reason and the sim runs on headless.
 """
 
 from __future__ import annotations
 
 import contextlib
+import logging
 import time
+from collections.abc import Callable
 from typing import Any
 
 from launcher.errors import LaunchError
@@ -29,12 +33,18 @@ class ViewerError(LaunchError):
 
 
 class WebView:
-    def __init__(self, handle: Any, port: int, host: str, rate: float, camera: Any) -> None:
-        self._handle, self.port, self.host, self._camera = handle, port, host, camera
+    def __init__(self, port: int, host: str, rate: float) -> None:
+        self.port, self.host = port, host
         self._period = 1.0 / min(max(rate, 1.0), MAX_RATE)
         self._next = 0.0
+        self._handle: Any = None  # Studio's ViewerHandle, the sim's side of the viewer
+        self._page: Any = None  # its PageViewer, the viewer thread's side
+        self._camera: Any = None  # the viewer's camera, framed on a new model
         self._model: Any = None  # the world's model the viewer shows
         self._data: Any = None  # the viewer's copy of the world's data
+        self._paused: bool | None = None  # as the page was last told
+        self._actions: list[str] = []  # the page's buttons pressed, for on_action
+        self.on_action: Callable[[str], None] = lambda action: None
 
     @property
     def url(self) -> str:
@@ -42,42 +52,53 @@ class WebView:
         return f"http://{host}:{self.port}/"
 
     @classmethod
-    def start(cls, port: int, host: str = "127.0.0.1", rate: float = DEFAULT_RATE) -> WebView:
+    def start(cls, port: int | None, host: str = "127.0.0.1", rate: float = DEFAULT_RATE,
+              log: Any = None) -> WebView:
+        """Serve the viewer on `port`, or (None) on the first free one from 8080; `log` (the
+        sim's logger) hears of browsers coming and going."""
         try:
             import mujoco
-            from mujoco.studio import launch_thread, viewer_protocol, web_viewer
+            from mujoco.studio import launch_thread, viewer_protocol
             from mujoco.studio.web import web_server
+
+            from launcher.sim import viewer_page
         except ImportError as exc:
             version = _mujoco_version()
             raise ViewerError(f"the web viewer needs MuJoCo Studio (mujoco>=4); this is "
                               f"mujoco {version} ({exc})") from None
-        camera = mujoco.MjvCamera()  # the viewer's, which follow() frames on a new model
+        listener, port = _listen(host, port)
+        view = cls(port, host, rate)
+        view._camera = mujoco.MjvCamera()
         config = viewer_protocol.ViewerConfig(gfx="web", http_port=port, open_browser=False,
                                               title="launcher sim")
 
-        def serve(endpoint: Any) -> None:  # Studio's launch_web.launch, with our camera
-            viewer = web_viewer.WebViewer(config, endpoint, camera=camera)
-            viewer_protocol.run_viewer_loop(viewer)
+        def serve(endpoint: Any) -> None:  # Studio's launch_web.launch, with our parts
+            view._page = viewer_page.PageViewer(config, endpoint, camera=view._camera,
+                                                plugins=[viewer_page.Panel()])
+            viewer_protocol.run_viewer_loop(view._page)
 
-        _check_free(host, port)
+        _route_studio_log(log)
+
         bind = web_server.bind_public_socket
-        # Studio binds "::" (every interface) with no way to say otherwise: the address is
-        # put in at its bind
-        web_server.bind_public_socket = lambda _host, wanted: bind(host, wanted)
+        # Studio binds "::" (every interface) with no way to say otherwise: it is handed the
+        # socket made here, on `host`, listening already (a port another sim has is found
+        # taken here, not in Studio's server thread)
+        web_server.bind_public_socket = lambda _host, _port: listener
         try:
             with contextlib.redirect_stdout(None):  # its banner names the wrong address
-                handle = launch_thread.launch_thread(serve, sim_plugins=[])
-                view = cls(handle, port, host, rate, camera)
-                _wait_until_serving(handle, view.url)
-        except OSError as exc:
-            raise ViewerError(f"the web viewer cannot listen on {host} port {port}: "
-                              f"{exc.strerror or exc}") from None
+                view._handle = launch_thread.launch_thread(
+                    serve, sim_plugins=[viewer_page.Controls(view._actions.append)])
+                _wait_until_serving(view._handle, view.url)
+        except BaseException:
+            listener.close()
+            raise
         finally:
             web_server.bind_public_socket = bind
         return view
 
-    def follow(self, world: Any, now: float | None = None) -> None:
-        """Send the world's state if its turn has come (at most `rate` times a second)."""
+    def follow(self, world: Any, paused: bool, now: float | None = None) -> None:
+        """Send the world's state if its turn has come (at most `rate` times a second) and a
+        browser watches; then hand the page's pressed buttons to `on_action`."""
         now = time.monotonic() if now is None else now
         if now < self._next:
             return
@@ -90,9 +111,21 @@ class WebView:
             mujoco.mj_copyData(self._data, world.model, world.data)
             self._frame(world)
             self._handle.set_model(world.model, data=self._data)  # (the viewer copies it)
+        elif self._page is None or not self._page.watched():
+            return  # no browser: nothing to send (the next one gets the state at once)
         else:
             mujoco.mj_copyData(self._data, world.model, world.data)
-        self._handle.sync(world.model, self._data)  # what the page did is not read back
+        if paused != self._paused:
+            from mujoco.studio import messages, sim
+
+            self._paused = paused
+            self._handle.send_to_viewer(messages.StepControlSnapshot(
+                pause_state=sim.PauseState.NORMAL_PAUSED if paused else
+                sim.PauseState.UNPAUSED))
+        self._handle.sync(world.model, self._data)  # (the page's events come in here)
+        actions, self._actions[:] = list(self._actions), []
+        for action in actions:  # after sync: an action may call follow() again
+            self.on_action(action)
 
     def _frame(self, world: Any) -> None:
         """The free view `launcher sim snapshot` takes: from the side and above, framing every
@@ -116,19 +149,56 @@ class WebView:
             self._handle.close()  # fail the sim's ending
 
 
-def _check_free(host: str, port: int) -> None:
-    """The port taken is said before Studio starts (its own check comes from its thread)."""
+class _StudioLog(logging.Handler):
+    """Studio's web server's log (browsers coming and going), said as the sim's info."""
+
+    def __init__(self, log: Any) -> None:
+        super().__init__()
+        self._log = log
+
+    def emit(self, record: logging.LogRecord) -> None:
+        text = record.getMessage()
+        if text.startswith("["):  # "[StateWS] Browser connected (1 total)"
+            text = text.partition("] ")[2]
+        if record.exc_info and record.exc_info[1] is not None:  # (its traceback: --debug)
+            text = f"{text} ({type(record.exc_info[1]).__name__}: {record.exc_info[1]})"
+        say = self._log.warning if record.levelno >= logging.WARNING else self._log.info
+        say(f"web viewer: {text[:1].lower()}{text[1:]}")
+
+
+def _route_studio_log(log: Any) -> None:
+    """Studio's server prints its log on stdout in its own format, its viewer thread's errors
+    go to Python's last resort with a traceback: both go to the sim's log."""
+    for name in ("WebServer", "mujoco.studio"):
+        studio = logging.getLogger(name)
+        for handler in list(studio.handlers):
+            studio.removeHandler(handler)
+        studio.addHandler(_StudioLog(log) if log is not None else logging.NullHandler())
+        studio.propagate = False
+
+
+def _listen(host: str, port: int | None) -> tuple[Any, int]:
+    """A socket listening on `host` at `port`, or (None) at the first free port from 8080
+    (more than one sim may run); ViewerError if there is none."""
     import socket
 
     family = socket.AF_INET6 if ":" in host else socket.AF_INET
-    with socket.socket(family, socket.SOCK_STREAM) as probe:
-        probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    candidates = [port] if port is not None else range(DEFAULT_PORT, DEFAULT_PORT + 20)
+    for candidate in candidates:
+        listener = socket.socket(family, socket.SOCK_STREAM)
+        listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)  # (past TIME_WAITs)
         try:
-            probe.bind((host, port))
+            listener.bind((host, candidate))
+            listener.listen(100)
+            return listener, candidate
         except OSError as exc:
-            raise ViewerError(f"the web viewer cannot listen on {host} port {port}: "
-                              f"{exc.strerror or exc} (another program has it; choose "
-                              f"another with --gui=PORT)") from None
+            listener.close()
+            error = exc.strerror or str(exc)
+    if port is not None:
+        raise ViewerError(f"the web viewer cannot listen on {host} port {port}: {error} "
+                          f"(another program has it; choose another with --gui=PORT)")
+    raise ViewerError(f"the web viewer found no free port on {host} from {DEFAULT_PORT} to "
+                      f"{DEFAULT_PORT + 19}: {error} (choose one with --gui=PORT)")
 
 
 def _wait_until_serving(handle: Any, url: str, timeout: float = 10.0) -> None:
