@@ -26,7 +26,7 @@ def run_gz(argv: list[str]) -> int:
     if argv[:1] == ["sim"]:
         from launcher.cli.sim_command import run_sim
 
-        return run_sim(argv[1:])
+        return run_sim(argv[1:], gz=True)
     from launcher.nodes.gz import main
 
     return main(argv)

@@ -22,7 +22,8 @@ def run(args: argparse.Namespace) -> int:
     return run_sim(args.arguments)
 
 
-def run_sim(argv: list[str]) -> int:
+def run_sim(argv: list[str], gz: bool = False) -> int:
+    """`gz` (as `launcher gz sim`): Gazebo's meaning, the web viewer unless -s."""
     if argv[:1] == ["snapshot"]:  # a client of the running sim, not a world named so
         from launcher.nodes.snapshot import main as snapshot
 
@@ -32,4 +33,4 @@ def run_sim(argv: list[str]) -> int:
     os.environ.update(hooked_environment(load_index(), dict(os.environ)))  # errors: reported
     from launcher.nodes.sim import main
 
-    return main(argv)
+    return main(argv, gz=gz)

@@ -1,14 +1,16 @@
 """`sim [-v LEVEL] [-r] [-s] [--iterations N] [-z RATE | --rtf FACTOR] [WORLD]`: the world server.
 
 The flags are `gz sim`'s: `-r` runs at start (otherwise paused until a control request),
-`-s` (server only) is accepted, as there is no GUI, `--iterations N` stops after N steps,
+`-s` is the server only: as `gz sim` (launcher's gz), the sim serves its web viewer (the GUI's
+part: the world in a browser, on 127.0.0.1) unless `-s` is given; as `launcher sim`, only with
+`--gui`. `-g` (the GUI alone) asks the running sim to serve its viewer and prints where.
+`--iterations N` stops after N steps,
 `-z RATE` paces at RATE steps per second (0: as fast as possible), `--rtf` paces at a
 real-time factor instead (default: the world's <real_time_factor>, else 1), `-v` sets the
 verbosity (0 quiet … 4 debug; default 2, warnings). WORLD is an SDF or MJCF file: a path, a
 file in a resource folder (MUJOCO_SIM_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, …) or a built-in
 world (default: empty.sdf); `.j2` worlds are rendered with `--world-arg NAME=VALUE`.
-`--headless-rendering` and `--render-engine` are accepted; `-g` (Gazebo's GUI) says what
-launcher offers instead.
+`--headless-rendering` and `--render-engine` are accepted.
 """
 
 from __future__ import annotations
@@ -32,19 +34,23 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
     parser = argparse.ArgumentParser(
         prog="sim", description=__doc__.split("\n")[0],
         epilog="A picture of a running world: launcher sim snapshot -o world.png (see -h there).")
-    parser.add_argument("world", nargs="?", default="empty.sdf", metavar="WORLD")
+    parser.add_argument("world", nargs="?", default=None, metavar="WORLD",
+                        help="the world to run (default empty.sdf); with -g, the running "
+                             "world's name, when more than one runs")
     parser.add_argument("-v", "--verbose", type=int, default=2, choices=range(5),
                         metavar="LEVEL", help="0 quiet, 1 errors, 2 warnings, 3 info, 4 debug")
     parser.add_argument("-r", "--run", action="store_true", help="run at start")
-    parser.add_argument("-s", "--server", action="store_true", help="server only (always)")
+    parser.add_argument("-s", "--server", action="store_true",
+                        help="server only: no web viewer (as `gz sim`, the viewer is served "
+                             "unless -s is given)")
     parser.add_argument("-g", dest="gui_only", action="store_true",
-                        help="Gazebo's GUI alone: not available; says what to use instead")
+                        help="the GUI alone: the running sim serves its web viewer; its "
+                             "address is printed")
     parser.add_argument("--gui", action="store_true",
                         help=f"serve the world to a browser (MuJoCo Studio's web viewer, "
-                             f"mujoco>=4) on 127.0.0.1; --gui=PORT for another port than "
-                             f"{viewer.DEFAULT_PORT}")
-    parser.add_argument("--gui-port", type=_port, default=viewer.DEFAULT_PORT,
-                        help=argparse.SUPPRESS)
+                             f"mujoco>=4) on 127.0.0.1 port {viewer.DEFAULT_PORT} (or the "
+                             f"next free one); --gui=PORT for that port only")
+    parser.add_argument("--gui-port", type=_port, default=None, help=argparse.SUPPRESS)
     parser.add_argument("--gui-host", default="127.0.0.1", metavar="ADDRESS",
                         help="the address the viewer listens on (default 127.0.0.1). The "
                              "viewer has no authentication: another address lets anyone who "
@@ -101,17 +107,46 @@ def world_values(pairs: list[str]) -> dict[str, str]:
     return values
 
 
-GUI_INSTEAD = ("launcher has no Gazebo GUI: watch the world with `launcher sim snapshot -o "
-               "world.png` (a picture of the running world), and the topics with `launcher "
-               "gz topic -e -t TOPIC`")
-
-
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, gz: bool = False) -> int:
+    """`gz` (as `gz sim`): the web viewer is served unless -s says server only."""
     args, ros = parse(sys.argv[1:] if argv is None else argv)
-    if args.gui_only:  # `gz sim -g` is the GUI alone: there is no server to run
-        print(f"[sim] {GUI_INSTEAD}", file=sys.stderr, flush=True)
-        return 0
+    if args.gui_only:  # the GUI alone: the running sim's viewer
+        return reported(lambda: ask_for_view(args), "sim")
+    if gz and not args.server:
+        args.gui = True
     return reported(lambda: run(args, ros), "sim")
+
+
+def ask_for_view(args: argparse.Namespace, timeout: float = 10.0) -> int:
+    """`gz sim -g`: the running sim serves its web viewer (if it does not already); where."""
+    import time
+
+    from launcher.bus import keys
+    from launcher.bus.node import Node
+    from launcher.errors import LaunchError
+    from launcher.nodes.create import SimNotFound, find_world
+
+    node = Node("_launcher_gz_gui", argv=[], parameter_services=False, space=keys.SIM)
+    try:
+        deadline = time.monotonic() + timeout
+        try:
+            world = args.world or find_world(node, deadline, timeout, "gui",
+                                             "mujoco_sim/srv/Gui", "`gz sim -g NAME`")
+        except (UsageError, SimNotFound) as exc:
+            raise LaunchError(f"{exc}; `gz sim -g` shows a running sim: start one with "
+                              f"`gz sim -s WORLD`") from None
+        client = node.create_client("mujoco_sim/srv/Gui", f"/world/{world}/gui")
+        if not client.wait_for_service(max(0.5, deadline - time.monotonic())):
+            raise LaunchError(f"no sim runs a world named '{world}' (`gz sim -g` with no "
+                              f"name finds the one that runs)")
+        answer = client.call(node.message("mujoco_sim/srv/Gui_Request",
+                                          port=args.gui_port or 0), timeout)
+    finally:
+        node.destroy_node()
+    if not answer.success:
+        raise LaunchError(f"world '{world}': {answer.message}")
+    print(f"[sim] the world '{world}' in a browser: {answer.url}", file=sys.stderr, flush=True)
+    return 0
 
 
 def run(args: argparse.Namespace, ros: list[str]) -> int:
@@ -122,10 +157,9 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     from launcher.sim.transport import BusTransport
     from launcher.sim.world import World
 
-    path = find_world(args.world)
+    path = find_world(args.world or "empty.sdf")
     values = world_values(args.world_arg)
     node = Node("sim", argv=ros, space=keys.SIM)  # off the ROS graph, as gz sim is
-    view = None
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
         world = World.from_path(path, BusTransport(node), values)
@@ -135,8 +169,12 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
             (args.rate * timestep if args.rate is not None else default_rtf)
         server = SimServer(world, node, rtf, args.run, args.state_rate)
         install_signal_handlers(server)  # (before the viewer's URL: a stop after it is clean)
+        log = node.get_logger()
+        server.start_view = lambda port: start_view(args, log, port)
         if args.gui:
-            server.view = view = start_view(args, node.get_logger())
+            view = start_view(args, log, args.gui_port)
+            if view is not None:
+                server.show(view)
         node.get_logger().info(
             f"world '{world.world_name}' from {path}: timestep {timestep} s, "
             f"{'running' if args.run else 'paused'}, "
@@ -144,7 +182,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         server.run(args.iterations)
     finally:
         node.destroy_node()
-    if view is not None:
+    if server.view is not None:
         # Studio's native threads can outlive its close() by a moment and crash the
         # interpreter's teardown (SIGSEGV): with a viewer, the sim ends here, its output
         # flushed and its session closed already
@@ -154,10 +192,11 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     return 0
 
 
-def start_view(args: argparse.Namespace, log: Any) -> viewer.WebView | None:
-    """The web viewer, or None (said why) when it cannot start: the sim runs on headless."""
+def start_view(args: argparse.Namespace, log: Any, port: int | None) -> viewer.WebView | None:
+    """The web viewer, or None (said why) when it cannot start: the sim runs on headless. On
+    `port`, or without one on the first free one from 8080 (as more than one sim may run)."""
     try:
-        view = viewer.WebView.start(args.gui_port, args.gui_host, args.gui_rate)
+        view = viewer.WebView.start(port, args.gui_host, args.gui_rate, log)
     except viewer.ViewerError as exc:
         log.error(f"{exc}; the sim runs on without it")
         return None

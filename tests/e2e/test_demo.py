@@ -226,7 +226,7 @@ def test_kill_9_of_the_sim_ends_the_launch_and_leaves_nothing(demo):
     proc = demo.start("launch", str(REPO / "launch_files" / "robot.launch.py"),
                       output="demo.out")
     wait_for_driving(demo)
-    launched(proc, "launcher sim").kill()  # SIGKILL: the sim cannot clean up
+    launched(proc, "launcher gz sim").kill()  # SIGKILL: the sim cannot clean up
     code = proc.wait(60)  # on_exit_shutdown in the launch file; the fixture checks orphans
     out = demo.output("demo.out")
     assert code == 1, out  # a process died of a cause the launcher did not give it

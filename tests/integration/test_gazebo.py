@@ -145,12 +145,6 @@ def test_the_courses_cpp_world_plugin_is_one_warning_and_the_world_runs(gz_ws):
     assert "world 'default'" in text
 
 
-def test_gz_sim_gui_says_what_launcher_offers_instead(gz_ws):
-    done = gz(gz_ws, "sim", "-g")
-    assert done.returncode == 0
-    assert "launcher has no Gazebo GUI" in done.stderr and "launcher sim snapshot" in done.stderr
-
-
 def demos_workspace(ws) -> Path:
     """ros_gz_sim_demos as a package whose launch folder is the external one, in place."""
     package = ws.root / "pkgs" / "ros_gz_sim_demos"

@@ -1,10 +1,11 @@
 """The web viewer served by the sim (launcher/sim/viewer.py): a real sim process, fetched by
-a real HTTP client. (The browser test that looks at the picture comes with the set-up that
-installs Chromium.)"""
+a real HTTP client, and looked at and pressed in a real browser (Debian's Chromium, headless,
+installed by the set-up)."""
 
 from __future__ import annotations
 
 import io
+import re
 import shutil
 import socket
 import time
@@ -115,6 +116,76 @@ def test_a_mujoco_without_studio_is_said_and_the_sim_runs_on_headless(view_ws):
         stop(proc)
 
 
+def served_at(ws) -> int:
+    return int(re.search(r"in a browser: http://127\.0\.0\.1:(\d+)/", said(ws)).group(1))
+
+
+def test_gz_sim_serves_the_viewer_as_gazebo_opens_its_window_and_not_with_s(view_ws):
+    """`gz sim WORLD` is Gazebo's server and GUI: the viewer, on 8080 or the next free port
+    (another sim may have it); `gz sim -s` is the server alone."""
+    with socket.socket() as taken:  # 8080 taken: the next free one
+        taken.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            taken.bind(("127.0.0.1", 8080))
+            taken.listen()
+        except OSError:
+            pass  # (taken already)
+        proc = view_ws.start("gz", "sim", "-r", "-v", "3", "empty.sdf")
+        try:
+            wait_for(lambda: "the world in a browser" in said(view_ws))
+            port = served_at(view_ws)
+            assert port != 8080 and 8080 < port < 8100
+            assert listening(proc.pid, port) == ["127.0.0.1"]
+        finally:
+            stop(proc)
+    assert proc.returncode == 0
+
+
+def test_gz_sim_g_asks_the_running_server_to_serve_its_viewer(view_ws):
+    proc = view_ws.start("gz", "sim", "-s", "-r", "-v", "3", "empty.sdf")
+    try:
+        wait_for(lambda: "world 'empty'" in said(view_ws))
+        assert "in a browser" not in said(view_ws)
+        assert not [c for c in psutil.Process(proc.pid).net_connections("inet")
+                    if c.status == psutil.CONN_LISTEN]  # server only: nothing served
+        asked = view_ws.run("gz", "sim", "-g", timeout=60)
+        assert asked.returncode == 0, asked.stderr
+        url = re.search(r"the world 'empty' in a browser: (http://127\.0\.0\.1:(\d+)/)",
+                        asked.stderr)
+        assert url, asked.stderr
+        assert listening(proc.pid, int(url.group(2))) == ["127.0.0.1"]
+        page = urllib.request.urlopen(url.group(1), timeout=10).read()
+        assert b"<!doctype html>" in page.lower()[:200]
+        again = view_ws.run("gz", "sim", "-g", "empty", timeout=60)  # served: the same one
+        assert again.returncode == 0 and url.group(1) in again.stderr
+        other = view_ws.run("gz", "sim", "-g", "warehouse", timeout=60)
+        assert other.returncode == 1
+        assert "no sim runs a world named 'warehouse'" in other.stderr
+    finally:
+        stop(proc)
+    assert proc.returncode == 0
+
+
+def test_gz_sim_g_with_no_sim_running_says_so(view_ws):
+    done = view_ws.run("gz", "sim", "-g", timeout=60)
+    assert done.returncode == 1
+    assert "no sim answered" in done.stderr and "gz sim -s WORLD" in done.stderr
+    assert "Traceback" not in done.stderr
+
+
+def test_a_model_dropped_onto_the_page_is_not_kept(tmp_path):
+    """Studio's page uploads dropped files for the sim to load: the sim's viewer takes none
+    (its server reads the upload and keeps nothing, and no drop is ever loaded)."""
+    from launcher.sim.viewer import WebView
+
+    view = WebView.start(free_port())
+    try:
+        assert view._page._web_server.drop_queue is None
+        assert view._page.get_drop_file() == ""
+    finally:
+        view.close()
+
+
 # --- in a real browser: Debian's Chromium, headless, software GL --------------------------
 DIFF_DRIVE = REPO.parent / "shared" / "external" / "gz-sim" / "worlds" / "diff_drive.sdf"
 SCENE = (0, 0, 800, 400)  # the 3D view of an 800×600 window, above the page's status bar
@@ -156,6 +227,19 @@ def picture(driver):
     shot = driver.get_screenshot_as_png()
     driver.shots.append(shot)
     return Image.open(io.BytesIO(shot)).convert("RGB").crop(SCENE)
+
+
+def press(driver, button: int) -> None:
+    """A click on one of the page's sim buttons (viewer_page.py: 0 Pause/Run, 1 Step, 2 Reset)."""
+    from selenium.webdriver.common.actions.action_builder import ActionBuilder
+
+    from launcher.sim.viewer_page import button_centre
+
+    x, y = button_centre(button)
+    actions = ActionBuilder(driver)
+    actions.pointer_action.move_to_location(int(x), int(y))
+    actions.pointer_action.click()
+    actions.perform()
 
 
 def share_of(image, colour, tolerance: float = 0.2) -> float:
@@ -212,6 +296,21 @@ def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spaw
         still = picture(browser)
         time.sleep(2)
         assert difference(still, picture(browser)) < 0.002
+        # the page's own buttons: Run (the paused sim's Pause button), Pause, Reset
+        press(browser, 0)  # Run
+        wait_for(lambda: "the web viewer's page: run" in said(view_ws))
+        time.sleep(1)
+        assert difference(still, picture(browser)) > 0.005  # driving again
+        press(browser, 0)  # Pause
+        wait_for(lambda: "the web viewer's page: pause" in said(view_ws))
+        time.sleep(1)
+        still = picture(browser)
+        time.sleep(2)
+        assert difference(still, picture(browser)) < 0.002
+        press(browser, 2)  # Reset: back where the world began
+        wait_for(lambda: "the web viewer's page: reset" in said(view_ws))
+        time.sleep(1)
+        assert difference(first, picture(browser)) < difference(first, still)
         # a spawned robot appears (the model is sent again, the page reloads it)
         box = ('<sdf version="1.6"><model name="red_box"><pose>0 -2 0.5 0 0 0</pose><link '
                'name="l"><visual name="v"><geometry><box><size>1 1 1</size></box></geometry>'
@@ -227,6 +326,12 @@ def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spaw
         time.sleep(1)
         browser.get(f"http://127.0.0.1:{port}/")
         wait_for(lambda: share_of(picture(browser), RED) > 0.005, 60)
+        # and vanishes when removed
+        removed = view_ws.run("gz", "service", "-s", "/world/diff_drive/remove", "--reqtype",
+                              "gz.msgs.Entity", "--reptype", "gz.msgs.Boolean",
+                              "--req", "name: 'red_box' type: MODEL", timeout=60)
+        assert removed.returncode == 0, removed.stdout + removed.stderr
+        wait_for(lambda: share_of(picture(browser), RED) < 0.001, 60)
         assert proc.poll() is None
     except BaseException:
         keep_shots(browser, "robots_drawn_move_pause_spawn")

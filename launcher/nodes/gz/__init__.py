@@ -37,7 +37,7 @@ def main(argv: list[str]) -> int:
     if verb == "sim":
         from launcher.nodes.sim import main as sim
 
-        return sim(rest)
+        return sim(rest, gz=True)
     commands = {"topic": topic, "service": service, "model": model}
     if verb not in commands:
         raise UsageError(f"gz: unknown command '{verb}'{did_you_mean(verb, list(VERBS))}; "

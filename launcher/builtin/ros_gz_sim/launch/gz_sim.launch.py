@@ -1,5 +1,6 @@
-"""ros_gz_sim's gz_sim.launch.py over the MuJoCo sim: `gz_args` are the sim's command line
-(`-r -v 4 robot.world`), `on_exit_shutdown:=true` ends the launch when the sim exits."""
+"""ros_gz_sim's gz_sim.launch.py over the MuJoCo sim: `gz_args` are `gz sim`'s command line
+(`-r -v 4 robot.world`: the web viewer too, as Gazebo's GUI; `-s`: the server alone),
+`on_exit_shutdown:=true` ends the launch when the sim exits."""
 
 import shlex
 
@@ -11,7 +12,7 @@ from launch.substitutions import LaunchConfiguration
 def _sim(context):
     gz_args = LaunchConfiguration("gz_args").perform(context)
     shutdown = LaunchConfiguration("on_exit_shutdown").perform(context).lower() == "true"
-    return [ExecuteProcess(cmd=["launcher", "sim", *shlex.split(gz_args)], name="sim",
+    return [ExecuteProcess(cmd=["launcher", "gz", "sim", *shlex.split(gz_args)], name="sim",
                            output="screen", on_exit=Shutdown() if shutdown else None)]
 
 
