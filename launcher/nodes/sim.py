@@ -4,6 +4,8 @@ The flags are `gz sim`'s: `-r` runs at start (otherwise paused until a control r
 `-s` is the server only: as `gz sim` (launcher's gz), the sim serves its web viewer (the GUI's
 part: the world in a browser, on 127.0.0.1) unless `-s` is given; as `launcher sim`, only with
 `--gui`. `-g` (the GUI alone) asks the running sim to serve its viewer and prints where.
+The viewer's view is the world's `--camera NAME`, or follows `--track ENTITY`, or frames every
+entity as `launcher sim snapshot` does.
 `--iterations N` stops after N steps,
 `-z RATE` paces at RATE steps per second (0: as fast as possible), `--rtf` paces at a
 real-time factor instead (default: the world's <real_time_factor>, else 1), `-v` sets the
@@ -58,6 +60,12 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
     parser.add_argument("--gui-rate", type=float, default=viewer.DEFAULT_RATE, metavar="HZ",
                         help=f"how often the viewer gets the state (1 to {viewer.MAX_RATE:g}, "
                              f"default {viewer.DEFAULT_RATE:g})")
+    view = parser.add_mutually_exclusive_group()
+    view.add_argument("--camera", default="", metavar="NAME",
+                      help="the web viewer's view: this camera of the world (as `launcher "
+                           "sim snapshot --camera`)")
+    view.add_argument("--track", default="", metavar="ENTITY",
+                      help="the web viewer's view follows this entity, once it is there")
     parser.add_argument("--headless-rendering", action="store_true",
                         help="accepted: rendering is always headless (EGL)")
     parser.add_argument("--render-engine", default=None, metavar="ENGINE",
@@ -170,9 +178,9 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         server = SimServer(world, node, rtf, args.run, args.state_rate)
         install_signal_handlers(server)  # (before the viewer's URL: a stop after it is clean)
         log = node.get_logger()
-        server.start_view = lambda port: start_view(args, log, port)
+        server.start_view = lambda port: start_view(args, log, port, world)
         if args.gui:
-            view = start_view(args, log, args.gui_port)
+            view = start_view(args, log, args.gui_port, world)
             if view is not None:
                 server.show(view)
         node.get_logger().info(
@@ -192,11 +200,14 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     return 0
 
 
-def start_view(args: argparse.Namespace, log: Any, port: int | None) -> viewer.WebView | None:
+def start_view(args: argparse.Namespace, log: Any, port: int | None,
+               world: Any) -> viewer.WebView | None:
     """The web viewer, or None (said why) when it cannot start: the sim runs on headless. On
     `port`, or without one on the first free one from 8080 (as more than one sim may run)."""
     try:
-        view = viewer.WebView.start(port, args.gui_host, args.gui_rate, log)
+        view = viewer.WebView.start(port, args.gui_host, args.gui_rate, log, args.camera,
+                                    args.track)
+        view.say_what_is_missing(world, log)
     except viewer.ViewerError as exc:
         log.error(f"{exc}; the sim runs on without it")
         return None

@@ -115,8 +115,21 @@ def framing(world: World, names: list[str] | None = None) -> tuple[Any, float] |
         return None
     points = np.array([data.xpos[e.body] for e in chosen])
     center = points.mean(axis=0)
+    if names is not None and len(chosen) == 1:  # one entity (--track): framed whole
+        return center, max(2.0, 3.0 * _radius(model, data, chosen[0].body))
     spread = float(np.max(np.linalg.norm(points - center, axis=1)))
     return center, max(2.0, 2.5 * spread + 1.5)
+
+
+def _radius(model: Any, data: Any, body: int) -> float:
+    """How far the entity's geometry reaches from its body's origin."""
+    geoms = [g for g in range(model.ngeom)
+             if model.body_rootid[model.geom_bodyid[g]] == model.body_rootid[body]]
+    if not geoms or model.body_rootid[body] == 0:
+        return 0.0
+    reach = [float(np.linalg.norm(data.geom_xpos[g] - data.xpos[body])) + model.geom_rbound[g]
+             for g in geoms]
+    return max(reach)
 
 
 def _is_ground(model: Any, body: int) -> bool:

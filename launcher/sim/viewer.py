@@ -33,8 +33,10 @@ class ViewerError(LaunchError):
 
 
 class WebView:
-    def __init__(self, port: int, host: str, rate: float) -> None:
+    def __init__(self, port: int, host: str, rate: float, camera: str = "",
+                 track: str = "") -> None:
         self.port, self.host = port, host
+        self.camera_name, self.track = camera, track  # the view asked for, if any
         self._period = 1.0 / min(max(rate, 1.0), MAX_RATE)
         self._next = 0.0
         self._handle: Any = None  # Studio's ViewerHandle, the sim's side of the viewer
@@ -53,9 +55,10 @@ class WebView:
 
     @classmethod
     def start(cls, port: int | None, host: str = "127.0.0.1", rate: float = DEFAULT_RATE,
-              log: Any = None) -> WebView:
+              log: Any = None, camera: str = "", track: str = "") -> WebView:
         """Serve the viewer on `port`, or (None) on the first free one from 8080; `log` (the
-        sim's logger) hears of browsers coming and going."""
+        sim's logger) hears of browsers coming and going. The view is the world's `camera`,
+        or follows the entity `track`, or frames every entity."""
         try:
             import mujoco
             from mujoco.studio import launch_thread, viewer_protocol
@@ -67,7 +70,7 @@ class WebView:
             raise ViewerError(f"the web viewer needs MuJoCo Studio (mujoco>=4); this is "
                               f"mujoco {version} ({exc})") from None
         listener, port = _listen(host, port)
-        view = cls(port, host, rate)
+        view = cls(port, host, rate, camera, track)
         view._camera = mujoco.MjvCamera()
         config = viewer_protocol.ViewerConfig(gfx="web", http_port=port, open_browser=False,
                                               title="launcher sim")
@@ -127,22 +130,50 @@ class WebView:
         for action in actions:  # after sync: an action may call follow() again
             self.on_action(action)
 
+    def say_what_is_missing(self, world: Any, log: Any) -> None:
+        """A camera or an entity asked for that the world does not have (yet: a robot spawned
+        later may bring it): the free view until then."""
+        from launcher.errors import did_you_mean
+
+        model = world.model
+        if self.camera_name:
+            names = [model.camera(i).name for i in range(model.ncam)]
+            if self.camera_name not in names:
+                log.warning(f"--camera: no camera '{self.camera_name}' in world "
+                            f"'{world.world_name}'{did_you_mean(self.camera_name, names)}; the "
+                            f"web viewer shows the free view until one comes")
+        if self.track and self.track not in world.entities:
+            log.info(f"--track: no entity '{self.track}' in world '{world.world_name}' yet"
+                     f"{did_you_mean(self.track, list(world.entities))}; the web viewer "
+                     f"follows it once it is spawned")
+
     def _frame(self, world: Any) -> None:
-        """The free view `launcher sim snapshot` takes: from the side and above, framing every
-        entity but the ground (Studio's own default sits at the origin, often in the floor)."""
+        """The view on a new model: the world's camera asked for (`--camera`), or one that
+        follows the entity asked for (`--track`) once it is there, or the free view `launcher
+        sim snapshot` takes: from the side and above, framing every entity but the ground
+        (Studio's own default sits at the origin, often in the floor)."""
         import mujoco
 
         from launcher.sim.snapshot import AZIMUTH, ELEVATION, framing
 
-        camera = self._camera
-        camera.type = mujoco.mjtCamera.mjCAMERA_FREE
-        framed = framing(world)
+        camera, model = self._camera, world.model
+        if self.camera_name:
+            index = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, self.camera_name)
+            if index >= 0:
+                camera.type, camera.fixedcamid = mujoco.mjtCamera.mjCAMERA_FIXED, index
+                return
+        tracked = world.entities.get(self.track) if self.track else None
+        framed = framing(world, [self.track] if tracked is not None else None)
         if framed is not None:
             camera.lookat[:], camera.distance = framed
         else:  # nothing to frame: the world's own extent
-            camera.lookat[:] = world.model.stat.center
-            camera.distance = 1.5 * float(world.model.stat.extent)
+            camera.lookat[:] = model.stat.center
+            camera.distance = 1.5 * float(model.stat.extent)
         camera.azimuth, camera.elevation = AZIMUTH, ELEVATION
+        if tracked is not None:
+            camera.type, camera.trackbodyid = mujoco.mjtCamera.mjCAMERA_TRACKING, tracked.body
+        else:
+            camera.type = mujoco.mjtCamera.mjCAMERA_FREE
 
     def close(self) -> None:
         with contextlib.suppress(Exception):  # the viewer's own failure is no reason to

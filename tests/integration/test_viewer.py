@@ -92,11 +92,25 @@ def test_a_taken_port_is_said_and_the_sim_runs_on_headless(view_ws):
     (["--gui=eighty"], "expected a port number (1-65535), got 'eighty'"),
     (["--gui=70000"], "expected a port number (1-65535), got 70000"),
     (["--gui", "--gui-rate", "500"], "--gui-rate must be between 1 and 60 Hz"),
+    (["--gui", "--camera", "overhead", "--track", "bot"], "not allowed with argument"),
 ])
 def test_bad_viewer_options(view_ws, args, expected):
     done = view_ws.run("sim", *args, "empty.sdf", timeout=30)
     assert done.returncode == 2
     assert expected in done.stderr
+
+
+def test_a_camera_the_world_does_not_have_is_said_and_the_free_view_shown(view_ws):
+    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={free_port()}", "--camera",
+                         "overhed", "empty.sdf")
+    try:
+        wait_for(lambda: "world 'empty'" in said(view_ws))
+        text = said(view_ws)
+        assert "--camera: no camera 'overhed' in world 'empty'" in text
+        assert "the web viewer shows the free view until one comes" in text
+        assert "in a browser" in text and proc.poll() is None
+    finally:
+        stop(proc)
 
 
 def test_a_mujoco_without_studio_is_said_and_the_sim_runs_on_headless(view_ws):
@@ -352,6 +366,54 @@ def test_a_world_with_nothing_to_frame_is_served_too(view_ws):
         time.sleep(0.5)  # a few turns of the viewer on a world with no geometry
         page = urllib.request.urlopen(f"http://127.0.0.1:{port}/model", timeout=10).read()
         assert page and proc.poll() is None
+    finally:
+        stop(proc)
+    assert proc.returncode == 0
+
+
+def centre_of(image, colour) -> tuple[float, float]:
+    """Where the part of the picture near `colour` is (its centre, in pixels)."""
+    data = image.tobytes()
+    wanted = [c / sum(colour) for c in colour]
+    xs, ys = [], []
+    for index in range(0, len(data), 3 * 3):  # every third pixel
+        r, g, b = data[index], data[index + 1], data[index + 2]
+        total = r + g + b
+        if total >= 60 and all(abs(s / total - w) < 0.2
+                               for s, w in zip((r, g, b), wanted, strict=True)):
+            xs.append((index // 3) % image.width)
+            ys.append((index // 3) // image.width)
+    assert xs, "the colour is not in the picture"
+    return sum(xs) / len(xs), sum(ys) / len(ys)
+
+
+def test_in_a_real_browser_track_keeps_the_driving_robot_in_view(view_ws, browser):
+    view_ws.env["GZ_SIM_RESOURCE_PATH"] = str(DIFF_DRIVE.parent)
+    port = free_port()
+    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", "--track", "vehicle_blue",
+                         str(DIFF_DRIVE))
+    try:
+        wait_for(lambda: "the world in a browser" in said(view_ws))
+        browser.get(f"http://127.0.0.1:{port}/")
+        first = wait_for(lambda: (shown := picture(browser)) and share_of(shown, BLUE) > 0.02
+                         and shown, 90)
+        where = view_ws.run("gz", "model", "-m", "vehicle_blue", "-p").stdout
+        sent = view_ws.run("gz", "topic", "-t", "/model/vehicle_blue/cmd_vel", "-m",
+                           "gz.msgs.Twist", "-p", "linear: {x: 2.0}")
+        assert sent.returncode == 0, sent.stderr
+        time.sleep(3)
+        moved = view_ws.run("gz", "model", "-m", "vehicle_blue", "-p").stdout
+        assert moved != where  # it drove (metres, at 2 m/s)
+        x0, y0 = centre_of(first, BLUE)
+        now = picture(browser)
+        x1, y1 = centre_of(now, BLUE)
+        # the view went with it: 6 m of driving, and the robot is where it was on the page
+        # (an untracked view loses it: tens of pixels per metre at this distance)
+        assert share_of(now, BLUE) > 0.02
+        assert abs(x1 - x0) < 40 and abs(y1 - y0) < 40
+    except BaseException:
+        keep_shots(browser, "track")
+        raise
     finally:
         stop(proc)
     assert proc.returncode == 0

@@ -95,7 +95,7 @@ def a_world(xml: str = BOX) -> SimpleNamespace:
 
 @pytest.fixture(autouse=True)
 def no_framing(monkeypatch):
-    monkeypatch.setattr("launcher.sim.snapshot.framing", lambda world: None)
+    monkeypatch.setattr("launcher.sim.snapshot.framing", lambda world, names=None: None)
 
 
 def test_with_no_browser_only_a_new_model_is_sent():
@@ -136,3 +136,29 @@ def test_the_panels_buttons_are_where_a_test_presses_them():
     assert x1 - x0 == viewer_page.BUTTON[0] + viewer_page.GAP
     assert viewer_page.PANEL_AT[0] < x0 - viewer_page.BUTTON[0] / 2
     assert y0 == viewer_page.PANEL_AT[1] + viewer_page.PAD + viewer_page.BUTTON[1] / 2
+
+
+CAMERA = "<mujoco><worldbody><camera name='overhead' pos='0 0 5'/><body name='bot'>" \
+         "<freejoint/><geom size='.1 .1 .1' type='box'/></body></worldbody></mujoco>"
+
+
+@pytest.mark.parametrize("asked, expected", [
+    ({"camera": "overhead"}, ("FIXED", 0)),
+    ({"track": "bot"}, ("TRACKING", 1)),
+    ({"track": "not_yet_spawned"}, ("FREE", None)),
+    ({"camera": "no_such_camera"}, ("FREE", None)),
+    ({}, ("FREE", None)),
+])
+def test_the_view_on_a_new_model_is_the_camera_or_the_tracked_entity_or_the_free_view(
+        asked, expected):
+    view = WebView(8080, "127.0.0.1", 30, **asked)
+    view._camera = camera = mujoco.MjvCamera()
+    world = a_world(CAMERA)
+    world.entities = {"bot": SimpleNamespace(body=1)}
+    view._frame(world)
+    kind, index = expected
+    assert camera.type == getattr(mujoco.mjtCamera, f"mjCAMERA_{kind}")
+    if kind == "FIXED":
+        assert camera.fixedcamid == index
+    if kind == "TRACKING":
+        assert camera.trackbodyid == index
