@@ -6,7 +6,9 @@ loop does what supervision needs (readers, monotonic timers, signals through a w
 about a hundred lines. Signal handlers only hand the signal to the loop, except inside
 `interruptible()`: there the signal raises `Interrupted` at once, so that a long evaluation or
 a `$(command)` being waited for does not hold up Ctrl-C (the loop then does not see that
-signal a second time).
+signal a second time). A handled signal is counted by the handler itself; the wakeup fd only
+wakes the loop (its bytes can be dropped when it is full: a storm of SIGCHLD must not cost a
+SIGTERM), and signals that came together are handled together (SIGCHLD once).
 """
 
 from __future__ import annotations
@@ -45,7 +47,7 @@ class EventLoop:
         self._previous: dict[int, Any] = {}
         self._wakeup: tuple[int, int] | None = None
         self._busy = 0  # depth of interruptible() sections
-        self._raised: Counter[int] = Counter()  # signals already raised as Interrupted
+        self._pending: Counter[int] = Counter()  # signals for the loop's handlers
         self._stopped = False
         self._posted: deque[tuple[Callable[..., Any], tuple]] = deque()  # from other threads
         self._post_pipe: tuple[int, int] | None = None
@@ -137,20 +139,21 @@ class EventLoop:
 
     def _on_signal(self, signum: int, _frame: Any) -> None:
         if self._busy and signum in (signal.SIGINT, signal.SIGTERM):
-            self._raised[signum] += 1
             raise Interrupted(signum)
+        self._pending[signum] += 1
+        if self._wakeup is not None:  # (the interpreter's byte may have been read already)
+            with contextlib.suppress(OSError):
+                os.write(self._wakeup[1], b"\0")
 
     def _on_signals(self) -> None:
-        try:
-            data = os.read(self._wakeup[0], 256)  # type: ignore[index]
-        except BlockingIOError:
-            return
-        for number in data:
-            if self._raised[number]:  # it interrupted a section already
-                self._raised[number] -= 1
-                continue
+        with contextlib.suppress(BlockingIOError):
+            os.read(self._wakeup[0], 4096)  # type: ignore[index]  # (they only wake the loop)
+        pending, self._pending = self._pending, Counter()
+        for number, count in pending.items():
             handler = self._signals.get(number)
-            if handler is not None:
+            if handler is None:
+                continue
+            for _ in range(count if number in (signal.SIGINT, signal.SIGTERM) else 1):
                 handler(number)
 
     # --- running --------------------------------------------------------------------------

@@ -102,3 +102,30 @@ def test_a_signal_inside_a_shielded_section_waits_for_the_loop():
         loop.close()
     assert with_raise
     assert got == ["recorded", signal.SIGINT]
+
+
+def test_a_sigterm_is_not_lost_when_a_storm_of_sigchld_has_filled_the_wakeup_pipe():
+    """A respawn storm sends SIGCHLD faster than a slow handler takes them: the wakeup pipe
+    fills and the interpreter drops bytes. A SIGTERM then must still reach its handler, and
+    the SIGCHLDs that came together are handled once."""
+    loop = EventLoop()
+    got = []
+    loop.add_signal_handler(signal.SIGTERM, got.append)
+    loop.add_signal_handler(signal.SIGCHLD, got.append)
+    try:
+        filled = 0
+        while True:  # the pipe full, as the storm leaves it
+            try:
+                filled += os.write(loop._wakeup[1], bytes([signal.SIGCHLD]) * 4096)
+            except BlockingIOError:
+                break
+        assert filled >= 4096
+        for _ in range(3):
+            os.kill(os.getpid(), signal.SIGCHLD)
+        os.kill(os.getpid(), signal.SIGTERM)  # its byte cannot go in: the pipe is full
+        for _ in range(200):  # (the bytes are read 4096 at a time)
+            loop._run_once() if got.count(signal.SIGTERM) == 0 else None
+        assert got.count(signal.SIGTERM) == 1
+        assert 1 <= got.count(signal.SIGCHLD) <= 3
+    finally:
+        loop.close()
