@@ -88,6 +88,7 @@ class LaunchContext:
         self.load_description = load_description
         self.packages = packages
         self.node_names: dict[str, Any] = {}  # fully qualified node name -> where declared
+        self.declared: set[str] = set()  # the launch arguments an `arg` has declared
 
     # --- scopes -------------------------------------------------------------------------
     @property

@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from launcher.errors import ExecutionError, Interrupted, LaunchError
+from launcher.errors import ExecutionError, Interrupted, LaunchError, did_you_mean
 from launcher.runtime import events
 from launcher.runtime.composition import Loader, LoadRequest
 from launcher.runtime.context import LaunchContext
@@ -64,6 +64,7 @@ class LaunchService:
         self.processes: list[ManagedProcess] = []
         self._queue: deque[Any] = deque()
         self._draining = False
+        self._given = set(configurations or {})  # the command line's name:=value names
         self._handlers: list[events.EventHandler] = []
         self._timers: dict[Timer, bool] = {}  # timer -> cancel on shutdown
         self._label_count = 0
@@ -155,7 +156,19 @@ class LaunchService:
                     self._queue.extendleft(reversed(list(more)))
         finally:
             self._draining = False
+        self._check_given()
         self._check_idle()
+
+    def _check_given(self) -> None:
+        """Once the launch files have been read (the first drain: includes are read as they
+        are met), a command-line argument no `arg` declared is said (ROS 2 takes a misspelt
+        one silently, as a configuration nothing reads)."""
+        given, self._given = self._given, set()
+        for name in sorted(given - self.context.declared):
+            hint = did_you_mean(name, self.context.declared)
+            self.log("WARN", "launch", f"launch argument '{name}' was given, but no launch "
+                                       f"file declares it{hint} (it is set as a configuration "
+                                       f"all the same)")
 
     def report(self, exc: LaunchError) -> None:
         """An error that does not end the launch (one node it cannot start): logged, and the

@@ -128,6 +128,28 @@ def test_required_argument_missing_on_the_command_line(ws):
     assert "process started" not in result.stdout  # checked before anything ran
 
 
+def test_a_misspelt_launch_argument_is_said_with_did_you_mean(ws):
+    """ROS 2 takes `world_nmae:=x` silently; the launch says so, and runs on (the value is a
+    configuration all the same, as in ROS 2). Arguments of included files count as declared."""
+    ws.write("inner.launch.yaml", """
+    launch:
+      - arg: {name: robot_count, default: "1"}
+    """)
+    ws.write("outer.launch.yaml", """
+    launch:
+      - arg: {name: world_name, default: empty.sdf}
+      - include: {file: inner.launch.yaml}
+      - log: {message: "world $(var world_name), $(var robot_count) robots"}
+    """)
+    result = ws.run("launch", "outer.launch.yaml", "world_nmae:=arena.xml", "robot_count:=3")
+    assert result.returncode == 0, result.stderr
+    text = result.stdout + result.stderr
+    assert "launch argument 'world_nmae' was given, but no launch file declares it (did you " \
+           "mean 'world_name'?)" in text
+    assert "robot_count" not in text.split("world empty.sdf")[0]  # declared by the include
+    assert "world empty.sdf, 3 robots" in text
+
+
 def test_malformed_assignment_on_the_command_line(ws):
     ws.write("ok.launch.yaml", "launch: []\n")
     result = ws.run("launch", "ok.launch.yaml", "world_name=arena.xml")

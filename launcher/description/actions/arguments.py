@@ -47,6 +47,7 @@ class DeclareLaunchArgument(Action):
             f"default: '{describe_text(self.default_value)}'"
 
     def execute(self, context: LaunchContext) -> None:
+        context.declared.add(self.name)
         if self.name not in context.configurations:
             if self.default_value is None:
                 raise missing_argument_error([self], context.configurations)
