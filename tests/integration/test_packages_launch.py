@@ -212,8 +212,13 @@ def test_duplicate_node_names_warn(workspace):
      "broken.yaml:2:1: parameters file is not valid YAML"),
     ("log: {message: \"$(command 'xacro $(find robot_description)/urdf/broken.xacro')\"}",
      "xacro failed: unknown macro name: xacro:nosuch"),
+    ("node: {pkg: robot_application, exec: echo_node, name: bad-name}",
+     "bad.launch.yaml:2:5: node name 'bad-name' is not valid in ROS 2: it holds '-'; expected "
+     "letters, digits and '_', not starting with a digit (did you mean 'bad_name'?)"),
+    ("node: {pkg: robot_application, exec: echo_node, namespace: /fleet//r1}",
+     "bad.launch.yaml:2:5: namespace '/fleet//r1' is not valid in ROS 2: an empty part"),
 ], ids=["node-missing-exec", "exec-in-pkg", "package-not-found", "params-missing",
-        "params-invalid", "xacro-fails"])
+        "params-invalid", "xacro-fails", "node-name-invalid", "namespace-invalid"])
 def test_package_errors(workspace, text, expected):
     workspace.write("bad.launch.yaml", f"launch:\n  - {text}\n")
     result = workspace.run("launch", "bad.launch.yaml")

@@ -35,6 +35,7 @@ from launcher.description.actions.node import (
 )
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
+from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError, LaunchError
 from launcher.packages.components import find_component
@@ -93,13 +94,16 @@ class ComposableNode:
                 raise ExecutionError(exc.message, exc.location or self.where) from None
         own = perform_text(context, self.namespace) if self.namespace is not None else ""
         node_name = perform_text(context, self.node_name) if self.node_name is not None else ""
+        space = params.join_namespace(params.namespace(context), own)
+        if self.node_name is not None:
+            check_node_name(node_name, self.where)
+        check_namespace(space, self.where)
         files, inline = gather_parameters(context, self.parameters, self.where)
         mine = [(perform_text(context, r.source), perform_text(context, r.target))
                 for r in self.remappings]
         extra = {perform_text(context, e.name): params.typed(perform_text(context, e.value))
                  for e in self.extra_arguments}
-        return LoadRequest(package, plugin, node_name,
-                           params.join_namespace(params.namespace(context), own),
+        return LoadRequest(package, plugin, node_name, space,
                            [*params.remaps(context), *mine], inline, [str(f) for f in files],
                            extra, self.where)
 

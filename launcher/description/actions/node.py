@@ -20,6 +20,7 @@ from launcher.description import parameters as params
 from launcher.description.actions.executable import ExecuteProcess
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
+from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
 from launcher.packages.executables import find_executable
@@ -100,6 +101,9 @@ class Node(ExecuteProcess):
         found = find_executable(package, perform_text(context, self.executable))
         node = self._node_name(context)
         space = self._namespace(context)
+        if self.node_name is not None:
+            check_node_name(node, self.where)
+        check_namespace(space, self.where)
         argv = [*self.launch_prefix(context), *found.argv,
                 *self._words(context, self.arguments), "--ros-args",
                 *self._words(context, self.ros_arguments)]
