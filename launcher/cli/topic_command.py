@@ -6,6 +6,8 @@ import argparse
 import sys
 import threading
 import time
+from collections import deque
+from itertools import pairwise
 from typing import Any
 
 import yaml
@@ -16,7 +18,7 @@ from launcher.bus.names import expand
 from launcher.bus.node import Node, Rate
 from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
-from launcher.cli import positive_number
+from launcher.cli import positive_count, positive_number
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
@@ -33,7 +35,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     echo.add_argument("--field", help="print only this field (a.b.c)")
     echo.add_argument("--csv", action="store_true", help="one comma-separated line each")
     echo.add_argument("--timeout", type=float, default=None,
-                      help="exit 1 if nothing arrives in this many seconds")
+                      help="stop after this many seconds; exit 1 if nothing arrived")
     echo.set_defaults(run=run_echo)
     pub = verbs.add_parser("pub", help="publish a message")
     pub.add_argument("topic")
@@ -45,9 +47,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     pub.add_argument("-t", "--times", type=int, default=0)
     pub.add_argument("--latched", action="store_true", help="transient local")
     pub.set_defaults(run=run_pub)
-    hz = verbs.add_parser("hz", help="the rate of a topic")
-    hz.add_argument("topic")
-    hz.add_argument("--window", type=positive_number, default=2.0)
+    hz = verbs.add_parser("hz", help="the rate of one or more topics, printed every second")
+    hz.add_argument("topics", nargs="+", metavar="topic")
+    hz.add_argument("-w", "--window", type=positive_count, default=10000, metavar="N",
+                    help="how many of the latest messages the rate is taken over (messages, "
+                         "as ROS 2 counts it; default 10000)")
+    hz.add_argument("--wall-time", action="store_true",
+                    help="accepted: the rate is always taken on the wall clock")
     hz.set_defaults(run=run_hz)
     info = verbs.add_parser("info", help="type and endpoints of a topic")
     info.add_argument("topic")
@@ -117,8 +123,10 @@ def run_echo(args: argparse.Namespace) -> int:
     node = Node("_launcher_topic_echo", argv=[], parameter_services=False, session=session,
                 space=_space(args))
     done = threading.Event()
+    received = threading.Event()
 
     def show(message: Any) -> None:
+        received.set()
         data = _pick(to_data(message), args.field)
         if args.csv:
             print(_csv(data), flush=True)
@@ -133,7 +141,7 @@ def run_echo(args: argparse.Namespace) -> int:
     node.create_subscription(type_name, topic, show, QoS(depth=10, transient_local=True))
     node.spin(args.timeout)
     node.destroy_node()
-    if args.timeout is not None and not done.is_set() and args.once:
+    if args.timeout is not None and not received.is_set():  # (with or without --once)
         print(f"no message on {topic} within {args.timeout:g} s", file=sys.stderr)
         return 1
     return 0
@@ -168,20 +176,41 @@ def run_pub(args: argparse.Namespace) -> int:
 
 
 def run_hz(args: argparse.Namespace) -> int:
+    """As `ros2 topic hz`: every second, each topic's rate over its last `--window` messages,
+    with the shortest and longest gap and their spread."""
     session = open_session("client")
-    topic = _topic(args.topic)
     node = Node("_launcher_topic_hz", argv=[], parameter_services=False, session=session,
                 space=_space(args))
-    stamps: list[float] = []
-    node.create_subscription(_type_of(session, topic, None, _space(args)), topic,
-                                            lambda _m: stamps.append(time.monotonic()))
+    topics = [_topic(t) for t in args.topics]
+    stamps: dict[str, deque[float]] = {t: deque(maxlen=args.window + 1) for t in topics}
+    for topic in topics:
+        node.create_subscription(_type_of(session, topic, None, _space(args)), topic,
+                                 lambda _m, kept=stamps[topic]: kept.append(time.monotonic()),
+                                 raw=True)
+    printed = dict.fromkeys(topics, 0.0)
     while not node.interrupted:
-        node.spin(args.window)
-        window = [t for t in stamps if t > time.monotonic() - args.window]
-        rate = (len(window) - 1) / (window[-1] - window[0]) if len(window) > 1 else 0.0
-        print(f"average rate: {rate:.3f}  (window: {len(window)} messages)", flush=True)
+        node.spin(1.0)
+        for topic in topics:
+            kept = stamps[topic]
+            if len(topics) > 1:
+                print(f"{topic}:")
+            if len(kept) < 2 or kept[-1] == printed[topic]:
+                print("no new messages", flush=True)
+                continue
+            printed[topic] = kept[-1]
+            print(rate_lines(list(kept)), flush=True)
     node.destroy_node()
     return 0
+
+
+def rate_lines(stamps: list[float]) -> str:
+    """`ros2 topic hz`'s two lines for the arrival times `stamps` (seconds)."""
+    gaps = [b - a for a, b in pairwise(stamps)]
+    mean = sum(gaps) / len(gaps)
+    spread = (sum((g - mean) ** 2 for g in gaps) / len(gaps)) ** 0.5
+    rate = 1.0 / mean if mean > 0 else 0.0
+    return (f"average rate: {rate:.3f}\n\tmin: {min(gaps):.3f}s max: {max(gaps):.3f}s "
+            f"std dev: {spread:.5f}s window: {len(stamps)}")
 
 
 def run_info(args: argparse.Namespace) -> int:

@@ -211,7 +211,10 @@ s.close()
      "the message is not valid YAML", 2),
     (["topic", "echo", "/bad-name", "std_msgs/msg/String", "--once"],
      "invalid topic name '/bad-name': the part 'bad-name' holds a character other than", 1),
-], ids=["unknown-type", "yaml-does-not-fit", "yaml-invalid", "invalid-topic"])
+    (["topic", "echo", "/quiet", "std_msgs/msg/String", "--timeout", "1"],
+     "no message on /quiet within 1 s", 1),  # (without --once too)
+], ids=["unknown-type", "yaml-does-not-fit", "yaml-invalid", "invalid-topic",
+        "echo-timeout-nothing"])
 def test_cli_bad_input(bus, args, expected, code):
     proc, out = launch(bus, "idle.launch.yaml", IDLE.format(py=PY, seconds=30))
     wait_for_router(bus)
@@ -375,13 +378,14 @@ def test_a_node_alone_starts_the_graph_which_stops_after_it(bus):
         assert "talking" in node.stdout.readline()
         echo = bus.run("topic", "echo", "/cmd_vel", "--field", "linear.x", "--once")
         assert echo.stdout.startswith("9.0"), echo.stderr
-        hz = subprocess.Popen(launcher_argv() + ["topic", "hz", "/cmd_vel", "--window", "1"],
+        hz = subprocess.Popen(launcher_argv() + ["topic", "hz", "/cmd_vel", "-w", "5"],
                               cwd=bus.root, env=bus.env, stdout=subprocess.PIPE, text=True)
-        line = hz.stdout.readline()
+        line, figures = hz.stdout.readline(), hz.stdout.readline()
         hz.send_signal(signal.SIGINT)
         hz.wait(10)
         rate = float(line.split()[2])
         assert 5 < rate < 40  # published at 20 Hz
+        assert figures.startswith("\tmin: ") and figures.rstrip().endswith("window: 6")
         csv = bus.run("topic", "echo", "/cmd_vel", "--csv", "--once")
         assert csv.stdout.strip() == "9.0,0.0,0.0,0.0,0.0,0.0"
     finally:
