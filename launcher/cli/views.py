@@ -11,9 +11,10 @@ from collections.abc import Iterator
 from typing import Any
 
 from launcher import records
-from launcher.description.action import Action, LaunchDescription
+from launcher.description.action import Action, LaunchDescription, PopLocals, PushLocals
 from launcher.description.actions.arguments import DeclareLaunchArgument
 from launcher.description.actions.include import IncludeLaunchDescription
+from launcher.description.actions.loops import ForEach, ForLoop
 from launcher.description.fields import declared_fields, frontend_name
 from launcher.description.substitution import Substitution, describe_text, perform_text
 from launcher.errors import LaunchError
@@ -27,11 +28,24 @@ def _context(configurations: dict[str, str], index: Any) -> LaunchContext:
     return context
 
 
-def _walk(actions: list[Action], context: LaunchContext, depth: int
+def _walk(actions: list[Action], context: LaunchContext, depth: int, loops: bool = False
           ) -> Iterator[tuple[int, Action, LaunchDescription | str | None]]:
-    """Yield (depth, action, included description or why it is unresolved)."""
+    """Yield (depth, action, included description or why it is unresolved). With `loops`, a
+    `for`/`for_each` body is walked as its first pass (its `$(index)` and `$(for-var)` set),
+    so that what it includes can be read."""
     for item in actions:
-        if isinstance(item, DeclareLaunchArgument):
+        if isinstance(item, PushLocals | PopLocals):  # a loop's pass begins or ends
+            item.execute(context)
+        elif loops and isinstance(item, ForLoop | ForEach):
+            yield depth, item, None
+            try:
+                passes = list(item.execute(context))
+            except LaunchError:
+                passes = []
+            ends = [i for i, a in enumerate(passes) if isinstance(a, PopLocals)]
+            first = passes[:ends[0] + 1] if ends else list(item.sub_actions())
+            yield from _walk(first, context, depth + 1, loops)
+        elif isinstance(item, DeclareLaunchArgument):
             if item.name not in context.configurations and item.default_value is not None:
                 with contextlib.suppress(LaunchError):
                     context.configurations[item.name] = perform_text(context,
@@ -48,11 +62,11 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int
                 continue
             yield depth, item, included
             context.push_file(included.file)
-            yield from _walk(included.actions, context, depth + 1)
+            yield from _walk(included.actions, context, depth + 1, loops)
             context.pop_file()
         else:
             yield depth, item, None
-            yield from _walk(list(item.sub_actions()), context, depth + 1)
+            yield from _walk(list(item.sub_actions()), context, depth + 1, loops)
 
 
 def show_arguments(description: LaunchDescription, configurations: dict[str, str],
@@ -63,9 +77,11 @@ def show_arguments(description: LaunchDescription, configurations: dict[str, str
     current = [str(description.file)]
     notes: list[str] = []
     depth_files: dict[int, str] = {0: str(description.file)}
-    for depth, item, extra in _walk(description.actions, context, 0):
+    for depth, item, extra in _walk(description.actions, context, 0, loops=True):
         if isinstance(item, DeclareLaunchArgument):
-            sections.setdefault(depth_files.get(depth, current[-1]), []).append(item)
+            section = sections.setdefault(depth_files.get(depth, current[-1]), [])
+            if all(arg.name != item.name for arg in section):
+                section.append(item)
         elif isinstance(item, IncludeLaunchDescription):
             if isinstance(extra, LaunchDescription):
                 depth_files[depth + 1] = str(extra.file)

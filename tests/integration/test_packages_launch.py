@@ -186,6 +186,35 @@ def test_show_args_through_package_includes(workspace):
     assert result.returncode == 0 and "'a':" in result.stdout
 
 
+def test_show_args_through_includes_inside_loops(workspace):
+    """An include in a `for` or `for_each` body that names its file with the loop's index:
+    its arguments are listed (read as the loop's first pass), once."""
+    workspace.write("robot_0.launch.yaml", """
+    launch:
+      - arg: {name: colour, default: red, description: the robot's colour}
+    """)
+    workspace.write("fleet.launch.yaml", """
+    launch:
+      - arg: {name: count, default: "2"}
+      - for:
+          len: $(var count)
+          name: i
+          children:
+            - include: {file: "robot_$(index i).launch.yaml"}
+      - for_each:
+          values: "{n: 0};{n: 1}"
+          children:
+            - include: {file: "robot_$(for-var n).launch.yaml"}
+    """)
+    result = workspace.run("launch", "fleet.launch.yaml", "--show-args")
+    assert result.returncode == 0, result.stderr
+    assert "from included" in result.stdout and "robot_0.launch.yaml" in result.stdout
+    assert result.stdout.count("'colour':") == 1
+    assert "the robot's colour" in result.stdout
+    assert "could not be listed" not in result.stdout
+    assert "encloses this $(index)" not in result.stdout
+
+
 def test_duplicate_node_names_warn(workspace):
     workspace.write("dup.launch.yaml", """
     launch:
