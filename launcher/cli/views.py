@@ -113,6 +113,9 @@ def print_tree(description: LaunchDescription, configurations: dict[str, str],
     lines = [f"LaunchDescription {description.file}"]
     for depth, item, extra in _walk(description.actions, context, 0):
         text = "  " * (depth + 1) + _describe(item)
+        if isinstance(item, DeclareLaunchArgument) and item.name in context.configurations:
+            source = "the command line" if item.name in configurations else "its default"
+            text += f"  -> {context.configurations[item.name]!r} ({source})"
         if isinstance(extra, LaunchDescription):
             text += f"  -> {extra.file}"
         elif isinstance(extra, str):

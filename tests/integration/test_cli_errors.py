@@ -216,5 +216,8 @@ def test_print_shows_the_tree(ws):
     """)
     result = ws.run("launch", "p.launch.yaml", "--print")
     assert result.returncode == 0
-    assert "arg name='world' default='robot.xml'" in result.stdout
+    assert "arg name='world' default='robot.xml'  -> 'robot.xml' (its default)" in result.stdout
     assert "    executable cmd='sim $(var world)' output='screen' if=true" in result.stdout
+    overridden = ws.run("launch", "p.launch.yaml", "--print", "world:=arena.sdf")
+    assert "arg name='world' default='robot.xml'  -> 'arena.sdf' (the command line)" in \
+        overridden.stdout
