@@ -23,11 +23,21 @@ from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("topic", help="topics: list, echo, pub, hz, info")
+    p = commands.add_parser("topic", help="topics: list, echo, pub, hz, info, type, find")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="the topics on the bus")
     listing.add_argument("-t", "--show-types", action="store_true")
+    listing.add_argument("-v", "--verbose", action="store_true",
+                         help="published and subscribed topics, with their types and counts")
+    listing.add_argument("-c", "--count-topics", action="store_true",
+                         help="how many topics there are")
     listing.set_defaults(run=run_list)
+    kind = verbs.add_parser("type", help="the type of a topic")
+    kind.add_argument("topic")
+    kind.set_defaults(run=run_type)
+    find = verbs.add_parser("find", help="the topics of a type")
+    find.add_argument("type", help="a message type (std_msgs/msg/String)")
+    find.set_defaults(run=run_find)
     echo = verbs.add_parser("echo", help="print the messages on a topic")
     echo.add_argument("topic")
     echo.add_argument("type", nargs="?", help="the message type (default: as published)")
@@ -60,7 +70,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     info.add_argument("-v", "--verbose", action="store_true",
                       help="each publisher and subscription: node, type, QoS")
     info.set_defaults(run=run_info)
-    for verb in (listing, echo, pub, hz, info):
+    for verb in (listing, echo, pub, hz, info, kind, find):
         verb.add_argument("--sim", action="store_true",
                           help="the simulator's own topics (Gazebo's gz-transport side), not "
                                "the ROS graph's")
@@ -93,9 +103,46 @@ def _type_of(session: Any, topic: str, given: str | None,
 
 def run_list(args: argparse.Namespace) -> int:
     session = open_session("client")
-    for name, info in sorted(graph.topics(session, _space(args)).items()):
-        print(f"{name} [{', '.join(sorted(info.types))}]" if args.show_types else name)
+    topics = sorted(graph.topics(session, _space(args)).items())
     session.close()
+    if args.count_topics:
+        print(len(topics))
+        return 0
+    if args.verbose:  # as `ros2 topic list -v`
+        for title, side, noun in (("Published topics:", "publishers", "publisher"),
+                                  ("Subscribed topics:", "subscribers", "subscriber")):
+            print(title)
+            for name, info in topics:
+                count = len(getattr(info, side))
+                if count:
+                    print(f" * {name} [{', '.join(sorted(info.types))}] {count} "
+                          f"{noun}{'' if count == 1 else 's'}")
+            print()
+        return 0
+    for name, info in topics:
+        print(f"{name} [{', '.join(sorted(info.types))}]" if args.show_types else name)
+    return 0
+
+
+def run_type(args: argparse.Namespace) -> int:
+    session = open_session("client")
+    topic = _topic(args.topic)
+    topics = graph.topics(session, _space(args))
+    session.close()
+    if topic not in topics:
+        raise LaunchError(f"unknown topic '{topic}'{did_you_mean(topic, list(topics))}")
+    for name in sorted(topics[topic].types):
+        print(name)
+    return 0
+
+
+def run_find(args: argparse.Namespace) -> int:
+    session = open_session("client")
+    topics = graph.topics(session, _space(args))
+    session.close()
+    for name, info in sorted(topics.items()):
+        if args.type in info.types:
+            print(name)
     return 0
 
 

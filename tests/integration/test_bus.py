@@ -104,6 +104,17 @@ def test_topic_cli_against_a_live_node_and_latched_delivery(bus):
     assert "data: <robot name='r'/>" in latched.stdout  # a late subscriber gets it
     info = bus.run("topic", "info", "/cmd_vel")
     assert "Publisher count: 1" in info.stdout
+    verbose = bus.run("topic", "list", "-v").stdout
+    published = verbose.split("Subscribed topics:")[0]
+    assert published.startswith("Published topics:\n")
+    assert " * /cmd_vel [geometry_msgs/msg/Twist] 1 publisher\n" in published
+    count = bus.run("topic", "list", "-c").stdout
+    assert int(count) == len(bus.run("topic", "list").stdout.split())
+    assert bus.run("topic", "type", "/cmd_vel").stdout == "geometry_msgs/msg/Twist\n"
+    unknown = bus.run("topic", "type", "/cmd_vle")
+    assert unknown.returncode == 1 and "did you mean '/cmd_vel'" in unknown.stderr
+    found = bus.run("topic", "find", "geometry_msgs/msg/Twist").stdout.split()
+    assert found == ["/cmd_vel"]
     assert stop(proc) == 130
     assert "process stopped" in out.read_text()
 
