@@ -1,8 +1,10 @@
-"""`launcher service list | call`, and `launcher node list | info`, as `ros2` has them."""
+"""`launcher service list | call | type | find | info`, and `launcher node list | info`, as
+`ros2` has them."""
 
 from __future__ import annotations
 
 import argparse
+import time
 
 import yaml
 
@@ -11,11 +13,12 @@ from launcher.bus.messages import build, to_data
 from launcher.bus.node import Node
 from launcher.bus.session import open_session
 from launcher.bus.types import registry
-from launcher.errors import LaunchError, UsageError
+from launcher.cli import positive_number
+from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("service", help="services: list, call")
+    p = commands.add_parser("service", help="services: list, call, type, find, info")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="the services on the bus")
     listing.add_argument("-t", "--show-types", action="store_true")
@@ -24,9 +27,21 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     call.add_argument("name")
     call.add_argument("type")
     call.add_argument("values", nargs="?", default="{}", help="the request as YAML")
-    call.add_argument("--timeout", type=float, default=5.0)
+    call.add_argument("--timeout", type=float, default=5.0,
+                      help="seconds to wait for the answer")
+    call.add_argument("-r", "--rate", type=positive_number, default=None, metavar="HZ",
+                      help="call again and again at this rate (calls per second) until Ctrl-C")
     call.set_defaults(run=run_call)
-    for verb in (listing, call):
+    kind = verbs.add_parser("type", help="the type of a service")
+    kind.add_argument("name")
+    kind.set_defaults(run=run_type)
+    find = verbs.add_parser("find", help="the services of a type")
+    find.add_argument("type", help="a service type (std_srvs/srv/Trigger)")
+    find.set_defaults(run=run_find)
+    info = verbs.add_parser("info", help="a service's type, and how many serve and call it")
+    info.add_argument("name")
+    info.set_defaults(run=run_info)
+    for verb in (listing, call, kind, find, info):
         verb.add_argument("--sim", action="store_true",
                           help="the simulator's own services (Gazebo's gz-transport side), not "
                                "the ROS graph's")
@@ -46,6 +61,45 @@ def run_list(args: argparse.Namespace) -> int:
     return 0
 
 
+def _services(args: argparse.Namespace) -> list[keys.Entity]:
+    session = open_session("client")
+    found = [e for e in graph.entities(session, space=_space(args))
+             if e.kind in (keys.SERVICE, keys.CLIENT)]
+    session.close()
+    return found
+
+
+def _named(args: argparse.Namespace) -> list[keys.Entity]:
+    found = _services(args)
+    mine = [e for e in found if e.topic == args.name]
+    if not any(e.kind == keys.SERVICE for e in mine):
+        known = sorted({e.topic for e in found if e.kind == keys.SERVICE})
+        raise LaunchError(f"unknown service '{args.name}'{did_you_mean(args.name, known)}")
+    return mine
+
+
+def run_type(args: argparse.Namespace) -> int:
+    for name in sorted({e.type_name for e in _named(args) if e.kind == keys.SERVICE}):
+        print(name)
+    return 0
+
+
+def run_find(args: argparse.Namespace) -> int:
+    for name in sorted({e.topic for e in _services(args)
+                        if e.kind == keys.SERVICE and e.type_name == args.type}):
+        print(name)
+    return 0
+
+
+def run_info(args: argparse.Namespace) -> int:
+    mine = _named(args)
+    types = sorted({e.type_name for e in mine if e.kind == keys.SERVICE})
+    print(f"Type: {', '.join(types)}")
+    print(f"Clients count: {sum(e.kind == keys.CLIENT for e in mine)}")
+    print(f"Services count: {sum(e.kind == keys.SERVICE for e in mine)}")
+    return 0
+
+
 def run_call(args: argparse.Namespace) -> int:
     try:
         values = yaml.safe_load(args.values)
@@ -57,18 +111,30 @@ def run_call(args: argparse.Namespace) -> int:
                 space=_space(args))
     try:
         client = node.create_client(args.type, args.name)
-        print(f"requester: making request: {to_data(request)}\n")
-        response = client.call(request, args.timeout)
+        while True:
+            start = time.monotonic()
+            print(f"requester: making request: {to_data(request)}\n")
+            response = client.call(request, args.timeout)
+            print("response:\n" + yaml.safe_dump(to_data(response), sort_keys=False),
+                  end="", flush=True)
+            if args.rate is None or node.interrupted:
+                break
+            node.spin(max(0.0, 1.0 / args.rate - (time.monotonic() - start)))
+            if node.interrupted:
+                break
+            print()
     finally:
         node.destroy_node()
-    print("response:\n" + yaml.safe_dump(to_data(response), sort_keys=False), end="")
     return 0
 
 
 def add_node_parser(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser("node", help="nodes: list, info")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
-    verbs.add_parser("list", help="the nodes on the bus").set_defaults(run=run_nodes)
+    listing = verbs.add_parser("list", help="the nodes on the bus")
+    listing.add_argument("-a", "--all", action="store_true",
+                         help="hidden nodes too (names that begin with '_')")
+    listing.set_defaults(run=run_nodes)
     info = verbs.add_parser("info", help="a node's publishers, subscriptions, services")
     info.add_argument("name")
     info.set_defaults(run=run_node_info)
@@ -77,7 +143,7 @@ def add_node_parser(commands: argparse._SubParsersAction) -> None:
 def run_nodes(args: argparse.Namespace) -> int:
     session = open_session("client")
     for name in sorted({e.node_fqn for e in graph.nodes(session)
-                        if not e.node.startswith("_launcher_")}):
+                        if getattr(args, "all", False) or not e.node.startswith("_")}):
         print(name)
     session.close()
     return 0

@@ -10,7 +10,7 @@ import time
 import pytest
 
 from launcher.bus.discovery import answers
-from tests.conftest import Workspace
+from tests.conftest import Workspace, launcher_argv
 
 PY = sys.executable
 TALKER = """
@@ -322,6 +322,25 @@ def test_services_round_trip_and_the_cli(bus):
     assert silent.returncode == 1 and "did not answer within 0.5 s" in silent.stderr
     unknown = bus.run("service", "call", "/x", "std_srvs/srv/Trigr")
     assert unknown.returncode == 1 and "did you mean 'std_srvs/srv/Trigger" in unknown.stderr
+    assert bus.run("service", "type", "/switch/enable").stdout == "std_srvs/srv/SetBool\n"
+    assert bus.run("service", "find", "std_srvs/srv/SetBool").stdout.split() == \
+        ["/switch/enable"]
+    info = bus.run("service", "info", "/switch/enable").stdout
+    assert info.startswith("Type: std_srvs/srv/SetBool\nClients count: ") and \
+        info.endswith("Services count: 1\n")
+    misspelt = bus.run("service", "type", "/switch/enabel")
+    assert misspelt.returncode == 1 and "did you mean '/switch/enable'" in misspelt.stderr
+    repeated = subprocess.Popen(launcher_argv() + ["service", "call", "/switch/enable",
+                                "std_srvs/srv/SetBool", "{data: false}", "-r", "5"],
+                                cwd=bus.root, env=bus.env, stdout=subprocess.PIPE, text=True)
+    answers = 0
+    while answers < 3:  # one call after another, at 5 Hz, until Ctrl-C
+        answers += "response:" in repeated.stdout.readline()
+    hidden = bus.run("node", "list", "-a").stdout.split()  # (its node begins with '_')
+    assert "/switch" in hidden and "/_launcher_service_call" in hidden
+    assert bus.run("node", "list").stdout.split() == ["/switch"]
+    repeated.send_signal(signal.SIGINT)
+    assert repeated.wait(10) in (0, 130)
     assert stop(proc) == 130
 
 
@@ -382,7 +401,6 @@ node.destroy_node()
 
 def test_a_node_alone_starts_the_graph_which_stops_after_it(bus):
 
-    from tests.conftest import launcher_argv
     node = subprocess.Popen([PY, "talker.py", "9.0"], cwd=bus.root, env=bus.env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     try:
