@@ -110,3 +110,25 @@ def to_data(message: Any) -> Any:
     if fields is None:
         return message
     return {name: to_data(getattr(message, name)) for name in fields if name != "__msgtype__"}
+
+
+_ARRAY_CODES = {"float64": "d", "float32": "f", "int8": "b", "uint8": "B", "int16": "h",
+                "uint16": "H", "int32": "i", "uint32": "I", "int64": "q", "uint64": "Q"}
+
+
+def ros_repr(message: Any) -> str:
+    """A message as rclpy prints it: `geometry_msgs.msg.Twist(linear=geometry_msgs.msg.Vector3(
+    x=0.5, y=0.0, z=0.0), …)`, `std_msgs.msg.Empty()`, numbers' sequences as `array('d', […])`."""
+    if hasattr(message, "dtype") and hasattr(message, "tolist"):  # a numpy sequence
+        code = _ARRAY_CODES.get(str(message.dtype))
+        values = message.tolist()
+        return f"array('{code}', {values!r})" if code else repr(values)
+    if isinstance(message, list | tuple):
+        return "[" + ", ".join(ros_repr(m) for m in message) + "]"
+    fields = getattr(message, "__dataclass_fields__", None)
+    type_name = getattr(message, "__msgtype__", None)
+    if fields is None or type_name is None:
+        return repr(message)
+    shown = [f"{name}={ros_repr(getattr(message, name))}" for name in fields
+             if name not in ("__msgtype__", "structure_needs_at_least_one_member")]
+    return f"{type_name.replace('/', '.')}({', '.join(shown)})"

@@ -13,7 +13,7 @@ from typing import Any
 import yaml
 
 from launcher.bus import graph, keys
-from launcher.bus.messages import build, to_data
+from launcher.bus.messages import build, ros_repr, to_data
 from launcher.bus.names import expand
 from launcher.bus.node import Node, Rate
 from launcher.bus.qos import QoS
@@ -56,6 +56,16 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     pub.add_argument("-1", "--once", action="store_true")
     pub.add_argument("-t", "--times", type=int, default=0)
     pub.add_argument("--latched", action="store_true", help="transient local")
+    pub.add_argument("-w", "--wait-matching-subscriptions", type=int, default=None,
+                     metavar="N", help="publish once N subscriptions have matched (default: "
+                                       "1 with --once or --times, else 0)")
+    pub.add_argument("--max-wait-time-secs", type=positive_number, default=None,
+                     metavar="SECONDS", help="give up waiting for them after this long "
+                                             "(exit 1); default: wait on")
+    pub.add_argument("-p", "--print", type=int, default=1, metavar="N",
+                     help="print every Nth message published (0: none)")
+    pub.add_argument("--keep-alive", type=float, default=0.1, metavar="SECONDS",
+                     help="keep the publisher this long after the last message")
     pub.set_defaults(run=run_pub)
     hz = verbs.add_parser("hz", help="the rate of one or more topics, printed every second")
     hz.add_argument("topics", nargs="+", metavar="topic")
@@ -195,6 +205,7 @@ def run_echo(args: argparse.Namespace) -> int:
 
 
 def run_pub(args: argparse.Namespace) -> int:
+    """As `ros2 topic pub`, its messages printed as rclpy prints them."""
     try:
         values = yaml.safe_load(args.values)
     except yaml.YAMLError as exc:
@@ -202,24 +213,55 @@ def run_pub(args: argparse.Namespace) -> int:
     message = build(args.type, values)
     node = Node("_launcher_topic_pub", argv=[], parameter_services=False, space=_space(args))
     qos = QoS(depth=1, transient_local=True) if args.latched else QoS()
-    publisher = node.create_publisher(args.type, _topic(args.topic), qos)
-    time.sleep(0.2)  # let subscribers find the publisher
+    topic = _topic(args.topic)
+    publisher = node.create_publisher(args.type, topic, qos)
     count = 1 if args.once else args.times
-    rate = Rate(args.rate)
-    sent = 0
+    wanted = args.wait_matching_subscriptions
+    if wanted is None:
+        wanted = 1 if count > 0 else 0
     try:
+        if not _wait_for_subscriptions(node, publisher, wanted, args.max_wait_time_secs):
+            node.destroy_node()
+            raise LaunchError(f"timed out waiting for {wanted} subscription(s) on {topic}: "
+                              f"{publisher.get_subscription_count()} matched within "
+                              f"{args.max_wait_time_secs:g} s")
+        print("publisher: beginning loop", flush=True)
+        rate = Rate(args.rate)
+        sent = 0
         while count <= 0 or sent < count:
             publisher.publish(message)
             sent += 1
-            print(f"publishing #{sent}: {to_data(message)}", flush=True)
+            if args.print > 0 and sent % args.print == 0:
+                print(f"publishing #{sent}: {ros_repr(message)}\n", flush=True)
             if count <= 0 or sent < count:
                 rate.sleep()
         if args.latched:
             node.spin()
+        elif args.keep_alive > 0:
+            node.spin(args.keep_alive)
     except KeyboardInterrupt:
         pass
     node.destroy_node()
     return 0
+
+
+def _wait_for_subscriptions(node: Node, publisher: Any, wanted: int,
+                            limit: float | None) -> bool:
+    """Until `wanted` subscriptions have matched (False: `limit` seconds went by first).
+    With none wanted, a moment for the graph to see the publisher."""
+    if wanted <= 0:
+        time.sleep(0.2)
+        return True
+    deadline = None if limit is None else time.monotonic() + limit
+    if publisher.get_subscription_count() < wanted:
+        print(f"Waiting for at least {wanted} matching subscription(s)...", flush=True)
+    while publisher.get_subscription_count() < wanted:
+        if deadline is not None and time.monotonic() > deadline:
+            return False
+        node.spin(0.05)
+        if node.interrupted:
+            raise KeyboardInterrupt
+    return True
 
 
 def run_hz(args: argparse.Namespace) -> int:

@@ -180,6 +180,17 @@ def test_names_params_and_topic_pub_into_a_node(bus):
     published = bus.run("topic", "pub", "/fleet/cmd", "geometry_msgs/msg/Twist",
                         "{linear: {x: 1.25}}", "--times", "3", "--rate", "10")
     assert published.returncode == 0, published.stderr
+    assert "publisher: beginning loop\npublishing #1: geometry_msgs.msg.Twist(linear=" \
+           "geometry_msgs.msg.Vector3(x=1.25, y=0.0, z=0.0), angular=" in published.stdout
+    every_other = bus.run("topic", "pub", "/fleet/cmd", "std_msgs/msg/Empty", "-t", "4",
+                          "-r", "20", "-p", "2", "-w", "0")
+    assert every_other.stdout.count("publishing #") == 2 and "#2: std_msgs.msg.Empty()\n" \
+        in every_other.stdout
+    nobody = bus.run("topic", "pub", "/nobody", "std_msgs/msg/Empty", "--once",
+                     "--max-wait-time-secs", "0.5")
+    assert nobody.returncode == 1
+    assert "Waiting for at least 1 matching subscription(s)..." in nobody.stdout
+    assert "timed out waiting for 1 subscription(s) on /nobody" in nobody.stderr
     wait_text(out, "heard 2.5")
     assert stop(proc) == 130
 

@@ -1,4 +1,4 @@
-"""`launcher topic hz`'s figures, as `ros2 topic hz` prints them (launcher/cli/topic_command.py)."""
+"""The ros2 CLI habits of `launcher topic`: hz's figures, and messages printed as rclpy prints them."""
 
 import argparse
 
@@ -20,3 +20,14 @@ def test_the_rate_over_the_kept_messages_with_the_shortest_and_longest_gap():
 def test_a_window_is_a_whole_number_of_messages(text):
     with pytest.raises(argparse.ArgumentTypeError):
         positive_count(text)
+
+
+def test_messages_print_as_rclpy_prints_them():
+    from launcher.bus.messages import build, ros_repr
+
+    assert ros_repr(build("std_msgs/msg/String", {"data": "hi"})) == \
+        "std_msgs.msg.String(data='hi')"
+    assert ros_repr(build("std_msgs/msg/Empty", {})) == "std_msgs.msg.Empty()"
+    assert ros_repr(build("std_msgs/msg/Float64MultiArray", {"data": [1.0, 2.0]})) == \
+        ("std_msgs.msg.Float64MultiArray(layout=std_msgs.msg.MultiArrayLayout(dim=[], "
+         "data_offset=0), data=array('d', [1.0, 2.0]))")
