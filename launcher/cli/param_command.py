@@ -1,17 +1,21 @@
-"""`launcher param list | get | set NODE …`, through the node's parameter services."""
+"""`launcher param list | get | set | dump | load NODE …`, through the node's parameter
+services, as `ros2 param` has them."""
 
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 from launcher.bus import parameters as params
 from launcher.bus.messages import build
 from launcher.bus.node import Node
 from launcher.bus.ros_args import typed
+from launcher.errors import LaunchError
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("param", help="parameters of a running node: list, get, set")
+    p = commands.add_parser("param",
+                            help="parameters of a running node: list, get, set, dump, load")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="a node's parameter names")
     listing.add_argument("node")
@@ -25,8 +29,16 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     put.add_argument("name")
     put.add_argument("value")
     put.set_defaults(run=run_set)
-    for sub in (listing, get, put):
-        sub.add_argument("--timeout", type=float, default=5.0)
+    dump = verbs.add_parser("dump", help="all of a node's parameters, as a params file")
+    dump.add_argument("node")
+    dump.set_defaults(run=run_dump)
+    load = verbs.add_parser("load", help="set a node's parameters from a params file")
+    load.add_argument("node")
+    load.add_argument("file", help="a params YAML file (its /NODE or /** section)")
+    load.set_defaults(run=run_load)
+    for sub in (listing, get, put, dump, load):
+        sub.add_argument("--timeout", type=float, default=5.0, help="seconds to wait for "
+                                                                     "the node's answer")
 
 
 def _call(args: argparse.Namespace, service: str, suffix: str, request: dict) -> object:
@@ -53,12 +65,73 @@ def run_get(args: argparse.Namespace) -> int:
     return 0
 
 
+def _parameter(name: str, value: Any) -> dict:
+    message = params.to_message(value)
+    return {"name": name, "value": {f: getattr(message, f) for f in message.__dataclass_fields__
+                                    if f != "__msgtype__"}}
+
+
 def run_set(args: argparse.Namespace) -> int:
-    value = params.to_message(typed(args.value))
-    parameter = {"name": args.name, "value": {f: getattr(value, f)
-                                              for f in value.__dataclass_fields__
-                                              if f != "__msgtype__"}}
-    response = _call(args, params.SET, "set_parameters", {"parameters": [parameter]})
+    response = _call(args, params.SET, "set_parameters",
+                     {"parameters": [_parameter(args.name, typed(args.value))]})
     print("Set parameter successful" if response.results[0].successful else
           f"Setting parameter failed: {response.results[0].reason}")
     return 0
+
+
+def run_dump(args: argparse.Namespace) -> int:
+    """As `ros2 param dump NODE`: `/NODE: {ros__parameters: {…}}` on stdout, dotted names
+    nested."""
+    import yaml
+
+    names = list(_call(args, params.LIST, "list_parameters", {}).result.names)
+    values = _call(args, params.GET, "get_parameters", {"names": names}).values
+    tree: dict[str, Any] = {}
+    for name, value in zip(names, values, strict=True):
+        *outer, last = name.split(".")
+        level = tree
+        for part in outer:
+            level = level.setdefault(part, {})
+        level[last] = params.from_message(value)
+    print(yaml.safe_dump({args.node: {"ros__parameters": tree}}, sort_keys=True), end="")
+    return 0
+
+
+def run_load(args: argparse.Namespace) -> int:
+    """As `ros2 param load NODE FILE`: the file's section for the node (its full name, or
+    `/**`) set parameter by parameter; each result said."""
+    import yaml
+
+    from launcher.user_files import read_text
+
+    try:
+        document = yaml.safe_load(read_text(args.file)) or {}
+    except OSError as exc:
+        raise LaunchError(f"cannot read '{args.file}': {exc.strerror}") from None
+    except yaml.YAMLError as exc:
+        raise LaunchError(f"{args.file}: not valid YAML: {exc}") from None
+    sections = [section.get("ros__parameters", {}) for key, section in document.items()
+                if key in (args.node, args.node.lstrip("/"), "/**")
+                and isinstance(section, dict)] if isinstance(document, dict) else []
+    if not sections:
+        raise LaunchError(f"{args.file} has no parameters for {args.node} (expected a "
+                          f"'{args.node}:' or '/**:' section with 'ros__parameters:')")
+    flat: dict[str, Any] = {}
+    for section in sections:
+        flat.update(_flatten(section))
+    response = _call(args, params.SET, "set_parameters",
+                     {"parameters": [_parameter(n, v) for n, v in flat.items()]})
+    for name, result in zip(flat, response.results, strict=True):
+        print(f"Set parameter {name} successful" if result.successful else
+              f"Set parameter {name} failed: {result.reason}")
+    return 0
+
+
+def _flatten(tree: dict[str, Any], outer: str = "") -> dict[str, Any]:
+    flat: dict[str, Any] = {}
+    for key, value in tree.items():
+        if isinstance(value, dict):
+            flat.update(_flatten(value, f"{outer}{key}."))
+        else:
+            flat[f"{outer}{key}"] = value
+    return flat

@@ -367,6 +367,16 @@ def test_param_list_get_set_on_a_live_node(bus):
         "String value is: left"
     assert "Set parameter successful" in bus.run("param", "set", "/listener", "gain", "3").stdout
     assert bus.run("param", "get", "/listener", "gain").stdout.strip() == "Integer value is: 3"
+    dumped = bus.run("param", "dump", "/listener")
+    assert dumped.stdout == "/listener:\n  ros__parameters:\n    gain: 3\n    label: left\n"
+    bus.write("tuned.yaml", "/**:\n  ros__parameters:\n    gain: 4.5\n    pid:\n      p: 1.0\n")
+    loaded = bus.run("param", "load", "/listener", "tuned.yaml")
+    assert loaded.stdout == "Set parameter gain successful\nSet parameter pid.p successful\n"
+    assert bus.run("param", "get", "/listener", "pid.p").stdout.strip() == "Double value is: 1.0"
+    assert "    pid:\n      p: 1.0\n" in bus.run("param", "dump", "/listener").stdout
+    bus.write("other.yaml", "/talker:\n  ros__parameters:\n    gain: 1.0\n")
+    wrong = bus.run("param", "load", "/listener", "other.yaml")
+    assert wrong.returncode == 1 and "other.yaml has no parameters for /listener" in wrong.stderr
     missing = bus.run("param", "get", "/nobody", "x", "--timeout", "0.5")
     assert missing.returncode == 1 and "did not answer" in missing.stderr
     assert stop(proc) == 130
