@@ -1,17 +1,20 @@
 """Output as typed records and a pure formatter over them.
 
 Every line from every process, and every message of the launcher itself, becomes a `Record`.
-`Printer.format` turns one into a line (`[name-1] text`, `[INFO] [launch]: text`), coloured only
-when writing to a terminal; `Printer.emit` writes it. A launcher message of several lines (a
-command's stderr, a value with a newline in it) has its further lines indented, and carriage
-returns shown as `\r`, so no text the user controls can pass for a line of the launcher's own.
+`Printer.format` turns one into a line (`[name-1] text`, `[INFO] [launch]: text`), coloured when
+writing to a terminal, or as the environment says (`color_wanted`); `Printer.emit` writes it.
+A launcher message of several lines (a command's stderr, a value with a newline in it) has its
+further lines indented, and carriage returns shown as `\r`, so no text the user controls can
+pass for a line of the launcher's own.
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 import zlib
+from collections.abc import Mapping
 from typing import NamedTuple, TextIO
 
 from launcher.records import dataclass, field
@@ -27,6 +30,19 @@ class Record(NamedTuple):
     time: float = 0.0  # seconds since the epoch; 0 means "when written"
 
 
+def color_wanted(out: TextIO, environ: Mapping[str, str] = os.environ) -> bool:
+    """Colour or not: RCUTILS_COLORIZED_OUTPUT=0/1 (ROS 2's own) says so; else NO_COLOR (set
+    and not empty) says no; else FORCE_COLOR (set, not 0) says yes; else a terminal has it."""
+    ros = environ.get("RCUTILS_COLORIZED_OUTPUT", "")
+    if ros in ("0", "1"):
+        return ros == "1"
+    if environ.get("NO_COLOR"):
+        return False
+    if environ.get("FORCE_COLOR", "0") not in ("", "0"):
+        return True
+    return bool(getattr(out, "isatty", lambda: False)())
+
+
 _COLORS = (31, 32, 33, 34, 35, 36, 91, 92, 93, 94, 95, 96)
 _LEVEL_COLORS = {"DEBUG": 2, "INFO": 0, "WARN": 33, "ERROR": 31}
 
@@ -34,11 +50,11 @@ _LEVEL_COLORS = {"DEBUG": 2, "INFO": 0, "WARN": 33, "ERROR": 31}
 @dataclass
 class Printer:
     out: TextIO = field(default_factory=lambda: sys.stdout)
-    color: bool | None = None  # None: only when `out` is a terminal
+    color: bool | None = None  # None: as color_wanted() says for `out`
 
     def __post_init__(self) -> None:
         if self.color is None:
-            self.color = bool(getattr(self.out, "isatty", lambda: False)())
+            self.color = color_wanted(self.out)
 
     def format(self, record: Record) -> str:
         if record.level is not None:

@@ -221,3 +221,17 @@ def test_print_shows_the_tree(ws):
     overridden = ws.run("launch", "p.launch.yaml", "--print", "world:=arena.sdf")
     assert "arg name='world' default='robot.xml'  -> 'arena.sdf' (the command line)" in \
         overridden.stdout
+
+
+def test_colour_follows_force_color_and_no_color(ws):
+    ws.write("hello.launch.yaml", """
+    launch:
+      - executable: {cmd: "echo hello", output: screen}
+    """)
+    plain = ws.run("launch", "hello.launch.yaml")  # (a pipe: no colour)
+    assert "\x1b[" not in plain.stdout and "hello" in plain.stdout
+    ws.env["FORCE_COLOR"] = "1"
+    forced = ws.run("launch", "hello.launch.yaml")
+    assert "\x1b[" in forced.stdout and "hello" in forced.stdout
+    ws.env["RCUTILS_COLORIZED_OUTPUT"] = "0"  # ROS 2's own switch wins
+    assert "\x1b[" not in ws.run("launch", "hello.launch.yaml").stdout

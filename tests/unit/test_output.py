@@ -1,5 +1,7 @@
 import io
 
+import pytest
+
 from launcher.runtime.output import Printer, Record, plain
 
 
@@ -29,3 +31,27 @@ def test_colours_only_on_a_terminal_and_stable_per_name():
 def test_log_file_lines_have_a_timestamp():
     line = plain(Record("n-1", "text", time=12.5))
     assert line == "12.5000000 [n-1] text"
+
+
+class _Terminal:
+    def __init__(self, tty: bool) -> None:
+        self.tty = tty
+
+    def isatty(self) -> bool:
+        return self.tty
+
+
+@pytest.mark.parametrize("environ, tty, expected", [
+    ({}, True, True),
+    ({}, False, False),
+    ({"NO_COLOR": "1"}, True, False),
+    ({"NO_COLOR": ""}, True, True),  # (set but empty: as if not set)
+    ({"FORCE_COLOR": "1"}, False, True),
+    ({"FORCE_COLOR": "0"}, False, False),
+    ({"RCUTILS_COLORIZED_OUTPUT": "1", "NO_COLOR": "1"}, False, True),  # ROS 2's own wins
+    ({"RCUTILS_COLORIZED_OUTPUT": "0", "FORCE_COLOR": "1"}, True, False),
+])
+def test_colour_as_the_environment_says(environ, tty, expected):
+    from launcher.runtime.output import color_wanted
+
+    assert color_wanted(_Terminal(tty), environ) is expected
