@@ -1,6 +1,8 @@
 """A package's executables: what `node` and `$(exec-in-pkg)` can run.
 
-  * executable files in `lib/<pkg>/`, `lib/`, `scripts/` and `bin/` of the package;
+  * executable files in `lib/<pkg>/`, `lib/`, `scripts/` and `bin/` of the package, and for
+    a package of an install (AMENT_PREFIX_PATH) in `<prefix>/lib/<pkg>/`, where ROS 2 puts
+    them;
   * Python entry points, declared in package.xml as
         <export><executable name="driver" module="robot_application.driver:main"/></export>
     or in setup.cfg's `[options.entry_points] console_scripts` (as ament_python packages do).
@@ -43,6 +45,8 @@ def executables(package: Package) -> dict[str, Executable]:
     found: dict[str, Executable] = {}
     folders = [package.path / "lib" / package.name, package.path / "lib",
                package.path / "scripts", package.path / "bin"]
+    if package.origin == "ament" and package.prefix is not None:  # an install: where ROS 2
+        folders.insert(0, package.prefix / "lib" / package.name)  # puts its executables
     for folder in folders:
         try:
             entries = sorted(os.scandir(folder), key=lambda e: e.name)

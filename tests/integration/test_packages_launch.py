@@ -295,3 +295,20 @@ def test_pkg_create_makes_a_working_package(workspace):
     assert again.returncode == 2 and "already exists" in again.stderr
     bad = workspace.run("pkg", "create", "My-Bot")
     assert bad.returncode == 2 and "invalid package name 'My-Bot'" in bad.stderr
+
+
+def test_a_node_of_a_ros2_install_runs_from_its_lib_folder(ws):
+    """A package installed by colcon (AMENT_PREFIX_PATH): its executable in lib/<pkg>/."""
+    prefix = make_tree(ws.root / "install", {
+        "share/ament_index/resource_index/packages/ros_thing": "",
+        "share/ros_thing/package.xml": manifest("ros_thing"),
+        "lib/ros_thing/talker": "#!/bin/sh\necho \"talking as $*\"\n",
+    }, executable=("lib/ros_thing/talker",))
+    ws.env["AMENT_PREFIX_PATH"] = str(prefix)
+    ws.write("installed.launch.yaml", """
+    launch:
+      - node: {pkg: ros_thing, exec: talker, name: chatty, output: screen}
+    """)
+    result = ws.run("launch", "installed.launch.yaml")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "talking as --ros-args -r __node:=chatty" in result.stdout

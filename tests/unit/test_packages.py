@@ -109,6 +109,21 @@ def test_ament_prefixes(tmp_path):
     assert index.prefix("ros_thing") == prefix
 
 
+def test_an_installs_executables_are_found_where_ros2_puts_them(tmp_path):
+    """`<prefix>/lib/<pkg>/<exe>`, as colcon installs a ROS 2 package's executables."""
+    prefix = make_tree(tmp_path / "install", {
+        "share/ament_index/resource_index/packages/ros_thing": "",
+        "share/ros_thing/package.xml": manifest("ros_thing"),
+        "lib/ros_thing/talker": "#!/bin/sh\necho talking\n",
+        "lib/ros_thing/listener.py": "#!/usr/bin/env python3\nprint('listening')\n",
+    }, executable=("lib/ros_thing/talker", "lib/ros_thing/listener.py"))
+    index = index_for(tmp_path / "nothing", ament=str(prefix), tmp=tmp_path)
+    talker = find_executable(index.get("ros_thing"), "talker")
+    assert talker.argv == (str(prefix / "lib/ros_thing/talker"),)
+    listener = find_executable(index.get("ros_thing"), "listener.py")
+    assert listener.argv[-1] == str(prefix / "lib/ros_thing/listener.py")
+
+
 def test_executables_files_and_entry_points(tmp_path):
     ws = make_tree(tmp_path / "ws", {
         "app/package.xml": manifest("app", extra='<export><executable name="driver" '
