@@ -130,7 +130,7 @@ def test_the_graph_router_is_not_the_launch_s_to_stop(ws):
     ws.write("node.launch.yaml", """
     launch:
       - executable:
-          cmd: "launcher topic pub --times 1 /chatter std_msgs/msg/String 'data: hi'"
+          cmd: "launcher topic pub --times 1 -w 0 /chatter std_msgs/msg/String 'data: hi'"
     """)
     result = ws.run("launch", "node.launch.yaml")
     assert result.returncode == 0, result.stdout + result.stderr
