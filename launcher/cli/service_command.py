@@ -52,12 +52,9 @@ def _space(args: argparse.Namespace) -> keys.Space:
 
 
 def run_list(args: argparse.Namespace) -> int:
-    session = open_session("client")
-    found = {(e.topic, e.type_name) for e in graph.entities(session, space=_space(args))
-             if e.kind == keys.SERVICE}
+    found = {(e.topic, e.type_name) for e in _services(args) if e.kind == keys.SERVICE}
     for name, type_name in sorted(found):
         print(f"{name} [{type_name}]" if args.show_types else name)
-    session.close()
     return 0
 
 

@@ -50,9 +50,9 @@ def route_mujoco_warnings(logger: Any) -> None:
 
 class SimServer:
     def __init__(self, world: World, node: Node, rtf: float, running: bool,
-                 state_rate: float = 50.0, view: Any = None) -> None:
+                 state_rate: float = 50.0) -> None:
         self.world, self.node, self.transport = world, node, world.transport
-        self.view = view  # the web viewer (viewer.py), if one is served
+        self.view: Any = None  # the web viewer (viewer.py), once show() is given one
         self.log = node.get_logger()
         route_mujoco_warnings(self.log)
         self.paused = not running
