@@ -184,6 +184,19 @@ class ParameterValue:
     def __init__(self, value: Any, *, value_type: Any = None) -> None:
         self.value, self.value_type = value, value_type
 
+    def type_name(self) -> str | None:
+        """`type:` as launch files write it: str, int, …, list_of_int, …"""
+        names = {str: "str", int: "int", float: "float", bool: "bool"}
+        if self.value_type is None:
+            return None
+        if self.value_type in names:
+            return names[self.value_type]
+        args = getattr(self.value_type, "__args__", ())
+        if getattr(self.value_type, "__origin__", None) is list and args and args[0] in names:
+            return f"list_of_{names[args[0]]}"
+        raise TypeError(f"ParameterValue: value_type {self.value_type!r} is not one of str, "
+                        "int, float, bool, List[str|int|float|bool]")
+
 
 def Node(*, package: Any, executable: Any, name: Any = None, namespace: Any = None,  # noqa: N802
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
@@ -226,27 +239,26 @@ def ComposableNode(*, package: Any, plugin: Any, name: Any = None,  # noqa: N802
 
 
 def _parameters(parameters: Sequence[Any]) -> list[Any]:
+    """launch_ros's `parameters=[{...}, 'file.yaml']`: each dict one group (one params file)."""
     entries = []
     for item in parameters:
         if isinstance(item, dict):
-            for key, value in item.items():
-                entries.append(_parameter(key, value))
+            entries.append(_node.ParamEntry(children=_parameter_group(item), group=True))
         else:
             entries.append(_node.ParamEntry(from_file=to_text(item)))
     return entries
 
 
-def _parameter(name: Any, value: Any) -> Any:
-    kind = None
-    if isinstance(value, ParameterValue):
-        kind = {str: "str", int: "int", float: "float", bool: "bool"}.get(value.value_type)
-        value = value.value
-    elif isinstance(value, str):
-        kind = "str"
-    elif isinstance(value, bool):
-        value = str(value).lower()
-    return _node.ParamEntry(name=to_text(name), value=to_text(value),
-                            type=None if kind is None else to_text(kind))
+def _parameter_group(values: dict[Any, Any]) -> list[Any]:
+    out = []
+    for name, value in values.items():
+        if isinstance(value, dict):
+            out.append(_node.ParamEntry(name=to_text(name), children=_parameter_group(value)))
+        elif isinstance(value, ParameterValue):
+            out.append(_node.python_parameter(name, value.value, value.type_name()))
+        else:
+            out.append(_node.python_parameter(name, value))
+    return out
 
 
 def PushRosNamespace(namespace: Any, **kw: Any) -> Any:  # noqa: N802

@@ -31,6 +31,7 @@ class Kind(enum.Enum):
     ACTIONS = "actions"  # a list of actions given under this attribute (on_exit, on_start)
     CHILDREN = "children"  # the tag's children
     NAMES = "names"  # a list of texts (a repeatable element, as a plugin's <left_joint>)
+    VALUE = "value"  # a ROS parameter value: text or a list, typed when it is used
 
 
 class Attr(NamedTuple):

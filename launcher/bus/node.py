@@ -59,10 +59,7 @@ class Node:
         self.remaps = parsed.remaps
         self.args = parsed.user_args
         logger = Logger(self.fully_qualified_name, parsed.log_level or "INFO")
-        self._parameters: dict[str, Any] = {}
-        for path in parsed.params_files:
-            self._parameters.update(ros_args.load_params_file(path, self.name, self.namespace))
-        self._parameters.update(parsed.parameters)
+        self._parameters = ros_args.parameters(parsed, self.name, self.namespace)
         if within is not None:
             self._parameters.update(within.parameters)
             within.nodes.append(self)

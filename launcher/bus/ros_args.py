@@ -23,6 +23,8 @@ class RosArgs:
     remaps: list[tuple[str, str]] = field(default_factory=list)
     parameters: dict[str, Any] = field(default_factory=dict)
     params_files: list[str] = field(default_factory=list)
+    # ("file", path) and ("value", (name, value)) in the order given: later ones win, as in rcl
+    parameter_sources: list[tuple[str, Any]] = field(default_factory=list)
     log_level: str | None = None
     user_args: list[str] = field(default_factory=list)
 
@@ -55,6 +57,7 @@ def parse(argv: list[str]) -> RosArgs:
 def _option(out: RosArgs, word: str, value: str) -> None:
     if word in ("--params-file",):
         out.params_files.append(value)
+        out.parameter_sources.append(("file", value))
     elif word == "--log-level":
         out.log_level = value.split(":")[-1].upper()
     elif word in ("-e", "--enclave"):
@@ -65,6 +68,7 @@ def _option(out: RosArgs, word: str, value: str) -> None:
         name, _, text = value.partition(":=")
         if word in ("-p", "--param"):
             out.parameters[name] = _typed(text)
+            out.parameter_sources.append(("value", (name, out.parameters[name])))
         elif name == "__node":
             out.node_name = text
         elif name == "__ns":
@@ -86,6 +90,17 @@ def _typed(text: str) -> Any:
     except yaml.YAMLError:
         return text
     return text if value is None or isinstance(value, dict) else value
+
+
+def parameters(parsed: RosArgs, node: str, namespace: str) -> dict[str, Any]:
+    """The node's parameters from its command line: params files and `-p` values in order."""
+    out: dict[str, Any] = {}
+    for kind, source in parsed.parameter_sources:
+        if kind == "file":
+            out.update(load_params_file(source, node, namespace))
+        else:
+            out[source[0]] = source[1]
+    return out
 
 
 def load_params_file(path: str, node: str, namespace: str) -> dict[str, Any]:

@@ -18,6 +18,7 @@ from launcher.description.actions.shutdown import Shutdown
 from launcher.description.actions.timer import TimerAction
 from launcher.description.substitution import to_text
 from launcher.errors import DEBUG_VARIABLE, UsageError
+from launcher.frontend.builder import parse_file_text
 from launcher.frontend.loader import load_file
 from launcher.packages.index import PackageIndex
 from launcher.runtime.custody import Custody
@@ -113,7 +114,8 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
         printer=Printer(color=False) if args.noninteractive else None,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
-        load_description=load_file, packages=index, loader=BusLoader(),
+        load_description=load_file, parse_text=parse_file_text, packages=index,
+        loader=BusLoader(),
         # the graph's router, unless one runs, once the first process that may join the graph
         # is spawned (so it starts while that one imports); a launch of system programs needs
         # none, and a node that opens its session sooner starts it itself

@@ -16,14 +16,17 @@ from launcher.description.actions.arguments import DeclareLaunchArgument
 from launcher.description.actions.include import IncludeLaunchDescription
 from launcher.description.actions.loops import ForEach, ForLoop
 from launcher.description.fields import declared_fields, frontend_name
+from launcher.description.parameters import Written
 from launcher.description.substitution import Substitution, describe_text, perform_text
 from launcher.errors import LaunchError
+from launcher.frontend.builder import parse_file_text
 from launcher.frontend.loader import load_file
 from launcher.runtime.context import LaunchContext
 
 
 def _context(configurations: dict[str, str], index: Any) -> LaunchContext:
     context = LaunchContext(configurations=configurations, load_description=load_file,
+                            parse_text=parse_file_text,
                             packages=index)
     return context
 
@@ -141,6 +144,8 @@ def _describe(item: Action) -> str:
 def _show(value: Any) -> str:
     if isinstance(value, tuple) and all(isinstance(v, Substitution) for v in value):
         return repr(describe_text(value))
+    if isinstance(value, Written):  # a parameter value: a string shows its quotes
+        return repr(value.describe()) if value.string else value.describe()
     if isinstance(value, list):
         return "[" + ", ".join(_show_entry(v) for v in value) + "]"
     return repr(value)
@@ -149,9 +154,11 @@ def _show(value: Any) -> str:
 def _show_entry(value: Any) -> str:
     if isinstance(value, Action):
         return _describe(value)
-    if records.is_record(value):
-        return "{" + ", ".join(f"{f.name}: {_show(getattr(value, f.name))}"
-                               for f in records.fields(value)) + "}"
+    if records.is_record(value) and not isinstance(value, Written):
+        shown = [(f.name, getattr(value, f.name)) for f in records.fields(value)
+                 if f.name != "where"]
+        return "{" + ", ".join(f"{name}: {_show(item)}" for name, item in shown
+                               if item not in (None, [], False)) + "}"
     return _show(value)
 
 

@@ -37,7 +37,8 @@ def normalize(obj: Any) -> None:
     """Python API values (str, numbers, substitutions, lists) → the forms the builder makes."""
     for field, spec in declared_fields(type(obj)):
         value = getattr(obj, field.name)
-        if value is None or spec.kind in (Kind.NAME, Kind.ENTRIES, Kind.ACTIONS, Kind.CHILDREN):
+        if value is None or spec.kind in (Kind.NAME, Kind.ENTRIES, Kind.ACTIONS, Kind.CHILDREN,
+                                             Kind.VALUE):
             continue
         if spec.kind is Kind.COMMAND and isinstance(value, list):
             setattr(obj, field.name, [to_text(item) for item in value])

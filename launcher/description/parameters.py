@@ -14,51 +14,173 @@ from typing import Any
 
 import yaml
 
-from launcher.errors import ExecutionError, Location
+from launcher.description.substitution import (
+    Text,
+    Text_,
+    describe_text,
+    is_literal,
+    perform_text,
+    to_text,
+)
+from launcher.errors import ExecutionError, Location, did_you_mean
 from launcher.private import private_folder, write_private
+from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 from launcher.user_files import read_text
 
 NAMESPACE = "<ros_namespace>"
-GLOBAL_PARAMETERS = "<global_parameters>"  # a tuple of (name, value)
-GLOBAL_PARAMETER_FILES = "<global_parameter_files>"  # a tuple of paths
+GLOBAL_PARAMETERS = "<global_parameters>"  # a tuple of (name, value) and (FILE, path) items
+FILE = "<file>"
 REMAPS = "<remaps>"  # a tuple of (from, to)
-TYPES = ("str", "int", "float", "bool", "yaml")
+LIST_TYPES = {"list_of_str": "str", "list_of_int": "int", "list_of_float": "float",
+              "list_of_bool": "bool"}
+TYPES = ("str", "int", "float", "bool", "yaml", *LIST_TYPES)
+_TRUE = ("true", "yes", "on", "1")
+_FALSE = ("false", "no", "off", "0")
 
 
-def typed(text: str, kind: str | None = None) -> Any:
-    """The parameter value of `text`: as `kind` says, else inferred from a one-line literal."""
-    if kind == "str":
+@dataclass(frozen=True)
+class Written:
+    """A parameter value as the file wrote it: its text (with substitutions), and whether the
+    file's own syntax already made it a string (a quoted YAML scalar, a Python str)."""
+
+    text: Text_
+    string: bool = False
+
+    def describe(self) -> str:
+        return describe_text(self.text)
+
+
+def value_of(context: LaunchContext, value: Written | list[Written], kind: str | None,
+             name: str, separator: str | None = None) -> Any:
+    """The parameter value as launch_ros types it.
+
+    Without a type: text the file made a string stays one (`'42'`, `'True'`, `'[1, 2]'`);
+    a YAML number, bool or list is one; XML text and substitution results follow YAML's
+    rules. Text of several lines (a robot description) is always a string. With `type:`,
+    the written text is converted to it (launch_ros refuses `value: 42` with `type: str`;
+    launcher gives "42"). `separator` (XML's `value-sep`) splits the text into a list.
+    """
+    if isinstance(value, Written) and separator:
+        text = perform_text(context, value.text)
+        value = [Written((Text(part),)) for part in text.split(separator)]
+    item_kind = LIST_TYPES.get(kind or "")
+    if isinstance(value, list):
+        if kind is not None and kind != "yaml" and item_kind is None:
+            raise ExecutionError(f"param '{name}': type {kind} takes one value, got a list")
+        items = [_scalar(context, w, item_kind, name) for w in value]
+        return _uniform(items, name)
+    if item_kind is not None:
+        listed = _yaml_value(perform_text(context, value.text), name)
+        if not isinstance(listed, list):
+            raise ExecutionError(f"param '{name}': type {kind} expects a list such as "
+                                 f"[a, b], got '{perform_text(context, value.text)}'")
+        return _uniform([_convert(_literal(v), item_kind, name) for v in listed], name)
+    return _scalar(context, value, kind, name)
+
+
+def _scalar(context: LaunchContext, written: Written, kind: str | None, name: str) -> Any:
+    text = perform_text(context, written.text)
+    if kind not in (None, "yaml"):
+        return _convert(text, kind, name)
+    if written.string and is_literal(written.text):
         return text
-    if kind in ("int", "float"):
-        try:
-            return int(text) if kind == "int" else float(text)
-        except ValueError:
-            raise ExecutionError(f"param: '{text}' is not a valid {kind}") from None
-    if kind == "bool":
-        low = text.strip().lower()
-        if low not in ("true", "false"):
-            raise ExecutionError(f"param: '{text}' is not true or false")
-        return low == "true"
-    if "\n" in text.strip() and kind != "yaml":
-        return text  # robot descriptions and other documents stay text
+    return _yaml_value(text, name)
+
+
+def _yaml_value(text: str, name: str) -> Any:
+    """Text by YAML's rules, as launch_ros reads XML text and substitution results."""
+    if "\n" in text.strip() or not text.strip():
+        return text  # robot descriptions and other documents stay text; so does ''
     try:
         value = yaml.safe_load(text)
     except yaml.YAMLError:
         return text
     if isinstance(value, bool | int | float | str):
         return value
-    if isinstance(value, list) and all(isinstance(v, bool | int | float | str) for v in value):
-        return value
-    return text if value is not None else text
+    if isinstance(value, list):
+        if any(not isinstance(v, bool | int | float | str) for v in value):
+            raise ExecutionError(f"param '{name}': '{text}' is a list holding lists or maps; "
+                                 "a parameter list holds numbers, bools or strings")
+        return _uniform(value, name)
+    if isinstance(value, dict):
+        raise ExecutionError(f"param '{name}': '{text}' is a YAML map; a parameter holds one "
+                             "value or a list (nest 'param' entries for a map, or give "
+                             "type: str to keep the text)")
+    return text  # null, dates: the text as written
+
+
+def _literal(value: Any) -> str:
+    return str(value).lower() if isinstance(value, bool) else str(value)
+
+
+def _convert(text: str, kind: str, name: str) -> Any:
+    """`text` as `type:` says."""
+    if kind == "str":
+        return text
+    if kind in ("int", "float"):
+        try:
+            return int(text.strip()) if kind == "int" else float(text)
+        except ValueError:
+            raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
+                                 f" {kind}") from None
+    if kind == "bool":
+        low = text.strip().lower()
+        if low not in _TRUE + _FALSE:
+            raise ExecutionError(f"param '{name}': '{text}' is not a bool; expected true or "
+                                 "false (or 1 or 0)")
+        return low in _TRUE
+    raise ExecutionError(f"param '{name}': unknown type '{kind}'; expected one of "
+                         f"{', '.join(TYPES)}{did_you_mean(kind, TYPES)}")
+
+
+def _uniform(items: list[Any], name: str) -> list[Any]:
+    """A ROS list parameter holds one type; ints among floats become floats, as in launch_ros."""
+    kinds = {type(v) for v in items}
+    if kinds == {int, float}:
+        return [float(v) for v in items]
+    if len(kinds) > 1:
+        found = ", ".join(sorted(k.__name__ for k in kinds))
+        raise ExecutionError(f"param '{name}': the list mixes {found}; a ROS list parameter "
+                             "holds one type (quote the items to make them all strings)")
+    return items
+
+
+def python_value(value: Any) -> Written:
+    """A value the Python API gave: a str is a string, a substitution typed by YAML's rules."""
+    if isinstance(value, str):
+        return Written((Text(value),), string=True)
+    if isinstance(value, bool | int | float):
+        return Written((Text(_literal(value)),))
+    return Written(to_text(value))
+
+
+def parameter_argument(name: str, value: Any) -> str:
+    """`name:=value` for `--ros-args -p`, as launch_ros writes a `set_parameter`: a string as
+    it is (the node reads `true` or `5` in it by YAML's rules, as in ROS 2), anything else in
+    YAML's flow style."""
+    if isinstance(value, str):
+        return f"{name}:={value}"
+    text = yaml.safe_dump(value, default_flow_style=True, width=float("inf")).strip()
+    if text.endswith("\n..."):
+        text = text[: -len("\n...")].strip()
+    elif text.endswith("..."):
+        text = text[:-3].strip()
+    return f"{name}:={text}"
 
 
 def _add(context: LaunchContext, key: str, items: tuple) -> None:
     context.configurations[key] = (*context.configurations.get(key, ()), *items)  # type: ignore
 
 
-def global_parameters(context: LaunchContext) -> tuple[tuple[str, Any], ...]:
+def global_settings(context: LaunchContext) -> tuple[tuple[str, Any], ...]:
+    """`set_parameter` values as (name, value) and `set_parameters_from_file` files as
+    (FILE, path), in the order given: later ones win, as on a node's command line."""
     return context.configurations.get(GLOBAL_PARAMETERS, ())  # type: ignore[return-value]
+
+
+def global_parameters(context: LaunchContext) -> dict[str, Any]:
+    return {name: value for name, value in global_settings(context) if name != FILE}
 
 
 def add_global_parameter(context: LaunchContext, name: str, value: Any) -> None:
@@ -66,11 +188,7 @@ def add_global_parameter(context: LaunchContext, name: str, value: Any) -> None:
 
 
 def add_global_parameter_file(context: LaunchContext, path: str) -> None:
-    _add(context, GLOBAL_PARAMETER_FILES, (path,))
-
-
-def global_parameter_files(context: LaunchContext) -> tuple[str, ...]:
-    return context.configurations.get(GLOBAL_PARAMETER_FILES, ())  # type: ignore[return-value]
+    _add(context, GLOBAL_PARAMETERS, ((FILE, path),))
 
 
 def add_remap(context: LaunchContext, source: str, target: str) -> None:
@@ -116,15 +234,38 @@ def check_params_file(path: Path, where: Location | None) -> None:
         raise ExecutionError(f"parameters file is not valid YAML: {exc.problem}", at) from None
 
 
-def write_params_file(folder: Path, stem: str, parameters: dict[str, Any]) -> Path:
-    """A params file, 0600 in a 0700 folder: it may hold the robot description."""
+def check_params_text(text: str, path: Path, where: Location | None) -> None:
+    """A params file after its substitutions must still be valid YAML."""
+    try:
+        yaml.safe_load(text)
+    except yaml.MarkedYAMLError as exc:
+        raise ExecutionError(f"parameters file '{path}' is not valid YAML after its "
+                             f"substitutions (allow_substs): {exc.problem}", where) from None
+
+
+def write_private_copy(folder: Path, name: str, text: str) -> Path:
+    """A params file with its substitutions performed, 0600 in a 0700 folder."""
+    private_folder(folder)
+    path = folder / name
+    count = 1
+    while path.exists():
+        count += 1
+        path = folder / f"{Path(name).stem}_{count}{Path(name).suffix}"
+    write_private(path, text)
+    return path
+
+
+def write_params_file(folder: Path, stem: str, parameters: dict[str, Any],
+                      key: str = "/**") -> Path:
+    """A params file for the node `key` names (its full name, or /** for any), 0600 in a
+    0700 folder: it may hold the robot description."""
     private_folder(folder)
     path = folder / f"{stem}.yaml"
     count = 1
     while path.exists():
         count += 1
         path = folder / f"{stem}_{count}.yaml"
-    document = {"/**": {"ros__parameters": parameters}}
+    document = {key: {"ros__parameters": parameters}}
     write_private(path, yaml.safe_dump(document, default_flow_style=False, sort_keys=False,
                                        allow_unicode=True, width=float("inf")))
     return path

@@ -13,9 +13,10 @@ from typing import Any
 from launcher.description.action import Action, LaunchDescription
 from launcher.description.condition import Condition
 from launcher.description.fields import Kind, coerce, declared_fields, frontend_name
+from launcher.description.parameters import Written
 from launcher.description.registry import Registry, default_registry
 from launcher.description.substitution import Substitution, Text, Text_, is_literal
-from launcher.errors import LaunchError, ParseError, did_you_mean
+from launcher.errors import LaunchError, Location, ParseError, did_you_mean
 from launcher.frontend.entity import Attribute, Entity
 from launcher.frontend.substitution_parser import Call, SubstitutionSyntaxError, parse_text
 
@@ -98,6 +99,8 @@ def _value(attribute: Attribute, spec: Any, registry: Registry, what: str) -> An
         if isinstance(value, list):
             return [build_action(e, registry) for e in value]
         return value  # a word such as on_exit: shutdown; the action checks it
+    if spec.kind is Kind.VALUE:
+        return _parameter_value(attribute, registry, what)
     if isinstance(value, list):
         raise ParseError(f"{what}: expected a value, not a list", attribute.location)
     if spec.kind is Kind.NAME:
@@ -109,6 +112,20 @@ def _value(attribute: Attribute, spec: Any, registry: Registry, what: str) -> An
         except ParseError as exc:
             raise exc.at(attribute.location) from None
     return text
+
+
+def _parameter_value(attribute: Attribute, registry: Registry, what: str) -> Any:
+    """A parameter value: one text, or a YAML list of them."""
+    if not isinstance(attribute.value, list):
+        return Written(parse_substitutions(attribute, registry), attribute.string)
+    items = []
+    for entity in attribute.value:
+        item = entity.attributes.get("value")
+        if len(entity.attributes) != 1 or item is None or isinstance(item.value, list):
+            raise ParseError(f"{what}: a parameter list holds values, not maps or lists",
+                             entity.location)
+        items.append(Written(parse_substitutions(item, registry), item.string))
+    return items
 
 
 def _nested_xml(spec: Any, nested: list[tuple[int, Entity]], registry: Registry,
@@ -172,6 +189,29 @@ def _condition(entity: Entity, registry: Registry) -> Condition | None:
 
 
 # --- substitutions ------------------------------------------------------------------------
+def parse_file_text(text: str, file: str, registry: Registry | None = None) -> Text_:
+    """The substitutions in a whole file's text (a params file read with allow_substs); an
+    error names the line and column in that file."""
+    registry = registry or default_registry()
+
+    def at(offset: int) -> Location:
+        line = text.count("\n", 0, offset) + 1
+        return Location(file, line, offset - (text.rfind("\n", 0, offset) + 1) + 1)
+
+    try:
+        parts = parse_text(text)
+    except SubstitutionSyntaxError as exc:
+        raise ParseError(exc.message, at(exc.offset)) from None
+    whole = Attribute(text, Location(file, 1, 1))
+    out = []
+    for part in parts:
+        try:
+            out.append(_part(part, whole, registry))
+        except ParseError as exc:
+            raise ParseError(exc.message, at(part.offset)) from None
+    return tuple(out)
+
+
 def parse_substitutions(attribute: Attribute, registry: Registry) -> Text_:
     assert isinstance(attribute.value, str)
     try:

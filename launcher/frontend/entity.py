@@ -20,6 +20,9 @@ class Attribute:
     # None when the text does not map 1:1 onto the source (block scalars, escapes).
     text_offset: int | None = None
     key_location: Location | None = None  # where the attribute's name is written
+    # The format itself made the value a string (a quoted YAML scalar, or plain text YAML
+    # reads as one); XML text is typed by YAML's rules where that matters (parameters).
+    string: bool = False
 
     @property
     def name_location(self) -> Location:

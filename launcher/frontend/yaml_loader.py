@@ -116,7 +116,7 @@ def _attribute(file: str, name: str, node: yaml.Node) -> Attribute:
             offset = 0 if node.style is None else 1
             if node.style == '"' and "\\" in text:
                 offset = None
-        return Attribute(text, where, offset)
+        return Attribute(text, where, offset, string=node.tag == "tag:yaml.org,2002:str")
     if isinstance(node, yaml.SequenceNode):
         items = []
         for item in node.value:

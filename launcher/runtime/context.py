@@ -65,7 +65,8 @@ class LaunchContext:
     `service` is the runtime that runs processes and timers; it is None when a launch file is
     only inspected (`--show-args`, `--print`), and actions that need it must check.
     `load_description` turns a launch file path into a description (the frontend's loader);
-    `packages` is the package index node actions and `$(find-pkg-…)` look in.
+    `packages` is the package index node actions and `$(find-pkg-…)` look in;
+    `parse_text` reads the substitutions in a file's text (a params file with allow_substs).
     """
 
     def __init__(
@@ -76,6 +77,7 @@ class LaunchContext:
         log_dir: Path | None = None,
         load_description: Callable[[Path], Any] | None = None,
         packages: Any = None,
+        parse_text: Callable[[str, str], Any] | None = None,
     ) -> None:
         env = dict(os.environ if environment is None else environment)
         self.initial_environment = dict(env)
@@ -87,6 +89,7 @@ class LaunchContext:
         self.anonymous_names: dict[str, str] = {}
         self.load_description = load_description
         self.packages = packages
+        self.parse_text = parse_text
         self.node_names: dict[str, Any] = {}  # fully qualified node name -> where declared
         self.declared: set[str] = set()  # the launch arguments an `arg` has declared
 

@@ -44,6 +44,7 @@ class LaunchService:
         debug: bool = False,
         loop: EventLoop | None = None,
         load_description: Callable[[Path], Any] | None = None,
+        parse_text: Callable[[str, str], Any] | None = None,
         packages: Any = None,
         system: Processes | None = None,
         custody: Custody | None = None,
@@ -56,7 +57,7 @@ class LaunchService:
         self.context = LaunchContext(
             environment, configurations, service=self,
             log_dir=self.run_log.folder if self.run_log else None,
-            load_description=load_description, packages=packages,
+            load_description=load_description, packages=packages, parse_text=parse_text,
         )
         self.loop = loop or EventLoop()
         self.launch_prefix = launch_prefix

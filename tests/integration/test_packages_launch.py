@@ -31,23 +31,30 @@ WHEEL_XACRO = """<?xml version="1.0"?>
   </xacro:macro>
 </robot>
 """
-# A node that reports what it was given: argv and its params file (as YAML).
+# A node that reports what it was given: argv, its params files' keys, and its parameters
+# (params files and -p values, as YAML).
 ECHO_NODE = """
 import sys, yaml
 
 def main():
     args = sys.argv[1:]
     print("ARGV", args, flush=True)
+    params = {}
     for i, word in enumerate(args):
         if word == "--params-file":
             with open(args[i + 1]) as handle:
-                params = yaml.safe_load(handle)["/**"]["ros__parameters"]
-            for key, value in sorted(params.items()):
-                print("PARAM", key, type(value).__name__, repr(value)[:60], flush=True)
-            desc = params.get("robot_description")
-            if desc is not None:
-                with open("received_description.xml", "w") as out:
-                    out.write(desc)
+                for key, body in yaml.safe_load(handle).items():
+                    print("KEY", key, flush=True)
+                    params.update(body["ros__parameters"])
+        elif word == "-p":
+            name, _, text = args[i + 1].partition(":=")
+            params[name] = yaml.safe_load(text)
+    for key, value in sorted(params.items()):
+        print("PARAM", key, type(value).__name__, repr(value)[:60], flush=True)
+    desc = params.get("robot_description")
+    if desc is not None:
+        with open("received_description.xml", "w") as out:
+            out.write(desc)
     return 0
 """
 BRINGUP_PY = """
@@ -137,9 +144,10 @@ def test_hooks_find_pkg_share_and_node_command_line(workspace):
           args: --speed 3
           ros_args: --log-level debug
           param:
-            - {name: rate, value: "10"}
+            - {name: rate, value: 10}
+            - {name: rate_text, value: "10"}
             - {name: label, value: "10", type: str}
-            - {name: limits, param: [{name: max, value: "1.5"}]}
+            - {name: limits, param: [{name: max, value: 1.5}]}
             - {name: robot_description, value: "$(command 'xacro $(find-pkg-share robot_description)/urdf/robot.xacro prefix:=r1_')"}
             - {from: $(find-pkg-share robot_bringup)/config/params.yaml}
           remap: [{from: odom, to: odometry}]
@@ -150,13 +158,17 @@ def test_hooks_find_pkg_share_and_node_command_line(workspace):
     assert f"RESOURCE={workspace.root / 'src/robot_sim/worlds'}" in out
     (argv_line,) = [line for line in out.splitlines() if "ARGV" in line]
     argv = eval(argv_line.split("ARGV ", 1)[1])  # noqa: S307 - our own test node's repr
+    # launch_ros's layout: set_parameter as -p ahead of the node's files, one params file per
+    # param entry (keyed by the node's full name: name and namespace are known), in order
     head = argv[:argv.index("--params-file")]
     assert head == ["--speed", "3", "--ros-args", "--log-level", "debug",
-                    "-r", "__node:=driver", "-r", "__ns:=/fleet/r1"]
+                    "-r", "__node:=driver", "-r", "__ns:=/fleet/r1", "-p", "use_sim_time:=true"]
     files = [argv[i + 1] for i, w in enumerate(argv) if w == "--params-file"]
-    assert files[0].endswith("robot_bringup/config/params.yaml")
+    assert len(files) == 6 and files[5].endswith("robot_bringup/config/params.yaml")
+    assert out.count("KEY /fleet/r1/driver") == 5 and "KEY /**" in out
     assert argv[-4:] == ["-r", "cmd_vel:=/fleet/cmd", "-r", "odom:=odometry"]
     assert "PARAM rate int 10" in out and "PARAM label str '10'" in out
+    assert "PARAM rate_text str '10'" in out  # quoted in YAML: a string, as in launch_ros
     assert "PARAM limits.max float 1.5" in out and "PARAM use_sim_time bool True" in out
     assert "PARAM robot_description str '<?xml" in out
     received = (workspace.root / "received_description.xml").read_text()

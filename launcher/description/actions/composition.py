@@ -101,8 +101,10 @@ class ComposableNode:
         files, inline = gather_parameters(context, self.parameters, self.where)
         mine = [(perform_text(context, r.source), perform_text(context, r.target))
                 for r in self.remappings]
-        extra = {perform_text(context, e.name): params.typed(perform_text(context, e.value))
-                 for e in self.extra_arguments}
+        extra = {}
+        for entry in self.extra_arguments:
+            name = perform_text(context, entry.name)
+            extra[name] = params.value_of(context, params.Written(entry.value), None, name)
         return LoadRequest(package, plugin, node_name, space,
                            [*params.remaps(context), *mine], inline, [str(f) for f in files],
                            extra, self.where)

@@ -12,6 +12,7 @@ such a node is one error and the rest of the launch runs (ROS 2 would end the wh
 
 from __future__ import annotations
 
+import os
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -27,6 +28,7 @@ from launcher.packages.executables import find_executable
 from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
+from launcher.user_files import read_text
 
 GUI_TOOLS = ("rviz2", "rviz", "rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",
              "rqt_image_view", "rqt_robot_steering", "joint_state_publisher_gui", "gzclient")
@@ -37,11 +39,18 @@ INSTEAD = ("pictures of the world: `launcher sim snapshot -o world.png`; topics:
 @dataclass(eq=False)
 class ParamEntry:
     name: Text_ | None = attr(Kind.TEXT, doc="Parameter name (dotted for nested ones).")
-    value: Text_ | None = attr(Kind.TEXT, doc="Its value.")
+    value: Any = attr(Kind.VALUE, doc="Its value: one, or a list.")
     type: Any = attr(Kind.TEXT, choices=params.TYPES,
-                     doc="str, int, float, bool or yaml; default: inferred from a literal.")
+                     doc="str, int, float, bool, list_of_str|int|float|bool or yaml; default: "
+                         "as launch_ros types the value.")
+    separator: Any = attr(Kind.NAME, name="value-sep", aliases=("value_sep",),
+                          doc="Split the value at this text into a list.")
     from_file: Text_ | None = attr(Kind.TEXT, name="from", doc="A params YAML file to load.")
+    allow_substs: Any = attr(Kind.BOOL, doc="With 'from': substitutions in the file are "
+                                            "performed (default false).")
     children: list[Any] = attr(Kind.ENTRIES, name="param", doc="Nested parameters.")
+    group: bool = False  # a Python dict: one group of named children, one params file
+    where: Any = None  # where the entry is written, for its errors
 
 
 _spec = ParamEntry.__dataclass_fields__["children"]
@@ -111,8 +120,7 @@ class Node(ExecuteProcess):
             argv += ["-r", f"__node:={node}"]
         if space:
             argv += ["-r", f"__ns:={space}"]
-        for path in self._params_files(context, node or found.name):
-            argv += ["--params-file", str(path)]
+        argv += self._parameter_arguments(context, node, space, node or found.name)
         own = ((perform_text(context, r.source), perform_text(context, r.target))
                for r in self.remappings)
         for source, target in [*params.remaps(context), *own]:
@@ -132,13 +140,25 @@ class Node(ExecuteProcess):
         own = perform_text(context, self.namespace) if self.namespace is not None else ""
         return params.join_namespace(params.namespace(context), own)
 
-    def _params_files(self, context: LaunchContext, stem: str) -> list[Path]:
-        files, inline = gather_parameters(context, self.parameters, self.where)
-        if inline:
-            folder = Path(context.log_dir) / "params" if context.log_dir else \
-                Path(tempfile.gettempdir()) / "launcher-params"
-            files.append(params.write_params_file(folder, stem.strip("/") or "node", inline))
-        return files
+    def _parameter_arguments(self, context: LaunchContext, node: str, space: str,
+                             stem: str) -> list[str]:
+        """launch_ros's layout: the launch's `set_parameter`s as `-p name:=value` and its
+        `set_parameters_from_file`s, in order, then one `--params-file` per `param` entry
+        (keyed by the node's full name when its name and namespace are both known)."""
+        words: list[str] = []
+        for name, value in params.global_settings(context):
+            if name == params.FILE:
+                words += ["--params-file", os.path.abspath(value)]
+            else:
+                words += ["-p", params.parameter_argument(name, value)]
+        known = bool(node) and bool(space or self.namespace is not None)
+        key = f"{space.rstrip('/')}/{node}" if known else "/**"
+        for group in parameter_groups(context, self.parameters, self.where):
+            if isinstance(group, dict):
+                group = params.write_params_file(params_folder(context), stem.strip("/") or
+                                                 "node", group, key)
+            words += ["--params-file", str(group)]
+        return words
 
     def _check_unique(self, context: LaunchContext, node: str, space: str) -> None:
         fqn = f"{space.rstrip('/')}/{node}" if space else f"/{node}"
@@ -149,48 +169,120 @@ class Node(ExecuteProcess):
 
 
 
-def gather_parameters(context: LaunchContext, entries: list[ParamEntry],
-                      where: Any) -> tuple[list[Path], dict[str, Any]]:
-    """(params files, inline values) for a node: the launch's `set_parameters_from_file`s and
-    `set_parameter`s first, then its own entries, in order."""
-    files = [Path(f) for f in params.global_parameter_files(context)]
-    inline: dict[str, Any] = dict(params.global_parameters(context))
+def params_folder(context: LaunchContext) -> Path:
+    """Where the params files launcher writes for a run go (private: they may hold the robot
+    description)."""
+    return Path(context.log_dir) / "params" if context.log_dir else \
+        Path(tempfile.gettempdir()) / f"launcher-params-{os.getuid()}"
+
+
+def parameter_groups(context: LaunchContext, entries: list[ParamEntry],
+                     where: Any) -> list[Path | dict[str, Any]]:
+    """A node's own parameters as launch_ros groups them: each `param` entry (a Python dict)
+    is one group of values; each `from` is its file."""
+    groups: list[Path | dict[str, Any]] = []
     for entry in entries:
         if entry.from_file is not None:
-            path = Path(perform_text(context, entry.from_file))
-            params.check_params_file(path, where)
-            files.append(path)
+            groups.append(_from_file(context, entry, entry.where or where))
+            continue
+        if entry.allow_substs is not None:
+            raise ExecutionError("param: 'allow_substs' goes with 'from' (a params file)",
+                                 entry.where or where)
+        values: dict[str, Any] = {}
+        for child in entry.children if entry.group else [entry]:
+            _collect(context, child, "", values, entry.where or where)
+        groups.append(values)
+    return groups
+
+
+def gather_parameters(context: LaunchContext, entries: list[ParamEntry],
+                      where: Any) -> tuple[list[Path], dict[str, Any]]:
+    """(params files, values) for a composable node: the launch's `set_parameters_from_file`s
+    and `set_parameter`s, then its own entries."""
+    files: list[Path] = []
+    inline: dict[str, Any] = {}
+    for name, value in params.global_settings(context):
+        if name == params.FILE:
+            files.append(Path(value))
         else:
-            _collect(context, entry, "", inline)
+            inline[name] = value
+    for group in parameter_groups(context, entries, where):
+        if isinstance(group, dict):
+            inline.update(group)
+        else:
+            files.append(group)
     return files, inline
 
 
-def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[str, Any]) -> None:
+def _from_file(context: LaunchContext, entry: ParamEntry, where: Any) -> Path:
+    if entry.name is not None:
+        raise ExecutionError("param: give either 'name' or 'from', not both", where)
+    path = Path(perform_text(context, entry.from_file))
+    params.check_params_file(path, where)
+    if entry.allow_substs is None or not resolve(context, entry.allow_substs, Kind.BOOL,
+                                                 "param.allow_substs"):
+        return path
+    if context.parse_text is None:
+        raise ExecutionError("this run cannot read substitutions in files", where)
+    text = context.parse_text(read_text(path), str(path))
+    performed = perform_text(context, text)
+    params.check_params_text(performed, path, where)
+    return params.write_private_copy(params_folder(context), path.name, performed)
+
+
+def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[str, Any],
+             where: Any) -> None:
     if entry.name is None:
-        raise ExecutionError("param: each parameter needs 'name' (or 'from' a file)")
+        raise ExecutionError("param: each parameter needs 'name' (or 'from' a file)", where)
+    if entry.from_file is not None:
+        raise ExecutionError("param: give either 'name' or 'from', not both", where)
     name = f"{outer}{perform_text(context, entry.name)}"
+    kind = resolve(context, entry.type, Kind.TEXT, "param.type") if entry.type else None
     if entry.children:
+        if entry.value is not None:
+            raise ExecutionError(f"param '{name}': give either 'value' or nested 'param' "
+                                 "entries, not both", where)
+        if kind is not None:
+            raise ExecutionError(f"param '{name}': 'type' goes with 'value', not with nested "
+                                 "'param' entries", where)
         for child in entry.children:
-            _collect(context, child, f"{name}.", out)
+            _collect(context, child, f"{name}.", out, child.where or where)
         return
     if entry.value is None:
-        raise ExecutionError(f"param '{name}' needs a 'value' (or nested 'param' entries)")
-    kind = resolve(context, entry.type, Kind.TEXT, "param.type") if entry.type else None
-    out[name] = params.typed(perform_text(context, entry.value), kind)
+        raise ExecutionError(f"param '{name}' needs a 'value' (or nested 'param' entries)",
+                             where)
+    try:
+        out[name] = params.value_of(context, entry.value, kind, name, entry.separator)
+    except ExecutionError as exc:
+        raise exc if exc.location else exc.at(where) from None
 
 
 def _python_parameters(values: list[Any]) -> list[ParamEntry]:
-    """The Python API's `parameters=[{'a': 1}, 'file.yaml']` as entries."""
+    """The Python API's `parameters=[{'a': 1}, 'file.yaml']` as entries: a dict is one group,
+    its str values strings, its substitutions typed by YAML's rules (as in launch_ros)."""
     entries: list[ParamEntry] = []
     for value in values:
         if isinstance(value, ParamEntry):
             entries.append(value)
         elif isinstance(value, dict):
-            for name, item in value.items():
-                kind = "str" if isinstance(item, str) else None
-                text = str(item).lower() if isinstance(item, bool) else item
-                entries.append(ParamEntry(name=to_text(name), value=to_text(text),
-                                          type=kind and to_text(kind)))
+            entries.append(ParamEntry(children=_python_dict(value), group=True))
         else:
             entries.append(ParamEntry(from_file=to_text(value)))
     return entries
+
+
+def _python_dict(values: dict[Any, Any]) -> list[ParamEntry]:
+    entries = []
+    for name, item in values.items():
+        if isinstance(item, dict):
+            entries.append(ParamEntry(name=to_text(name), children=_python_dict(item)))
+        else:
+            entries.append(python_parameter(name, item))
+    return entries
+
+
+def python_parameter(name: Any, value: Any, kind: str | None = None) -> ParamEntry:
+    """One parameter from Python values (launch_ros's ParameterValue gives `kind`)."""
+    written: Any = [params.python_value(v) for v in value] \
+        if isinstance(value, list | tuple) else params.python_value(value)
+    return ParamEntry(name=to_text(name), value=written, type=kind and to_text(kind))

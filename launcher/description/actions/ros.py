@@ -12,6 +12,7 @@ from launcher.description.action import Action
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import perform_text
+from launcher.errors import ExecutionError
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
@@ -30,11 +31,24 @@ class PushRosNamespace(Action):
 @dataclass(kw_only=True, eq=False)
 class SetParameter(Action):
     name: Any = attr(Kind.TEXT, required=True, doc="Parameter name.")
-    value: Any = attr(Kind.TEXT, required=True, doc="Its value, for every later node.")
+    value: Any = attr(Kind.VALUE, required=True, doc="Its value, for every later node.")
+    type: Any = attr(Kind.TEXT, choices=params.TYPES,
+                     doc="As a node's param: default as launch_ros types the value.")
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        if not isinstance(self.value, params.Written | list):  # the Python API
+            self.value = [params.python_value(v) for v in self.value] \
+                if isinstance(self.value, list | tuple) else params.python_value(self.value)
 
     def execute(self, context: LaunchContext) -> None:
-        params.add_global_parameter(context, perform_text(context, self.name),
-                                    params.typed(perform_text(context, self.value)))
+        name = perform_text(context, self.name)
+        kind = resolve(context, self.type, Kind.TEXT, "type") if self.type else None
+        try:
+            value = params.value_of(context, self.value, kind, name)
+        except ExecutionError as exc:
+            raise exc if exc.location else exc.at(self.where) from None
+        params.add_global_parameter(context, name, value)
 
 
 @action("set_parameters_from_file")
@@ -65,5 +79,6 @@ class SetUseSimTime(Action):
     value: Any = attr(Kind.BOOL, required=True, doc="true: nodes follow /clock.")
 
     def execute(self, context: LaunchContext) -> None:
+        # `-p use_sim_time:=true` on every later node, as launch_ros's Python action does
         params.add_global_parameter(context, "use_sim_time",
                                     resolve(context, self.value, Kind.BOOL, "value"))
