@@ -36,6 +36,8 @@ def build(type_name: str, values: Any, path: str = "", plain: bool = False) -> A
     name = types.ensure(type_name)
     if values is None:
         values = {}
+    if getattr(values, "__msgtype__", None) == name:  # a message already (a stamp's to_msg())
+        values = to_data(values)
     if not isinstance(values, dict):
         raise MessageError(f"{path or name}: expected a map of fields for {name}, "
                            f"got {values!r}")
@@ -110,6 +112,52 @@ def to_data(message: Any) -> Any:
     if fields is None:
         return message
     return {name: to_data(getattr(message, name)) for name in fields if name != "__msgtype__"}
+
+
+# IDL's names for the primitives, as `ros2 topic echo --no-arr` writes an array's type
+_IDL = {"float64": "double", "float32": "float", "bool": "boolean", "byte": "octet",
+        "char": "uint8"}
+
+
+def echo_data(message: Any, type_name: str, *, limit: int | None = 128, no_arr: bool = False,
+              no_str: bool = False) -> Any:
+    """A message as `ros2 topic echo` prints it: strings and arrays cut to `limit` items
+    (with '...'), `no_arr` arrays as '<sequence type: double, length: 3>', `no_str` strings as
+    '<string length: <5>>'."""
+    types = registry()
+    name = types.ensure(type_name)
+    out = {}
+    for field, (kind, detail) in types.fields(name):
+        out[field] = _echo_value(getattr(message, field), kind, detail, limit, no_arr, no_str)
+    return out
+
+
+def _echo_value(value: Any, kind: int, detail: Any, limit: int | None, no_arr: bool,
+                no_str: bool) -> Any:
+    if kind == kinds.NAME:
+        return echo_data(value, detail, limit=limit, no_arr=no_arr, no_str=no_str)
+    if kind == kinds.BASE:
+        value = to_data(value)
+        if isinstance(value, str):
+            if no_str:
+                return f"<string length: <{len(value)}>>"
+            if limit is not None and len(value) > limit:
+                return value[:limit] + "..."
+        return value
+    (inner_kind, inner_detail), count = detail
+    items = to_data(value)
+    if no_arr:
+        inner = inner_detail if inner_kind == kinds.NAME else \
+            _IDL.get(inner_detail[0], inner_detail[0]) if inner_kind == kinds.BASE else "unknown"
+        if kind == kinds.ARRAY:
+            return f"<array type: {inner}[{count}]>"
+        if count:
+            return f"<sequence type: {inner}[{count}], length: {len(items)}>"
+        return f"<sequence type: {inner}, length: {len(items)}>"
+    cut = limit is not None and len(items) > limit
+    shown = [_echo_value(item, inner_kind, inner_detail, limit, no_arr, no_str)
+             for item in (items[:limit] if cut else items)]
+    return [*shown, "..."] if cut else shown
 
 
 _ARRAY_CODES = {"float64": "d", "float32": "f", "int8": "b", "uint8": "B", "int16": "h",

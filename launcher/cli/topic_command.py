@@ -1,4 +1,5 @@
-"""`launcher topic list | echo | pub | hz | info`, as `ros2 topic` has them."""
+"""`launcher topic list | echo | pub | hz | bw | delay | info | type | find`, as `ros2 topic`
+has them."""
 
 from __future__ import annotations
 
@@ -13,17 +14,25 @@ from typing import Any
 import yaml
 
 from launcher.bus import graph, keys
-from launcher.bus.messages import build, ros_repr, to_data
+from launcher.bus.messages import build, echo_data, ros_repr, to_data
 from launcher.bus.names import expand
 from launcher.bus.node import Node, Rate
 from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
-from launcher.cli import positive_count, positive_number
+from launcher.bus.types import registry
+from launcher.cli import positive_count, positive_number, qos_options
+from launcher.description.safe_expression import (
+    ExpressionError,
+    check_expression,
+    evaluate,
+    fields_of,
+)
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("topic", help="topics: list, echo, pub, hz, info, type, find")
+    p = commands.add_parser("topic", help="topics: list, echo, pub, hz, bw, delay, info, type, "
+                                          "find")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="the topics on the bus")
     listing.add_argument("-t", "--show-types", action="store_true")
@@ -44,8 +53,25 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     echo.add_argument("--once", action="store_true", help="print one message and exit")
     echo.add_argument("--field", help="print only this field (a.b.c)")
     echo.add_argument("--csv", action="store_true", help="one comma-separated line each")
-    echo.add_argument("--timeout", type=float, default=None,
+    echo.add_argument("--timeout", type=positive_number, default=None, metavar="SECONDS",
                       help="stop after this many seconds; exit 1 if nothing arrived")
+    echo.add_argument("--no-arr", action="store_true",
+                      help="print arrays and sequences as their type and length")
+    echo.add_argument("--no-str", action="store_true", help="print strings as their length")
+    echo.add_argument("--flow-style", action="store_true",
+                      help="YAML's flow style: each message on one line")
+    echo.add_argument("--filter", metavar="EXPR", dest="filter_expr",
+                      help="print only messages for which EXPR is true; the message is `m` "
+                           "(m.data == 'hi', m.linear.x > 0.5); the same restricted "
+                           "expressions as $(eval)")
+    echo.add_argument("--raw", action="store_true",
+                      help="the serialized message (CDR bytes) instead of its fields")
+    length = echo.add_mutually_exclusive_group()
+    length.add_argument("-l", "--truncate-length", type=positive_count, default=128,
+                        metavar="N", help="cut strings and arrays to N items (default 128)")
+    length.add_argument("-f", "--full-length", action="store_true",
+                        help="print strings and arrays whole")
+    qos_options.add(echo, default="best_available")
     echo.set_defaults(run=run_echo)
     pub = verbs.add_parser("pub", help="publish a message")
     pub.add_argument("topic")
@@ -75,12 +101,25 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     hz.add_argument("--wall-time", action="store_true",
                     help="accepted: the rate is always taken on the wall clock")
     hz.set_defaults(run=run_hz)
+    bw = verbs.add_parser("bw", help="the bandwidth a topic uses, printed every second")
+    bw.add_argument("topics", nargs="+", metavar="topic")
+    bw.add_argument("-w", "--window", type=positive_count, default=100, metavar="N",
+                    help="how many of the latest messages it is taken over (default 100)")
+    bw.set_defaults(run=run_bw)
+    delay = verbs.add_parser("delay", help="how old a topic's messages are when they arrive "
+                                           "(now - header.stamp), printed every second")
+    delay.add_argument("topic")
+    delay.add_argument("-w", "--window", type=positive_count, default=10000, metavar="N",
+                       help="how many of the latest messages it is taken over (default 10000)")
+    delay.add_argument("--use-sim-time", action="store_true",
+                       help="now is the simulation's time (/clock), for stamps in sim time")
+    delay.set_defaults(run=run_delay)
     info = verbs.add_parser("info", help="type and endpoints of a topic")
     info.add_argument("topic")
     info.add_argument("-v", "--verbose", action="store_true",
                       help="each publisher and subscription: node, type, QoS")
     info.set_defaults(run=run_info)
-    for verb in (listing, echo, pub, hz, info, kind, find):
+    for verb in (listing, echo, pub, hz, bw, delay, info, kind, find):
         verb.add_argument("--sim", action="store_true",
                           help="the simulator's own topics (Gazebo's gz-transport side), not "
                                "the ROS graph's")
@@ -174,34 +213,71 @@ def _csv(data: Any) -> str:
 
 
 def run_echo(args: argparse.Namespace) -> int:
+    accept = _filter(args.filter_expr)
     session = open_session("client")
     topic = _topic(args.topic)
     type_name = _type_of(session, topic, args.type, _space(args))
     node = Node("_launcher_topic_echo", argv=[], parameter_services=False, session=session,
                 space=_space(args))
-    done = threading.Event()
     received = threading.Event()
+    shown = echo_options(args)
 
     def show(message: Any) -> None:
-        received.set()
-        data = _pick(to_data(message), args.field)
-        if args.csv:
-            print(_csv(data), flush=True)
+        if args.raw:
+            text = f"{bytes(message)!r}\n"
         else:
-            text = yaml.safe_dump(data, default_flow_style=False, sort_keys=False) \
-                if isinstance(data, dict | list) else f"{data}\n"
-            print(text + "---", flush=True)
+            if accept is not None and not accept(message):
+                return
+            data = _pick(shown(message, type_name), args.field)
+            if args.csv:
+                text = _csv(data)
+            else:
+                text = yaml.safe_dump(data, default_flow_style=args.flow_style,
+                                      sort_keys=False, allow_unicode=True,
+                                      width=float("inf")) \
+                    if isinstance(data, dict | list) else f"{data}\n"
+        received.set()
+        print(text if args.csv else text + "---", flush=True)
         if args.once:
-            done.set()
             node.shutdown()
 
-    node.create_subscription(type_name, topic, show, QoS(depth=10, transient_local=True))
+    node.create_subscription(type_name, topic, show, qos_options.chosen(args), raw=args.raw)
     node.spin(args.timeout)
     node.destroy_node()
     if args.timeout is not None and not received.is_set():  # (with or without --once)
         print(f"no message on {topic} within {args.timeout:g} s", file=sys.stderr)
         return 1
     return 0
+
+
+def echo_options(args: argparse.Namespace) -> Any:
+    """message → printable data, as `--no-arr`, `--no-str` and the truncation say."""
+    limit = None if args.full_length else args.truncate_length
+    return lambda message, type_name: echo_data(message, type_name, limit=limit,
+                                                no_arr=args.no_arr, no_str=args.no_str)
+
+
+def _filter(expression: str | None) -> Any:
+    """`--filter EXPR` as a test of a message; the expression is checked before anything
+    starts, and a message it fails on is said once and not printed."""
+    if expression is None:
+        return None
+    try:
+        check_expression(expression, ("m",))
+    except ExpressionError as exc:
+        raise UsageError(f"--filter: {exc}") from None
+    failed: list[str] = []
+
+    def accept(message: Any) -> bool:
+        try:
+            return bool(evaluate(expression, {"m": fields_of(to_data(message))}))
+        except ExpressionError as exc:
+            if not failed:
+                failed.append(str(exc))
+                print(f"--filter: {exc}; such messages are not printed", file=sys.stderr)
+            return False
+
+    return accept
 
 
 def run_pub(args: argparse.Namespace) -> int:
@@ -302,7 +378,86 @@ def rate_lines(stamps: list[float]) -> str:
             f"std dev: {spread:.5f}s window: {len(stamps)}")
 
 
+def run_bw(args: argparse.Namespace) -> int:
+    """As `ros2 topic bw`: every second, bytes per second over the last `--window` messages,
+    and the messages' sizes."""
+    session = open_session("client")
+    node = Node("_launcher_topic_bw", argv=[], parameter_services=False, session=session,
+                space=_space(args))
+    topics = [_topic(t) for t in args.topics]
+    kept: dict[str, deque[tuple[float, int]]] = {t: deque(maxlen=args.window) for t in topics}
+    for topic in topics:
+        node.create_subscription(
+            _type_of(session, topic, None, _space(args)), topic,
+            lambda m, into=kept[topic]: into.append((time.monotonic(), len(m))), raw=True)
+        print(f"Subscribed to [{topic}]", flush=True)
+    while not node.interrupted:
+        node.spin(1.0)
+        for topic in topics:
+            if len(topics) > 1:
+                print(f"{topic}:")
+            print(bandwidth_lines(list(kept[topic]), time.monotonic()), flush=True)
+    node.destroy_node()
+    return 0
+
+
+def _size(count: float) -> str:
+    for unit, scale in (("MB", 1e6), ("KB", 1e3)):
+        if count >= scale:
+            return f"{count / scale:.2f} {unit}"
+    return f"{count:.0f} B"
+
+
+def bandwidth_lines(samples: list[tuple[float, int]], now: float) -> str:
+    """`ros2 topic bw`'s lines for (arrival time, size) samples."""
+    if len(samples) < 2:
+        return "no new messages" if not samples else "waiting for a second message"
+    sizes = [size for _, size in samples]
+    span = max(now - samples[0][0], 1e-9)
+    return (f"{_size(sum(sizes) / span)}/s from {len(sizes)} messages\n"
+            f"\tMessage size mean: {_size(sum(sizes) / len(sizes))} min: {_size(min(sizes))} "
+            f"max: {_size(max(sizes))}")
+
+
+def run_delay(args: argparse.Namespace) -> int:
+    """As `ros2 topic delay`: every second, how old messages are on arrival (their
+    header.stamp against now), over the last `--window` messages."""
+    session = open_session("client")
+    argv = ["--ros-args", "-p", "use_sim_time:=true"] if args.use_sim_time else []
+    node = Node("_launcher_topic_delay", argv=argv, parameter_services=False, session=session,
+                space=_space(args))
+    topic = _topic(args.topic)
+    type_name = _type_of(session, topic, None, _space(args))
+    if "header" not in dict(registry().fields(type_name)):
+        node.destroy_node()
+        raise UsageError(f"{topic} ({type_name}) has no header.stamp to take a delay from")
+    delays: deque[float] = deque(maxlen=args.window)
+
+    def arrived(message: Any) -> None:
+        stamp = message.header.stamp
+        delays.append(node.get_clock().now().nanoseconds / 1e9 -
+                      (stamp.sec + stamp.nanosec / 1e9))
+
+    node.create_subscription(type_name, topic, arrived, qos_options.PROFILES["best_available"])
+    shown = 0
+    while not node.interrupted:
+        node.spin(1.0)
+        if not delays or len(delays) == shown and shown == delays.maxlen:
+            print("no new messages", flush=True)
+            continue
+        shown = len(delays)
+        values = list(delays)
+        mean = sum(values) / len(values)
+        spread = (sum((d - mean) ** 2 for d in values) / len(values)) ** 0.5
+        print(f"average delay: {mean:.3f}\n\tmin: {min(values):.3f}s max: {max(values):.3f}s "
+              f"std dev: {spread:.5f}s window: {len(values)}", flush=True)
+    node.destroy_node()
+    return 0
+
+
 def run_info(args: argparse.Namespace) -> int:
+    """As `ros2 topic info [-v]`: the type, the counts, and with -v each endpoint with its QoS
+    in ros2's layout."""
     session = open_session("client")
     topic = _topic(args.topic)
     info = graph.topics(session, _space(args)).get(topic)
@@ -312,8 +467,29 @@ def run_info(args: argparse.Namespace) -> int:
     print(f"Type: {', '.join(sorted(info.types))}")
     for title, endpoints in (("Publisher", info.publishers),
                              ("Subscription", info.subscribers)):
+        if args.verbose:
+            print()
         print(f"{title} count: {len(endpoints)}")
         if args.verbose:
             for entity in sorted(endpoints, key=lambda e: e.node_fqn):
-                print(f"  {entity.node_fqn}  {entity.type_name}  QoS {entity.qos}")
+                print()
+                print(endpoint_lines(entity, title.upper()))
     return 0
+
+
+def endpoint_lines(entity: Any, kind: str) -> str:
+    """One endpoint as `ros2 topic info -v` prints it."""
+    qos = QoS.from_key(entity.qos)
+    lines = [f"Node name: {entity.node}", f"Node namespace: {entity.namespace or '/'}",
+             f"Topic type: {entity.type_name}", f"Topic type hash: {entity.type_hash}",
+             f"Endpoint type: {kind}", f"GID: {entity.zid}.{entity.node_id}.{entity.entity_id}",
+             "QoS profile:"]
+    if qos is None:
+        return "\n".join([*lines, "  (not announced)"])
+    return "\n".join([
+        *lines,
+        f"  Reliability: {'RELIABLE' if qos.reliable else 'BEST_EFFORT'}",
+        f"  History (Depth): KEEP_LAST ({qos.depth})",
+        f"  Durability: {'TRANSIENT_LOCAL' if qos.transient_local else 'VOLATILE'}",
+        "  Lifespan: Infinite", "  Deadline: Infinite", "  Liveliness: AUTOMATIC",
+        "  Liveliness lease duration: Infinite"])

@@ -46,18 +46,45 @@ MAX_EXPRESSION = 100_000  # characters of the expression itself
 _FORMAT_SPEC = re.compile(r"%(?:\([^)]*\))?[-#0 +]*(\*|\d*)(?:\.(\*|\d*))?[hlL]?[a-zA-Z%]")
 
 
-def evaluate(expression: str) -> Any:
+class Fields(dict):
+    """A message's fields, which an expression reads as attributes (`m.linear.x`)."""
+
+
+def fields_of(data: Any) -> Any:
+    """Plain data (a message as dicts and lists) with its maps readable as attributes."""
+    if isinstance(data, dict):
+        return Fields((k, fields_of(v)) for k, v in data.items())
+    if isinstance(data, list):
+        return [fields_of(v) for v in data]
+    return data
+
+
+def _parse(expression: str) -> ast.expr:
     if len(expression) > MAX_EXPRESSION:
         raise ExpressionError(f"the expression is {len(expression)} characters long; the limit "
                               f"is {MAX_EXPRESSION}")
     try:
-        tree = ast.parse(expression.strip(), mode="eval")
+        return ast.parse(expression.strip(), mode="eval").body
     except SyntaxError as exc:
         raise ExpressionError(f"invalid expression: {exc.msg} (column {exc.offset})") from None
     except (RecursionError, MemoryError):
         raise ExpressionError("the expression is nested too deeply") from None
+
+
+def check_expression(expression: str, names: tuple[str, ...] = ()) -> None:
+    """Refuse, before anything runs, an expression that does not parse or names an unknown
+    name (`names`: the ones the caller will give)."""
+    for node in ast.walk(_parse(expression)):
+        if isinstance(node, ast.Name) and node.id not in _NAMES and node.id not in names:
+            known = ", ".join(names) if names else "none"
+            raise ExpressionError(f"unknown name '{node.id}' (the names given: {known})")
+
+
+def evaluate(expression: str, names: dict[str, Any] | None = None) -> Any:
+    """The value of `expression`; `names` are more names it may read (a message as Fields)."""
+    body = _parse(expression)
     try:
-        return _Evaluator().visit(tree.body)
+        return _Evaluator(names or {}).visit(body)
     except ExpressionError:
         raise
     except RecursionError:
@@ -67,6 +94,9 @@ def evaluate(expression: str) -> Any:
 
 
 class _Evaluator(ast.NodeVisitor):
+    def __init__(self, names: dict[str, Any]) -> None:
+        self.names = names
+
     def visit(self, node: ast.AST) -> Any:
         return _checked(super().visit(node))
 
@@ -79,6 +109,8 @@ class _Evaluator(ast.NodeVisitor):
         return node.value
 
     def visit_Name(self, node: ast.Name) -> Any:
+        if node.id in self.names:
+            return self.names[node.id]
         if node.id not in _NAMES:
             raise ExpressionError(f"unknown name '{node.id}'")
         return _NAMES[node.id]
@@ -144,6 +176,11 @@ class _Evaluator(ast.NodeVisitor):
             if node.attr not in _MATH:
                 raise ExpressionError(f"math has no name '{node.attr}'")
             return _MATH[node.attr]
+        target = self.visit(node.value)
+        if isinstance(target, Fields):
+            if node.attr not in target:
+                raise ExpressionError(f"no field '{node.attr}'; fields: {', '.join(target)}")
+            return target[node.attr]
         raise ExpressionError(f"attribute access '.{node.attr}' is not allowed")
 
     def visit_Call(self, node: ast.Call) -> Any:

@@ -31,3 +31,33 @@ def test_messages_print_as_rclpy_prints_them():
     assert ros_repr(build("std_msgs/msg/Float64MultiArray", {"data": [1.0, 2.0]})) == \
         ("std_msgs.msg.Float64MultiArray(layout=std_msgs.msg.MultiArrayLayout(dim=[], "
          "data_offset=0), data=array('d', [1.0, 2.0]))")
+
+
+def test_filter_expressions_read_a_message_and_nothing_else():
+    from launcher.description.safe_expression import (
+        ExpressionError,
+        check_expression,
+        evaluate,
+        fields_of,
+    )
+
+    m = fields_of({"linear": {"x": 0.75}, "data": "hi", "items": [{"v": 2}]})
+    assert evaluate("m.linear.x > 0.5 and m.data.upper() == 'HI'", {"m": m}) is True
+    assert evaluate("m.items[0].v * 2", {"m": m}) == 4
+    for bad in ("m.__class__", "m.linear.y", "m.data.format()", "open('f')"):
+        with pytest.raises(ExpressionError):
+            evaluate(bad, {"m": m})
+    with pytest.raises(ExpressionError, match="unknown name 'os'"):
+        check_expression("os.system('x')", ("m",))
+    check_expression("m.data == 'x'", ("m",))
+
+
+def test_bandwidth_lines_as_ros2_prints_them():
+    from launcher.cli.topic_command import bandwidth_lines
+
+    samples = [(0.0, 100), (0.5, 300), (1.0, 200)]
+    first, second = bandwidth_lines(samples, 2.0).split("\n")
+    assert first == "300 B/s from 3 messages"
+    assert second == "\tMessage size mean: 200 B min: 100 B max: 300 B"
+    assert bandwidth_lines([(0.0, 5000), (1.0, 5000)], 1.0).startswith("10.00 KB/s")
+    assert bandwidth_lines([], 1.0) == "no new messages"
