@@ -145,7 +145,7 @@ def _echo_value(value: Any, kind: int, detail: Any, limit: int | None, no_arr: b
                 return value[:limit] + "..."
         return value
     (inner_kind, inner_detail), count = detail
-    items = to_data(value)
+    items = value.tolist() if hasattr(value, "tolist") else list(value)
     if no_arr:
         inner = inner_detail if inner_kind == kinds.NAME else \
             _IDL.get(inner_detail[0], inner_detail[0]) if inner_kind == kinds.BASE else "unknown"

@@ -61,3 +61,21 @@ def test_bandwidth_lines_as_ros2_prints_them():
     assert second == "\tMessage size mean: 200 B min: 100 B max: 300 B"
     assert bandwidth_lines([(0.0, 5000), (1.0, 5000)], 1.0).startswith("10.00 KB/s")
     assert bandwidth_lines([], 1.0) == "no new messages"
+
+
+def test_echo_data_of_nested_messages_and_arrays():
+    from launcher.bus.messages import build, echo_data
+
+    message = build("tf2_msgs/msg/TFMessage", {"transforms": [
+        {"child_frame_id": "left_wheel", "transform": {"translation": {"x": 1.5}}}]})
+    data = echo_data(message, "tf2_msgs/msg/TFMessage")
+    assert data["transforms"][0]["child_frame_id"] == "left_wheel"
+    assert data["transforms"][0]["transform"]["translation"]["x"] == 1.5
+    short = echo_data(message, "tf2_msgs/msg/TFMessage", no_arr=True)
+    assert short["transforms"] == "<sequence type: geometry_msgs/msg/TransformStamped, length: 1>"
+    odometry = echo_data(build("nav_msgs/msg/Odometry", {}), "nav_msgs/msg/Odometry",
+                         no_arr=True)
+    assert odometry["pose"]["covariance"] == "<array type: double[36]>"
+    cut = echo_data(build("std_msgs/msg/Float64MultiArray", {"data": [1.0, 2.0, 3.0]}),
+                    "std_msgs/msg/Float64MultiArray", limit=2)
+    assert cut["data"] == [1.0, 2.0, "..."]
