@@ -168,6 +168,34 @@ class Node:
     def add_on_set_parameters_callback(self, callback: Callable[[str, Any], None]) -> None:
         self._on_set.append(callback)
 
+    # A request from outside (`param set`/`delete`, ros2 param): `gate` (rclpy's node, with its
+    # declared types, read-only flags and set callbacks) may refuse it with a reason; `describer`
+    # gives a parameter's descriptor fields.
+    gate: Callable[[str, Any], str | None] | None = None
+    describer: Callable[[str], dict[str, Any]] | None = None
+
+    def request_parameter(self, name: str, value: Any) -> str | None:
+        """Set (or, with None, delete) a parameter as asked from outside; the reason it was
+        refused, or None."""
+        if self.gate is not None:
+            refused = self.gate(name, value)
+            if refused:
+                return refused
+        if value is None:
+            if name not in self._parameters:
+                return f"parameter '{name}' is not set"
+            del self._parameters[name]
+            return None
+        self.set_parameter_value(name, value)
+        return None
+
+    def describe_parameter(self, name: str) -> dict[str, Any]:
+        if self.describer is not None:
+            return self.describer(name)
+        from launcher.bus.parameters import type_of
+
+        return {"name": name, "type": type_of(self._parameters.get(name))}
+
     @property
     def parameters(self) -> dict[str, Any]:
         return dict(self._parameters)

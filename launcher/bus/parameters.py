@@ -1,6 +1,6 @@
 """The parameter services every node offers, as ROS 2 nodes do: `~/list_parameters`,
-`~/get_parameters`, `~/set_parameters` (rcl_interfaces), and Python values <->
-rcl_interfaces/msg/ParameterValue."""
+`~/get_parameters`, `~/set_parameters`, `~/describe_parameters` (rcl_interfaces), and Python
+values <-> rcl_interfaces/msg/ParameterValue. A set with no value (NOT_SET) deletes."""
 
 from __future__ import annotations
 
@@ -13,13 +13,19 @@ BOOL_ARRAY, INTEGER_ARRAY, DOUBLE_ARRAY, STRING_ARRAY = 6, 7, 8, 9
 VALUE = "rcl_interfaces/msg/ParameterValue"
 LIST, GET, SET = ("rcl_interfaces/srv/ListParameters", "rcl_interfaces/srv/GetParameters",
                   "rcl_interfaces/srv/SetParameters")
+DESCRIBE = "rcl_interfaces/srv/DescribeParameters"
 # Their RIHS01 hashes (Jazzy's rcl_interfaces; tests/unit check them against the .srv files):
 # with them, a node offers the services without reading their definitions until asked.
 HASHES = {
     LIST: "RIHS01_3e6062bfbb27bfb8730d4cef2558221f51a11646d78e7bb30a1e83afac3aad9d",
     GET: "RIHS01_bf9803d5c74cf989a5de3e0c2e99444599a627c7ff75f97b8c05b01003675cbc",
     SET: "RIHS01_56eed9a67e169f9cb6c1f987bc88f868c14a8fc9f743a263bc734c154015d7e0",
+    DESCRIBE: "RIHS01_845b484d71eb0673dae682f2e3ba3c4851a65a3dcfb97bddd82c5b57e91e4cff",
 }
+TYPE_NAMES = {NOT_SET: "not set", BOOL: "boolean", INTEGER: "integer", DOUBLE: "double",
+              STRING: "string", 5: "byte array", BOOL_ARRAY: "boolean array",
+              INTEGER_ARRAY: "integer array", DOUBLE_ARRAY: "double array",
+              STRING_ARRAY: "string array"}
 
 
 def to_message(value: Any) -> Any:
@@ -76,11 +82,24 @@ def serve(node: Any) -> None:
     def set_parameters(request: Any, response: Any) -> Any:
         results = []
         for parameter in request.parameters:
-            node.set_parameter_value(parameter.name, from_message(parameter.value))
-            results.append(build("rcl_interfaces/msg/SetParametersResult", {"successful": True}))
+            refused = node.request_parameter(parameter.name, from_message(parameter.value))
+            results.append(build("rcl_interfaces/msg/SetParametersResult",
+                                 {"successful": refused is None, "reason": refused or ""}))
         response.results = results
+        return response
+
+    def describe_parameters(request: Any, response: Any) -> Any:
+        response.descriptors = [build("rcl_interfaces/msg/ParameterDescriptor",
+                                      node.describe_parameter(name)) for name in request.names]
         return response
 
     node.create_service(LIST, "~/list_parameters", list_parameters, type_hash=HASHES[LIST])
     node.create_service(GET, "~/get_parameters", get_parameters, type_hash=HASHES[GET])
     node.create_service(SET, "~/set_parameters", set_parameters, type_hash=HASHES[SET])
+    node.create_service(DESCRIBE, "~/describe_parameters", describe_parameters,
+                        type_hash=HASHES[DESCRIBE])
+
+
+def type_of(value: Any) -> int:
+    """The ParameterValue type number of a Python value."""
+    return to_message(value).type if value is not None else NOT_SET

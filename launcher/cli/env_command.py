@@ -16,7 +16,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         "env", help="print the environment the workspace's hooks make",
         description="Print the changes that every package's environment hooks make, as "
                     "commands for a shell (eval \"$(launcher env)\") or as JSON.")
-    p.add_argument("--shell", choices=("sh", "bash", "zsh", "json"), default="sh")
+    p.add_argument("--shell", choices=("sh", "bash", "zsh", "json"), default="sh",
+                   help="the form to print: shell commands (default sh) or JSON")
     p.add_argument("--zenoh", action="store_true",
                    help="instead, the settings that put another Zenoh program on the graph "
                         "(rmw_zenoh's ZENOH_SESSION_CONFIG_URI)")

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from launcher import compat
 from launcher.bus import discovery
+from launcher.cli import completion
 from launcher.cli.components import BusLoader
 from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
@@ -37,8 +38,10 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                     "process that exited with a non-zero code on its own; 130 after SIGINT "
                     "(Ctrl-C); 143 after SIGTERM.")
     p.add_argument("file", metavar="[PKG] FILE",
-                   help="the launch file; or a package and a launch file in it")
-    p.add_argument("arguments", nargs="*", metavar="name:=value", help="launch arguments")
+                   help="the launch file; or a package and a launch file in it"
+                   ).completer = completion.launch_targets  # type: ignore[attr-defined]
+    p.add_argument("arguments", nargs="*", metavar="name:=value", help="launch arguments"
+                   ).completer = completion.launch_files  # type: ignore[attr-defined]
     p.add_argument("-s", "--show-args", "--show-arguments", action="store_true",
                    help="list the launch arguments (also of included files) and exit")
     p.add_argument("-p", "--print", "--print-description", action="store_true",

@@ -18,18 +18,22 @@ COMMANDS = {
     "launch": ("launcher.cli.launch_command", "run a launch file"),
     "pkg": ("launcher.cli.pkg_command", "packages: list, find, create"),
     "env": ("launcher.cli.env_command", "print the environment the workspace's hooks make"),
-    "topic": ("launcher.cli.topic_command", "topics: list, echo, pub, hz, info, type, find"),
-    "bag": ("launcher.cli.bag_command", "record and play rosbag2 (MCAP) bags"),
+    "topic": ("launcher.cli.topic_command",
+              "topics: list, echo, pub, hz, bw, delay, info, type, find"),
+    "bag": ("launcher.cli.bag_command", "record and play rosbag2 bags: record, play, info, "
+                                        "list"),
     "service": ("launcher.cli.service_command", "services: list, call, type, find, info"),
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "param": ("launcher.cli.param_command",
-              "parameters of a running node: list, get, set, dump, load"),
+              "parameters of a running node: list, get, set, describe, delete, dump, load"),
     "interface": ("launcher.cli.interface_command",
                   "message and service types: list, show, proto, package, packages"),
     "run": ("launcher.cli.run_command", "run an executable of a package (as ros2 run / rosrun)"),
     "router": ("launcher.cli.router_command", "run a standing router of the graph"),
     "sim": ("launcher.cli.sim_command", "run the MuJoCo world server"),
     "gz": ("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model)"),
+    "doctor": ("launcher.cli.doctor_command", "check the install and the workspace; say what "
+                                              "to fix"),
 }
 
 
@@ -78,6 +82,10 @@ def build_parser(selected: str | None) -> tuple[argparse.ArgumentParser,
 
 
 def main(argv: list[str] | None = None) -> int:
+    if "_ARGCOMPLETE" in os.environ:  # the shell asks for completions (hooks/setup.sh)
+        from launcher.cli.completion import complete
+
+        return complete(build_parser, COMMANDS)
     argv = sys.argv[1:] if argv is None else argv
     if argv[:1] == ["sim"]:  # every flag after it is the sim's own (gz sim's), -h included
         from launcher.cli.sim_command import run_sim

@@ -10,35 +10,46 @@ from launcher.bus import parameters as params
 from launcher.bus.messages import build
 from launcher.bus.node import Node
 from launcher.bus.ros_args import typed
+from launcher.cli import completion, positive_number
 from launcher.errors import LaunchError
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("param",
-                            help="parameters of a running node: list, get, set, dump, load")
+    p = commands.add_parser("param", help="parameters of a running node: list, get, set, "
+                                          "describe, delete, dump, load")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="a node's parameter names")
-    listing.add_argument("node")
+    listing.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
     listing.set_defaults(run=run_list)
     get = verbs.add_parser("get", help="one parameter's value")
-    get.add_argument("node")
+    get.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
     get.add_argument("name")
     get.set_defaults(run=run_get)
     put = verbs.add_parser("set", help="set one parameter (the value is read as YAML)")
-    put.add_argument("node")
+    put.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
     put.add_argument("name")
     put.add_argument("value")
     put.set_defaults(run=run_set)
+    describe = verbs.add_parser("describe", help="parameters' types, descriptions and "
+                                                 "constraints")
+    describe.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
+    describe.add_argument("names", nargs="+", metavar="name")
+    describe.set_defaults(run=run_describe)
+    delete = verbs.add_parser("delete", help="delete parameters (a node refuses it for one "
+                                             "declared with a fixed type)")
+    delete.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
+    delete.add_argument("names", nargs="+", metavar="name")
+    delete.set_defaults(run=run_delete)
     dump = verbs.add_parser("dump", help="all of a node's parameters, as a params file")
-    dump.add_argument("node")
+    dump.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
     dump.set_defaults(run=run_dump)
     load = verbs.add_parser("load", help="set a node's parameters from a params file")
-    load.add_argument("node")
+    load.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
     load.add_argument("file", help="a params YAML file (its /NODE or /** section)")
     load.set_defaults(run=run_load)
-    for sub in (listing, get, put, dump, load):
-        sub.add_argument("--timeout", type=float, default=5.0, help="seconds to wait for "
-                                                                     "the node's answer")
+    for sub in (listing, get, put, describe, delete, dump, load):
+        sub.add_argument("--timeout", type=positive_number, default=5.0, metavar="SECONDS",
+                         help="how long to wait for the node's answer (default 5 s)")
 
 
 def _call(args: argparse.Namespace, service: str, suffix: str, request: dict) -> object:
@@ -74,9 +85,53 @@ def _parameter(name: str, value: Any) -> dict:
 def run_set(args: argparse.Namespace) -> int:
     response = _call(args, params.SET, "set_parameters",
                      {"parameters": [_parameter(args.name, typed(args.value))]})
-    print("Set parameter successful" if response.results[0].successful else
-          f"Setting parameter failed: {response.results[0].reason}")
+    if response.results[0].successful:
+        print("Set parameter successful")
+        return 0
+    print(f"Setting parameter failed: {response.results[0].reason}")
+    return 1
+
+
+def run_describe(args: argparse.Namespace) -> int:
+    """As `ros2 param describe NODE NAME…`."""
+    response = _call(args, params.DESCRIBE, "describe_parameters", {"names": args.names})
+    for descriptor in response.descriptors:
+        print(describe_lines(descriptor))
     return 0
+
+
+def describe_lines(descriptor: Any) -> str:
+    lines = [f"Parameter name: {descriptor.name}",
+             f"  Type: {params.TYPE_NAMES.get(descriptor.type, 'unknown')}"]
+    if descriptor.description:
+        lines.append(f"  Description: {descriptor.description}")
+    constraints = []
+    if descriptor.read_only:
+        constraints.append("    Read only: true")
+    for span in list(descriptor.floating_point_range) + list(descriptor.integer_range):
+        constraints += [f"    Min value: {span.from_value}", f"    Max value: {span.to_value}"]
+        if span.step:
+            constraints.append(f"    Step: {span.step}")
+    if descriptor.additional_constraints:
+        constraints.append(f"    {descriptor.additional_constraints}")
+    if constraints:
+        lines += ["  Constraints:", *constraints]
+    return "\n".join(lines)
+
+
+def run_delete(args: argparse.Namespace) -> int:
+    """As `ros2 param delete NODE NAME…`: each result said; exit 1 if one was refused."""
+    response = _call(args, params.SET, "set_parameters",
+                     {"parameters": [{"name": n, "value": {"type": params.NOT_SET}}
+                                     for n in args.names]})
+    failed = 0
+    for result in response.results:
+        if result.successful:
+            print("Deleted parameter successfully")
+        else:
+            failed += 1
+            print(f"Deleting parameter failed: {result.reason}")
+    return 1 if failed else 0
 
 
 def run_dump(args: argparse.Namespace) -> int:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from launcher.cli import completion
 from launcher.cli.workspace import load_index
 from launcher.packages.executables import executables
 
@@ -19,16 +20,20 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                            ("share", "the share folder of a package (the package itself)"),
                            ("xml", "the package.xml of a package")):
         sub = verbs.add_parser(verb, help=helptext)
-        sub.add_argument("package", metavar="PKG")
+        sub.add_argument("package", metavar="PKG").completer = \
+            completion.packages  # type: ignore[attr-defined]
         sub.set_defaults(run=run_lookup, verb=verb)
     exe = verbs.add_parser("executables", help="the executables of one or every package")
     exe.add_argument("package", metavar="PKG", nargs="?")
     exe.set_defaults(run=run_executables)
     create = verbs.add_parser("create", help="write a new package from templates")
     create.add_argument("name", metavar="NAME")
-    create.add_argument("--dependencies", nargs="*", default=[], metavar="PKG")
-    create.add_argument("--destination-directory", default=".", metavar="DIR")
-    create.add_argument("--description", default="A launcher package.")
+    create.add_argument("--dependencies", nargs="*", default=[], metavar="PKG",
+                        help="packages it depends on (package.xml <depend>)")
+    create.add_argument("--destination-directory", default=".", metavar="DIR",
+                        help="where to make it (default: here)")
+    create.add_argument("--description", default="A launcher package.",
+                        help="its package.xml description")
     create.set_defaults(run=run_create)
 
 

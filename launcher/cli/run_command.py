@@ -9,6 +9,7 @@ if none runs (rmw_zenoh would make you start `rmw_zenohd` by hand).
 
 from __future__ import annotations
 
+import argparse
 import os
 import shlex
 import sys
@@ -17,6 +18,20 @@ from launcher import compat
 from launcher.errors import LaunchError, UsageError
 
 USAGE = "usage: launcher run [--prefix PREFIX] [--debug] PACKAGE EXECUTABLE [ARGS…]"
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """The command's arguments for tab completion (a run itself is parsed by run_run, which
+    leaves every word after EXECUTABLE to it)."""
+    from launcher.cli import completion
+
+    p = commands.add_parser("run", help="run an executable of a package (as ros2 run / rosrun)")
+    p.add_argument("--prefix", metavar="PREFIX",
+                   help="run it under PREFIX (e.g. 'gdb -ex run --args')")
+    p.add_argument("--debug", action="store_true", help="tracebacks with errors")
+    p.add_argument("package").completer = completion.packages  # type: ignore[attr-defined]
+    p.add_argument("executable").completer = completion.executables  # type: ignore
+    p.add_argument("arguments", nargs=argparse.REMAINDER, help="the executable's own")
 
 
 def run_run(argv: list[str]) -> int:

@@ -20,7 +20,7 @@ from launcher.bus.node import Node, Rate
 from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
 from launcher.bus.types import registry
-from launcher.cli import positive_count, positive_number, qos_options
+from launcher.cli import completion, positive_count, positive_number, qos_options
 from launcher.description.safe_expression import (
     ExpressionError,
     check_expression,
@@ -35,20 +35,21 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                                           "find")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="the topics on the bus")
-    listing.add_argument("-t", "--show-types", action="store_true")
+    listing.add_argument("-t", "--show-types", action="store_true",
+                         help="each topic's message type too")
     listing.add_argument("-v", "--verbose", action="store_true",
                          help="published and subscribed topics, with their types and counts")
     listing.add_argument("-c", "--count-topics", action="store_true",
                          help="how many topics there are")
     listing.set_defaults(run=run_list)
     kind = verbs.add_parser("type", help="the type of a topic")
-    kind.add_argument("topic")
+    kind.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
     kind.set_defaults(run=run_type)
     find = verbs.add_parser("find", help="the topics of a type")
     find.add_argument("type", help="a message type (std_msgs/msg/String)")
     find.set_defaults(run=run_find)
     echo = verbs.add_parser("echo", help="print the messages on a topic")
-    echo.add_argument("topic")
+    echo.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
     echo.add_argument("type", nargs="?", help="the message type (default: as published)")
     echo.add_argument("--once", action="store_true", help="print one message and exit")
     echo.add_argument("--field", help="print only this field (a.b.c)")
@@ -74,13 +75,14 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     qos_options.add(echo, default="best_available")
     echo.set_defaults(run=run_echo)
     pub = verbs.add_parser("pub", help="publish a message")
-    pub.add_argument("topic")
+    pub.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
     pub.add_argument("type")
     pub.add_argument("values", nargs="?", default="{}", help="the message as YAML")
     pub.add_argument("-r", "--rate", type=positive_number, default=1.0,
                      help="messages per second (> 0)")
-    pub.add_argument("-1", "--once", action="store_true")
-    pub.add_argument("-t", "--times", type=int, default=0)
+    pub.add_argument("-1", "--once", action="store_true", help="publish one message and exit")
+    pub.add_argument("-t", "--times", type=int, default=0, metavar="N",
+                     help="publish N messages and exit (default: until Ctrl-C)")
     pub.add_argument("--latched", action="store_true", help="transient local")
     pub.add_argument("-w", "--wait-matching-subscriptions", type=int, default=None,
                      metavar="N", help="publish once N subscriptions have matched (default: "
@@ -94,7 +96,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                      help="keep the publisher this long after the last message")
     pub.set_defaults(run=run_pub)
     hz = verbs.add_parser("hz", help="the rate of one or more topics, printed every second")
-    hz.add_argument("topics", nargs="+", metavar="topic")
+    hz.add_argument("topics", nargs="+", metavar="topic").completer = \
+        completion.topics  # type: ignore[attr-defined]
     hz.add_argument("-w", "--window", type=positive_count, default=10000, metavar="N",
                     help="how many of the latest messages the rate is taken over (messages, "
                          "as ROS 2 counts it; default 10000)")
@@ -102,20 +105,21 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                     help="accepted: the rate is always taken on the wall clock")
     hz.set_defaults(run=run_hz)
     bw = verbs.add_parser("bw", help="the bandwidth a topic uses, printed every second")
-    bw.add_argument("topics", nargs="+", metavar="topic")
+    bw.add_argument("topics", nargs="+", metavar="topic").completer = \
+        completion.topics  # type: ignore[attr-defined]
     bw.add_argument("-w", "--window", type=positive_count, default=100, metavar="N",
                     help="how many of the latest messages it is taken over (default 100)")
     bw.set_defaults(run=run_bw)
     delay = verbs.add_parser("delay", help="how old a topic's messages are when they arrive "
                                            "(now - header.stamp), printed every second")
-    delay.add_argument("topic")
+    delay.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
     delay.add_argument("-w", "--window", type=positive_count, default=10000, metavar="N",
                        help="how many of the latest messages it is taken over (default 10000)")
     delay.add_argument("--use-sim-time", action="store_true",
                        help="now is the simulation's time (/clock), for stamps in sim time")
     delay.set_defaults(run=run_delay)
     info = verbs.add_parser("info", help="type and endpoints of a topic")
-    info.add_argument("topic")
+    info.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
     info.add_argument("-v", "--verbose", action="store_true",
                       help="each publisher and subscription: node, type, QoS")
     info.set_defaults(run=run_info)

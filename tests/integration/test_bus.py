@@ -328,7 +328,9 @@ def test_services_round_trip_and_the_cli(bus):
     nodes = bus.run("node", "list")
     assert nodes.stdout.split() == ["/switch"]
     info = bus.run("node", "info", "/switch")
-    assert "Service Servers:\n    /switch/enable: std_srvs/srv/SetBool" in info.stdout
+    servers = info.stdout.split("Service Servers:\n")[1].split("  Service Clients:")[0]
+    assert "    /switch/enable: std_srvs/srv/SetBool\n" in servers, info.stdout
+    assert "    /switch/describe_parameters: rcl_interfaces/srv/DescribeParameters" in servers
     silent = bus.run("service", "call", "/nobody", "std_srvs/srv/Trigger", "--timeout", "0.5")
     assert silent.returncode == 1 and "did not answer within 0.5 s" in silent.stderr
     unknown = bus.run("service", "call", "/x", "std_srvs/srv/Trigr")

@@ -222,6 +222,58 @@ print("ok:", rclpy.ok())
     assert "ok: False" in out
 
 
+
+def test_param_describe_delete_and_refusals_on_an_rclpy_node(examples):
+    """`param describe`, `param delete` and `param set` ask an rclpy node that keeps its
+    declared types, read-only flags and set callbacks: refusals come back with the reason."""
+    node_package(examples, "rclpy_params", {"tuned.py": '''
+import rclpy
+from rclpy.node import Node
+from rcl_interfaces.msg import FloatingPointRange, ParameterDescriptor, SetParametersResult
+rclpy.init()
+node = Node("tuned")
+node.declare_parameter("gain", 1.0, ParameterDescriptor(
+    description="how hard it pushes",
+    floating_point_range=[FloatingPointRange(from_value=0.0, to_value=10.0, step=0.5)]))
+node.declare_parameter("frame", "base", ParameterDescriptor(read_only=True))
+node.declare_parameter("spare", 1, ParameterDescriptor(dynamic_typing=True))
+node.add_on_set_parameters_callback(lambda ps: SetParametersResult(
+    successful=all(p.value != 9.5 for p in ps), reason="9.5 is too hard"))
+print("ready", flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+'''})
+    proc = examples.start("run", "rclpy_params", "tuned.py", output="tuned.txt")
+    try:
+        examples.wait_for_output("ready", 30, "tuned.txt")
+        described = examples.run("param", "describe", "/tuned", "gain", "frame").stdout
+        assert described == (
+            "Parameter name: gain\n  Type: double\n  Description: how hard it pushes\n"
+            "  Constraints:\n    Min value: 0.0\n    Max value: 10.0\n    Step: 0.5\n"
+            "Parameter name: frame\n  Type: string\n  Constraints:\n    Read only: true\n")
+        refused = examples.run("param", "set", "/tuned", "gain", "9.5")
+        assert refused.returncode == 1
+        assert refused.stdout == "Setting parameter failed: 9.5 is too hard\n"
+        wrong = examples.run("param", "set", "/tuned", "gain", "fast").stdout
+        assert "Wrong parameter type, parameter {gain} is of type {double}" in wrong
+        fixed = examples.run("param", "set", "/tuned", "frame", "odom").stdout
+        assert "cannot be set because it is read-only" in fixed
+        assert examples.run("param", "set", "/tuned", "gain", "2.5").returncode == 0
+        assert examples.run("param", "get", "/tuned", "gain").stdout.strip() == \
+            "Double value is: 2.5"
+        static = examples.run("param", "delete", "/tuned", "gain")
+        assert static.returncode == 1 and static.stdout == \
+            "Deleting parameter failed: cannot undeclare a statically typed parameter\n"
+        deleted = examples.run("param", "delete", "/tuned", "spare")
+        assert deleted.returncode == 0 and deleted.stdout == "Deleted parameter successfully\n"
+        names = examples.run("param", "list", "/tuned").stdout.split()
+        assert "spare" not in names and "gain" in names
+    finally:
+        assert stop(proc) in (0, 130)
+
+
 ROSPY_NODES = {
     "talker.py": '''#!/usr/bin/env python
 import rospy

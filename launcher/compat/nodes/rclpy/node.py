@@ -95,6 +95,7 @@ class Node:
                 if name not in self._declared:
                     self._declare_now(name, value)
         self._bus.add_on_set_parameters_callback(self._on_bus_set)
+        self._bus.gate, self._bus.describer = self._gate, self._describe_for_bus
         self._clock = ROSClock(self._bus.get_clock())
         self._context.track_node(self)
 
@@ -468,6 +469,44 @@ class Node:
             self._bus._parameters[parameter.name] = parameter.value
         return SetParametersResult(successful=True)
 
+    def _gate(self, name: str, value: Any) -> str | None:
+        """A set or delete asked from outside, checked as rclcpp/rclpy check it (the declared
+        type, read_only, the set callbacks); the reason it is refused, or None."""
+        descriptor = self._descriptors.get(name)
+        if name not in self._declared and not self._allow_undeclared:
+            return f"parameter '{name}' cannot be set because it was not declared"
+        if descriptor is not None and descriptor.read_only:
+            return f"parameter '{name}' cannot be set because it is read-only"
+        dynamic = descriptor is not None and descriptor.dynamic_typing
+        if value is None:
+            if name in self._declared and not dynamic and not self._allow_undeclared:
+                return "cannot undeclare a statically typed parameter"
+            self._declared.pop(name, None)
+            return None
+        parameter = Parameter(name, value=_plain(value))
+        old = self._declared.get(name)
+        if old is not None and old.type_ != Parameter.Type.NOT_SET and not dynamic and \
+                old.type_ != parameter.type_:
+            return (f"Wrong parameter type, parameter {{{name}}} is of type "
+                    f"{{{old.type_.name.lower()}}}, setting it to "
+                    f"{{{parameter.type_.name.lower()}}} is not allowed.")
+        for callback in self._set_callbacks:
+            result = callback([parameter])
+            if result is not None and not result.successful:
+                return result.reason or "refused by the node's parameter callback"
+        self._declared[name] = parameter
+        return None
+
+    def _describe_for_bus(self, name: str) -> dict[str, Any]:
+        """The descriptor as plain fields, with its name and the declared type filled in
+        (a ParameterDescriptor made in the node often has neither)."""
+        if name not in self._declared:
+            return {"name": name, "type": 0}
+        fields = _fields(self.describe_parameter(name))
+        fields["name"] = fields.get("name") or name
+        fields["type"] = fields.get("type") or self._declared[name].type_.value
+        return fields
+
     def _on_bus_set(self, name: str, value: Any) -> None:
         """`launcher param set` (or ros2 param) changed one: the callbacks hear of it."""
         parameter = Parameter(name, value=_plain(value))
@@ -476,6 +515,17 @@ class Node:
         self._declared[name] = parameter
         for callback in self._set_callbacks:
             callback([parameter])
+
+
+def _fields(message: Any) -> Any:
+    """A message of rclpy's classes as plain data (dicts and lists)."""
+    if hasattr(message, "get_fields_and_field_types"):
+        return {f: _fields(getattr(message, f)) for f in message.get_fields_and_field_types()}
+    if hasattr(message, "tolist"):
+        return message.tolist()
+    if isinstance(message, list | tuple):
+        return [_fields(m) for m in message]
+    return message
 
 
 def _plain(value: Any) -> Any:

@@ -1,0 +1,65 @@
+"""Tab completion in a real bash, through the set-up's hook (argcomplete, as ros2cli)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.integration.test_bus import launch, stop, wait_text
+
+REPO = Path(__file__).resolve().parents[2]
+PY = sys.executable
+TALKER = """
+from launcher.bus.node import Node
+node = Node("chatty")
+node.create_publisher("std_msgs/msg/String", "chatter")
+node.get_logger().info("up")
+node.spin()
+node.destroy_node()
+"""
+
+
+def completions(ws, line: str) -> list[str]:
+    """What bash offers at the end of `line`, with hooks/setup.bash sourced."""
+    script = (f'. "{REPO}/hooks/setup.bash" >/dev/null\n'
+              'COMP_LINE="$1"; COMP_POINT=${#COMP_LINE}\n'
+              'read -ra COMP_WORDS <<< "$COMP_LINE"\n'
+              '[ "${COMP_LINE: -1}" = " " ] && COMP_WORDS+=("")\n'
+              'COMP_CWORD=$(( ${#COMP_WORDS[@]} - 1 ))\n'
+              'complete -p launcher >&2\n'
+              '_python_argcomplete launcher "${COMP_WORDS[COMP_CWORD]}" '
+              '"${COMP_WORDS[COMP_CWORD-1]}"\n'
+              'printf "%s\\n" "${COMPREPLY[@]}"\n')
+    result = subprocess.run(["bash", "-c", script, "bash", line], cwd=ws.root, env=ws.env,
+                            capture_output=True, text=True, timeout=60)
+    assert "_python_argcomplete launcher" in result.stderr, result.stderr
+    return [w.strip() for w in result.stdout.splitlines() if w.strip()]
+
+
+@pytest.mark.parametrize("line, expected, absent", [
+    ("launcher to", ["topic"], []),
+    ("launcher topic e", ["echo"], []),
+    ("launcher topic echo --qos-d", ["--qos-depth", "--qos-durability"], []),
+    ("launcher bag record --max-", ["--max-bag-duration", "--max-bag-size"], []),
+    ("launcher param ", ["describe", "delete", "dump", "get"], ["echo"]),
+])
+def test_commands_verbs_and_options_complete(ws, line, expected, absent):
+    offered = completions(ws, line)
+    assert all(word in offered for word in expected), offered
+    assert not any(word in offered for word in absent), offered
+
+
+def test_names_on_the_graph_complete(ws):
+    ws.own_bus()
+    ws.write("chatty.py", TALKER)
+    proc, out = launch(ws, "chatty.launch.yaml",
+                       f"launch:\n  - executable: {{cmd: {PY} chatty.py, output: screen}}\n")
+    try:
+        wait_text(out, "up")
+        assert "/chatter" in completions(ws, "launcher topic echo /ch")
+        assert "/chatty" in completions(ws, "launcher param list /")
+    finally:
+        assert stop(proc) == 130

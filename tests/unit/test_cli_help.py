@@ -1,0 +1,31 @@
+"""Every option of every command says what it does, and a number says its unit."""
+
+import argparse
+
+import pytest
+
+from launcher.cli import positive_number
+from launcher.cli.main import COMMANDS, build_parser
+
+UNITS = ("SECONDS", "seconds", " s)", " s ", "HZ", "Hz", "FACTOR", "times", "per second",
+         "BYTES", "bytes", "PORT", "metres", "m/s", "messages", "N")
+
+
+def options(parser: argparse.ArgumentParser, path: list[str]):
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield from options(sub, [*path, name])
+        elif action.option_strings and action.dest != "help":
+            yield " ".join(path), action
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS))
+def test_every_option_has_help_and_numbers_their_unit(command):
+    parser, commands = build_parser(command)
+    for where, action in options(commands.choices[command], [command]):
+        name = "/".join(action.option_strings)
+        assert action.help, f"{where} {name} has no help text"
+        if action.type in (float, positive_number):
+            said = f"{action.help} {action.metavar or ''}"
+            assert any(unit in said for unit in UNITS), f"{where} {name}: no unit in {said!r}"
