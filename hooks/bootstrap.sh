@@ -5,6 +5,7 @@
 #   sh hooks/bootstrap.sh test   # set up, then run the test suite
 set -eu
 cd "$(dirname "$0")/.."
+say() { echo "[set-up] $*"; }
 
 find_python() {
     for candidate in ${PYTHON:-} python3.13 python3.12 python3.11 python3; do
@@ -21,6 +22,8 @@ find_python() {
 # `launcher sim snapshot` renders offscreen with EGL, which Debian's Mesa packages provide.
 if ! ldconfig -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        say "installing Mesa's EGL (libegl1 libegl-mesa0 libgl1-mesa-dri): pictures of the" \
+            "world render offscreen with it"
         apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
             libegl1 libegl-mesa0 libgl1-mesa-dri >/dev/null
     else
@@ -33,7 +36,8 @@ fi
 # user (`setpriv`, util-linux).
 if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv; } >/dev/null 2>&1; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-        echo "installing iproute2 and util-linux (ip, setpriv) for the tests"
+        say "installing iproute2 and util-linux (ip, setpriv): the tests put a graph across" \
+            "two network namespaces and act as another user"
         apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
             iproute2 util-linux >/dev/null
     else
@@ -46,7 +50,7 @@ fi
 if [ "${1:-}" = test ] && ! { command -v chromium && command -v chromedriver; } >/dev/null 2>&1
 then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-        echo "installing chromium and chromium-driver for the web viewer's browser test" \
+        say "installing chromium and chromium-driver for the web viewer's browser test" \
             "(about a minute, once)"
         apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
             chromium chromium-driver >/dev/null
@@ -57,21 +61,35 @@ then
 fi
 
 if [ ! -x .venv/bin/python ]; then
-    "$(find_python)" -m venv .venv
+    python=$(find_python)
+    say "making the virtual environment .venv with $python ($("$python" --version 2>&1))"
+    "$python" -m venv .venv
 fi
 # Install (again) when pyproject.toml is newer than the last install. `compat` editable mode
 # puts the repo on sys.path with a plain .pth entry: no import hook, faster start-up.
 if [ ! -f .venv/.installed ] || [ pyproject.toml -nt .venv/.installed ]; then
+    say "installing launcher into .venv with its dependencies from PyPI (MuJoCo, Zenoh," \
+        "rosbags, xacro, and the tests' pytest, mcap, selenium): about a minute the first" \
+        "time, seconds after"
     .venv/bin/python -m pip install --quiet --disable-pip-version-check \
         --config-settings editable_mode=compat -e ".[test]"
     touch .venv/.installed
+else
+    say ".venv is up to date"
 fi
 # Byte-compile once: start-up time is benchmarked and some machines set PYTHONDONTWRITEBYTECODE.
 .venv/bin/python -m compileall -q launcher >/dev/null
+say "ready. In your shell, . hooks/setup.sh puts launcher, your workspace's hooks and tab" \
+    "completion there (LAUNCHER_PACKAGE_PATH=/path/to/ws/src adds your packages)"
 
 case "${1:-}" in
-    demo) shift; exec .venv/bin/launcher launch launch_files/robot.launch.yaml --duration 20 \
+    demo) shift
+        say "running the demo, headless, for 20 s: launcher launch" \
+            "launch_files/robot.launch.yaml"
+        exec .venv/bin/launcher launch launch_files/robot.launch.yaml --duration 20 \
         --noninteractive "$@" ;;
-    test) shift; exec .venv/bin/python -m pytest tests "$@" ;;
+    test) shift
+        say "running the tests (about 10 minutes on 2 cores): python -m pytest tests"
+        exec .venv/bin/python -m pytest tests "$@" ;;
     *) echo "usage: sh hooks/bootstrap.sh demo|test" >&2; exit 2 ;;
 esac

@@ -117,8 +117,15 @@ class PackageIndex:
         package = self.packages.get(name)
         if package is None:
             searched = "\n".join(f"  {r.path} ({r.origin})" for r in self.roots)
+            hint = ""
+            if not any(r.origin in ("workspace", "checkout") for r in self.roots):
+                hint = ("\nto add your workspace: LAUNCHER_PACKAGE_PATH=/path/to/ws/src (a "
+                        "folder of packages; several with ':'), or source a colcon install's "
+                        "setup.sh (AMENT_PREFIX_PATH); `. hooks/setup.sh` of launcher's "
+                        "checkout puts launcher and its hooks in your shell")
             raise PackageNotFound(f"package '{name}' not found"
-                                  f"{did_you_mean(name, self.packages)}; searched:\n{searched}")
+                                  f"{did_you_mean(name, self.packages)}; searched:\n{searched}"
+                                  f"{hint}")
         return package
 
     def share(self, name: str) -> Path:

@@ -91,7 +91,7 @@ def comp(ws):
 
 
 def echo(ws, topic: str) -> str:
-    done = ws.run("topic", "echo", topic, "--once", "--field", "data", timeout=60)
+    done = ws.run("topic", "echo", topic, "--once", "-f", "--field", "data", timeout=60)
     assert done.returncode == 0, done.stderr
     return done.stdout.removesuffix("---\n").strip()
 

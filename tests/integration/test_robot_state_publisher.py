@@ -67,7 +67,7 @@ def test_tf_static_for_late_subscribers_tf_from_joint_states_and_mimics(rsp_ws):
         static = rsp_ws.run("topic", "echo", "/tf_static", "--once")  # joins late
         assert "frame_id: arm1/l3" in static.stdout and "child_frame_id: arm1/tool" in \
             static.stdout, static.stderr
-        description = rsp_ws.run("topic", "echo", "/arm1/robot_description", "--once")
+        description = rsp_ws.run("topic", "echo", "/arm1/robot_description", "--once", "-f")
         assert "robot name=" in description.stdout and "mimic joint=" in description.stdout
         rsp_ws.write("probe.py", PROBE)
         probe = subprocess.run([PY, "probe.py"], cwd=rsp_ws.root, env=rsp_ws.env,
