@@ -128,6 +128,12 @@ class ClassicDiffDrive(DiffDrive):
         self.odom_pub = transport.publisher("nav_msgs/msg/Odometry",
                                             _ros_topic(self, "odometryTopic", "odom"), ros=True)
         self.tf_pub = transport.publisher("tf2_msgs/msg/TFMessage", "/tf", ros=True)
+        import numpy as np
+
+        # the diagonal gazebo_ros_diff_drive reports: x, y, and yaw (the rest held fixed)
+        self.covariance = np.zeros(36)
+        self.covariance[[0, 7, 35]] = (classic.covariance_x, classic.covariance_y,
+                                       classic.covariance_yaw)
         self.cmd_sub = transport.subscribe("geometry_msgs/msg/Twist",
                                            _ros_topic(self, "commandTopic", "cmd_vel"),
                                            self.on_cmd_vel, ros=True)
@@ -146,8 +152,10 @@ class ClassicDiffDrive(DiffDrive):
                               angular=t.vector(0.0, 0.0, self.angular))
             self.odom_pub.publish(t.message(
                 "nav_msgs/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
-                pose=t.message("geometry_msgs/msg/PoseWithCovariance", pose=pose),
-                twist=t.message("geometry_msgs/msg/TwistWithCovariance", twist=twist)))
+                pose=t.message("geometry_msgs/msg/PoseWithCovariance", pose=pose,
+                               covariance=self.covariance),
+                twist=t.message("geometry_msgs/msg/TwistWithCovariance", twist=twist,
+                                covariance=self.covariance)))
         if tf_wanted:
             transform = t.message(
                 "geometry_msgs/msg/Transform",
