@@ -146,6 +146,55 @@ def _uniform(items: list[Any], name: str) -> list[Any]:
     return items
 
 
+def ros1_value(command: Text_ | None, textfile: Text_ | None) -> Written | None:
+    """roslaunch's `<param command=…>` (the command's output) or `textfile=` (the file's
+    text), as a value."""
+    from launcher.description.substitutions.command import Command
+    from launcher.description.substitutions.files import FileContent
+
+    if command is not None:
+        return Written((Command(command, (Text("warn"),)),), string=True)
+    if textfile is not None:
+        return Written((FileContent(textfile),), string=True)
+    return None
+
+
+def rosparam_values(context: LaunchContext, text: str, prefix: str, where: Any,
+                    substitute: bool = False) -> dict[str, Any]:
+    """roslaunch's `<rosparam>` YAML (a plain map, nested maps for namespaces) as dotted
+    parameter names under `prefix`; `substitute`: its substitutions performed first."""
+    if substitute:
+        if context.parse_text is None:
+            raise ExecutionError("this run cannot read substitutions in files", where)
+        text = perform_text(context, context.parse_text(text, str(getattr(where, "file", ""))))
+    try:
+        document = yaml.safe_load(text)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark
+        raise ExecutionError(f"rosparam: not valid YAML: {exc.problem}"
+                             + (f" (line {mark.line + 1} of the YAML)" if mark else ""),
+                             where) from None
+    if document is None:
+        return {}
+    if not isinstance(document, dict):
+        if not prefix:
+            raise ExecutionError("rosparam: expected a map of parameters (or give param= to "
+                                 "name the value)", where)
+        return {prefix: document}
+    out: dict[str, Any] = {}
+
+    def flatten(values: dict[Any, Any], outer: str) -> None:
+        for key, value in values.items():
+            name = f"{outer}.{key}" if outer else str(key)
+            if isinstance(value, dict):
+                flatten(value, name)
+            else:
+                out[name] = value
+
+    flatten(document, prefix.replace("/", "."))
+    return out
+
+
 def python_value(value: Any) -> Written:
     """A value the Python API gave: a str is a string, a substitution typed by YAML's rules."""
     if isinstance(value, str):

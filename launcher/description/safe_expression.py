@@ -109,7 +109,7 @@ class _Evaluator(ast.NodeVisitor):
         return node.value
 
     def visit_Name(self, node: ast.Name) -> Any:
-        if node.id in self.names:
+        if node.id in self.names and node.id not in _NAMES:  # the language's names come first
             return self.names[node.id]
         if node.id not in _NAMES:
             raise ExpressionError(f"unknown name '{node.id}'")

@@ -15,7 +15,7 @@ from launcher.user_files import check_readable, read_bytes
 # Each format's loader is imported when a file of that format is parsed (PyYAML alone is a
 # fifth of `launcher launch`'s imports), and parse_cache keeps what it parsed for the next run.
 
-FORMATS = (".yaml", ".yml", ".xml", ".py")
+FORMATS = (".yaml", ".yml", ".xml", ".launch", ".py")  # .launch: roslaunch's (or ROS 2's) XML
 # Parsed YAML/XML descriptions, by path and modification time: including a file N times (one
 # spawn file per robot) parses it once. Descriptions are not changed by running them.
 _cache: dict[Path, tuple[int, LaunchDescription]] = {}
@@ -68,10 +68,13 @@ def load_file(path: Path) -> LaunchDescription:
 
 
 def _parse(kind: str, data: bytes, path: Path) -> Entity:
-    if kind == ".xml":
+    if kind in (".xml", ".launch"):
+        from launcher.frontend import ros1
         from launcher.frontend.xml_loader import load_xml
 
-        return load_xml(data, str(path))
+        root = load_xml(data, str(path))
+        default = "ros1" if kind == ".launch" else "ros2"
+        return ros1.translate(root) if ros1.dialect(root, default) == "ros1" else root
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:

@@ -26,7 +26,7 @@ from launcher.private import open_private, private_folder
 FORMAT = 2
 MAX_ENTRIES = 512  # past this, a new entry makes room by removing the older half
 _HERE = os.path.dirname(os.path.abspath(__file__))
-_LOADERS = ("entity.py", "yaml_loader.py", "xml_loader.py", "parse_cache.py")
+_LOADERS = ("entity.py", "yaml_loader.py", "xml_loader.py", "ros1.py", "parse_cache.py")
 
 
 def folder(environ: Mapping[str, str] | None = None) -> Path:

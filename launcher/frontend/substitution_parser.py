@@ -76,6 +76,10 @@ class _Parser:
                 "expected a substitution name after '$(' (like $(var name))", start
             )
         self.pos = match.end()
+        if match.group() == "eval":
+            raw = self.raw_expression()
+            if raw is not None:  # roslaunch's `$(eval arg('x') * 2)`: the rest is the expression
+                return Call("eval", ((raw,),), start)
         args: list[tuple[Part, ...]] = []
         while True:
             self.skip_spaces()
@@ -87,6 +91,35 @@ class _Parser:
                 self.pos += 1
                 return Call(match.group(), tuple(args), start)
             args.append(self.argument())
+
+    def raw_expression(self) -> str | None:
+        """An unquoted `$(eval …)` holding no substitution, as roslaunch writes it: the text up to
+        the matching ')' (parentheses and quotes inside counted). None for ROS 2's quoted form
+        (or one with substitutions), which the usual grammar reads."""
+        text, pos = self.text, self.pos
+        while pos < len(text) and text[pos] in " \t\n":
+            pos += 1
+        if pos >= len(text) or text[pos] in "'\")":
+            return None
+        depth, quote, begin = 0, "", pos
+        while pos < len(text):
+            ch = text[pos]
+            if quote:
+                quote = "" if ch == quote else quote
+            elif ch in "'\"":
+                quote = ch
+            elif ch == "(":
+                depth += 1
+            elif ch == ")":
+                if depth == 0:
+                    expression = text[begin:pos]
+                    if "$(" in expression:
+                        return None
+                    self.pos = pos + 1
+                    return expression.strip()
+                depth -= 1
+            pos += 1
+        return None
 
     def skip_spaces(self) -> None:
         while self.pos < len(self.text) and self.text[self.pos] in " \t\n":

@@ -29,11 +29,24 @@ def load_xml(data: bytes, file: str) -> Entity:
         (stack[-1].children if stack else roots).append(entity)
         stack.append(entity)
 
-    def end(_tag: str) -> None:
-        stack.pop()
+    texts: list[list[str]] = []
 
-    parser.StartElementHandler = start
+    def end(_tag: str) -> None:
+        entity = stack.pop()
+        text = "".join(texts.pop())
+        if entity.tag == "rosparam" and text.strip():  # roslaunch's inline YAML
+            entity.attributes["#text"] = Attribute(text, entity.location)
+
+    def character_data(text: str) -> None:
+        texts[-1].append(text)
+
+    def begin(tag: str, attrs: dict[str, str]) -> None:
+        texts.append([])
+        start(tag, attrs)
+
+    parser.StartElementHandler = begin
     parser.EndElementHandler = end
+    parser.CharacterDataHandler = character_data
     try:
         parser.Parse(data, True)
     except expat.ExpatError as exc:

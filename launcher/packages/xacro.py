@@ -17,11 +17,16 @@ from typing import Any
 
 from launcher.errors import ExecutionError
 
+BUILTIN_XACRO = os.path.realpath(os.path.join(os.path.dirname(__file__), os.pardir, "builtin",
+                                              "xacro", "xacro"))
+
 
 def runs_in_process(argv: list[str], environment: Mapping[str, str]) -> bool:
     """True when `argv` is a xacro call this process can do with identical results."""
     if not argv or os.path.basename(argv[0]) != "xacro":
         return False
+    if os.path.realpath(argv[0]) == BUILTIN_XACRO:  # ROS 1's `$(find xacro)/xacro`
+        return True
     on_path = shutil.which(argv[0], path=environment.get("PATH", os.defpath))
     ours = os.path.join(sys.prefix, "bin", "xacro")
     return on_path is None or os.path.realpath(on_path) == os.path.realpath(ours)

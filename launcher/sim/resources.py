@@ -61,9 +61,11 @@ def find_world(name: str, environ: Mapping[str, str] | None = None) -> Path:
                     if (place / f"{name}{suffix}").is_file():
                         return (place / f"{name}{suffix}").resolve()
             searched.append(f"{folder} ({variable})")
-        for suffix in WORLD_SUFFIXES:
-            if (BUILTIN_WORLDS / f"{name}{suffix}").is_file():
-                return BUILTIN_WORLDS / f"{name}{suffix}"
+        # classic Gazebo's `worlds/empty.world` is the built-in empty world
+        for stem in dict.fromkeys((name, Path(name).name, Path(name).stem)):
+            for suffix in WORLD_SUFFIXES:
+                if (BUILTIN_WORLDS / f"{stem}{suffix}").is_file():
+                    return BUILTIN_WORLDS / f"{stem}{suffix}"
         searched.append(f"the built-in worlds ({', '.join(builtin_worlds())})")
     values = "; ".join(f"{v}={env[v]!r}" if env.get(v) else f"{v} is not set"
                        for v in RESOURCE_VARIABLES)

@@ -34,10 +34,13 @@ class IncludeLaunchDescription(Action):
     launch_arguments: list[Any] = attr(Kind.ENTRIES, name="arg", entry=IncludeArg,
                                        doc="Arguments for the included file.")
     scoped: Any = attr(Kind.BOOL, False, doc="Keep its arguments and lets inside it.")
+    pass_all_args: Any = attr(Kind.BOOL, doc="roslaunch's: false (its default) gives the file "
+                                             "only the arguments passed to it")
     is_include = True
 
     def __init__(self, launch_description_source: Any = None, *, file: Any = None,
-                 launch_arguments: Any = (), scoped: Any = False, **kwargs: Any) -> None:
+                 launch_arguments: Any = (), scoped: Any = False, pass_all_args: Any = None,
+                 **kwargs: Any) -> None:
         source = file if file is not None else launch_description_source
         self.file = source if isinstance(source, LaunchDescription) else \
             to_text(getattr(source, "location", source))
@@ -46,6 +49,7 @@ class IncludeLaunchDescription(Action):
         self.launch_arguments = [a if isinstance(a, IncludeArg) else
                                  IncludeArg(to_text(a[0]), to_text(a[1])) for a in pairs]
         self.scoped = scoped
+        self.pass_all_args = pass_all_args
         self.condition = kwargs.get("condition")
         self.where = kwargs.get("where")
 
@@ -85,6 +89,11 @@ class IncludeLaunchDescription(Action):
         check_required(description.actions, {**context.configurations, **values})
         sets: list[Action] = [SetLaunchConfiguration(name=to_text(k), value=to_text(v))
                               for k, v in values.items()]
+        if self.pass_all_args is not None and not resolve(context, self.pass_all_args,
+                                                          Kind.BOOL, "pass_all_args"):
+            # roslaunch: the file sees only what is passed (the launch's ROS settings stay)
+            kept = {k: v for k, v in context.configurations.items() if k.startswith("<")}
+            return [PushScope(forwarding=False, keep=kept), *sets, description, PopScope()]
         if resolve(context, self.scoped, Kind.BOOL, "scoped"):
             return [PushScope(), *sets, description, PopScope()]
         return [*sets, description]

@@ -46,11 +46,21 @@ class ParamEntry:
     separator: Any = attr(Kind.NAME, name="value-sep", aliases=("value_sep",),
                           doc="Split the value at this text into a list.")
     from_file: Text_ | None = attr(Kind.TEXT, name="from", doc="A params YAML file to load.")
-    allow_substs: Any = attr(Kind.BOOL, doc="With 'from': substitutions in the file are "
-                                            "performed (default false).")
+    allow_substs: Any = attr(Kind.BOOL, doc="With 'from' or a rosparam: substitutions in "
+                                            "the file are performed (default false).")
+    command: Text_ | None = attr(Kind.TEXT, doc="roslaunch's: the value is this command's "
+                                                "output.")
+    textfile: Text_ | None = attr(Kind.TEXT, doc="roslaunch's: the value is this file's text.")
+    rosparam_file: Text_ | None = attr(Kind.TEXT, doc="roslaunch's rosparam: a YAML map of "
+                                                      "parameters.")
+    rosparam: Text_ | None = attr(Kind.TEXT, doc="roslaunch's rosparam: the YAML, inline.")
     children: list[Any] = attr(Kind.ENTRIES, name="param", doc="Nested parameters.")
     group: bool = False  # a Python dict: one group of named children, one params file
     where: Any = None  # where the entry is written, for its errors
+
+    def __post_init__(self) -> None:
+        if self.value is None:
+            self.value = params.ros1_value(self.command, self.textfile)
 
 
 _spec = ParamEntry.__dataclass_fields__["children"]
@@ -82,6 +92,8 @@ class Node(ExecuteProcess):
                                  doc="Parameters: name/value, nested, or from a file.")
     remappings: list[Any] = attr(Kind.ENTRIES, name="remap", entry=RemapEntry,
                                  doc="Topic and service remappings.")
+    unique: Any = attr(Kind.BOOL, False, doc="roslaunch's rule: another node of the same "
+                                             "full name is an error (else a warning).")
     name: Any = None  # the label comes from exec_name / node_name
 
     def __post_init__(self) -> None:
@@ -164,6 +176,11 @@ class Node(ExecuteProcess):
         fqn = f"{space.rstrip('/')}/{node}" if space else f"/{node}"
         other = context.node_names.get(fqn)
         if other is not None and other is not self.where:
+            if resolve(context, self.unique, Kind.BOOL, "unique"):
+                raise ExecutionError(
+                    f"roslaunch file contains multiple nodes named [{fqn}]. Please check all "
+                    "<node> 'name' attributes to make sure they are unique. Also check that "
+                    f"$(anon id) use different ids. (the other is at {other})", self.where)
             context.log("WARN", f"two nodes are named '{fqn}': at {other} and at {self.where}")
         context.node_names.setdefault(fqn, self.where)
 
@@ -185,7 +202,8 @@ def parameter_groups(context: LaunchContext, entries: list[ParamEntry],
         if entry.from_file is not None:
             groups.append(_from_file(context, entry, entry.where or where))
             continue
-        if entry.allow_substs is not None:
+        if entry.allow_substs is not None and entry.rosparam_file is None and \
+                entry.rosparam is None:
             raise ExecutionError("param: 'allow_substs' goes with 'from' (a params file)",
                                  entry.where or where)
         values: dict[str, Any] = {}
@@ -232,6 +250,9 @@ def _from_file(context: LaunchContext, entry: ParamEntry, where: Any) -> Path:
 
 def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[str, Any],
              where: Any) -> None:
+    if entry.rosparam_file is not None or entry.rosparam is not None:
+        out.update(rosparam_entry(context, entry, outer, where))
+        return
     if entry.name is None:
         raise ExecutionError("param: each parameter needs 'name' (or 'from' a file)", where)
     if entry.from_file is not None:
@@ -255,6 +276,27 @@ def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[st
         out[name] = params.value_of(context, entry.value, kind, name, entry.separator)
     except ExecutionError as exc:
         raise exc if exc.location else exc.at(where) from None
+
+
+def rosparam_entry(context: LaunchContext, entry: Any, outer: str,
+                   where: Any) -> dict[str, Any]:
+    """roslaunch's `<rosparam>`: the parameters of its YAML (a file, or inline)."""
+    prefix = outer + (perform_text(context, entry.name) if entry.name is not None else "")
+    substitute = entry.allow_substs is not None and resolve(
+        context, entry.allow_substs, Kind.BOOL, "subst_value")
+    if entry.rosparam_file is not None:
+        path = Path(perform_text(context, entry.rosparam_file))
+        params.check_params_file(path, where)
+        text = read_text(path)
+        at = path
+    else:
+        text = perform_text(context, entry.rosparam)
+        at = None
+    try:
+        return params.rosparam_values(context, text, prefix.strip("/"), where, substitute)
+    except ExecutionError as exc:
+        raise ExecutionError(f"{exc.message} (in {at})" if at else exc.message,
+                             exc.location) from None
 
 
 def _python_parameters(values: list[Any]) -> list[ParamEntry]:

@@ -30,18 +30,34 @@ class PushRosNamespace(Action):
 @action("set_parameter")
 @dataclass(kw_only=True, eq=False)
 class SetParameter(Action):
-    name: Any = attr(Kind.TEXT, required=True, doc="Parameter name.")
-    value: Any = attr(Kind.VALUE, required=True, doc="Its value, for every later node.")
+    name: Any = attr(Kind.TEXT, doc="Parameter name.")
+    value: Any = attr(Kind.VALUE, doc="Its value, for every later node.")
     type: Any = attr(Kind.TEXT, choices=params.TYPES,
                      doc="As a node's param: default as launch_ros types the value.")
+    command: Any = attr(Kind.TEXT, doc="roslaunch's: the value is this command's output.")
+    textfile: Any = attr(Kind.TEXT, doc="roslaunch's: the value is this file's text.")
+    rosparam_file: Any = attr(Kind.TEXT, doc="roslaunch's rosparam: a YAML map of parameters.")
+    rosparam: Any = attr(Kind.TEXT, doc="roslaunch's rosparam: the YAML, inline.")
+    allow_substs: Any = attr(Kind.BOOL, doc="rosparam's subst_value.")
 
     def __post_init__(self) -> None:
         super().__post_init__()
-        if not isinstance(self.value, params.Written | list):  # the Python API
+        if self.value is None:
+            self.value = params.ros1_value(self.command, self.textfile)
+        if self.rosparam_file is None and self.rosparam is None and (
+                self.name is None or self.value is None):
+            raise ExecutionError("set_parameter needs 'name' and 'value'")
+        if self.value is not None and not isinstance(self.value, params.Written | list):
             self.value = [params.python_value(v) for v in self.value] \
                 if isinstance(self.value, list | tuple) else params.python_value(self.value)
 
     def execute(self, context: LaunchContext) -> None:
+        if self.rosparam_file is not None or self.rosparam is not None:
+            from launcher.description.actions.node import rosparam_entry
+
+            for name, value in rosparam_entry(context, self, "", self.where).items():
+                params.add_global_parameter(context, name, value)
+            return
         name = perform_text(context, self.name)
         kind = resolve(context, self.type, Kind.TEXT, "type") if self.type else None
         try:

@@ -1,0 +1,364 @@
+"""roslaunch's XML (ROS 1), told from ROS 2's XML by what a file says, and rewritten into the
+entities launcher's actions take. Every place is kept as written, so errors point into the
+user's file.
+
+ROS 1 → launcher:
+- `arg` with `default` → `arg`; with `value` (fixed, as roslaunch has it) → `let`; `doc` is
+  its description.
+- `node pkg type name ns args output respawn respawn_delay required launch-prefix cwd` → `node`
+  (`type` is the executable, `required="true"` ends the launch when it exits); its `param`s
+  and `rosparam`s are its private parameters, `remap`s and `env`s its own.
+- `param` outside a node → `set_parameter` for the nodes after it in its scope (names resolve
+  in the enclosing `ns`); `command=`, `textfile=` give its text.
+- `rosparam command="load"` (a file, or YAML inside the tag; `param`, `ns`, `subst_value`).
+- `group ns` → `group` with `push_ros_namespace`; `include file ns pass_all_args` with `arg`
+  children → `include` (its arguments kept apart, as roslaunch scopes them per file).
+- `remap` and `env` outside a node → `set_remap`, `set_env` (scoped by `group`).
+- `machine` (one host here) is skipped with a warning; `test` runs as a node.
+"""
+
+from __future__ import annotations
+
+from launcher.errors import Location, ParseError
+from launcher.frontend.entity import Attribute, Entity
+
+# What only ROS 1 says, and what only ROS 2 says (a tag, or an attribute of a tag).
+ROS1_TAGS = {"rosparam": "<rosparam>", "machine": "<machine>", "test": "<test>"}
+ROS2_TAGS = {"let", "set_env", "unset_env", "push_ros_namespace", "push-ros-namespace",
+             "executable", "composable_node", "node_container", "load_composable_node",
+             "set_parameter", "set_remap", "set_parameters_from_file", "set_use_sim_time",
+             "for", "for_each", "timer", "log", "shutdown", "set_ros_log_dir"}
+WARN = "[WARN] [launch]"
+
+
+def dialect(root: Entity, default: str = "ros2") -> str:
+    """'ros1' or 'ros2' for an XML launch tree (`default` when nothing tells: ROS 1 for a
+    `.launch` file); a file that mixes them is an error naming a line of each."""
+    ros1 = ros2 = None
+    for entity in _walk(root):
+        one, two = _signs(entity)
+        ros1 = ros1 or one
+        ros2 = ros2 or two
+    if ros1 and ros2:
+        raise ParseError(f"this file mixes roslaunch (ROS 1) and ROS 2 launch XML: "
+                         f"{ros1[0]} at line {ros1[1].line} is ROS 1, {ros2[0]} at line "
+                         f"{ros2[1].line} is ROS 2; write it in one of them", ros2[1])
+    return "ros1" if ros1 else "ros2" if ros2 else default
+
+
+def _walk(entity: Entity):
+    yield entity
+    for child in entity.children:
+        yield from _walk(child)
+
+
+def _signs(entity: Entity) -> tuple[tuple[str, Location] | None, tuple[str, Location] | None]:
+    one = two = None
+    attrs = entity.attributes
+    if entity.tag in ROS1_TAGS:
+        one = (ROS1_TAGS[entity.tag], entity.location)
+    elif entity.tag == "node" and "type" in attrs:
+        one = ("`type=` on <node>", entity.location)
+    elif entity.tag == "param" and ({"command", "textfile", "binfile"} & set(attrs)):
+        one = ("<param command=/textfile=>", entity.location)
+    elif entity.tag == "include" and ({"pass_all_args", "clear_params"} & set(attrs)):
+        one = ("<include pass_all_args/clear_params>", entity.location)
+    elif entity.tag == "arg" and "doc" in attrs:
+        one = ("`doc=` on <arg>", entity.location)
+    if entity.tag in ROS2_TAGS:
+        two = (f"<{entity.tag}>", entity.location)
+    elif entity.tag == "node" and "exec" in attrs:
+        two = ("`exec=` on <node>", entity.location)
+    for attribute in attrs.values():
+        text = attribute.value if isinstance(attribute.value, str) else ""
+        if one is None and "$(arg " in text:
+            one = ("$(arg …)", attribute.location)
+        if two is None and "$(var " in text:
+            two = ("$(var …)", attribute.location)
+    return one, two
+
+
+def translate(root: Entity) -> Entity:
+    """The ROS 2 entity tree that does what this roslaunch tree does."""
+    _unique_names(root.children, "", {})
+    out = Entity("launch", root.location, nested_in_children=True)
+    out.children = _body(root.children, top=True)
+    return out
+
+
+def _literal(entity: Entity, name: str) -> str | None:
+    attribute = entity.attributes.get(name)
+    if attribute is None:
+        return ""
+    text = attribute.value if isinstance(attribute.value, str) else ""
+    return None if "$(" in text else text
+
+
+def _unique_names(children: list[Entity], space: str, seen: dict[str, Location]) -> None:
+    """roslaunch refuses two nodes of one name before it starts anything: the same here for
+    names written out (those made by substitutions are checked as the nodes start)."""
+    for child in children:
+        if "if" in child.attributes or "unless" in child.attributes:
+            continue
+        if child.tag == "group":
+            ns = _literal(child, "ns")
+            if ns is not None:
+                _unique_names(child.children, _join(space, ns), seen)
+        elif child.tag == "node":
+            name, ns = _literal(child, "name"), _literal(child, "ns")
+            if name and ns is not None:
+                full = f"{_join(space, ns).rstrip('/')}/{name}"
+                if full in seen:
+                    raise ParseError(
+                        f"roslaunch file contains multiple nodes named [{full}]. Please check "
+                        "all <node> 'name' attributes to make sure they are unique. Also check "
+                        f"that $(anon id) use different ids. (the other is at {seen[full]})",
+                        child.location)
+                seen[full] = child.location
+
+
+def _join(outer: str, inner: str) -> str:
+    if inner.startswith("/"):
+        return inner.rstrip("/")
+    return "/".join(p for p in (outer.strip("/"), inner.strip("/")) if p).join(("/", "")) \
+        if (outer.strip("/") or inner.strip("/")) else ""
+
+
+def _body(children: list[Entity], top: bool = False) -> list[Entity]:
+    made: list[Entity] = []
+    for child in children:
+        made += _entity(child)
+    return made
+
+
+def _copy(entity: Entity, tag: str, names: dict[str, str]) -> Entity:
+    """`entity` as `tag`, its attributes renamed by `names` (old → new; others dropped)."""
+    made = Entity(tag, entity.location, nested_in_children=True)
+    for old, new in names.items():
+        if old in entity.attributes:
+            made.attributes[new] = entity.attributes[old]
+    for condition in ("if", "unless"):
+        if condition in entity.attributes:
+            made.attributes[condition] = entity.attributes[condition]
+    return made
+
+
+def _known(entity: Entity, allowed: set[str]) -> None:
+    for name, attribute in entity.attributes.items():
+        if name not in allowed | {"if", "unless"}:
+            raise ParseError(f"roslaunch's <{entity.tag}> has no attribute '{name}'; it takes "
+                             f"{', '.join(sorted(allowed))}", attribute.name_location)
+
+
+def _text(value: str, where: Location) -> Attribute:
+    return Attribute(value, where)
+
+
+def _entity(entity: Entity) -> list[Entity]:
+    tag = entity.tag
+    if tag == "arg":
+        _known(entity, {"name", "default", "value", "doc"})
+        if "value" in entity.attributes:
+            return [_copy(entity, "let", {"name": "name", "value": "value"})]
+        return [_copy(entity, "arg", {"name": "name", "default": "default",
+                                      "doc": "description"})]
+    if tag in ("node", "test"):
+        return [_node(entity)]
+    if tag == "param":
+        return [_global_param(entity)]
+    if tag == "rosparam":
+        return _global_rosparam(entity)
+    if tag == "group":
+        _known(entity, {"ns", "clear_params"})
+        group = _copy(entity, "group", {})
+        if "ns" in entity.attributes:
+            push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
+            push.attributes["namespace"] = entity.attributes["ns"]
+            group.children.append(push)
+        group.children += _body(entity.children)
+        return [group]
+    if tag == "include":
+        return [_include(entity)]
+    if tag == "remap":
+        _known(entity, {"from", "to"})
+        return [_copy(entity, "set_remap", {"from": "from", "to": "to"})]
+    if tag == "env":
+        _known(entity, {"name", "value"})
+        return [_copy(entity, "set_env", {"name": "name", "value": "value"})]
+    if tag == "machine":
+        log = Entity("log", entity.location, nested_in_children=True)
+        log.attributes["message"] = _text(
+            "<machine> is skipped: launcher runs every node on this host", entity.location)
+        log.attributes["level"] = _text("warn", entity.location)
+        return [log]
+    raise ParseError(f"roslaunch has no tag <{tag}> (ROS 1's tags: arg, node, param, "
+                     "rosparam, group, include, remap, env, machine, test)", entity.location)
+
+
+NODE_ATTRS = {"pkg": "pkg", "type": "exec", "name": "name", "ns": "namespace", "args": "args",
+              "output": "output", "respawn": "respawn", "respawn_delay": "respawn_delay",
+              "launch-prefix": "launch-prefix", "cwd": "cwd"}
+
+
+def _node(entity: Entity) -> Entity:
+    _known(entity, {*NODE_ATTRS, "required", "clear_params", "machine", "time-limit",
+                    "retry", "test-name"})
+    if "type" not in entity.attributes:
+        raise ParseError(f"roslaunch's <{entity.tag}> needs 'type' (the executable in the "
+                         "package)", entity.location)
+    node = _copy(entity, "node", NODE_ATTRS)
+    node.attributes["unique"] = _text("true", entity.location)
+    if "name" not in entity.attributes and entity.tag == "test":
+        node.attributes["name"] = entity.attributes.get("test-name") or \
+            entity.attributes["type"]
+    cwd = entity.attributes.get("cwd")
+    if cwd is not None:  # ROS 1's cwd is a word: ROS_HOME (default) or node
+        del node.attributes["cwd"]
+    required = entity.attributes.get("required")
+    if entity.tag == "test" or (required is not None and
+                                str(required.value).strip().lower() == "true"):
+        node.attributes["on_exit"] = _text("shutdown", entity.location)
+    if "machine" in entity.attributes:
+        node.attributes.pop("machine", None)
+    for child in entity.children:
+        if child.tag == "param":
+            node.children.append(_param_entry(child))
+        elif child.tag == "rosparam":
+            node.children += _rosparam_entries(child)
+        elif child.tag == "remap":
+            _known(child, {"from", "to"})
+            node.children.append(_copy(child, "remap", {"from": "from", "to": "to"}))
+        elif child.tag == "env":
+            _known(child, {"name", "value"})
+            node.children.append(_copy(child, "env", {"name": "name", "value": "value"}))
+        else:
+            raise ParseError(f"roslaunch's <node> takes <param>, <rosparam>, <remap> and "
+                             f"<env>, not <{child.tag}>", child.location)
+    return node
+
+
+PARAM_TYPES = {"str": "str", "string": "str", "int": "int", "double": "float",
+               "float": "float", "bool": "bool", "boolean": "bool", "yaml": "yaml"}
+
+
+def _param_attrs(entity: Entity, made: Entity) -> None:
+    _known(entity, {"name", "value", "type", "textfile", "binfile", "command"})
+    if "binfile" in entity.attributes:
+        raise ParseError("<param binfile=> is not supported: a ROS 2 parameter holds no bytes "
+                         "from a file; use textfile= for text", entity.location)
+    for key in ("value", "command", "textfile"):
+        if key in entity.attributes:
+            made.attributes[key] = entity.attributes[key]
+    given = [k for k in ("value", "command", "textfile") if k in entity.attributes]
+    if len(given) != 1:
+        raise ParseError("<param> needs exactly one of value=, command= and textfile=",
+                         entity.location)
+    kind = entity.attributes.get("type")
+    if kind is not None:
+        word = str(kind.value).strip()
+        if word not in PARAM_TYPES:
+            raise ParseError(f"<param type='{word}'>: expected str, int, double, bool or yaml",
+                             kind.location)
+        made.attributes["type"] = Attribute(PARAM_TYPES[word], kind.location)
+    elif "command" in entity.attributes or "textfile" in entity.attributes:
+        made.attributes["type"] = _text("str", entity.location)
+
+
+def _param_entry(entity: Entity) -> Entity:
+    """A node's `<param>`: its private parameter."""
+    made = Entity("param", entity.location, nested_in_children=True)
+    made.attributes["name"] = _private(entity)
+    _param_attrs(entity, made)
+    return made
+
+
+def _private(entity: Entity) -> Attribute:
+    name = entity.attributes.get("name")
+    if name is None:
+        raise ParseError("<param> needs name=", entity.location)
+    text = str(name.value)
+    return Attribute(text[1:] if text.startswith("~") else text, name.location)
+
+
+def _global_param(entity: Entity) -> Entity:
+    """A `<param>` outside a node: on ROS 1's parameter server; here, a parameter of every node
+    after it in its scope."""
+    made = _copy(entity, "set_parameter", {})
+    name = entity.attributes.get("name")
+    if name is None:
+        raise ParseError("<param> needs name=", entity.location)
+    made.attributes["name"] = Attribute(str(name.value).lstrip("/~"), name.location)
+    _param_attrs(entity, made)
+    return made
+
+
+ROSPARAM_ATTRS = {"command", "file", "param", "ns", "subst_value", "#text"}
+
+
+def _rosparam(entity: Entity) -> Attribute | None:
+    _known(entity, ROSPARAM_ATTRS)
+    command = str(entity.attributes["command"].value) if "command" in entity.attributes \
+        else "load"
+    if command in ("dump", "delete"):
+        return None
+    if command != "load":
+        raise ParseError(f"<rosparam command='{command}'>: expected load, dump or delete",
+                         entity.attributes["command"].location)
+    if "file" not in entity.attributes and "#text" not in entity.attributes:
+        raise ParseError("<rosparam> needs file= or YAML inside the tag", entity.location)
+    return entity.attributes.get("file")
+
+
+def _rosparam_entries(entity: Entity) -> list[Entity]:
+    """A node's `<rosparam>`: parameters from ROS 1 YAML (a plain map)."""
+    if _rosparam(entity) is None and "#text" not in entity.attributes:
+        return []
+    made = Entity("param", entity.location, nested_in_children=True)
+    for key, new in (("file", "rosparam_file"), ("#text", "rosparam"), ("param", "name"),
+                     ("ns", "ns"), ("subst_value", "allow_substs")):
+        if key in entity.attributes:
+            made.attributes[new if key != "ns" else "name"] = entity.attributes[key]
+    return [made]
+
+
+def _global_rosparam(entity: Entity) -> list[Entity]:
+    if _rosparam(entity) is None and "#text" not in entity.attributes:
+        command = entity.attributes["command"]
+        log = Entity("log", entity.location, nested_in_children=True)
+        log.attributes["message"] = _text(
+            f"<rosparam command='{command.value}'> is skipped: ROS 2 has no parameter server "
+            "to dump or delete from", entity.location)
+        log.attributes["level"] = _text("warn", entity.location)
+        return [log]
+    made = Entity("set_parameter", entity.location, nested_in_children=True)
+    for key, new in (("file", "rosparam_file"), ("#text", "rosparam"), ("param", "name"),
+                     ("ns", "name"), ("subst_value", "allow_substs")):
+        if key in entity.attributes:
+            made.attributes[new] = entity.attributes[key]
+    return [made]
+
+
+def _include(entity: Entity) -> Entity:
+    _known(entity, {"file", "ns", "clear_params", "pass_all_args"})
+    include = _copy(entity, "include", {"file": "file"})
+    include.attributes["scoped"] = _text("true", entity.location)
+    include.attributes["pass_all_args"] = entity.attributes.get("pass_all_args") or \
+        _text("false", entity.location)  # roslaunch: the file gets only what is passed
+    for child in entity.children:
+        if child.tag != "arg":
+            raise ParseError(f"roslaunch's <include> takes <arg> children, not <{child.tag}>",
+                             child.location)
+        _known(child, {"name", "value", "default", "doc"})
+        arg = _copy(child, "arg", {"name": "name", "value": "value"})
+        if "value" not in child.attributes and "default" in child.attributes:
+            arg.attributes["value"] = child.attributes["default"]
+        include.children.append(arg)
+    if "ns" not in entity.attributes:
+        return include
+    group = _copy(entity, "group", {})
+    include.attributes.pop("if", None)
+    include.attributes.pop("unless", None)
+    push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
+    push.attributes["namespace"] = entity.attributes["ns"]
+    group.children = [push, include]
+    return group

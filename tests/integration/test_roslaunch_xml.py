@@ -1,0 +1,211 @@
+"""roslaunch's XML (ROS 1) run by `launcher launch`, each tag and substitution against a node
+that reports what it was given. Expected behaviour is written from roslaunch's documentation
+(wiki.ros.org/roslaunch/XML and its tag pages), as each test says."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.unit.test_packages import make_tree, manifest
+
+# Reports its argv, its environment's GREETING, and the parameters it was given (its params
+# files, any key, and -p values).
+REPORT = """
+import os, sys, yaml
+
+def main():
+    args = sys.argv[1:]
+    ros = args[args.index("--ros-args"):] if "--ros-args" in args else []
+    mine = args[:len(args) - len(ros)]
+    params, remaps, name, ns = {}, [], "", ""
+    for i, word in enumerate(ros):
+        if word == "--params-file":
+            with open(ros[i + 1]) as handle:
+                for body in yaml.safe_load(handle).values():
+                    params.update(body["ros__parameters"])
+        elif word == "-p":
+            key, _, text = ros[i + 1].partition(":=")
+            params[key] = text if "\\n" in text else yaml.safe_load(text)
+        elif word == "-r":
+            key, _, value = ros[i + 1].partition(":=")
+            if key == "__node":
+                name = value
+            elif key == "__ns":
+                ns = value
+            else:
+                remaps.append(f"{key}:={value}")
+    print("REPORT", repr({"node": f"{ns.rstrip('/')}/{name}", "args": mine,
+                          "params": params, "remaps": remaps,
+                          "greeting": os.environ.get("GREETING")}), flush=True)
+    if "--wait" in mine:
+        import time
+        time.sleep(60)
+    return int(os.environ.get("EXIT_CODE", "0"))
+"""
+
+
+@pytest.fixture
+def ros1(ws):
+    make_tree(ws.root / "src", {
+        "tools/package.xml": manifest("tools", extra=(
+            '<export><executable name="report" module="tools_app.report:main"/></export>')),
+        "tools/tools_app/__init__.py": "",
+        "tools/tools_app/report.py": REPORT,
+        "tools/config/gains.yaml": "p: 1.5\ni: 0.1\nlimits: {max: 2}\n",
+        "tools/config/substituted.yaml": "speed: $(arg speed)\n",
+        "tools/config/broken.yaml": "p: [1, 2\n",
+        "tools/launch/inner.launch": """<launch>
+  <arg name="who" default="inner"/>
+  <node name="inner_node" pkg="tools" type="report" output="screen" args="$(arg who)"/>
+</launch>
+""",
+        "tools/urdf/robot.txt": "<robot name='r'/>\n",
+    })
+    ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "src")
+    ws.env["LAUNCHER_CACHE_DIR"] = str(ws.root / "cache")
+    return ws
+
+
+def reports(ws, *args: str) -> dict[str, dict]:
+    result = ws.run("launch", *args, timeout=60)
+    assert result.returncode == 0, result.stdout + result.stderr
+    found = {}
+    for line in result.stdout.splitlines():
+        if "REPORT " in line:
+            report = eval(line.split("REPORT ", 1)[1])  # noqa: S307 - our own node's repr
+            found[report["node"]] = report
+    return found
+
+
+def test_nodes_params_and_scopes_as_roslaunch_has_them(ros1):
+    """roslaunch: a node-level <param> is the node's private parameter; a <param> outside a
+    node is on the parameter server for every node (launcher: given to the nodes after it);
+    <group ns> and <node ns> nest; <remap> and <env> outside a node apply to the nodes after
+    them in their scope; <arg value> is fixed; <rosparam> loads a YAML map."""
+    ros1.write("robot.launch", """<launch>
+  <arg name="speed" default="1.0"/>
+  <arg name="fixed" value="constant"/>
+  <param name="robot_description" textfile="$(find tools)/urdf/robot.txt"/>
+  <param name="rate" value="50" type="int"/>
+  <rosparam command="load" file="$(find tools)/config/gains.yaml" ns="gains"/>
+  <env name="GREETING" value="hello"/>
+  <group ns="fleet">
+    <remap from="cmd_vel" to="/fleet/cmd"/>
+    <node name="driver" pkg="tools" type="report" ns="r1" output="screen"
+          args="--speed $(arg speed) $(arg fixed)">
+      <param name="gain" value="2.5"/>
+      <param name="~label" value="left" type="str"/>
+      <param name="text" command="echo from-a-command"/>
+      <rosparam>
+        tuning: {kp: 3}
+        names: [a, b]
+      </rosparam>
+      <rosparam command="load" file="$(find tools)/config/substituted.yaml"
+                subst_value="true"/>
+      <remap from="odom" to="odometry"/>
+    </node>
+  </group>
+  <node name="plain" pkg="tools" type="report" output="screen"/>
+</launch>
+""")
+    got = reports(ros1, "robot.launch", "speed:=3.5")
+    driver = got["/fleet/r1/driver"]
+    assert driver["args"] == ["--speed", "3.5", "constant"]
+    assert driver["params"]["gain"] == 2.5 and driver["params"]["label"] == "left"
+    assert driver["params"]["text"] == "from-a-command\n"
+    assert driver["params"]["tuning.kp"] == 3 and driver["params"]["names"] == ["a", "b"]
+    assert driver["params"]["speed"] == 3.5  # subst_value: $(arg speed) in the file
+    assert driver["params"]["robot_description"] == "<robot name='r'/>\n"
+    assert driver["params"]["rate"] == 50 and driver["params"]["gains.p"] == 1.5
+    assert driver["params"]["gains.limits.max"] == 2
+    assert driver["remaps"] == ["cmd_vel:=/fleet/cmd", "odom:=odometry"]
+    assert driver["greeting"] == "hello"
+    plain = got["/plain"]
+    assert plain["remaps"] == [] and "gain" not in plain["params"]  # the group's stay inside
+    assert plain["params"]["rate"] == 50
+
+
+def test_include_passes_only_its_args_and_substitutions(ros1):
+    """roslaunch: an included file sees only the args passed to it (unless pass_all_args);
+    `ns` on include namespaces its nodes; $(optenv), $(anon), $(eval) with arg(), $(dirname)."""
+    ros1.write("top.launch", """<launch>
+  <arg name="who" default="outer"/>
+  <arg name="radius" default="0.5"/>
+  <include file="$(find tools)/launch/inner.launch" ns="one"/>
+  <include file="$(find tools)/launch/inner.launch" ns="two">
+    <arg name="who" value="passed"/>
+  </include>
+  <include file="$(find tools)/launch/inner.launch" ns="three" pass_all_args="true"/>
+  <node name="subst" pkg="tools" type="report" output="screen"
+        args="$(optenv NO_SUCH_VARIABLE fallback) $(eval arg('radius') * 2) $(eval radius + 'cm') $(dirname)"/>
+  <node name="$(anon worker)" pkg="tools" type="report" output="screen"/>
+</launch>
+""")
+    got = reports(ros1, "top.launch")
+    assert got["/one/inner_node"]["args"] == ["inner"]  # not the outer 'who'
+    assert got["/two/inner_node"]["args"] == ["passed"]
+    assert got["/three/inner_node"]["args"] == ["outer"]
+    assert got["/subst"]["args"] == ["fallback", "0.50.5", "0.5cm", str(ros1.root)]
+    anonymous = [name for name in got if name.startswith("/worker_")]
+    assert len(anonymous) == 1
+
+
+def test_required_test_and_machine(ros1):
+    """roslaunch: a node with required="true" ends the launch when it exits; <test> runs as a
+    node (launcher: and reports its result); <machine> is skipped here with a warning."""
+    ros1.write("req.launch", """<launch>
+  <machine name="far" address="10.0.0.2"/>
+  <node name="quick" pkg="tools" type="report" output="screen" required="true"/>
+  <node name="forever" pkg="tools" type="report" output="screen" args="--wait"/>
+</launch>
+""")
+    result = ros1.run("launch", "req.launch", timeout=60)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "<machine> is skipped" in result.stdout
+    assert "REPORT" in result.stdout and "process stopped" in result.stdout
+    ros1.write("test.launch", """<launch>
+  <test test-name="reports" pkg="tools" type="report"/>
+</launch>
+""")
+    done = ros1.run("launch", "test.launch", timeout=60)
+    assert done.returncode == 0 and "process has finished cleanly" in done.stdout
+
+
+def test_ros2_xml_named_launch_stays_ros2(ros1):
+    ros1.write("new.launch", """<launch>
+  <arg name="who" default="ros2"/>
+  <node pkg="tools" exec="report" name="modern" output="screen" args="$(var who)"/>
+</launch>
+""")
+    assert reports(ros1, "new.launch")["/modern"]["args"] == ["ros2"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ('<node name="a" pkg="tools" type="report"/><node pkg="tools" exec="report"/>',
+     "mixes roslaunch (ROS 1) and ROS 2 launch XML: `type=` on <node> at line 2 is ROS 1, "
+     "`exec=` on <node> at line 2 is ROS 2"),
+    ('<node name="a" pkg="tools"/>', "bad.launch:2:1: roslaunch's <node> needs 'type'"),
+    ('<arg name="a" default="1"/><node name="n" pkg="tools" type="report" args="$(arg b)"/>',
+     "bad.launch:2:28: launch configuration 'b' is not set"),
+    ('<rosparam command="load" file="$(find tools)/config/broken.yaml"/><node name="n" '
+     'pkg="tools" type="report"/>', "broken.yaml:2:1"),
+    ('<param name="p" command="sh -c \'echo oops >&amp;2; exit 3\'"/><node name="n" '
+     'pkg="tools" type="report"/>', "bad.launch:2:1: command 'sh -c 'echo oops >&2; exit 3'' "
+     "failed with exit code 3; its stderr:\n    oops"),
+    ('<node name="n" pkg="tools" type="nosuch" required="true"/>',
+     "package 'tools' has no executable 'nosuch'"),
+    ('<node name="twin" pkg="tools" type="report"/><node name="twin" pkg="tools" '
+     'type="report"/>', "roslaunch file contains multiple nodes named [/twin]"),
+    ('<param name="p" binfile="x.bin"/><node name="n" pkg="tools" type="report"/>',
+     "<param binfile=> is not supported"),
+    ('<group nss="x"/><node name="n" pkg="tools" type="report"/>',
+     "roslaunch's <group> has no attribute 'nss'"),
+], ids=["mixed", "no-type", "undefined-arg", "rosparam-yaml", "command-fails",
+        "required-missing", "duplicate-names", "binfile", "unknown-attribute"])
+def test_bad_roslaunch_files(ros1, text, expected):
+    ros1.write("bad.launch", f"<launch>\n{text}\n</launch>\n")
+    result = ros1.run("launch", "bad.launch", timeout=60)
+    said = result.stdout + result.stderr
+    assert result.returncode == 1, said
+    assert expected in said, said
+    assert "Traceback" not in said
