@@ -21,6 +21,11 @@ import pytest
 REPO = Path(__file__).resolve().parent.parent
 
 
+# A suite started in the background of a script (`pytest &`) inherits SIGINT ignored, and so
+# would every process it starts: the tests send SIGINT as a user's Ctrl-C, so give it back.
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+
 def launcher_argv() -> list[str]:
     exe = Path(sys.executable).with_name("launcher")
     return [str(exe)] if exe.exists() else [sys.executable, "-m", "launcher"]

@@ -38,6 +38,17 @@ from launcher.errors import LaunchError
 __all__ = ["Logger", "Node", "Parameter", "Publisher", "Rate", "Subscription", "Timer"]
 
 
+def _hear_ctrl_c() -> None:
+    """A node stops on SIGINT however it was started: a program started in the background
+    of a script (`python node.py &`) inherits SIGINT ignored, and would then ignore Ctrl-C and
+    the stop a launch sends. rclpy's init installs its handler over that as well."""
+    import signal
+
+    if threading.current_thread() is threading.main_thread() and \
+            signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
 class Parameter:
     def __init__(self, name: str, value: Any) -> None:
         self.name, self.value = name, value
@@ -77,6 +88,7 @@ class Node:
         # threading module's own exit hook (concurrent.futures uses it) runs before the join.
         register = getattr(threading, "_register_atexit", atexit.register)
         register(self.destroy_node)
+        _hear_ctrl_c()
         self._on_set: list[Callable[[str, Any], None]] = []
         if parameter_services:
             from launcher.bus.parameters import serve  # rcl_interfaces types: only here

@@ -446,6 +446,18 @@ def test_a_node_alone_starts_the_graph_which_stops_after_it(bus):
     wait_router_gone(bus)
 
 
+def test_a_node_started_with_sigint_ignored_still_stops_on_it(bus):
+    """`python node.py &` in a script starts it with SIGINT ignored; a node still stops on
+    Ctrl-C and on a launch's SIGINT (rclpy's init does the same)."""
+    node = subprocess.Popen([PY, "talker.py", "2.0"], cwd=bus.root, env=bus.env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
+    assert "talking" in node.stdout.readline()
+    node.send_signal(signal.SIGINT)
+    assert node.wait(10) == 0  # spin() ends quietly on Ctrl-C
+    wait_router_gone(bus)
+
+
 def test_bag_record_all_includes_latched_topics(bus):
     talker, out = launch(bus, "talk.launch.yaml",
                          f"launch:\n  - executable: {{cmd: {PY} talker.py 2.0, output: screen}}\n")
