@@ -10,7 +10,9 @@ ROS 1 → launcher:
   and `rosparam`s are its private parameters, `remap`s and `env`s its own.
 - `param` outside a node → `set_parameter` for the nodes after it in its scope (names resolve
   in the enclosing `ns`); `command=`, `textfile=` give its text.
-- `rosparam command="load"` (a file, or YAML inside the tag; `param`, `ns`, `subst_value`).
+- `rosparam command="load"` (a file, or YAML inside the tag; `param`, `ns`, `subst_value`);
+  outside a node, `dump` writes the parameters set so far to a file and `delete` removes them
+  for the nodes after it (a node's own `dump`/`delete` have nothing to act on and are dropped).
 - `group ns` → `group` with `push_ros_namespace`; `include file ns pass_all_args` with `arg`
   children → `include` (its arguments kept apart, as roslaunch scopes them per file).
 - `remap` and `env` outside a node → `set_remap`, `set_env` (scoped by `group`).
@@ -323,13 +325,13 @@ def _rosparam_entries(entity: Entity) -> list[Entity]:
 
 def _global_rosparam(entity: Entity) -> list[Entity]:
     if _rosparam(entity) is None and "#text" not in entity.attributes:
-        command = entity.attributes["command"]
-        log = Entity("log", entity.location, nested_in_children=True)
-        log.attributes["message"] = _text(
-            f"<rosparam command='{command.value}'> is skipped: ROS 2 has no parameter server "
-            "to dump or delete from", entity.location)
-        log.attributes["level"] = _text("warn", entity.location)
-        return [log]
+        # dump and delete: the parameters this launch has set so far (for the nodes after)
+        made = Entity("set_parameter", entity.location, nested_in_children=True)
+        made.attributes["rosparam_command"] = entity.attributes["command"]
+        for key, new in (("file", "rosparam_file"), ("param", "name"), ("ns", "name")):
+            if key in entity.attributes:
+                made.attributes[new] = entity.attributes[key]
+        return [made]
     made = Entity("set_parameter", entity.location, nested_in_children=True)
     for key, new in (("file", "rosparam_file"), ("#text", "rosparam"), ("param", "name"),
                      ("ns", "name"), ("subst_value", "allow_substs")):

@@ -4,7 +4,6 @@ MCAP and SQLite files read back with rosbags."""
 from __future__ import annotations
 
 import subprocess
-import sys
 import time
 
 import pytest
@@ -12,20 +11,13 @@ import yaml
 from rosbags.rosbag2 import Reader
 
 from tests.conftest import launcher_argv
-from tests.integration.test_bus import TALKER, launch, stop, wait_text
-
-PY = sys.executable
+from tests.integration.test_bus import TALKER, script_launched
 
 
 @pytest.fixture
 def talking(ws):
-    ws.own_bus()
-    ws.write("talker.py", TALKER)
-    proc, out = launch(ws, "talk.launch.yaml",
-                       f"launch:\n  - executable: {{cmd: {PY} talker.py 3.0, output: screen}}\n")
-    wait_text(out, "talking")
-    yield ws
-    assert stop(proc) == 130
+    with script_launched(ws.own_bus(), "talker.py", TALKER, "talking", "3.0") as running:
+        yield running
 
 
 def metadata(folder) -> dict:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import signal
 import subprocess
 import sys
@@ -62,6 +63,21 @@ def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
 # A launch that hosts the graph: a Python program may be a node, so the launch starts the
 # graph's router with it (a launch of system programs alone starts none).
 IDLE = "launch:\n  - executable: {{cmd: {py} -c 'import time; time.sleep({seconds})'}}\n"
+
+
+@contextlib.contextmanager
+def script_launched(ws, script: str, text: str, ready: str, args: str = ""):
+    """The node program `text`, written to `script` and run by a launch of its own once it
+    says `ready`; stopped (as Ctrl-C stops a launch) when the block ends."""
+    ws.write(script, text)
+    proc, out = launch(ws, f"{script}.launch.yaml", "launch:\n  - executable: "
+                       f"{{cmd: {PY} {script} {args}, output: screen}}\n")
+    try:
+        wait_text(out, ready)
+        yield ws
+    finally:
+        code = stop(proc)
+    assert code == 130
 
 
 def wait_for_router(ws, timeout: float = 20, domain: int = 0) -> str:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.integration.test_bus import launch, stop, wait_text
+from tests.integration.test_bus import script_launched
 
 REPO = Path(__file__).resolve().parents[2]
 PY = sys.executable
@@ -53,13 +53,6 @@ def test_commands_verbs_and_options_complete(ws, line, expected, absent):
 
 
 def test_names_on_the_graph_complete(ws):
-    ws.own_bus()
-    ws.write("chatty.py", TALKER)
-    proc, out = launch(ws, "chatty.launch.yaml",
-                       f"launch:\n  - executable: {{cmd: {PY} chatty.py, output: screen}}\n")
-    try:
-        wait_text(out, "up")
+    with script_launched(ws.own_bus(), "chatty.py", TALKER, "up"):
         assert "/chatter" in completions(ws, "launcher topic echo /ch")
         assert "/chatty" in completions(ws, "launcher param list /")
-    finally:
-        assert stop(proc) == 130

@@ -5,6 +5,7 @@ that reports what it was given. Expected behaviour is written from roslaunch's d
 from __future__ import annotations
 
 import pytest
+import yaml
 
 from tests.unit.test_packages import make_tree, manifest
 
@@ -123,6 +124,25 @@ def test_nodes_params_and_scopes_as_roslaunch_has_them(ros1):
     plain = got["/plain"]
     assert plain["remaps"] == [] and "gain" not in plain["params"]  # the group's stay inside
     assert plain["params"]["rate"] == 50
+
+
+def test_rosparam_dump_and_delete(ros1):
+    """roslaunch: `rosparam command="dump"` writes the parameters (under `param`) to a file,
+    `command="delete"` removes them; here, of what the launch has set for its nodes."""
+    ros1.write("dump.launch", """<launch>
+  <rosparam command="load" file="$(find tools)/config/gains.yaml" ns="gains"/>
+  <param name="rate" value="50"/>
+  <rosparam command="dump" file="$(dirname)/gains_dump.yaml" param="gains"/>
+  <rosparam command="dump" file="$(dirname)/rate_dump.yaml" param="rate"/>
+  <rosparam command="delete" param="gains"/>
+  <node name="after" pkg="tools" type="report" output="screen"/>
+</launch>
+""")
+    after = reports(ros1, "dump.launch")["/after"]
+    assert after["params"] == {"rate": 50}  # the gains were deleted before it
+    dumped = (ros1.root / "gains_dump.yaml").read_text()
+    assert yaml.safe_load(dumped) == {"p": 1.5, "i": 0.1, "limits": {"max": 2}}
+    assert yaml.safe_load((ros1.root / "rate_dump.yaml").read_text()) == 50
 
 
 def test_include_passes_only_its_args_and_substitutions(ros1):

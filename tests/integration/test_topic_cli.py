@@ -8,7 +8,7 @@ import sys
 import pytest
 import yaml
 
-from tests.integration.test_bus import launch, stop, wait_text
+from tests.integration.test_bus import script_launched
 
 PY = sys.executable
 # Joint states stamped with the wall clock, 20 a second, and a latched string.
@@ -36,13 +36,8 @@ node.destroy_node()
 
 @pytest.fixture
 def states(ws):
-    ws.own_bus()
-    ws.write("states.py", STATES)
-    proc, out = launch(ws, "states.launch.yaml",
-                       f"launch:\n  - executable: {{cmd: {PY} states.py, output: screen}}\n")
-    wait_text(out, "publishing")
-    yield ws
-    assert stop(proc) == 130
+    with script_launched(ws.own_bus(), "states.py", STATES, "publishing") as running:
+        yield running
 
 
 def echo(ws, *flags: str) -> str:

@@ -39,19 +39,26 @@ class SetParameter(Action):
     rosparam_file: Any = attr(Kind.TEXT, doc="roslaunch's rosparam: a YAML map of parameters.")
     rosparam: Any = attr(Kind.TEXT, doc="roslaunch's rosparam: the YAML, inline.")
     allow_substs: Any = attr(Kind.BOOL, doc="rosparam's subst_value.")
+    rosparam_command: Any = attr(Kind.TEXT, choices=("load", "dump", "delete"),
+                                 doc="roslaunch's rosparam command (default load).")
 
     def __post_init__(self) -> None:
         super().__post_init__()
         if self.value is None:
             self.value = params.ros1_value(self.command, self.textfile)
-        if self.rosparam_file is None and self.rosparam is None and (
-                self.name is None or self.value is None):
+        if self.rosparam_command is None and self.rosparam_file is None and \
+                self.rosparam is None and (self.name is None or self.value is None):
             raise ExecutionError("set_parameter needs 'name' and 'value'")
         if self.value is not None and not isinstance(self.value, params.Written | list):
             self.value = [params.python_value(v) for v in self.value] \
                 if isinstance(self.value, list | tuple) else params.python_value(self.value)
 
     def execute(self, context: LaunchContext) -> None:
+        command = resolve(context, self.rosparam_command, Kind.TEXT, "command") \
+            if self.rosparam_command is not None else "load"
+        if command != "load":
+            self._dump_or_delete(context, command)
+            return
         if self.rosparam_file is not None or self.rosparam is not None:
             from launcher.description.actions.node import rosparam_entry
 
@@ -65,6 +72,41 @@ class SetParameter(Action):
         except ExecutionError as exc:
             raise exc if exc.location else exc.at(self.where) from None
         params.add_global_parameter(context, name, value)
+
+
+    def _dump_or_delete(self, context: LaunchContext, command: str) -> None:
+        """roslaunch's `<rosparam command="dump|delete">`, over what this launch has set."""
+        prefix = perform_text(context, self.name).strip("/").replace("/", ".") \
+            if self.name is not None else ""
+
+        def under(name: str) -> bool:
+            return not prefix or name == prefix or name.startswith(prefix + ".")
+
+        if command == "delete":
+            kept = tuple(item for item in params.global_settings(context)
+                         if item[0] == params.FILE or not under(item[0]))
+            context.configurations[params.GLOBAL_PARAMETERS] = kept  # type: ignore[assignment]
+            return
+        if self.rosparam_file is None:
+            raise ExecutionError("<rosparam command=\"dump\"> needs file=", self.where)
+        found = {n: v for n, v in params.global_parameters(context).items() if under(n)}
+        document: Any = {}
+        if list(found) == [prefix]:  # one parameter: its value, as rosparam dump writes it
+            document = found[prefix]
+        for name, value in found.items() if list(found) != [prefix] else ():
+            *outer, last = (name[len(prefix) + 1:] if prefix else name).split(".")
+            level = document
+            for part in outer:
+                level = level.setdefault(part, {})
+            level[last] = value
+        path = Path(perform_text(context, self.rosparam_file))
+        import yaml
+
+        try:
+            path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
+        except OSError as exc:
+            raise ExecutionError(f"<rosparam command=\"dump\">: cannot write '{path}': "
+                                 f"{exc.strerror}", self.where) from None
 
 
 @action("set_parameters_from_file")
