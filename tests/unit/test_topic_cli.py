@@ -79,3 +79,22 @@ def test_echo_data_of_nested_messages_and_arrays():
     cut = echo_data(build("std_msgs/msg/Float64MultiArray", {"data": [1.0, 2.0, 3.0]}),
                     "std_msgs/msg/Float64MultiArray", limit=2)
     assert cut["data"] == [1.0, 2.0, "..."]
+
+
+def test_qos_options_start_from_a_profile_and_override_it():
+    from launcher.bus.qos import QoS
+    from launcher.cli import qos_options
+
+    parser = argparse.ArgumentParser()
+    qos_options.add(parser, default="best_available")
+    chosen = qos_options.chosen
+    assert chosen(parser.parse_args([])) == QoS(depth=10, reliable=True, transient_local=True)
+    assert chosen(parser.parse_args(["--qos-profile", "sensor_data"])) == \
+        QoS(depth=5, reliable=False)
+    assert chosen(parser.parse_args(["--qos-profile", "sensor_data", "--qos-reliability",
+                                     "reliable", "--qos-depth", "3"])) == QoS(depth=3)
+    assert chosen(parser.parse_args(["--qos-history", "keep_all"])).depth == \
+        qos_options.KEEP_ALL_DEPTH
+    assert not chosen(parser.parse_args(["--qos-durability", "volatile"])).transient_local
+    with pytest.raises(SystemExit):
+        parser.parse_args(["--qos-reliability", "sometimes"])
