@@ -32,16 +32,18 @@ if ! ldconfig -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
     fi
 fi
 
-# The tests put a graph across two network namespaces (`ip`, iproute2) and act as another
-# user (`setpriv`, util-linux).
-if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv; } >/dev/null 2>&1; then
+# The tests put a graph across two network namespaces (`ip`, iproute2), act as another user
+# (`setpriv`, util-linux) and try tab completion in zsh.
+if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv && command -v zsh; } \
+    >/dev/null 2>&1; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-        say "installing iproute2 and util-linux (ip, setpriv): the tests put a graph across" \
-            "two network namespaces and act as another user"
+        say "installing iproute2, util-linux and zsh (ip, setpriv, zsh): the tests put a graph" \
+            "across two network namespaces, act as another user and complete in zsh"
         apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-            iproute2 util-linux >/dev/null
+            iproute2 util-linux zsh >/dev/null
     else
-        echo "note: the tests need ip and setpriv: apt-get install iproute2 util-linux" >&2
+        echo "note: the tests need ip, setpriv and zsh: apt-get install iproute2 util-linux" \
+            "zsh" >&2
     fi
 fi
 

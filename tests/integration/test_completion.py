@@ -56,3 +56,19 @@ def test_names_on_the_graph_complete(ws):
     with script_launched(ws.own_bus(), "chatty.py", TALKER, "up"):
         assert "/chatter" in completions(ws, "launcher topic echo /ch")
         assert "/chatty" in completions(ws, "launcher param list /")
+
+
+def test_zsh_registers_and_completes_with_descriptions(ws, tmp_path):
+    """zsh: . hooks/setup.sh registers the completion (compinit's table), and the program
+    answers zsh's request (as the registered function asks it) with each word's help."""
+    registered = subprocess.run(
+        ["zsh", "-c", f'. "{REPO}/hooks/setup.sh" >/dev/null; print -r -- ${{_comps[launcher]}}'],
+        cwd=ws.root, env=ws.env, capture_output=True, text=True, timeout=60)
+    assert registered.stdout.strip() == "_python_argcomplete", registered.stderr
+    out = tmp_path / "answer"
+    line = "launcher topic ec"
+    subprocess.run(["launcher"], cwd=ws.root, timeout=60, env={
+        **ws.env, "PATH": f"{REPO / '.venv' / 'bin'}:{ws.env['PATH']}", "_ARGCOMPLETE": "1",
+        "_ARGCOMPLETE_SHELL": "zsh", "_ARGCOMPLETE_SUPPRESS_SPACE": "1", "COMP_LINE": line,
+        "COMP_POINT": str(len(line)), "_ARGCOMPLETE_STDOUT_FILENAME": str(out)})
+    assert out.read_text() == "echo:print the messages on a topic"
