@@ -83,6 +83,8 @@ def typed(text: str) -> Any:
 
 
 def _typed(text: str) -> Any:
+    if "\n" in text.strip():  # a document (a robot description a launch gave): text, lines kept
+        return text
     import yaml  # only for -p values and params files: node start-up time
 
     try:

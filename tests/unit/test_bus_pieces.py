@@ -60,6 +60,14 @@ def test_ros_args_as_the_node_action_writes_them(tmp_path):
     assert parsed.parameters == {"gain": 0.5, "name": "bob"}
     loaded = ros_args.load_params_file(str(params), "driver", "/r1")
     assert loaded == {"rate": 5, "limits.max": 1.5, "only_me": True}
+    # -p and params files in command-line order, later ones winning (as rcl applies them);
+    # a value of several lines (a robot description) is text with its lines
+    urdf = "<robot name='r'>\n  <link name='a'/>\n</robot>\n"
+    ordered = ros_args.parse(["--ros-args", "-p", "rate:=1", "--params-file", str(params),
+                              "-p", f"robot_description:={urdf}", "-r", "__node:=driver",
+                              "-r", "__ns:=/r1"])
+    values = ros_args.parameters(ordered, "driver", "/r1")
+    assert values["rate"] == 5 and values["robot_description"] == urdf
 
 
 def test_bad_ros_args_and_params_file(tmp_path):
