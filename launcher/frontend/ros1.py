@@ -84,7 +84,7 @@ def translate(root: Entity) -> Entity:
     """The ROS 2 entity tree that does what this roslaunch tree does."""
     _unique_names(root.children, "", {})
     out = Entity("launch", root.location, nested_in_children=True)
-    out.children = _body(root.children, top=True)
+    out.children = _body(root.children)
     return out
 
 
@@ -126,7 +126,7 @@ def _join(outer: str, inner: str) -> str:
         if (outer.strip("/") or inner.strip("/")) else ""
 
 
-def _body(children: list[Entity], top: bool = False) -> list[Entity]:
+def _body(children: list[Entity]) -> list[Entity]:
     made: list[Entity] = []
     for child in children:
         made += _entity(child)
@@ -297,47 +297,49 @@ def _global_param(entity: Entity) -> Entity:
 ROSPARAM_ATTRS = {"command", "file", "param", "ns", "subst_value", "#text"}
 
 
-def _rosparam(entity: Entity) -> Attribute | None:
+def _loads(entity: Entity) -> bool:
+    """Whether a `<rosparam>` loads (else it dumps or deletes); its attributes checked."""
     _known(entity, ROSPARAM_ATTRS)
     command = str(entity.attributes["command"].value) if "command" in entity.attributes \
         else "load"
     if command in ("dump", "delete"):
-        return None
+        return False
     if command != "load":
         raise ParseError(f"<rosparam command='{command}'>: expected load, dump or delete",
                          entity.attributes["command"].location)
     if "file" not in entity.attributes and "#text" not in entity.attributes:
         raise ParseError("<rosparam> needs file= or YAML inside the tag", entity.location)
-    return entity.attributes.get("file")
+    return True
+
+
+def _rosparam_into(entity: Entity, made: Entity) -> Entity:
+    """A `<rosparam>`'s attributes as the param entry (or set_parameter) takes them; `ns` and
+    `param` together name `ns/param`, as roslaunch has it."""
+    for key, new in (("file", "rosparam_file"), ("#text", "rosparam"),
+                     ("subst_value", "allow_substs")):
+        if key in entity.attributes:
+            made.attributes[new] = entity.attributes[key]
+    ns, param = entity.attributes.get("ns"), entity.attributes.get("param")
+    if ns is not None and param is not None:
+        made.attributes["name"] = Attribute(f"{ns.value}/{param.value}", ns.location)
+    elif ns is not None or param is not None:
+        made.attributes["name"] = ns or param  # type: ignore[assignment]
+    return made
 
 
 def _rosparam_entries(entity: Entity) -> list[Entity]:
     """A node's `<rosparam>`: parameters from ROS 1 YAML (a plain map)."""
-    if _rosparam(entity) is None and "#text" not in entity.attributes:
-        return []
-    made = Entity("param", entity.location, nested_in_children=True)
-    for key, new in (("file", "rosparam_file"), ("#text", "rosparam"), ("param", "name"),
-                     ("ns", "ns"), ("subst_value", "allow_substs")):
-        if key in entity.attributes:
-            made.attributes[new if key != "ns" else "name"] = entity.attributes[key]
-    return [made]
+    if not _loads(entity):
+        return []  # a node's own dump or delete: nothing to act on
+    return [_rosparam_into(entity, Entity("param", entity.location, nested_in_children=True))]
 
 
 def _global_rosparam(entity: Entity) -> list[Entity]:
-    if _rosparam(entity) is None and "#text" not in entity.attributes:
-        # dump and delete: the parameters this launch has set so far (for the nodes after)
-        made = Entity("set_parameter", entity.location, nested_in_children=True)
-        made.attributes["rosparam_command"] = entity.attributes["command"]
-        for key, new in (("file", "rosparam_file"), ("param", "name"), ("ns", "name")):
-            if key in entity.attributes:
-                made.attributes[new] = entity.attributes[key]
-        return [made]
     made = Entity("set_parameter", entity.location, nested_in_children=True)
-    for key, new in (("file", "rosparam_file"), ("#text", "rosparam"), ("param", "name"),
-                     ("ns", "name"), ("subst_value", "allow_substs")):
-        if key in entity.attributes:
-            made.attributes[new] = entity.attributes[key]
-    return [made]
+    if not _loads(entity):
+        # dump and delete: the parameters this launch has set so far (for the nodes after)
+        made.attributes["rosparam_command"] = entity.attributes["command"]
+    return [_rosparam_into(entity, made)]
 
 
 def _include(entity: Entity) -> Entity:
