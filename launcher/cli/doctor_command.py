@@ -117,9 +117,8 @@ def hooks(index: object | None) -> Check:
 
     try:
         after = hooked_environment(index, dict(os.environ))  # type: ignore[arg-type]
-    except Exception as exc:  # noqa: BLE001 - what this check reports
-        where = getattr(exc, "location", None)
-        return FAIL, "environment hooks", f"{where}: {exc}" if where else str(exc)
+    except Exception as exc:  # noqa: BLE001 - what this check reports (with its file:line)
+        return FAIL, "environment hooks", str(exc)
     changed = sorted(k for k in after if after[k] != os.environ.get(k))
     return OK, "environment hooks", f"they set {', '.join(changed) or 'nothing'}"
 

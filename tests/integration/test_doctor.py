@@ -30,8 +30,8 @@ def test_doctor_names_what_to_fix(ws):
     fails = [line for line in done.stdout.splitlines() if line.startswith("FAIL")]
     assert any("the graph's router" in line and "LAUNCHER_ROUTER" in line for line in fails), \
         done.stdout
-    assert any("environment hooks" in line and "robot_sim.dsv:1" in line for line in fails), \
-        done.stdout
+    hooks = [line for line in fails if "environment hooks" in line]
+    assert len(hooks) == 1 and hooks[0].count("robot_sim.dsv:1:1") == 1, done.stdout
     assert "2 to fix: the graph's router, environment hooks" in done.stdout
     ws.env.pop("LAUNCHER_ROUTER")
     ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "nowhere")
