@@ -29,11 +29,14 @@ def complete(build_parser: Callable[[str | None], Any], commands: dict[str, Any]
 
 
 def _graph_names(what: str) -> list[str]:
-    """Names on the running graph; nothing when no graph answers within a moment."""
+    """Names on the running graph; nothing when no graph runs (a Tab starts none)."""
     try:
-        from launcher.bus import graph, keys
+        from launcher.bus import discovery, graph, keys
         from launcher.bus.session import open_session
 
+        if not discovery.explicit_endpoints() and not discovery.answers(
+                discovery.socket_path()):
+            return []  # no graph: a Tab starts no router
         session = open_session("client")
         try:
             if what == "topics":

@@ -53,7 +53,10 @@ def test_commands_verbs_and_options_complete(ws, line, expected, absent):
 
 
 def test_names_on_the_graph_complete(ws):
-    with script_launched(ws.own_bus(), "chatty.py", TALKER, "up"):
+    ws.own_bus()
+    assert completions(ws, "launcher topic echo /") == []  # no graph yet, and a Tab
+    assert not (ws.root / "run" / "domain-0.log").exists()  # starts no router for it
+    with script_launched(ws, "chatty.py", TALKER, "up"):
         assert "/chatter" in completions(ws, "launcher topic echo /ch")
         assert "/chatty" in completions(ws, "launcher param list /")
 
