@@ -99,8 +99,17 @@ class PushScope(_Internal):
 
 
 class PopScope(_Internal):
+    """The end of a scope; the configurations named in `carry` keep the values they had inside
+    (roslaunch's parameters outlive the file that set them)."""
+
+    def __init__(self, carry: tuple[str, ...] = ()) -> None:
+        super().__init__()
+        self.carry = carry
+
     def execute(self, context: LaunchContext) -> None:
+        kept = {k: context.configurations[k] for k in self.carry if k in context.configurations}
         context.pop_scope()
+        context.configurations.update(kept)
 
 
 class Replay(_Internal):

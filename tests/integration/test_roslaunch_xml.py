@@ -57,6 +57,7 @@ def ros1(ws):
         "tools/config/broken.yaml": "p: [1, 2\n",
         "tools/launch/inner.launch": """<launch>
   <arg name="who" default="inner"/>
+  <param name="set_inside" value="7"/>
   <node name="inner_node" pkg="tools" type="report" output="screen" args="$(arg who)"/>
 </launch>
 """,
@@ -165,9 +166,25 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
     assert got["/one/inner_node"]["args"] == ["inner"]  # not the outer 'who'
     assert got["/two/inner_node"]["args"] == ["passed"]
     assert got["/three/inner_node"]["args"] == ["outer"]
+    # roslaunch's parameters outlive the file that set them: a node after the includes gets
+    # what an included file set (an include with ns= sets it in its namespace)
+    assert got["/subst"]["params"].get("set_inside") is None  # (all three had ns=)
     assert got["/subst"]["args"] == ["fallback", "0.50.5", "0.5cm", str(ros1.root)]
     anonymous = [name for name in got if name.startswith("/worker_")]
     assert len(anonymous) == 1
+
+
+def test_parameters_outlive_the_included_file(ros1):
+    """roslaunch: a <param> is on the parameter server for the rest of the launch, whichever
+    file set it: a node after the include reads what the included file set."""
+    ros1.write("outer.launch", """<launch>
+  <include file="$(find tools)/launch/inner.launch"/>
+  <node name="after" pkg="tools" type="report" output="screen"/>
+</launch>
+""")
+    got = reports(ros1, "outer.launch")
+    assert got["/after"]["params"]["set_inside"] == 7
+    assert got["/inner_node"]["args"] == ["inner"]
 
 
 def test_required_test_and_machine(ros1):

@@ -14,6 +14,7 @@ from typing import Any
 from launcher.description.action import Action, LaunchDescription, PopScope, PushScope
 from launcher.description.actions.arguments import SetLaunchConfiguration, check_required
 from launcher.description.fields import Kind, attr, resolve
+from launcher.description.parameters import GLOBAL_PARAMETERS
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError, LaunchError
@@ -93,7 +94,9 @@ class IncludeLaunchDescription(Action):
                                                           Kind.BOOL, "pass_all_args"):
             # roslaunch: the file sees only what is passed (the launch's ROS settings stay)
             kept = {k: v for k, v in context.configurations.items() if k.startswith("<")}
-            return [PushScope(forwarding=False, keep=kept), *sets, description, PopScope()]
+            # its parameters are the parameter server's: the nodes after the include get them
+            return [PushScope(forwarding=False, keep=kept), *sets, description,
+                    PopScope(carry=(GLOBAL_PARAMETERS,))]
         if resolve(context, self.scoped, Kind.BOOL, "scoped"):
             return [PushScope(), *sets, description, PopScope()]
         return [*sets, description]
