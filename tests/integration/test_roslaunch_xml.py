@@ -45,6 +45,16 @@ def main():
 """
 
 
+# A rospy node (launcher's rospy) reading parameters as ROS 1 code does.
+READER = """#!/usr/bin/env python
+import rospy
+rospy.init_node("reader")
+print("READ", rospy.get_param("/robot_description"), rospy.get_param("robot_description"),
+      rospy.get_param("~gain"), rospy.has_param("/rate"), rospy.get_param("/nope", "dflt"),
+      flush=True)
+"""
+
+
 @pytest.fixture
 def ros1(ws):
     make_tree(ws.root / "src", {
@@ -62,7 +72,8 @@ def ros1(ws):
 </launch>
 """,
         "tools/urdf/robot.txt": "<robot name='r'/>\n",
-    })
+        "tools/scripts/reader.py": READER,
+    }, executable=("tools/scripts/reader.py",))
     ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "src")
     ws.env["LAUNCHER_CACHE_DIR"] = str(ws.root / "cache")
     return ws
@@ -172,6 +183,21 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
     assert got["/subst"]["args"] == ["fallback", "0.50.5", "0.5cm", str(ros1.root)]
     anonymous = [name for name in got if name.startswith("/worker_")]
     assert len(anonymous) == 1
+
+
+def test_rospy_reads_the_launch_parameters(ros1):
+    """roslaunch: a rospy node reads a <param> outside it by its graph name (/name or a
+    relative one) and its own <param> as ~name."""
+    ros1.write("read.launch", """<launch>
+  <param name="robot_description" value="urdf-text"/>
+  <param name="rate" value="50"/>
+  <node name="reader" pkg="tools" type="reader.py" output="screen">
+    <param name="gain" value="2.5"/>
+  </node>
+</launch>
+""")
+    done = ros1.run("launch", "read.launch", timeout=60)
+    assert "READ urdf-text urdf-text 2.5 True dflt" in done.stdout, done.stdout + done.stderr
 
 
 def test_parameters_outlive_the_included_file(ros1):

@@ -112,9 +112,13 @@ def init_node(name: str, argv: list[str] | None = None, anonymous: bool = False,
         name = name.strip("/")
         if anonymous:
             name = f"{name}_{os.getpid()}_{int(_time.time() * 1000)}"
-        words, private = _ros1_to_ros2_args(sys.argv[1:] if argv is None else argv[1:])
+        given = sys.argv[1:] if argv is None else argv[1:]
+        # a launch's node action adds ROS 2's `--ros-args …` (its name, params files, -p):
+        # taken as they are; ROS 1's `from:=to`, `_param:=` come before it
+        cut = given.index("--ros-args") if "--ros-args" in given else len(given)
+        words, private = _ros1_to_ros2_args(given[:cut])
         try:
-            node = Node(name, argv=["--ros-args", *words] if words else [])
+            node = Node(name, argv=[*given[cut:], *(["--ros-args", *words] if words else [])])
         except LaunchError as exc:
             raise ROSInitException(str(exc)) from None
         node._parameters.update(private)
@@ -334,12 +338,27 @@ def _parameter_key(name: str) -> str:
     return f"{get_namespace()}{name}" if node is not None else "/" + name
 
 
+def _given(key: str, values: dict[str, Any]) -> str | None:
+    """The node's parameter that holds `key`: the name itself, or, for a graph-wide name in
+    the node's namespace, the name a launch gave the node for it (roslaunch's `<param>`
+    outside a node reaches the node as its own `robot_description`)."""
+    if key in values:
+        return key
+    space = get_namespace()
+    if key.startswith(space):
+        local = key[len(space):].replace("/", ".")
+        if local in values:
+            return local
+    return None
+
+
 def get_param(param_name: str, default: Any = _unspecified) -> Any:
     node = _need_node("get_param")
     key = _parameter_key(param_name)
     values = node.parameters
-    if key in values:
-        return values[key]
+    found = _given(key, values)
+    if found is not None:
+        return values[found]
     prefix = key + ("." if not key.startswith("/") else "/")
     nested = {k[len(prefix):]: v for k, v in values.items() if k.startswith(prefix)}
     if nested:
@@ -360,7 +379,7 @@ def set_param(param_name: str, param_value: Any) -> None:
 
 def has_param(param_name: str) -> bool:
     node = _need_node("has_param")
-    return _parameter_key(param_name) in node.parameters
+    return _given(_parameter_key(param_name), node.parameters) is not None
 
 
 def delete_param(param_name: str) -> None:
