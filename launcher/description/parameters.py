@@ -12,8 +12,6 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from launcher.description.substitution import (
     Text,
     Text_,
@@ -90,6 +88,8 @@ def _scalar(context: LaunchContext, written: Written, kind: str | None, name: st
 
 def _yaml_value(text: str, name: str) -> Any:
     """Text by YAML's rules, as launch_ros reads XML text and substitution results."""
+    import yaml  # only where a value is read or written: a launch's start needs none
+
     if "\n" in text.strip() or not text.strip():
         return text  # robot descriptions and other documents stay text; so does ''
     try:
@@ -163,6 +163,8 @@ def rosparam_values(context: LaunchContext, text: str, prefix: str, where: Any,
                     substitute: bool = False) -> dict[str, Any]:
     """roslaunch's `<rosparam>` YAML (a plain map, nested maps for namespaces) as dotted
     parameter names under `prefix`; `substitute`: its substitutions performed first."""
+    import yaml  # only where a value is read or written: a launch's start needs none
+
     if substitute:
         if context.parse_text is None:
             raise ExecutionError("this run cannot read substitutions in files", where)
@@ -208,6 +210,8 @@ def parameter_argument(name: str, value: Any) -> str:
     """`name:=value` for `--ros-args -p`, as launch_ros writes a `set_parameter`: a string as
     it is (the node reads `true` or `5` in it by YAML's rules, as in ROS 2), anything else in
     YAML's flow style."""
+    import yaml  # only where a value is read or written: a launch's start needs none
+
     if isinstance(value, str):
         return f"{name}:={value}"
     text = yaml.safe_dump(value, default_flow_style=True, width=float("inf")).strip()
@@ -268,6 +272,8 @@ def join_namespace(outer: str, inner: str) -> str:
 
 def check_params_file(path: Path, where: Location | None) -> None:
     """A params file must exist and be valid YAML (errors name its line)."""
+    import yaml  # only where a value is read or written: a launch's start needs none
+
     try:
         text = read_text(path)
     except FileNotFoundError:
@@ -285,6 +291,8 @@ def check_params_file(path: Path, where: Location | None) -> None:
 
 def check_params_text(text: str, path: Path, where: Location | None) -> None:
     """A params file after its substitutions must still be valid YAML."""
+    import yaml  # only where a value is read or written: a launch's start needs none
+
     try:
         yaml.safe_load(text)
     except yaml.MarkedYAMLError as exc:
@@ -308,6 +316,8 @@ def write_params_file(folder: Path, stem: str, parameters: dict[str, Any],
                       key: str = "/**") -> Path:
     """A params file for the node `key` names (its full name, or /** for any), 0600 in a
     0700 folder: it may hold the robot description."""
+    import yaml  # only where a value is read or written: a launch's start needs none
+
     private_folder(folder)
     path = folder / f"{stem}.yaml"
     count = 1

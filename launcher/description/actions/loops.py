@@ -9,8 +9,6 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
-import yaml
-
 from launcher.description.action import Action, PopLocals, PushLocals
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
@@ -68,6 +66,8 @@ class ForEach(Action):
     function: Callable[..., Sequence[Action] | None] | None = field(default=None, repr=False)
 
     def execute(self, context: LaunchContext) -> list[Action]:
+        import yaml  # only when a for_each runs: a launch's start (and --show-args) needs none
+
         text = perform_text(context, to_text(self.input_values))
         chunks = [c for c in (c.strip() for c in text.split(";")) if c]
         _check_count("for_each", len(chunks))
