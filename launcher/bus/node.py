@@ -70,7 +70,7 @@ class Node:
         self.remaps = parsed.remaps
         self.args = parsed.user_args
         logger = Logger(self.fully_qualified_name, parsed.log_level or "INFO")
-        self._parameters = ros_args.parameters(parsed, self.name, self.namespace)
+        self._parameters = ros_args.node_parameters(parsed, self.name, self.namespace)
         if within is not None:
             self._parameters.update(within.parameters)
             within.nodes.append(self)

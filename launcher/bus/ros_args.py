@@ -21,12 +21,19 @@ class RosArgs:
     node_name: str | None = None
     namespace: str | None = None
     remaps: list[tuple[str, str]] = field(default_factory=list)
-    parameters: dict[str, Any] = field(default_factory=dict)
-    params_files: list[str] = field(default_factory=list)
     # ("file", path) and ("value", (name, value)) in the order given: later ones win, as in rcl
     parameter_sources: list[tuple[str, Any]] = field(default_factory=list)
     log_level: str | None = None
     user_args: list[str] = field(default_factory=list)
+
+    @property
+    def parameters(self) -> dict[str, Any]:
+        """The `-p` values."""
+        return dict(source for kind, source in self.parameter_sources if kind == "value")
+
+    @property
+    def params_files(self) -> list[str]:
+        return [source for kind, source in self.parameter_sources if kind == "file"]
 
 
 def parse(argv: list[str]) -> RosArgs:
@@ -56,7 +63,6 @@ def parse(argv: list[str]) -> RosArgs:
 
 def _option(out: RosArgs, word: str, value: str) -> None:
     if word in ("--params-file",):
-        out.params_files.append(value)
         out.parameter_sources.append(("file", value))
     elif word == "--log-level":
         out.log_level = value.split(":")[-1].upper()
@@ -67,8 +73,7 @@ def _option(out: RosArgs, word: str, value: str) -> None:
             raise LaunchError(f"--ros-args: '{word} {value}': expected NAME:=VALUE")
         name, _, text = value.partition(":=")
         if word in ("-p", "--param"):
-            out.parameters[name] = _typed(text)
-            out.parameter_sources.append(("value", (name, out.parameters[name])))
+            out.parameter_sources.append(("value", (name, _typed(text))))
         elif name == "__node":
             out.node_name = text
         elif name == "__ns":
@@ -94,7 +99,7 @@ def _typed(text: str) -> Any:
     return text if value is None or isinstance(value, dict) else value
 
 
-def parameters(parsed: RosArgs, node: str, namespace: str) -> dict[str, Any]:
+def node_parameters(parsed: RosArgs, node: str, namespace: str) -> dict[str, Any]:
     """The node's parameters from its command line: params files and `-p` values in order."""
     out: dict[str, Any] = {}
     for kind, source in parsed.parameter_sources:

@@ -302,13 +302,19 @@ def check_params_text(text: str, path: Path, where: Location | None) -> None:
 
 def write_private_copy(folder: Path, name: str, text: str) -> Path:
     """A params file with its substitutions performed, 0600 in a 0700 folder."""
+    path = _new_file(folder, Path(name).stem, Path(name).suffix)
+    write_private(path, text)
+    return path
+
+
+def _new_file(folder: Path, stem: str, suffix: str) -> Path:
+    """STEM.SUFFIX in the private `folder`, or STEM_2.SUFFIX, … when it is taken."""
     private_folder(folder)
-    path = folder / name
+    path = folder / f"{stem}{suffix}"
     count = 1
     while path.exists():
         count += 1
-        path = folder / f"{Path(name).stem}_{count}{Path(name).suffix}"
-    write_private(path, text)
+        path = folder / f"{stem}_{count}{suffix}"
     return path
 
 
@@ -318,12 +324,7 @@ def write_params_file(folder: Path, stem: str, parameters: dict[str, Any],
     0700 folder: it may hold the robot description."""
     import yaml  # only where a value is read or written: a launch's start needs none
 
-    private_folder(folder)
-    path = folder / f"{stem}.yaml"
-    count = 1
-    while path.exists():
-        count += 1
-        path = folder / f"{stem}_{count}.yaml"
+    path = _new_file(folder, stem, ".yaml")
     document = {key: {"ros__parameters": parameters}}
     write_private(path, yaml.safe_dump(document, default_flow_style=False, sort_keys=False,
                                        allow_unicode=True, width=float("inf")))

@@ -66,7 +66,7 @@ def test_ros_args_as_the_node_action_writes_them(tmp_path):
     ordered = ros_args.parse(["--ros-args", "-p", "rate:=1", "--params-file", str(params),
                               "-p", f"robot_description:={urdf}", "-r", "__node:=driver",
                               "-r", "__ns:=/r1"])
-    values = ros_args.parameters(ordered, "driver", "/r1")
+    values = ros_args.node_parameters(ordered, "driver", "/r1")
     assert values["rate"] == 5 and values["robot_description"] == urdf
 
 
