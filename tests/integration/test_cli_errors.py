@@ -37,6 +37,8 @@ CASES = {
                              "bad.launch.yaml:2:20: unknown substitution '$(arg2)'"),
     "unclosed-substitution": ("launch:\n  - log: {message: '$(var x'}\n",
                               "bad.launch.yaml:2:21: unclosed '$(var': expected ')'"),
+    "set-parameter-no-value": ("launch:\n  - set_parameter: {name: x}\n",
+                               "bad.launch.yaml:2:5: set_parameter needs 'name' and 'value'"),
     "undefined-var": ("launch:\n  - log: {message: 'hello $(var robto)'}\n",
                       "bad.launch.yaml:2:27: launch configuration 'robto' is not set"),
     "choice": ("launch:\n  - arg: {name: mode, default: simm, choice: [{value: sim}, "
