@@ -469,6 +469,8 @@ def test_a_node_started_with_sigint_ignored_still_stops_on_it(bus):
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
     assert "talking" in node.stdout.readline()
+    heard = bus.run("topic", "echo", "/cmd_vel", "--once", "--field", "linear.x")
+    assert heard.stdout.startswith("2.0"), heard.stderr  # its timer runs: it is in spin()
     node.send_signal(signal.SIGINT)
     assert node.wait(10) == 0  # spin() ends quietly on Ctrl-C
     wait_router_gone(bus)
