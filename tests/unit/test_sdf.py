@@ -193,6 +193,20 @@ def test_joint_types(tmp_path):
     assert model.body_jntnum[model.body("m/f").id] == 0  # welded to its parent
 
 
+def test_joint_limits_are_radians_in_a_spawned_model_as_in_a_world(tmp_path):
+    # SDF's <limit> is in radians (sdformat.org/spec, joint.axis.limit); MuJoCo's compiler
+    # reads angles as degrees unless told, and a spawned model is compiled apart from a world
+    joint = ('<link name="a"/><link name="b"/><joint name="j" type="revolute"><parent>a'
+             '</parent><child>b</child><axis><xyz>0 0 1</xyz><limit><lower>-3</lower>'
+             '<upper>3</upper></limit></axis></joint>')
+    world, _ = make_world(tmp_path, world_text(f'<model name="m">{joint}</model>'))
+    template = world.templates.from_string(f'<sdf version="1.9"><model name="n">{joint}'
+                                           '</model></sdf>', "n")
+    world.spawn(template, "n", [0, 0, 1], [1, 0, 0, 0])
+    for name in ("m/j", "n/j"):
+        assert world.model.jnt_range[world.model.joint(name).id] == pytest.approx([-3, 3])
+
+
 def test_inertia_is_turned_into_the_link_frame(tmp_path):
     model = load(tmp_path, world_text("""
       <model name="m"><link name="l"><inertial><pose>0.1 0 0 0 0 1.5707963</pose>

@@ -36,6 +36,7 @@ def load_model(text: str, path: Path | None, environ: Mapping[str, str] | None =
     context = Context(environ, packages)
     spec = mujoco.MjSpec()
     spec.modelname = element.get("name", "model")
+    spec.compiler.degree = False  # SDF's angles (joint limits) are radians, as in a world
     built = build(spec, element, origin, context, "", IDENTITY)
     return SdfModel(spec, built, parse_pose(element.find("pose")), context.warnings)
 
