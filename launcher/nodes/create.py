@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import sys
 import time
+from collections.abc import Sequence
 from typing import Any
 
 from launcher.errors import LaunchError, ParseError, UsageError, did_you_mean, reported
@@ -148,7 +149,8 @@ def run(argv: list[str]) -> int:
         node.destroy_node()
 
 
-def spawn(node: Any) -> int:
+def spawn(node: Any, joints: Sequence[tuple[str, float]] = ()) -> int:
+    """Spawn as the node's flags say; `joints` are first joint positions (spawn_model -J)."""
     from launcher.bus import keys
     from launcher.sim.transform import pose_from  # no MuJoCo, no numpy
 
@@ -165,7 +167,9 @@ def spawn(node: Any) -> int:
     position, quat = pose_from([options.get(k, 0.0) for k in ("x", "y", "z", "R", "P", "Y")])
     request = node.message("mujoco_sim/srv/Create_Request", name=options.get("name", ""),
                            allow_renaming=bool(options.get("allow_renaming", False)),
-                           sdf=text, sdf_filename=file)
+                           sdf=text, sdf_filename=file,
+                           joint_names=[j for j, _ in joints],
+                           joint_positions=[float(v) for _, v in joints])
     request.pose.position.x, request.pose.position.y, request.pose.position.z = position
     orientation = request.pose.orientation
     orientation.w, orientation.x, orientation.y, orientation.z = quat

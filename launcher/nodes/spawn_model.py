@@ -6,8 +6,9 @@
 
 `-param P` reads the node's parameter P (a launch file's `<param name="robot_description"
 command="xacro …"/>` gives it to every node after it); `-database MODEL` is `model://MODEL`.
-`-unpause` runs the sim once the model is in. Exit 0 when spawned, 1 with the sim's reason,
-2 on bad arguments.
+`-J JOINT POSITION` (again for each joint) starts a revolute or prismatic joint at that
+position. `-unpause` runs the sim once the model is in. Exit 0 when spawned, 1 with the sim's
+reason, 2 on bad arguments.
 """
 
 from __future__ import annotations
@@ -21,11 +22,11 @@ FLAGS = {"-param": "-param", "-file": "-file", "-model": "-name", "-x": "-x", "-
 IGNORED = {"-gazebo_namespace", "-robot_namespace", "-reference_frame", "-wait"}
 
 
-def create_argv(argv: list[str]) -> tuple[list[str], bool, list[tuple[str, str]]]:
+def create_argv(argv: list[str]) -> tuple[list[str], bool, list[tuple[str, float]]]:
     """(create's arguments, whether to unpause, the -J joint positions)."""
     out: list[str] = []
     unpause = False
-    joints: list[tuple[str, str]] = []
+    joints: list[tuple[str, float]] = []
     words = list(argv)
     while words:
         word = words.pop(0)
@@ -39,7 +40,12 @@ def create_argv(argv: list[str]) -> tuple[list[str], bool, list[tuple[str, str]]
         elif word == "-J":
             if len(words) < 2:
                 raise UsageError("-J needs a joint name and a position")
-            joints.append((words.pop(0), words.pop(0)))
+            joint, text = words.pop(0), words.pop(0)
+            try:
+                joints.append((joint, float(text)))
+            except ValueError:
+                raise UsageError(f"-J {joint} {text}: the position must be a number (radians "
+                                 "or metres)") from None
         elif word in FLAGS or word in IGNORED or word == "-database":
             if not words:
                 raise UsageError(f"{word} needs a value")
@@ -69,11 +75,7 @@ def run(argv: list[str]) -> int:
     flags, unpause, joints = create_argv(own)
     node = Node("spawn_model", argv=[*flags, *ros])
     try:
-        code = create.spawn(node)
-        if joints:
-            node.get_logger().warning(
-                f"-J: the initial joint positions ({', '.join(j for j, _ in joints)}) are not "
-                "applied: the model starts at its zero pose")
+        code = create.spawn(node, joints)
         if unpause and code == 0:
             world = create.find_world(node, 0, 0)
             control = node.create_client("mujoco_sim/srv/Control", f"/world/{world}/control",

@@ -212,8 +212,13 @@ class SimServer:
                 raise LaunchError("nothing to spawn: give the description (sdf) or a file "
                                   "(sdf_filename)")
             position, quat = spawn_pose(request.pose, template)
+            names, values = list(request.joint_names), list(request.joint_positions)
+            if len(names) != len(values):
+                raise LaunchError(f"{len(names)} joint names but {len(values)} joint "
+                                  "positions: give one position per joint")
             entity = self.world.spawn(template, request.name, position, quat,
-                                      request.allow_renaming)
+                                      request.allow_renaming,
+                                      dict(zip(names, map(float, values), strict=True)))
         except LaunchError as exc:
             self.log.warning(f"create failed: {exc}")
             response.success, response.message = False, str(exc)

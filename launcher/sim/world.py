@@ -275,7 +275,10 @@ class World:
         return any(b.name.startswith(prefix) or b.name == name for b in self.spec.bodies)
 
     def spawn(self, template: Template, name: str, position: Sequence[float],
-              quat: Sequence[float], allow_renaming: bool = False) -> Entity:
+              quat: Sequence[float], allow_renaming: bool = False,
+              joints: Mapping[str, float] | None = None) -> Entity:
+        """Add the template as entity `name`; `joints` gives hinge and slide joints their first
+        positions (a reset puts them back at zero, as the model has them)."""
         _checked(position, quat)
         name = self.unique_name(name or template.name, allow_renaming)
         for warning in template.warnings:
@@ -295,6 +298,7 @@ class World:
                 for geom in body.geoms:  # contacts take the larger friction unless the
                     geom.friction[0] = mu  # geom has priority over what it touches
                     geom.priority = max(geom.priority, 1)
+        _check_joints(child, joints or {}, template.label)
         root = template.root or roots[0].name
         entity = Entity(name, [], f"{name}/{root}", template.label, offset=template.offset,
                         roots=[f"{name}/{body.name}" for body in roots])
@@ -318,6 +322,11 @@ class World:
         self.entities[name] = entity
         self._plugins_changed()
         self._rebind(model, data)
+        if joints:
+            for joint, value in joints.items():
+                index = self.model.joint(f"{name}/{joint}").id
+                self.data.qpos[self.model.jnt_qposadr[index]] = value
+            mujoco.mj_forward(self.model, self.data)
         self._load_entity_plugins(entity)
         return entity
 
@@ -467,6 +476,21 @@ def _checked(position: Sequence[float], quat: Sequence[float]) -> None:
         check_pose(position, quat)
     except PoseError as exc:
         raise SpawnError(exc.message) from None
+
+
+def _check_joints(spec: mujoco.MjSpec, joints: Mapping[str, float], label: str) -> None:
+    """Each named joint is a hinge or slide of the model, each position a finite number."""
+    kinds = {j.name: j.type for j in spec.joints if j.name}
+    for joint, value in joints.items():
+        if joint not in kinds:
+            raise SpawnError(f"{label}: no joint named '{joint}'{did_you_mean(joint, kinds)}; "
+                             f"its joints: {', '.join(sorted(kinds)) or 'none'}")
+        if kinds[joint] not in (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE):
+            raise SpawnError(f"{label}: joint '{joint}' is not a revolute, continuous or "
+                             "prismatic joint: one position cannot place it")
+        if not math.isfinite(value):
+            raise SpawnError(f"{label}: joint '{joint}': position {value} is not a finite "
+                             "number")
 
 
 def _top_level_models(spec: mujoco.MjSpec) -> list[WorldModel]:

@@ -242,3 +242,49 @@ def test_gz_is_on_launched_processes_path_last_so_a_real_gazebo_wins(gz_ws):
                        env={"PATH": f"{fake}:{gz_ws.env['PATH']}"})
     assert real.wait(60) == 0
     assert "REAL GAZEBO sim --version-of-mine" in gz_ws.output("real.out")
+
+
+ARM_SDF = """<?xml version="1.0"?>
+<sdf version="1.9">
+  <model name="arm">
+    <static>false</static>
+    <link name="base"><inertial><mass>50</mass></inertial>
+      <collision name="c"><geometry><box><size>0.4 0.4 0.1</size></box></geometry></collision>
+    </link>
+    <link name="upper"><pose>0 0 0.2 0 0 0</pose><inertial><mass>0.5</mass></inertial>
+      <collision name="c"><pose>0.2 0 0 0 0 0</pose>
+        <geometry><box><size>0.4 0.05 0.05</size></box></geometry></collision>
+    </link>
+    <joint name="shoulder" type="revolute"><parent>base</parent><child>upper</child>
+      <axis><xyz>0 0 1</xyz><limit><lower>-3</lower><upper>3</upper></limit></axis></joint>
+    <plugin filename="gz-sim-joint-state-publisher-system"
+            name="gz::sim::systems::JointStatePublisher"/>
+  </model>
+</sdf>
+"""
+
+
+def test_spawn_model_minus_j_starts_a_joint_at_its_position(gz_ws):
+    """gazebo_ros's spawn_model -J JOINT POSITION: the model's joint starts there (ROS 1's
+    spawn_model sets it through /gazebo/set_model_configuration once the model is in); a
+    joint the model lacks fails the spawn, saying which joints it has."""
+    gz_ws.write("arm.sdf", ARM_SDF)
+    proc = start_world(gz_ws, "empty.sdf")
+    try:
+        done = gz_ws.run("run", "gazebo_ros", "spawn_model", "-sdf", "-file",
+                         str(gz_ws.root / "arm.sdf"), "-model", "arm", "-J", "shoulder", "0.7",
+                         timeout=60)
+        assert done.returncode == 0, done.stdout + done.stderr
+        state = gz(gz_ws, "topic", "-e", "-t", "/world/empty/model/arm/joint_state", "-n", "1")
+        position = re.search(r'name: "shoulder".*?position: (-?[\d.e-]+)', state.stdout,
+                             re.DOTALL)
+        assert position and float(position.group(1)) == pytest.approx(0.7, abs=0.01), \
+            state.stdout
+        wrong = gz_ws.run("run", "gazebo_ros", "spawn_model", "-sdf", "-file",
+                          str(gz_ws.root / "arm.sdf"), "-model", "arm2", "-J", "elbow", "1",
+                          timeout=60)
+        assert wrong.returncode == 1
+        assert "no joint named 'elbow'; its joints: shoulder" in wrong.stderr, wrong.stderr
+        assert "Traceback" not in wrong.stderr
+    finally:
+        assert stop(proc) == 130

@@ -378,6 +378,31 @@ def test_a_position_controller_moves_an_arm_joint_and_an_unknown_plugin_is_logge
     assert angle == pytest.approx(1.2, abs=0.02)
 
 
+def test_joints_start_where_spawn_model_minus_j_puts_them_and_reset_returns_them(world):
+    # gazebo_ros's spawn_model -J sets the model's joint positions once it is in
+    world.spawn(world.templates.from_string(ARM), "arm", [0, 0, 0.5], IDENTITY,
+                joints={"shoulder": 0.7})
+    address = world.model.joint("arm/shoulder").qposadr[0]
+    assert world.data.qpos[address] == pytest.approx(0.7)
+    spawn_bot(world, "bot")  # another spawn (a recompile) keeps it
+    assert world.data.qpos[world.model.joint("arm/shoulder").qposadr[0]] == pytest.approx(0.7)
+    world.reset()
+    assert world.data.qpos[world.model.joint("arm/shoulder").qposadr[0]] == pytest.approx(0.0)
+
+
+@pytest.mark.parametrize("joints, expected", [
+    ({"shouldr": 0.1}, "no joint named 'shouldr' (did you mean 'shoulder'?); its joints: "
+                       "shoulder"),
+    ({"shoulder": float("nan")}, "joint 'shoulder': position nan is not a finite number"),
+])
+def test_a_bad_joint_position_is_refused_and_nothing_is_spawned(world, joints, expected):
+    with pytest.raises(LaunchError) as info:
+        world.spawn(world.templates.from_string(ARM), "arm", [0, 0, 0.5], IDENTITY,
+                    joints=joints)
+    assert expected in str(info.value)
+    assert "arm" not in world.entities
+
+
 WHEEL = """<robot name="spinner">
   <link name="base"><inertial><mass value="5"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
   <link name="disc"><inertial><mass value="0.5"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>

@@ -11,7 +11,7 @@ def test_the_flags_map_onto_create():
         ["-urdf", "-param", "robot_description", "-model", "bot", "-x", "6", "-Y", "1.57",
          "-J", "left_wheel_joint", "0.5", "-unpause", "-robot_namespace", "/r1"])
     assert flags == ["-param", "robot_description", "-name", "bot", "-x", "6", "-Y", "1.57"]
-    assert unpause and joints == [("left_wheel_joint", "0.5")]
+    assert unpause and joints == [("left_wheel_joint", 0.5)]
     assert create_argv(["-sdf", "-database", "ground_plane", "-model", "g"])[0] == \
         ["-file", "model://ground_plane", "-name", "g"]
 
@@ -21,6 +21,7 @@ def test_the_flags_map_onto_create():
     (["-model", "bot", "-modle", "x"], "unknown option '-modle' (did you mean '-model'"),
     (["-model", "bot", "-x"], "-x needs a value"),
     (["-model", "bot", "-J", "joint"], "-J needs a joint name and a position"),
+    (["-model", "bot", "-J", "joint", "half"], "-J joint half: the position must be a number"),
 ])
 def test_bad_flags_say_what_is_wrong(argv, message):
     with pytest.raises(UsageError, match=None) as info:
