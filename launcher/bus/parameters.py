@@ -4,6 +4,7 @@ values <-> rcl_interfaces/msg/ParameterValue. A set with no value (NOT_SET) dele
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Any
 
 from launcher.bus.messages import build
@@ -98,6 +99,19 @@ def serve(node: Any) -> None:
     node.create_service(SET, "~/set_parameters", set_parameters, type_hash=HASHES[SET])
     node.create_service(DESCRIBE, "~/describe_parameters", describe_parameters,
                         type_hash=HASHES[DESCRIBE])
+
+
+def nested(items: Iterable[tuple[str, Any]]) -> dict[str, Any]:
+    """Dotted parameter names and their values as nested maps (`a.b` is `{a: {b: …}}`), as
+    a params file and ROS 1's parameter tree have them."""
+    tree: dict[str, Any] = {}
+    for name, value in items:
+        *outer, last = name.split(".")
+        level = tree
+        for part in outer:
+            level = level.setdefault(part, {})
+        level[last] = value
+    return tree
 
 
 def type_of(value: Any) -> int:

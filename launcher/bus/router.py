@@ -6,6 +6,8 @@ and stops once nothing has been connected for `--linger` seconds. Run by `launch
 `--listen` it is also the gateway for other hosts: a second router session, joined to the
 local one, listening there and admitting only those who present the user's credentials.
 It runs until SIGINT or SIGTERM. Both sweep the socket files of peers that died.
+The router that serves the domain's socket also hosts the graph's parameter server
+(graph_parameters.py), as roscore's master does.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import signal
 import sys
 import threading
 import time
+from collections.abc import Callable
 
 import zenoh
 
@@ -40,10 +43,12 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
     private_folder(sock.parent)
     discovery.sweep_peer_sockets(sock.parent)
     sessions: list[zenoh.Session] = []
+    stop_parameters = None
     try:
         hosting = lock_fd is not None or not discovery.answers(sock)
         if hosting:
-            sessions.append(_local_router(sock, lock_fd))
+            session, stop_parameters = _local_router(sock, lock_fd)
+            sessions.append(session)
         if remote:  # checks credentials, which the local router cannot ask of its peers
             try:
                 sessions.append(zenoh.open(config("router", remote,
@@ -63,14 +68,21 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
         else:
             _until_idle(sessions[0], linger, stop)
     finally:
+        if stop_parameters is not None:
+            stop_parameters()
         for session in sessions:
             with contextlib.suppress(zenoh.ZError):
                 session.close()
     return 0
 
 
-def _local_router(sock: os.PathLike, lock_fd: int | None) -> zenoh.Session:
-    """The router on the domain's socket; the start lock is held until it listens."""
+def _local_router(sock: os.PathLike,
+                  lock_fd: int | None) -> tuple[zenoh.Session, Callable[[], None]]:
+    """The router on the domain's socket, hosting the graph's parameter server (as roscore's
+    master holds it), and what stops that; the start lock is held until both are there, so
+    whoever finds the router finds the server."""
+    from launcher.bus import graph_parameters
+
     with contextlib.ExitStack() as held:
         if lock_fd is None:  # standing: take the socket as discovery.start would
             lock = held.enter_context(open_private(discovery.lock_path(sock), "a"))
@@ -78,9 +90,10 @@ def _local_router(sock: os.PathLike, lock_fd: int | None) -> zenoh.Session:
             with contextlib.suppress(FileNotFoundError):
                 os.unlink(sock)
         session = zenoh.open(config("router", [f"unixsock-stream/{sock}"], []))
+        stop_parameters = graph_parameters.host(session)
     if lock_fd is not None:
         os.close(lock_fd)  # listening: whoever waits to connect may go on
-    return session
+    return session, stop_parameters
 
 
 class Connections:

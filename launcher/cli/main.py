@@ -26,6 +26,9 @@ COMMANDS = {
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "param": ("launcher.cli.param_command",
               "parameters of a running node: list, get, set, describe, delete, dump, load"),
+    "rosparam": ("launcher.cli.rosparam_command",
+                 "ROS 1's rosparam: the graph's parameter server (list, get, set, delete, "
+                 "dump, load)"),
     "interface": ("launcher.cli.interface_command",
                   "message and service types: list, show, proto, package, packages"),
     "run": ("launcher.cli.run_command", "run an executable of a package (as ros2 run / rosrun)"),

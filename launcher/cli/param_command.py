@@ -141,13 +141,8 @@ def run_dump(args: argparse.Namespace) -> int:
 
     names = list(_call(args, params.LIST, "list_parameters", {}).result.names)
     values = _call(args, params.GET, "get_parameters", {"names": names}).values
-    tree: dict[str, Any] = {}
-    for name, value in zip(names, values, strict=True):
-        *outer, last = name.split(".")
-        level = tree
-        for part in outer:
-            level = level.setdefault(part, {})
-        level[last] = params.from_message(value)
+    tree = params.nested((name, params.from_message(value))
+                         for name, value in zip(names, values, strict=True))
     print(yaml.safe_dump({args.node: {"ros__parameters": tree}}, sort_keys=True), end="")
     return 0
 

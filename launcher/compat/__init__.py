@@ -19,7 +19,7 @@ if TYPE_CHECKING:  # imported by every node's start (the finder): nothing more t
     from collections.abc import MutableMapping
 
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
-COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz
+COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz, rosparam
 SHIMMED = ("ament_index_python", "launch", "launch_ros")
 SITE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "site")  # node APIs' hook
 

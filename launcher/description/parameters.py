@@ -9,6 +9,7 @@ never parsed as YAML.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -32,7 +33,7 @@ FILE = "<file>"
 REMAPS = "<remaps>"  # a tuple of (from, to)
 LIST_TYPES = {"list_of_str": "str", "list_of_int": "int", "list_of_float": "float",
               "list_of_bool": "bool"}
-TYPES = ("str", "int", "float", "bool", "yaml", *LIST_TYPES)
+TYPES = ("str", "int", "float", "bool", "yaml", *LIST_TYPES, "auto")  # auto: roslaunch's
 _TRUE = ("true", "yes", "on", "1")
 _FALSE = ("false", "no", "off", "0")
 
@@ -124,6 +125,12 @@ def _convert(text: str, kind: str, name: str) -> Any:
         except ValueError:
             raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
                                  f" {kind}") from None
+    if kind == "auto":  # roslaunch's typing of an untyped value: a number, true/false, else text
+        try:
+            return float(text) if "." in text else int(text) if "_" not in text else text
+        except ValueError:
+            low = text.lower()
+            return low == "true" if low in ("true", "false") else text
     if kind == "bool":
         low = text.strip().lower()
         if low not in _TRUE + _FALSE:
@@ -238,6 +245,27 @@ def global_parameters(context: LaunchContext) -> dict[str, Any]:
 
 def add_global_parameter(context: LaunchContext, name: str, value: Any) -> None:
     _add(context, GLOBAL_PARAMETERS, ((name, value),))
+
+
+def add_graph_parameter(context: LaunchContext, name: str, value: Any,
+                        load: Callable[[Path], Any], folder: Path) -> None:
+    """A ROS 1 parameter (its full name) for the graph's parameter server. The first one
+    chooses the file they will be written to, in `folder`, and queues `load(file)`, the
+    action that puts them on the server, after everything queued now (the rest of the
+    launch files: roslaunch sets the whole tree's parameters at once)."""
+    context.graph_parameters[name] = value
+    if context.graph_parameters_file is not None or context.service is None:
+        return
+    context.graph_parameters_file = _new_file(folder, "graph_parameters", ".json")
+    context.graph_parameters_file.touch(mode=0o600)  # taken: the next batch has its own
+    context.service.schedule([load(context.graph_parameters_file)])
+
+
+def delete_graph_parameters(context: LaunchContext, name: str) -> None:
+    """`<rosparam command="delete">`: the name and everything below it."""
+    prefix = name.rstrip("/") + "/"
+    for key in [k for k in context.graph_parameters if k == name or k.startswith(prefix)]:
+        del context.graph_parameters[key]
 
 
 def add_global_parameter_file(context: LaunchContext, path: str) -> None:

@@ -210,6 +210,7 @@ def _node(entity: Entity) -> Entity:
                          "package)", entity.location)
     node = _copy(entity, "node", NODE_ATTRS)
     node.attributes["unique"] = _text("true", entity.location)
+    node.attributes["server"] = _text("true", entity.location)
     if "name" not in entity.attributes and entity.tag == "test":
         node.attributes["name"] = entity.attributes.get("test-name") or \
             entity.attributes["type"]
@@ -240,7 +241,8 @@ def _node(entity: Entity) -> Entity:
 
 
 PARAM_TYPES = {"str": "str", "string": "str", "int": "int", "double": "float",
-               "float": "float", "bool": "bool", "boolean": "bool", "yaml": "yaml"}
+               "float": "float", "bool": "bool", "boolean": "bool", "yaml": "yaml",
+               "auto": "auto"}
 
 
 def _param_attrs(entity: Entity, made: Entity) -> None:
@@ -259,11 +261,14 @@ def _param_attrs(entity: Entity, made: Entity) -> None:
     if kind is not None:
         word = str(kind.value).strip()
         if word not in PARAM_TYPES:
-            raise ParseError(f"<param type='{word}'>: expected str, int, double, bool or yaml",
+            raise ParseError(f"<param type='{word}'>: expected str, int, double, bool, yaml "
+                             "or auto",
                              kind.location)
         made.attributes["type"] = Attribute(PARAM_TYPES[word], kind.location)
     elif "command" in entity.attributes or "textfile" in entity.attributes:
         made.attributes["type"] = _text("str", entity.location)
+    else:  # roslaunch types an untyped value itself (a number, true or false, else text)
+        made.attributes["type"] = _text("auto", entity.location)
 
 
 def _param_entry(entity: Entity) -> Entity:
@@ -283,13 +288,14 @@ def _private(entity: Entity) -> Attribute:
 
 
 def _global_param(entity: Entity) -> Entity:
-    """A `<param>` outside a node: on ROS 1's parameter server; here, a parameter of every node
-    after it in its scope."""
+    """A `<param>` outside a node: on the graph's parameter server, and a parameter of every
+    node after it in its scope."""
     made = _copy(entity, "set_parameter", {})
+    made.attributes["server"] = _text("true", entity.location)
     name = entity.attributes.get("name")
     if name is None:
         raise ParseError("<param> needs name=", entity.location)
-    made.attributes["name"] = Attribute(str(name.value).lstrip("/~"), name.location)
+    made.attributes["name"] = Attribute(str(name.value).lstrip("~"), name.location)
     _param_attrs(entity, made)
     return made
 
@@ -336,6 +342,7 @@ def _rosparam_entries(entity: Entity) -> list[Entity]:
 
 def _global_rosparam(entity: Entity) -> list[Entity]:
     made = Entity("set_parameter", entity.location, nested_in_children=True)
+    made.attributes["server"] = _text("true", entity.location)
     if not _loads(entity):
         # dump and delete: the parameters this launch has set so far (for the nodes after)
         made.attributes["rosparam_command"] = entity.attributes["command"]

@@ -92,6 +92,10 @@ class LaunchContext:
         self.parse_text = parse_text
         self.node_names: dict[str, Any] = {}  # fully qualified node name -> where declared
         self.declared: set[str] = set()  # the launch arguments an `arg` has declared
+        # ROS 1 parameters for the graph's parameter server (full names), and whether its
+        # start is queued (it comes once everything queued now has been visited)
+        self.graph_parameters: dict[str, Any] = {}
+        self.graph_parameters_file: Path | None = None  # where they will be written
 
     # --- scopes -------------------------------------------------------------------------
     @property

@@ -67,6 +67,10 @@ class ProcessSpec:
     respawn_max_retries: int = -1
     origin: Any = None  # the action that asked for this process (for event handlers)
     joins_graph: bool = False  # it may be a ROS node (the launch then starts the router)
+    # A helper of the launch (one that holds the launch's parameters on the graph): once it
+    # prints a line holding this text, its work is done; it no longer keeps the launch
+    # running, and is stopped when it is all that is left.
+    helper_done_line: str = ""
 
 
 class ProcessHooks(NamedTuple):
@@ -100,6 +104,7 @@ class ManagedProcess:
     returncode: int | None = None
     respawns: int = 0
     failed: bool = False  # it exited with a non-zero code that the launcher did not cause
+    helper_done: bool = False  # a helper that has said its work is done (see ProcessSpec)
     system: Processes = field(default_factory=System, repr=False)
     _streams: list[int] = field(default_factory=list, repr=False)  # open output fds
     _leader_gone: bool = False

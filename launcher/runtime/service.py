@@ -211,6 +211,10 @@ class LaunchService:
         return process
 
     def _on_line(self, process: ManagedProcess, record: Record, targets: frozenset[str]) -> None:
+        done = process.spec.helper_done_line
+        if done and not process.helper_done and done in record.text:
+            process.helper_done = True
+            self.loop.call_soon(self._check_idle)
         if "screen" in targets:
             self.printer.emit(record)
         if self.run_log is not None:
@@ -357,7 +361,10 @@ class LaunchService:
         its processes left running is stopped."""
         if self._finished or self._queue or self._draining or self._timers or self._loads:
             return
-        if any(p.alive for p in self.processes):
+        if any(p.alive and not p.helper_done for p in self.processes):
+            return
+        if any(p.alive for p in self.processes):  # helpers alone, their work done
+            self.shutdown("only the launch's helpers are left")
             return
         if self._sweep is None:
             left = self.custody.leftovers()

@@ -101,6 +101,9 @@ def test_the_course_roslaunch_files_spawn_and_drive(catkin):
                             "model_name:=second_model", timeout=120)
         assert second.returncode == 0, second.stdout + second.stderr
         assert "spawned 'second_model' into world 'default'" in second.stdout
+        # its robot_description is on the graph's parameter server, for any shell to read
+        description = catkin.run("rosparam", "get", "-p", "/robot_description")
+        assert '<robot name="bot"' in description.stdout, description.stdout + description.stderr
         state = catkin.run("service", "call", "/gazebo/get_model_state",
                            "gazebo_msgs/srv/GetModelState", "{model_name: second_model}")
         found = re.search(r"x: (-?[\d.e+-]+)", state.stdout)

@@ -4,6 +4,9 @@ that reports what it was given. Expected behaviour is written from roslaunch's d
 
 from __future__ import annotations
 
+import shutil
+import signal
+
 import pytest
 import yaml
 
@@ -55,6 +58,16 @@ print("READ", rospy.get_param("/robot_description"), rospy.get_param("robot_desc
 """
 
 
+# A rospy node run from another shell, reading and writing the graph's parameter server.
+OTHER = """#!/usr/bin/env python
+import rospy
+rospy.init_node("other_shell")
+print("GOT", repr(rospy.get_param("/robot_description")), rospy.get_param("/fleet/r1/driver/gain"),
+      rospy.get_param("/gains/limits"), rospy.get_param("/fleet/tuning/kp"), flush=True)
+rospy.set_param("/from_node", {"a": 12, "b": [1, 2]})
+"""
+
+
 @pytest.fixture
 def ros1(ws):
     make_tree(ws.root / "src", {
@@ -73,7 +86,8 @@ def ros1(ws):
 """,
         "tools/urdf/robot.txt": "<robot name='r'/>\n",
         "tools/scripts/reader.py": READER,
-    }, executable=("tools/scripts/reader.py",))
+        "tools/scripts/other.py": OTHER,
+    }, executable=("tools/scripts/reader.py", "tools/scripts/other.py"))
     ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "src")
     ws.env["LAUNCHER_CACHE_DIR"] = str(ws.root / "cache")
     return ws
@@ -185,19 +199,41 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
     assert len(anonymous) == 1
 
 
-def test_rospy_reads_the_launch_parameters(ros1):
-    """roslaunch: a rospy node reads a <param> outside it by its graph name (/name or a
-    relative one) and its own <param> as ~name."""
-    ros1.write("read.launch", """<launch>
+READ = """<launch>
   <param name="robot_description" value="urdf-text"/>
   <param name="rate" value="50"/>
   <node name="reader" pkg="tools" type="reader.py" output="screen">
     <param name="gain" value="2.5"/>
   </node>
 </launch>
-""")
+"""
+
+
+def test_rospy_reads_the_launch_parameters(ros1):
+    """roslaunch: a rospy node reads a <param> outside it by its graph name (/name or a
+    relative one) and its own <param> as ~name."""
+    ros1.write("read.launch", READ)
     done = ros1.run("launch", "read.launch", timeout=60)
     assert "READ urdf-text urdf-text 2.5 True dflt" in done.stdout, done.stdout + done.stderr
+
+
+def test_a_node_reads_its_launchs_value_not_an_older_one_on_the_server(ros1):
+    """roslaunch sets the parameters before it starts the nodes: a rospy node of the launch
+    reads the launch's value even when the server held another one before (launcher: the
+    node waits for its launch's parameters to be on the server before it asks)."""
+    router = ros1.start("router", output="router.out")
+    try:
+        ros1.wait_for_output("listening", 30, "router.out")
+        assert ros1.run("rosparam", "set", "/robot_description", "older").returncode == 0
+        ros1.write("read.launch", READ)
+        for _ in range(3):
+            done = ros1.run("launch", "read.launch", timeout=60)
+            assert "READ urdf-text urdf-text 2.5 True dflt" in done.stdout, \
+                done.stdout + done.stderr
+            assert ros1.run("rosparam", "set", "/robot_description", "older").returncode == 0
+    finally:
+        router.send_signal(signal.SIGINT)
+        assert router.wait(30) == 0
 
 
 def test_parameters_outlive_the_included_file(ros1):
@@ -211,6 +247,124 @@ def test_parameters_outlive_the_included_file(ros1):
     got = reports(ros1, "outer.launch")
     assert got["/after"]["params"]["set_inside"] == 7
     assert got["/inner_node"]["args"] == ["inner"]
+
+
+PARAMS = """<launch>
+  <param name="robot_description" textfile="$(find tools)/urdf/robot.txt"/>
+  <rosparam command="load" file="$(find tools)/config/gains.yaml" ns="gains"/>
+  <group ns="fleet">
+    <param name="rate" value="50" type="int"/>
+    <param name="/absolute" value="yes"/>
+    <rosparam>tuning: {kp: 3}</rosparam>
+    <node name="driver" pkg="tools" type="report" ns="r1" output="screen" args="{wait}">
+      <param name="gain" value="2.5"/>
+    </node>
+  </group>
+</launch>
+"""
+
+
+def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
+    """roslaunch sets each <param> and <rosparam> on the master's parameter server before its
+    nodes start: one outside a node by its name in its namespace (a /name is global), a
+    node's own as /NS/NODE/NAME; `rosparam` and every node then read and write them there
+    while the master runs (wiki.ros.org/roslaunch/XML/param, /rosparam; the outputs of `rosparam
+    list|get|set|delete|dump|load` follow ROS 1's rosparam 1.15 source, Debian's
+    python3-rosparam). Here a standing `launcher router` plays roscore, and the parameters
+    outlive the launch that set them."""
+    router = ros1.start("router", output="router.out")
+    try:
+        ros1.wait_for_output("listening", 30, "router.out")
+        ros1.write("params.launch", PARAMS.replace("{wait}", ""))
+        done = ros1.run("launch", "params.launch", timeout=60)
+        assert done.returncode == 0, done.stdout + done.stderr
+        assert "parameters set on the graph's parameter server" in done.stdout
+        listing = ros1.run("rosparam", "list")
+        assert listing.stdout.split() == [
+            "/absolute", "/fleet/r1/driver/gain", "/fleet/rate", "/fleet/tuning/kp",
+            "/gains/i", "/gains/limits/max", "/gains/p", "/robot_description"], listing.stderr
+        assert ros1.run("rosparam", "list", "/fleet/r1").stdout.split() == \
+            ["/fleet/r1/driver/gain"]
+        gains = ros1.run("rosparam", "get", "/gains")
+        assert yaml.safe_load(gains.stdout) == {"p": 1.5, "i": 0.1, "limits": {"max": 2}}
+        assert ros1.run("rosparam", "get", "/fleet/rate").stdout == "50\n"
+        assert ros1.run("rosparam", "get", "-p", "/robot_description").stdout == \
+            "<robot name='r'/>\n\n"
+        # `launcher param` sees the server as the node it is (ROS 2's view: dotted names)
+        assert ros1.run("param", "get", "/_parameter_server",
+                        "fleet.r1.driver.gain").stdout.strip() == "Double value is: 2.5"
+        # a rospy node in another shell reads them, and what it sets is everyone's
+        other = ros1.run("run", "tools", "other.py", timeout=60)
+        assert "GOT \"<robot name='r'/>\\n\" 2.5 {'max': 2} 3" in other.stdout, \
+            other.stdout + other.stderr
+        assert yaml.safe_load(ros1.run("rosparam", "get", "/from_node").stdout) == \
+            {"a": 12, "b": [1, 2]}
+        # rosparam set (YAML), delete (a subtree), dump, load (into a namespace)
+        assert ros1.run("rosparam", "set", "/gains/p", "4.0").returncode == 0
+        assert ros1.run("rosparam", "delete", "/gains/limits").returncode == 0
+        ros1.run("rosparam", "dump", str(ros1.root / "gains.yaml"), "/gains")
+        assert yaml.safe_load((ros1.root / "gains.yaml").read_text()) == {"p": 4.0, "i": 0.1}
+        ros1.write("more.yaml", "speed: 2\nnames: [x, y]\n")
+        assert ros1.run("rosparam", "load", "more.yaml", "/loaded").returncode == 0
+        assert yaml.safe_load(ros1.run("rosparam", "get", "/loaded").stdout) == \
+            {"speed": 2, "names": ["x", "y"]}
+        # a launched script's `rosparam` is launcher's, unless a real ROS 1 is installed:
+        # then that one runs (and finds no ROS 1 master)
+        ros1.write("script.launch.yaml", """
+        launch:
+          - executable: {cmd: "rosparam get /loaded/speed", output: screen}
+        """)
+        script = ros1.run("launch", "script.launch.yaml", timeout=60)
+        said = script.stdout + script.stderr
+        if shutil.which("rosparam", path=ros1.env.get("PATH")):
+            assert "master" in said and "[rosparam-1] 2" not in said, said
+        else:
+            assert "[rosparam-1] 2" in said, said
+    finally:
+        router.send_signal(signal.SIGINT)
+        assert router.wait(30) == 0
+
+
+def test_a_second_launch_joins_the_first_ones_parameter_server(ros1):
+    """With no roscore running, the first roslaunch starts the master and keeps it while it
+    runs; a second roslaunch's parameters go onto the same server (here the graph's router,
+    which lives while anything is on the graph)."""
+    ros1.write("params.launch", PARAMS.replace("{wait}", "--wait"))
+    first = ros1.start("launch", "params.launch")
+    try:
+        ros1.wait_for_output("parameters set on the graph's parameter server", 60)
+        ros1.write("second.launch", """<launch>
+  <param name="robot_description" value="second description"/>
+  <param name="second" value="2"/>
+</launch>
+""")
+        second = ros1.run("launch", "second.launch", timeout=60)
+        assert second.returncode == 0, second.stdout + second.stderr
+        got = ros1.run("rosparam", "get", "/")
+        values = yaml.safe_load(got.stdout)
+        assert isinstance(values, dict), got.stdout + got.stderr
+        assert values["second"] == 2 and values["fleet"]["rate"] == 50, got.stdout + got.stderr
+        assert values["robot_description"] == "second description"  # the last set wins
+    finally:
+        first.send_signal(signal.SIGINT)
+        assert first.wait(30) == 130
+
+
+@pytest.mark.parametrize("args, expected", [
+    (("get", "/nope"), "error: Parameter [/nope] is not set"),
+    (("delete", "/nope"), "error: Parameter [/nope] is not set"),
+    (("set", "/x", "[1, 2"), "the value is not valid YAML at line 1, column 6"),
+    (("load", "broken.yaml"), "broken.yaml:2:1: not valid YAML"),
+    (("load", "missing.yaml"), "cannot read 'missing.yaml': No such file or directory"),
+    (("get", "~private"), "a private name (~) has no meaning here"),
+], ids=["get-missing", "delete-missing", "set-bad-yaml", "load-bad-yaml", "load-missing",
+        "private-name"])
+def test_rosparam_bad_input(ros1, args, expected):
+    ros1.write("broken.yaml", "p: [1, 2\n")
+    result = ros1.run("rosparam", *args)
+    assert result.returncode in (1, 2), result.stdout + result.stderr
+    assert expected in result.stderr
+    assert "Traceback" not in result.stderr
 
 
 def test_required_test_and_machine(ros1):
@@ -241,6 +395,14 @@ def test_ros2_xml_named_launch_stays_ros2(ros1):
 </launch>
 """)
     assert reports(ros1, "new.launch")["/modern"]["args"] == ["ros2"]
+    # ROS 2 has no parameter server: a ROS 2 file's set_parameter is the nodes' only
+    ros1.write("set.launch", """<launch>
+  <set_parameter name="rate" value="5"/>
+  <node pkg="tools" exec="report" name="modern" output="screen"/>
+</launch>
+""")
+    result = ros1.run("launch", "set.launch", timeout=60)
+    assert "REPORT" in result.stdout and "load_parameters" not in result.stdout
 
 
 @pytest.mark.parametrize("text, expected", [

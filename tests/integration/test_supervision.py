@@ -5,10 +5,12 @@ from __future__ import annotations
 import os
 import re
 import signal
+import subprocess
 import sys
 import time
 
 import psutil
+import pytest
 
 PY = sys.executable
 
@@ -237,3 +239,54 @@ def test_processes_are_group_leaders(ws):
     assert psutil.Process(sleep.pid).ppid() == proc.pid
     proc.send_signal(signal.SIGINT)
     assert proc.wait(30) == 130
+
+
+# A launch whose actions start processes as given: a helper (see ProcessSpec.helper_done_line)
+# and the others, each `label=argv…` on the command line (a label starting "helper" is one).
+HELPERS = """
+import sys, time
+from launcher.description.action import Action, LaunchDescription
+from launcher.runtime.output import Printer
+from launcher.runtime.process import ProcessSpec
+from launcher.runtime.service import LaunchService, default_environment
+
+class Start(Action):
+    def __init__(self, spec):
+        super().__init__()
+        self.spec = spec
+
+    def execute(self, context):
+        context.service.start_process(self.spec)
+
+actions = []
+for word in sys.argv[1:]:
+    label, _, command = word.partition("=")
+    actions.append(Start(ProcessSpec(label=label, argv=["sh", "-c", command],
+                                     env=default_environment(), sigterm_timeout=1,
+                                     stdout_to=frozenset({"screen"}),
+                                     helper_done_line="work done" if label.startswith("helper")
+                                     else "")))
+begin = time.monotonic()
+code = LaunchService(printer=Printer(color=False)).run(LaunchDescription(actions))
+print(f"ENDED {code} after {time.monotonic() - begin:.1f}")
+sys.exit(code)
+"""
+
+
+@pytest.mark.parametrize("processes, code, least, most", [
+    # done at 0.2 s, the other ends at 1 s: the launch ends then, the helper stopped
+    (["helper-1=sleep 0.2; echo work done; exec sleep 60", "worker-2=sleep 1"], 0, 0.9, 8),
+    # a helper alone keeps the launch until its work is done
+    (["helper-1=sleep 0.5; echo work done; exec sleep 60"], 0, 0.4, 8),
+    # one that never says so is an ordinary process: it fails, the launch says so
+    (["helper-1=sleep 0.3; exit 3", "worker-2=sleep 0.1"], 1, 0.2, 8),
+], ids=["with-others", "alone", "fails"])
+def test_a_helper_keeps_the_launch_only_until_its_work_is_done(ws, processes, code, least,
+                                                               most):
+    ws.write("helpers.py", HELPERS)
+    done = subprocess.run([sys.executable, str(ws.root / "helpers.py"), *processes],
+                          env=ws.env, cwd=ws.root, capture_output=True, text=True, timeout=60)
+    assert done.returncode == code, done.stdout + done.stderr
+    ended = re.search(r"ENDED (\d+) after ([\d.]+)", done.stdout)
+    assert ended and least <= float(ended.group(2)) <= most, done.stdout
+    assert "Traceback" not in done.stdout + done.stderr

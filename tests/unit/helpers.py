@@ -44,6 +44,7 @@ class FakeService:
         self.launch_prefix = ""
         self.shutting_down = False
         self.count = 0
+        self.later: list[Any] = []
 
     def next_label(self, base: str) -> str:
         self.count += 1
@@ -62,7 +63,8 @@ class FakeService:
         callback()  # fire at once: the clock is not what these tests are about
 
     def schedule(self, actions: Any) -> None:
-        visit(list(actions), self.context)
+        """After everything queued now, as the launch service queues them."""
+        self.later.extend(actions)
 
     def shutdown(self, reason: str) -> None:
         self.logs.append(("SHUTDOWN", reason))
@@ -87,4 +89,7 @@ def run(description: LaunchDescription, configurations: dict[str, str] | None = 
                             service=service, load_description=load_file)
     service.context = context
     visit([description], context)
+    while service.later:
+        actions, service.later = service.later, []
+        visit(actions, context)
     return context, service

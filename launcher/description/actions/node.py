@@ -24,6 +24,7 @@ from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
+from launcher.lineage import GRAPH_PARAMETERS
 from launcher.packages.executables import find_executable
 from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
@@ -94,6 +95,8 @@ class Node(ExecuteProcess):
                                  doc="Topic and service remappings.")
     unique: Any = attr(Kind.BOOL, False, doc="roslaunch's rule: another node of the same "
                                              "full name is an error (else a warning).")
+    server: Any = attr(Kind.BOOL, False, doc="roslaunch's: its own parameters also on the "
+                                             "graph's parameter server (/NODE/NAME).")
     name: Any = None  # the label comes from exec_name / node_name
 
     def __post_init__(self) -> None:
@@ -141,6 +144,8 @@ class Node(ExecuteProcess):
         label = self.exec_name if self.exec_name is not None else self.node_name
         base = perform_text(context, label) if label is not None else found.name
         env = found.environment(self.environment(context))
+        if context.graph_parameters_file is not None:  # being loaded: rospy waits for them
+            env[GRAPH_PARAMETERS] = str(context.graph_parameters_file)
         spec = self.process_spec(context, argv, env, base)
         spec.joins_graph = True
         return spec
@@ -167,10 +172,19 @@ class Node(ExecuteProcess):
         key = f"{space.rstrip('/')}/{node}" if known else "/**"
         for group in parameter_groups(context, self.parameters, self.where):
             if isinstance(group, dict):
+                if resolve(context, self.server, Kind.BOOL, "server"):
+                    self._to_server(context, f"{space.rstrip('/')}/{stem}", group)
                 group = params.write_params_file(params_folder(context), stem.strip("/") or
                                                  "node", group, key)
             words += ["--params-file", str(group)]
         return words
+
+    @staticmethod
+    def _to_server(context: LaunchContext, node: str, values: dict[str, Any]) -> None:
+        from launcher.description.actions.ros import to_graph
+
+        for name, value in values.items():
+            to_graph(context, f"{node}/{name.replace('.', '/')}", value)
 
     def _check_unique(self, context: LaunchContext, node: str, space: str) -> None:
         fqn = f"{space.rstrip('/')}/{node}" if space else f"/{node}"

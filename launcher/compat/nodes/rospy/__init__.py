@@ -8,9 +8,10 @@ Ctrl-C or SIGTERM shuts the node down: `is_shutdown()` turns true and sleeps rai
 ROSInterruptException.
 
 Parameters: `~name` is the node's own parameter (`_name:=value` on the command line sets
-it); other names are kept on this node under their resolved name (ROS 1's global parameter
-server has no counterpart yet: another node's `set_param` is not seen here). Message fields
-take whole numbers for floats, as ROS 1 did.
+it); other names live on the graph's parameter server (bus/graph_parameters.py: a ROS 1
+launch starts it) when one runs, else on this node under their resolved name; a name the
+server lacks is looked up in what the launch gave the node. Message fields take whole numbers
+for floats, as ROS 1 did.
 """
 
 from __future__ import annotations
@@ -54,6 +55,7 @@ class _State:
         self.level = INFO
         self.lock = threading.RLock()
         self.spinner: threading.Thread | None = None
+        self.graph: Any = None  # the graph's parameter server's client, once asked
 
 
 _state = _State()
@@ -352,17 +354,61 @@ def _given(key: str, values: dict[str, Any]) -> str | None:
     return None
 
 
-def get_param(param_name: str, default: Any = _unspecified) -> Any:
-    node = _need_node("get_param")
-    key = _parameter_key(param_name)
-    values = node.parameters
+def _server() -> Any:
+    """The graph's parameter server's client, or None when the graph has none (then
+    parameters stay on this node)."""
+    if _state.graph is None:
+        from launcher.bus import discovery
+        from launcher.bus.graph_parameters import GraphParameters, wait_for_launch
+
+        # as roslaunch sets them before its nodes start: the launch's, once they are there
+        wait_for_launch(os.environ, discovery.timeout())
+        _state.graph = GraphParameters(_state.node)
+    return _state.graph if _state.graph.available() else None
+
+
+def _on_server(call: Callable[[Any], Any]) -> Any:
+    """`call(server)`, or _unspecified when no server answers (not there, or gone)."""
+    from launcher.errors import LaunchError
+
+    server = _server()
+    if server is None:
+        return _unspecified
+    try:
+        return call(server)
+    except LaunchError:
+        return _unspecified
+
+
+def _local(key: str, values: dict[str, Any]) -> Any:
     found = _given(key, values)
     if found is not None:
         return values[found]
     prefix = key + ("." if not key.startswith("/") else "/")
     nested = {k[len(prefix):]: v for k, v in values.items() if k.startswith(prefix)}
-    if nested:
-        return nested
+    return nested if nested else _unspecified
+
+
+def get_param(param_name: str, default: Any = _unspecified) -> Any:
+    """`~x` from the node's own parameters; other names from the graph's parameter server
+    (what any launch or node set there), then from what the launch gave this node."""
+    from launcher.bus.graph_parameters import Missing
+
+    node = _need_node("get_param")
+    key = _parameter_key(param_name)
+    if not param_name.startswith("~"):
+        def ask(server: Any) -> Any:
+            try:
+                return server.get(key)
+            except Missing:
+                return _unspecified
+
+        found = _on_server(ask)
+        if found is not _unspecified:
+            return found
+    found = _local(key, node.parameters)
+    if found is not _unspecified:
+        return found
     if default is _unspecified:
         raise KeyError(param_name)
     return default
@@ -374,25 +420,48 @@ def get_param_cached(param_name: str, default: Any = _unspecified) -> Any:
 
 def set_param(param_name: str, param_value: Any) -> None:
     node = _need_node("set_param")
-    node.set_parameter_value(_parameter_key(param_name), param_value)
+    key = _parameter_key(param_name)
+    if param_name.startswith("~") or \
+            _on_server(lambda server: server.set(key, param_value)) is _unspecified:
+        node.set_parameter_value(key, param_value)
 
 
 def has_param(param_name: str) -> bool:
-    node = _need_node("has_param")
-    return _given(_parameter_key(param_name), node.parameters) is not None
+    try:
+        get_param(param_name)
+    except KeyError:
+        return False
+    return True
 
 
 def delete_param(param_name: str) -> None:
+    """Deletes it (and what is below it) wherever it is; KeyError when it is nowhere."""
+    from launcher.bus.graph_parameters import Missing
+
     node = _need_node("delete_param")
     key = _parameter_key(param_name)
-    if key not in node._parameters:
+    deleted = False
+    if not param_name.startswith("~"):
+        def delete(server: Any) -> bool:
+            try:
+                server.delete(key)
+            except Missing:
+                return False
+            return True
+
+        deleted = _on_server(delete) is True
+    found = _given(key, node._parameters)
+    if found is not None:
+        del node._parameters[found]
+    elif not deleted:
         raise KeyError(param_name)
-    del node._parameters[key]
 
 
 def get_param_names() -> list[str]:
     node = _need_node("get_param_names")
-    return sorted(k if k.startswith("/") else f"{_state.name}/{k}" for k in node.parameters)
+    names = {k if k.startswith("/") else f"{_state.name}/{k}" for k in node.parameters}
+    found = _on_server(lambda server: server.names())
+    return sorted(names | set(found if found is not _unspecified else ()))
 
 
 def search_param(param_name: str) -> str | None:

@@ -1,0 +1,193 @@
+"""The graph's parameter server, as ROS 1's master keeps one: a node, `/_parameter_server`
+(hidden, as ROS 2 hides infrastructure: `node list -a` shows it), that the graph's router
+hosts (so it lives as long as the graph does, and `launcher router` is roscore), whose
+parameters are everyone's: any name may be set, got or deleted through its parameter
+services. Here too is its client (rospy's `get_param('/x')`, `launcher rosparam`,
+the loader a ROS 1 launch runs for its parameters).
+
+Names: ROS 1's `/robot1/robot_description` is the server's parameter
+`robot1.robot_description` (ROS 2 nests parameters with dots; ROS 1 names hold no dots), so
+`launcher param get /_parameter_server robot1.robot_description` and `launcher rosparam get
+/robot1/robot_description` read the same value. A dict is kept as its leaves, and getting a
+name above them gives the dict back, as ROS 1's server does.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import time
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import Any
+
+from launcher.bus import parameters as params
+from launcher.bus.messages import build
+from launcher.errors import LaunchError
+from launcher.lineage import GRAPH_PARAMETERS
+from launcher.private import open_private
+
+NAME = "_parameter_server"  # hidden (a leading _), as ROS 2 hides infrastructure
+NODE = f"/{NAME}"
+RECHECK = 1.0  # s: how long "no server" is believed before the graph is asked again
+
+
+class Missing(LaunchError):
+    pass
+
+
+def key(ros1_name: str) -> str:
+    """The server's parameter for a ROS 1 name (`/a/b` → `a.b`)."""
+    return ".".join(part for part in ros1_name.split("/") if part)
+
+
+def ros1_name(parameter: str) -> str:
+    return "/" + parameter.replace(".", "/")
+
+
+def leaves(ros1: str, value: Any) -> dict[str, Any]:
+    """A value as the server keeps it: a dict as its leaves, each a parameter value (a list
+    of mixed types, which a ROS 2 parameter cannot hold, as its text)."""
+    if isinstance(value, Mapping):
+        found: dict[str, Any] = {}
+        for inner, item in value.items():
+            found.update(leaves(f"{ros1.rstrip('/')}/{inner}", item))
+        return found
+    if isinstance(value, list | tuple):
+        kinds = {type(item) for item in value}
+        if kinds == {int, float}:
+            value = [float(item) for item in value]
+        elif len(kinds) > 1 or kinds & {list, tuple, dict, type(None)}:
+            value = str(list(value))
+        else:
+            value = list(value)
+    return {key(ros1): value}
+
+
+def host(session: Any) -> Callable[[], None]:
+    """Serve the parameter server on `session` (the router's), its callbacks on a thread of
+    their own; returns what stops it."""
+    from launcher.bus.node import Node
+
+    node = Node(NAME, argv=[], session=session)
+    thread = threading.Thread(target=node.spin, name="parameter_server", daemon=True)
+    thread.start()
+
+    def stop() -> None:
+        node.shutdown()
+        thread.join(1.0)
+        node.destroy_node()
+
+    return stop
+
+
+def loaded_marker(path: str) -> str:
+    return path + ".loaded"
+
+
+def mark_loaded(path: str) -> None:
+    """Say the launch's parameters are on the server (or that loading them gave up)."""
+    open_private(Path(loaded_marker(path)), "w").close()
+
+
+def wait_for_launch(environ: Mapping[str, str], timeout: float) -> None:
+    """Return once the parameters of the launch that started this node are on the server
+    (see lineage.GRAPH_PARAMETERS), or after `timeout`; at once when none are coming."""
+    path = environ.get(GRAPH_PARAMETERS)
+    if not path:
+        return
+    deadline = time.monotonic() + timeout
+    while not os.path.exists(loaded_marker(path)) and time.monotonic() < deadline:
+        time.sleep(0.01)
+
+
+class GraphParameters:
+    """A client of the graph's parameter server, for one node."""
+
+    def __init__(self, node: Any, timeout: float = 5.0) -> None:
+        self.node, self.timeout = node, timeout
+        self._clients: dict[str, Any] = {}
+        self._absent_since: float | None = None
+
+    def _client(self, kind: str, suffix: str) -> Any:
+        if suffix not in self._clients:
+            self._clients[suffix] = self.node.create_client(kind, f"{NODE}/{suffix}")
+        return self._clients[suffix]
+
+    def available(self, wait: float = 1.0) -> bool:
+        """Whether a server is on the graph (asked of the router, for up to `wait` seconds; a
+        "no" is believed for RECHECK seconds, so a graph without one costs a node little)."""
+        now = time.monotonic()
+        if self._absent_since is not None and now - self._absent_since < RECHECK:
+            return False
+        found = self._client(params.GET, "get_parameters").wait_for_service(wait)
+        self._absent_since = None if found else time.monotonic()
+        return found
+
+    def _call(self, kind: str, suffix: str, request: dict[str, Any]) -> Any:
+        client = self._client(kind, suffix)
+        return client.call(build(client.request_type, request), self.timeout)
+
+    def names(self, prefix: str = "/") -> list[str]:
+        below = key(prefix)
+        response = self._call(params.LIST, "list_parameters",
+                              {"prefixes": [below + "."] if below else []})
+        found = list(response.result.names)
+        if below:
+            found += self._present([below])
+        return sorted(ros1_name(name) for name in set(found))
+
+    def _present(self, names: list[str]) -> list[str]:
+        response = self._call(params.GET, "get_parameters", {"names": names})
+        return [n for n, v in zip(names, response.values, strict=True)
+                if v.type != params.NOT_SET]
+
+    def get(self, ros1: str) -> Any:
+        """The value, or the dict of everything below the name; Missing when neither."""
+        name = key(ros1)
+        if name:
+            response = self._call(params.GET, "get_parameters", {"names": [name]})
+            if response.values[0].type != params.NOT_SET:
+                return params.from_message(response.values[0])
+        below = self._call(params.LIST, "list_parameters",
+                           {"prefixes": [name + "."] if name else []}).result.names
+        if not below:
+            raise Missing(f"parameter [{ros1}] is not set")
+        values = self._call(params.GET, "get_parameters", {"names": list(below)}).values
+        return params.nested((full[len(name) + 1 if name else 0:], params.from_message(value))
+                             for full, value in zip(below, values, strict=True))
+
+    def set(self, ros1: str, value: Any) -> None:
+        if isinstance(value, Mapping):
+            self.delete(ros1, missing_ok=True)  # ROS 1: a dict replaces what was there
+        self._set(leaves(ros1, value))
+
+    def set_many(self, values: Mapping[str, Any]) -> None:
+        """Parameters by ROS 1 name, in one request."""
+        found: dict[str, Any] = {}
+        for name, value in values.items():
+            found.update(leaves(name, value))
+        self._set(found)
+
+    def _set(self, values: dict[str, Any]) -> None:
+        request = {"parameters": [{"name": n, "value": params.to_message(v)}
+                                  for n, v in values.items()]}
+        response = self._call(params.SET, "set_parameters", request)
+        for name, result in zip(values, response.results, strict=True):
+            if not result.successful:
+                raise LaunchError(f"the parameter server refused [{ros1_name(name)}]: "
+                                  f"{result.reason}")
+
+    def delete(self, ros1: str, missing_ok: bool = False) -> None:
+        """The name and everything below it."""
+        name = key(ros1)
+        below = self._call(params.LIST, "list_parameters",
+                           {"prefixes": [name + "."] if name else []}).result.names
+        doomed = [*self._present([name])] if name else []
+        doomed += list(below)
+        if not doomed:
+            if missing_ok:
+                return
+            raise Missing(f"parameter [{ros1}] is not set")
+        self._call(params.SET, "set_parameters", {"parameters": [
+            {"name": n, "value": params.to_message(None)} for n in doomed]})
