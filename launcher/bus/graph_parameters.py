@@ -107,7 +107,7 @@ class GraphParameters:
     def __init__(self, node: Any, timeout: float = 5.0) -> None:
         self.node, self.timeout = node, timeout
         self._clients: dict[str, Any] = {}
-        self._absent_since: float | None = None
+        self._known: tuple[bool, float] | None = None  # (there, when asked)
 
     def _client(self, kind: str, suffix: str) -> Any:
         if suffix not in self._clients:
@@ -115,13 +115,12 @@ class GraphParameters:
         return self._clients[suffix]
 
     def available(self, wait: float = 1.0) -> bool:
-        """Whether a server is on the graph (asked of the router, for up to `wait` seconds; a
-        "no" is believed for RECHECK seconds, so a graph without one costs a node little)."""
-        now = time.monotonic()
-        if self._absent_since is not None and now - self._absent_since < RECHECK:
-            return False
+        """Whether a server is on the graph (asked of the router, for up to `wait` seconds;
+        the answer is believed for RECHECK seconds, so asking often costs a node little)."""
+        if self._known is not None and time.monotonic() - self._known[1] < RECHECK:
+            return self._known[0]
         found = self._client(params.GET, "get_parameters").wait_for_service(wait)
-        self._absent_since = None if found else time.monotonic()
+        self._known = (found, time.monotonic())
         return found
 
     def _call(self, kind: str, suffix: str, request: dict[str, Any]) -> Any:
@@ -158,6 +157,9 @@ class GraphParameters:
                              for full, value in zip(below, values, strict=True))
 
     def set(self, ros1: str, value: Any) -> None:
+        if not key(ros1) and not isinstance(value, Mapping):
+            raise LaunchError("/ holds every parameter: it can be set to a map of names, not "
+                              "to one value")
         if isinstance(value, Mapping):
             self.delete(ros1, missing_ok=True)  # ROS 1: a dict replaces what was there
         self._set(leaves(ros1, value))

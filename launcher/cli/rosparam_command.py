@@ -1,6 +1,7 @@
 """`launcher rosparam list | get | set | delete | dump | load`: ROS 1's `rosparam` over the
-graph's parameter server (bus/graph_parameters.py), which a ROS 1 launch starts. Names are
-ROS 1's (`/robot1/robot_description`); a relative one is in ROS_NAMESPACE (default /)."""
+graph's parameter server (bus/graph_parameters.py), which the graph's router hosts and a
+ROS 1 launch fills. Names are ROS 1's (`/robot1/robot_description`); a relative one is in
+ROS_NAMESPACE (default /)."""
 
 from __future__ import annotations
 
@@ -71,9 +72,9 @@ def _with_server(args: argparse.Namespace, work: Any) -> Any:
     try:
         server = graph.GraphParameters(node, args.timeout)
         if not server.available(args.timeout):
-            raise NoServer(f"no parameter server on the graph ({graph.NODE}): a ROS 1 launch "
-                           "that sets parameters starts one (`launcher launch PKG "
-                           "FILE.launch`); ROS 2 nodes keep their own (`launcher param`)")
+            raise NoServer(f"the graph's parameter server ({graph.NODE}, which the graph's "
+                           f"router hosts) did not answer within {args.timeout:g} s; is the "
+                           "router of LAUNCHER_ROUTER an older launcher's?")
         try:
             return work(server)
         except graph.Missing as exc:

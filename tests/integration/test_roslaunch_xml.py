@@ -357,8 +357,9 @@ def test_a_second_launch_joins_the_first_ones_parameter_server(ros1):
     (("load", "broken.yaml"), "broken.yaml:2:1: not valid YAML"),
     (("load", "missing.yaml"), "cannot read 'missing.yaml': No such file or directory"),
     (("get", "~private"), "a private name (~) has no meaning here"),
+    (("set", "/", "5"), "/ holds every parameter: it can be set to a map of names"),
 ], ids=["get-missing", "delete-missing", "set-bad-yaml", "load-bad-yaml", "load-missing",
-        "private-name"])
+        "private-name", "set-root"])
 def test_rosparam_bad_input(ros1, args, expected):
     ros1.write("broken.yaml", "p: [1, 2\n")
     result = ros1.run("rosparam", *args)

@@ -8,10 +8,10 @@ Ctrl-C or SIGTERM shuts the node down: `is_shutdown()` turns true and sleeps rai
 ROSInterruptException.
 
 Parameters: `~name` is the node's own parameter (`_name:=value` on the command line sets
-it); other names live on the graph's parameter server (bus/graph_parameters.py: a ROS 1
-launch starts it) when one runs, else on this node under their resolved name; a name the
-server lacks is looked up in what the launch gave the node. Message fields take whole numbers
-for floats, as ROS 1 did.
+it); other names live on the graph's parameter server (bus/graph_parameters.py: the graph's
+router hosts it, a ROS 1 launch fills it) when it answers, else on this node under their
+resolved name; a name the server lacks is looked up in what the launch gave the node. Message
+fields take whole numbers for floats, as ROS 1 did.
 """
 
 from __future__ import annotations
