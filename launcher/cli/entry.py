@@ -37,6 +37,22 @@ import signal  # noqa: E402
 import sys  # noqa: E402
 
 
+def _unraisable(info: "sys.UnraisableHookArgs") -> None:
+    """A signal whose KeyboardInterrupt was raised where Python cannot raise (a weakref
+    callback, as importing runs them; a __del__) is not lost with a printed traceback: it is
+    sent again, from another thread so that it lands once this hook has returned (and again
+    should it land in such a place again)."""
+    if isinstance(info.exc_value, _Interrupted):
+        import _thread
+
+        _thread.start_new_thread(os.kill, (os.getpid(), info.exc_value.signum))
+        return
+    sys.__unraisablehook__(info)
+
+
+sys.unraisablehook = _unraisable
+
+
 @atexit.register  # registered first, so it runs last, just before Python's own teardown
 def _hold_signals() -> None:
     """The command is done and the status decided: the interpreter's teardown resets the

@@ -4,7 +4,11 @@ status a shell expects, and nothing printed (found by the fault campaign)."""
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 from launcher.errors import Interrupted, report
+from tests.conftest import REPO
 
 
 def test_a_failure_while_handling_a_signal_is_the_signals(capsys):
@@ -27,3 +31,33 @@ def test_other_failures_are_still_reported(capsys):
     except AttributeError as exc:
         assert report(exc) == 1
     assert "internal error: AttributeError: second" in capsys.readouterr().err
+
+
+SWALLOWED = """
+import time, weakref
+from launcher.cli import entry
+entry._running = True
+
+class Thing:
+    pass
+
+try:
+    thing = Thing()
+    ref = weakref.ref(thing, lambda _: entry._interrupt(2, None))  # as importlib's callbacks
+    del thing
+    for _ in range(200):
+        time.sleep(0.01)
+    print("NOT INTERRUPTED")
+except KeyboardInterrupt as exc:
+    print("INTERRUPTED", exc.signum)
+"""
+
+
+def test_a_signal_raised_where_python_cannot_raise_is_sent_again_not_lost():
+    """Ctrl-C landing in a weakref callback (importing runs them) raised there, where Python
+    can only print the exception and go on: the signal is sent again instead, and ends the
+    command as any other."""
+    done = subprocess.run([sys.executable, "-c", SWALLOWED], capture_output=True, text=True,
+                          timeout=30, cwd=REPO)
+    assert done.stdout.strip() == "INTERRUPTED 2", done.stdout + done.stderr
+    assert "Traceback" not in done.stderr and "Exception ignored" not in done.stderr
