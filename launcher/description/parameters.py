@@ -249,23 +249,33 @@ def add_global_parameter(context: LaunchContext, name: str, value: Any) -> None:
 
 def add_graph_parameter(context: LaunchContext, name: str, value: Any,
                         load: Callable[[Path], Any], folder: Path) -> None:
-    """A ROS 1 parameter (its full name) for the graph's parameter server. The first one
-    chooses the file they will be written to, in `folder`, and queues `load(file)`, the
-    action that puts them on the server, after everything queued now (the rest of the
-    launch files: roslaunch sets the whole tree's parameters at once)."""
+    """A ROS 1 parameter (its full name) for the graph's parameter server (see _queue_load
+    for `load` and `folder`)."""
     context.graph_parameters[name] = value
+    _queue_load(context, load, folder)
+
+
+def delete_graph_parameters(context: LaunchContext, name: str, load: Callable[[Path], Any],
+                            folder: Path) -> None:
+    """`<rosparam command="delete">`: the name and everything below it, of what this launch
+    set before it and of what the server holds. (The server forgets before it takes the
+    launch's values, so values set after the delete stay.)"""
+    prefix = name.rstrip("/") + "/"
+    for key in [k for k in context.graph_parameters if k == name or k.startswith(prefix)]:
+        del context.graph_parameters[key]
+    context.graph_deletions.append(name)
+    _queue_load(context, load, folder)
+
+
+def _queue_load(context: LaunchContext, load: Callable[[Path], Any], folder: Path) -> None:
+    """The first change chooses the file they will be written to, in `folder`, and queues
+    `load(file)`, the action that puts them on the server, after everything queued now (the
+    rest of the launch files: roslaunch sets the whole tree's parameters at once)."""
     if context.graph_parameters_file is not None or context.service is None:
         return
     context.graph_parameters_file = _new_file(folder, "graph_parameters", ".json")
     context.graph_parameters_file.touch(mode=0o600)  # taken: the next batch has its own
     context.service.schedule([load(context.graph_parameters_file)])
-
-
-def delete_graph_parameters(context: LaunchContext, name: str) -> None:
-    """`<rosparam command="delete">`: the name and everything below it."""
-    prefix = name.rstrip("/") + "/"
-    for key in [k for k in context.graph_parameters if k == name or k.startswith(prefix)]:
-        del context.graph_parameters[key]
 
 
 def add_global_parameter_file(context: LaunchContext, path: str) -> None:

@@ -95,6 +95,7 @@ class LaunchContext:
         # ROS 1 parameters for the graph's parameter server (full names), and whether its
         # start is queued (it comes once everything queued now has been visited)
         self.graph_parameters: dict[str, Any] = {}
+        self.graph_deletions: list[str] = []  # names whose trees the server is to forget
         self.graph_parameters_file: Path | None = None  # where they will be written
 
     # --- scopes -------------------------------------------------------------------------

@@ -308,6 +308,16 @@ def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
         assert ros1.run("rosparam", "load", "more.yaml", "/loaded").returncode == 0
         assert yaml.safe_load(ros1.run("rosparam", "get", "/loaded").stdout) == \
             {"speed": 2, "names": ["x", "y"]}
+        # a launch's <rosparam command="delete"> reaches what the server holds
+        ros1.write("forget.launch", """<launch>
+  <rosparam command="delete" param="loaded"/>
+  <param name="loaded/again" value="1"/>
+</launch>
+""")
+        forget = ros1.run("launch", "forget.launch", timeout=60)
+        assert "1 parameter set on the graph's parameter server (/_parameter_server), " \
+            "1 deleted" in forget.stdout, forget.stdout + forget.stderr
+        assert ros1.run("rosparam", "list", "/loaded").stdout.split() == ["/loaded/again"]
         # a launched script's `rosparam` is launcher's, unless a real ROS 1 is installed:
         # then that one runs (and finds no ROS 1 master)
         ros1.write("script.launch.yaml", """

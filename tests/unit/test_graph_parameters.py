@@ -68,7 +68,9 @@ def test_a_ros1_launch_hands_every_parameter_to_the_server_once_at_the_end(tmp_p
     loads = [s for s in service.specs if "launcher.nodes.load_parameters" in s.argv]
     assert len(loads) == 1 and service.specs[-1] is loads[0]  # after everything else
     path = loads[0].argv[-1]
-    assert json.loads(Path(path).read_text()) == {
+    written = json.loads(Path(path).read_text())
+    assert written["delete"] == ["/fleet/spare"]  # on the server too, before the values
+    assert written["set"] == {
         "/robot_description": "urdf", "/gains/p": 1.5, "/gains/i": 0, "/fleet/rate": 50,
         "/absolute": "yes", "/inner": 7,
         # roslaunch's own typing of an untyped value (roslaunch/loader.py convert_value):

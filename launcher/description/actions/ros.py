@@ -96,8 +96,12 @@ class SetParameter(Action):
 
         if command == "delete":
             if resolve(context, self.server, Kind.BOOL, "server"):
-                params.delete_graph_parameters(context, graph_name(
-                    context, perform_text(context, self.name) if self.name is not None else "/"))
+                from launcher.description.actions.node import params_folder
+
+                params.delete_graph_parameters(
+                    context, graph_name(context, perform_text(context, self.name)
+                                        if self.name is not None else "/"),
+                    _loader, params_folder(context))
             kept = tuple(item for item in params.global_settings(context)
                          if item[0] == params.FILE or not under(item[0]))
             context.configurations[params.GLOBAL_PARAMETERS] = kept  # type: ignore[assignment]
@@ -136,16 +140,20 @@ def to_graph(context: LaunchContext, name: str, value: Any) -> None:
     """A ROS 1 parameter (its full name) for the graph's parameter server."""
     from launcher.description.actions.node import params_folder
 
-    params.add_graph_parameter(context, name, value, lambda path: LoadGraphParameters(
-        file=path), params_folder(context))
+    params.add_graph_parameter(context, name, value, _loader, params_folder(context))
+
+
+def _loader(path: Path) -> Action:
+    return LoadGraphParameters(file=path)
 
 
 @dataclass(kw_only=True, eq=False)
 class LoadGraphParameters(Action):
     """Puts the ROS 1 parameters gathered so far (queued by the first of them) on the graph's
-    parameter server, through a helper process (launcher/nodes/load_parameters.py) that
-    writes FILE.loaded when done (the nodes started meanwhile wait for that before they ask
-    the server: lineage.GRAPH_PARAMETERS) and stays on the graph while the launch runs."""
+    parameter server, after the server forgets what the launch deleted, through a helper
+    process (launcher/nodes/load_parameters.py) that writes FILE.loaded when done (the nodes
+    started meanwhile wait for that before they ask the server: lineage.GRAPH_PARAMETERS) and
+    stays on the graph while the launch runs."""
 
     file: Path
 
@@ -153,10 +161,11 @@ class LoadGraphParameters(Action):
         import json  # only for a ROS 1 launch's parameters
 
         values, context.graph_parameters = context.graph_parameters, {}
+        deletions, context.graph_deletions = context.graph_deletions, []
         context.graph_parameters_file = None  # any later ones: a file and a process of their own
         if context.service is None:
             return None
-        write_private(self.file, json.dumps(values))
+        write_private(self.file, json.dumps({"delete": deletions, "set": values}))
         return [_Helper(cmd=[sys.executable, "-m", "launcher.nodes.load_parameters",
                              str(self.file)], name="load_parameters", output="screen",
                         where=self.where)]
