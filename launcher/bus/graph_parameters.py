@@ -33,7 +33,7 @@ RECHECK = 1.0  # s: how long "no server" is believed before the graph is asked a
 
 
 class Missing(LaunchError):
-    pass
+    """A name nothing is set at or below (said in ROS 1's words)."""
 
 
 def key(ros1_name: str) -> str:
@@ -129,12 +129,15 @@ class GraphParameters:
 
     def names(self, prefix: str = "/") -> list[str]:
         below = key(prefix)
-        response = self._call(params.LIST, "list_parameters",
-                              {"prefixes": [below + "."] if below else []})
-        found = list(response.result.names)
+        found = self._below(below)
         if below:
             found += self._present([below])
         return sorted(ros1_name(name) for name in set(found))
+
+    def _below(self, name: str) -> list[str]:
+        """The server's parameters under `name` (all of them under the root, '')."""
+        return list(self._call(params.LIST, "list_parameters",
+                               {"prefixes": [name + "."] if name else []}).result.names)
 
     def _present(self, names: list[str]) -> list[str]:
         response = self._call(params.GET, "get_parameters", {"names": names})
@@ -148,10 +151,9 @@ class GraphParameters:
             response = self._call(params.GET, "get_parameters", {"names": [name]})
             if response.values[0].type != params.NOT_SET:
                 return params.from_message(response.values[0])
-        below = self._call(params.LIST, "list_parameters",
-                           {"prefixes": [name + "."] if name else []}).result.names
+        below = self._below(name)
         if not below:
-            raise Missing(f"parameter [{ros1}] is not set")
+            raise Missing(f"Parameter [{ros1}] is not set")
         values = self._call(params.GET, "get_parameters", {"names": list(below)}).values
         return params.nested((full[len(name) + 1 if name else 0:], params.from_message(value))
                              for full, value in zip(below, values, strict=True))
@@ -183,13 +185,10 @@ class GraphParameters:
     def delete(self, ros1: str, missing_ok: bool = False) -> None:
         """The name and everything below it."""
         name = key(ros1)
-        below = self._call(params.LIST, "list_parameters",
-                           {"prefixes": [name + "."] if name else []}).result.names
-        doomed = [*self._present([name])] if name else []
-        doomed += list(below)
+        doomed = [*(self._present([name]) if name else []), *self._below(name)]
         if not doomed:
             if missing_ok:
                 return
-            raise Missing(f"parameter [{ros1}] is not set")
+            raise Missing(f"Parameter [{ros1}] is not set")
         self._call(params.SET, "set_parameters", {"parameters": [
             {"name": n, "value": params.to_message(None)} for n in doomed]})

@@ -75,10 +75,7 @@ def _with_server(args: argparse.Namespace, work: Any) -> Any:
             raise NoServer(f"the graph's parameter server ({graph.NODE}, which the graph's "
                            f"router hosts) did not answer within {args.timeout:g} s; is the "
                            "router of LAUNCHER_ROUTER an older launcher's?")
-        try:
-            return work(server)
-        except graph.Missing as exc:
-            raise LaunchError(f"{exc.message[0].upper()}{exc.message[1:]}") from None
+        return work(server)
     finally:
         node.destroy_node()
 

@@ -60,8 +60,9 @@ def node_apis_for_shell(environment: MutableMapping[str, str]) -> None:
 
 
 def commands_for_children(environment: MutableMapping[str, str]) -> None:
-    """Append launcher's `gz` to the children's PATH: last, so a real Gazebo's `gz` earlier on
-    PATH wins. The user's own shell never gets it (there it is `launcher gz`)."""
+    """Append launcher's `gz` and `rosparam` to the children's PATH: last, so a real Gazebo's
+    `gz` or ROS 1's `rosparam` earlier on PATH wins. The user's own shell never gets them
+    (there they are `launcher gz`, `launcher rosparam`)."""
     path = environment.get("PATH", "")
     parts = path.split(os.pathsep) if path else []
     if COMMANDS not in parts:
