@@ -17,6 +17,7 @@ from launcher.description.actions import group as _group
 from launcher.description.actions import log as _log
 from launcher.description.actions import loops as _loops
 from launcher.description.actions import node as _node
+from launcher.description.actions import param_entry as _params
 from launcher.description.actions import ros as _ros
 from launcher.description.actions import shutdown as _shutdown
 from launcher.description.actions import timer as _timer
@@ -243,9 +244,9 @@ def _parameters(parameters: Sequence[Any]) -> list[Any]:
     entries = []
     for item in parameters:
         if isinstance(item, dict):
-            entries.append(_node.ParamEntry(children=_parameter_group(item), group=True))
+            entries.append(_params.ParamEntry(children=_parameter_group(item), group=True))
         else:
-            entries.append(_node.ParamEntry(from_file=to_text(item)))
+            entries.append(_params.ParamEntry(from_file=to_text(item)))
     return entries
 
 
@@ -253,11 +254,11 @@ def _parameter_group(values: dict[Any, Any]) -> list[Any]:
     out = []
     for name, value in values.items():
         if isinstance(value, dict):
-            out.append(_node.ParamEntry(name=to_text(name), children=_parameter_group(value)))
+            out.append(_params.ParamEntry(name=to_text(name), children=_parameter_group(value)))
         elif isinstance(value, ParameterValue):
-            out.append(_node.python_parameter(name, value.value, value.type_name()))
+            out.append(_params.python_parameter(name, value.value, value.type_name()))
         else:
-            out.append(_node.python_parameter(name, value))
+            out.append(_params.python_parameter(name, value))
     return out
 
 

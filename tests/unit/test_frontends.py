@@ -113,7 +113,7 @@ def test_on_exit_children_in_xml_and_yaml():
 
 
 def test_node_parameters_nest_in_xml_and_yaml():
-    from launcher.description.actions.node import ParamEntry
+    from launcher.description.actions.param_entry import ParamEntry
 
     xml = xml_description("""
     <launch>

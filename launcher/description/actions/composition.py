@@ -26,12 +26,11 @@ from typing import Any
 
 from launcher.description import parameters as params
 from launcher.description.action import Action
-from launcher.description.actions.node import (
-    Node,
+from launcher.description.actions.node import Node, RemapEntry
+from launcher.description.actions.param_entry import (
     ParamEntry,
-    RemapEntry,
-    _python_parameters,
     gather_parameters,
+    python_parameters,
 )
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
@@ -66,7 +65,7 @@ class ComposableNode:
     where: Any = None
 
     def __post_init__(self) -> None:
-        self.parameters = _python_parameters(self.parameters)
+        self.parameters = python_parameters(self.parameters)
         self.remappings = [r if isinstance(r, RemapEntry) else
                            RemapEntry(to_text(r[0]), to_text(r[1])) for r in self.remappings]
         extras: list[Any] = []

@@ -4,18 +4,17 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Any
 
 from launcher.description import parameters as params
 from launcher.description.action import Action
-from launcher.description.actions.executable import ExecuteProcess
+from launcher.description.actions.graph_parameters import graph_name, loader, to_graph
+from launcher.description.actions.param_entry import params_folder, rosparam_entry
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import perform_text
 from launcher.errors import ExecutionError
-from launcher.private import write_private
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
@@ -66,8 +65,6 @@ class SetParameter(Action):
             return
         server = resolve(context, self.server, Kind.BOOL, "server")
         if self.rosparam_file is not None or self.rosparam is not None:
-            from launcher.description.actions.node import rosparam_entry
-
             for name, value in rosparam_entry(context, self, "", self.where).items():
                 self._set(context, name, value, server)
             return
@@ -96,12 +93,10 @@ class SetParameter(Action):
 
         if command == "delete":
             if resolve(context, self.server, Kind.BOOL, "server"):
-                from launcher.description.actions.node import params_folder
-
                 params.delete_graph_parameters(
                     context, graph_name(context, perform_text(context, self.name)
                                         if self.name is not None else "/"),
-                    _loader, params_folder(context))
+                    loader, params_folder(context))
             kept = tuple(item for item in params.global_settings(context)
                          if item[0] == params.FILE or not under(item[0]))
             context.configurations[params.GLOBAL_PARAMETERS] = kept  # type: ignore[assignment]
@@ -126,63 +121,6 @@ class SetParameter(Action):
         except OSError as exc:
             raise ExecutionError(f"<rosparam command=\"dump\">: cannot write '{path}': "
                                  f"{exc.strerror}", self.where) from None
-
-
-def graph_name(context: LaunchContext, name: str) -> str:
-    """A parameter's full ROS 1 name: in the current namespace unless it starts with /; a
-    nested (dotted) name is a path."""
-    if name.startswith("/"):
-        return "/" + "/".join(p for p in name.split("/") if p)
-    return params.join_namespace(params.namespace(context), name.replace(".", "/")) or "/"
-
-
-def to_graph(context: LaunchContext, name: str, value: Any) -> None:
-    """A ROS 1 parameter (its full name) for the graph's parameter server."""
-    from launcher.description.actions.node import params_folder
-
-    params.add_graph_parameter(context, name, value, _loader, params_folder(context))
-
-
-def _loader(path: Path) -> Action:
-    return LoadGraphParameters(file=path)
-
-
-@dataclass(kw_only=True, eq=False)
-class LoadGraphParameters(Action):
-    """Puts the ROS 1 parameters gathered so far (queued by the first of them) on the graph's
-    parameter server, after the server forgets what the launch deleted, through a helper
-    process (launcher/nodes/load_parameters.py) that writes FILE.loaded when done (the nodes
-    started meanwhile wait for that before they ask the server: lineage.GRAPH_PARAMETERS) and
-    stays on the graph while the launch runs."""
-
-    file: Path
-
-    def execute(self, context: LaunchContext) -> Any:
-        import json  # only for a ROS 1 launch's parameters
-
-        values, context.graph_parameters = context.graph_parameters, {}
-        deletions, context.graph_deletions = context.graph_deletions, []
-        context.graph_parameters_file = None  # any later ones: a file and a process of their own
-        if context.service is None:
-            return None
-        write_private(self.file, json.dumps({"delete": deletions, "set": values}))
-        return [_Helper(cmd=[sys.executable, "-m", "launcher.nodes.load_parameters",
-                             str(self.file)], name="load_parameters", output="screen",
-                        where=self.where)]
-
-
-DONE_LINE = "set on the graph's parameter server"  # load_parameters says so once they are
-
-
-@dataclass(kw_only=True, eq=False)
-class _Helper(ExecuteProcess):
-    """A process that holds the graph (and so the parameters) while the launch runs, and
-    does not keep the launch running."""
-
-    def spec(self, context: LaunchContext) -> Any:
-        spec = super().spec(context)
-        spec.helper_done_line = DONE_LINE
-        return spec
 
 
 @action("set_parameters_from_file")
