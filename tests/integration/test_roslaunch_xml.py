@@ -4,7 +4,7 @@ that reports what it was given. Expected behaviour is written from roslaunch's d
 
 from __future__ import annotations
 
-import shutil
+import os
 import signal
 
 import pytest
@@ -318,18 +318,17 @@ def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
         assert "1 parameter set on the graph's parameter server (/_parameter_server), " \
             "1 deleted" in forget.stdout, forget.stdout + forget.stderr
         assert ros1.run("rosparam", "list", "/loaded").stdout.split() == ["/loaded/again"]
-        # a launched script's `rosparam` is launcher's, unless a real ROS 1 is installed:
-        # then that one runs (and finds no ROS 1 master)
+        # roslaunch deletes before it sets: /loaded's old tree is gone, what the launch set
+        # after the delete stays; a launched script's `rosparam` (launcher's) sees just that
         ros1.write("script.launch.yaml", """
         launch:
+          - executable: {cmd: "rosparam get /loaded/again", output: screen}
           - executable: {cmd: "rosparam get /loaded/speed", output: screen}
         """)
         script = ros1.run("launch", "script.launch.yaml", timeout=60)
         said = script.stdout + script.stderr
-        if shutil.which("rosparam", path=ros1.env.get("PATH")):
-            assert "master" in said and "[rosparam-1] 2" not in said, said
-        else:
-            assert "[rosparam-1] 2" in said, said
+        assert "[rosparam-1] 1\n" in said, said
+        assert "[rosparam-2] error: Parameter [/loaded/speed] is not set" in said, said
     finally:
         router.send_signal(signal.SIGINT)
         assert router.wait(30) == 0
@@ -445,3 +444,19 @@ def test_bad_roslaunch_files(ros1, text, expected):
     assert result.returncode == 1, said
     assert expected in said, said
     assert "Traceback" not in said
+
+
+def test_a_launched_scripts_rosparam_is_a_real_ros1_one_when_the_user_has_it(ros1):
+    """compat/bin's `rosparam` is placed last on a launched process's PATH: a ROS 1 install
+    of the user's wins. The "real" one here is a stand-in the test puts on PATH."""
+    real = ros1.root / "ros1" / "bin"
+    real.mkdir(parents=True)
+    (real / "rosparam").write_text("#!/bin/sh\necho REAL-ROS1-ROSPARAM \"$@\"\n")
+    (real / "rosparam").chmod(0o755)
+    ros1.env["PATH"] = f"{real}{os.pathsep}{ros1.env['PATH']}"
+    ros1.write("script.launch.yaml", """
+    launch:
+      - executable: {cmd: "rosparam get /x", output: screen}
+    """)
+    done = ros1.run("launch", "script.launch.yaml", timeout=60)
+    assert "[rosparam-1] REAL-ROS1-ROSPARAM get /x" in done.stdout, done.stdout + done.stderr
