@@ -1,4 +1,5 @@
-"""Shared fixtures: launch files written inline, the real CLI, and a leak check.
+"""Shared fixtures: the suite's own PATH, launch files written inline, the real CLI, and a
+leak check.
 
 Every launcher started by a test carries a unique LAUNCHER_TEST_TAG in its environment, which
 its children and grandchildren inherit; after the test, no process may still carry it.
@@ -7,9 +8,11 @@ its children and grandchildren inherit; after the test, no process may still car
 from __future__ import annotations
 
 import os
+import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import textwrap
 import time
 import uuid
@@ -18,13 +21,26 @@ from pathlib import Path
 import psutil
 import pytest
 
-REPO = Path(__file__).resolve().parent.parent
-
+from tests.environment import REPO, clean_path, shared  # noqa: F401 - shared: for the tests
 
 # A suite started in the background of a script (`pytest &`) inherits SIGINT ignored, and so
 # would every process it starts: the tests send SIGINT as a user's Ctrl-C, so give it back.
 if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
     signal.signal(signal.SIGINT, signal.default_int_handler)
+
+@pytest.fixture(scope="session", autouse=True)
+def suite_path():
+    """Every test, and everything it starts, sees PATH as a fresh machine has it: the venv's
+    bin, then the system's base folders, and no real ROS or Gazebo tool (tests/environment.py)."""
+    mirrors = Path(tempfile.mkdtemp(prefix="launcher-suite-path-"))
+    saved = os.environ.get("PATH", "")
+    os.environ["PATH"] = clean_path(Path(sys.executable).parent, mirrors)
+    try:
+        yield os.environ["PATH"]
+    finally:
+        os.environ["PATH"] = saved
+        shutil.rmtree(mirrors, ignore_errors=True)
+
 
 def launcher_argv() -> list[str]:
     exe = Path(sys.executable).with_name("launcher")

@@ -11,14 +11,14 @@ import time
 
 import pytest
 
-from tests.conftest import REPO
+from tests.conftest import REPO, shared
 
-COURSE = REPO.parent / "shared" / "seeds" / "000_a847380181b3b659.txt"
+COURSE = ("seeds", "000_a847380181b3b659.txt")  # the course, in ../shared
 LAUNCH = REPO / "launch_files" / "robot.launch.yaml"
 
 
 def course_text() -> str:
-    return COURSE.read_text(encoding="utf-8")
+    return shared(*COURSE).read_text(encoding="utf-8")
 
 
 def course_publisher() -> str:

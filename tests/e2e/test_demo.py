@@ -14,7 +14,7 @@ import time
 import psutil
 import pytest
 
-from tests.conftest import REPO, launcher_argv, tagged_processes
+from tests.conftest import REPO, launcher_argv, shared, tagged_processes
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 
@@ -285,11 +285,11 @@ def test_ten_robots_all_spawn_and_publish_odometry(demo):
         assert proc.wait(90) == 130
 
 
-SEED = REPO.parent / "shared" / "seeds" / "001_ea06ae6f7572c47f.txt"
+SEED = ("seeds", "001_ea06ae6f7572c47f.txt")  # the seed project, in ../shared
 
 
 def test_the_demo_files_are_the_seed_projects_own_unchanged():
-    seed = SEED.read_text()
+    seed = shared(*SEED).read_text()
     launch = seed[seed.index("launch:\n  - arg:"):seed.index("bridge.yaml\n")]
     assert (REPO / "launch_files" / "robot.launch.yaml").read_text().startswith(launch)
     python = seed[seed.index("import os\nfrom ament_index_python"):]

@@ -11,17 +11,23 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import REPO
+from tests.conftest import REPO, shared
 
-EXTERNAL = REPO.parent / "shared" / "external"
-WORLDS = EXTERNAL / "gz-sim" / "worlds"
+WORLDS = ("external", "gz-sim", "worlds")  # in ../shared
 MODELS = REPO / "packages" / "robot_gazebo" / "models"
 
 
 @pytest.fixture
 def gz_ws(ws):
-    ws.own_bus().env["GZ_SIM_RESOURCE_PATH"] = f"{WORLDS}:{MODELS}"
+    ws.own_bus().env["GZ_SIM_RESOURCE_PATH"] = str(MODELS)
     return ws
+
+
+@pytest.fixture
+def gz_worlds(gz_ws):
+    """gz_ws, with gz-sim's own example worlds (../shared/external) on the resource path."""
+    gz_ws.env["GZ_SIM_RESOURCE_PATH"] += f":{shared(*WORLDS)}"
+    return gz_ws
 
 
 def start_world(ws, world: str, extra: str = ""):
@@ -52,48 +58,48 @@ def odometry_x(ws, vehicle: str) -> float:
     return float(found.group(1)) if found else 0.0  # the text format leaves out a zero x
 
 
-def test_diff_drive_sdf_gz_topic_drives_blue_and_not_green(gz_ws):
-    proc = start_world(gz_ws, "diff_drive.sdf")
+def test_diff_drive_sdf_gz_topic_drives_blue_and_not_green(gz_worlds):
+    proc = start_world(gz_worlds, "diff_drive.sdf")
     try:
-        listed = gz(gz_ws, "topic", "-l").stdout.split()
+        listed = gz(gz_worlds, "topic", "-l").stdout.split()
         assert "/model/vehicle_blue/cmd_vel" in listed and "/model/vehicle_blue/odometry" in listed
-        sent = gz(gz_ws, "topic", "-t", "/model/vehicle_blue/cmd_vel", "-m", "gz.msgs.Twist",
+        sent = gz(gz_worlds, "topic", "-t", "/model/vehicle_blue/cmd_vel", "-m", "gz.msgs.Twist",
                   "-p", "linear: {x: 0.5}")
         assert sent.returncode == 0, sent.stderr
-        first = odometry_x(gz_ws, "vehicle_blue")
+        first = odometry_x(gz_worlds, "vehicle_blue")
         time.sleep(2.5)  # odometry is published at 1 Hz in this world
-        second = odometry_x(gz_ws, "vehicle_blue")
+        second = odometry_x(gz_worlds, "vehicle_blue")
         assert second > first + 0.5, (first, second)  # one message drives on, as in Gazebo
-        assert abs(odometry_x(gz_ws, "vehicle_green")) < 0.01
-        info = gz(gz_ws, "topic", "-i", "-t", "/model/vehicle_blue/odometry").stdout
+        assert abs(odometry_x(gz_worlds, "vehicle_green")) < 0.01
+        info = gz(gz_worlds, "topic", "-i", "-t", "/model/vehicle_blue/odometry").stdout
         assert "Publishers [Node, Message Type]:" in info and "gz.msgs.Odometry" in info
-        models = gz(gz_ws, "model", "--list").stdout
+        models = gz(gz_worlds, "model", "--list").stdout
         assert "Requesting state for world [diff_drive]" in models
         assert all(f"    - {m}" in models for m in ("ground_plane", "vehicle_blue",
                                                        "vehicle_green"))
-        moved = gz(gz_ws, "service", "-s", "/world/diff_drive/set_pose", "--reqtype",
+        moved = gz(gz_worlds, "service", "-s", "/world/diff_drive/set_pose", "--reqtype",
                    "gz.msgs.Pose", "--reptype", "gz.msgs.Boolean", "--timeout", "2000",
                    "--req", 'name: "ground_plane", position: {z: -1.0}')
         assert moved.returncode == 0 and "data: true" in moved.stdout, moved.stderr
-        pose = gz(gz_ws, "model", "-m", "ground_plane", "-p").stdout
+        pose = gz(gz_worlds, "model", "-m", "ground_plane", "-p").stdout
         assert "[0.000000 0.000000 -1.000000]" in pose, pose  # a static model moves too
     finally:
         assert stop(proc) == 130
 
 
-def test_shapes_and_empty_load_and_the_shapes_cdata_command_moves_the_box(gz_ws):
+def test_shapes_and_empty_load_and_the_shapes_cdata_command_moves_the_box(gz_worlds):
     for world in ("empty.sdf", "shapes.sdf"):
-        done = gz(gz_ws, "sim", "-r", "--iterations", "300", world, timeout=60)
+        done = gz(gz_worlds, "sim", "-r", "--iterations", "300", world, timeout=60)
         assert done.returncode == 0, done.stdout + done.stderr
         assert "Traceback" not in done.stdout + done.stderr
-    proc = start_world(gz_ws, "shapes.sdf")
+    proc = start_world(gz_worlds, "shapes.sdf")
     try:
-        source = (WORLDS / "shapes.sdf").read_text()  # the command in the world's own CDATA
+        source = shared(*WORLDS, "shapes.sdf").read_text()  # the command in the world's CDATA
         command = re.search(r"gz service (.*?)'\s*\]\]>", source, re.S).group(1) + "'"
         words = [w.strip("'") for w in re.findall(r"'[^']*'|\S+", command.replace("\\\n", " "))]
-        done = gz(gz_ws, "service", *words)
+        done = gz(gz_worlds, "service", *words)
         assert done.returncode == 0 and "data: true" in done.stdout, done.stdout + done.stderr
-        pose = gz(gz_ws, "model", "-m", "box", "-p").stdout
+        pose = gz(gz_worlds, "model", "-m", "box", "-p").stdout
         z = float(re.search(r"\[(\S+) (\S+) (\S+)\]", pose).group(3))
         assert z > 1.0, pose  # set to 5 m, falling since
     finally:
@@ -154,33 +160,33 @@ def demos_workspace(ws) -> Path:
         "<version>0.0.0</version><description>demos</description>"
         '<maintainer email="m@example.com">m</maintainer><license>Apache-2.0</license>'
         "</package>")
-    (package / "launch").symlink_to(EXTERNAL / "ros_gz_sim_demos" / "launch")
+    (package / "launch").symlink_to(shared("external", "ros_gz_sim_demos", "launch"))
     ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "pkgs")
     return package
 
 
-def test_ros_gz_sim_demos_diff_drive_launch_runs_unchanged_and_its_bridge_drives(gz_ws):
-    demos_workspace(gz_ws)
-    proc = gz_ws.start("launch", "ros_gz_sim_demos", "diff_drive.launch.py", "rviz:=false",
+def test_ros_gz_sim_demos_diff_drive_launch_runs_unchanged_and_its_bridge_drives(gz_worlds):
+    demos_workspace(gz_worlds)
+    proc = gz_worlds.start("launch", "ros_gz_sim_demos", "diff_drive.launch.py", "rviz:=false",
                        output="demo.out")
     try:
-        gz_ws.wait_for_output("bridging 4 of 4 entries", 60, "demo.out")
-        start = odometry_x(gz_ws, "vehicle_blue")  # waits for the sim's odometry
-        sent = gz_ws.run("topic", "pub", "/model/vehicle_blue/cmd_vel",
+        gz_worlds.wait_for_output("bridging 4 of 4 entries", 60, "demo.out")
+        start = odometry_x(gz_worlds, "vehicle_blue")  # waits for the sim's odometry
+        sent = gz_worlds.run("topic", "pub", "/model/vehicle_blue/cmd_vel",
                          "geometry_msgs/msg/Twist", "{linear: {x: 0.5}}", "-r", "10", "-t",
                          "25", timeout=30)  # the ROS side of the bridge
         assert sent.returncode == 0, sent.stderr
-        ros = gz_ws.run("topic", "echo", "/model/vehicle_blue/odometry",
+        ros = gz_worlds.run("topic", "echo", "/model/vehicle_blue/odometry",
                         "nav_msgs/msg/Odometry", "--once", "--field", "pose.pose.position.x")
         assert float(ros.stdout.split()[0]) > start + 0.5, (start, ros.stdout)
-        assert "[ERROR]" not in gz_ws.output("demo.out")
+        assert "[ERROR]" not in gz_worlds.output("demo.out")
     finally:
         assert stop(proc) == 130
 
 
-def test_ros_gz_sim_demos_with_rviz_is_one_error_for_rviz_and_the_rest_runs(gz_ws):
-    demos_workspace(gz_ws)
-    done = gz_ws.run("launch", "ros_gz_sim_demos", "diff_drive.launch.py", "--duration", "6",
+def test_ros_gz_sim_demos_with_rviz_is_one_error_for_rviz_and_the_rest_runs(gz_worlds):
+    demos_workspace(gz_worlds)
+    done = gz_worlds.run("launch", "ros_gz_sim_demos", "diff_drive.launch.py", "--duration", "6",
                      timeout=90)
     out = done.stdout + done.stderr
     errors = [line for line in out.splitlines() if "ERROR" in line]

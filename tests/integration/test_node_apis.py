@@ -16,9 +16,8 @@ from pathlib import Path
 import pytest
 
 from launcher.compat import SITE
-from tests.conftest import REPO
+from tests.conftest import shared
 
-EXAMPLES = REPO.parent / "shared" / "external" / "ros2_examples" / "rclpy"
 PUBLISHERS = ["publisher_old_school", "publisher_local_function", "publisher_member_function"]
 SUBSCRIBERS = ["subscriber_old_school", "subscriber_lambda", "subscriber_member_function"]
 CLIENTS = ["client", "client_async", "client_async_member_function", "client_async_callback"]
@@ -27,7 +26,7 @@ SERVICES = ["service", "service_member_function"]
 
 @pytest.fixture
 def examples(ws):
-    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(EXAMPLES)
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(shared("external", "ros2_examples", "rclpy"))
     return ws
 
 

@@ -14,7 +14,7 @@ import urllib.request
 import psutil
 import pytest
 
-from tests.conftest import REPO
+from tests.conftest import REPO, shared
 
 ARTEFACTS = REPO / "test-artefacts" / "viewer"  # a failing browser test's screenshots
 
@@ -201,7 +201,7 @@ def test_a_model_dropped_onto_the_page_is_not_kept(tmp_path):
 
 
 # --- in a real browser: Debian's Chromium, headless, software GL --------------------------
-DIFF_DRIVE = REPO.parent / "shared" / "external" / "gz-sim" / "worlds" / "diff_drive.sdf"
+DIFF_DRIVE = ("external", "gz-sim", "worlds", "diff_drive.sdf")  # in ../shared
 SCENE = (0, 0, 800, 400)  # the 3D view of an 800×600 window, above the page's status bar
 BLUE, GREEN, RED = (0.2, 0.2, 0.8), (0.2, 0.8, 0.2), (0.8, 0.2, 0.2)
 
@@ -281,9 +281,10 @@ def difference(a, b) -> float:
 
 def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spawn_appears(
         view_ws, browser):
-    view_ws.env["GZ_SIM_RESOURCE_PATH"] = str(DIFF_DRIVE.parent)
+    world = shared(*DIFF_DRIVE)
+    view_ws.env["GZ_SIM_RESOURCE_PATH"] = str(world.parent)
     port = free_port()
-    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", str(DIFF_DRIVE))
+    proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", str(world))
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
         browser.get(f"http://127.0.0.1:{port}/")
@@ -388,10 +389,11 @@ def centre_of(image, colour) -> tuple[float, float]:
 
 
 def test_in_a_real_browser_track_keeps_the_driving_robot_in_view(view_ws, browser):
-    view_ws.env["GZ_SIM_RESOURCE_PATH"] = str(DIFF_DRIVE.parent)
+    world = shared(*DIFF_DRIVE)
+    view_ws.env["GZ_SIM_RESOURCE_PATH"] = str(world.parent)
     port = free_port()
     proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", "--track", "vehicle_blue",
-                         str(DIFF_DRIVE))
+                         str(world))
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
         browser.get(f"http://127.0.0.1:{port}/")

@@ -18,10 +18,10 @@ from launcher.sim.loading import load_world_file
 from launcher.sim.resources import model_file
 from launcher.sim.templates import Templates
 from launcher.sim.world import World
-from tests.conftest import REPO
+from tests.conftest import REPO, shared
 from tests.unit.test_sim import Recorder
 
-EXTERNAL = REPO.parent / "shared" / "external" / "gz-sim" / "worlds"
+WORLDS = ("external", "gz-sim", "worlds")  # gz-sim's, in ../shared
 LIDAR = REPO / "packages" / "robot_description" / "meshes" / "lidar.stl"
 
 
@@ -70,7 +70,7 @@ def error_of(tmp_path: Path, text: str, env: dict | None = None) -> str:
 # --- gz-sim's own worlds, unchanged -------------------------------------------------------
 @pytest.mark.parametrize("name", ["empty", "shapes", "diff_drive"])
 def test_gz_sims_worlds_load(name):
-    path = EXTERNAL / f"{name}.sdf"
+    path = shared(*WORLDS, f"{name}.sdf")
     loaded = sdf.load_world(path.read_text(), path)
     model = loaded.spec.compile()
     assert loaded.name == name and model.nbody > 1
@@ -79,7 +79,7 @@ def test_gz_sims_worlds_load(name):
 
 
 def test_shapes_are_the_sizes_gazebo_draws(tmp_path):
-    loaded = load_world_file(EXTERNAL / "shapes.sdf")
+    loaded = load_world_file(shared(*WORLDS, "shapes.sdf"))
     model = loaded.spec.compile()
     geom = {model.geom(i).name: i for i in range(model.ngeom)}
     box = geom["box/box_link/collision/box_collision"]
@@ -101,7 +101,7 @@ def test_shapes_are_the_sizes_gazebo_draws(tmp_path):
 
 
 def test_the_diff_drive_world_drives_blue_and_leaves_green(tmp_path):
-    loaded = load_world_file(EXTERNAL / "diff_drive.sdf")
+    loaded = load_world_file(shared(*WORLDS, "diff_drive.sdf"))
     recorder = Recorder()
     world = World(loaded.spec, loaded.label, recorder, loaded.plugins, models=loaded.models)
     assert list(world.entities) == ["ground_plane", "vehicle_blue", "vehicle_green"]

@@ -8,8 +8,7 @@ import pytest
 
 from launcher.errors import LaunchError
 from launcher.packages.setup_py import console_scripts
-
-EXAMPLES = Path(__file__).resolve().parents[3] / "shared" / "external" / "ros2_examples"
+from tests.conftest import shared
 
 
 def write(tmp_path: Path, text: str) -> Path:
@@ -72,6 +71,6 @@ def test_a_syntax_error_names_the_line(tmp_path):
                                  "client_async_callback"}),
 ])
 def test_the_ros2_examples_setup_files(package, expected):
-    found = console_scripts(EXAMPLES / "rclpy" / package / "setup.py")
+    found = console_scripts(shared("external", "ros2_examples", "rclpy", package, "setup.py"))
     assert {name for name, _, _ in found} == expected
     assert all(":main" in target for _, target, _ in found)

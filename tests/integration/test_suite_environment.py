@@ -1,0 +1,61 @@
+"""The suite builds the environment it checks (tests/environment.py): a real ROS or Gazebo
+tool on the machine is never what a test reaches."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests import environment
+from tests.environment import REAL_TOOLS, clean_path, real_tools_in
+
+MARKER = "FAKE-REAL-ROSPARAM-REACHED"
+
+
+def test_the_suites_path_holds_no_real_ros_or_gazebo_tool(suite_path):
+    assert suite_path.split(os.pathsep)[0] == str(Path(sys.executable).parent)
+    for folder in suite_path.split(os.pathsep):
+        assert not real_tools_in(Path(folder)), folder
+
+
+def test_a_planted_rosparam_is_never_reached_by_the_suites_commands(ws, tmp_path):
+    """A "real" rosparam that prints a marker, in a system folder beside `sh` and the other
+    tools a test needs: the suite's PATH keeps the folder's other tools and drops it, so a
+    launched `rosparam` is launcher's own."""
+    system = tmp_path / "usr-bin"
+    system.mkdir()
+    for name in ("rosparam", "other_tool"):
+        (system / name).write_text(f"#!/bin/sh\necho {MARKER if name == 'rosparam' else 'OK'}\n")
+        (system / name).chmod(0o755)
+    path = clean_path(Path(sys.executable).parent, tmp_path / "mirrors",
+                      (str(system), "/usr/bin", "/bin"))
+    assert str(system) not in path.split(os.pathsep)
+    assert shutil.which("other_tool", path=path) is not None  # the rest of the folder stays
+    assert shutil.which("rosparam", path=path) is None
+    assert not any(shutil.which(tool, path=path) for tool in REAL_TOOLS)
+    ws.env["PATH"] = path
+    ws.write("script.launch.yaml", """
+    launch:
+      - executable: {cmd: "rosparam get /nothing_here", output: screen}
+      - executable: {cmd: "other_tool", output: screen}
+    """)
+    done = ws.run("launch", "script.launch.yaml", timeout=60)
+    said = done.stdout + done.stderr
+    assert MARKER not in said, said
+    assert "[other_tool-2] OK" in said, said
+    assert "[rosparam-1] error:" in said, said  # launcher's rosparam: no server is running
+
+
+def test_missing_shared_material_skips_naming_it_and_fails_when_ci_requires_it(monkeypatch):
+    """A clone without ../shared skips what needs it, saying what is missing; CI sets
+    LAUNCHER_REQUIRE_EXTERNAL=1, under which that is a failure (so CI runs them all)."""
+    monkeypatch.delenv(environment.REQUIRE_EXTERNAL, raising=False)
+    with pytest.raises(pytest.skip.Exception, match="needs .*/shared/external/no-such-world.sdf"):
+        environment.shared("external", "no-such-world.sdf")
+    monkeypatch.setenv(environment.REQUIRE_EXTERNAL, "1")
+    with pytest.raises(pytest.fail.Exception, match="LAUNCHER_REQUIRE_EXTERNAL=1 makes that"):
+        environment.shared("external", "no-such-world.sdf")
