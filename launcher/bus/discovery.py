@@ -81,10 +81,6 @@ def socket_path(environ: Mapping[str, str] | None = None) -> Path:
     return path
 
 
-def local_endpoint(environ: Mapping[str, str] | None = None) -> str:
-    return f"unixsock-stream/{socket_path(environ)}"
-
-
 def is_local(endpoint: str) -> bool:
     """Whether the endpoint is a Unix socket (this host, guarded by file permissions)."""
     return endpoint.startswith("unixsock-stream/")

@@ -31,10 +31,6 @@ class RosArgs:
         """The `-p` values."""
         return dict(source for kind, source in self.parameter_sources if kind == "value")
 
-    @property
-    def params_files(self) -> list[str]:
-        return [source for kind, source in self.parameter_sources if kind == "file"]
-
 
 def parse(argv: list[str]) -> RosArgs:
     """Split argv into the program's own arguments and its ROS arguments."""

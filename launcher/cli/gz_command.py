@@ -1,7 +1,7 @@
 """`launcher gz sim|topic|service|model …`: Gazebo's command line over launcher's sim.
 
 `launcher gz sim` is `launcher sim` (the workspace's hooks applied); the other verbs are
-clients of the running sim (launcher/nodes/gz.py). Launched processes find the same program
+clients of the running sim (launcher/nodes/gz/). Launched processes find the same program
 as `gz` on their PATH when no real Gazebo is installed (see compat/bin).
 """
 

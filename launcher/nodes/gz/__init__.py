@@ -1,4 +1,5 @@
-"""`gz sim|topic|service|model …`: Gazebo's command line over launcher's sim (`gz sim` is the sim).
+"""`gz topic|service|model …`: Gazebo's command line over launcher's sim (`gz sim` is the sim,
+which `launcher gz` runs itself: launcher/cli/gz_command.py).
 
   gz topic -l | -i -t T | -e -t T [-n N] [-d S] [--json-output] | -t T -m TYPE -p TEXT
   gz service -l | -i -s S | -s S --reqtype TYPE --reptype TYPE [--timeout MS] --req TEXT
@@ -34,10 +35,6 @@ def main(argv: list[str]) -> int:
     if verb in ("--version", "--versions"):
         print("launcher's gz (MuJoCo sim)")
         return 0
-    if verb == "sim":
-        from launcher.nodes.sim import main as sim
-
-        return sim(rest, gz=True)
     commands = {"topic": topic, "service": service, "model": model}
     if verb not in commands:
         raise UsageError(f"gz: unknown command '{verb}'{did_you_mean(verb, list(VERBS))}; "
