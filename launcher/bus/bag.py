@@ -30,7 +30,7 @@ from rosbags.rosbag2 import Reader, StoragePlugin, Writer
 
 from launcher.bus import graph
 from launcher.bus.node import Node
-from launcher.bus.qos import QoS
+from launcher.bus.qos import QoS, QoSPolicyError
 from launcher.bus.types import DISTRO, registry
 from launcher.errors import LaunchError, Location
 
@@ -191,20 +191,16 @@ def load_qos_overrides(path: str) -> dict[str, QoS]:
             raise LaunchError(f"QoS overrides: '{topic}' has unknown keys "
                               f"{', '.join(sorted(unknown))}; expected reliability, "
                               "durability, history, depth", where)
-        reliability = str(settings.get("reliability", "reliable")).lower()
-        durability = str(settings.get("durability", "volatile")).lower()
-        if reliability not in ("reliable", "best_effort", "system_default") or durability not in (
-                "volatile", "transient_local", "system_default"):
-            raise LaunchError(f"QoS overrides: '{topic}': reliability is reliable or "
-                              "best_effort, durability volatile or transient_local", where)
         depth = settings.get("depth", 10)
         if not isinstance(depth, int) or isinstance(depth, bool) or depth < 1:
             raise LaunchError(f"QoS overrides: '{topic}': depth is a whole number ≥ 1, got "
                               f"{depth!r}", where)
-        if str(settings.get("history", "keep_last")).lower() == "keep_all":
-            depth = 1000
-        out[str(topic)] = QoS(depth=depth, reliable=reliability != "best_effort",
-                              transient_local=durability == "transient_local")
+        named = {p: None if settings.get(p) is None else str(settings[p])
+                 for p in ("history", "reliability", "durability")}
+        try:
+            out[str(topic)] = QoS().with_policies(depth=depth, **named)
+        except QoSPolicyError as exc:
+            raise LaunchError(f"QoS overrides: '{topic}': {exc}", where) from None
     return out
 
 

@@ -17,7 +17,7 @@ from launcher.bus import graph, keys
 from launcher.bus.messages import build, echo_data, ros_repr, to_data
 from launcher.bus.names import expand
 from launcher.bus.node import Node, Rate
-from launcher.bus.qos import QoS
+from launcher.bus.qos import PROFILES, QoS
 from launcher.bus.session import open_session
 from launcher.bus.types import registry
 from launcher.cli import completion, positive_count, positive_number, qos_options
@@ -442,7 +442,7 @@ def run_delay(args: argparse.Namespace) -> int:
         delays.append(node.get_clock().now().nanoseconds / 1e9 -
                       (stamp.sec + stamp.nanosec / 1e9))
 
-    node.create_subscription(type_name, topic, arrived, qos_options.PROFILES["best_available"])
+    node.create_subscription(type_name, topic, arrived, PROFILES["best_available"])
     shown = 0
     while not node.interrupted:
         node.spin(1.0)
@@ -492,8 +492,8 @@ def endpoint_lines(entity: Any, kind: str) -> str:
         return "\n".join([*lines, "  (not announced)"])
     return "\n".join([
         *lines,
-        f"  Reliability: {'RELIABLE' if qos.reliable else 'BEST_EFFORT'}",
+        f"  Reliability: {qos.reliability_name}",
         f"  History (Depth): KEEP_LAST ({qos.depth})",
-        f"  Durability: {'TRANSIENT_LOCAL' if qos.transient_local else 'VOLATILE'}",
+        f"  Durability: {qos.durability_name}",
         "  Lifespan: Infinite", "  Deadline: Infinite", "  Liveliness: AUTOMATIC",
         "  Liveliness lease duration: Infinite"])

@@ -244,3 +244,21 @@ print('ok')
             "print(sorted(m for m in sys.modules if m.startswith(('rosbags', 'numpy'))))")
     done = subprocess.run([sys.executable, "-c", lean], capture_output=True, text=True)
     assert done.stdout.strip() == "[]", done.stdout + done.stderr
+
+
+def test_the_qos_vocabulary_names_profiles_and_policies_once():
+    from launcher.bus.qos import KEEP_ALL_DEPTH, PROFILES, QoS, QoSPolicyError
+
+    sensor = PROFILES["sensor_data"]
+    assert sensor == QoS(depth=5, reliable=False)
+    assert sensor.with_policies(reliability="RELIABLE", durability="transient_local") == \
+        QoS(depth=5, reliable=True, transient_local=True)
+    assert sensor.with_policies("system_default", 3, "system_default", None) == \
+        QoS(depth=3, reliable=False)
+    assert QoS().with_policies(history="keep_all", depth=2).depth == KEEP_ALL_DEPTH
+    assert (sensor.reliability_name, PROFILES["best_available"].durability_name) == \
+        ("BEST_EFFORT", "TRANSIENT_LOCAL")
+    with pytest.raises(QoSPolicyError, match="durability is system_default, volatile, "
+                                             "transient_local; got 'sticky'"):
+        QoS().with_policies(durability="sticky")
+

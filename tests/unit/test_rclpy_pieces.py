@@ -90,3 +90,12 @@ def test_logging_layout_and_levels(capsys):
     assert out.startswith("[INFO] [") and out.splitlines()[0].endswith("] [talker]: hello")
     assert "hidden" not in out and "[talker.part]: shown" in out
     assert err.count("once") == 1 and err.startswith("[WARN]")
+
+
+def test_rclpys_named_profiles_are_the_bus_vocabularys():
+    import rclpy.qos
+
+    from launcher.bus.qos import PROFILES
+
+    for name in ("sensor_data", "parameters", "action_status_default", "rosout_default"):
+        assert getattr(rclpy.qos, f"qos_profile_{name}").to_launcher() == PROFILES[name], name

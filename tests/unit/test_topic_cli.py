@@ -82,7 +82,7 @@ def test_echo_data_of_nested_messages_and_arrays():
 
 
 def test_qos_options_start_from_a_profile_and_override_it():
-    from launcher.bus.qos import QoS
+    from launcher.bus.qos import KEEP_ALL_DEPTH, QoS
     from launcher.cli import qos_options
 
     parser = argparse.ArgumentParser()
@@ -93,8 +93,8 @@ def test_qos_options_start_from_a_profile_and_override_it():
         QoS(depth=5, reliable=False)
     assert chosen(parser.parse_args(["--qos-profile", "sensor_data", "--qos-reliability",
                                      "reliable", "--qos-depth", "3"])) == QoS(depth=3)
-    assert chosen(parser.parse_args(["--qos-history", "keep_all"])).depth == \
-        qos_options.KEEP_ALL_DEPTH
+    assert chosen(parser.parse_args(["--qos-history", "keep_all", "--qos-depth", "3"])).depth \
+        == KEEP_ALL_DEPTH  # depth is keep_last's alone, as in ROS 2
     assert not chosen(parser.parse_args(["--qos-durability", "volatile"])).transient_local
     with pytest.raises(SystemExit):
         parser.parse_args(["--qos-reliability", "sometimes"])

@@ -6,7 +6,7 @@ from __future__ import annotations
 from enum import IntEnum
 from typing import Any
 
-from launcher.bus.qos import QoS
+from launcher.bus.qos import KEEP_ALL_DEPTH, PROFILES, QoS
 
 
 class HistoryPolicy(IntEnum):
@@ -45,9 +45,6 @@ QoSHistoryPolicy = HistoryPolicy
 QoSReliabilityPolicy = ReliabilityPolicy
 QoSDurabilityPolicy = DurabilityPolicy
 QoSLivelinessPolicy = LivelinessPolicy
-
-KEEP_ALL_DEPTH = 1000  # launcher keeps a bounded queue: KEEP_ALL keeps this many
-
 
 class InvalidQoSProfileException(Exception):
     def __init__(self, *args: Any) -> None:
@@ -107,16 +104,24 @@ def to_launcher(qos: Any) -> QoS:
     return QoS(depth=max(qos, 1))
 
 
-qos_profile_system_default = QoSProfile(history=HistoryPolicy.SYSTEM_DEFAULT, depth=10)
-qos_profile_sensor_data = QoSProfile(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT)
-qos_profile_services_default = QoSProfile(depth=10)
-qos_profile_parameters = QoSProfile(depth=1000)
-qos_profile_parameter_events = QoSProfile(depth=1000)
-qos_profile_action_status_default = QoSProfile(depth=1,
-                                               durability=DurabilityPolicy.TRANSIENT_LOCAL)
-qos_profile_unknown = QoSProfile(history=HistoryPolicy.UNKNOWN, depth=0)
-qos_profile_rosout_default = QoSProfile(depth=1000, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+def _named(name: str, history: HistoryPolicy = HistoryPolicy.KEEP_LAST) -> QoSProfile:
+    """rclpy's profile of that name, from the bus's vocabulary (launcher/bus/qos.py)."""
+    qos = PROFILES[name]
+    return QoSProfile(
+        history=history, depth=qos.depth,
+        reliability=ReliabilityPolicy.RELIABLE if qos.reliable else ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL if qos.transient_local else
+        DurabilityPolicy.VOLATILE)
 
+
+qos_profile_system_default = _named("system_default", HistoryPolicy.SYSTEM_DEFAULT)
+qos_profile_sensor_data = _named("sensor_data")
+qos_profile_services_default = _named("services_default")
+qos_profile_parameters = _named("parameters")
+qos_profile_parameter_events = _named("parameter_events")
+qos_profile_action_status_default = _named("action_status_default")
+qos_profile_unknown = QoSProfile(history=HistoryPolicy.UNKNOWN, depth=0)
+qos_profile_rosout_default = _named("rosout_default")
 
 class QoSPresetProfiles(IntEnum):
     SYSTEM_DEFAULT = 0
