@@ -24,6 +24,7 @@ from collections.abc import Callable
 
 import zenoh
 
+from launcher.arguments import Parser
 from launcher.bus import credentials, discovery
 from launcher.bus.session import config
 from launcher.errors import LaunchError, reported
@@ -145,7 +146,7 @@ def _until_idle(session: zenoh.Session, linger: float, stop: threading.Event) ->
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="launcher router", description=(
+    parser = Parser(prog="launcher router", description=(
         "Run the graph's router for ROS_DOMAIN_ID until Ctrl-C; --listen lets other hosts "
         "join (they set LAUNCHER_ROUTER to that endpoint and hold a copy of "
         "~/.launcher/credentials: every link is authenticated)."))

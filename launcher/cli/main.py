@@ -12,6 +12,7 @@ import os
 import sys
 
 from launcher import __version__
+from launcher.arguments import Parser
 from launcher.errors import reported
 
 COMMANDS = {
@@ -40,39 +41,10 @@ COMMANDS = {
 }
 
 
-class _Formatter(argparse.HelpFormatter):
-    """argparse's formatter, sized without importing shutil (argparse makes one for every
-    option it adds, and shutil is a good part of a launch's start-up imports)."""
-
-    def __init__(self, prog: str, indent_increment: int = 2, max_help_position: int = 24,
-                 width: int | None = None) -> None:
-        if width is None:
-            width = _columns() - 2
-        super().__init__(prog, indent_increment, max_help_position, width)
-
-
-def _columns() -> int:
-    """What shutil.get_terminal_size() says: $COLUMNS, the terminal's width, or 80."""
-    try:
-        return int(os.environ["COLUMNS"])
-    except (KeyError, ValueError):
-        pass
-    try:
-        return os.get_terminal_size(sys.__stdout__.fileno()).columns or 80
-    except (AttributeError, ValueError, OSError):
-        return 80
-
-
-class _Parser(argparse.ArgumentParser):
-    def __init__(self, *args: object, **kwargs: object) -> None:
-        kwargs.setdefault("formatter_class", _Formatter)
-        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
-
-
 def build_parser(selected: str | None) -> tuple[argparse.ArgumentParser,
                                                  argparse._SubParsersAction]:
     """The parser, and its subcommands (only the selected one's module is imported)."""
-    parser = _Parser(  # (its subcommands' parsers are _Parsers too)
+    parser = Parser(  # (its subcommands' parsers are Parsers too)
         prog="launcher", description="ROS 2-style launch files for simulated robots.")
     parser.add_argument("--version", action="version", version=f"launcher {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
@@ -103,15 +75,18 @@ def main(argv: list[str] | None = None) -> int:
 
         return reported(lambda: run_gz([a for a in argv[1:] if a != "--debug"]), "",
                         "--debug" in argv)
+    return reported(lambda: _parse_and_run(argv), "", "--debug" in argv)
+
+
+def _parse_and_run(argv: list[str]) -> int | None:
     selected = next((word for word in argv if not word.startswith("-")), None)
     parser, commands = build_parser(selected if selected in COMMANDS else None)
     if selected == "launch" and argv[0] == "launch":
         # `name:=value` may come before or after options (`--duration 10 drive:=false`)
         args = commands.choices["launch"].parse_intermixed_args(argv[1:])
     else:
-        args = parser.parse_args(argv)
-    return reported(lambda: args.run(args), "", getattr(args, "debug", False))
-
+        args = parser.parse_args_strictly(argv)
+    return args.run(args)
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -249,8 +249,7 @@ def run_echo(args: argparse.Namespace) -> int:
     node.spin(args.timeout)
     node.destroy_node()
     if args.timeout is not None and not received.is_set():  # (with or without --once)
-        print(f"no message on {topic} within {args.timeout:g} s", file=sys.stderr)
-        return 1
+        raise LaunchError(f"no message on {topic} within {args.timeout:g} s")
     return 0
 
 

@@ -15,7 +15,7 @@ import sys
 from launcher.bus import discovery
 from launcher.bus import graph_parameters as graph
 from launcher.bus.node import Node
-from launcher.errors import LaunchError, reported
+from launcher.errors import LaunchError, UsageError, report, reported
 
 NAME = "load_parameters"
 
@@ -25,8 +25,7 @@ def main(argv: list[str] | None = None) -> int:
     if "--ros-args" in words:
         words = words[:words.index("--ros-args")]
     if len(words) != 1:
-        print(f"usage: python -m launcher.nodes.{NAME} FILE", file=sys.stderr)
-        return 2
+        return report(UsageError(f"usage: python -m launcher.nodes.{NAME} FILE"), NAME)
     return reported(lambda: load(words[0]), NAME)
 
 

@@ -22,6 +22,7 @@ import os
 import sys
 from typing import Any
 
+from launcher.arguments import Parser
 from launcher.errors import UsageError, reported
 from launcher.sim import viewer
 
@@ -33,7 +34,7 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
     if "--ros-args" in argv:
         cut = argv.index("--ros-args")
         argv, ros = argv[:cut], argv[cut:]
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="sim", description=__doc__.split("\n")[0],
         epilog="A picture of a running world: launcher sim snapshot -o world.png (see -h there).")
     parser.add_argument("world", nargs="?", default=None, metavar="WORLD",

@@ -13,6 +13,7 @@ import argparse
 import time
 from pathlib import Path
 
+from launcher.arguments import Parser
 from launcher.errors import LaunchError, UsageError, reported
 from launcher.nodes.create import SimNotFound, find_world
 
@@ -21,7 +22,7 @@ MAX_SIDE = 4096  # as the sim allows
 
 
 def parse(argv: list[str]) -> argparse.Namespace:
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="launcher sim snapshot",
         description="Render the running world offscreen to a PNG file.")
     parser.add_argument("-o", "--output", required=True, metavar="FILE.png")

@@ -9,12 +9,13 @@ from __future__ import annotations
 import importlib
 import sys
 
+from launcher.errors import UsageError, report
+
 
 def main() -> int:
     if len(sys.argv) < 2 or ":" not in sys.argv[1]:
-        print("usage: python -m launcher.packages.entry MODULE:FUNCTION [ARGS…]",
-              file=sys.stderr)
-        return 2
+        return report(UsageError("usage: python -m launcher.packages.entry MODULE:FUNCTION "
+                                 "[ARGS…]"))
     target = sys.argv[1]
     module_name, _, attribute = target.partition(":")
     function = importlib.import_module(module_name)

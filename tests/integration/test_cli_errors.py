@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import subprocess
+
 import pytest
 
 
@@ -237,3 +239,40 @@ def test_colour_follows_force_color_and_no_color(ws):
     assert "\x1b[" in forced.stdout and "hello" in forced.stdout
     ws.env["RCUTILS_COLORIZED_OUTPUT"] = "0"  # ROS 2's own switch wins
     assert "\x1b[" not in ws.run("launch", "hello.launch.yaml").stdout
+
+
+# --- the command line: every parser's mistakes go through the one reporter -----------------
+@pytest.mark.parametrize("args, expected", [
+    (["tpoic", "list"], "error: launcher: argument COMMAND: invalid choice: 'tpoic' "),
+    (["tpoic", "list"], "(did you mean 'topic'?) (see `launcher -h`)"),
+    (["topic", "ehco", "/x"], "(did you mean 'echo'?) (see `launcher topic -h`)"),
+    (["topic", "echo", "/x", "--onec"], "error: launcher topic echo: unrecognized arguments: "
+                                        "--onec (did you mean '--once'?)"),
+    (["router", "--lisen"], "error: launcher router: unrecognized arguments: --lisen "
+                            "(did you mean '--listen'?)"),
+    (["sim", "--gui-rte", "5"], "[sim] error: sim: unrecognized arguments: --gui-rte "
+                                "(did you mean '--gui-rate' or"),
+    (["sim", "--gui-rate", "500"], "[sim] error: sim: --gui-rate must be between 1 and"),
+    (["sim", "snapshot"], "error: launcher sim snapshot: the following arguments are "
+                          "required: -o/--output"),
+    (["param", "get"], "error: launcher param get: the following arguments are required: "
+                       "node, name (see `launcher param get -h`)"),
+], ids=["command", "command-hint", "verb", "flag", "router", "sim", "sim-value", "snapshot",
+        "missing"])
+def test_command_line_mistakes_are_one_reported_line(ws, args, expected):
+    done = ws.run(*args)
+    assert done.returncode == 2, done.stderr
+    assert expected in done.stderr and "usage:" not in done.stderr, done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1 and done.stdout == ""
+
+
+def test_internal_entry_points_report_their_usage_too(ws):
+    import sys
+
+    for module in ("launcher.packages.entry", "launcher.nodes.load_parameters"):
+        done = subprocess.run([sys.executable, "-m", module], capture_output=True, text=True,
+                              env=ws.env, timeout=60)
+        assert done.returncode == 2, done.stderr
+        assert done.stderr.startswith(("error: usage: python -m ",
+                                       "[load_parameters] error: usage: python -m ")), \
+            done.stderr

@@ -1,26 +1,12 @@
-"""What the `gz` verbs share: usage errors (exit 2, with "did you mean"), Gazebo's type
-names, and name listings."""
+"""What the `gz` verbs share: Gazebo's type names and name listings."""
 
 from __future__ import annotations
 
-import argparse
-from typing import Any, NoReturn
+from typing import Any
 
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError, did_you_mean
 from launcher.nodes.conversions import SIM_MESSAGES, _short, sim_type
-
-
-class Parser(argparse.ArgumentParser):
-    """argparse that raises one clean error, with "did you mean" for a mistyped flag."""
-
-    def error(self, message: str) -> NoReturn:
-        hint = ""
-        if message.startswith("unrecognized arguments: "):
-            flags = [s for a in self._actions for s in a.option_strings]
-            words = message.split(": ", 1)[1].split()
-            hint = "".join(did_you_mean(w, flags) for w in words if w.startswith("-"))
-        raise UsageError(f"{self.prog}: {message}{hint} (see `{self.prog} -h`)")
 
 
 def gz_name(type_name: str) -> str:

@@ -5,12 +5,12 @@ from __future__ import annotations
 import math
 import time
 
+from launcher.arguments import Parser
 from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.errors import LaunchError, UsageError, did_you_mean
 from launcher.nodes.conversions import SIM
 from launcher.nodes.create import SimNotFound, find_world
-from launcher.nodes.gz.common import Parser
 
 STATE_TYPE = f"{SIM}/srv/State"
 

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-import sys
 from typing import Any
 
+from launcher.arguments import Parser
 from launcher.bus import graph, keys
 from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
@@ -12,7 +12,7 @@ from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.conversions import _short, sim_type
-from launcher.nodes.gz.common import Parser, print_names
+from launcher.nodes.gz.common import print_names
 
 
 def service(argv: list[str]) -> int:
@@ -83,8 +83,7 @@ def _call(name: str, reqtype: str, reptype: str, text: str, timeout: float) -> i
     reply = to_data(response)
     print(prototext.format(gz_msgs.reply_to_gz(_short(reptype), reply)) or "data: false\n")
     if not reply.get("success", True):
-        print(f"the sim refused: {reply.get('message', '')}", file=sys.stderr)
-        return 1
+        raise LaunchError(f"the sim refused: {reply.get('message', '')}")
     return 0
 
 

@@ -10,6 +10,7 @@ import threading
 import time
 from typing import Any
 
+from launcher.arguments import Parser
 from launcher.bus import graph, keys
 from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
@@ -17,7 +18,7 @@ from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
-from launcher.nodes.gz.common import Parser, gz_name, message_type, print_names
+from launcher.nodes.gz.common import gz_name, message_type, print_names
 
 
 def topic(argv: list[str]) -> int:
