@@ -169,7 +169,7 @@ def run_to_end(argv: list[str], env: Mapping[str, str], *, cwd: str | None = Non
     (exit status, stdout, stderr). Its output goes to unlinked files, not pipes, so a
     background job it leaves cannot hold the launch up; once it exits, whatever it left in its
     group is stopped. Interrupted (Ctrl-C) or past `timeout`, the whole group is stopped and
-    the exception (subprocess.TimeoutExpired) goes on."""
+    the exception (subprocess.TimeoutExpired, with the output so far) goes on."""
     import subprocess  # only when a helper runs: a node's start-up time
     import tempfile
 
@@ -179,6 +179,13 @@ def run_to_end(argv: list[str], env: Mapping[str, str], *, cwd: str | None = Non
                                  env=dict(env), cwd=cwd, start_new_session=True)
         try:
             code = child.wait(timeout)
+        except subprocess.TimeoutExpired as exc:  # what it said so far goes with it
+            stop_group(child.pid)
+            child.wait()
+            out.seek(0)
+            err.seek(0)
+            exc.output, exc.stderr = out.read(), err.read()
+            raise
         finally:
             stop_group(child.pid)
             if child.returncode is None:

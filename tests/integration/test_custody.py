@@ -208,6 +208,22 @@ def test_a_shell_hook_with_a_syntax_error_says_where(hooked):
     no_leftovers(hooked, 5)
 
 
+def test_a_shell_hook_that_never_ends_is_stopped_located_and_leaves_nothing(hooked):
+    """A hook waiting for something that never comes (here a sleep, and a child it put in the
+    background): after LAUNCHER_HOOK_TIMEOUT the launch says which hook and line, exits 1,
+    and nothing of the hook is left."""
+    (hooked.root / "src/busy/hooks/busy.sh").write_text(
+        "export A=1\n(sleep 600) &\nsleep 600\nexport B=2\n")
+    hooked.write("hooked.launch.yaml", "launch: []\n")
+    hooked.env["LAUNCHER_HOOK_TIMEOUT"] = "1"
+    result = hooked.run("launch", "hooked.launch.yaml", timeout=60)
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert f"{hooked.root}/src/busy/hooks/busy.sh:3: hook did not finish within 1 s and was " \
+        "stopped, with all it started" in result.stderr, result.stderr
+    assert "Traceback" not in result.stderr
+    no_leftovers(hooked, 5)
+
+
 def test_a_signal_during_start_up_exits_cleanly(ws):
     """Signals in the launcher's first half second (importing, loading, starting the router
     and the processes): the status a shell expects, no traceback, nothing left. (From the

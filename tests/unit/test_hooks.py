@@ -132,3 +132,41 @@ def test_bad_hooks(tmp_path, files, expected):
     with pytest.raises(LaunchError) as info:
         apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin"})
     assert expected in str(info.value)
+
+
+HANGS = """# waits for a device that never comes
+export ROBOT_PORT=/dev/ttyUSB0
+sleep 987
+export AFTER=1
+"""
+
+
+@pytest.mark.parametrize("name, text, expected", [
+    ("p.sh", "export A=1\nexit 3\n", "p.sh:2: hook failed with exit status 3"),
+    ("p.sh", "A=1\nB=2\n[ -n \"$NOT_SET_XYZ\" ] || return 4\nC=3\n", "p.sh:3: hook failed"),
+    ("p.sh", HANGS, "p.sh:3: hook did not finish within 0.5 s and was stopped"),
+    ("p.bash", "A=1\nX=987\nsleep $X\n", "p.bash:3: hook did not finish within 0.5 s"),
+    ("p.sh", "A=1\nf() {\n  sleep $1\n}\nf 987\n", "p.sh:3: hook did not finish"),
+], ids=["exit", "last-command", "never-ends", "bash-never-ends", "in-a-function"])
+def test_a_shell_hook_that_fails_or_never_ends_is_located_and_leaves_nothing(
+        tmp_path, monkeypatch, name, text, expected):
+    """The hook's file and the line it was at: the shell's trace says which command ran last
+    (bash gives the line; Debian's sh has no $LINENO, so the command is found in the file)."""
+    import psutil
+
+    monkeypatch.setenv("LAUNCHER_HOOK_TIMEOUT", "0.5")
+    ws = make_tree(tmp_path / "ws", {"p/package.xml": manifest("p"), f"p/hooks/{name}": text})
+    with pytest.raises(LaunchError) as info:
+        apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin"})
+    assert expected in str(info.value)
+    assert str(info.value).startswith(str(ws / "p" / "hooks" / name))
+    assert "\x1f" not in str(info.value)  # the shell's trace is not shown as the hook's words
+    left = [p for p in psutil.process_iter(["cmdline"]) if p.info["cmdline"] == ["sleep", "987"]]
+    assert not left
+
+
+def test_a_bad_hook_timeout_is_said(tmp_path, monkeypatch):
+    monkeypatch.setenv("LAUNCHER_HOOK_TIMEOUT", "soon")
+    ws = make_tree(tmp_path / "ws", {"p/package.xml": manifest("p"), "p/hooks/p.sh": "A=1\n"})
+    with pytest.raises(LaunchError, match="LAUNCHER_HOOK_TIMEOUT is 'soon'; expected a number"):
+        apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin"})
