@@ -7,7 +7,8 @@ YAML: a list of entries. Topics: `topic_name` (both sides) or `ros_topic_name` /
 `gz_rep_type_name`. `sim_*` keys are accepted for `gz_*` ones. The keys are declared once
 (TopicKeys, ServiceKeys) and checked by launcher's one record builder. The file may be a jinja2
 template, rendered with the node's parameters. A bad entry is reported with its file, line
-and number and skipped; an empty file or a top level that is not a list is an error.
+and number and skipped (a type neither side knows: at its key's line and column, with "did you
+mean"); an empty file or a top level that is not a list is an error.
 
 Command line: `topic@ROS_TYPE@SIM_TYPE` (both ways), `[` (sim → ROS), `]` (ROS → sim); a ROS
 type with `/srv/` makes a service.
@@ -68,14 +69,32 @@ class Entry:
     where: str = ""
 
 
-def parse_entry(raw: Any, where: str, sim_type: Callable[[str], str]) -> Entry:
+@dataclass(frozen=True)
+class Types:
+    """How a type name becomes the bus's: each raises a LaunchError for one it does not know."""
+
+    sim: Callable[[str], str]
+    ros: Callable[[str], str]
+
+
+def parse_entry(raw: Any, where: str, types: Types,
+                places: Mapping[str, str] | None = None) -> Entry:
+    """One entry at `where`; `places` says where each key's value is, in the same form."""
+    def typed(check: Callable[[str], str], key: str, name: str) -> str:
+        try:
+            return check(name)
+        except LaunchError as exc:
+            raise LaunchError(f"{(places or {}).get(key, where)}: {key}: {exc.message}") \
+                from None
+
     if not isinstance(raw, Mapping):
         raise LaunchError(f"{where}: an entry must be a mapping of keys, got "
                           f"{type(raw).__name__}")
     if "service_name" in raw:
         service = build(ServiceKeys, raw, where)
         return Entry(service.service_name, service.service_name, service.ros_type_name,
-                     sim_type(f"{service.gz_req_type_name}|{service.gz_rep_type_name}"),
+                     typed(types.sim, "gz_req_type_name",
+                           f"{service.gz_req_type_name}|{service.gz_rep_type_name}"),
                      service=True, where=where)
     values = dict(raw)
     if isinstance(values.get("direction"), str):  # ros_gz reads it in any case
@@ -89,14 +108,15 @@ def parse_entry(raw: Any, where: str, sim_type: Callable[[str], str]) -> Entry:
     if not ros_name or not sim_name:
         raise LaunchError(f"{where}: no topic: give topic_name, or ros_topic_name and/or "
                           "gz_topic_name")
-    return Entry(ros_name, sim_name, keys.ros_type_name, sim_type(keys.gz_type_name),
-                 keys.direction, keys.lazy, keys.subscriber_queue, keys.publisher_queue,
-                 where=where)
+    return Entry(ros_name, sim_name, typed(types.ros, "ros_type_name", keys.ros_type_name),
+                 typed(types.sim, "gz_type_name", keys.gz_type_name), keys.direction, keys.lazy,
+                 keys.subscriber_queue, keys.publisher_queue, where=where)
 
 
-def load_file(path: str, parameters: Mapping[str, Any], sim_type: Callable[[str], str],
-              report: Callable[[str], None]) -> list[Entry]:
-    """The entries of a config file; bad ones are reported and left out."""
+def load_file(path: str, parameters: Mapping[str, Any], types: Types,
+              report: Callable[[str], None]) -> tuple[list[Entry], int]:
+    """The entries of a config file, and how many it has: bad ones are reported and left
+    out."""
     import yaml
 
     file = Path(path)
@@ -122,10 +142,20 @@ def load_file(path: str, parameters: Mapping[str, Any], sim_type: Callable[[str]
         where = f"{path}:{node.start_mark.line + 1}: entry {number}"
         try:
             raw = yaml.safe_load(yaml.serialize(node))
-            entries.append(parse_entry(raw, where, sim_type))
+            entries.append(parse_entry(raw, where, types, _places(path, node, number)))
         except LaunchError as exc:
             report(f"{exc}; skipped")
-    return entries
+    return entries, len(document.value)
+
+
+def _places(path: str, node: Any, number: int) -> dict[str, str]:
+    """Where each key's value of entry `number` (a mapping node) is."""
+    import yaml
+
+    pairs = node.value if isinstance(node, yaml.MappingNode) else []
+    return {str(key.value): f"{path}:{value.start_mark.line + 1}:"
+                            f"{value.start_mark.column + 1}: entry {number}"
+            for key, value in pairs}
 
 
 def _render(text: str, file: Path, parameters: Mapping[str, Any]) -> str:
@@ -143,7 +173,7 @@ def _render(text: str, file: Path, parameters: Mapping[str, Any]) -> str:
             from None
 
 
-def parse_argument(text: str, sim_type: Callable[[str], str]) -> Entry:
+def parse_argument(text: str, types: Types) -> Entry:
     """`topic@ROS_TYPE@SIM_TYPE`, with `[` or `]` for one direction."""
     name, _, rest = text.partition("@")
     if rest.count("@") == 1:
@@ -159,5 +189,14 @@ def parse_argument(text: str, sim_type: Callable[[str], str]) -> Entry:
         raise LaunchError(f"bridge argument '{text}': the topic and both types are needed")
     where = f"argument '{text}'"
     if "/srv/" in ros_type:
-        return Entry(name, name, ros_type, sim_type(f"{sim}|"), service=True, where=where)
-    return Entry(name, name, ros_type, sim_type(sim), direction, where=where)
+        return Entry(name, name, ros_type, _checked(types.sim, f"{sim}|", where), service=True,
+                     where=where)
+    return Entry(name, name, _checked(types.ros, ros_type, where),
+                 _checked(types.sim, sim, where), direction, where=where)
+
+
+def _checked(check: Callable[[str], str], name: str, where: str) -> str:
+    try:
+        return check(name)
+    except LaunchError as exc:
+        raise LaunchError(f"{where}: {exc.message}") from None

@@ -211,6 +211,14 @@ def conversions() -> dict[tuple[str, str], Conversion]:
     }
 
 
+def known_ros_type(name: str) -> str:
+    """A ROS message type the bus knows, by its full name; an unknown one is an error with
+    "did you mean"."""
+    from launcher.bus.types import normalize
+
+    return registry().ensure(normalize(name))
+
+
 def find(ros_type: str, sim: str) -> Conversion:
     """The conversion for a pair; an unknown ROS type or an unsupported pair is an error."""
     from launcher.bus.types import normalize

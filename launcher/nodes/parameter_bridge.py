@@ -113,11 +113,14 @@ class Bridge:
 
 def setup(node: Node) -> Bridge:
     bridge = Bridge(node)
-    entries = [bridge_config.parse_argument(arg, conversions.sim_type) for arg in node.args]
+    types = bridge_config.Types(conversions.sim_type, conversions.known_ros_type)
+    entries = [bridge_config.parse_argument(arg, types) for arg in node.args]
+    total = len(entries)
     config = node.parameters.get("config_file")
     if config:
-        entries += bridge_config.load_file(str(config), node.parameters, conversions.sim_type,
-                                           node.get_logger().error)
+        loaded, given = bridge_config.load_file(str(config), node.parameters, types,
+                                                node.get_logger().error)
+        entries, total = entries + loaded, total + given
     if not entries and not config and not node.args:
         raise LaunchError("nothing to bridge: give TOPIC@ROS_TYPE@GZ_TYPE arguments or "
                           "--ros-args -p config_file:=bridge.yaml")
@@ -125,7 +128,7 @@ def setup(node: Node) -> Bridge:
         bridge.add(entry)
     if not bridge.count:  # every entry was refused (each said why, with its place)
         raise LaunchError("nothing to bridge: every entry was left out (see above)")
-    node.get_logger().info(f"bridging {bridge.count} of {len(entries)} entries")
+    node.get_logger().info(f"bridging {bridge.count} of {total} entries")
     return bridge
 
 

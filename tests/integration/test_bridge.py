@@ -187,9 +187,14 @@ def _read_until(proc, needle: str) -> str:
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bool\n  gz_type_name: gz.msgs.Boolean\n"
      "  directon: GZ_TO_ROS\n", "entry 1: unknown key 'directon' (did you mean 'direction'"),
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bol\n  gz_type_name: gz.msgs.Boolean\n",
-     "unknown message type 'std_msgs/msg/Bol'"),
+     "bad.yaml:2:18: entry 1: ros_type_name: unknown message type 'std_msgs/msg/Bol' (did you "
+     "mean 'std_msgs/msg/Bool'"),
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bool\n  gz_type_name: gz.msgs.Bool\n",
-     "unknown sim type 'gz.msgs.Bool'"),
+     "bad.yaml:3:17: entry 1: gz_type_name: unknown sim type 'gz.msgs.Bool' (did you mean "
+     "'gz.msgs.Boolean'"),
+    ("- service_name: /s\n  ros_type_name: std_srvs/srv/Empty\n  gz_req_type_name: gz.msgs.Emty\n"
+     "  gz_rep_type_name: gz.msgs.Empty\n", "bad.yaml:3:21: entry 1: gz_req_type_name: the sim "
+     "has no service taking 'gz.msgs.Emty'"),
     ("- topic_name: /a\n  ros_type_name: std_msgs/msg/Bool\n",
      "entry 1: gz_type_name is required"),
     ("- topic_name: /a\n  ros_topic_name: /b\n  ros_type_name: std_msgs/msg/Bool\n"
@@ -214,6 +219,21 @@ def test_bad_config_entries_are_reported_with_file_line_and_number(bridge_ws, te
         _run_briefly(bridge_ws, ["config_file:=bad.yaml"])
     assert expected in done.stderr, done.stderr
     assert "Traceback" not in done.stderr
+
+
+def test_a_bad_type_skips_its_entry_and_the_rest_is_bridged(bridge_ws):
+    bridge_ws.write("bad.yaml", """- topic_name: /a
+  ros_type_name: std_msgs/msg/Bool
+  gz_type_name: gz.msgs.Boolean
+- topic_name: /b
+  ros_type_name: geometry_msgs/msg/Twst
+  gz_type_name: gz.msgs.Twist
+""")
+    done = _run_briefly(bridge_ws, ["config_file:=bad.yaml"])
+    assert "bad.yaml:5:18: entry 2: ros_type_name: unknown message type " \
+        "'geometry_msgs/msg/Twst' (did you mean 'geometry_msgs/msg/Twist'" in done.stderr, \
+        done.stderr
+    assert "bridging 1 of 2 entries" in done.stdout + done.stderr
 
 
 def _run_briefly(ws, params: list[str]):

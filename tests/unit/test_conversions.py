@@ -124,7 +124,8 @@ def test_unsupported_pairs_and_unknown_types_say_what_is_supported():
      "BIDIRECTIONAL", True),
 ])
 def test_the_command_line_form(text, direction, service):
-    entry = bridge_config.parse_argument(text, conversions.sim_type)
+    entry = bridge_config.parse_argument(
+        text, bridge_config.Types(conversions.sim_type, conversions.known_ros_type))
     assert entry.direction == direction and entry.service == service
 
 
