@@ -90,12 +90,14 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
 def interrupt_behind(exc: BaseException) -> BaseException | None:
     """The KeyboardInterrupt (Ctrl-C, SIGTERM) this exception is, or arose while handling: a
     library's cleanup that fails because a signal cut its `try` short (argparse restores
-    attributes it never saved) is the signal's doing."""
+    attributes it never saved) is the signal's doing. An error raised `from None` in place of
+    one (a launch file's own KeyboardInterrupt, reported as its error) is not."""
     current: BaseException | None = exc
     for _ in range(100):
         if current is None or isinstance(current, KeyboardInterrupt):
             return current
-        current = current.__context__ or current.__cause__
+        current = current.__cause__ or (None if current.__suppress_context__ else
+                                        current.__context__)
     return None
 
 

@@ -2,7 +2,9 @@
 
 The file is the user's own code and runs as such (as `ros2 launch` runs it); substitution
 text in it is still never evaluated as Python. An exception inside the file is reported with
-its traceback trimmed to the frames of the user's file.
+its traceback trimmed to the frames of the user's file; so are sys.exit() and a
+KeyboardInterrupt the file raises itself, which would otherwise end the launcher as if it were
+done or Ctrl-C had been pressed.
 """
 
 from __future__ import annotations
@@ -40,6 +42,12 @@ def load_python(path: Path) -> LaunchDescription:
     except SyntaxError as exc:
         where = Location(str(path), exc.lineno or 0, exc.offset or 0)
         raise ParseError(f"invalid Python: {exc.msg}", where) from None
+    except KeyboardInterrupt as exc:
+        if hasattr(exc, "signum"):  # Ctrl-C or SIGTERM, as launcher's handlers raise them
+            raise
+        raise _user_error(exc, path, "the launch file raised KeyboardInterrupt itself (no "
+                                     "Ctrl-C was pressed); a launch file returns a "
+                                     "LaunchDescription instead") from None
     except SystemExit as exc:  # sys.exit() in a launch file: an error, not the launcher's end
         raise _user_error(exc, path, f"the launch file called sys.exit({exc.code!r}); a launch "
                                      f"file returns a LaunchDescription instead") from None

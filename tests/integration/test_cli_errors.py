@@ -86,6 +86,15 @@ CASES = {
                       "bad.launch.py:3: the LaunchDescription holds 42 (int) as entry 1"),
     "sys-exit-py": ("import sys\n\ndef generate_launch_description():\n    sys.exit(3)\n",
                     "bad.launch.py:4: the launch file called sys.exit(3)"),
+    "module-exit-py": ("import sys\nsys.exit(0)\n", "bad.launch.py:2: the launch file called "
+                                                     "sys.exit(0)"),
+    "keyboard-interrupt-py": ("from launch import LaunchDescription\n\n"
+                              "def generate_launch_description():\n"
+                              "    raise KeyboardInterrupt\n",
+                              "bad.launch.py:4: the launch file raised KeyboardInterrupt itself "
+                              "(no Ctrl-C was pressed)"),
+    "module-interrupt-py": ("x = 1\nraise KeyboardInterrupt('stop')\n",
+                            "bad.launch.py:2: the launch file raised KeyboardInterrupt itself"),
 }
 
 
@@ -104,6 +113,22 @@ def test_bad_launch_file(ws, name):
     assert expected in message, message
     assert "Traceback" not in message
     assert str(path) in message
+
+
+def test_an_included_python_file_raising_keyboard_interrupt_is_its_error(ws):
+    """Loaded while the launch runs (an include), the file's own KeyboardInterrupt is its
+    error at its line: exit 1, what was started is stopped, not a Ctrl-C's 130."""
+    ws.write("inner.launch.py", "import time\nraise KeyboardInterrupt\n")
+    ws.write("outer.launch.yaml", """
+    launch:
+      - executable: {cmd: sleep 30}
+      - include: {file: inner.launch.py}
+    """)
+    result = ws.run("launch", "outer.launch.yaml", timeout=60)
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert f"{ws.root}/inner.launch.py:2: the launch file raised KeyboardInterrupt itself" in \
+        result.stdout + result.stderr
+    assert "Traceback" not in result.stdout + result.stderr
 
 
 def test_error_after_processes_started_stops_them(ws):
