@@ -90,10 +90,10 @@ def unpaced(robots: int, steps: int, demo: bool = False) -> tuple[float, float]:
     for i in range(robots):
         position, quat = pose_from([0.0, i * 1.0, 0.1 if demo else 0.06, 0, 0, 0])
         world.spawn(template, f"r{i}", position, quat)
-    server.run(world.iterations + 500)  # settle
+    server.run(world.physics.iterations + 500)  # settle
     qpos, qvel = world.data.qpos.copy(), world.data.qvel.copy()
     start = time.perf_counter()
-    server.run(world.iterations + steps)
+    server.run(world.physics.iterations + steps)
     served = steps / (time.perf_counter() - start)
     data = mujoco.MjData(world.model)
     data.qpos[:], data.qvel[:] = qpos, qvel

@@ -91,16 +91,16 @@ class SimServer:
         world, pacer, node = self.world, self.pacer, self.node
         self.publish_clock()
         while not self.stopped:
-            if iterations is not None and world.iterations >= iterations:
+            if iterations is not None and world.physics.iterations >= iterations:
                 break
             if self.paused and self.steps_to_go:  # a multi_step, batch by batch
                 self.serve()
                 if self.paused and self.steps_to_go and not self.stopped:
                     batch = min(self.steps_to_go, MAX_BATCH)
                     if iterations is not None:
-                        batch = min(batch, iterations - world.iterations)
-                    batch = world.steps_until_update(batch)
-                    world.step(batch)
+                        batch = min(batch, iterations - world.physics.iterations)
+                    batch = world.physics.steps_until_update(batch)
+                    world.physics.step(batch)
                     self.steps_to_go -= batch
                     self.publish_clock()
                 continue
@@ -123,9 +123,9 @@ class SimServer:
                     continue
             batch = min(due, MAX_BATCH)
             if iterations is not None:
-                batch = min(batch, iterations - world.iterations)
-            batch = world.steps_until_update(batch)
-            world.step(batch)
+                batch = min(batch, iterations - world.physics.iterations)
+            batch = world.physics.steps_until_update(batch)
+            world.physics.step(batch)
             pacer.stepped(batch)
             self.publish_clock()
 
@@ -142,7 +142,7 @@ class SimServer:
         if not wanted:
             return
         payload = clock_cdr(self.world.data.time, time.monotonic() - self._started,
-                            self.paused, self.world.iterations)
+                            self.paused, self.world.physics.iterations)
         for publisher in wanted:
             publisher.publish_raw(payload)
 
@@ -244,12 +244,13 @@ class SimServer:
         if all(q == 0 for q in quat):
             quat = [1.0, 0.0, 0.0, 0.0]
         try:
-            self.world.set_pose(request.name, [pose.position.x, pose.position.y,
-                                               pose.position.z], quat)
+            placement = self.world.placement
+            placement.set_pose(request.name, [pose.position.x, pose.position.y,
+                                              pose.position.z], quat)
             if request.set_twist:
                 linear, angular = request.twist.linear, request.twist.angular
-                self.world.set_twist(request.name, [linear.x, linear.y, linear.z],
-                                     [angular.x, angular.y, angular.z])
+                placement.set_twist(request.name, [linear.x, linear.y, linear.z],
+                                    [angular.x, angular.y, angular.z])
         except LaunchError as exc:
             response.success, response.message = False, str(exc)
             return response
@@ -258,7 +259,7 @@ class SimServer:
 
     def on_state(self, request: Any, response: Any) -> Any:
         world, transport = self.world, self.transport
-        names, positions, quats = world.poses()
+        names, positions, quats = world.placement.poses()
         response.world = world.world_name
         response.name = names
         response.pose = [transport.pose(p[0], p[1], p[2], (q[1], q[2], q[3], q[0]))
@@ -266,7 +267,7 @@ class SimServer:
         response.twist = [transport.message("geometry_msgs/msg/Twist",
                                             linear=transport.vector(*v[:3]),
                                             angular=transport.vector(*v[3:6]))
-                          for v in world.velocities(names)]
+                          for v in world.placement.velocities(names)]
         response.sim_time = float(world.data.time)
         response.time_step = float(world.model.opt.timestep)
         response.paused = self.paused

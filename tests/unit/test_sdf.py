@@ -56,8 +56,8 @@ def make_world(tmp_path: Path, text: str, env: dict | None = None) -> tuple[Worl
 def run(world: World, steps: int) -> None:
     """Step as the server does: batches up to the next plugin update."""
     while steps > 0:
-        batch = world.steps_until_update(steps)
-        world.step(batch)
+        batch = world.physics.steps_until_update(steps)
+        world.physics.step(batch)
         steps -= batch
 
 
@@ -108,7 +108,7 @@ def test_the_diff_drive_world_drives_blue_and_leaves_green(tmp_path):
     recorder.callbacks["/model/vehicle_blue/cmd_vel"](
         SimpleNamespace(linear=SimpleNamespace(x=0.5), angular=SimpleNamespace(z=0.0)))
     run(world, 3000)  # one command, as `gz topic -p` sends: Gazebo's DiffDrive keeps it
-    names, positions, _ = world.poses()
+    names, positions, _ = world.placement.poses()
     blue, green = positions[names.index("vehicle_blue")], positions[names.index("vehicle_green")]
     assert blue[0] > 1.0 and abs(blue[1] - 2.0) < 0.05
     assert abs(green[0]) < 0.01 and abs(green[1] + 2.0) < 0.01
@@ -283,7 +283,7 @@ def test_the_courses_box_model_spawns_from_model_config(tmp_path):
     world.spawn(descriptions.from_string(text), "", [0, 3, 0.5], [1, 0, 0, 0])
     assert list(world.entities) == ["ground_plane", "second_model", "inline"]
     run(world, 500)
-    names, positions, _ = world.poses()
+    names, positions, _ = world.placement.poses()
     assert positions[names.index("second_model")] == pytest.approx([6, 0, 0.5], abs=0.01)
 
 
@@ -304,13 +304,13 @@ def test_world_models_are_listed_moved_removed_and_reset(tmp_path):
         box_model("table", "1 1 0.5 0 0 0", static=True) +
         box_model("cube", "0 0 0.5 0 0 0", link="body")))
     assert list(world.entities) == ["table", "cube"]
-    world.set_pose("table", [5, 5, 0.5], [1, 0, 0, 0])  # a static model moves too
-    world.set_pose("cube", [0, -3, 2], [1, 0, 0, 0])
-    names, positions, _ = world.poses()
+    world.placement.set_pose("table", [5, 5, 0.5], [1, 0, 0, 0])  # a static model moves too
+    world.placement.set_pose("cube", [0, -3, 2], [1, 0, 0, 0])
+    names, positions, _ = world.placement.poses()
     assert positions[0] == pytest.approx([5, 5, 0.5])
     assert positions[1] == pytest.approx([0, -3, 2])
     world.reset()
-    _, positions, _ = world.poses()
+    _, positions, _ = world.placement.poses()
     assert positions[0] == pytest.approx([1, 1, 0.5]) and positions[1] == pytest.approx([0, 0, 0.5])
     world.remove("table")
     assert list(world.entities) == ["cube"]
@@ -320,8 +320,8 @@ def test_world_models_are_listed_moved_removed_and_reset(tmp_path):
 def test_a_models_pose_is_its_frame_not_its_link(tmp_path):
     world, _ = make_world(tmp_path, world_text("""<model name="car"><pose>1 2 0 0 0 0</pose>
         <link name="chassis"><pose>-0.5 0 0.3 0 0 0</pose></link></model>"""))
-    assert world.poses()[1][0] == pytest.approx([1, 2, 0])
-    world.set_pose("car", [3, 3, 1], [1, 0, 0, 0])
+    assert world.placement.poses()[1][0] == pytest.approx([1, 2, 0])
+    world.placement.set_pose("car", [3, 3, 1], [1, 0, 0, 0])
     assert world.data.xpos[world.model.body("car/chassis").id] == pytest.approx([2.5, 3, 1.3])
 
 
@@ -334,9 +334,9 @@ def test_mjcf_worlds_top_level_bodies_are_entities(tmp_path):
       </worldbody></mujoco>""", None)
     world = World(mjcf.compile_spec(source), "m.xml", Recorder())
     assert list(world.entities) == ["crate", "shelf"]
-    world.set_pose("shelf", [0, 4, 0.5], [1, 0, 0, 0])
-    world.set_pose("crate", [2, 0, 0.2], [1, 0, 0, 0])
-    assert world.poses()[1] == pytest.approx(np.array([[2, 0, 0.2], [0, 4, 0.5]]))
+    world.placement.set_pose("shelf", [0, 4, 0.5], [1, 0, 0, 0])
+    world.placement.set_pose("crate", [2, 0, 0.2], [1, 0, 0, 0])
+    assert world.placement.poses()[1] == pytest.approx(np.array([[2, 0, 0.2], [0, 4, 0.5]]))
 
 
 # --- plugins -------------------------------------------------------------------------------

@@ -80,7 +80,7 @@ def run_for(world: World, seconds: float, command=None, name="bot") -> None:
         if command is not None and world.data.time >= next_command:
             world.transport.callbacks[f"/model/{name}/cmd_vel"](command)
             next_command += 0.1
-        world.step(world.steps_until_update(100))
+        world.physics.step(world.physics.steps_until_update(100))
 
 
 @pytest.fixture
@@ -264,10 +264,10 @@ def test_a_nan_or_infinite_pose_is_refused(world, pose):
 
 def test_set_pose_moves_an_entity_and_unknown_names_get_a_suggestion(world):
     spawn_bot(world, "bot")
-    world.set_pose("bot", [3.0, -1.0, 0.5], IDENTITY)
+    world.placement.set_pose("bot", [3.0, -1.0, 0.5], IDENTITY)
     assert world.data.xpos[world.entities["bot"].body] == pytest.approx([3.0, -1.0, 0.5])
     with pytest.raises(SpawnError) as error:
-        world.set_pose("bto", [0, 0, 0], IDENTITY)
+        world.placement.set_pose("bto", [0, 0, 0], IDENTITY)
     assert "did you mean 'bot'" in str(error.value)
 
 
@@ -337,7 +337,7 @@ def test_ten_robots_spawned_by_name_are_driven_independently(world):
     while world.data.time < end:
         for i in range(10):
             world.transport.callbacks[f"/model/r{i}/cmd_vel"](twist(0.05 * i, 0.0))
-        world.step(world.steps_until_update(100))
+        world.physics.step(world.physics.steps_until_update(100))
     for i in range(10):
         moved = world.data.xpos[world.entities[f"r{i}"].body][0] - start[f"r{i}"][0]
         assert moved == pytest.approx(0.1 * i, abs=0.04), f"r{i}"  # 0.1 m apart
@@ -373,7 +373,7 @@ def test_a_position_controller_moves_an_arm_joint_and_an_unknown_plugin_is_logge
     errors = world.transport.messages("error")
     assert any("unknown plugin 'no-such-system'" in m for m in errors)
     world.transport.callbacks["/model/arm/joint/shoulder/0/cmd_pos"](SimpleNamespace(data=1.2))
-    world.step(3000)
+    world.physics.step(3000)
     angle = world.data.qpos[world.model.joint("arm/shoulder").qposadr[0]]
     assert angle == pytest.approx(1.2, abs=0.02)
 
@@ -415,7 +415,7 @@ WHEEL = """<robot name="spinner">
 def test_the_mujoco_tag_form_and_a_velocity_controller(world):
     world.spawn(world.templates.from_string(WHEEL), "spinner", [0, 0, 0.5], IDENTITY)
     world.transport.callbacks["/model/spinner/spin_speed"](SimpleNamespace(data=3.0))
-    world.step(2000)
+    world.physics.step(2000)
     speed = world.data.qvel[world.model.joint("spinner/spin").dofadr[0]]
     assert speed == pytest.approx(3.0, rel=0.02)
 
@@ -468,13 +468,14 @@ def test_world_plugins_load_with_their_config_spawn_and_a_raising_one_is_dropped
   <plugin filename="crate_spawner.py" name="Missing"/>""")
     assert "crate" in world.entities
     assert world.data.xpos[world.entities["crate"].body][:2] == pytest.approx([5, 4])
-    world.step(5)
-    world.step(5)
+    world.physics.step(5)
+    world.physics.step(5)
     errors = world.transport.messages("error")
     assert any("has no class 'Missing'" in m for m in errors)
     assert sum("plugin Broken raised in post_step: RuntimeError: wheels fell off" in m
                for m in errors) == 1
-    assert [p.label for p in world.plugins] == ["SpawnCrate"] and world.plugins[0].steps == 2
+    assert [p.label for p in world.plugins.world] == ["SpawnCrate"] and \
+        world.plugins.world[0].steps == 2
 
 
 def test_a_plugin_without_post_step_does_not_cut_the_batches(tmp_path, monkeypatch):
@@ -483,7 +484,7 @@ def test_a_plugin_without_post_step_does_not_cut_the_batches(tmp_path, monkeypat
     world = plugin_world(tmp_path, monkeypatch, """
   <plugin filename="crate_spawner" name="LoadOnly"><model>{crate}</model></plugin>""")
     assert "crate" in world.entities
-    assert world.steps_until_update(100) == 100
+    assert world.physics.steps_until_update(100) == 100
 
 
 def test_resets_all_time_only_and_poses_only(world):
@@ -492,7 +493,7 @@ def test_resets_all_time_only_and_poses_only(world):
     qpos = world.data.qpos.copy()
     assert world.data.xpos[world.entities["bot"].body][0] > 0.2
     world.reset(time=True, poses=False)
-    assert world.data.time == 0.0 and world.iterations == 0
+    assert world.data.time == 0.0 and world.physics.iterations == 0
     assert np.array_equal(world.data.qpos, qpos)
     run_for(world, 0.2)
     time_before = world.data.time
@@ -514,7 +515,7 @@ def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(
     spawn_bot(world, "wild")
     entity = world.entities["wild"]
     world.data.qvel[entity.dof + 6] = 1e30  # the left wheel
-    world.step(1)
+    world.physics.step(1)
     warnings = world.transport.messages("warning")
     assert any("unstable" in m and "entity 'wild'" in m for m in warnings), warnings
     assert any(m.startswith("MuJoCo: Nan, Inf or huge value") for m in warnings)
@@ -524,7 +525,7 @@ def test_a_physics_blow_up_is_reported_with_the_entity_and_the_world_goes_on(
 
 
 def test_the_warning_indices_the_step_loop_reads():
-    from launcher.sim.world import UNSTABLE
+    from launcher.sim.stepping import UNSTABLE
 
     assert [int(kind) for kind in UNSTABLE] == [3, 4, 5]
 
@@ -534,7 +535,7 @@ def test_the_world_state_plugin_and_mjcf_robots(world):
         '<mujoco model="ball"><worldbody><body name="b"><geom size=".1"/></body></worldbody>'
         "</mujoco>"), "ball", [0, 0, 1], IDENTITY)
     assert world.entities["ball"].qpos >= 0  # it got a free joint and falls
-    world.step(200)
+    world.physics.step(200)
     assert world.data.xpos[world.entities["ball"].body][2] < 1.0
 
 

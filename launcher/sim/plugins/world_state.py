@@ -44,7 +44,7 @@ class WorldState(Plugin):
             self.publish_links(model, data)
         if not (want_poses or want_states):
             return
-        names, positions, quats = self.sim.poses()
+        names, positions, quats = self.sim.placement.poses()
         transport = self.sim.transport
         poses = [transport.pose(p[0], p[1], p[2], (q[1], q[2], q[3], q[0]))
                  for p, q in zip(positions, quats, strict=True)]
@@ -58,7 +58,7 @@ class WorldState(Plugin):
         twists = [transport.message("geometry_msgs/msg/Twist",
                                     linear=transport.vector(*velocity[:3]),
                                     angular=transport.vector(*velocity[3:6]))
-                  for velocity in self.sim.velocities(names)]
+                  for velocity in self.sim.placement.velocities(names)]
         self.states.publish(transport.message("mujoco_sim/msg/ModelStates", header=header,
                                               name=names, pose=poses, twist=twists))
 
@@ -68,7 +68,7 @@ class WorldState(Plugin):
         import mujoco
         import numpy as np
 
-        entities = set(self.sim.poses()[0])
+        entities = set(self.sim.placement.poses()[0])
         transport = self.sim.transport
         names, poses, twists = [], [], []
         velocity = np.zeros(6)
