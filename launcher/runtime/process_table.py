@@ -1,0 +1,110 @@
+"""The launch's processes: their labels, spawning them (recorded before a signal can land),
+routing each line they print to the screen, the run's log and the event handlers, and
+telling custody (custody.py) about their groups and what they leave behind."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from launcher.runtime import events
+from launcher.runtime.custody import Custody
+from launcher.runtime.logs import RunLog
+from launcher.runtime.loop import EventLoop
+from launcher.runtime.output import Printer, Record
+from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec
+from launcher.runtime.system import Processes
+
+
+class ProcessTable:
+    def __init__(self, loop: EventLoop, system: Processes, custody: Custody, printer: Printer,
+                 run_log: RunLog | None, log: Callable[[str, str, str], None],
+                 emit: Callable[[events.Event], None], listened: Callable[[], bool],
+                 changed: Callable[[], None], on_graph: Callable[[], None] | None) -> None:
+        """`emit` hands events to the handlers (`listened`: whether any would hear a line);
+        `changed` is called when a process exits or a helper is done; `on_graph` once, when
+        the first process that may join the graph is spawned."""
+        self.loop, self.system, self.custody = loop, system, custody
+        self.printer, self.run_log, self.log = printer, run_log, log
+        self.emit, self.listened, self.changed = emit, listened, changed
+        self.on_graph = on_graph
+        self.processes: list[ManagedProcess] = []
+        self._count = 0
+        self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
+                                   exited=self._on_exited, log=log, group=custody.group)
+
+    def next_label(self, base: str) -> str:
+        """`base-N`, N counting every process of this run (as ROS 2 numbers them)."""
+        self._count += 1
+        return f"{base}-{self._count}"
+
+    def start(self, spec: ProcessSpec) -> ManagedProcess:
+        """Spawn now; OSError (not found, not executable, bad cwd) goes to the caller."""
+        spec.env = self.custody.stamp(spec.env)
+        process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
+        # Ctrl-C in between would leave a running process that the shutdown does not know
+        # (and that respawns for ever): the signal waits until it is recorded
+        with self.loop.shielded():
+            process.spawn()
+            self.processes.append(process)
+        if spec.joins_graph and self.on_graph is not None:
+            hook, self.on_graph = self.on_graph, None
+            hook()  # now: the router starts while this process imports
+        return process
+
+    # --- what the launch asks of them all ---------------------------------------------------
+    def working(self) -> bool:
+        """Whether any process runs that is not a helper whose work is done."""
+        return any(p.alive and not p.helper_done for p in self.processes)
+
+    def alive(self) -> bool:
+        return any(p.alive for p in self.processes)
+
+    def failed(self) -> bool:
+        return any(p.failed for p in self.processes)
+
+    def stop(self) -> None:
+        for process in self.processes:
+            process.stop()
+
+    def escalate(self) -> None:
+        for process in self.processes:
+            process.escalate()
+
+    def look_for_orphans(self) -> None:
+        """Custody notes what the launch's processes left below the launcher."""
+        self.custody.tick({p.pid for p in self.processes if p.leader_running and p.pid})
+
+    # --- hooks of each process ---------------------------------------------------------------
+    def _on_line(self, process: ManagedProcess, record: Record, targets: frozenset[str]) -> None:
+        done = process.spec.helper_done_line
+        if done and not process.helper_done and done in record.text:
+            process.helper_done = True
+            self.loop.call_soon(self.changed)
+        if "screen" in targets:
+            self.printer.emit(record)
+        if self.run_log is not None:
+            if "log" in targets:
+                self.run_log.write(record)
+            if "own_log" in targets:
+                self.run_log.write_own(record)
+        if self.listened():
+            self.emit(events.ProcessIO(process.spec.origin, process.label, record.stream,
+                                       record.text))
+
+    def _on_started(self, process: ManagedProcess) -> None:
+        self.log("INFO", process.label, f"process started with pid [{process.pid}]")
+        self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
+
+    def _on_exited(self, process: ManagedProcess, _respawn_pending: bool) -> None:
+        self.emit(events.ProcessExited(process.spec.origin, process.label, process.pid,
+                                       process.returncode))
+        self.changed()
+
+
+def spec_timeouts(table: ProcessTable) -> tuple[float, float]:
+    """The longest SIGTERM and SIGKILL timeouts the launch's processes have (what their
+    leftovers get)."""
+    specs: list[Any] = [p.spec for p in table.processes]
+    return (max((s.sigterm_timeout for s in specs), default=5.0),
+            max((s.sigkill_timeout for s in specs), default=5.0))
