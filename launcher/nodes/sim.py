@@ -29,11 +29,8 @@ from launcher.sim import viewer
 VERBOSITY = {0: 60, 1: 40, 2: 30, 3: 20, 4: 10}
 
 
-def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
-    ros: list[str] = []
-    if "--ros-args" in argv:
-        cut = argv.index("--ros-args")
-        argv, ros = argv[:cut], argv[cut:]
+def build_parser() -> Parser:
+    """`sim`'s (and `gz sim`'s, `launcher sim`'s) command line."""
     parser = Parser(
         prog="sim", description=__doc__.split("\n")[0],
         epilog="A picture of a running world: launcher sim snapshot -o world.png (see -h there).")
@@ -71,7 +68,8 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
                         help="accepted: rendering is always headless (EGL)")
     parser.add_argument("--render-engine", default=None, metavar="ENGINE",
                         help="accepted and ignored: MuJoCo renders the pictures")
-    parser.add_argument("--iterations", type=int, default=None, metavar="N")
+    parser.add_argument("--iterations", type=int, default=None, metavar="N",
+                        help="stop after N steps")
     pace = parser.add_mutually_exclusive_group()
     pace.add_argument("-z", "--rate", type=float, default=None, metavar="RATE",
                       help="steps per second of wall time (0: unpaced)")
@@ -81,6 +79,15 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
                         help="a value for a .j2 world template (repeatable)")
     parser.add_argument("--state-rate", type=float, default=50.0, metavar="HZ",
                         help="rate of pose/info and model_states in sim time")
+    return parser
+
+
+def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
+    ros: list[str] = []
+    if "--ros-args" in argv:
+        cut = argv.index("--ros-args")
+        argv, ros = argv[:cut], argv[cut:]
+    parser = build_parser()
     # --gui=PORT; a bare --gui takes no value (it would take the world's name)
     argv = [w for a in argv for w in (["--gui", "--gui-port", a[6:]]
                                       if a.startswith("--gui=") else [a])]

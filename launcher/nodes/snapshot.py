@@ -21,21 +21,27 @@ SERVICE_TYPE = "mujoco_sim/srv/Snapshot"
 MAX_SIDE = 4096  # as the sim allows
 
 
-def parse(argv: list[str]) -> argparse.Namespace:
+def build_parser() -> Parser:
+    """`launcher sim snapshot`'s command line."""
     parser = Parser(
         prog="launcher sim snapshot",
         description="Render the running world offscreen to a PNG file.")
-    parser.add_argument("-o", "--output", required=True, metavar="FILE.png")
+    parser.add_argument("-o", "--output", required=True, metavar="FILE.png",
+                        help="the picture to write")
     parser.add_argument("--world", default="", help="the world's name (default: the one sim)")
-    parser.add_argument("--width", type=int, default=640)
-    parser.add_argument("--height", type=int, default=480)
+    parser.add_argument("--width", type=int, default=640, help="pixels (default 640)")
+    parser.add_argument("--height", type=int, default=480, help="pixels (default 480)")
     view = parser.add_mutually_exclusive_group()
     view.add_argument("--camera", default="", help="a camera of the world, by name")
     view.add_argument("--track", default="", metavar="ENTITY",
                       help="centre a free view on this entity (default: frame them all)")
     parser.add_argument("--timeout", type=float, default=10.0, metavar="SECONDS",
                         help="how long to wait for the sim (default 10)")
-    return parser.parse_args(argv)
+    return parser
+
+
+def parse(argv: list[str]) -> argparse.Namespace:
+    return build_parser().parse_args(argv)
 
 
 def take(argv: list[str]) -> int:

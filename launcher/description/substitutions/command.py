@@ -27,6 +27,10 @@ _MODES = ("fail", "warn", "ignore", "capture")
 @substitution("command")
 @dataclass(frozen=True)
 class Command(Substitution):
+    """The standard output of a command, exactly (its trailing newline too); a non-zero exit
+    fails with its stderr. ON_STDERR (fail, warn, ignore, capture) says what output on stderr
+    does when it succeeds."""
+
     command: Text_
     on_stderr: Text_ | None = None
 

@@ -33,6 +33,8 @@ def _text(value: bool) -> str:
 @substitution("not")
 @dataclass(frozen=True)
 class NotSubstitution(Substitution):
+    """`true` when VALUE is false, else `false`."""
+
     value: Text_
 
     def perform(self, context: LaunchContext) -> str:
@@ -42,6 +44,8 @@ class NotSubstitution(Substitution):
 @substitution("and")
 @dataclass(frozen=True)
 class AndSubstitution(Substitution):
+    """`true` when both are true."""
+
     left: Text_
     right: Text_
 
@@ -52,6 +56,8 @@ class AndSubstitution(Substitution):
 @substitution("or")
 @dataclass(frozen=True)
 class OrSubstitution(Substitution):
+    """`true` when either is true."""
+
     left: Text_
     right: Text_
 
@@ -74,6 +80,8 @@ class _Variadic(Substitution):
 @substitution("any")
 @dataclass(frozen=True)
 class AnySubstitution(_Variadic):
+    """`true` when any of the values is true (as many as given)."""
+
     def perform(self, context: LaunchContext) -> str:
         return _text(any(_bool(self, context, v) for v in self.values))
 
@@ -81,6 +89,8 @@ class AnySubstitution(_Variadic):
 @substitution("all")
 @dataclass(frozen=True)
 class AllSubstitution(_Variadic):
+    """`true` when every value is true (as many as given)."""
+
     def perform(self, context: LaunchContext) -> str:
         return _text(all(_bool(self, context, v) for v in self.values))
 
@@ -105,6 +115,9 @@ def texts_equal(left: str, right: str) -> bool:
 @substitution("equals")
 @dataclass(frozen=True)
 class EqualsSubstitution(Substitution):
+    """`true` when the two are equal: as booleans when both are, as numbers when both are,
+    else as text."""
+
     left: Text_
     right: Text_
 
@@ -116,6 +129,8 @@ class EqualsSubstitution(Substitution):
 @substitution("not-equals")
 @dataclass(frozen=True)
 class NotEqualsSubstitution(Substitution):
+    """The opposite of `equals`."""
+
     left: Text_
     right: Text_
 

@@ -15,13 +15,19 @@ from launcher.nodes.create import SimNotFound, find_world
 STATE_TYPE = f"{SIM}/srv/State"
 
 
-def model(argv: list[str]) -> int:
+def build_parser() -> Parser:
+    """`gz model`'s command line."""
     parser = Parser(prog="gz model", description="Models of launcher's running world.",
                      allow_abbrev=False)
     parser.add_argument("--list", action="store_true", help="list the models")
-    parser.add_argument("-m", "--model", metavar="NAME")
+    parser.add_argument("-m", "--model", metavar="NAME", help="the model to show")
     parser.add_argument("-p", "--pose", action="store_true", help="the model's pose")
     parser.add_argument("--timeout", type=float, default=5.0, help="seconds to wait for a sim")
+    return parser
+
+
+def model(argv: list[str]) -> int:
+    parser = build_parser()
     args = parser.parse_args(argv)
     if not args.list and not args.model:
         parser.error("give --list or -m NAME")

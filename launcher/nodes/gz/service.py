@@ -15,16 +15,23 @@ from launcher.nodes.conversions import _short, sim_type
 from launcher.nodes.gz.common import print_names
 
 
-def service(argv: list[str]) -> int:
+def build_parser() -> Parser:
+    """`gz service`'s command line."""
     parser = Parser(prog="gz service", description="Gazebo's services of launcher's sim.",
                      allow_abbrev=False)
     parser.add_argument("-l", "--list", action="store_true", help="list the sim's services")
     parser.add_argument("-i", "--info", action="store_true", help="the service's types")
-    parser.add_argument("-s", "--service", metavar="SERVICE")
+    parser.add_argument("-s", "--service", metavar="SERVICE", help="the service (-i, --req)")
     parser.add_argument("--reqtype", metavar="TYPE", help="e.g. gz.msgs.WorldControl")
     parser.add_argument("--reptype", metavar="TYPE", help="e.g. gz.msgs.Boolean")
-    parser.add_argument("--timeout", type=float, default=1000.0, metavar="MS")
+    parser.add_argument("--timeout", type=float, default=1000.0, metavar="MS",
+                        help="how long to wait for the answer, in milliseconds")
     parser.add_argument("--req", metavar="TEXT", help="the request, in text format")
+    return parser
+
+
+def service(argv: list[str]) -> int:
+    parser = build_parser()
     args = parser.parse_args(argv)
     if args.list:
         return _service_list()

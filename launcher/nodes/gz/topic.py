@@ -21,7 +21,8 @@ from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.gz.common import gz_name, message_type, print_names
 
 
-def topic(argv: list[str]) -> int:
+def build_parser() -> Parser:
+    """`gz topic`'s command line."""
     parser = Parser(prog="gz topic", description="Gazebo's topics of launcher's sim.",
                      allow_abbrev=False)
     mode = parser.add_mutually_exclusive_group()
@@ -29,11 +30,16 @@ def topic(argv: list[str]) -> int:
     mode.add_argument("-i", "--info", action="store_true", help="publishers and subscribers")
     mode.add_argument("-e", "--echo", action="store_true", help="print the messages")
     mode.add_argument("-p", "--pub", metavar="TEXT", help="publish one message (with -m)")
-    parser.add_argument("-t", "--topic", metavar="TOPIC")
+    parser.add_argument("-t", "--topic", metavar="TOPIC", help="the topic (-i, -e, -p)")
     parser.add_argument("-m", "--msgtype", metavar="TYPE", help="e.g. gz.msgs.Twist")
     parser.add_argument("-n", "--num", type=int, default=None, help="-e: stop after N")
     parser.add_argument("-d", "--duration", type=float, default=None, help="-e: stop after S s")
     parser.add_argument("--json-output", action="store_true", help="-e: print JSON")
+    return parser
+
+
+def topic(argv: list[str]) -> int:
+    parser = build_parser()
     args = parser.parse_args(argv)
     if not (args.list or args.info or args.echo or args.pub is not None):
         parser.error("give one of -l, -i, -e or -p")

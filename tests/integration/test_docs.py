@@ -1,0 +1,103 @@
+"""The docs site builds strictly (a broken link or anchor fails), its reference pages are
+generated from the code and hold every command, tag and type, and the README stays a front
+door whose links lead somewhere."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from launcher.cli.main import COMMANDS
+from launcher.description.registry import Registry
+from launcher.nodes.conversions import conversions
+from tests.conftest import REPO
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("site")
+    env = {**os.environ, "NO_MKDOCS_2_WARNING": "1", "DISABLE_MKDOCS_2_WARNING": "true"}
+    done = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "-d", str(out)],
+                          cwd=REPO, env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "WARNING" not in done.stderr, done.stderr
+    return out
+
+
+def text(page: Path) -> str:
+    """A built page's text, tags dropped."""
+    return re.sub(r"<[^>]+>", "", page.read_text())
+
+
+def test_the_cli_reference_has_every_command_and_option(site):
+    page = text(site / "reference" / "cli" / "index.html")
+    for command in COMMANDS:
+        assert f"launcher {command}" in page, command
+    for words in ("launcher topic echo", "--qos-reliability", "launcher sim snapshot",
+                  "--gui-rate", "launcher gz topic", "--json-output", "launcher rosparam dump"):
+        assert words in page, words
+
+
+def test_the_launch_file_reference_has_every_tag_substitution_and_field_doc(site):
+    page = text(site / "reference" / "launch-files" / "index.html")
+    registry = Registry()
+    registry.load_all()
+    for tag in registry.actions:
+        assert tag in page, tag
+    for name in registry.substitutions:
+        assert f"$({name}" in page, name
+    assert "Seconds after SIGINT before SIGTERM." in page  # executable.sigterm_timeout's doc
+
+
+def test_every_substitution_says_what_it_gives():
+    registry = Registry()
+    registry.load_all()
+    undocumented = sorted(n for n, cls in registry.substitutions.items() if not cls.__doc__)
+    assert not undocumented
+
+
+def test_the_type_tables_come_from_the_bridges_own(site):
+    page = text(site / "reference" / "types" / "index.html")
+    for ros, _ in conversions():
+        assert ros in page, ros
+    assert "gz.msgs.Pose_V" in page and "ros_gz_interfaces/srv/ControlWorld" in page
+
+
+def test_the_performance_page_shows_a_recorded_run_as_run_all_printed_it(tmp_path):
+    sys.path.insert(0, str(REPO / "docs" / "_gen"))
+    try:
+        import performance
+    finally:
+        sys.path.remove(str(REPO / "docs" / "_gen"))
+    figures = tmp_path / "figures.json"
+    figures.write_text(json.dumps({"date": "2026-11-26", "machine": "2 cores", "commit": "abc",
+                                   "rows": [["sim.py", "RTF | paced", "1.00 ± 0.01", "1.000"]]}))
+    section = performance.section(figures)
+    assert "2 cores, 2026-11-26 (commit `abc`)" in section
+    assert "| `sim.py` | RTF \\| paced | 1.00 ± 0.01 | 1.000 |" in section
+    assert "No recorded run yet" in performance.section(tmp_path / "none.json")
+
+
+def test_every_launcher_variable_the_code_reads_is_documented():
+    page = (REPO / "docs" / "reference" / "environment.md").read_text()
+    found = set()
+    for path in (REPO / "launcher").rglob("*.py"):
+        found |= set(re.findall(r"\bLAUNCHER_[A-Z][A-Z_]*[A-Z]\b", path.read_text()))
+    missing = sorted(name for name in found if name not in page)
+    assert not missing, f"not in docs/reference/environment.md: {missing}"
+
+
+def test_the_readme_is_a_front_door_whose_links_lead_somewhere():
+    readme = (REPO / "README.md").read_text()
+    assert len(readme.splitlines()) <= 250
+    links = re.findall(r"\]\(([^)#]+)(?:#[^)]*)?\)", readme)
+    local = [link for link in links if "://" not in link]
+    assert local and all((REPO / link).exists() for link in local), \
+        [link for link in local if not (REPO / link).exists()]
+    assert "sh hooks/bootstrap.sh demo" in readme and "sh hooks/bootstrap.sh test" in readme
