@@ -169,7 +169,7 @@ def test_a_bridge_entry_of_no_known_type_is_a_located_error(ws):
     result = ws.run("launch", "bridge.launch.yaml", timeout=60)
     assert result.returncode == 1
     text = result.stdout + result.stderr
-    assert "bridge.yaml:1: entry 1: unknown message type 'std_msgs/msg/Strin' (did you mean " \
-           "'std_msgs/msg/String'" in text, text
+    assert "bridge.yaml:3:18: entry 1: ros_type_name: unknown message type " \
+           "'std_msgs/msg/Strin' (did you mean 'std_msgs/msg/String'" in text, text
     assert "nothing to bridge: every entry was left out" in text
     assert "Traceback" not in text
