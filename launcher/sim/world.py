@@ -148,20 +148,7 @@ class World:
             if warning not in self._warned:
                 self._warned.add(warning)
                 self.transport.logger.warning(warning)
-        child = template.spec.copy()
-        roots = list(child.worldbody.bodies)
-        if not roots:
-            raise SpawnError(f"{template.label}: the description has no body")
-        for body in roots if not template.static else ():
-            if not list(body.joints):
-                body.add_freejoint()
-        for link, mu in template.friction.items():
-            body = child.body(link)
-            if body is not None:
-                for geom in body.geoms:  # contacts take the larger friction unless the
-                    geom.friction[0] = mu  # geom has priority over what it touches
-                    geom.priority = max(geom.priority, 1)
-        _check_joints(child, joints or {}, template.label)
+        child, roots = _child_of(template, joints or {})
         root = template.root or roots[0].name
         entity = Entity(name, [], f"{name}/{root}", template.label, offset=template.offset,
                         roots=[f"{name}/{body.name}" for body in roots])
@@ -171,20 +158,11 @@ class World:
                 plugin.prepare(child)
             except LaunchError as exc:
                 raise SpawnError(str(exc)) from None
-        frame = self.spec.worldbody.add_frame(pos=list(position), quat=list(quat))
-        try:
-            self.spec.attach(child, frame=frame, prefix=f"{name}/")
-            self.spec.dedup_assets()  # ten copies of a robot share its meshes
-            model, data = self.spec.recompile(self.model, self.data)
-        except Exception as exc:
-            self.spec.delete(frame)
-            raise SpawnError(f"{template.label}: MuJoCo could not add '{name}': "
-                             f"{' '.join(str(exc).split())}") from None
-        entity.anchors = [frame]
+        entity.anchors = [self._attach(child, name, position, quat, template.label)]
         entity.plugins = plugins
         self.entities[name] = entity
         self.plugins.changed()
-        self._rebind(model, data)
+        self._rebind(self.model, self.data)
         if joints:
             for joint, value in joints.items():
                 index = self.model.joint(f"{name}/{joint}").id
@@ -192,6 +170,21 @@ class World:
             mujoco.mj_forward(self.model, self.data)
         self.plugins.load(entity.plugins)
         return entity
+
+    def _attach(self, child: mujoco.MjSpec, name: str, position: Sequence[float],
+                quat: Sequence[float], label: str) -> Any:
+        """Attach `child` at a frame of its own, prefixed `<name>/`, and recompile keeping the
+        state; on failure the world is as it was. The frame (what removing it deletes)."""
+        frame = self.spec.worldbody.add_frame(pos=list(position), quat=list(quat))
+        try:
+            self.spec.attach(child, frame=frame, prefix=f"{name}/")
+            self.spec.dedup_assets()  # ten copies of a robot share its meshes
+            self.model, self.data = self.spec.recompile(self.model, self.data)
+        except Exception as exc:
+            self.spec.delete(frame)
+            raise SpawnError(f"{label}: MuJoCo could not add '{name}': "
+                             f"{' '.join(str(exc).split())}") from None
+        return frame
 
     def spawn_file(self, uri: str, name: str, pose: Sequence[float] = (0, 0, 0, 0, 0, 0),
                    allow_renaming: bool = False) -> Entity:
@@ -253,6 +246,26 @@ class World:
             self.physics.iterations = 0
         mujoco.mj_forward(self.model, self.data)
         self.plugins.reset()
+
+
+def _child_of(template: Template, joints: Mapping[str, float]) -> tuple[mujoco.MjSpec, list]:
+    """A copy of the template's spec to attach, and its root bodies: free joints at the roots
+    (unless static), the links' friction, the joints to place checked."""
+    child = template.spec.copy()
+    roots = list(child.worldbody.bodies)
+    if not roots:
+        raise SpawnError(f"{template.label}: the description has no body")
+    for body in roots if not template.static else ():
+        if not list(body.joints):
+            body.add_freejoint()
+    for link, mu in template.friction.items():
+        body = child.body(link)
+        if body is not None:
+            for geom in body.geoms:  # contacts take the larger friction unless the
+                geom.friction[0] = mu  # geom has priority over what it touches
+                geom.priority = max(geom.priority, 1)
+    _check_joints(child, joints, template.label)
+    return child, roots
 
 
 def _check_joints(spec: mujoco.MjSpec, joints: Mapping[str, float], label: str) -> None:
