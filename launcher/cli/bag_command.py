@@ -18,7 +18,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser("bag", help="record and play rosbag2 bags (MCAP or SQLite)")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     record = verbs.add_parser("record", help="record topics to a bag")
-    record.add_argument("topics", nargs="*", metavar="TOPIC")
+    record.add_argument("topics", nargs="*", metavar="TOPIC", help="the topics to record (or -a)")
     record.add_argument("--topics", nargs="+", dest="more_topics", default=[], metavar="TOPIC",
                         help="topics to record (as the positional ones)")
     record.add_argument("-a", "--all", action="store_true", help="every topic")
@@ -39,10 +39,10 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                         help="stop recording after this many seconds (ROS 1's rosbag option)")
     record.set_defaults(run=run_record)
     info = verbs.add_parser("info", help="what a bag holds")
-    info.add_argument("path", metavar="DIR")
+    info.add_argument("path", metavar="DIR", help="the bag (a folder)")
     info.set_defaults(run=run_info)
     play = verbs.add_parser("play", help="publish a bag's messages again")
-    play.add_argument("path", metavar="DIR")
+    play.add_argument("path", metavar="DIR", help="the bag (a folder)")
     play.add_argument("--topics", nargs="+", metavar="TOPIC", help="only these topics")
     play.add_argument("-r", "--rate", type=positive_number, default=1.0, metavar="FACTOR",
                       help="how many times faster than recorded (default 1)")
@@ -59,7 +59,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     listing = verbs.add_parser("list", help="the storage formats (or converters, "
                                             "compressors) bags can use")
     listing.add_argument("plugin", nargs="?", default="storage",
-                         choices=("storage", "converter", "compressor"))
+                         choices=("storage", "converter", "compressor"),
+                         help="which kind of plugin to list (default storage)")
     listing.set_defaults(run=run_list)
 
 

@@ -22,10 +22,10 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     show.add_argument("type", help="pkg/msg/Name or pkg/srv/Name")
     show.set_defaults(run=run_show)
     proto = verbs.add_parser("proto", help="a message's fields with their defaults, as YAML")
-    proto.add_argument("type")
+    proto.add_argument("type", help="a message type, e.g. geometry_msgs/msg/Twist")
     proto.set_defaults(run=run_proto)
     package = verbs.add_parser("package", help="the types of one package")
-    package.add_argument("package")
+    package.add_argument("package", help="a package")
     package.set_defaults(run=run_package)
     verbs.add_parser("packages", help="the packages that have types").set_defaults(
         run=run_packages)

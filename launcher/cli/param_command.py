@@ -19,32 +19,32 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                                           "describe, delete, dump, load")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="a node's parameter names")
-    listing.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
+    listing.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
     listing.set_defaults(run=run_list)
     get = verbs.add_parser("get", help="one parameter's value")
-    get.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
-    get.add_argument("name")
+    get.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
+    get.add_argument("name", help="the parameter")
     get.set_defaults(run=run_get)
     put = verbs.add_parser("set", help="set one parameter (the value is read as YAML)")
-    put.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
-    put.add_argument("name")
-    put.add_argument("value")
+    put.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
+    put.add_argument("name", help="the parameter")
+    put.add_argument("value", help="its new value, read as YAML")
     put.set_defaults(run=run_set)
     describe = verbs.add_parser("describe", help="parameters' types, descriptions and "
                                                  "constraints")
-    describe.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
-    describe.add_argument("names", nargs="+", metavar="name")
+    describe.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
+    describe.add_argument("names", nargs="+", metavar="name", help="the parameters")
     describe.set_defaults(run=run_describe)
     delete = verbs.add_parser("delete", help="delete parameters (a node refuses it for one "
                                              "declared with a fixed type)")
-    delete.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
-    delete.add_argument("names", nargs="+", metavar="name")
+    delete.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
+    delete.add_argument("names", nargs="+", metavar="name", help="the parameters")
     delete.set_defaults(run=run_delete)
     dump = verbs.add_parser("dump", help="all of a node's parameters, as a params file")
-    dump.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
+    dump.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
     dump.set_defaults(run=run_dump)
     load = verbs.add_parser("load", help="set a node's parameters from a params file")
-    load.add_argument("node").completer = completion.nodes  # type: ignore[attr-defined]
+    load.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
     load.add_argument("file", help="a params YAML file (its /NODE or /** section)")
     load.set_defaults(run=run_load)
     for sub in (listing, get, put, describe, delete, dump, load):

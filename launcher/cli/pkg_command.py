@@ -20,14 +20,14 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                            ("share", "the share folder of a package (the package itself)"),
                            ("xml", "the package.xml of a package")):
         sub = verbs.add_parser(verb, help=helptext)
-        sub.add_argument("package", metavar="PKG").completer = \
+        sub.add_argument("package", metavar="PKG", help="a package").completer = \
             completion.packages  # type: ignore[attr-defined]
         sub.set_defaults(run=run_lookup, verb=verb)
     exe = verbs.add_parser("executables", help="the executables of one or every package")
-    exe.add_argument("package", metavar="PKG", nargs="?")
+    exe.add_argument("package", metavar="PKG", nargs="?", help="a package (default: all)")
     exe.set_defaults(run=run_executables)
     create = verbs.add_parser("create", help="write a new package from templates")
-    create.add_argument("name", metavar="NAME")
+    create.add_argument("name", metavar="NAME", help="the new package's name")
     create.add_argument("--dependencies", nargs="*", default=[], metavar="PKG",
                         help="packages it depends on (package.xml <depend>)")
     create.add_argument("--destination-directory", default=".", metavar="DIR",

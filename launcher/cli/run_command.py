@@ -29,8 +29,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     p.add_argument("--prefix", metavar="PREFIX",
                    help="run it under PREFIX (e.g. 'gdb -ex run --args')")
     p.add_argument("--debug", action="store_true", help="tracebacks with errors")
-    p.add_argument("package").completer = completion.packages  # type: ignore[attr-defined]
-    p.add_argument("executable").completer = completion.executables  # type: ignore
+    p.add_argument("package", help="the package").completer = completion.packages  # type: ignore[attr-defined]
+    p.add_argument("executable", help="its executable").completer = completion.executables  # type: ignore
     p.add_argument("arguments", nargs=argparse.REMAINDER, help="the executable's own")
 
 

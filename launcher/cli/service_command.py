@@ -25,8 +25,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                          help="each service's type too")
     listing.set_defaults(run=run_list)
     call = verbs.add_parser("call", help="call a service once")
-    call.add_argument("name").completer = completion.services  # type: ignore[attr-defined]
-    call.add_argument("type")
+    call.add_argument("name", help="the service").completer = completion.services  # type: ignore[attr-defined]
+    call.add_argument("type", help="its type, e.g. std_srvs/srv/Trigger")
     call.add_argument("values", nargs="?", default="{}", help="the request as YAML")
     call.add_argument("--timeout", type=float, default=5.0,
                       help="seconds to wait for the answer")
@@ -34,13 +34,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                       help="call again and again at this rate (calls per second) until Ctrl-C")
     call.set_defaults(run=run_call)
     kind = verbs.add_parser("type", help="the type of a service")
-    kind.add_argument("name").completer = completion.services  # type: ignore[attr-defined]
+    kind.add_argument("name", help="the service").completer = completion.services  # type: ignore[attr-defined]
     kind.set_defaults(run=run_type)
     find = verbs.add_parser("find", help="the services of a type")
     find.add_argument("type", help="a service type (std_srvs/srv/Trigger)")
     find.set_defaults(run=run_find)
     info = verbs.add_parser("info", help="a service's type, and how many serve and call it")
-    info.add_argument("name").completer = completion.services  # type: ignore[attr-defined]
+    info.add_argument("name", help="the service").completer = completion.services  # type: ignore[attr-defined]
     info.set_defaults(run=run_info)
     for verb in (listing, call, kind, find, info):
         verb.add_argument("--sim", action="store_true",
@@ -134,7 +134,7 @@ def add_node_parser(commands: argparse._SubParsersAction) -> None:
                          help="hidden nodes too (names that begin with '_')")
     listing.set_defaults(run=run_nodes)
     info = verbs.add_parser("info", help="a node's publishers, subscriptions, services")
-    info.add_argument("name").completer = completion.nodes  # type: ignore[attr-defined]
+    info.add_argument("name", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
     info.set_defaults(run=run_node_info)
 
 

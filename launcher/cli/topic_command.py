@@ -43,13 +43,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                          help="how many topics there are")
     listing.set_defaults(run=run_list)
     kind = verbs.add_parser("type", help="the type of a topic")
-    kind.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
+    kind.add_argument("topic", help="the topic").completer = completion.topics  # type: ignore[attr-defined]
     kind.set_defaults(run=run_type)
     find = verbs.add_parser("find", help="the topics of a type")
     find.add_argument("type", help="a message type (std_msgs/msg/String)")
     find.set_defaults(run=run_find)
     echo = verbs.add_parser("echo", help="print the messages on a topic")
-    echo.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
+    echo.add_argument("topic", help="the topic").completer = completion.topics  # type: ignore[attr-defined]
     echo.add_argument("type", nargs="?", help="the message type (default: as published)")
     echo.add_argument("--once", action="store_true", help="print one message and exit")
     echo.add_argument("--field", help="print only this field (a.b.c)")
@@ -75,8 +75,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     qos_options.add(echo, default="best_available")
     echo.set_defaults(run=run_echo)
     pub = verbs.add_parser("pub", help="publish a message")
-    pub.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
-    pub.add_argument("type")
+    pub.add_argument("topic", help="the topic").completer = completion.topics  # type: ignore[attr-defined]
+    pub.add_argument("type", help="its type, e.g. geometry_msgs/msg/Twist")
     pub.add_argument("values", nargs="?", default="{}", help="the message as YAML")
     pub.add_argument("-r", "--rate", type=positive_number, default=1.0,
                      help="messages per second (> 0)")
@@ -96,7 +96,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                      help="keep the publisher this long after the last message")
     pub.set_defaults(run=run_pub)
     hz = verbs.add_parser("hz", help="the rate of one or more topics, printed every second")
-    hz.add_argument("topics", nargs="+", metavar="topic").completer = \
+    hz.add_argument("topics", nargs="+", metavar="topic", help="the topics").completer = \
         completion.topics  # type: ignore[attr-defined]
     hz.add_argument("-w", "--window", type=positive_count, default=10000, metavar="N",
                     help="how many of the latest messages the rate is taken over (messages, "
@@ -105,21 +105,21 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                     help="accepted: the rate is always taken on the wall clock")
     hz.set_defaults(run=run_hz)
     bw = verbs.add_parser("bw", help="the bandwidth a topic uses, printed every second")
-    bw.add_argument("topics", nargs="+", metavar="topic").completer = \
+    bw.add_argument("topics", nargs="+", metavar="topic", help="the topics").completer = \
         completion.topics  # type: ignore[attr-defined]
     bw.add_argument("-w", "--window", type=positive_count, default=100, metavar="N",
                     help="how many of the latest messages it is taken over (default 100)")
     bw.set_defaults(run=run_bw)
     delay = verbs.add_parser("delay", help="how old a topic's messages are when they arrive "
                                            "(now - header.stamp), printed every second")
-    delay.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
+    delay.add_argument("topic", help="the topic (with a header)").completer = completion.topics  # type: ignore[attr-defined]
     delay.add_argument("-w", "--window", type=positive_count, default=10000, metavar="N",
                        help="how many of the latest messages it is taken over (default 10000)")
     delay.add_argument("--use-sim-time", action="store_true",
                        help="now is the simulation's time (/clock), for stamps in sim time")
     delay.set_defaults(run=run_delay)
     info = verbs.add_parser("info", help="type and endpoints of a topic")
-    info.add_argument("topic").completer = completion.topics  # type: ignore[attr-defined]
+    info.add_argument("topic", help="the topic").completer = completion.topics  # type: ignore[attr-defined]
     info.add_argument("-v", "--verbose", action="store_true",
                       help="each publisher and subscription: node, type, QoS")
     info.set_defaults(run=run_info)

@@ -12,11 +12,12 @@ UNITS = ("SECONDS", "seconds", " s)", " s ", "HZ", "Hz", "FACTOR", "times", "per
 
 
 def options(parser: argparse.ArgumentParser, path: list[str]):
+    """Every option and argument (the docs' CLI reference shows each with its help)."""
     for action in parser._actions:
         if isinstance(action, argparse._SubParsersAction):
             for name, sub in action.choices.items():
                 yield from options(sub, [*path, name])
-        elif action.option_strings and action.dest != "help":
+        elif action.dest != "help" and action.nargs != argparse.REMAINDER:
             yield " ".join(path), action
 
 
@@ -24,7 +25,7 @@ def options(parser: argparse.ArgumentParser, path: list[str]):
 def test_every_option_has_help_and_numbers_their_unit(command):
     parser, commands = build_parser(command)
     for where, action in options(commands.choices[command], [command]):
-        name = "/".join(action.option_strings)
+        name = "/".join(action.option_strings) or action.dest
         assert action.help, f"{where} {name} has no help text"
         if action.type in (float, positive_number):
             said = f"{action.help} {action.metavar or ''}"
