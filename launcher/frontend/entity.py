@@ -44,7 +44,3 @@ class Entity:
     children: list[Entity] = field(default_factory=list)
     # YAML keeps nested entities under attributes; XML keeps them among children.
     nested_in_children: bool = False
-
-    @property
-    def file(self) -> str:
-        return self.location.file

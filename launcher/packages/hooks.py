@@ -33,11 +33,6 @@ class Hook:
     package: Package
     path: Path  # the file as written (maybe a .in template)
 
-    @property
-    def kind(self) -> str:
-        name = self.path.name.removesuffix(".in")
-        return os.path.splitext(name)[1]
-
 
 def package_hooks(package: Package) -> list[Hook]:
     folder = package.path / "hooks"
