@@ -20,7 +20,9 @@ find_python() {
 }
 
 # `launcher sim snapshot` renders offscreen with EGL, which Debian's Mesa packages provide.
-if ! ldconfig -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
+# (ldconfig lives in /sbin, which a user's PATH may not hold.)
+ldconfig=$(command -v ldconfig || echo /sbin/ldconfig)
+if ! "$ldconfig" -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
         say "installing Mesa's EGL (libegl1 libegl-mesa0 libgl1-mesa-dri): pictures of the" \
             "world render offscreen with it"
