@@ -1,5 +1,6 @@
 """Shared fixtures: the suite's own PATH, launch files written inline, the real CLI, and a
-leak check.
+leak check. Tests that need ../shared/external (or the seeds) get it through `shared()`, which
+skips naming what is missing (tests/environment.py).
 
 Every launcher started by a test carries a unique LAUNCHER_TEST_TAG in its environment, which
 its children and grandchildren inherit; after the test, no process may still carry it.
