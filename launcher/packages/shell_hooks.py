@@ -13,7 +13,6 @@ job the hook starts is stopped when the hook is done, and never holds the launch
 
 from __future__ import annotations
 
-import os
 import re
 import subprocess
 from pathlib import Path
@@ -59,7 +58,7 @@ def run_shell_hook(path: Path, script_path: Path, prefix: Path, env: dict[str, s
         trace = (exc.stderr or b"").decode(errors="replace")
         raise ExecutionError(f"hook did not finish within {timeout:g} s and was stopped, with "
                              f"all it started (a hook sets variables; is it waiting for "
-                             f"something?{_set_by(TIMEOUT_VARIABLE)})",
+                             f"something? {TIMEOUT_VARIABLE} sets how long a hook may take)",
                              Location(str(path), last_line(trace, script_path))) from None
     text = stderr.decode(errors="replace")
     if code != 0:
@@ -91,7 +90,8 @@ def hook_location(path: Path, stderr: str) -> Location:
 
 
 def hook_timeout(env: dict[str, str]) -> float:
-    text = env.get(TIMEOUT_VARIABLE) or os.environ.get(TIMEOUT_VARIABLE)
+    """LAUNCHER_HOOK_TIMEOUT of the environment the hooks run in (seconds > 0), or 60."""
+    text = env.get(TIMEOUT_VARIABLE)
     if not text:
         return HOOK_TIMEOUT
     try:
@@ -102,10 +102,6 @@ def hook_timeout(env: dict[str, str]) -> float:
         raise ExecutionError(f"{TIMEOUT_VARIABLE} is '{text}'; expected a number of seconds "
                              "> 0")
     return value
-
-
-def _set_by(variable: str) -> str:
-    return f" {variable} sets how long a hook may take"
 
 
 def last_line(trace: str, script_path: Path) -> int:

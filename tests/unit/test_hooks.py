@@ -149,15 +149,15 @@ export AFTER=1
     ("p.sh", "A=1\nf() {\n  sleep $1\n}\nf 987\n", "p.sh:3: hook did not finish"),
 ], ids=["exit", "last-command", "never-ends", "bash-never-ends", "in-a-function"])
 def test_a_shell_hook_that_fails_or_never_ends_is_located_and_leaves_nothing(
-        tmp_path, monkeypatch, name, text, expected):
+        tmp_path, name, text, expected):
     """The hook's file and the line it was at: the shell's trace says which command ran last
     (bash gives the line; Debian's sh has no $LINENO, so the command is found in the file)."""
     import psutil
 
-    monkeypatch.setenv("LAUNCHER_HOOK_TIMEOUT", "0.5")
     ws = make_tree(tmp_path / "ws", {"p/package.xml": manifest("p"), f"p/hooks/{name}": text})
     with pytest.raises(LaunchError) as info:
-        apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin"})
+        apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin",
+                                                  "LAUNCHER_HOOK_TIMEOUT": "0.5"})
     assert expected in str(info.value)
     assert str(info.value).startswith(str(ws / "p" / "hooks" / name))
     assert "\x1f" not in str(info.value)  # the shell's trace is not shown as the hook's words
@@ -165,8 +165,8 @@ def test_a_shell_hook_that_fails_or_never_ends_is_located_and_leaves_nothing(
     assert not left
 
 
-def test_a_bad_hook_timeout_is_said(tmp_path, monkeypatch):
-    monkeypatch.setenv("LAUNCHER_HOOK_TIMEOUT", "soon")
+def test_a_bad_hook_timeout_is_said(tmp_path):
     ws = make_tree(tmp_path / "ws", {"p/package.xml": manifest("p"), "p/hooks/p.sh": "A=1\n"})
     with pytest.raises(LaunchError, match="LAUNCHER_HOOK_TIMEOUT is 'soon'; expected a number"):
-        apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin"})
+        apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin",
+                                                  "LAUNCHER_HOOK_TIMEOUT": "soon"})
