@@ -5,7 +5,12 @@ variables (GZ_SIM_RESOURCE_PATH; the older IGN_GAZEBO_RESOURCE_PATH; classic Gaz
 GAZEBO_MODEL_PATH and GAZEBO_RESOURCE_PATH, whose worlds are in a `worlds` subfolder), in
 that order. `model://NAME` is the folder NAME in one of them, holding `model.config`, whose
 `<sdf version="…">` (the highest version launcher reads), `<mjcf>` or `<urdf>` element names
-the model file (Gazebo's layout). `package://pkg/…` resolves through the package index.
+the model file (Gazebo's layout); `model://sun` and `model://ground_plane` fall back on
+built-in equivalents. `package://pkg/…` resolves through the package index.
+A Gazebo Fuel URL (`https://fuel.gazebosim.org/1.0/OWNER/models/NAME[/VERSION]`) is looked up
+in the local Fuel cache, as gz-fuel-tools keeps it (GZ_FUEL_CACHE_PATH, else ~/.gz/fuel:
+HOST/OWNER/models/NAME/VERSION/, names in any case, the highest version unless one is given):
+there is no network to fetch it from.
 """
 
 from __future__ import annotations
@@ -21,8 +26,12 @@ RESOURCE_PATH = "MUJOCO_SIM_RESOURCE_PATH"
 RESOURCE_VARIABLES = (RESOURCE_PATH, "GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH",
                       "GAZEBO_MODEL_PATH", "GAZEBO_RESOURCE_PATH")
 BUILTIN_WORLDS = Path(__file__).resolve().parent.parent / "builtin" / "mujoco_sim" / "worlds"
+BUILTIN_MODELS = BUILTIN_WORLDS.parent / "models"  # model://sun, model://ground_plane
 SDF_VERSIONS = ((1, 4), (1, 11))
 WORLD_SUFFIXES = ("", ".sdf", ".world", ".xml", ".xml.j2")
+
+
+FUEL_CACHE_VARIABLES = ("GZ_FUEL_CACHE_PATH", "IGN_FUEL_CACHE_PATH")
 
 
 class ResourceNotFound(LaunchError):
@@ -79,11 +88,14 @@ def builtin_worlds() -> list[str]:
 
 
 def find_model(name: str, environ: Mapping[str, str] | None = None) -> Path:
-    """The folder of `model://NAME`."""
+    """The folder of `model://NAME`: in a resource folder, else one of Gazebo's common models
+    launcher has built in (sun, ground_plane)."""
     entries = resource_entries(environ)
     for folder, _ in entries:
         if (folder / name).is_dir():
             return folder / name
+    if (BUILTIN_MODELS / name).is_dir():
+        return BUILTIN_MODELS / name
     where = ", ".join(f"{f} ({v})" for f, v in entries) or \
         f"nowhere: none of {', '.join(RESOURCE_VARIABLES)} is set"
     known = [p.name for f, _ in entries if f.is_dir() for p in f.iterdir() if p.is_dir()]
@@ -137,9 +149,68 @@ def _sdf_entry(root: ET.Element, config: Path) -> ET.Element | None:
     return None
 
 
+def fuel_caches(environ: Mapping[str, str] | None = None) -> list[tuple[Path, str]]:
+    """The local Fuel caches, each with where it came from."""
+    env = os.environ if environ is None else environ
+    for variable in FUEL_CACHE_VARIABLES:
+        if env.get(variable):
+            return [(Path(env[variable]).expanduser(), variable)]
+    home = Path(env.get("HOME", "~")).expanduser()
+    return [(home / ".gz" / "fuel", "the default"), (home / ".ignition" / "fuel", "the default")]
+
+
+def find_fuel_model(uri: str, environ: Mapping[str, str] | None = None) -> Path:
+    """The cached folder of a Fuel model URL (or the file it names below the model)."""
+    host, _, path = uri.split("://", 1)[1].partition("/")
+    parts = [p for p in path.split("/") if p]
+    if len(parts) < 4 or parts[2].lower() != "models":
+        raise ResourceNotFound(f"'{uri}' is not a Fuel model URL (https://HOST/1.0/OWNER/"
+                               "models/NAME)")
+    owner, name, rest = parts[1], parts[3], parts[4:]
+    version = rest.pop(0) if rest and (rest[0].isdigit() or rest[0] == "tip") else None
+    if rest[:1] == ["files"]:
+        rest = rest[1:]
+    searched = []
+    for cache, origin in fuel_caches(environ):
+        folder = _case_blind(cache, [host, owner, "models", name])
+        searched.append(f"{cache / host / owner.lower() / 'models' / name.lower()} ({origin})")
+        versions = sorted((int(v.name) for v in folder.iterdir() if v.name.isdigit()),
+                          reverse=True) if folder is not None and folder.is_dir() else []
+        chosen = versions[:1] if version in (None, "tip") else \
+            [int(version)] if int(version) in versions else []
+        if chosen:
+            found = folder / str(chosen[0])  # type: ignore[operator]
+            return found.joinpath(*rest) if rest else model_file(found)
+    raise ResourceNotFound(
+        f"'{uri}' is not in the local Fuel cache, and models are not fetched from the network"
+        f"; searched: {', '.join(searched)}. Put the model there (a folder per version, "
+        "holding model.config and the model file), or in a folder on GZ_SIM_RESOURCE_PATH "
+        "and include it as model://NAME")
+
+
+def _case_blind(root: Path, names: list[str]) -> Path | None:
+    """root/names…, each name matched in any case (Fuel keeps them lower-cased)."""
+    folder = root
+    for name in names:
+        if not folder.is_dir():
+            return None
+        exact = folder / name
+        if exact.is_dir():
+            folder = exact
+            continue
+        match = next((p for p in folder.iterdir() if p.name.lower() == name.lower()), None)
+        if match is None:
+            return None
+        folder = match
+    return folder
+
+
 def resolve_uri(uri: str, base: Path | None, packages: object | None = None,
                 environ: Mapping[str, str] | None = None) -> Path:
-    """A file for a mesh or model URI: package://, model://, file://, absolute or relative."""
+    """A file for a mesh or model URI: package://, model://, file://, a Fuel URL, absolute or
+    relative."""
+    if uri.startswith(("http://", "https://")):
+        return find_fuel_model(uri.strip(), environ).resolve()
     if uri.startswith("package://"):
         package, _, rest = uri[len("package://"):].partition("/")
         if packages is None:

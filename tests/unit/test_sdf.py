@@ -599,3 +599,91 @@ def test_a_systems_parameters_are_declared_a_typo_warns_and_a_bad_value_is_an_er
     world, recorder = make_world(tmp_path, world_text(model.replace(
         "<right_joint>r</right_joint>", "<right_joint>l</right_joint>").format(extra="")))
     assert any("joint 'l' is given more than once" in m for m in recorder.messages("error"))
+
+
+# --- custom elements, Gazebo's common models, the Fuel cache ------------------------------
+def test_custom_elements_are_kept_and_ignored_and_an_undeclared_prefix_is_said(tmp_path):
+    """libsdformat's rule: `<prefix:name>` elements are the user's own; Gazebo's worlds use
+    `gz:` undeclared and `<gz::system_priority>` (which a namespace-aware XML parser
+    refuses)."""
+    text = world_text("""
+    <plugin filename="gz-sim-forcetorque-system" name="gz::sim::systems::ForceTorque">
+      <gz::system_priority>10</gz::system_priority>
+    </plugin>
+    <gz:policies><include_gui_default_plugins>true</include_gui_default_plugins></gz:policies>
+    <mine:notes mine:author="me">a:b &lt;c:d&gt;</mine:notes>
+    <theirs:notes/>""" + box_model("box", extra="<my:tag>1</my:tag>")).replace(
+        '<sdf version="1.9">', '<sdf version="1.9" xmlns:mine="http://example.com/mine">')
+    loaded = load(tmp_path, text)
+    assert [m.name for m in loaded.models] == ["box"]
+    warned = "\n".join(loaded.warnings)
+    assert "w.sdf:10: custom element <theirs:notes>: its prefix 'theirs' is not declared" in \
+        warned, warned
+    assert "<my:tag>" in warned and "mine:" not in warned and "gz:" not in warned
+    assert loaded.plugins[0].element.find("gz\u00b7\u00b7system_priority").text == "10"
+
+
+def test_model_sun_and_ground_plane_are_built_in_when_no_copy_is_on_the_path(tmp_path):
+    loaded = load(tmp_path, world_text("""
+    <include><uri>model://ground_plane</uri></include>
+    <include><uri>model://sun</uri><name>noon</name><pose>0 0 20 0 0 0</pose></include>"""))
+    assert [m.name for m in loaded.models] == ["ground_plane"]
+    model = loaded.spec.compile()
+    light = model.light("noon")
+    assert model.light_type[light.id] == mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
+    assert model.light_pos[light.id] == pytest.approx([0, 0, 20])
+
+
+def fuel_cache(root: Path, versions: tuple[int, ...] = (1, 3)) -> Path:
+    """A local Fuel cache as gz-fuel-tools keeps it, one model in some versions."""
+    for version in versions:
+        folder = root / "fuel.gazebosim.org" / "openrobotics" / "models" / "construction cone" \
+            / str(version)
+        folder.mkdir(parents=True)
+        (folder / "model.config").write_text(
+            '<model><name>cone</name><sdf version="1.6">model.sdf</sdf></model>')
+        (folder / "model.sdf").write_text('<sdf version="1.6">' + box_model(
+            f"cone_v{version}") + "</sdf>")
+    return root
+
+
+FUEL = "https://fuel.gazebosim.org/1.0/OpenRobotics/models/Construction Cone"
+
+
+@pytest.mark.parametrize("uri, expected", [(FUEL, "cone_v3"), (f"{FUEL}/1", "cone_v1"),
+                                           (f"{FUEL}/tip", "cone_v3")])
+def test_a_fuel_url_is_found_in_the_local_fuel_cache(tmp_path, uri, expected):
+    cache = fuel_cache(tmp_path / "cache")
+    loaded = load(tmp_path, world_text(f"<include><uri>\n  {uri}\n  </uri></include>"),
+                  env={"GZ_FUEL_CACHE_PATH": str(cache)})
+    model = loaded.spec.compile()
+    assert model.body(f"{expected}/link") is not None  # the cached model, under its own name
+    assert [m.name for m in loaded.models] == [expected]
+
+
+def test_a_fuel_url_not_in_the_cache_is_a_located_error_saying_where_to_put_it(tmp_path):
+    message = error_of(tmp_path, world_text(f"\n<include><uri>{FUEL}/7</uri></include>"),
+                       env={"GZ_FUEL_CACHE_PATH": str(fuel_cache(tmp_path / "cache"))})
+    assert re.search(r"w\.sdf:5:1: <include> 'https://fuel.gazebosim.org/1.0/OpenRobotics/"
+                     r"models/Construction Cone/7' is not in the local Fuel cache, and models "
+                     r"are not fetched from the network; searched: .*/cache/fuel.gazebosim.org/"
+                     r"openrobotics/models/construction cone \(GZ_FUEL_CACHE_PATH\)\. Put the "
+                     r"model there", message), message
+
+
+@pytest.mark.parametrize("name", ["camera_sensor", "gpu_lidar_sensor", "sensors"])
+def test_gz_sims_sensor_worlds_load_unchanged(tmp_path, name):
+    """Their custom elements are kept, and their Fuel models come from the local cache (a
+    stand-in the test puts there: the machine has no network)."""
+    cache = tmp_path / "fuel"
+    for model in ("construction cone", "playground"):
+        folder = cache / "fuel.gazebosim.org" / "openrobotics" / "models" / model / "2"
+        folder.mkdir(parents=True)
+        (folder / "model.config").write_text(
+            '<model><name>m</name><sdf version="1.6">model.sdf</sdf></model>')
+        (folder / "model.sdf").write_text(
+            '<sdf version="1.6">' + box_model(model.replace(" ", "_"), static=True) + "</sdf>")
+    path = shared(*WORLDS, f"{name}.sdf")
+    loaded = load_world_file(path, environ={"GZ_FUEL_CACHE_PATH": str(cache)})
+    assert loaded.spec.compile().nbody > 2
+    assert not [w for w in loaded.warnings if "custom element" in w or "gz:" in w]

@@ -47,10 +47,6 @@ class Context:
             self.warnings.append(text)
 
     def resolve(self, uri: str, element: Element, origin: Origin, what: str) -> Path:
-        if uri.startswith(("http://", "https://")):
-            raise element.error(f"{what} '{uri}': models are not fetched from the network "
-                                "(Gazebo Fuel); download it into a folder on "
-                                "GZ_SIM_RESOURCE_PATH and include it as model://NAME")
         try:
             return resolve_uri(uri, origin.base, self.packages, self.environ)
         except LaunchError as exc:
@@ -67,8 +63,10 @@ class Context:
             if origin.path is not None:
                 self._stack.pop()
 
-    def include(self, element: Element, origin: Origin) -> tuple[Element, Origin]:
-        """The `<model>` an `<include>` names, and where it came from."""
+    def include(self, element: Element, origin: Origin,
+                kinds: tuple[str, ...] = ("model",)) -> tuple[Element, Origin]:
+        """The `<model>` (or another of `kinds`: a world may include a `<light>`) an
+        `<include>` names, and where it came from."""
         uri = element.value("uri")
         if not uri:
             raise element.error("<include> needs a <uri>")
@@ -79,10 +77,11 @@ class Context:
             chain = " -> ".join(str(p) for p in [*self._stack[self._stack.index(path):], path])
             raise element.error(f"<include> of '{uri}' makes a cycle: {chain}")
         root, version = read(read_text(path), str(path))
-        model = root.find("model")
-        if model is None:
-            raise root.error(f"'{uri}' ({path}) holds no <model> to include")
-        return model, Origin(path, version)
+        found = next((root.find(kind) for kind in kinds if root.find(kind) is not None), None)
+        if found is None:
+            raise root.error(f"'{uri}' ({path}) holds no {' or '.join(f'<{k}>' for k in kinds)}"
+                             " to include")
+        return found, Origin(path, version)
 
     def _model_file(self, folder: Path, element: Element) -> Path:
         try:

@@ -2,14 +2,18 @@
 
 An element launcher cannot express is one warning with its file:line, saying what is left out
 and what the world will lack; elements with no effect on a simulation (GUI, rendering
-hints, ODE solver tuning) pass silently. Plugin elements become plugin configs.
+hints, ODE solver tuning) pass silently, and so do custom elements (`<gz:policies>`), kept
+and ignored as libsdformat keeps them (one whose prefix is neither declared nor Gazebo's is
+a warning). Plugin elements become plugin configs.
 """
 
 from __future__ import annotations
 
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.sdf.context import Context
-from launcher.sim.sdf.xmltree import Element
+from launcher.sim.sdf.xmltree import Element, custom
+
+KNOWN_PREFIXES = {"gz", "ignition"}  # Gazebo's own custom elements, used undeclared
 
 READ = {
     "world": {"physics", "gravity", "light", "scene", "model", "include", "plugin", "frame"},
@@ -43,6 +47,14 @@ def check_children(element: Element, context: Context) -> None:
     kind = element.tag
     for child in element.children:
         tag = child.tag
+        found = custom(child)
+        if found is not None:  # SDFormat's custom elements are kept and ignored
+            name, prefix, declared = found
+            if not declared and prefix not in KNOWN_PREFIXES:
+                context.warn(child, f"custom element <{name}>: its prefix '{prefix}' is not "
+                                    f"declared (xmlns:{prefix}=\"…\" on <sdf>); it is kept "
+                                    f"and ignored")
+            continue
         if tag in READ.get(kind, ()) or tag in QUIET.get(kind, ()):
             if tag == "sensor":
                 _sensor(child, context)

@@ -101,13 +101,15 @@ def _scene(spec: Any, world: Element) -> None:
                          width=32, height=32)
 
 
-def add_light(spec: Any, light: Element) -> None:
+def add_light(spec: Any, light: Element, name: str | None = None,
+              pose_element: Element | None = None) -> None:
+    """A `<light>`; an `<include>` of one may give it another name and pose."""
     kind = light.get("type", "point")
-    pose = parse_pose(light.find("pose"))
+    pose = parse_pose(pose_element if pose_element is not None else light.find("pose"))
     direction_element = light.find("direction")
     direction = numbers(direction_element, 3, "a direction 'x y z'") \
         if direction_element is not None and direction_element.stripped else [0.0, 0.0, -1.0]
-    added = spec.worldbody.add_light(name=light.get("name", ""), pos=list(pose.pos),
+    added = spec.worldbody.add_light(name=name or light.get("name", ""), pos=list(pose.pos),
                                      dir=list(rotate(pose.quat, tuple(direction))))
     added.type = LIGHTS.get(kind, mujoco.mjtLightType.mjLIGHT_POINT)
     for tag, attribute in (("diffuse", "diffuse"), ("specular", "specular")):
@@ -134,7 +136,10 @@ def _models(spec: Any, world: Element, origin: Origin, context: Context) -> list
         if child.tag == "model":
             element, where, placement, static = child, origin, parse_pose(child.find("pose")), None
         else:
-            element, where = context.include(child, origin)
+            element, where = context.include(child, origin, ("model", "light"))
+            if element.tag == "light":  # model://sun: a light, placed and named by the include
+                add_light(spec, element, child.value("name"), child.find("pose"))
+                continue
             placement = parse_pose(child.find("pose")) if child.find("pose") is not None \
                 else parse_pose(element.find("pose"))
             static_text = child.value("static")
