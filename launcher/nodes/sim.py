@@ -77,6 +77,9 @@ def build_parser() -> Parser:
                       help="real-time factor (1: real time, 0: unpaced)")
     parser.add_argument("--world-arg", action="append", default=[], metavar="NAME=VALUE",
                         help="a value for a .j2 world template (repeatable)")
+    parser.add_argument("--seed", type=int, default=0, metavar="N",
+                        help="seed of the sensors' noise: the same seed, the same readings "
+                             "(default 0)")
     parser.add_argument("--state-rate", type=float, default=50.0, metavar="HZ",
                         help="rate of pose/info and model_states in sim time")
     return parser
@@ -178,7 +181,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     node = Node("sim", argv=ros, space=keys.SIM)  # off the ROS graph, as gz sim is
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
-        world = World.from_path(path, BusTransport(node), values)
+        world = World.from_path(path, BusTransport(node), values, seed=args.seed)
         timestep = world.model.opt.timestep
         default_rtf = world.real_time_factor if world.real_time_factor is not None else 1.0
         rtf = args.rtf if args.rtf is not None else \

@@ -38,6 +38,7 @@ class LoadedWorld:
     models: list[WorldModel] | None  # None: the spec's top-level bodies
     real_time_factor: float | None = None
     warnings: list[str] = field(default_factory=list)
+    spherical_coordinates: Any = None  # an SDF world's (navsat reads it)
 
 
 def load_world_file(path: Path, values: Mapping[str, str] | None = None,
@@ -54,4 +55,4 @@ def load_world_file(path: Path, values: Mapping[str, str] | None = None,
 def _from_sdf(world: sdf.SdfWorld, path: Path) -> LoadedWorld:
     models = [WorldModel(m.name, m.root, m.roots, m.offset, m.plugins) for m in world.models]
     return LoadedWorld(world.spec, str(path), world.plugins, models, world.real_time_factor,
-                       world.warnings)
+                       world.warnings, world.spherical_coordinates)

@@ -9,6 +9,7 @@ import contextlib
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
+from launcher.errors import LaunchError
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.plugins import (
     Plugin,
@@ -85,8 +86,11 @@ class PluginHost:
     def failed(self, plugin: Plugin, hook: str, exc: BaseException) -> None:
         """A plugin raised: said once, and the sim goes on without it."""
         owner = f" of entity '{plugin.entity.name}'" if plugin.entity is not None else ""
-        self.logger.error(f"plugin {plugin.label}{owner} raised in {hook}: "
-                          f"{type(exc).__name__}: {exc}; the sim goes on without it")
+        if isinstance(exc, LaunchError):  # a located mistake in its configuration
+            self.logger.error(f"{exc}; {plugin.label}{owner} is left out")
+        else:
+            self.logger.error(f"plugin {plugin.label}{owner} raised in {hook}: "
+                              f"{type(exc).__name__}: {exc}; the sim goes on without it")
         for group in (self.world, *self._entity_plugins()):
             if plugin in group:
                 group.remove(plugin)

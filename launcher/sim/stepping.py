@@ -36,6 +36,8 @@ class Physics:
         if not self.plugins.post:
             return max(1, limit)
         due = min(p.next_update for p in self.plugins.post) - self.data.time
+        if due == math.inf:  # (a sensor whose system the world lacks: never)
+            return max(1, limit)
         return max(1, min(limit, math.ceil(due / self.model.opt.timestep - 1e-9)))
 
     def step(self, count: int = 1) -> None:

@@ -33,6 +33,8 @@ from launcher.sim.loading import WorldModel, load_world_file
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.placement import Placement, checked
 from launcher.sim.plugin_host import PluginHost
+from launcher.sim.plugins import systems_of
+from launcher.sim.sensors.geodesy import SphericalCoordinates
 from launcher.sim.stepping import Physics
 from launcher.sim.templates import Template, Templates
 from launcher.sim.transform import Pose, pose_from
@@ -59,27 +61,34 @@ class World:
 
     @classmethod
     def from_path(cls, path: Path, transport: Transport, values: Mapping[str, str] | None = None,
-                  environ: Mapping[str, str] | None = None) -> World:
+                  environ: Mapping[str, str] | None = None, seed: int = 0) -> World:
         """The world of an SDF or MJCF file (a `.j2` rendered with `values`); what the file
         holds that launcher leaves out is logged, once each."""
         loaded = load_world_file(path, values, environ)
         for warning in loaded.warnings:
             transport.logger.warning(warning)
-        world = cls(loaded.spec, loaded.label, transport, loaded.plugins, models=loaded.models)
+        world = cls(loaded.spec, loaded.label, transport, loaded.plugins, models=loaded.models,
+                    seed=seed, spherical_coordinates=loaded.spherical_coordinates)
         world.real_time_factor = loaded.real_time_factor
         return world
 
     def __init__(self, spec: mujoco.MjSpec, label: str, transport: Transport,
                  plugins: Sequence[PluginConfig] = (),
                  templates: Templates | None = None,
-                 models: Sequence[WorldModel] | None = None) -> None:
-        """`models`: the world file's models (SDF); None takes MJCF's top-level bodies."""
+                 models: Sequence[WorldModel] | None = None, seed: int = 0,
+                 spherical_coordinates: Any = None) -> None:
+        """`models`: the world file's models (SDF); None takes MJCF's top-level bodies.
+        `seed` seeds the sensors' noise."""
         self.spec, self.label, self.transport = spec, label, transport
         self.world_name = world_name(spec.modelname)
         if self.world_name not in (spec.modelname, "default"):
             transport.logger.warning(f"world name '{spec.modelname}' is not a valid ROS name "
                                      f"part; its topics use '{self.world_name}'")
         self.templates = templates or Templates()
+        self.seed = seed
+        self.spherical_coordinates = spherical_coordinates or SphericalCoordinates()
+        # the world systems its sensors need (an MJCF world declares none: all of them run)
+        self.systems = None if models is None else systems_of(plugins)
         self.entities: dict[str, Entity] = {}
         self.plugins = PluginHost(self, transport.logger,
                                   lambda: (e.plugins for e in self.entities.values()))

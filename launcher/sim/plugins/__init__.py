@@ -45,7 +45,7 @@ PLUGIN_VARIABLES = (PLUGIN_PATH, "GZ_SIM_SYSTEM_PLUGIN_PATH", "IGN_GAZEBO_SYSTEM
 # Gazebo systems that are the sim itself, or feed sensors launcher reports on its own
 INFRASTRUCTURE = {"physics", "user-commands", "scene-broadcaster", "sensors", "imu",
                   "contact", "altimeter", "air-pressure", "magnetometer", "navsat",
-                  "forcetorque", "logical-camera", "log", "wind-effects"}
+                  "forcetorque", "air-speed", "logical-camera", "log", "wind-effects"}
 _GZ_FILE = re.compile(
     r"^(?:lib)?(?:gz-sim|ignition-gazebo)\d*-(?P<system>.+?)-system(?:\.so)?$")
 _GZ_CLASS = re.compile(r"^(?:gz::sim|ignition::gazebo)::systems::(?P<system>\w+)$")
@@ -193,13 +193,24 @@ def canonical(name: str) -> str:
     return name
 
 
+def systems_of(configs: Any) -> set[str]:
+    """The canonical names of the systems among a world's plugins (what its sensors need)."""
+    return {canonical(name) for config in configs for name in (config.filename, config.name)}
+
+
 def is_infrastructure(config: PluginConfig) -> bool:
     found = _GZ_FILE.match(config.filename)
     return bool(found) and found.group("system") in INFRASTRUCTURE
 
 
 def find_class(config: PluginConfig, environ: dict[str, str] | None = None) -> type[Plugin]:
-    """The plugin class a config names (see the module text)."""
+    """The plugin class a config names (see the module text); a sensor's is its kind's."""
+    kind = getattr(config, "kind", None)
+    if kind is not None:  # a SensorConfig (launcher/sim/sensors)
+        from launcher.sim.sensors import CLASSES
+
+        module_name, _, attribute = CLASSES[kind].partition(":")
+        return getattr(importlib.import_module(module_name), attribute)
     env = os.environ if environ is None else environ
     target = BUILTIN.get(canonical(config.filename)) or \
         CLASSIC.get(re.sub(r"^lib|\.so$", "", config.filename)) or \

@@ -15,6 +15,7 @@ from launcher.sim.sdf.inertial import set_inertial
 from launcher.sim.sdf.parts import UNLIMITED, Joint, Link, Parts
 from launcher.sim.sdf.pose import Pose, number, parse_pose, rotate
 from launcher.sim.sdf.xmltree import Element
+from launcher.sim.sensors.config import sensor_config
 
 
 class Builder:
@@ -22,6 +23,7 @@ class Builder:
                  children: dict[str, list[Joint]]) -> None:
         self.spec, self.context, self.prefix = spec, context, prefix
         self.static, self.parts, self.children = static, parts, children
+        self.sensor_sites: set[str] = set()
 
     def body(self, parent: Any, link: Link, local: Pose, joint: Joint | None) -> None:
         """The body of `link` at `local` in `parent`, its joint, geoms and child links."""
@@ -36,6 +38,7 @@ class Builder:
         if (link.element.value("gravity", "true") or "").lower() in ("false", "0"):
             body.gravcomp = 1.0
         self._geoms(body, link)
+        self._sensors(body, link)
         set_inertial(body, link.element, self.static)
         for child_joint in self.children.get(link.name, []):
             child = self.parts.links[child_joint.child]
@@ -77,6 +80,22 @@ class Builder:
                 add_geom(body, self.spec, element, local, tag == "visual",
                                   self.context.warn, resolver, name if name not in seen else "")
                 seen.add(name)
+
+    def _sensors(self, body: Any, link: Link) -> None:
+        """Each `<sensor>` of the link: a site at its pose (hidden, group 5), and its config
+        among the model's plugins."""
+        for element in link.element.iterfind("sensor"):
+            config = sensor_config(element, link.name, self.context.warn)
+            if config is None:
+                continue
+            if config.site in self.sensor_sites:
+                raise element.error(f"two sensors named '{config.name}' in link '{link.name}'")
+            self.sensor_sites.add(config.site)
+            local = self._local_pose(element, link)
+            site = body.add_site()
+            site.name, site.pos, site.quat, site.group = self.prefix + config.site, \
+                local.pos, local.quat, 5
+            self.parts.plugins.append(config)
 
     def _local_pose(self, element: Element, link: Link) -> Pose:
         pose = element.find("pose")

@@ -56,19 +56,11 @@ def check_children(element: Element, context: Context) -> None:
                                     f"and ignored")
             continue
         if tag in READ.get(kind, ()) or tag in QUIET.get(kind, ()):
-            if tag == "sensor":
-                _sensor(child, context)
             continue
         if tag in LACKS:
             context.warn(child, f"<{tag}> in <{kind}> is ignored: {LACKS[tag]}")
         else:
             context.warn(child, f"<{tag}> in <{kind}> is not known to launcher and is ignored")
-
-
-def _sensor(sensor: Element, context: Context) -> None:
-    kind = sensor.get("type", "?")
-    context.warn(sensor, f"sensor '{sensor.get('name', '')}' (type {kind}) is not simulated: "
-                         f"the world publishes no {kind} data")
 
 
 def plugin_configs(element: Element) -> list[PluginConfig]:

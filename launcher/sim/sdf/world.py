@@ -22,9 +22,13 @@ from launcher.sim.sdf.elements import check_children, plugin_configs
 from launcher.sim.sdf.model import BuiltModel, build
 from launcher.sim.sdf.pose import IDENTITY, Pose, number, numbers, parse_pose, rotate
 from launcher.sim.sdf.xmltree import Element
+from launcher.sim.sensors.geodesy import SphericalCoordinates
 
 LIGHTS = {"directional": mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
           "point": mujoco.mjtLightType.mjLIGHT_POINT, "spot": mujoco.mjtLightType.mjLIGHT_SPOT}
+
+
+MAGNETIC_FIELD = (5.5645e-6, 22.8758e-6, -42.3884e-6)  # tesla: SDFormat's default
 
 
 @dataclass
@@ -35,6 +39,7 @@ class SdfWorld:
     plugins: list[PluginConfig]
     real_time_factor: float | None
     warnings: list[str] = field(default_factory=list)
+    spherical_coordinates: SphericalCoordinates = SphericalCoordinates()
 
 
 def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None = None,
@@ -50,12 +55,41 @@ def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None =
     check_children(world, context)
     rtf = _physics(spec, world)
     _gravity(spec, world)
+    _magnetic_field(spec, world)
     _scene(spec, world)
     for light in world.findall("light"):
         add_light(spec, light)
     with context.inside(origin):
         models = _models(spec, world, origin, context)
-    return SdfWorld(spec, spec.modelname, models, plugin_configs(world), rtf, context.warnings)
+    return SdfWorld(spec, spec.modelname, models, plugin_configs(world), rtf, context.warnings,
+                    _spherical_coordinates(world))
+
+
+def _magnetic_field(spec: Any, world: Element) -> None:
+    """The world's `<magnetic_field>` (tesla, world frame), SDFormat's default when it has
+    none, as MuJoCo's `option.magnetic` (what magnetometers read)."""
+    found = world.find("magnetic_field")
+    spec.option.magnetic = numbers(found, 3, "a field 'x y z' in tesla") \
+        if found is not None and found.stripped else list(MAGNETIC_FIELD)
+
+
+def _spherical_coordinates(world: Element) -> SphericalCoordinates:
+    found = world.find("spherical_coordinates")
+    if found is None:
+        return SphericalCoordinates()
+    model = found.value("surface_model", "EARTH_WGS84") or "EARTH_WGS84"
+    if model != "EARTH_WGS84":
+        raise found.find("surface_model").error(
+            f"<surface_model> {model}: launcher's navsat knows EARTH_WGS84 only")
+    values = []
+    for tag in ("latitude_deg", "longitude_deg", "elevation", "heading_deg"):
+        text = found.value(tag, "0") or "0"
+        try:
+            values.append(float(text))
+        except ValueError:
+            raise found.find(tag).error(f"<spherical_coordinates><{tag}>: expected a number, "
+                                        f"got '{text}'") from None
+    return SphericalCoordinates(*values)
 
 
 def _physics(spec: Any, world: Element) -> float | None:

@@ -1,0 +1,53 @@
+"""Gazebo's sensors, simulated in MuJoCo.
+
+An SDF `<sensor>` (in a world's or a spawned model's link) becomes a site on the link's body at
+the sensor's pose, and a sensor plugin of the link's entity (sensors/base.py): scheduled in sim
+time at its `update_rate`, doing work only while someone subscribes (or with `<always_on>`),
+and publishing Gazebo's message, on Gazebo's topic, on the sim's side of the bus. As in gz-sim,
+a sensor publishes only when the world loads its system (gz-sim-imu-system for an imu, …,
+gz-sim-sensors-system for the rendering ones); a world that declares none (an MJCF world,
+launcher's built-in empty world) runs them all.
+"""
+
+from __future__ import annotations
+
+# SDF's sensor types (and classic Gazebo's names for them) → the kind launcher simulates
+KINDS = {
+    "imu": "imu", "magnetometer": "magnetometer", "altimeter": "altimeter",
+    "air_pressure": "air_pressure", "navsat": "navsat", "gps": "navsat",
+    "gpu_lidar": "lidar", "lidar": "lidar", "gpu_ray": "lidar", "ray": "lidar",
+}
+# Kinds whose module is not there yet, or that MuJoCo cannot give: said at the sensor's line
+NOT_SIMULATED = {
+    "camera": "cameras are not rendered yet", "depth_camera": "cameras are not rendered yet",
+    "depth": "cameras are not rendered yet", "rgbd_camera": "cameras are not rendered yet",
+    "rgbd": "cameras are not rendered yet", "multicamera": "cameras are not rendered yet",
+    "segmentation_camera": "cameras are not rendered yet",
+    "segmentation": "cameras are not rendered yet",
+    "wideanglecamera": "wide-angle cameras are not rendered",
+    "wide_angle_camera": "wide-angle cameras are not rendered",
+    "thermal_camera": "MuJoCo has no temperatures to render: no thermal image",
+    "thermal": "MuJoCo has no temperatures to render: no thermal image",
+    "logical_camera": "the logical camera's model list is not produced",
+    "boundingbox_camera": "no bounding boxes are produced",
+    "contact": "contacts are not reported yet", "force_torque": "no wrench is measured yet",
+    "air_speed": "no air speed is measured yet", "air_flow": "there is no air flow",
+    "sonar": "sonar is not simulated", "rfid": "RFID is not simulated",
+    "rfidtag": "RFID is not simulated", "wireless_receiver": "radio is not simulated",
+    "wireless_transmitter": "radio is not simulated", "dvl": "the DVL is not simulated",
+    "custom": "a custom sensor has no model here",
+}
+# The world system each kind needs, by its canonical file name (plugins.canonical)
+SYSTEMS = {
+    "imu": "gz-sim-imu-system", "magnetometer": "gz-sim-magnetometer-system",
+    "altimeter": "gz-sim-altimeter-system", "air_pressure": "gz-sim-air-pressure-system",
+    "navsat": "gz-sim-navsat-system", "lidar": "gz-sim-sensors-system",
+}
+CLASSES = {
+    "imu": "launcher.sim.sensors.inertial:Imu",
+    "magnetometer": "launcher.sim.sensors.inertial:Magnetometer",
+    "altimeter": "launcher.sim.sensors.atmosphere:Altimeter",
+    "air_pressure": "launcher.sim.sensors.atmosphere:AirPressure",
+    "navsat": "launcher.sim.sensors.navsat:NavSat",
+    "lidar": "launcher.sim.sensors.lidar:Lidar",
+}

@@ -1,0 +1,114 @@
+"""What every sensor does: its Gazebo names (scoped name, default topic, frame id), its
+schedule in sim time, Gazebo's lazy updates (work only while someone subscribes, unless
+`<always_on>`), and the world system it needs."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from launcher.sim.plugins import Plugin
+from launcher.sim.sdf.xmltree import SdfError
+from launcher.sim.sensors import SYSTEMS
+from launcher.sim.sensors.config import SensorConfig
+from launcher.sim.sensors.noise import generator
+
+LAZY_LOOK = 0.05  # s of sim time between looks for a subscriber, while there is none
+
+
+class Sensor(Plugin):
+    """A sensor of an entity's link; subclasses say what they publish and measure it."""
+
+    message_type = ""  # the sim's type
+    suffix = ""  # Gazebo's topic suffix
+
+    def __init__(self, sim: Any, entity: Any, config: SensorConfig) -> None:
+        super().__init__(sim, entity, config)
+        self.config = config
+        self.label = f"sensor '{config.name}' ({config.element.get('type', config.kind)})"
+
+    # --- names, as gz-sim gives them ------------------------------------------------------
+    @property
+    def scoped_name(self) -> str:
+        """`model::link::sensor`: the sensor's name and default frame id in Gazebo."""
+        return f"{self.entity.name}::{self.config.link}::{self.config.name}"
+
+    def default_topic(self) -> str:
+        *models, link = self.config.link.split("::")
+        path = "".join(f"/model/{m}" for m in [self.entity.name, *models])
+        return f"/world/{self.sim.world_name}{path}/link/{link}/sensor/{self.config.name}"
+
+    def topic_name(self, suffix: str | None = None) -> str:
+        if self.config.topic:
+            topic = self.config.topic
+            return topic if topic.startswith("/") else f"/{topic}"
+        return f"{self.default_topic()}/{self.suffix if suffix is None else suffix}"
+
+    @property
+    def frame_id(self) -> str:
+        return self.config.frame_id or self.scoped_name
+
+    # --- the plugin's hooks -----------------------------------------------------------------
+    def load(self) -> None:
+        rate = self.config.update_rate
+        if not math.isfinite(rate) or rate < 0:
+            element = self.config.element.find("update_rate")
+            raise SdfError(f"{self.label}: <update_rate> must be a number of Hz ≥ 0 (0: every "
+                           f"step), got '{element.stripped if element is not None else rate}'",
+                           element.location if element is not None else None)
+        self.rng = generator(getattr(self.sim, "seed", 0), self.scoped_name)
+        self.period = 1.0 / self.config.update_rate if self.config.update_rate > 0 else 0.0
+        self.missing = self._missing_system()
+        if self.missing:
+            self.sim.transport.logger.warning(
+                f"{self.config.where}: {self.label} publishes nothing: the world does not "
+                f"load {self.missing} (add <plugin filename=\"{self.missing}\" …/> to the "
+                "world), as in Gazebo")
+        try:
+            self.configure()
+        except SdfError as exc:  # say which sensor, wherever in it the mistake is
+            if exc.message.startswith(self.label):
+                raise
+            raise SdfError(f"{self.label}: {exc.message}", exc.location) from None
+        self.publisher = self.sim.transport.publisher(self.message_type, self.topic_name())
+        self.reset()
+
+    def configure(self) -> None:
+        """Read the sensor's own settings (subclasses)."""
+
+    def bind(self, model: Any, data: Any) -> None:
+        self.site = model.site(f"{self.entity.name}/{self.config.site}").id
+
+    def reset(self) -> None:
+        self.next_update = math.inf if self.missing else 0.0
+
+    def post_step(self, model: Any, data: Any) -> None:
+        now = data.time
+        if not (self.config.always_on or self.publisher.get_subscription_count() > 0):
+            self.next_update = now + max(self.period, LAZY_LOOK)
+            return
+        self.next_update = self._next(now)
+        self.publisher.publish(self.measure(model, data))
+
+    def _next(self, now: float) -> float:
+        if self.period <= 0:
+            return now
+        due = max(self.next_update, now - self.period)
+        while due <= now + 1e-9:
+            due += self.period
+        return due
+
+    def measure(self, model: Any, data: Any) -> Any:
+        raise NotImplementedError
+
+    def close(self) -> None:
+        self.publisher.destroy()
+
+    # --- helpers ------------------------------------------------------------------------------
+    def header(self, data: Any) -> Any:
+        return self.sim.transport.header(data.time, self.frame_id)
+
+    def _missing_system(self) -> str:
+        systems = getattr(self.sim, "systems", None)
+        needed = SYSTEMS[self.config.kind]
+        return "" if systems is None or needed in systems else needed

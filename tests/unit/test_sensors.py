@@ -1,0 +1,251 @@
+"""Gazebo's sensors on launcher's sim (launcher/sim/sensors): what they read is checked
+against geometry and physics, not only against shapes. The world is stepped without a bus
+(a recording transport); the end-to-end tests run them over the real one."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+from launcher.errors import LaunchError
+from launcher.sim.sensors.atmosphere import pressure_at
+from launcher.sim.sensors.geodesy import SphericalCoordinates
+from launcher.sim.world import World
+from tests.unit.test_sim import Recorder
+
+SYSTEMS = """
+<plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors"/>
+<plugin filename="gz-sim-imu-system" name="gz::sim::systems::Imu"/>
+<plugin filename="gz-sim-magnetometer-system" name="gz::sim::systems::Magnetometer"/>
+<plugin filename="libignition-gazebo6-altimeter-system.so" name="x"/>
+<plugin filename="ignition-gazebo-air-pressure-system" name="y"/>
+<plugin filename="gz-sim-navsat-system" name="gz::sim::systems::NavSat"/>"""
+
+
+class Listening(Recorder):
+    """The recording transport, with a subscriber count per topic (1 unless set)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.subscribers: dict[str, int] = {}
+
+    def publisher(self, type_name, topic, qos=10, ros=False):
+        box = self.published.setdefault(topic, [])
+        return SimpleNamespace(publish=box.append, destroy=lambda: None,
+                               get_subscription_count=lambda: self.subscribers.get(topic, 1))
+
+
+def world_with(tmp_path: Path, sensors: str, extra: str = "", systems: str = SYSTEMS,
+               pose: str = "0 0 0.5 0 0 0", static: bool = True, seed: int = 0,
+               world_extra: str = "") -> World:
+    """A world with ground, a 1 m box (`box`, its link `link` carrying `sensors`) and
+    `extra` models."""
+    text = f"""<?xml version="1.0"?>
+<sdf version="1.9"><world name="w">{systems}{world_extra}
+<model name="ground"><static>true</static><link name="link"><collision name="c"><geometry>
+<plane><normal>0 0 1</normal><size>50 50</size></plane></geometry></collision></link></model>
+<model name="box"><static>{str(static).lower()}</static><pose>{pose}</pose>
+<link name="link"><inertial><mass>1</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz>
+</inertia></inertial><collision name="c"><geometry><box><size>1 1 1</size></box></geometry>
+</collision>{sensors}</link></model>{extra}
+</world></sdf>"""
+    path = tmp_path / "world.sdf"
+    path.write_text(text)
+    return World.from_path(path, Listening(), environ={}, seed=seed)
+
+
+def run(world: World, seconds: float) -> None:
+    """Step as the server does (batches up to the next sensor's update), `seconds` of sim
+    time and no more."""
+    steps = round(seconds / world.model.opt.timestep)
+    while steps > 0:
+        batch = world.physics.steps_until_update(min(steps, 100))
+        world.physics.step(batch)
+        steps -= batch
+
+
+def sensor(name: str, kind: str, body: str = "", rate: float = 100, pose: str = "",
+           topic: str = "") -> str:
+    return (f'<sensor name="{name}" type="{kind}"><update_rate>{rate}</update_rate>'
+            f'{f"<pose>{pose}</pose>" if pose else ""}'
+            f'{f"<topic>{topic}</topic>" if topic else ""}{body}</sensor>')
+
+
+# --- the IMU, magnetometer, altimeter, air pressure and navsat ---------------------------
+def test_an_imu_at_rest_reads_gravity_up_and_its_first_orientation(tmp_path):
+    world = world_with(tmp_path, sensor("imu", "imu"), static=False, pose="0 0 0.5 0 0 0.7")
+    run(world, 0.5)
+    topic = "/world/w/model/box/link/link/sensor/imu/imu"  # gz-sim's scoped topic
+    readings = world.transport.published[topic]
+    assert 45 <= len(readings) <= 55  # 100 Hz of sim time
+    last = readings[-1]
+    assert (last.linear_acceleration.x, last.linear_acceleration.y) == \
+        pytest.approx((0, 0), abs=0.05)
+    assert last.linear_acceleration.z == pytest.approx(9.8, abs=0.05)
+    assert last.header.frame_id == "box::link::imu"
+    assert (last.orientation.x, last.orientation.y, last.orientation.z, last.orientation.w) \
+        == pytest.approx((0, 0, 0, 1), abs=1e-3)  # the yaw it started with is its zero
+
+
+def test_a_magnetometer_reads_the_worlds_field_in_its_own_frame(tmp_path):
+    world = world_with(tmp_path, sensor("mag", "magnetometer", pose="0 0 0 0 0 1.5707963"),
+                       world_extra="<magnetic_field>1e-5 2e-5 -4e-5</magnetic_field>")
+    run(world, 0.05)
+    field = world.transport.published[
+        "/world/w/model/box/link/link/sensor/mag/magnetometer"][-1].magnetic_field
+    # turned 90° about z: the world's y is its x, the world's -x its y
+    assert (field.x, field.y, field.z) == pytest.approx((2e-5, -1e-5, -4e-5), abs=1e-9)
+
+
+def test_an_altimeter_reads_height_and_speed_against_where_it_started(tmp_path):
+    world = world_with(tmp_path, sensor("alt", "altimeter", topic="altimeter"), static=False,
+                       pose="0 0 3 0 0 0")
+    run(world, 0.3)  # falling
+    reading = world.transport.published["/altimeter"][-1]
+    t = world.data.time
+    assert reading.vertical_reference == pytest.approx(3.0, abs=1e-6)
+    assert reading.vertical_position == pytest.approx(-0.5 * 9.8 * t * t, abs=0.03)
+    assert reading.vertical_velocity == pytest.approx(-9.8 * t, abs=0.05)
+
+
+def test_air_pressure_is_the_standard_atmospheres_at_the_height(tmp_path):
+    world = world_with(tmp_path, sensor("p", "air_pressure",
+                                        "<air_pressure><reference_altitude>1000"
+                                        "</reference_altitude></air_pressure>"))
+    run(world, 0.05)
+    reading = world.transport.published["/world/w/model/box/link/link/sensor/p/air_pressure"]
+    assert pressure_at(0) == pytest.approx(101325)
+    assert pressure_at(1000) == pytest.approx(89875, rel=1e-3)  # the standard atmosphere's
+    assert reading[-1].fluid_pressure == pytest.approx(pressure_at(1000.5), rel=1e-9)
+
+
+def test_navsat_reads_the_worlds_spherical_coordinates(tmp_path):
+    world = world_with(tmp_path, sensor("gps", "navsat"), pose="1000 0 0 0 0 0", world_extra="""
+    <spherical_coordinates><surface_model>EARTH_WGS84</surface_model>
+    <latitude_deg>45</latitude_deg><longitude_deg>7</longitude_deg><elevation>200</elevation>
+    <heading_deg>0</heading_deg></spherical_coordinates>""")
+    run(world, 0.05)
+    fix = world.transport.published["/world/w/model/box/link/link/sensor/gps/navsat"][-1]
+    assert fix.latitude_deg == pytest.approx(45, abs=1e-6)
+    # 1000 m east at 45°: a degree of longitude is 78.85 km there (WGS84)
+    assert fix.longitude_deg == pytest.approx(7 + 1000 / 78846.8, abs=1e-5)
+    assert fix.altitude == pytest.approx(200.0, abs=0.2)  # the Earth curves 0.08 m in 1 km
+
+
+def test_geodesy_round_trips_and_the_heading_turns_the_world():
+    here = SphericalCoordinates(45.0, 7.0, 200.0, 90.0)
+    assert here.geodetic(0, 0, 0) == pytest.approx((45.0, 7.0, 200.0), abs=1e-6)
+    assert here.enu(1, 0, 0) == pytest.approx((0, -1, 0), abs=1e-12)  # x points south
+
+
+# --- the lidar -----------------------------------------------------------------------------
+LIDAR = """<lidar><scan><horizontal><samples>{h}</samples><resolution>1</resolution>
+<min_angle>{lo}</min_angle><max_angle>{hi}</max_angle></horizontal>
+<vertical><samples>{v}</samples><min_angle>-0.1</min_angle><max_angle>0.1</max_angle></vertical>
+</scan><range><min>0.08</min><max>10</max><resolution>0.01</resolution></range></lidar>"""
+
+
+def wall(x: float, name: str = "wall") -> str:
+    return f"""<model name="{name}"><static>true</static><pose>{x} 0 1 0 0 0</pose>
+<link name="link"><collision name="c"><geometry><box><size>0.2 20 4</size></box></geometry>
+</collision><visual name="v"><geometry><box><size>0.2 20 4</size></box></geometry></visual>
+</link></model>"""
+
+
+def test_a_lidar_ray_reads_a_face_at_its_distance_and_nothing_beyond_its_range(tmp_path):
+    """The box carrying the sensor is left out; a wall whose near face is 2.5 m ahead reads
+    2.5 m within the range resolution; rays to the side reach nothing within 10 m."""
+    body = LIDAR.format(h=181, lo=-math.pi / 2, hi=math.pi / 2, v=3)
+    world = world_with(tmp_path, sensor("lidar", "gpu_lidar", body, rate=10), wall(2.6))
+    run(world, 0.15)
+    scans = world.transport.published["/world/w/model/box/link/link/sensor/lidar/scan"]
+    assert len(scans) == 2  # 10 Hz
+    scan = scans[-1]
+    ranges = list(scan.ranges)
+    assert len(ranges) == 3 * 181 and scan.header.frame_id == "box::link::lidar"
+    middle = ranges[181 + 90]  # the level row, straight ahead
+    assert middle == pytest.approx(2.5, abs=0.01)
+    assert ranges[181] == math.inf  # 90° to the right: nothing within 10 m
+    assert (scan.angle_min, scan.angle_max) == pytest.approx((-math.pi / 2, math.pi / 2))
+    points = world.transport.published[
+        "/world/w/model/box/link/link/sensor/lidar/scan/points"][-1]
+    assert (points.width, points.height, points.point_step) == (181, 3, 16)
+
+
+def test_a_lidar_does_no_work_while_nobody_listens_unless_always_on(tmp_path):
+    body = LIDAR.format(h=10, lo=-0.5, hi=0.5, v=1)
+    world = world_with(tmp_path, sensor("lazy", "gpu_lidar", body, rate=10) +
+                       sensor("eager", "gpu_lidar", "<always_on>true</always_on>" + body,
+                              rate=10))
+    for topic in list(world.transport.published):
+        world.transport.subscribers[topic] = 0
+    run(world, 0.35)
+    published = world.transport.published
+    assert published["/world/w/model/box/link/link/sensor/lazy/scan"] == []
+    assert len(published["/world/w/model/box/link/link/sensor/eager/scan"]) == 4
+    world.transport.subscribers["/world/w/model/box/link/link/sensor/lazy/scan"] = 1
+    run(world, 0.3)
+    assert len(published["/world/w/model/box/link/link/sensor/lazy/scan"]) >= 2
+
+
+# --- systems, noise, bad input -------------------------------------------------------------
+def test_a_sensor_whose_system_the_world_lacks_publishes_nothing_and_says_why(tmp_path):
+    world = world_with(tmp_path, sensor("imu", "imu"), systems="")
+    run(world, 0.1)
+    assert world.transport.published["/world/w/model/box/link/link/sensor/imu/imu"] == []
+    said = [m for m in world.transport.messages("warning") if "sensor 'imu'" in m]
+    assert len(said) == 1 and "does not load gz-sim-imu-system" in said[0]
+
+
+NOISY = """<imu><linear_acceleration><x><noise type="gaussian"><mean>0</mean><stddev>0.5</stddev>
+</noise></x></linear_acceleration></imu>"""
+
+
+def test_noise_is_seeded_per_sensor(tmp_path):
+    def readings(seed: int) -> list[float]:
+        world = world_with(tmp_path, sensor("imu", "imu", NOISY), seed=seed)
+        run(world, 0.1)
+        return [r.linear_acceleration.x for r in
+                world.transport.published["/world/w/model/box/link/link/sensor/imu/imu"]]
+
+    first, again, other = readings(1), readings(1), readings(2)
+    assert first == again and first != other
+    assert 0.2 < (sum(x * x for x in first) / len(first)) ** 0.5 < 0.8  # stddev 0.5
+
+
+@pytest.mark.parametrize("body, kind, expected", [
+    ("", "imuu", None),
+    ("<update_rate>-5</update_rate>", "imu", "<update_rate> must be a number of Hz ≥ 0"),
+    ("<update_rate>fast</update_rate>", "imu", "got 'fast'"),
+    (LIDAR.format(h=0, lo=0, hi=1, v=1), "gpu_lidar", "<horizontal><samples> must be a whole"),
+    (LIDAR.format(h=10, lo=1, hi=0, v=1), "gpu_lidar", "<min_angle> 1 is above <max_angle> 0"),
+    (LIDAR.format(h=100000, lo=0, hi=1, v=100), "gpu_lidar", "10000000 rays a scan is more"),
+    ('<noise type="pink"/>', "altimeter", "<noise type='pink'>: expected one of none, gaussian"),
+], ids=["unknown-type", "negative-rate", "rate-not-a-number", "no-samples", "min-above-max",
+        "too-many-rays", "noise-type"])
+def test_bad_sensor_input_is_located_and_leaves_the_sensor_out(tmp_path, body, kind, expected):
+    """A sensor whose settings are wrong is one error at its file:line, and left out; the
+    world runs on (as a plugin that fails is)."""
+    text = f'<sensor name="s" type="{kind}">{body}</sensor>'
+    if kind == "altimeter":
+        text = f'<sensor name="s" type="altimeter"><altimeter><vertical_position>{body}' \
+               '</vertical_position></altimeter></sensor>'
+    world = world_with(tmp_path, text)
+    run(world, 0.05)
+    said = "\n".join(world.transport.messages("warning" if expected is None else "error"))
+    if expected is None:
+        assert "world.sdf:14: sensor 's': unknown type 'imuu' (did you mean 'imu'" in said
+        return
+    assert re.search(r"world\.sdf:1[45]:\d+: sensor 's' .*" + re.escape(expected), said), said
+    assert said.endswith("is left out") and "Traceback" not in said
+    assert not any(world.transport.published.get(t) for t in world.transport.published
+                   if "/sensor/s/" in t)
+
+
+def test_two_sensors_of_one_name_in_a_link_are_an_error(tmp_path):
+    with pytest.raises(LaunchError, match="two sensors named 'imu' in link 'link'"):
+        world_with(tmp_path, sensor("imu", "imu") + sensor("imu", "magnetometer"))
