@@ -20,7 +20,8 @@ from launcher.errors import LaunchError, did_you_mean
 SIM = "mujoco_sim"
 SIM_MESSAGES = ("Clock", "Twist", "Odometry", "Pose", "PoseV", "Model", "ModelStates",
                 "Double", "Float", "Boolean", "Int32", "StringMsg", "Empty", "EntityFactory",
-                "WorldControl", "Entity")
+                "WorldControl", "Entity", "IMU", "Magnetometer", "FluidPressure", "Altimeter",
+                "NavSat", "LaserScan", "PointCloudPacked")
 # (request, response) of Gazebo's services → the sim's service type
 SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
                 ("EntityFactory", "Boolean"): f"{SIM}/srv/Create",
@@ -208,7 +209,25 @@ def conversions() -> dict[tuple[str, str], Conversion]:
         ("std_msgs/msg/Int32", f"{m}/Int32"): same,
         ("std_msgs/msg/String", f"{m}/StringMsg"): same,
         ("std_msgs/msg/Empty", f"{m}/Empty"): same,
+        # sensors (the sim's types are laid out as ROS's: the bytes pass through)
+        ("sensor_msgs/msg/Imu", f"{m}/IMU"): same,
+        ("sensor_msgs/msg/MagneticField", f"{m}/Magnetometer"): same,
+        ("sensor_msgs/msg/FluidPressure", f"{m}/FluidPressure"): same,
+        ("sensor_msgs/msg/LaserScan", f"{m}/LaserScan"): same,
+        ("sensor_msgs/msg/PointCloud2", f"{m}/PointCloudPacked"): same,
+        ("ros_gz_interfaces/msg/Altimeter", f"{m}/Altimeter"): same,
+        ("sensor_msgs/msg/NavSatFix", f"{m}/NavSat"): Conversion(
+            _via(f"{m}/NavSat", "sensor_msgs/msg/NavSatFix", _nav_sat_fix), None),
     }
+
+
+def _nav_sat_fix(n: Any) -> dict[str, Any]:
+    """gz.msgs.NavSat as ros_gz_bridge writes NavSatFix: a fix from GPS, its covariance
+    unknown."""
+    return {"header": _header(n.header),
+            "status": {"status": 0, "service": 1},  # STATUS_FIX, SERVICE_GPS
+            "latitude": n.latitude_deg, "longitude": n.longitude_deg, "altitude": n.altitude,
+            "position_covariance": [0.0] * 9, "position_covariance_type": 0}
 
 
 def known_ros_type(name: str) -> str:

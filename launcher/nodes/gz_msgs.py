@@ -54,6 +54,31 @@ def _model_to_gz(data: Data) -> Data:
             "joint": joints}
 
 
+def _laser_scan_to_gz(d: Data) -> Data:
+    """A scan as gz.msgs.LaserScan: its frame, angle step and count where ROS has an increment
+    (several vertical rows are one scan of `count` × `vertical_count` ranges)."""
+    header = d.get("header") or {}
+    ranges = d.get("ranges") or []
+    return {"header": _header_to_gz(header), "frame": header.get("frame_id", ""),
+            "angle_min": d.get("angle_min", 0.0), "angle_max": d.get("angle_max", 0.0),
+            "angle_step": d.get("angle_increment", 0.0), "range_min": d.get("range_min", 0.0),
+            "range_max": d.get("range_max", 0.0), "count": len(ranges),
+            "ranges": list(ranges), "intensities": list(d.get("intensities") or [])}
+
+
+def _point_cloud_to_gz(d: Data) -> Data:
+    fields = [{"name": f.get("name"), "offset": f.get("offset"),
+               "datatype": _POINT_TYPES.get(f.get("datatype"), f.get("datatype")),
+               "count": f.get("count")} for f in d.get("fields") or []]
+    return {"header": _header_to_gz(d.get("header")), "field": fields,
+            **{k: d.get(k) for k in ("height", "width", "is_bigendian", "point_step",
+                                     "row_step", "data", "is_dense")}}
+
+
+_POINT_TYPES = {1: "INT8", 2: "UINT8", 3: "INT16", 4: "UINT16", 5: "INT32", 6: "UINT32",
+                7: "FLOAT32", 8: "FLOAT64"}
+
+
 TO_GZ: dict[str, Callable[[Data], Data]] = {
     "Pose": lambda d: {"header": _header_to_gz(d.get("header")), "name": d.get("name", ""),
                        **(d.get("pose") or {})},
@@ -63,6 +88,20 @@ TO_GZ: dict[str, Callable[[Data], Data]] = {
                            "pose": d.get("pose", {}), "twist": d.get("twist", {})},
     "Clock": lambda d: {"real": d.get("real", {}), "sim": d.get("sim", {})},
     "Model": _model_to_gz,
+    "IMU": lambda d: {"header": _header_to_gz(d.get("header")),
+                      "entity_name": (d.get("header") or {}).get("frame_id", ""),
+                      **{k: d.get(k, {}) for k in ("orientation", "angular_velocity",
+                                                   "linear_acceleration")}},
+    "Magnetometer": lambda d: {"header": _header_to_gz(d.get("header")),
+                               "field_tesla": d.get("magnetic_field", {})},
+    "FluidPressure": lambda d: {"header": _header_to_gz(d.get("header")),
+                                "pressure": d.get("fluid_pressure", 0.0),
+                                "variance": d.get("variance", 0.0)},
+    "NavSat": lambda d: {"header": _header_to_gz(d.get("header")),
+                         **{k: v for k, v in d.items() if k != "header"},
+                         "frame_id": (d.get("header") or {}).get("frame_id", "")},
+    "LaserScan": _laser_scan_to_gz,
+    "PointCloudPacked": _point_cloud_to_gz,
 }
 
 TO_SIM: dict[str, Callable[[Data], Data]] = {

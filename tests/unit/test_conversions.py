@@ -107,8 +107,8 @@ def test_unsupported_pairs_and_unknown_types_say_what_is_supported():
         conversions.find("geometry_msgs/msg/Twist", "mujoco_sim/msg/Odometry")
     assert "geometry_msgs/msg/Twist pairs with: gz.msgs.Twist" in str(error.value)
     with pytest.raises(LaunchError) as error:
-        conversions.find("sensor_msgs/msg/Imu", "mujoco_sim/msg/Odometry")
-    assert "does not convert sensor_msgs/msg/Imu; it converts:" in str(error.value)
+        conversions.find("sensor_msgs/msg/Temperature", "mujoco_sim/msg/Odometry")
+    assert "does not convert sensor_msgs/msg/Temperature; it converts:" in str(error.value)
     with pytest.raises(LaunchError) as error:
         conversions.sim_type("gz.msgs.WorldControl|gz.msgs.Double")
     assert "the sim has no service taking" in str(error.value)
@@ -153,3 +153,29 @@ print('numpy' in sys.modules, out.hex())
         "position": [1.5], "velocity": [0.5], "effort": [0.0]})
     assert bytes.fromhex(payload) == bytes(registry().store.serialize_cdr(
         expected, "sensor_msgs/msg/JointState"))
+
+
+def test_the_sensors_types_pass_through_the_bridge_as_ros_lays_them_out():
+    """The sim's sensor messages are laid out as sensor_msgs' (their bytes go across as they
+    are); NavSat becomes a NavSatFix from GPS."""
+    from launcher.bus.types import registry
+
+    reg = registry()
+    for ros, sim in (("sensor_msgs/msg/Imu", "IMU"), ("sensor_msgs/msg/LaserScan", "LaserScan"),
+                     ("sensor_msgs/msg/PointCloud2", "PointCloudPacked"),
+                     ("sensor_msgs/msg/MagneticField", "Magnetometer"),
+                     ("sensor_msgs/msg/FluidPressure", "FluidPressure"),
+                     ("ros_gz_interfaces/msg/Altimeter", "Altimeter")):
+        assert reg.fields(reg.ensure(ros)) == reg.fields(reg.ensure(f"mujoco_sim/msg/{sim}"))
+        conversion = conversions.find(ros, f"mujoco_sim/msg/{sim}")
+        assert conversion.to_ros(b"\x00\x01\x00\x00abc") == b"\x00\x01\x00\x00abc"
+    fix = reg.writer("mujoco_sim/msg/NavSat")(reg.message_class("mujoco_sim/msg/NavSat")(
+        header=reg.message_class("std_msgs/msg/Header")(
+            stamp=reg.message_class("builtin_interfaces/msg/Time")(sec=1, nanosec=2),
+            frame_id="m::l::gps"),
+        latitude_deg=45.0, longitude_deg=7.0, altitude=200.0, velocity_east=0.0,
+        velocity_north=0.0, velocity_up=0.0))
+    converted = conversions.find("sensor_msgs/msg/NavSatFix",
+                                 "mujoco_sim/msg/NavSat").to_ros(fix)
+    read = reg.reader("sensor_msgs/msg/NavSatFix", lambda name, values: values)(converted)
+    assert read[2:5] == [45.0, 7.0, 200.0] and read[1][1] == 1  # status.service: GPS

@@ -37,6 +37,13 @@ from launcher.runtime.context import LaunchContext
 
 GUI_TOOLS = ("rviz2", "rviz", "rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",
              "rqt_image_view", "rqt_robot_steering", "joint_state_publisher_gui", "gzclient")
+
+
+def is_gui_tool(package: str) -> bool:
+    """rviz, rqt and its plugins (rqt_topic, rqt_reconfigure, …), and the other GUI tools."""
+    return package in GUI_TOOLS or package.startswith("rqt_")
+
+
 INSTEAD = ("pictures of the world: `launcher sim snapshot -o world.png`; topics: "
            "`launcher topic echo`")
 
@@ -83,7 +90,7 @@ class Node(ExecuteProcess):
             return super().execute(context)
         except PackageNotFound as exc:
             package = perform_text(context, self.package)
-            if package not in GUI_TOOLS or context.service is None:
+            if not is_gui_tool(package) or context.service is None:
                 raise
             context.service.report(ExecutionError(
                 f"node of package '{package}' not started: {package} is a ROS GUI tool, not "
