@@ -21,7 +21,7 @@ SIM = "mujoco_sim"
 SIM_MESSAGES = ("Clock", "Twist", "Odometry", "Pose", "PoseV", "Model", "ModelStates",
                 "Double", "Float", "Boolean", "Int32", "StringMsg", "Empty", "EntityFactory",
                 "WorldControl", "Entity", "IMU", "Magnetometer", "FluidPressure", "Altimeter",
-                "NavSat", "LaserScan", "PointCloudPacked")
+                "NavSat", "LaserScan", "PointCloudPacked", "Image", "CameraInfo")
 # (request, response) of Gazebo's services → the sim's service type
 SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
                 ("EntityFactory", "Boolean"): f"{SIM}/srv/Create",
@@ -215,6 +215,8 @@ def conversions() -> dict[tuple[str, str], Conversion]:
         ("sensor_msgs/msg/FluidPressure", f"{m}/FluidPressure"): same,
         ("sensor_msgs/msg/LaserScan", f"{m}/LaserScan"): same,
         ("sensor_msgs/msg/PointCloud2", f"{m}/PointCloudPacked"): same,
+        ("sensor_msgs/msg/Image", f"{m}/Image"): same,
+        ("sensor_msgs/msg/CameraInfo", f"{m}/CameraInfo"): same,
         ("ros_gz_interfaces/msg/Altimeter", f"{m}/Altimeter"): same,
         ("sensor_msgs/msg/NavSatFix", f"{m}/NavSat"): Conversion(
             _via(f"{m}/NavSat", "sensor_msgs/msg/NavSatFix", _nav_sat_fix), None),

@@ -11,6 +11,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from launcher.nodes.prototext import Enum
+
 Data = dict[str, Any]
 
 
@@ -68,11 +70,33 @@ def _laser_scan_to_gz(d: Data) -> Data:
 
 def _point_cloud_to_gz(d: Data) -> Data:
     fields = [{"name": f.get("name"), "offset": f.get("offset"),
-               "datatype": _POINT_TYPES.get(f.get("datatype"), f.get("datatype")),
+               "datatype": Enum(_POINT_TYPES.get(f.get("datatype"), str(f.get("datatype")))),
                "count": f.get("count")} for f in d.get("fields") or []]
     return {"header": _header_to_gz(d.get("header")), "field": fields,
             **{k: d.get(k) for k in ("height", "width", "is_bigendian", "point_step",
-                                     "row_step", "data", "is_dense")}}
+                                     "row_step", "is_dense")},
+            "data": bytes(d.get("data") or b"")}
+
+
+_PIXEL_FORMATS = {"rgb8": "RGB_INT8", "bgr8": "BGR_INT8", "mono8": "L_INT8",
+                  "mono16": "L_INT16", "32FC1": "R_FLOAT32"}
+
+
+def _image_to_gz(d: Data) -> Data:
+    return {"header": _header_to_gz(d.get("header")), "width": d.get("width", 0),
+            "height": d.get("height", 0),
+            "pixel_format_type": Enum(_PIXEL_FORMATS.get(d.get("encoding", ""),
+                                                          "UNKNOWN_PIXEL_FORMAT")),
+            "step": d.get("step", 0), "data": bytes(d.get("data") or b"")}
+
+
+def _camera_info_to_gz(d: Data) -> Data:
+    return {"header": _header_to_gz(d.get("header")), "width": d.get("width", 0),
+            "height": d.get("height", 0),
+            "distortion": {"model": Enum("PLUMB_BOB"), "k": list(d.get("d") or [])},
+            "intrinsics": {"k": list(d.get("k") or [])},
+            "projection": {"p": list(d.get("p") or [])},
+            "rectification_matrix": list(d.get("r") or [])}
 
 
 _POINT_TYPES = {1: "INT8", 2: "UINT8", 3: "INT16", 4: "UINT16", 5: "INT32", 6: "UINT32",
@@ -102,6 +126,8 @@ TO_GZ: dict[str, Callable[[Data], Data]] = {
                          "frame_id": (d.get("header") or {}).get("frame_id", "")},
     "LaserScan": _laser_scan_to_gz,
     "PointCloudPacked": _point_cloud_to_gz,
+    "Image": _image_to_gz,
+    "CameraInfo": _camera_info_to_gz,
 }
 
 TO_SIM: dict[str, Callable[[Data], Data]] = {

@@ -177,8 +177,13 @@ def format(data: dict[str, Any], indent: int = 0) -> str:  # noqa: A001 - the fo
     return "".join(lines)
 
 
+_BYTE_ESCAPES = [chr(b) if 0x20 <= b < 0x7f and b not in (0x22, 0x27, 0x5c) else
+                 {0x0a: "\\n", 0x0d: "\\r", 0x09: "\\t", 0x22: '\\"', 0x27: "\\'",
+                  0x5c: "\\\\"}.get(b, f"\\{b:03o}") for b in range(256)]
+
+
 def _is_default(value: Any) -> bool:
-    return value is None or value is False or value == "" or \
+    return value is None or value is False or value in ("", b"") or \
         (isinstance(value, int | float) and not isinstance(value, bool) and value == 0)
 
 
@@ -187,6 +192,8 @@ def _scalar(value: Any) -> str:
         return "true" if value else "false"
     if isinstance(value, Enum):
         return str(value)
+    if isinstance(value, bytes | bytearray):  # as protobuf writes bytes: C escapes
+        return '"' + "".join(_BYTE_ESCAPES[b] for b in value) + '"'
     if isinstance(value, str):
         escaped = value.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
         return f'"{escaped}"'

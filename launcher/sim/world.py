@@ -115,9 +115,11 @@ class World:
             try:
                 plugin.prepare(self.spec)
             except Exception as exc:  # a plugin's bug or bad config: the world still loads
-                message = str(exc) if isinstance(exc, LaunchError) else \
-                    f"plugin {plugin.label}: {type(exc).__name__}: {exc}"
-                self.transport.logger.error(f"{message}; entity '{model.name}' runs without it")
+                message = f"{exc}; {plugin.label} of entity '{model.name}' is left out" \
+                    if isinstance(exc, LaunchError) else \
+                    f"plugin {plugin.label}: {type(exc).__name__}: {exc}; entity " \
+                    f"'{model.name}' runs without it"
+                self.transport.logger.error(message)
                 entity.plugins.remove(plugin)
         self.entities[model.name] = entity
 

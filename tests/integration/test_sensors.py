@@ -4,6 +4,7 @@ read with `gz topic -e`, what the bridge makes of it with a ROS subscriber."""
 
 from __future__ import annotations
 
+import math
 import re
 import signal
 import time
@@ -107,3 +108,117 @@ def test_gz_sims_sensors_world_publishes_its_sensors_and_says_what_it_lacks(sens
         assert "sensors.sdf:156: sensor 'air_speed' (type air_speed) is not simulated" in said
     finally:
         assert stop(proc) == 0
+
+
+CAMERA_WORLD = """<?xml version="1.0"?>
+<sdf version="1.9"><world name="cam">
+<plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors"/>
+<light type="directional" name="sun"><pose>0 0 10 0 0 0</pose><diffuse>1 1 1 1</diffuse>
+<direction>0 0 -1</direction></light>
+<model name="red"><static>true</static><pose>3 0 0.5 0 0 0</pose><link name="l">
+<collision name="c"><geometry><box><size>1 1 1</size></box></geometry></collision>
+<visual name="v"><geometry><box><size>1 1 1</size></box></geometry>
+<material><ambient>1 0 0 1</ambient><diffuse>1 0 0 1</diffuse></material></visual></link></model>
+<model name="cam"><static>true</static><pose>0 0 0.5 0 0 0</pose><link name="link">
+<sensor name="camera" type="camera"><topic>camera</topic><update_rate>20</update_rate>
+<camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
+</image><clip><near>0.1</near><far>100</far></clip></camera></sensor>
+<sensor name="depth" type="depth_camera"><topic>depth_camera</topic><update_rate>20</update_rate>
+<camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
+<format>R_FLOAT32</format></image><clip><near>0.1</near><far>10</far></clip></camera></sensor>
+<sensor name="snap" type="camera"><update_rate>0</update_rate><camera><triggered>true</triggered>
+<trigger_topic>take</trigger_topic><image><width>32</width><height>24</height></image></camera>
+</sensor>
+</link></model>
+</world></sdf>
+"""
+
+PROBE = """
+import json, sys, time
+import numpy as np
+from launcher.bus import keys
+from launcher.bus.node import Node
+node = Node("probe", argv=[], space=keys.SIM)
+got, states = {}, []
+node.create_subscription("mujoco_sim/msg/RenderState", "/world/cam/render/state",
+                         lambda m: states.append(list(m.cameras)))
+node.spin(1.5)  # nobody watches a camera yet: the sim sends the renderer nothing
+idle = len(states)
+node.create_subscription("mujoco_sim/msg/Image", "/camera", lambda m: got.setdefault("rgb", m))
+node.create_subscription("mujoco_sim/msg/Image", "/depth_camera",
+                         lambda m: got.setdefault("depth", m))
+node.create_subscription("mujoco_sim/msg/CameraInfo", "/camera_info",
+                         lambda m: got.setdefault("info", m))
+snaps = []
+node.create_subscription("mujoco_sim/msg/Image", "/world/cam/model/cam/link/link/sensor/snap/"
+                         "image", lambda m: snaps.append(m.header.stamp.sec))
+end = time.time() + 30
+while len(got) < 3 and time.time() < end:
+    node.spin_once(0.1)
+node.spin(1.0)
+before = len(snaps)
+take = node.create_publisher("mujoco_sim/msg/Boolean", "/take")
+node.spin(0.5)
+take.publish(node.message("mujoco_sim/msg/Boolean", data=True))
+node.spin(3.0)
+rgb = np.frombuffer(bytes(got["rgb"].data), np.uint8).reshape(48, 64, 3)
+depth = np.frombuffer(bytes(got["depth"].data), np.float32).reshape(48, 64)
+print(json.dumps({"idle": idle, "centre": rgb[24, 32].tolist(), "corner": rgb[1, 1].tolist(),
+                  "depth": float(depth[24, 32]), "depth_corner": str(depth[1, 1]),
+                  "encoding": [got["rgb"].encoding, got["depth"].encoding],
+                  "frame": got["rgb"].header.frame_id, "k": list(got["info"].k),
+                  "snaps": [before, len(snaps)]}))
+node.destroy_node()
+"""
+
+
+def test_cameras_draw_what_is_there_in_a_renderer_of_their_own(sensor_ws):
+    """A camera looking at a red box has red pixels where it projects; a depth pixel reads
+    the metric distance to the box's face; camera_info's K follows the field of view; the sim
+    sends the renderer nothing while nobody watches; a triggered camera draws once a trigger."""
+    import json
+    import subprocess
+    import sys
+
+    sensor_ws.write("cam.sdf", CAMERA_WORLD)
+    proc = sensor_ws.start("gz", "sim", "-s", "-r", "-v", "3", "cam.sdf", output="sim.out")
+    try:
+        sensor_ws.wait_for_output("running", 60, "sim.out")
+        probe = sensor_ws.write("probe.py", PROBE)
+        done = subprocess.run([sys.executable, str(probe)], env=sensor_ws.env,
+                              capture_output=True, text=True, timeout=120)
+        assert done.returncode == 0, done.stderr
+        seen = json.loads(done.stdout.splitlines()[-1])
+        assert seen["idle"] == 0
+        r, g, b = seen["centre"]
+        assert r > 120 and g < 90 and b < 90, seen  # the red box, lit
+        assert seen["corner"] == [0, 0, 0]  # nothing there
+        assert seen["depth"] == pytest.approx(2.5, abs=0.01)  # the face is 2.5 m ahead
+        assert seen["depth_corner"] == "inf"
+        assert seen["encoding"] == ["rgb8", "32FC1"] and seen["frame"] == "cam::link::camera"
+        fx = 64 / (2 * math.tan(1.047 / 2))
+        assert seen["k"] == pytest.approx([fx, 0, 32, 0, fx, 24, 0, 0, 1])
+        assert seen["snaps"] == [0, 1], seen  # one frame, for the one trigger
+        assert "drawing the cameras of world 'cam' with egl" in sensor_ws.output("sim.out")
+    finally:
+        assert stop(proc) == 0
+
+
+def test_ros_gz_sim_demos_camera_launch_bridges_images_unchanged(sensor_ws):
+    demos_workspace(sensor_ws)
+    proc = sensor_ws.start("launch", "ros_gz_sim_demos", "camera.launch.py", "rviz:=false",
+                           output="demo.out")
+    try:
+        sensor_ws.wait_for_output("bridging 2 of 2 entries", 60, "demo.out")
+        image = sensor_ws.run("topic", "echo", "/camera", "sensor_msgs/msg/Image", "--once",
+                              "--no-arr", "--timeout", "60", timeout=90)
+        assert image.returncode == 0, image.stderr
+        assert "width: 320" in image.stdout and "height: 240" in image.stdout
+        assert "encoding: rgb8" in image.stdout and "length: 230400" in image.stdout
+        info = sensor_ws.run("topic", "echo", "/camera_info", "sensor_msgs/msg/CameraInfo",
+                             "--once", "--field", "k", "--timeout", "60", timeout=90)
+        assert info.returncode == 0 and "277.1" in info.stdout, info.stdout + info.stderr
+        gz = sensor_ws.run("gz", "topic", "-e", "-t", "/camera", "-n", "1", timeout=60)
+        assert "pixel_format_type: RGB_INT8" in gz.stdout, gz.stdout[:500]
+    finally:
+        assert stop(proc) == 130

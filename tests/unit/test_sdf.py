@@ -495,7 +495,7 @@ def test_shapes_mujoco_cannot_express_are_one_warning_each_and_left_out(tmp_path
         <visual name="fence"><geometry><polyline><point>0 0</point><height>1</height>
         </polyline></geometry></visual>
         <visual name="box"><geometry><box><size>1 1 1</size></box></geometry></visual>
-        <sensor name="cam" type="camera"/>
+        <sensor name="cam" type="thermal_camera"/>
         <projector name="p"/>
         <wobble/>
       </link></model>
@@ -507,7 +507,7 @@ def test_shapes_mujoco_cannot_express_are_one_warning_each_and_left_out(tmp_path
     assert re.search(r"w\.sdf:6: collision 'hills' is a heightmap, which MuJoCo cannot "
                      "express: it is left out", text), text
     assert "visual 'fence' is a polyline" in text
-    assert "sensor 'cam' (type camera) is not simulated" in text
+    assert "sensor 'cam' (type thermal_camera) is not simulated" in text
     assert "<wobble> in <link> is not known to launcher and is ignored" in text
     assert "<actor> in <world> is ignored: animated actors are not simulated" in text
 

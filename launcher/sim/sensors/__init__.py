@@ -16,14 +16,13 @@ KINDS = {
     "imu": "imu", "magnetometer": "magnetometer", "altimeter": "altimeter",
     "air_pressure": "air_pressure", "navsat": "navsat", "gps": "navsat",
     "gpu_lidar": "lidar", "lidar": "lidar", "gpu_ray": "lidar", "ray": "lidar",
+    "camera": "camera", "depth_camera": "depth_camera", "depth": "depth_camera",
+    "rgbd_camera": "rgbd_camera", "rgbd": "rgbd_camera",
+    "segmentation_camera": "segmentation_camera", "segmentation": "segmentation_camera",
 }
 # Kinds whose module is not there yet, or that MuJoCo cannot give: said at the sensor's line
 NOT_SIMULATED = {
-    "camera": "cameras are not rendered yet", "depth_camera": "cameras are not rendered yet",
-    "depth": "cameras are not rendered yet", "rgbd_camera": "cameras are not rendered yet",
-    "rgbd": "cameras are not rendered yet", "multicamera": "cameras are not rendered yet",
-    "segmentation_camera": "cameras are not rendered yet",
-    "segmentation": "cameras are not rendered yet",
+    "multicamera": "multicameras are not rendered yet",
     "wideanglecamera": "wide-angle cameras are not rendered",
     "wide_angle_camera": "wide-angle cameras are not rendered",
     "thermal_camera": "MuJoCo has no temperatures to render: no thermal image",
@@ -42,6 +41,8 @@ SYSTEMS = {
     "imu": "gz-sim-imu-system", "magnetometer": "gz-sim-magnetometer-system",
     "altimeter": "gz-sim-altimeter-system", "air_pressure": "gz-sim-air-pressure-system",
     "navsat": "gz-sim-navsat-system", "lidar": "gz-sim-sensors-system",
+    **dict.fromkeys(("camera", "depth_camera", "rgbd_camera", "segmentation_camera"),
+                    "gz-sim-sensors-system"),
 }
 CLASSES = {
     "imu": "launcher.sim.sensors.inertial:Imu",
@@ -50,4 +51,6 @@ CLASSES = {
     "air_pressure": "launcher.sim.sensors.atmosphere:AirPressure",
     "navsat": "launcher.sim.sensors.navsat:NavSat",
     "lidar": "launcher.sim.sensors.lidar:Lidar",
+    **dict.fromkeys(("camera", "depth_camera", "rgbd_camera", "segmentation_camera"),
+                    "launcher.sim.sensors.camera:Camera"),
 }

@@ -49,7 +49,10 @@ class Sensor(Plugin):
         return self.config.frame_id or self.scoped_name
 
     # --- the plugin's hooks -----------------------------------------------------------------
-    def load(self) -> None:
+    def setup(self) -> None:
+        """Read the settings (once, whichever of prepare and load comes first)."""
+        if getattr(self, "rng", None) is not None:
+            return
         rate = self.config.update_rate
         if not math.isfinite(rate) or rate < 0:
             element = self.config.element.find("update_rate")
@@ -57,27 +60,38 @@ class Sensor(Plugin):
                            f"step), got '{element.stripped if element is not None else rate}'",
                            element.location if element is not None else None)
         self.rng = generator(getattr(self.sim, "seed", 0), self.scoped_name)
-        self.period = 1.0 / self.config.update_rate if self.config.update_rate > 0 else 0.0
-        self.missing = self._missing_system()
-        if self.missing:
-            self.sim.transport.logger.warning(
-                f"{self.config.where}: {self.label} publishes nothing: the world does not "
-                f"load {self.missing} (add <plugin filename=\"{self.missing}\" …/> to the "
-                "world), as in Gazebo")
+        self.period = 1.0 / rate if rate > 0 else 0.0
         try:
             self.configure()
         except SdfError as exc:  # say which sensor, wherever in it the mistake is
             if exc.message.startswith(self.label):
                 raise
             raise SdfError(f"{self.label}: {exc.message}", exc.location) from None
-        self.publisher = self.sim.transport.publisher(self.message_type, self.topic_name())
+
+    def prepare(self, spec: Any) -> None:
+        self.setup()
+
+    def load(self) -> None:
+        self.setup()
+        self.missing = self._missing_system()
+        if self.missing:
+            self.sim.transport.logger.warning(
+                f"{self.config.where}: {self.label} publishes nothing: the world does not "
+                f"load {self.missing} (add <plugin filename=\"{self.missing}\" …/> to the "
+                "world), as in Gazebo")
+        self.make_publishers()
         self.reset()
+
+    def make_publishers(self) -> None:
+        self.publisher = self.sim.transport.publisher(self.message_type, self.topic_name())
 
     def configure(self) -> None:
         """Read the sensor's own settings (subclasses)."""
 
     def bind(self, model: Any, data: Any) -> None:
         self.site = model.site(f"{self.entity.name}/{self.config.site}").id
+
+    missing = ""  # the world system it needs and the world lacks
 
     def reset(self) -> None:
         self.next_update = math.inf if self.missing else 0.0

@@ -21,6 +21,7 @@ class _MuJoCoSensors(Sensor):
     readings: tuple[tuple[str, Any], ...] = ()  # (suffix, mjtSensor)
 
     def prepare(self, spec: Any) -> None:
+        super().prepare(spec)
         site = self.in_spec(self.config.site)
         for suffix, kind in self.readings:
             spec.add_sensor(name=f"{site}/{suffix}", type=kind,

@@ -1,0 +1,319 @@
+"""`renderer --world W`: draws a sim's cameras, in a process of its own (sim/sensors/rendering.py).
+
+It takes the world's compiled model and cameras from `/world/W/render/model`, draws each
+camera the sim says is due from the state on `/world/W/render/state` (only the latest one:
+a state that comes while it draws is dropped, and counted), and publishes Gazebo's streams on
+the cameras' topics: images (rgb8, bgr8, mono8, mono16), depth images (32FC1, metres: +inf past
+the far clip, -inf before the near one), points, segmentation maps, and camera_info. It says
+which cameras anyone watches on `/world/W/render/wanted`, so the sim sends states for those
+alone. MuJoCo renders offscreen (`MUJOCO_GL`, egl unless set): on a GPU where there is one,
+else in software; the log names the GL renderer it got.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import sys
+from typing import Any
+
+import numpy as np
+
+from launcher.arguments import Parser
+from launcher.bus import keys
+from launcher.bus.node import Node
+from launcher.bus.qos import LATCHED, QoS
+from launcher.errors import reported
+
+NAME = "renderer"
+WANTED_PERIOD = 0.5  # s: the wanted cameras are said again this often (and on each change)
+
+
+def build_parser() -> Parser:
+    parser = Parser(prog="renderer", description="Draw a running sim's cameras.")
+    parser.add_argument("--world", required=True, help="the world whose cameras to draw")
+    parser.add_argument("--parent", type=int, default=0, metavar="PID",
+                        help="stop when this process (the sim that started it) is gone")
+    return parser
+
+
+class Renderer:
+    def __init__(self, node: Node, world: str) -> None:
+        self.node, self.world = node, world
+        self.logger = node.get_logger()
+        self.model: Any = None
+        self.data: Any = None
+        self.version = -1
+        self.cameras: dict[str, dict[str, Any]] = {}
+        self.publishers: dict[tuple[str, str], Any] = {}
+        self.contexts: dict[tuple[int, int], Any] = {}
+        self.wanted: list[str] = []
+        self.drawn = self.dropped = self.sequence = 0
+        self.classes: dict[str, type] = {}
+        self.wanted_publisher = node.create_publisher(
+            "mujoco_sim/msg/StringMsg", f"/world/{world}/render/wanted", space=keys.SIM)
+        node.create_subscription("mujoco_sim/msg/RenderModel", f"/world/{world}/render/model",
+                                 self.on_model, LATCHED, space=keys.SIM)
+        node.create_subscription("mujoco_sim/msg/RenderState", f"/world/{world}/render/state",
+                                 self.on_state, QoS(depth=1), space=keys.SIM)
+        node.create_timer(WANTED_PERIOD, self.say_wanted)
+
+    # --- the model ---------------------------------------------------------------------------
+    def on_model(self, message: Any) -> None:
+        import mujoco
+
+        self.model = mujoco.MjModel.from_binary_path(
+            "world.mjb", {"world.mjb": bytes(message.model)})
+        self.data = mujoco.MjData(self.model)
+        self.version = message.version
+        cameras = {c["camera"]: c for c in json.loads(message.cameras)}
+        for key in [k for k in self.publishers if k[0] not in cameras]:
+            self.publishers.pop(key).destroy()
+        for name, camera in cameras.items():
+            for stream, topic in camera["topics"].items():
+                if (name, stream) not in self.publishers:
+                    self.publishers[(name, stream)] = self.node.create_publisher(
+                        _TYPES.get(stream, "mujoco_sim/msg/Image"), topic,
+                        QoS(depth=1, reliable=False), space=keys.SIM)
+        self.cameras = cameras
+        self.contexts.clear()  # (they hold the old model)
+        self.say_wanted()
+
+    def say_wanted(self) -> None:
+        wanted = sorted(name for name, camera in self.cameras.items()
+                        if camera["always_on"] or any(
+                            self.publishers[(name, s)].get_subscription_count() > 0
+                            for s in camera["topics"]))
+        if wanted != self.wanted:
+            self.logger.debug(f"cameras watched: {', '.join(wanted) or 'none'}")
+        self.wanted = wanted  # (said again each time: the sim may have started since)
+        self.wanted_publisher.publish(self.message("mujoco_sim/msg/StringMsg",
+                                                        data=json.dumps(wanted)))
+
+    # --- drawing -------------------------------------------------------------------------------
+    def on_state(self, message: Any) -> None:
+        import mujoco
+
+        if message.version != self.version or self.model is None:
+            return
+        if self.sequence and message.sequence > self.sequence + 1:
+            self.dropped += message.sequence - self.sequence - 1  # came while we drew
+            self.logger.debug(f"{self.dropped} frames dropped so far (drawn: {self.drawn})")
+        self.sequence = message.sequence
+        model, data = self.model, self.data
+        data.qpos[:] = message.qpos
+        if model.nmocap:
+            data.mocap_pos[:] = np.asarray(message.mocap_pos).reshape(-1, 3)
+            data.mocap_quat[:] = np.asarray(message.mocap_quat).reshape(-1, 4)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_camlight(model, data)
+        for name in message.cameras:
+            camera = self.cameras.get(name)
+            if camera is not None:
+                self.draw(name, camera, message.time)
+        self.drawn += 1
+
+    def draw(self, name: str, camera: dict[str, Any], stamp: float) -> None:
+        kind, topics = camera["kind"], camera["topics"]
+        header = self.header(camera, stamp)
+        colour = depth = None
+        if "image" in topics:
+            colour = self.render(camera, "rgb")
+            self.publish(name, "image", self.image(header, colour, camera["encoding"]
+                                                   if kind == "camera" else "rgb8"))
+        if "depth_image" in topics:
+            depth = self.render(camera, "depth")
+            self.publish(name, "depth_image", self.image(header, depth, "32FC1"))
+        if "points" in topics and depth is not None and self.watched(name, "points"):
+            self.publish(name, "points", self.points(header, camera, depth, colour))
+        if "labels_map" in topics:
+            labels = self.render(camera, "segmentation")
+            self.publish(name, "labels_map", self.image(header, labels, "rgb8"))
+            self.publish(name, "colored_map", self.image(header, _colour(labels), "rgb8"))
+        self.publish(name, "camera_info", self.camera_info(header, camera))
+
+    def render(self, camera: dict[str, Any], what: str) -> Any:
+        """The camera's picture: RGB (uint8 H×W×3), depth (float32 metres, ±inf outside the
+        clip) or segmentation labels (uint8 H×W×3: each entity's number, wrapped at 256)."""
+        renderer = self.context(camera["width"], camera["height"])
+        near, far = (camera["depth_near"], camera["depth_far"]) if what == "depth" else \
+            (camera["near"], camera["far"])
+        extent = max(float(self.model.stat.extent), 1e-9)
+        self.model.vis.map.znear, self.model.vis.map.zfar = near / extent, min(far, 1e9) / extent
+        if what == "depth":
+            renderer.enable_depth_rendering()
+        elif what == "segmentation":
+            renderer.enable_segmentation_rendering()
+        try:
+            renderer.update_scene(self.data, camera=camera["camera"])
+            picture = renderer.render()
+        finally:
+            renderer.disable_depth_rendering()
+            renderer.disable_segmentation_rendering()
+        if what == "depth":
+            picture = picture.astype(np.float32)
+            picture[picture >= far * 0.999] = np.inf
+            picture[picture < near] = -np.inf
+        elif what == "segmentation":
+            picture = _labels(self.model, picture)
+        return picture
+
+    def context(self, width: int, height: int) -> Any:
+        """A mujoco.Renderer of that size (one GL context each), made once."""
+        import mujoco
+
+        found = self.contexts.get((width, height))
+        if found is None:
+            self.model.vis.global_.offwidth = max(self.model.vis.global_.offwidth, width)
+            self.model.vis.global_.offheight = max(self.model.vis.global_.offheight, height)
+            found = self.contexts[(width, height)] = mujoco.Renderer(self.model, height, width)
+            if len(self.contexts) == 1:
+                self.logger.info(f"drawing the cameras of world '{self.world}' with "
+                                 f"{os.environ.get('MUJOCO_GL', 'egl')}: {_gl_renderer()}")
+        return found
+
+    # --- messages ------------------------------------------------------------------------------
+    def message(self, type_name: str, **fields: Any) -> Any:
+        """A message made straight from its class (byte fields taken as they are)."""
+        found = self.classes.get(type_name)
+        if found is None:
+            from launcher.bus.types import registry
+
+            found = self.classes[type_name] = registry().message_class(type_name)
+        return found(**fields)
+
+    def header(self, camera: dict[str, Any], stamp: float) -> Any:
+        sec = math.floor(stamp)
+        return self.message(
+            "std_msgs/msg/Header",
+            stamp=self.message("builtin_interfaces/msg/Time", sec=sec,
+                                    nanosec=round((stamp - sec) * 1e9)),
+            frame_id=camera["frame_id"])
+
+    def image(self, header: Any, picture: Any, encoding: str) -> Any:
+        if encoding == "bgr8":
+            picture = picture[..., ::-1]
+        elif encoding in ("mono8", "mono16"):
+            grey = picture[..., :3] @ np.array([0.299, 0.587, 0.114])
+            picture = grey.astype(np.uint8) if encoding == "mono8" else \
+                (grey * 257).astype("<u2")
+        height, width = picture.shape[:2]
+        picture = np.ascontiguousarray(picture)
+        return self.message("mujoco_sim/msg/Image", header=header, height=height,
+                                 width=width, encoding=encoding, is_bigendian=0,
+                                 step=picture.strides[0], data=picture.tobytes())
+
+    def points(self, header: Any, camera: dict[str, Any], depth: Any, colour: Any) -> Any:
+        """The depth image as points in the sensor frame (x ahead, y left, z up), with the
+        colour of each where there is one (rgbd)."""
+        fx, _, cx, _, fy, cy = camera["k"][:6]
+        height, width = depth.shape
+        u, v = np.meshgrid(np.arange(width), np.arange(height))
+        finite = np.where(np.isfinite(depth), depth, np.nan)
+        cloud = np.zeros((height, width, 4), dtype=np.float32)
+        cloud[..., 0] = finite
+        cloud[..., 1] = -(u - cx) / fx * finite
+        cloud[..., 2] = -(v - cy) / fy * finite
+        if colour is not None:
+            packed = (colour[..., 0].astype(np.uint32) << 16 | colour[..., 1].astype(np.uint32)
+                      << 8 | colour[..., 2].astype(np.uint32))
+            cloud[..., 3] = packed.view(np.float32)
+        names = ("x", "y", "z", "rgb")
+        fields = [self.message("sensor_msgs/msg/PointField", name=n, offset=4 * i,
+                                    datatype=7, count=1) for i, n in enumerate(names)]
+        return self.message(
+            "mujoco_sim/msg/PointCloudPacked", header=header, height=height, width=width,
+            fields=fields, is_bigendian=False, point_step=16, row_step=16 * width,
+            data=cloud.tobytes(), is_dense=False)
+
+    def camera_info(self, header: Any, camera: dict[str, Any]) -> Any:
+        k = camera["k"]
+        roi = self.message("sensor_msgs/msg/RegionOfInterest", x_offset=0, y_offset=0,
+                                height=0, width=0, do_rectify=False)
+        return self.message(
+            "mujoco_sim/msg/CameraInfo", header=header, height=camera["height"],
+            width=camera["width"], distortion_model="plumb_bob", d=[0.0] * 5, k=k,
+            r=[1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0],
+            p=[k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0], binning_x=0,
+            binning_y=0, roi=roi)
+
+    def watched(self, name: str, stream: str) -> bool:
+        return self.publishers[(name, stream)].get_subscription_count() > 0
+
+    def publish(self, name: str, stream: str, message: Any) -> None:
+        self.publishers[(name, stream)].publish(message)
+
+
+_TYPES = {"camera_info": "mujoco_sim/msg/CameraInfo",
+          "points": "mujoco_sim/msg/PointCloudPacked"}
+
+
+def _labels(model: Any, segmentation: Any) -> Any:
+    """Each pixel's entity (its top-level body's number among the world's, 0 for none) as
+    one label in three channels, as Gazebo's semantic labels map has it."""
+    import mujoco
+
+    ids, types = segmentation[..., 0], segmentation[..., 1]
+    body_of_geom = model.geom_bodyid
+    roots = model.body_rootid
+    labels = np.zeros(ids.shape, dtype=np.int64)
+    geoms = (types == int(mujoco.mjtObj.mjOBJ_GEOM)) & (ids >= 0)
+    labels[geoms] = roots[body_of_geom[ids[geoms]]]
+    label = (labels % 256).astype(np.uint8)
+    return np.stack([label, label, label], axis=-1)
+
+
+def _colour(labels: Any) -> Any:
+    """A colour per label (a fixed pseudo-random one), for looking at."""
+    index = labels[..., 0].astype(np.uint32)
+    return np.stack([(index * 97) % 256, (index * 57) % 256, (index * 151) % 256],
+                    axis=-1).astype(np.uint8)
+
+
+def _gl_renderer() -> str:
+    try:
+        from OpenGL import GL
+
+        return GL.glGetString(GL.GL_RENDERER).decode()
+    except Exception as exc:  # the picture still comes: only the name is unknown
+        return f"(the GL renderer's name is unknown: {type(exc).__name__})"
+
+
+def _die_with(parent: int) -> None:
+    """End when the sim that started us does (SIGTERM from the kernel)."""
+    if not parent:
+        return
+    try:
+        import ctypes
+        import signal
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM, 0, 0, 0)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        pass
+    if os.getppid() != parent:  # it went before we could ask
+        sys.exit(0)
+
+
+def run(argv: list[str]) -> int:
+    args = build_parser().parse_args(argv)
+    _die_with(args.parent)
+    os.environ.setdefault("MUJOCO_GL", "egl")
+    node = Node(NAME, argv=[], space=keys.SIM)
+    try:
+        Renderer(node, args.world)
+        node.spin()
+    finally:
+        node.destroy_node()
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    words = sys.argv[1:] if argv is None else argv
+    if "--ros-args" in words:
+        words = words[:words.index("--ros-args")]
+    return reported(lambda: run(words), NAME)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
