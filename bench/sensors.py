@@ -1,14 +1,22 @@
-"""Sensor benchmarks (issue 31): the lidar against raw `mj_multiRay` on the same scene.
+"""Sensor benchmarks (issue 31): the lidar against raw `mj_multiRay`, the camera against raw
+`mujoco.Renderer`, each on the same scene in the same run.
 
-A 32 × 1800 lidar (57,600 rays) in a scene of 40 obstacles. Raw: `mj_multiRay` on the
+Lidar: a 32 × 1800 lidar (57,600 rays) in a scene of 40 obstacles. Raw: `mj_multiRay` on the
 compiled world, in this process, one call a scan. Delivered: a real sim process, unpaced,
 its lidar at update_rate 0 (a scan every step), a subscriber counting the scans it receives:
-rays/s delivered against raw, same scene, same run. Then the same world paced at real time
-(1 kHz physics) with the lidar at 10 Hz and subscribed: the sim's RTF from its clock.
+rays/s delivered against raw. Then the same world paced at real time (1 kHz physics) with the
+lidar at 10 Hz and subscribed: the sim's RTF from its clock.
+
+Camera: 640 × 480 RGB in the same scene with a shadow-casting light. Raw: `mujoco.Renderer`
+drawing that camera in this process, as fast as it can. Delivered: a real sim at real time,
+the camera always due (update_rate 0), its renderer process drawing as fast as it can, and a
+subscriber counting frames: fps against raw, same run; then the camera asked for at 30 Hz, and
+the sim's RTF meanwhile. Depth the same way (reported).
 """
 
 from __future__ import annotations
 
+import math
 import os
 import random
 import struct
@@ -20,12 +28,19 @@ from pathlib import Path
 
 from _harness import start_router, summary, table
 
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # (the tests' Recorder)
+
 PY = sys.executable
 HORIZONTAL, VERTICAL = 1800, 32
 RAYS = HORIZONTAL * VERTICAL
 
 
-def lidar_world(folder: Path, rate: float) -> Path:
+CAMERA = """<sensor name="camera" type="{kind}"><topic>camera</topic>
+<update_rate>{rate}</update_rate><camera><horizontal_fov>1.2</horizontal_fov><image><width>640</width>
+<height>480</height></image><clip><near>0.1</near><far>50</far></clip></camera></sensor>"""
+
+
+def lidar_world(folder: Path, rate: float, camera: str = "") -> Path:
     rng = random.Random(7)
     obstacles = []
     for i in range(40):
@@ -51,9 +66,11 @@ def lidar_world(folder: Path, rate: float) -> Path:
 <lidar><scan><horizontal><samples>{HORIZONTAL}</samples><min_angle>-3.14159</min_angle>
 <max_angle>3.14159</max_angle></horizontal><vertical><samples>{VERTICAL}</samples>
 <min_angle>-0.3</min_angle><max_angle>0.3</max_angle></vertical></scan>
-<range><min>0.1</min><max>30</max></range></lidar></sensor></link></model>
+<range><min>0.1</min><max>30</max></range></lidar></sensor>{camera}</link></model>
+<light type="directional" name="sun"><cast_shadows>true</cast_shadows><pose>0 0 10 0 0 0</pose>
+<diffuse>0.8 0.8 0.8 1</diffuse><direction>-0.5 0.2 -0.9</direction></light>
 </world></sdf>"""
-    path = folder / f"lidar_{rate:g}.sdf"
+    path = folder / f"lidar_{rate:g}_{'camera' if camera else 'plain'}.sdf"
     path.write_text(text)
     return path
 
@@ -83,9 +100,37 @@ def raw_rays_per_second(world: Path, seconds: float = 3.0) -> float:
     return scans * RAYS / (time.perf_counter() - start)
 
 
-def delivered(world: Path, env: dict[str, str], seconds: float, paced: bool
+def raw_frames_per_second(world: Path, depth: bool, seconds: float = 4.0) -> float:
+    """mujoco.Renderer alone: the same camera of the same scene, as fast as it draws."""
+    import mujoco
+
+    from launcher.sim.world import World
+    from tests.unit.test_sim import Recorder
+
+    os.environ["LAUNCHER_RENDERER"] = "none"
+    try:
+        world_ = World.from_path(world, Recorder())  # (the camera as the sim makes it)
+    finally:
+        del os.environ["LAUNCHER_RENDERER"]
+    model, data = world_.model, world_.data
+    mujoco.mj_forward(model, data)
+    renderer = mujoco.Renderer(model, 480, 640)
+    if depth:
+        renderer.enable_depth_rendering()
+    camera = model.camera("scanner/link/sensor/camera").id
+    frames, start = 0, time.perf_counter()
+    while time.perf_counter() - start < seconds:
+        renderer.update_scene(data, camera=camera)
+        renderer.render()
+        frames += 1
+    renderer.close()
+    return frames / (time.perf_counter() - start)
+
+
+def delivered(world: Path, env: dict[str, str], seconds: float, paced: bool,
+              topic: str = "/lidar", type_name: str = "mujoco_sim/msg/LaserScan"
               ) -> tuple[float, float]:
-    """(scans received per second, the sim's RTF) with a subscriber on the lidar."""
+    """(messages received per second on `topic`, the sim's RTF) with a subscriber there."""
     from launcher.bus import keys
     from launcher.bus.node import Node
 
@@ -101,7 +146,7 @@ def delivered(world: Path, env: dict[str, str], seconds: float, paced: bool
             sec, nanosec = clock.unpack_from(payload)
             clocks.append((time.monotonic(), sec + nanosec * 1e-9))
 
-        node.create_subscription("mujoco_sim/msg/LaserScan", "/lidar",
+        node.create_subscription(type_name, topic,
                                  lambda payload: scans.append(time.monotonic()), raw=True)
         node.create_subscription("mujoco_sim/msg/Clock", "/world/lidar_bench/clock", on_clock,
                                  raw=True)
@@ -123,29 +168,61 @@ def delivered(world: Path, env: dict[str, str], seconds: float, paced: bool
 
 
 def main() -> None:
+    only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
     env, router = start_router()
     folder = Path(tempfile.mkdtemp(prefix="launcher-bench-sensors-"))
     os.environ.setdefault("MUJOCO_GL", "egl")
     try:
         unpaced_world, paced_world = lidar_world(folder, 0), lidar_world(folder, 10)
         ratios, raws, delivered_rates = [], [], []
-        for _ in range(3):  # interleaved: raw, then delivered, on the same scene
+        for _ in range(3 if only != "camera" else 0):  # interleaved: raw, then delivered
             raw = raw_rays_per_second(unpaced_world)
             rate, _ = delivered(unpaced_world, env, 6.0, paced=False)
             raws.append(raw / 1e6)
             delivered_rates.append(rate * RAYS / 1e6)
             ratios.append(rate * RAYS / raw)
-        scans, rtf = delivered(paced_world, env, 10.0, paced=True)
-        rows = [
-            (f"raw mj_multiRay, {VERTICAL} x {HORIZONTAL} rays, 40 obstacles, M rays/s",
-             "report", summary(raws)),
-            ("lidar delivered to a subscriber, unpaced, M rays/s", "report",
-             summary(delivered_rates)),
-            ("delivered / raw rays/s (same run)", ">= 0.80", summary(ratios)),
-            ("lidar at 10 Hz, subscribed: scans/s delivered", "10", f"{scans:.2f}"),
-            ("sim RTF at 1 kHz with the 10 Hz lidar subscribed", ">= 0.98", f"{rtf:.3f}"),
-        ]
-        table("sensors: the lidar", rows)
+        scans, rtf = delivered(paced_world, env, 10.0, paced=True) if only != "camera" else \
+            (math.nan, math.nan)
+        camera_rows = []
+        for kind in ("camera", "depth_camera") if only != "lidar" else ():
+            label = "RGB" if kind == "camera" else "depth"
+            paced_camera = lidar_world(folder, 10, CAMERA.format(kind=kind, rate=30))
+            flat_out = lidar_world(folder, 0, CAMERA.format(kind=kind, rate=0))
+            raw_fps, throughput, ratio, fps, rtfs = [], [], [], [], []
+            for _ in range(2):  # interleaved: raw, then delivered, on the same scene
+                raw = raw_frames_per_second(flat_out, kind == "depth_camera")
+                most, _ = delivered(flat_out, env, 8.0, paced=True, topic="/camera",
+                                    type_name="mujoco_sim/msg/Image")
+                raw_fps.append(raw)
+                throughput.append(most)
+                ratio.append(most / raw)
+                got, camera_rtf = delivered(paced_camera, env, 8.0, paced=True,
+                                            topic="/camera", type_name="mujoco_sim/msg/Image")
+                fps.append(got)
+                rtfs.append(camera_rtf)
+            camera_rows += [
+                (f"raw mujoco.Renderer, 640 x 480 {label}, fps", "report", summary(raw_fps)),
+                (f"{label} camera at update_rate 0 (always due): fps delivered", "report",
+                 summary(throughput)),
+                ("delivered / raw fps (same run)", ">= 0.80" if kind == "camera" else "report",
+                 summary(ratio)),
+                (f"{label} camera asked for at 30 Hz, sim at real time: fps delivered", "30",
+                 summary(fps)),
+                (f"sim RTF while the {label} camera renders at 30 Hz", ">= 0.95",
+                 summary(rtfs))]
+        if only != "camera":
+            rows = [
+                (f"raw mj_multiRay, {VERTICAL} x {HORIZONTAL} rays, 40 obstacles, M rays/s",
+                 "report", summary(raws)),
+                ("lidar delivered to a subscriber, unpaced, M rays/s", "report",
+                 summary(delivered_rates)),
+                ("delivered / raw rays/s (same run)", ">= 0.80", summary(ratios)),
+                ("lidar at 10 Hz, subscribed: scans/s delivered", "10", f"{scans:.2f}"),
+                ("sim RTF at 1 kHz with the 10 Hz lidar subscribed", ">= 0.98", f"{rtf:.3f}"),
+            ]
+            table("sensors: the lidar", rows)
+        if only != "lidar":
+            table("sensors: the camera", camera_rows)
     finally:
         router.terminate()
         router.wait(10)

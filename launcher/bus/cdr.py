@@ -358,9 +358,12 @@ def _read_count(view: memoryview, pos: int, fixed: int | None) -> tuple[int, int
 
 
 def _packed(value: Any, fmt: str, size: int, code: str, count: int) -> bytes:
-    """A numeric array's bytes: straight from an array.array or numpy array of the type."""
+    """A numeric array's bytes: straight from an array.array or numpy array of the type, or
+    from bytes for a byte array (an image's data)."""
     if isinstance(value, array.array) and value.typecode == code:
         return value.tobytes()
+    if size == 1 and isinstance(value, bytes | bytearray | memoryview):
+        return bytes(value)
     dtype = getattr(value, "dtype", None)  # a numpy array, read without importing numpy
     if dtype is not None and dtype.itemsize == size and dtype.kind == _KINDS[fmt] \
             and dtype.byteorder in "=<|":

@@ -222,3 +222,24 @@ def test_ros_gz_sim_demos_camera_launch_bridges_images_unchanged(sensor_ws):
         assert "pixel_format_type: RGB_INT8" in gz.stdout, gz.stdout[:500]
     finally:
         assert stop(proc) == 130
+
+
+def test_ros_gz_image_image_bridge_carries_images_to_ros(sensor_ws):
+    sensor_ws.write("cam.sdf", CAMERA_WORLD)
+    sensor_ws.write("images.launch.yaml", """
+    launch:
+      - executable: {cmd: "gz sim -s -r cam.sdf", output: screen}
+      - node: {pkg: ros_gz_image, exec: image_bridge, args: "/camera /depth_camera",
+               output: screen}
+    """)
+    proc = sensor_ws.start("launch", "images.launch.yaml", output="launch.out")
+    try:
+        sensor_ws.wait_for_output("bridging 2 of 2 entries", 60, "launch.out")
+        depth = sensor_ws.run("topic", "echo", "/depth_camera", "sensor_msgs/msg/Image",
+                              "--once", "--no-arr", "--timeout", "60", timeout=90)
+        assert depth.returncode == 0, depth.stderr
+        assert "encoding: 32FC1" in depth.stdout and "width: 64" in depth.stdout
+        bad = sensor_ws.run("run", "ros_gz_image", "image_bridge", timeout=60)
+        assert bad.returncode == 1 and "name the image topics to bridge" in bad.stderr
+    finally:
+        assert stop(proc) == 130

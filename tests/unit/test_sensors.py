@@ -249,3 +249,65 @@ def test_bad_sensor_input_is_located_and_leaves_the_sensor_out(tmp_path, body, k
 def test_two_sensors_of_one_name_in_a_link_are_an_error(tmp_path):
     with pytest.raises(LaunchError, match="two sensors named 'imu' in link 'link'"):
         world_with(tmp_path, sensor("imu", "imu") + sensor("imu", "magnetometer"))
+
+
+# --- cameras: their settings, checked where the sim reads them ----------------------------
+def camera(body: str = "", kind: str = "camera", topic: str = "") -> str:
+    return sensor("cam", kind, f"<camera>{body}</camera>", rate=10, topic=topic)
+
+
+@pytest.mark.parametrize("body, expected", [
+    ("<image><width>0</width><height>48</height></image>",
+     "<image><width> must be a whole number of pixels from 1 to 8192, got '0'"),
+    ("<image><width>100000</width><height>48</height></image>",
+     "<image><width> must be a whole number of pixels from 1 to 8192, got '100000'"),
+    ("<image><width>8000</width><height>8000</height></image>",
+     "8000 x 8000 pixels is more than the 16777216 a frame may hold"),
+    ("<image><format>R8G8B9</format></image>",
+     "unknown image format 'R8G8B9' (did you mean 'R8G8B8'"),
+    ("<horizontal_fov>4</horizontal_fov>", "<horizontal_fov> must be a number from 0.001 to"),
+    ("<clip><near>2</near><far>1</far></clip>", "<clip><far> must be a number from 2 to inf"),
+], ids=["no-pixels", "too-wide", "too-many-pixels", "format", "fov", "clip"])
+def test_a_cameras_bad_settings_are_located_and_leave_it_out(tmp_path, monkeypatch, body,
+                                                              expected):
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")  # (the renderer process is not the point)
+    world = world_with(tmp_path, camera(body))
+    run(world, 0.05)
+    said = "\n".join(world.transport.messages("error"))
+    assert "world.sdf:14" in said and expected in said and "is left out" in said, said
+
+
+@pytest.mark.parametrize("kind, topic, expected", [
+    ("camera", "", {"image": "/world/w/model/box/link/link/sensor/cam/image",
+                    "camera_info": "/world/w/model/box/link/link/sensor/cam/camera_info"}),
+    ("camera", "front", {"image": "/front", "camera_info": "/camera_info"}),
+    ("depth_camera", "depth", {"depth_image": "/depth", "points": "/depth/points",
+                               "camera_info": "/camera_info"}),
+    ("rgbd_camera", "rgbd", {"image": "/rgbd/image", "depth_image": "/rgbd/depth_image",
+                             "points": "/rgbd/points", "camera_info": "/rgbd/camera_info"}),
+    ("segmentation_camera", "seg", {"labels_map": "/seg/labels_map",
+                                    "colored_map": "/seg/colored_map",
+                                    "camera_info": "/seg/camera_info"}),
+], ids=["default", "camera", "depth", "rgbd", "segmentation"])
+def test_cameras_publish_on_gz_sensors_topics(tmp_path, monkeypatch, kind, topic, expected):
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    world = world_with(tmp_path, camera(kind=kind, topic=topic))
+    plugin = world.entities["box"].plugins[0]
+    assert plugin.topics() == expected
+    settings = plugin.settings()
+    assert (settings["width"], settings["height"]) == (320, 240)  # SDFormat's defaults
+    assert settings["encoding"] == ("32FC1" if kind == "depth_camera" else "rgb8")
+    fx = 320 / (2 * math.tan(1.047 / 2))
+    assert settings["k"] == pytest.approx([fx, 0, 160, 0, fx, 120, 0, 0, 1])
+    assert world.model.cam_fovy[world.model.camera("box/link/sensor/cam").id] == \
+        pytest.approx(math.degrees(2 * math.atan(120 / fx)))
+
+
+def test_a_camera_looks_along_the_sensors_x_axis(tmp_path, monkeypatch):
+    """Gazebo's cameras look along +x with +z up; MuJoCo's along -z with +y up."""
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    world = world_with(tmp_path, sensor("cam", "camera", pose="0 0 0 0 0 1.5707963"))
+    run(world, 0.001)
+    xmat = world.data.cam_xmat[world.model.camera("box/link/sensor/cam").id].reshape(3, 3)
+    assert -xmat[:, 2] == pytest.approx([0, 1, 0], abs=1e-6)  # looking along world +y
+    assert xmat[:, 1] == pytest.approx([0, 0, 1], abs=1e-6)  # up is up
