@@ -71,7 +71,12 @@ class Templates:
             prepared = urdf.prepare(text, label, path.parent if path else None, self.packages,
                                     self.environ)
             spec = _spec_from(prepared.text, label)
-            return Template(spec, prepared.name, label, prepared.plugins, prepared.friction)
+            for config, pose in prepared.sensors:  # a site at each sensor's pose on its link
+                site = spec.body(config.link).add_site(name=config.site, group=5)
+                site.pos, site.quat = list(pose.pos), list(pose.quat)
+            return Template(spec, prepared.name, label,
+                            [*prepared.plugins, *(c for c, _ in prepared.sensors)],
+                            prepared.friction, warnings=prepared.warnings)
         if stripped.startswith("<mujoco"):
             source = mjcf.read(text, path, environ=self.environ)
             spec = mjcf.compile_spec(source)

@@ -19,6 +19,15 @@ def line_of(text: str, element: ET.Element, tag: str) -> str:
     return str(text.count("\n", 0, index) + 1) if index >= 0 else "?"
 
 
+def place_of(text: str, element: ET.Element, tag: str) -> str:
+    """`line:column` of an element, found as line_of finds it."""
+    name = element.get("name")
+    index = text.find(f'<{tag} name="{name}"' if name else f"<{tag}")
+    if index < 0:
+        return "?"
+    return f"{text.count(chr(10), 0, index) + 1}:{index - text.rfind(chr(10), 0, index)}"
+
+
 def parse_robot(text: str, label: str) -> ET.Element:
     """The <robot> element of a URDF; bad XML names its line and column."""
     try:

@@ -311,3 +311,61 @@ def test_a_camera_looks_along_the_sensors_x_axis(tmp_path, monkeypatch):
     xmat = world.data.cam_xmat[world.model.camera("box/link/sensor/cam").id].reshape(3, 3)
     assert -xmat[:, 2] == pytest.approx([0, 1, 0], abs=1e-6)  # looking along world +y
     assert xmat[:, 1] == pytest.approx([0, 0, 1], abs=1e-6)  # up is up
+
+
+# --- sensors declared in a URDF, as most ROS robots declare theirs ------------------------
+URDF_SENSORS = """<?xml version="1.0"?>
+<robot name="bot">
+  <link name="base_link">
+    <inertial><mass value="2"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/>
+    </inertial>
+    <collision><geometry><box size="0.4 0.4 0.2"/></geometry></collision>
+  </link>
+  <link name="imu_link"/>
+  <joint name="imu_joint" type="fixed"><parent link="base_link"/><child link="imu_link"/>
+    <origin xyz="0 0 0.2"/></joint>
+  <link name="laser_link"/>
+  <joint name="laser_joint" type="fixed"><parent link="base_link"/><child link="laser_link"/>
+    <origin xyz="0 0 0.3"/></joint>
+  <gazebo reference="laser_joint"><preserveFixedJoint>true</preserveFixedJoint></gazebo>
+  <gazebo reference="imu_link">
+    <sensor name="imu" type="imu"><always_on>true</always_on><update_rate>50</update_rate>
+    </sensor>
+  </gazebo>
+  <gazebo reference="laser_link">
+    <sensor name="laser" type="gpu_lidar"><update_rate>10</update_rate><topic>scan</topic>
+      <lidar><scan><horizontal><samples>4</samples><min_angle>0</min_angle>
+      <max_angle>1.5707963</max_angle></horizontal></scan>
+      <range><min>0.1</min><max>10</max></range></lidar>
+    </sensor>
+  </gazebo>
+  <gazebo reference="imu_lnk">
+    <sensor name="lost" type="imu"/>
+  </gazebo>
+</robot>
+"""
+
+
+def test_a_urdfs_gazebo_sensors_run_on_its_links_named_as_gazebo_names_them(tmp_path):
+    """`<gazebo reference="link"><sensor>`: the sensor sits at its link's pose; Gazebo lumps a
+    fixed link into its parent, so the IMU on imu_link is named under base_link (its topic
+    and frame id as `gz topic -l` shows them) unless the joint is preserved."""
+    world = world_with(tmp_path, "", extra="""<model name="wall"><static>true</static>
+        <pose>3 0 1 0 0 0</pose><link name="link"><collision name="c"><geometry><box>
+        <size>0.2 10 2</size></box></geometry></collision></link></model>""")
+    (tmp_path / "bot.urdf").write_text(URDF_SENSORS)
+    world.spawn_file(str(tmp_path / "bot.urdf"), "bot", (0, 0, 1.1, 0, 0, 0))
+    run(world, 0.5)
+    published = world.transport.published
+    imu = published["/world/w/model/bot/link/base_link/sensor/imu/imu"]
+    assert 20 <= len(imu) <= 30 and imu[-1].header.frame_id == "bot::base_link::imu"
+    scan = published["/scan"][-1]
+    assert scan.header.frame_id == "bot::laser_link::laser"  # its joint is preserved
+    # the first ray looks along x from the laser's height, at the wall's face (2.9 m)
+    assert scan.ranges[0] == pytest.approx(2.9, abs=0.02)
+    warned = "\n".join(world.transport.messages("warning"))
+    assert re.search(r"bot\.urdf:27:5: sensor 'lost': <gazebo reference=\"imu_lnk\"> names no "
+                     r"link of the robot \(did you mean 'imu_link'\?\); it is left out", warned)
+    site = world.data.site("bot/imu_link/sensor/imu")
+    body = world.data.body("bot/base_link")
+    assert site.xpos[2] - body.xpos[2] == pytest.approx(0.2, abs=1e-6)

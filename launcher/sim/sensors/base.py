@@ -31,10 +31,10 @@ class Sensor(Plugin):
     @property
     def scoped_name(self) -> str:
         """`model::link::sensor`: the sensor's name and default frame id in Gazebo."""
-        return f"{self.entity.name}::{self.config.link}::{self.config.name}"
+        return f"{self.entity.name}::{self.config.scope_link}::{self.config.name}"
 
     def default_topic(self) -> str:
-        *models, link = self.config.link.split("::")
+        *models, link = self.config.scope_link.split("::")
         path = "".join(f"/model/{m}" for m in [self.entity.name, *models])
         return f"/world/{self.sim.world_name}{path}/link/{link}/sensor/{self.config.name}"
 

@@ -21,6 +21,12 @@ class SensorConfig(PluginConfig):
     update_rate: float = 0.0  # Hz; 0: every step
     always_on: bool = False
     frame_id: str | None = None
+    named_link: str = ""  # the link Gazebo names it under, where not `link`: a URDF's fixed
+    # links are lumped into their parent, and their sensors with them
+
+    @property
+    def scope_link(self) -> str:
+        return self.named_link or self.link
 
     @property
     def site(self) -> str:
