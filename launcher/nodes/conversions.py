@@ -21,7 +21,8 @@ SIM = "mujoco_sim"
 SIM_MESSAGES = ("Clock", "Twist", "Odometry", "Pose", "PoseV", "Model", "ModelStates",
                 "Double", "Float", "Boolean", "Int32", "StringMsg", "Empty", "EntityFactory",
                 "WorldControl", "Entity", "IMU", "Magnetometer", "FluidPressure", "Altimeter",
-                "NavSat", "LaserScan", "PointCloudPacked", "Image", "CameraInfo")
+                "NavSat", "LaserScan", "PointCloudPacked", "Image", "CameraInfo", "Wrench",
+                "Contacts", "AirSpeedSensor")
 # (request, response) of Gazebo's services → the sim's service type
 SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
                 ("EntityFactory", "Boolean"): f"{SIM}/srv/Create",
@@ -107,6 +108,11 @@ def _pose(p: Any) -> dict[str, Any]:
 def _twist(t: Any) -> dict[str, Any]:
     return {"linear": {"x": t.linear.x, "y": t.linear.y, "z": t.linear.z},
             "angular": {"x": t.angular.x, "y": t.angular.y, "z": t.angular.z}}
+
+
+def _wrench(w: Any) -> dict[str, Any]:
+    return {"force": {"x": w.force.x, "y": w.force.y, "z": w.force.z},
+            "torque": {"x": w.torque.x, "y": w.torque.y, "z": w.torque.z}}
 
 
 def _header(h: Any) -> dict[str, Any]:
@@ -218,6 +224,12 @@ def conversions() -> dict[tuple[str, str], Conversion]:
         ("sensor_msgs/msg/Image", f"{m}/Image"): same,
         ("sensor_msgs/msg/CameraInfo", f"{m}/CameraInfo"): same,
         ("ros_gz_interfaces/msg/Altimeter", f"{m}/Altimeter"): same,
+        ("ros_gz_interfaces/msg/Contacts", f"{m}/Contacts"): same,
+        ("ros_gz_interfaces/msg/AirSpeed", f"{m}/AirSpeedSensor"): same,
+        ("geometry_msgs/msg/WrenchStamped", f"{m}/Wrench"): same,
+        ("geometry_msgs/msg/Wrench", f"{m}/Wrench"): Conversion(
+            _via(f"{m}/Wrench", "geometry_msgs/msg/Wrench", lambda w: _wrench(w.wrench)),
+            _via("geometry_msgs/msg/Wrench", f"{m}/Wrench", lambda w: {"wrench": _wrench(w)})),
         ("sensor_msgs/msg/NavSatFix", f"{m}/NavSat"): Conversion(
             _via(f"{m}/NavSat", "sensor_msgs/msg/NavSatFix", _nav_sat_fix), None),
     }

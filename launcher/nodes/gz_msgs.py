@@ -99,6 +99,26 @@ def _camera_info_to_gz(d: Data) -> Data:
             "rectification_matrix": list(d.get("r") or [])}
 
 
+def _contact_to_gz(c: Data) -> Data:
+    """One touching pair as gz.msgs.Contact: its entities by name and id, and per point the
+    position, normal, depth and the wrench on each body."""
+    def entity(e: Data | None) -> Data:
+        return {"name": (e or {}).get("name", ""), "id": (e or {}).get("id", 0)}
+
+    def wrench(w: Data) -> Data:
+        return {"body_1_name": (w.get("body_1_name") or {}).get("data", ""),
+                "body_1_id": (w.get("body_1_id") or {}).get("data", 0),
+                "body_2_name": (w.get("body_2_name") or {}).get("data", ""),
+                "body_2_id": (w.get("body_2_id") or {}).get("data", 0),
+                "body_1_wrench": w.get("body_1_wrench", {}),
+                "body_2_wrench": w.get("body_2_wrench", {})}
+
+    return {"collision1": entity(c.get("collision1")), "collision2": entity(c.get("collision2")),
+            "position": list(c.get("positions") or []), "normal": list(c.get("normals") or []),
+            "depth": list(c.get("depths") or []),
+            "wrench": [wrench(w) for w in c.get("wrenches") or []]}
+
+
 _POINT_TYPES = {1: "INT8", 2: "UINT8", 3: "INT16", 4: "UINT16", 5: "INT32", 6: "UINT32",
                 7: "FLOAT32", 8: "FLOAT64"}
 
@@ -128,6 +148,13 @@ TO_GZ: dict[str, Callable[[Data], Data]] = {
     "PointCloudPacked": _point_cloud_to_gz,
     "Image": _image_to_gz,
     "CameraInfo": _camera_info_to_gz,
+    "Wrench": lambda d: {"header": _header_to_gz(d.get("header")),
+                         **(d.get("wrench") or {})},
+    "Contacts": lambda d: {"header": _header_to_gz(d.get("header")),
+                           "contact": [_contact_to_gz(c) for c in d.get("contacts") or []]},
+    "AirSpeedSensor": lambda d: {"header": _header_to_gz(d.get("header")),
+                                 "diff_pressure": d.get("diff_pressure", 0.0),
+                                 "temperature": d.get("temperature", 0.0)},
 }
 
 TO_SIM: dict[str, Callable[[Data], Data]] = {

@@ -81,23 +81,32 @@ def prepare(text: str, label: str, base: Path | None, packages: object | None = 
 
 def _sensor(result: Urdf, robot: ET.Element, text: str, label: str, sensor: ET.Element,
             reference: str | None, preserved: set[str]) -> None:
-    """A `<gazebo reference="link"><sensor>`: read as SDF reads it (at its own line of the
-    URDF), on the link it names; a link the robot lacks is a warning, the sensor left out."""
+    """A `<gazebo reference="link"><sensor>`: read as SDF reads it (at its own place in the
+    URDF), on the link it names, or on a joint (at the joint, on its child link); a reference
+    to neither is a warning, the sensor left out."""
     place = place_of(text, sensor, "sensor")
     line, column = (int(n) for n in place.split(":")) if place != "?" else (1, 1)
     # the sensor's XML at its own place, so what SDF's reader says of it points into the URDF
     element = parse("\n" * (line - 1) + " " * (column - 1)
                     + ET.tostring(sensor, encoding="unicode"), label)
-    links = [link.get("name", "") for link in robot.findall("link")]
-    if reference not in links:
-        result.warnings.append(
-            f"{label}:{place}: sensor '{sensor.get('name', '')}': <gazebo reference="
-            f"\"{reference or ''}\"> names no link of the robot"
-            f"{did_you_mean(reference or '', links)}; it is left out")
-        return
 
     def warn(where: Any, message: str) -> None:
         result.warnings.append(f"{where.location.file}:{where.location.line}: {message}")
+
+    links = [link.get("name", "") for link in robot.findall("link")]
+    joints = {joint.get("name", ""): joint.find("child").get("link", "")
+              for joint in robot.findall("joint") if joint.find("child") is not None}
+    if reference in joints:  # a joint's sensor (force_torque), on its child at the joint
+        config = sensor_config(element, joints[reference], warn, joint=reference)
+        if config is not None:
+            result.sensors.append((config, parse_pose(element.find("pose"))))
+        return
+    if reference not in links:
+        result.warnings.append(
+            f"{label}:{place}: sensor '{sensor.get('name', '')}': <gazebo reference="
+            f"\"{reference or ''}\"> names no link or joint of the robot"
+            f"{did_you_mean(reference or '', [*links, *joints])}; it is left out")
+        return
 
     config = sensor_config(element, reference, warn)
     if config is not None:

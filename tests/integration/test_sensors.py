@@ -104,8 +104,16 @@ def test_gz_sims_sensors_world_publishes_its_sensors_and_says_what_it_lacks(sens
                                  timeout=60)
         found = re.search(r"pressure: ([\d.]+)", pressure.stdout)
         assert found and 99000 < float(found.group(1)) < 100500, pressure.stdout  # 123 m up
+        wrench = sensor_ws.run("gz", "topic", "-e", "-t", "/world/sensors/model/"
+                               "force_torque_demo/joint/joint_01/sensor/force_torque/"
+                               "forcetorque", "-n", "1", timeout=60).stdout
+        # the 10 kg link stands on its joint: the joint holds it up
+        found = re.search(r"force \{[^}]*z: ([\d.]+)", wrench)
+        assert found and float(found.group(1)) == pytest.approx(98, rel=0.02), wrench
+        assert 'value: "force_torque_demo::joint_01::force_torque"' in wrench, wrench
         said = sensor_ws.output("sim.out")
-        assert "sensors.sdf:156: sensor 'air_speed' (type air_speed) is not simulated" in said
+        assert ("sensors.sdf:156: sensor 'air_speed' (air_speed) publishes nothing: the world "
+                "does not load gz-sim-air-speed-system") in said, said
     finally:
         assert stop(proc) == 0
 

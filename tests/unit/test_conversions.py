@@ -165,7 +165,10 @@ def test_the_sensors_types_pass_through_the_bridge_as_ros_lays_them_out():
                      ("sensor_msgs/msg/PointCloud2", "PointCloudPacked"),
                      ("sensor_msgs/msg/MagneticField", "Magnetometer"),
                      ("sensor_msgs/msg/FluidPressure", "FluidPressure"),
-                     ("ros_gz_interfaces/msg/Altimeter", "Altimeter")):
+                     ("ros_gz_interfaces/msg/Altimeter", "Altimeter"),
+                     ("ros_gz_interfaces/msg/Contacts", "Contacts"),
+                     ("ros_gz_interfaces/msg/AirSpeed", "AirSpeedSensor"),
+                     ("geometry_msgs/msg/WrenchStamped", "Wrench")):
         assert reg.fields(reg.ensure(ros)) == reg.fields(reg.ensure(f"mujoco_sim/msg/{sim}"))
         conversion = conversions.find(ros, f"mujoco_sim/msg/{sim}")
         assert conversion.to_ros(b"\x00\x01\x00\x00abc") == b"\x00\x01\x00\x00abc"
@@ -179,3 +182,21 @@ def test_the_sensors_types_pass_through_the_bridge_as_ros_lays_them_out():
                                  "mujoco_sim/msg/NavSat").to_ros(fix)
     read = reg.reader("sensor_msgs/msg/NavSatFix", lambda name, values: values)(converted)
     assert read[2:5] == [45.0, 7.0, 200.0] and read[1][1] == 1  # status.service: GPS
+
+
+def test_a_wrench_loses_its_header_to_geometry_msgs_wrench_and_gains_one_back():
+    reg = registry()
+    cls = reg.message_class
+    vector = cls("geometry_msgs/msg/Vector3")
+    stamped = reg.writer("mujoco_sim/msg/Wrench")(cls("mujoco_sim/msg/Wrench")(
+        header=cls("std_msgs/msg/Header")(stamp=cls("builtin_interfaces/msg/Time")(
+            sec=1, nanosec=2), frame_id="m::j::ft"),
+        wrench=cls("geometry_msgs/msg/Wrench")(force=vector(x=1.0, y=2.0, z=3.0),
+                                               torque=vector(x=4.0, y=5.0, z=6.0))))
+    conversion = conversions.find("geometry_msgs/msg/Wrench", "mujoco_sim/msg/Wrench")
+    plain = conversion.to_ros(stamped)
+    assert reg.reader("geometry_msgs/msg/Wrench", lambda name, values: values)(plain) == \
+        [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]
+    back = reg.reader("mujoco_sim/msg/Wrench", lambda name, values: values)(
+        conversion.to_sim(plain))
+    assert back[1] == [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]

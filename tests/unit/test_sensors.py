@@ -196,7 +196,8 @@ def test_a_lidar_does_no_work_while_nobody_listens_unless_always_on(tmp_path):
 def test_a_sensor_whose_system_the_world_lacks_publishes_nothing_and_says_why(tmp_path):
     world = world_with(tmp_path, sensor("imu", "imu"), systems="")
     run(world, 0.1)
-    assert world.transport.published["/world/w/model/box/link/link/sensor/imu/imu"] == []
+    # not even advertised, as in Gazebo
+    assert "/world/w/model/box/link/link/sensor/imu/imu" not in world.transport.published
     said = [m for m in world.transport.messages("warning") if "sensor 'imu'" in m]
     assert len(said) == 1 and "does not load gz-sim-imu-system" in said[0]
 
@@ -324,7 +325,8 @@ URDF_SENSORS = """<?xml version="1.0"?>
   <link name="imu_link"/>
   <joint name="imu_joint" type="fixed"><parent link="base_link"/><child link="imu_link"/>
     <origin xyz="0 0 0.2"/></joint>
-  <link name="laser_link"/>
+  <link name="laser_link"><inertial><mass value="0.5"/>
+    <inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
   <joint name="laser_joint" type="fixed"><parent link="base_link"/><child link="laser_link"/>
     <origin xyz="0 0 0.3"/></joint>
   <gazebo reference="laser_joint"><preserveFixedJoint>true</preserveFixedJoint></gazebo>
@@ -339,6 +341,13 @@ URDF_SENSORS = """<?xml version="1.0"?>
       <range><min>0.1</min><max>10</max></range></lidar>
     </sensor>
   </gazebo>
+  <gazebo reference="base_link">
+    <sensor name="bumper" type="contact"><contact><collision>base_link_collision</collision>
+    </contact></sensor>
+  </gazebo>
+  <gazebo reference="laser_joint">
+    <sensor name="ft" type="force_torque"><always_on>true</always_on></sensor>
+  </gazebo>
   <gazebo reference="imu_lnk">
     <sensor name="lost" type="imu"/>
   </gazebo>
@@ -350,7 +359,7 @@ def test_a_urdfs_gazebo_sensors_run_on_its_links_named_as_gazebo_names_them(tmp_
     """`<gazebo reference="link"><sensor>`: the sensor sits at its link's pose; Gazebo lumps a
     fixed link into its parent, so the IMU on imu_link is named under base_link (its topic
     and frame id as `gz topic -l` shows them) unless the joint is preserved."""
-    world = world_with(tmp_path, "", extra="""<model name="wall"><static>true</static>
+    world = world_with(tmp_path, "", systems=MORE_SYSTEMS, extra="""<model name="wall"><static>true</static>
         <pose>3 0 1 0 0 0</pose><link name="link"><collision name="c"><geometry><box>
         <size>0.2 10 2</size></box></geometry></collision></link></model>""")
     (tmp_path / "bot.urdf").write_text(URDF_SENSORS)
@@ -364,8 +373,124 @@ def test_a_urdfs_gazebo_sensors_run_on_its_links_named_as_gazebo_names_them(tmp_
     # the first ray looks along x from the laser's height, at the wall's face (2.9 m)
     assert scan.ranges[0] == pytest.approx(2.9, abs=0.02)
     warned = "\n".join(world.transport.messages("warning"))
-    assert re.search(r"bot\.urdf:27:5: sensor 'lost': <gazebo reference=\"imu_lnk\"> names no "
-                     r"link of the robot \(did you mean 'imu_link'\?\); it is left out", warned)
+    assert re.search(r"bot\.urdf:35:5: sensor 'lost': <gazebo reference=\"imu_lnk\"> names no "
+                     r"link or joint of the robot \(did you mean 'imu_link'.*\?\); it is left out",
+                     warned)
     site = world.data.site("bot/imu_link/sensor/imu")
     body = world.data.body("bot/base_link")
     assert site.xpos[2] - body.xpos[2] == pytest.approx(0.2, abs=1e-6)
+    run(world, 0.6)  # landed: its collision is named as Gazebo's URDF import names it
+    touch = published["/world/w/model/bot/link/base_link/sensor/bumper/contact"][-1]
+    assert touch.contacts[0].collision1.name == "bot::base_link::base_link_collision"
+    # the laser's joint carries the laser's weight
+    held = published["/world/w/model/bot/joint/laser_joint/sensor/ft/forcetorque"][-1]
+    assert held.wrench.force.z == pytest.approx(0.5 * 9.8, rel=0.05)
+    assert held.header.frame_id == "bot::laser_joint::ft"
+
+
+# --- force-torque, contact and air speed ----------------------------------------------------
+MORE_SYSTEMS = SYSTEMS + """
+<plugin filename="gz-sim-forcetorque-system" name="gz::sim::systems::ForceTorque"/>
+<plugin filename="ignition-gazebo-contact-system" name="c"/>
+<plugin filename="libgz-sim8-air-speed-system.so" name="a"/>"""
+
+PENDULUM = """<model name="pendulum"><pose>5 0 0 0 0 0</pose>
+<link name="base"/>
+<link name="bob"><pose>0 0 1 0 0 0</pose><inertial><mass>2</mass><inertia><ixx>0.01</ixx>
+<iyy>0.01</iyy><izz>0.01</izz></inertia></inertial></link>
+<joint name="fix" type="fixed"><parent>world</parent><child>base</child></joint>
+<joint name="hinge" type="revolute"><parent>base</parent><child>bob</child>
+<pose>0 0 0.5 0 0 0</pose><axis><xyz>1 0 0</xyz></axis>
+<sensor name="ft" type="force_torque"><update_rate>50</update_rate>{settings}</sensor>
+</joint></model>"""
+
+
+@pytest.mark.parametrize("settings, force, torque", [
+    ("", (0, 0, 19.6), (0, 0, 0)),  # the child's frame, the parent holding it up
+    ("<force_torque><measure_direction>parent_to_child</measure_direction></force_torque>",
+     (0, 0, -19.6), (0, 0, 0)),
+], ids=["default", "parent-to-child"])
+def test_a_joints_force_torque_sensor_reads_what_the_joint_carries(tmp_path, settings, force,
+                                                                 torque):
+    """A 2 kg bob hanging still below its hinge (the joint's frame 0.5 m above its centre):
+    the joint holds up its weight, and no torque acts about the axis."""
+    world = world_with(tmp_path, "", systems=MORE_SYSTEMS,
+                       extra=PENDULUM.format(settings=settings))
+    run(world, 0.2)
+    topic = "/world/w/model/pendulum/joint/hinge/sensor/ft/forcetorque"  # gz-sim's scoped one
+    readings = world.transport.published[topic]
+    assert 8 <= len(readings) <= 12
+    wrench = readings[-1].wrench
+    assert (wrench.force.x, wrench.force.y, wrench.force.z) == pytest.approx(force, abs=0.05)
+    assert (wrench.torque.x, wrench.torque.y, wrench.torque.z) == pytest.approx(torque,
+                                                                                abs=0.05)
+    assert readings[-1].header.frame_id == "pendulum::hinge::ft"
+
+
+def test_a_bad_force_torque_frame_is_located_with_did_you_mean(tmp_path):
+    world = world_with(tmp_path, "", systems=MORE_SYSTEMS, extra=PENDULUM.format(
+        settings="<force_torque><frame>chidl</frame></force_torque>"))
+    run(world, 0.05)
+    said = "\n".join(world.transport.messages("error"))
+    assert re.search(r"world\.sdf:\d+:\d+: sensor 'ft' \(force_torque\): <frame> 'chidl' is "
+                     r"not one of child, parent, sensor \(did you mean 'child'\?\)", said), said
+
+
+def test_contact_reports_the_colliding_pair_only_while_they_touch(tmp_path):
+    """A box dropped onto the ground: nothing while it falls, then the pair (its collision and
+    the ground's), points at the ground's height, normals along z, and its weight shared
+    among the points."""
+    contact = sensor("bumper", "contact", "<contact><collision>c</collision></contact>",
+                     rate=0)
+    world = world_with(tmp_path, contact, systems=MORE_SYSTEMS, static=False,
+                       pose="0 0 0.8 0 0 0")
+    run(world, 0.1)
+    topic = "/world/w/model/box/link/link/sensor/bumper/contact"
+    assert not world.transport.published.get(topic)  # falling: no message at all
+    run(world, 1.0)
+    last = world.transport.published[topic][-1]
+    (pair,) = last.contacts
+    assert (pair.collision1.name, pair.collision2.name) == ("box::link::c", "ground::link::c")
+    assert pair.collision1.type == 5 and len(pair.positions) >= 1
+    assert all(p.z == pytest.approx(0, abs=0.01) for p in pair.positions)
+    assert all(abs(n.z) == pytest.approx(1, abs=1e-3) for n in pair.normals)
+    lifted = sum(w.body_1_wrench.force.z for w in pair.wrenches)
+    assert lifted == pytest.approx(9.8, rel=0.05)  # the ground holds the 1 kg box up
+
+
+def test_a_contact_sensor_naming_no_collision_says_which_there_are(tmp_path):
+    contact = sensor("bumper", "contact", "<contact><collision>cc</collision></contact>")
+    world = world_with(tmp_path, contact, systems=MORE_SYSTEMS, static=False)
+    run(world, 0.5)
+    said = "\n".join(world.transport.messages("warning"))
+    assert re.search(r"world\.sdf:\d+: sensor 'bumper' \(contact\): link 'link' has no "
+                     r"collision 'cc' \(did you mean 'c'\?\) \(its collisions: c\)", said)
+    assert not world.transport.published.get("/world/w/model/box/link/link/sensor/bumper/contact")
+
+
+def test_air_speed_reads_the_dynamic_pressure_of_flying_forward(tmp_path):
+    """A box at 10 m/s along its x axis, 100 m up: ½ρv² with the standard atmosphere's density
+    there, and its temperature."""
+    world = world_with(tmp_path, sensor("pitot", "air_speed"), systems=MORE_SYSTEMS,
+                       static=False, pose="0 0 100 0 0 0",
+                       world_extra="<gravity>0 0 0</gravity>")
+    world.data.qvel[0] = 10.0
+    run(world, 0.05)
+    reading = world.transport.published["/world/w/model/box/link/link/sensor/pitot/air_speed"][-1]
+    temperature = 288.15 - 0.0065 * 100
+    density = 1.225 / (288.15 / temperature) ** 4.256
+    assert reading.temperature == pytest.approx(temperature, abs=1e-3)
+    assert reading.diff_pressure == pytest.approx(0.5 * density * 100, rel=1e-3)
+
+
+def test_two_sensors_of_different_types_on_one_topic_leave_the_second_out(tmp_path):
+    both = sensor("baro", "air_pressure", topic="air") + sensor("pitot", "air_speed", topic="air")
+    world = world_with(tmp_path, both, systems=MORE_SYSTEMS)
+    run(world, 0.05)
+    said = "\n".join(world.transport.messages("warning"))
+    assert re.search(r"world\.sdf:\d+: sensor 'pitot' \(air_speed\) is left out: sensor 'baro' "
+                     r"\(air_pressure\) \(.*world\.sdf:\d+\) publishes gz\.msgs\.FluidPressure "
+                     r"on /air, and this one would publish gz\.msgs\.AirSpeedSensor there; give "
+                     r"one of them a <topic> of its own", said), said
+    assert world.transport.published["/air"]
+    assert all(hasattr(m, "fluid_pressure") for m in world.transport.published["/air"])

@@ -39,6 +39,8 @@ class Builder:
             body.gravcomp = 1.0
         self._geoms(body, link)
         self._sensors(body, link)
+        if joint is not None:
+            self._joint_sensors(body, joint, link)
         set_inertial(body, link.element, self.static)
         for child_joint in self.children.get(link.name, []):
             child = self.parts.links[child_joint.child]
@@ -92,6 +94,23 @@ class Builder:
                 raise element.error(f"two sensors named '{config.name}' in link '{link.name}'")
             self.sensor_sites.add(config.site)
             local = self._local_pose(element, link)
+            site = body.add_site()
+            site.name, site.pos, site.quat, site.group = self.prefix + config.site, \
+                local.pos, local.quat, 5
+            self.parts.plugins.append(config)
+
+    def _joint_sensors(self, body: Any, joint: Joint, link: Link) -> None:
+        """Each `<sensor>` of a joint (force_torque): a site on the child's body at the
+        joint's frame and the sensor's pose in it."""
+        for element in joint.element.iterfind("sensor"):
+            config = sensor_config(element, link.name, self.context.warn, joint=joint.name)
+            if config is None:
+                continue
+            if config.site in self.sensor_sites:
+                raise element.error(f"two sensors named '{config.name}' in joint "
+                                    f"'{joint.name}'")
+            self.sensor_sites.add(config.site)
+            local = link.pose.inverse() * joint.pose * parse_pose(element.find("pose"))
             site = body.add_site()
             site.name, site.pos, site.quat, site.group = self.prefix + config.site, \
                 local.pos, local.quat, 5

@@ -19,6 +19,7 @@ KINDS = {
     "camera": "camera", "depth_camera": "depth_camera", "depth": "depth_camera",
     "rgbd_camera": "rgbd_camera", "rgbd": "rgbd_camera",
     "segmentation_camera": "segmentation_camera", "segmentation": "segmentation_camera",
+    "force_torque": "force_torque", "contact": "contact", "air_speed": "air_speed",
 }
 # Kinds whose module is not there yet, or that MuJoCo cannot give: said at the sensor's line
 NOT_SIMULATED = {
@@ -29,8 +30,7 @@ NOT_SIMULATED = {
     "thermal": "MuJoCo has no temperatures to render: no thermal image",
     "logical_camera": "the logical camera's model list is not produced",
     "boundingbox_camera": "no bounding boxes are produced",
-    "contact": "contacts are not reported yet", "force_torque": "no wrench is measured yet",
-    "air_speed": "no air speed is measured yet", "air_flow": "there is no air flow",
+    "air_flow": "there is no air flow",
     "sonar": "sonar is not simulated", "rfid": "RFID is not simulated",
     "rfidtag": "RFID is not simulated", "wireless_receiver": "radio is not simulated",
     "wireless_transmitter": "radio is not simulated", "dvl": "the DVL is not simulated",
@@ -41,8 +41,18 @@ SYSTEMS = {
     "imu": "gz-sim-imu-system", "magnetometer": "gz-sim-magnetometer-system",
     "altimeter": "gz-sim-altimeter-system", "air_pressure": "gz-sim-air-pressure-system",
     "navsat": "gz-sim-navsat-system", "lidar": "gz-sim-sensors-system",
+    "force_torque": "gz-sim-forcetorque-system", "contact": "gz-sim-contact-system",
+    "air_speed": "gz-sim-air-speed-system",
     **dict.fromkeys(("camera", "depth_camera", "rgbd_camera", "segmentation_camera"),
                     "gz-sim-sensors-system"),
+}
+# ... and the same systems by their class names (a world may name them only so)
+SYSTEM_CLASSES = {
+    "gz-sim-imu-system": "Imu", "gz-sim-magnetometer-system": "Magnetometer",
+    "gz-sim-altimeter-system": "Altimeter", "gz-sim-air-pressure-system": "AirPressure",
+    "gz-sim-navsat-system": "NavSat", "gz-sim-sensors-system": "Sensors",
+    "gz-sim-forcetorque-system": "ForceTorque", "gz-sim-contact-system": "Contact",
+    "gz-sim-air-speed-system": "AirSpeed",
 }
 CLASSES = {
     "imu": "launcher.sim.sensors.inertial:Imu",
@@ -51,6 +61,9 @@ CLASSES = {
     "air_pressure": "launcher.sim.sensors.atmosphere:AirPressure",
     "navsat": "launcher.sim.sensors.navsat:NavSat",
     "lidar": "launcher.sim.sensors.lidar:Lidar",
+    "force_torque": "launcher.sim.sensors.force_torque:ForceTorque",
+    "contact": "launcher.sim.sensors.contact:Contact",
+    "air_speed": "launcher.sim.sensors.atmosphere:AirSpeed",
     **dict.fromkeys(("camera", "depth_camera", "rgbd_camera", "segmentation_camera"),
                     "launcher.sim.sensors.camera:Camera"),
 }

@@ -1,6 +1,8 @@
-"""The altimeter and the air pressure sensor: the sensor's height and vertical speed against
-where it started, and the air pressure of the International Standard Atmosphere at its height
-above `<reference_altitude>` (the formula gz-sensors uses)."""
+"""The altimeter, the air pressure and the air speed sensors: the sensor's height and vertical
+speed against where it started; the air pressure of the International Standard Atmosphere at
+its height above `<reference_altitude>`; and the dynamic pressure of the air flowing along the
+sensor's x axis in still air, with the air's temperature at its height (the formulas
+gz-sensors uses)."""
 
 from __future__ import annotations
 
@@ -77,4 +79,28 @@ class AirPressure(Sensor):
             variance=self.noise.stddev ** 2)
 
 
-__all__ = ["AirPressure", "Altimeter", "pressure_at"]
+AIR_DENSITY = 1.225  # kg/m³ at sea level
+
+
+class AirSpeed(Sensor):
+    message_type = "mujoco_sim/msg/AirSpeedSensor"
+    suffix = "air_speed"
+
+    def configure(self) -> None:
+        self.noise = noise_of(self.config.element.path("air_speed", "pressure"), self.rng)
+
+    def measure(self, model: Any, data: Any) -> Any:
+        velocity = np.zeros(6)  # in the sensor's frame: the air comes at it along -x
+        mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_SITE, self.site, velocity, 1)
+        forward = float(velocity[3])
+        temperature = SEA_LEVEL_TEMPERATURE - LAPSE_RATE * float(data.site_xpos[self.site][2])
+        density = AIR_DENSITY / (SEA_LEVEL_TEMPERATURE / temperature) ** 4.256
+        # gz-sensors adds the noise in hPa and publishes pascals
+        hectopascals = float(np.sign(forward)) * 0.005 * density * forward * forward
+        return self.sim.transport.message(
+            self.message_type, header=self.header(data),
+            diff_pressure=self.noise.apply(hectopascals, self.rng) * 100.0,
+            temperature=temperature)
+
+
+__all__ = ["AirPressure", "AirSpeed", "Altimeter", "pressure_at"]

@@ -9,9 +9,10 @@ from typing import Any
 
 from launcher.sim.plugins import Plugin
 from launcher.sim.sdf.xmltree import SdfError
-from launcher.sim.sensors import SYSTEMS
+from launcher.sim.sensors import SYSTEM_CLASSES, SYSTEMS
 from launcher.sim.sensors.config import SensorConfig
 from launcher.sim.sensors.noise import generator
+from launcher.sim.sensors.topics import TopicClaims
 
 LAZY_LOOK = 0.05  # s of sim time between looks for a subscriber, while there is none
 
@@ -30,13 +31,20 @@ class Sensor(Plugin):
     # --- names, as gz-sim gives them ------------------------------------------------------
     @property
     def scoped_name(self) -> str:
-        """`model::link::sensor`: the sensor's name and default frame id in Gazebo."""
-        return f"{self.entity.name}::{self.config.scope_link}::{self.config.name}"
+        """`model::link::sensor` (`model::joint::sensor` on a joint): the sensor's name and
+        default frame id in Gazebo."""
+        return f"{self.entity.name}::{self._parent}::{self.config.name}"
+
+    @property
+    def _parent(self) -> str:
+        """Its link or joint, scoped within the model (`inner::link`)."""
+        return self.config.joint or self.config.scope_link
 
     def default_topic(self) -> str:
-        *models, link = self.config.scope_link.split("::")
+        *models, parent = self._parent.split("::")
         path = "".join(f"/model/{m}" for m in [self.entity.name, *models])
-        return f"/world/{self.sim.world_name}{path}/link/{link}/sensor/{self.config.name}"
+        kind = "joint" if self.config.joint else "link"
+        return f"/world/{self.sim.world_name}{path}/{kind}/{parent}/sensor/{self.config.name}"
 
     def topic_name(self, suffix: str | None = None) -> str:
         if self.config.topic:
@@ -79,8 +87,24 @@ class Sensor(Plugin):
                 f"{self.config.where}: {self.label} publishes nothing: the world does not "
                 f"load {self.missing} (add <plugin filename=\"{self.missing}\" …/> to the "
                 "world), as in Gazebo")
-        self.make_publishers()
+        else:
+            clash = self.claims.claim(self.topic_name(), self.message_type, self)
+            if clash:
+                self.missing = "a topic of its own"
+                self.sim.transport.logger.warning(
+                    f"{self.config.where}: {self.label} is left out: {clash}; give one of "
+                    "them a <topic> of its own")
+        if not self.missing:  # a sensor that cannot publish advertises nothing
+            self.make_publishers()
         self.reset()
+
+    @property
+    def claims(self) -> TopicClaims:
+        """The sim's record of its sensors' topics (one per sim)."""
+        claims = getattr(self.sim, "sensor_topics", None)
+        if claims is None:
+            claims = self.sim.sensor_topics = TopicClaims()
+        return claims
 
     def make_publishers(self) -> None:
         self.publisher = self.sim.transport.publisher(self.message_type, self.topic_name())
@@ -102,7 +126,9 @@ class Sensor(Plugin):
             self.next_update = now + max(self.period, LAZY_LOOK)
             return
         self.next_update = self._next(now)
-        self.publisher.publish(self.measure(model, data))
+        message = self.measure(model, data)
+        if message is not None:  # (a contact sensor has nothing to say between touches)
+            self.publisher.publish(message)
 
     def _next(self, now: float) -> float:
         if self.period <= 0:
@@ -113,10 +139,15 @@ class Sensor(Plugin):
         return due
 
     def measure(self, model: Any, data: Any) -> Any:
+        """The message to publish now, or None for none."""
         raise NotImplementedError
 
+    publisher: Any = None
+
     def close(self) -> None:
-        self.publisher.destroy()
+        self.claims.release(self)
+        if self.publisher is not None:
+            self.publisher.destroy()
 
     # --- helpers ------------------------------------------------------------------------------
     def header(self, data: Any) -> Any:
@@ -125,4 +156,5 @@ class Sensor(Plugin):
     def _missing_system(self) -> str:
         systems = getattr(self.sim, "systems", None)
         needed = SYSTEMS[self.config.kind]
-        return "" if systems is None or needed in systems else needed
+        named = f"gz::sim::systems::{SYSTEM_CLASSES[needed]}"
+        return "" if systems is None or needed in systems or named in systems else needed

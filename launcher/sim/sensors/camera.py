@@ -184,6 +184,7 @@ class Camera(Sensor):
                 "mujoco_sim/msg/Boolean", self.trigger_topic, self.trigger)
 
     def close(self) -> None:
+        self.claims.release(self)
         self.rendering.remove(self)
         subscription = getattr(self, "trigger_subscription", None)
         if subscription is not None:

@@ -23,6 +23,7 @@ class SensorConfig(PluginConfig):
     frame_id: str | None = None
     named_link: str = ""  # the link Gazebo names it under, where not `link`: a URDF's fixed
     # links are lumped into their parent, and their sensors with them
+    joint: str = ""  # a joint's sensor (force_torque): the joint; `link` is its child
 
     @property
     def scope_link(self) -> str:
@@ -31,10 +32,12 @@ class SensorConfig(PluginConfig):
     @property
     def site(self) -> str:
         """The site at the sensor's pose, below the entity's prefix."""
+        if self.joint:
+            return f"{self.link}/joint/{self.joint}/sensor/{self.name}"
         return f"{self.link}/sensor/{self.name}"
 
 
-def sensor_config(element: Any, link: str, warn: Any) -> SensorConfig | None:
+def sensor_config(element: Any, link: str, warn: Any, joint: str = "") -> SensorConfig | None:
     """The sensor an SDF `<sensor>` element declares; one launcher does not simulate is a
     warning at its line (None); a value no sensor can take is an error at its line."""
     name, written = element.get("name", ""), element.get("type", "")
@@ -54,7 +57,8 @@ def sensor_config(element: Any, link: str, warn: Any) -> SensorConfig | None:
     return SensorConfig(f"sensor:{KINDS[written]}", name, element,
                         f"{location.file}:{location.line}", kind=KINDS[written], link=link,
                         topic=element.value("topic") or None, update_rate=rate,
-                        always_on=_flag(element, "always_on"), frame_id=frame or None)
+                        always_on=_flag(element, "always_on"), frame_id=frame or None,
+                        joint=joint)
 
 
 def _number(element: Any, tag: str, default: float) -> float:

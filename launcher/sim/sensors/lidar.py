@@ -96,6 +96,11 @@ class Lidar(Sensor):
                                    axis=-1).reshape(-1, 3)
         self.distances = np.zeros(count)
         self.geoms = np.zeros(count, dtype=np.int32)
+
+    points_publisher: Any = None
+
+    def make_publishers(self) -> None:
+        super().make_publishers()
         self.points_publisher = self.sim.transport.publisher(
             "mujoco_sim/msg/PointCloudPacked", f"{self.topic_name()}/points")
 
@@ -159,4 +164,5 @@ class Lidar(Sensor):
 
     def close(self) -> None:
         super().close()
-        self.points_publisher.destroy()
+        if self.points_publisher is not None:
+            self.points_publisher.destroy()
