@@ -9,7 +9,6 @@ from the end of the header.
 
 from __future__ import annotations
 
-import math
 import struct
 from collections.abc import Sequence
 
@@ -21,16 +20,15 @@ _COUNT = struct.Struct("<I")
 _CLOCK = struct.Struct("<4siIiI?7xQ")
 
 
-def nanoseconds(fraction: float) -> int:
-    """A fraction of a second as whole nanoseconds, never a full second."""
-    return min(int(round(fraction * 1e9)), 999_999_999)
+def split_time(seconds: float) -> tuple[int, int]:
+    """Seconds as (sec, nanosec), rounded to the nearest nanosecond: a sim time summed from
+    steps that falls a hair short of 10 s is 10 s, not 9.999999999."""
+    return divmod(int(round(seconds * 1e9)), 1_000_000_000)
 
 
 def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
     """mujoco_sim/msg/Clock as CDR, packed directly: it goes out after every step."""
-    sim_sec, real_sec = math.floor(sim), math.floor(real)
-    return _CLOCK.pack(CDR_HEADER, sim_sec, nanoseconds(sim - sim_sec), real_sec,
-                       nanoseconds(real - real_sec), paused, iterations)
+    return _CLOCK.pack(CDR_HEADER, *split_time(sim), *split_time(real), paused, iterations)
 
 
 def _string(text: str) -> bytes:

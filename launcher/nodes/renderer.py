@@ -13,7 +13,6 @@ else in software; the log names the GL renderer it got.
 from __future__ import annotations
 
 import json
-import math
 import os
 import sys
 from typing import Any
@@ -24,6 +23,7 @@ from launcher.arguments import Parser
 from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
+from launcher.bus.wire import split_time
 from launcher.errors import reported
 
 NAME = "renderer"
@@ -76,6 +76,10 @@ class Renderer:
                     self.publishers[(name, stream)] = self.node.create_publisher(
                         _TYPES.get(stream, "mujoco_sim/msg/Image"), topic,
                         QoS(depth=1, reliable=False), space=keys.SIM)
+            for index, output in enumerate(camera.get("ros", ())):  # gazebo_ros_camera's
+                if (name, f"ros:{index}") not in self.publishers:
+                    self.publishers[(name, f"ros:{index}")] = self.node.create_publisher(
+                        output["type"], output["topic"], QoS(depth=1), space=keys.ROS)
         self.cameras = cameras
         self.contexts.clear()  # (they hold the old model)
         self.say_wanted()
@@ -84,7 +88,7 @@ class Renderer:
         wanted = sorted(name for name, camera in self.cameras.items()
                         if camera["always_on"] or any(
                             self.publishers[(name, s)].get_subscription_count() > 0
-                            for s in camera["topics"]))
+                            for s in _streams(camera)))
         if wanted != self.wanted:
             self.logger.debug(f"cameras watched: {', '.join(wanted) or 'none'}")
         self.wanted = wanted  # (said again each time: the sim may have started since)
@@ -116,14 +120,19 @@ class Renderer:
 
     def draw(self, name: str, camera: dict[str, Any], stamp: float) -> None:
         kind, topics = camera["kind"], camera["topics"]
+        ros = [(f"ros:{i}", output) for i, output in enumerate(camera.get("ros", ()))
+               if camera["always_on"] or self.watched(name, f"ros:{i}")]
+        wanted = {output["stream"] for _, output in ros}
         header = self.header(camera, stamp)
         colour = depth = None
-        if "image" in topics:
+        if "image" in topics or wanted & {"image", "points"}:
             colour = self.render(camera, "rgb")
+        if "image" in topics:
             self.publish(name, "image", self.image(header, colour, camera["encoding"]
                                                    if kind == "camera" else "rgb8"))
-        if "depth_image" in topics:
+        if "depth_image" in topics or wanted & {"depth_image", "points"}:
             depth = self.render(camera, "depth")
+        if "depth_image" in topics:
             self.publish(name, "depth_image", self.image(header, depth, "32FC1"))
         if "points" in topics and depth is not None and self.watched(name, "points"):
             self.publish(name, "points", self.points(header, camera, depth, colour))
@@ -132,6 +141,22 @@ class Renderer:
             self.publish(name, "labels_map", self.image(header, labels, "rgb8"))
             self.publish(name, "colored_map", self.image(header, _colour(labels), "rgb8"))
         self.publish(name, "camera_info", self.camera_info(header, camera))
+        for key, output in ros:
+            self.publish(name, key, self.ros_message(output, camera, stamp, colour, depth))
+
+    def ros_message(self, output: dict[str, Any], camera: dict[str, Any], stamp: float,
+                    colour: Any, depth: Any) -> Any:
+        """A gazebo_ros_camera stream, in the plugin's frame."""
+        header = self.header(camera, stamp, output["frame_id"])
+        stream = output["stream"]
+        if stream == "image":
+            return self.image(header, colour, camera["encoding"] if camera["kind"] == "camera"
+                              else "rgb8")
+        if stream == "depth_image":
+            return self.image(header, depth, "32FC1")
+        if stream == "points":
+            return self.optical_points(header, camera, depth, colour)
+        return self.camera_info(header, camera)  # camera_info, depth_camera_info
 
     def render(self, camera: dict[str, Any], what: str) -> Any:
         """The camera's picture: RGB (uint8 H×W×3), depth (float32 metres, ±inf outside the
@@ -183,13 +208,12 @@ class Renderer:
             found = self.classes[type_name] = registry().message_class(type_name)
         return found(**fields)
 
-    def header(self, camera: dict[str, Any], stamp: float) -> Any:
-        sec = math.floor(stamp)
+    def header(self, camera: dict[str, Any], stamp: float, frame_id: str | None = None) -> Any:
+        sec, nanosec = split_time(stamp)
         return self.message(
             "std_msgs/msg/Header",
-            stamp=self.message("builtin_interfaces/msg/Time", sec=sec,
-                                    nanosec=round((stamp - sec) * 1e9)),
-            frame_id=camera["frame_id"])
+            stamp=self.message("builtin_interfaces/msg/Time", sec=sec, nanosec=nanosec),
+            frame_id=camera["frame_id"] if frame_id is None else frame_id)
 
     def image(self, header: Any, picture: Any, encoding: str) -> Any:
         if encoding == "bgr8":
@@ -227,6 +251,29 @@ class Renderer:
             fields=fields, is_bigendian=False, point_step=16, row_step=16 * width,
             data=cloud.tobytes(), is_dense=False)
 
+    def optical_points(self, header: Any, camera: dict[str, Any], depth: Any,
+                       colour: Any) -> Any:
+        """gazebo_ros_camera's cloud: every pixel in the optical frame (x right, y down, z
+        ahead), ±inf outside the clip, x y z at 0, 4, 8 and rgb at 16 of 32 bytes."""
+        fx, _, cx, _, fy, cy = camera["k"][:6]
+        height, width = depth.shape
+        u, v = np.meshgrid(np.arange(width), np.arange(height))
+        cloud = np.zeros((height, width, 8), dtype=np.float32)
+        cloud[..., 2] = depth
+        with np.errstate(invalid="ignore"):
+            cloud[..., 0] = np.where(np.isfinite(depth), (u - cx) / fx * depth, depth)
+            cloud[..., 1] = np.where(np.isfinite(depth), (v - cy) / fy * depth, depth)
+        if colour is not None:
+            packed = (colour[..., 0].astype(np.uint32) << 16 | colour[..., 1].astype(np.uint32)
+                      << 8 | colour[..., 2].astype(np.uint32))
+            cloud[..., 4] = packed.view(np.float32)
+        fields = [self.message("sensor_msgs/msg/PointField", name=n, offset=o, datatype=7,
+                               count=1) for n, o in (("x", 0), ("y", 4), ("z", 8), ("rgb", 16))]
+        return self.message(
+            "sensor_msgs/msg/PointCloud2", header=header, height=height, width=width,
+            fields=fields, is_bigendian=False, point_step=32, row_step=32 * width,
+            data=cloud.tobytes(), is_dense=bool(np.isfinite(depth).all()))
+
     def camera_info(self, header: Any, camera: dict[str, Any]) -> Any:
         k = camera["k"]
         roi = self.message("sensor_msgs/msg/RegionOfInterest", x_offset=0, y_offset=0,
@@ -243,6 +290,11 @@ class Renderer:
 
     def publish(self, name: str, stream: str, message: Any) -> None:
         self.publishers[(name, stream)].publish(message)
+
+
+def _streams(camera: dict[str, Any]) -> list[str]:
+    """The keys of a camera's publishers: its Gazebo streams and its gazebo_ros outputs."""
+    return [*camera["topics"], *(f"ros:{i}" for i in range(len(camera.get("ros", ()))))]
 
 
 _TYPES = {"camera_info": "mujoco_sim/msg/CameraInfo",

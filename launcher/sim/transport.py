@@ -8,7 +8,6 @@ classic plugins do."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from typing import Any, Protocol, runtime_checkable
 
@@ -16,7 +15,7 @@ from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
-from launcher.bus.wire import nanoseconds
+from launcher.bus.wire import split_time
 
 
 @runtime_checkable
@@ -63,9 +62,8 @@ class BusTransport:
                                              space=keys.ROS if ros else None)
 
     def time(self, seconds: float) -> Any:
-        sec = math.floor(seconds)
-        return self.cls("builtin_interfaces/msg/Time")(sec=sec,
-                                                       nanosec=nanoseconds(seconds - sec))
+        sec, nanosec = split_time(seconds)
+        return self.cls("builtin_interfaces/msg/Time")(sec=sec, nanosec=nanosec)
 
     def header(self, seconds: float, frame_id: str) -> Any:
         return self.cls("std_msgs/msg/Header")(stamp=self.time(seconds), frame_id=frame_id)

@@ -251,3 +251,51 @@ def test_ros_gz_image_image_bridge_carries_images_to_ros(sensor_ws):
         assert bad.returncode == 1 and "name the image topics to bridge" in bad.stderr
     finally:
         assert stop(proc) == 130
+
+
+CLASSIC = ("external", "gazebo_plugins", "worlds")  # in ../shared
+
+
+def test_gazebo_plugins_ray_sensor_demo_publishes_onto_the_ros_graph(sensor_ws):
+    """gazebo_plugins' classic world, unchanged: its eight gazebo_ros_ray_sensor plugins
+    publish straight onto the ROS graph, read by a ROS subscriber."""
+    world = str(shared(*CLASSIC, "gazebo_ros_ray_sensor_demo.world"))
+    proc = sensor_ws.start("gz", "sim", "-s", "-r", "-v", "3", world, output="sim.out")
+    try:
+        sensor_ws.wait_for_output("running", 60, "sim.out")
+        listed = sensor_ws.run("topic", "list", "-t").stdout
+        for family in ("ray", "gpu_ray"):
+            for name, type_name in (("laserscan", "LaserScan"), ("pointcloud", "PointCloud"),
+                                    ("pointcloud2", "PointCloud2"), ("range", "Range")):
+                assert f"/{family}/{name} [sensor_msgs/msg/{type_name}]" in listed, listed
+        near = sensor_ws.run("topic", "echo", "/ray/range", "--once", "--timeout", "60",
+                             timeout=90)
+        found = re.search(r"\nrange: ([\d.]+)", near.stdout)
+        # the sensor 1.5 m behind the box's centre, the box 0.1 m deep: 1.45 m to its face
+        assert found and float(found.group(1)) == pytest.approx(1.45, abs=0.01), near.stdout
+        assert "frame_id: ray_link" in near.stdout
+        scan = sensor_ws.run("topic", "echo", "/gpu_ray/laserscan", "--once", "-f", "--field",
+                             "ranges", "--timeout", "60", timeout=90)
+        ranges = [float(v.replace(".inf", "inf"))  # YAML writes infinity .inf
+                  for v in re.findall(r"^- (\S+)$", scan.stdout, re.M)]
+        assert len(ranges) == 300 and ranges[150] == pytest.approx(1.45, abs=0.01)
+    finally:
+        assert stop(proc) == 0
+
+
+def test_gazebo_plugins_camera_demo_publishes_images_onto_the_ros_graph(sensor_ws):
+    world = str(shared(*CLASSIC, "gazebo_ros_camera_demo.world"))
+    proc = sensor_ws.start("gz", "sim", "-s", "-r", "-v", "3", world, output="sim.out")
+    try:
+        sensor_ws.wait_for_output("running", 60, "sim.out")
+        image = sensor_ws.run("topic", "echo", "/demo_cam/camera1/image_raw", "--once",
+                              "--no-arr", "--timeout", "60", timeout=90)
+        assert image.returncode == 0, image.stderr
+        assert "width: 640" in image.stdout and "height: 480" in image.stdout
+        assert "frame_id: camera_link" in image.stdout and "encoding: rgb8" in image.stdout
+        info = sensor_ws.run("topic", "echo", "/demo_cam/camera1/camera_info", "--once",
+                             "--field", "k", "--timeout", "60", timeout=90)
+        # fx = 640 / (2 tan(1.3962634 / 2))
+        assert f"{640 / (2 * math.tan(1.3962634 / 2)):.3f}"[:6] in info.stdout, info.stdout
+    finally:
+        assert stop(proc) == 0

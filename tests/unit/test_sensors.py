@@ -9,6 +9,7 @@ import re
 from pathlib import Path
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 
 from launcher.errors import LaunchError
@@ -494,3 +495,114 @@ def test_two_sensors_of_different_types_on_one_topic_leave_the_second_out(tmp_pa
                      r"one of them a <topic> of its own", said), said
     assert world.transport.published["/air"]
     assert all(hasattr(m, "fluid_pressure") for m in world.transport.published["/air"])
+
+
+# --- gazebo_ros's sensor plugins: straight onto the ROS graph, as in Gazebo classic -----------
+def ray_plugin(name: str, output: str, ros: str = "<namespace>/ray</namespace>",
+               extra: str = "") -> str:
+    return (f'<plugin name="{name}" filename="libgazebo_ros_ray_sensor.so"><ros>{ros}</ros>'
+            f'<output_type>{output}</output_type>{extra}</plugin>')
+
+
+RAYS = """<ray><scan><horizontal><samples>5</samples><min_angle>-0.2</min_angle>
+<max_angle>0.2</max_angle></horizontal><vertical><samples>3</samples><min_angle>-0.1</min_angle>
+<max_angle>0.1</max_angle></vertical></scan><range><min>0.05</min><max>20</max></range></ray>"""
+WALL = """<model name="wall"><static>true</static><pose>3 0 0.5 0 0 0</pose><link name="link">
+<collision name="c"><geometry><box><size>0.2 10 10</size></box></geometry></collision></link>
+</model>"""
+
+
+def test_gazebo_ros_ray_sensor_publishes_each_output_type_in_its_namespace(tmp_path):
+    """LaserScan (the middle row of several), PointCloud2 (the rays that hit, dense),
+    PointCloud and Range (the nearest ray), on `~/out` after `<remapping>`, in the link's
+    frame; the world has no gz-sim system and the sensor runs anyway, as in Gazebo classic."""
+    plugins = (ray_plugin("scan", "sensor_msgs/LaserScan",
+                          "<namespace>/ray</namespace><remapping>~/out:=scan</remapping>")
+               + ray_plugin("pc2", "sensor_msgs/PointCloud2")
+               + ray_plugin("pc", "sensor_msgs/PointCloud")
+               + ray_plugin("near", "sensor_msgs/Range", extra="<radiation_type>ultrasound"
+                            "</radiation_type>"))
+    world = world_with(tmp_path, sensor("laser", "ray", RAYS + plugins, rate=10), systems="",
+                       extra=WALL)
+    run(world, 0.25)
+    published = world.transport.published
+    scan = published["/ray/scan"][-1]  # remapped
+    assert scan.header.frame_id == "link" and len(scan.ranges) == 5
+    assert scan.ranges[2] == pytest.approx(2.9, abs=0.01)  # the middle ray of the middle row
+    cloud = published["/ray/pc2/out"][-1]  # `~/out` is the plugin's node's
+    assert (cloud.height, cloud.width, cloud.point_step, cloud.is_dense) == (1, 15, 16, True)
+    xyz = np.frombuffer(cloud.data, dtype=np.float32).reshape(-1, 4)[:, :3]
+    assert np.allclose(xyz[:, 0], 2.9, atol=0.01)  # every ray on the wall's face
+    assert len(published["/ray/pc/out"][-1].points) == 15
+    near = published["/ray/near/out"][-1]
+    assert near.range == pytest.approx(2.9, abs=0.01) and near.radiation_type == 0
+    assert near.field_of_view == pytest.approx(0.4) and near.max_range == 20
+
+
+def test_gazebo_ros_imu_gps_and_bumper_publish_their_ros_messages(tmp_path):
+    imu = sensor("imu", "imu", '<plugin name="imu" filename="libgazebo_ros_imu_sensor.so">'
+                 "<ros><namespace>/bot</namespace><remapping>~/out:=imu</remapping></ros>"
+                 "<frame_name>imu_frame</frame_name></plugin>")
+    gps = sensor("gps", "gps", '<plugin name="gps" filename="libgazebo_ros_gps_sensor.so">'
+                 "<ros><namespace>/bot</namespace></ros></plugin>")
+    bumper = sensor("bumper", "contact", "<contact><collision>c</collision></contact>"
+                    '<plugin name="bumper" filename="libgazebo_ros_bumper.so"><ros>'
+                    "<namespace>/bot</namespace></ros><frame_name>link</frame_name></plugin>",
+                    rate=50)
+    world = world_with(tmp_path, imu + gps + bumper, systems="", static=False,
+                       pose="0 0 0.8 0 0 0")
+    run(world, 0.1)
+    published = world.transport.published
+    assert published["/bot/imu"][-1].header.frame_id == "imu_frame"
+    assert published["/bot/imu"][-1].linear_acceleration.z == pytest.approx(0, abs=0.1)  # falls
+    fix = published["/bot/gps/out"][-1]
+    assert fix.header.frame_id == "link" and fix.status.service == 1
+    assert (fix.latitude, fix.longitude) == pytest.approx((0, 0), abs=1e-4)
+    assert published["/bot/gps/vel"][-1].vector.z < 0  # falling: up is negative
+    states = published["/bot/bumper_states"]
+    assert states and states[-1].states == []  # classic's bumper reports while nothing touches
+    run(world, 1.0)
+    touching = published["/bot/bumper_states"][-1]
+    assert touching.header.frame_id == "link"
+    (pair,) = touching.states
+    assert (pair.collision1_name, pair.collision2_name) == ("box::link::c", "ground::link::c")
+    assert pair.total_wrench.force.z == pytest.approx(9.8, rel=0.05)
+
+
+def test_a_gazebo_ros_camera_names_its_ros_streams(tmp_path, monkeypatch):
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    body = ("<camera><image><width>8</width><height>6</height></image></camera>"
+            '<plugin name="cam" filename="libgazebo_ros_camera.so"><ros><namespace>demo'
+            "</namespace></ros></plugin>")
+    world = world_with(tmp_path, sensor("cam1", "depth_camera", body, rate=10))
+    camera = next(p for e in world.entities.values() for p in e.plugins
+                  if getattr(p, "config", None) is not None and p.config.name == "cam1")
+    ros = {o["stream"]: (o["topic"], o["type"], o["frame_id"])
+           for o in camera.settings()["ros"]}
+    assert ros == {
+        "image": ("/demo/cam1/image_raw", "sensor_msgs/msg/Image", "link"),
+        "camera_info": ("/demo/cam1/camera_info", "sensor_msgs/msg/CameraInfo", "link"),
+        "depth_image": ("/demo/cam1/depth/image_raw", "sensor_msgs/msg/Image", "link"),
+        "depth_camera_info": ("/demo/cam1/depth/camera_info", "sensor_msgs/msg/CameraInfo",
+                              "link"),
+        "points": ("/demo/cam1/points", "sensor_msgs/msg/PointCloud2", "link")}
+
+
+@pytest.mark.parametrize("plugin, expected", [
+    ('<plugin name="x" filename="libgazebo_ros_ray_sensr.so"/>',
+     r"plugin 'libgazebo_ros_ray_sensr\.so' is not a sensor plugin launcher runs \(did you "
+     r"mean 'libgazebo_ros_ray_sensor\.so'.*\?\)"),
+    ('<plugin name="x" filename="libgazebo_ros_camera.so"/>',
+     r"plugin 'libgazebo_ros_camera\.so' serves camera or depth_camera or rgbd_camera "
+     r"sensors, not this one"),
+    (ray_plugin("x", "sensor_msgs/LaserScn"),
+     r"<output_type> 'sensor_msgs/LaserScn' is not one of .*\(did you mean "
+     r"'sensor_msgs/LaserScan'.*\?\)"),
+], ids=["unknown-filename", "wrong-sensor", "bad-output-type"])
+def test_a_sensor_plugin_launcher_cannot_run_is_a_located_warning(tmp_path, plugin,
+                                                                  expected):
+    world = world_with(tmp_path, sensor("laser", "ray", RAYS + plugin, rate=10), extra=WALL)
+    run(world, 0.2)
+    said = "\n".join(world.transport.messages("warning"))
+    assert re.search(r"world\.sdf:\d+: sensor 'laser' \(ray\): " + expected, said), said
+    assert not [t for t in world.transport.published if t.startswith("/x")]

@@ -1,6 +1,7 @@
 """What every sensor does: its Gazebo names (scoped name, default topic, frame id), its
 schedule in sim time, Gazebo's lazy updates (work only while someone subscribes, unless
-`<always_on>`), and the world system it needs."""
+`<always_on>`), the world system it needs, and the ROS topics its gazebo_ros plugins publish
+(classic.py)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from typing import Any
 from launcher.sim.plugins import Plugin
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors import SYSTEM_CLASSES, SYSTEMS
+from launcher.sim.sensors.classic import RosOutput, classic_outputs, convert
 from launcher.sim.sensors.config import SensorConfig
 from launcher.sim.sensors.noise import generator
 from launcher.sim.sensors.topics import TopicClaims
@@ -75,13 +77,20 @@ class Sensor(Plugin):
             if exc.message.startswith(self.label):
                 raise
             raise SdfError(f"{self.label}: {exc.message}", exc.location) from None
+        self.outputs = classic_outputs(self.config.element, self.config.kind,
+                                       self.config.scope_link, self.label, self._warn)
+
+    def _warn(self, where: Any, message: str) -> None:
+        self.sim.transport.logger.warning(f"{where.location.file}:{where.location.line}: "
+                                          f"{message}")
 
     def prepare(self, spec: Any) -> None:
         self.setup()
 
     def load(self) -> None:
         self.setup()
-        self.missing = self._missing_system()
+        # a gazebo_ros plugin's sensor runs as in Gazebo classic, which has no systems
+        self.missing = "" if self.outputs else self._missing_system()
         if self.missing:
             self.sim.transport.logger.warning(
                 f"{self.config.where}: {self.label} publishes nothing: the world does not "
@@ -107,7 +116,11 @@ class Sensor(Plugin):
         return claims
 
     def make_publishers(self) -> None:
-        self.publisher = self.sim.transport.publisher(self.message_type, self.topic_name())
+        transport = self.sim.transport
+        self.publisher = transport.publisher(self.message_type, self.topic_name())
+        self.ros_publishers = [(output, transport.publisher(output.type_name, output.topic,
+                                                            ros=True))
+                               for output in self.outputs]
 
     def configure(self) -> None:
         """Read the sensor's own settings (subclasses)."""
@@ -122,13 +135,31 @@ class Sensor(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if not (self.config.always_on or self.publisher.get_subscription_count() > 0):
+        if not self.watched():
             self.next_update = now + max(self.period, LAZY_LOOK)
             return
         self.next_update = self._next(now)
         message = self.measure(model, data)
-        if message is not None:  # (a contact sensor has nothing to say between touches)
+        if message is None:
+            return
+        if self.reports(message):
             self.publisher.publish(message)
+        self.publish_ros(message, data)
+
+    def watched(self) -> bool:
+        """Whether the sensor has work: `<always_on>`, or someone listens to any of it."""
+        return self.config.always_on or self.publisher.get_subscription_count() > 0 or \
+            any(p.get_subscription_count() > 0 for _, p in self.ros_publishers)
+
+    def reports(self, message: Any) -> bool:
+        """Whether the sim's topic gets this reading (a contact sensor's only when touching)."""
+        return True
+
+    def publish_ros(self, reading: Any, data: Any) -> None:
+        """The reading on its gazebo_ros plugins' topics, for those someone listens to."""
+        for output, publisher in self.ros_publishers:
+            if self.config.always_on or publisher.get_subscription_count() > 0:
+                publisher.publish(convert(self, output, reading, data))
 
     def _next(self, now: float) -> float:
         if self.period <= 0:
@@ -143,11 +174,15 @@ class Sensor(Plugin):
         raise NotImplementedError
 
     publisher: Any = None
+    ros_publishers: list[tuple[RosOutput, Any]] = []
+    outputs: list[RosOutput] = []
 
     def close(self) -> None:
         self.claims.release(self)
         if self.publisher is not None:
             self.publisher.destroy()
+        for _, publisher in self.ros_publishers:
+            publisher.destroy()
 
     # --- helpers ------------------------------------------------------------------------------
     def header(self, data: Any) -> Any:

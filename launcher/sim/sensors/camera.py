@@ -27,6 +27,7 @@ FORMATS = {"R8G8B8": "rgb8", "RGB_INT8": "rgb8", "B8G8R8": "bgr8", "BGR_INT8": "
 _ALIGN = np.zeros(4)
 mujoco.mju_mat2Quat(_ALIGN, np.array([[0, 0, -1], [-1, 0, 0], [0, 1, 0]], dtype=float)
                     .reshape(-1))
+COLOUR_STREAMS = ("image", "camera_info")  # what gazebo_ros_camera gives of a plain camera
 SUFFIXES = {"camera": ("image",), "depth_camera": ("depth_image",),
             "rgbd_camera": ("image", "depth_image"),
             "segmentation_camera": ("segmentation/labels_map", "segmentation/colored_map")}
@@ -154,7 +155,10 @@ class Camera(Sensor):
                 "far": self.far, "depth_near": self.depth_near, "depth_far": self.depth_far,
                 "k": [self.fx, 0.0, self.cx, 0.0, self.fy, self.cy, 0.0, 0.0, 1.0],
                 "frame_id": self.frame_id, "topics": self.topics(),
-                "always_on": self.config.always_on}
+                "always_on": self.config.always_on,
+                "ros": [{"stream": o.stream, "type": o.type_name, "topic": o.topic,
+                         "frame_id": o.frame_id} for o in self.outputs
+                        if self.config.kind != "camera" or o.stream in COLOUR_STREAMS]}
 
     # --- scheduling: the sim decides when, the renderer draws -------------------------------
     def post_step(self, model: Any, data: Any) -> None:

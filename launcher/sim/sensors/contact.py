@@ -92,7 +92,7 @@ class Contact(Sensor):
     def measure(self, model: Any, data: Any) -> Any:
         count = data.ncon
         if not self.geoms or count == 0:
-            return None
+            return self._empty(data)
         contacts = data.contact
         first, second = contacts.geom1[:count], contacts.geom2[:count]
         pairs: dict[tuple[int, int], list[int]] = {}
@@ -103,11 +103,22 @@ class Contact(Sensor):
             elif b in self.geoms:
                 pairs.setdefault((b, a), []).append(index)
         if not pairs:
-            return None
+            return self._empty(data)
         transport = self.sim.transport
         return transport.message(self.message_type, header=self.header(data), contacts=[
             self._contact(model, data, mine, other, indices)
             for (mine, other), indices in pairs.items()])
+
+    def _empty(self, data: Any) -> Any:
+        """No touch: nothing on the sim's topic, and an empty reading for a gazebo_ros bumper
+        (which reports every update)."""
+        if not self.outputs:
+            return None
+        return self.sim.transport.message(self.message_type, header=self.header(data),
+                                          contacts=[])
+
+    def reports(self, message: Any) -> bool:
+        return bool(message.contacts)
 
     def _contact(self, model: Any, data: Any, mine: int, other: int,
                  indices: list[int]) -> Any:

@@ -108,19 +108,21 @@ class Lidar(Sensor):
         super().bind(model, data)
         self.body = int(model.site_bodyid[self.site])
 
+    def watched(self) -> bool:
+        return super().watched() or self.points_publisher.get_subscription_count() > 0
+
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        scans, points = (self.publisher.get_subscription_count() > 0,
-                         self.points_publisher.get_subscription_count() > 0)
-        if not (self.config.always_on or scans or points):
+        if not self.watched():
             self.next_update = now + max(self.period, 0.05)
             return
         self.next_update = self._next(now)
         ranges = self.cast(model, data)
-        if scans or self.config.always_on:
+        if self.config.always_on or self.publisher.get_subscription_count() > 0:
             self.publisher.publish(self.scan_message(data, ranges))
-        if points:
+        if self.points_publisher.get_subscription_count() > 0:
             self.points_publisher.publish(self.points_message(data, ranges))
+        self.publish_ros(ranges, data)
 
     def cast(self, model: Any, data: Any) -> Any:
         """The range of each ray (inf past range_max or with nothing there), noise added."""
@@ -139,13 +141,23 @@ class Lidar(Sensor):
         return ranges.astype(np.float32)
 
     def scan_message(self, data: Any, ranges: Any) -> Any:
+        scan = self.scan_message_of(ranges)
+        scan.header = self.header(data)
+        return scan
+
+    def scan_message_of(self, ranges: Any) -> Any:
+        """A scan of `ranges` (all the rows, or one), its header to be set."""
         h = self.horizontal
         return self.sim.transport.message(
-            self.message_type, header=self.header(data), angle_min=h.min_angle,
+            self.message_type, header=None, angle_min=h.min_angle,
             angle_max=h.max_angle, angle_increment=h.increment, time_increment=0.0,
-            scan_time=self.period, range_min=self.range_min,
-            range_max=self.range_max if math.isfinite(self.range_max) else 1e9,
+            scan_time=self.period, range_min=self.range_min, range_max=self.max_range_written,
             ranges=ranges, intensities=np.zeros(len(ranges), dtype=np.float32))
+
+    @property
+    def max_range_written(self) -> float:
+        """range_max as a message carries it (a finite number)."""
+        return self.range_max if math.isfinite(self.range_max) else 1e9
 
     def points_message(self, data: Any, ranges: Any) -> Any:
         """x, y, z (float32) and intensity per ray, in the sensor frame, rows as the scan's."""
