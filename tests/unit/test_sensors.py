@@ -42,9 +42,9 @@ class Listening(Recorder):
 
 def world_with(tmp_path: Path, sensors: str, extra: str = "", systems: str = SYSTEMS,
                pose: str = "0 0 0.5 0 0 0", static: bool = True, seed: int = 0,
-               world_extra: str = "") -> World:
-    """A world with ground, a 1 m box (`box`, its link `link` carrying `sensors`) and
-    `extra` models."""
+               world_extra: str = "", model_extra: str = "") -> World:
+    """A world with ground, a 1 m box (`box`, its link `link` carrying `sensors`, the model
+    `model_extra`) and `extra` models."""
     text = f"""<?xml version="1.0"?>
 <sdf version="1.9"><world name="w">{systems}{world_extra}
 <model name="ground"><static>true</static><link name="link"><collision name="c"><geometry>
@@ -52,7 +52,7 @@ def world_with(tmp_path: Path, sensors: str, extra: str = "", systems: str = SYS
 <model name="box"><static>{str(static).lower()}</static><pose>{pose}</pose>
 <link name="link"><inertial><mass>1</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz>
 </inertia></inertial><collision name="c"><geometry><box><size>1 1 1</size></box></geometry>
-</collision>{sensors}</link></model>{extra}
+</collision>{sensors}</link>{model_extra}</model>{extra}
 </world></sdf>"""
     path = tmp_path / "world.sdf"
     path.write_text(text)
@@ -340,6 +340,9 @@ URDF_SENSORS = """<?xml version="1.0"?>
       <lidar><scan><horizontal><samples>4</samples><min_angle>0</min_angle>
       <max_angle>1.5707963</max_angle></horizontal></scan>
       <range><min>0.1</min><max>10</max></range></lidar>
+      <plugin name="laser" filename="libgazebo_ros_ray_sensor.so"><ros><namespace>/bot
+      </namespace><remapping>~/out:=scan</remapping></ros>
+      <output_type>sensor_msgs/LaserScan</output_type></plugin>
     </sensor>
   </gazebo>
   <gazebo reference="base_link">
@@ -373,8 +376,10 @@ def test_a_urdfs_gazebo_sensors_run_on_its_links_named_as_gazebo_names_them(tmp_
     assert scan.header.frame_id == "bot::laser_link::laser"  # its joint is preserved
     # the first ray looks along x from the laser's height, at the wall's face (2.9 m)
     assert scan.ranges[0] == pytest.approx(2.9, abs=0.02)
+    ros = published["/bot/scan"][-1]  # its gazebo_ros plugin's, in the link's frame
+    assert ros.header.frame_id == "laser_link" and ros.ranges[0] == scan.ranges[0]
     warned = "\n".join(world.transport.messages("warning"))
-    assert re.search(r"bot\.urdf:35:5: sensor 'lost': <gazebo reference=\"imu_lnk\"> names no "
+    assert re.search(r"bot\.urdf:38:5: sensor 'lost': <gazebo reference=\"imu_lnk\"> names no "
                      r"link or joint of the robot \(did you mean 'imu_link'.*\?\); it is left out",
                      warned)
     site = world.data.site("bot/imu_link/sensor/imu")
@@ -606,3 +611,40 @@ def test_a_sensor_plugin_launcher_cannot_run_is_a_located_warning(tmp_path, plug
     said = "\n".join(world.transport.messages("warning"))
     assert re.search(r"world\.sdf:\d+: sensor 'laser' \(ray\): " + expected, said), said
     assert not [t for t in world.transport.published if t.startswith("/x")]
+
+
+def test_gazebo_ros_p3d_and_ft_sensor_report_ground_truth_on_ros_topics(tmp_path):
+    truth = ('<plugin name="truth" filename="libgazebo_ros_p3d.so"><ros><namespace>/box'
+             "</namespace><remapping>odom:=truth</remapping></ros><body_name>link</body_name>"
+             "<update_rate>50</update_rate><xyz_offset>1 0 0</xyz_offset></plugin>")
+    ft = ('<plugin name="ft" filename="libgazebo_ros_ft_sensor.so"><ros><namespace>/pendulum'
+          "</namespace></ros><joint_name>hinge</joint_name></plugin>")
+    pendulum = PENDULUM.format(settings="").replace("</joint></model>", f"</joint>{ft}</model>")
+    world = world_with(tmp_path, "", extra=pendulum, static=False, pose="0 0 3 0 0 0",
+                       systems=MORE_SYSTEMS, model_extra=truth)
+    run(world, 0.5)
+    odometry = world.transport.published["/box/truth"]
+    assert 20 <= len(odometry) <= 30
+    last = odometry[-1]
+    assert (last.header.frame_id, last.child_frame_id) == ("world", "link")
+    falling = last.header.stamp  # seconds, from rest
+    assert last.pose.pose.position.x == pytest.approx(1.0)  # the offset
+    assert last.pose.pose.position.z == pytest.approx(3 - 4.9 * falling ** 2, abs=0.01)
+    assert last.twist.twist.linear.z == pytest.approx(-9.8 * falling, abs=0.01)
+    wrench = world.transport.published["/pendulum/wrench"][-1]
+    assert wrench.header.frame_id == "bob"
+    assert wrench.wrench.force.z == pytest.approx(19.6, abs=0.05)
+
+
+@pytest.mark.parametrize("plugin, expected", [
+    ('<plugin name="t" filename="libgazebo_ros_p3d.so"/>', "<body_name> is missing"),
+    ('<plugin name="t" filename="libgazebo_ros_p3d.so"><body_name>lnk</body_name></plugin>',
+     "<body_name> 'lnk' is not a link of 'box' (did you mean 'link'?)"),
+    ('<plugin name="t" filename="libgazebo_ros_ft_sensor.so"><joint_name>j</joint_name>'
+     "</plugin>", "<joint_name> 'j' is not a moving joint of 'box'"),
+], ids=["no-body", "unknown-link", "unknown-joint"])
+def test_a_ground_truth_plugins_bad_settings_are_located(tmp_path, plugin, expected):
+    world = world_with(tmp_path, "", model_extra=plugin, static=False)
+    run(world, 0.05)
+    said = "\n".join(world.transport.messages("error") + world.transport.messages("warning"))
+    assert re.search(r"world\.sdf:\d+: plugin t: " + re.escape(expected), said), said

@@ -74,6 +74,8 @@ BUILTIN = {
 CLASSIC = {
     "gazebo_ros_diff_drive": "launcher.sim.plugins.classic:ClassicDiffDrive",
     "gazebo_ros_joint_state_publisher": "launcher.sim.plugins.classic:ClassicJointStates",
+    "gazebo_ros_p3d": "launcher.sim.plugins.classic_state:P3D",
+    "gazebo_ros_ft_sensor": "launcher.sim.plugins.classic_state:FTSensor",
 }
 
 

@@ -30,8 +30,9 @@ from typing import Any
 
 import numpy as np
 
-from launcher.bus.names import InvalidName, expand, remap
+from launcher.bus.names import InvalidName
 from launcher.errors import did_you_mean
+from launcher.sim.plugins.gazebo_ros import RosNode, ros_node
 
 # plugin file stem → (family, the sensor kinds it serves)
 PLUGINS = {
@@ -54,37 +55,12 @@ RADIATION = {"ultrasound": 0, "infrared": 1}
 
 
 @dataclass(frozen=True)
-class RosNode:
-    """A gazebo_ros plugin's node: its name, namespace and remapping rules."""
-    name: str
-    namespace: str = "/"
-    rules: tuple[tuple[str, str], ...] = ()
-
-    def topic(self, name: str) -> str:
-        return remap(expand(name, self.name, self.namespace), list(self.rules), self.name,
-                     self.namespace)
-
-
-@dataclass(frozen=True)
 class RosOutput:
     stream: str  # which of the sensor's readings (see CONVERT)
     type_name: str
     topic: str
     frame_id: str
     options: dict[str, Any] = field(default_factory=dict)
-
-
-def ros_node(plugin: Any) -> RosNode:
-    ros = plugin.find("ros")
-    namespace = (ros.value("namespace") if ros is not None else None) or \
-        plugin.value("robotNamespace") or "/"
-    rules = []
-    for remapping in (ros.iterfind("remapping") if ros is not None else ()):
-        source, _, target = remapping.stripped.partition(":=")
-        if source.strip() and target.strip():
-            rules.append((source.strip(), target.strip()))
-    name = re.sub(r"\W", "_", plugin.get("name", "") or "gazebo_ros") or "gazebo_ros"
-    return RosNode(name, "/" + namespace.strip().strip("/"), tuple(rules))
 
 
 def classic_outputs(element: Any, kind: str, link: str, label: str, warn: Any) -> \
