@@ -8,6 +8,7 @@ the others are decoded, rebuilt and encoded.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import SimpleNamespace
@@ -22,7 +23,7 @@ SIM_MESSAGES = ("Clock", "Twist", "Odometry", "Pose", "PoseV", "Model", "ModelSt
                 "Double", "Float", "Boolean", "Int32", "StringMsg", "Empty", "EntityFactory",
                 "WorldControl", "Entity", "IMU", "Magnetometer", "FluidPressure", "Altimeter",
                 "NavSat", "LaserScan", "PointCloudPacked", "Image", "CameraInfo", "Wrench",
-                "Contacts", "AirSpeedSensor")
+                "Contacts", "AirSpeedSensor", "PerformanceSensorMetrics")
 # (request, response) of Gazebo's services → the sim's service type
 SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
                 ("EntityFactory", "Boolean"): f"{SIM}/srv/Create",
@@ -231,7 +232,13 @@ def conversions() -> dict[tuple[str, str], Conversion]:
             _via(f"{m}/Wrench", "geometry_msgs/msg/Wrench", lambda w: _wrench(w.wrench)),
             _via("geometry_msgs/msg/Wrench", f"{m}/Wrench", lambda w: {"wrench": _wrench(w)})),
         ("sensor_msgs/msg/NavSatFix", f"{m}/NavSat"): Conversion(
-            _via(f"{m}/NavSat", "sensor_msgs/msg/NavSatFix", _nav_sat_fix), None),
+            _via(f"{m}/NavSat", "sensor_msgs/msg/NavSatFix", _nav_sat_fix),
+            _via("sensor_msgs/msg/NavSatFix", f"{m}/NavSat", lambda f: {
+                "header": _header(f.header), "latitude_deg": f.latitude,
+                "longitude_deg": f.longitude, "altitude": f.altitude})),
+        ("gps_msgs/msg/GPSFix", f"{m}/NavSat"): Conversion(
+            _via(f"{m}/NavSat", "gps_msgs/msg/GPSFix", _gps_fix),
+            _via("gps_msgs/msg/GPSFix", f"{m}/NavSat", _nav_sat_of_gps_fix)),
     }
 
 
@@ -242,6 +249,27 @@ def _nav_sat_fix(n: Any) -> dict[str, Any]:
             "status": {"status": 0, "service": 1},  # STATUS_FIX, SERVICE_GPS
             "latitude": n.latitude_deg, "longitude": n.longitude_deg, "altitude": n.altitude,
             "position_covariance": [0.0] * 9, "position_covariance_type": 0}
+
+
+def _gps_fix(n: Any) -> dict[str, Any]:
+    """gz.msgs.NavSat as ros_gz_bridge writes gps_msgs/GPSFix: speed over ground, track and
+    climb from the east-north-up velocity, a ground-based augmented fix, covariance unknown.
+    The track is as GPSFix defines it, degrees clockwise from north, where ros_gz_bridge
+    writes atan2(north, east) in radians."""
+    return {"header": _header(n.header), "status": {"status": 2},  # STATUS_GBAS_FIX
+            "latitude": n.latitude_deg, "longitude": n.longitude_deg, "altitude": n.altitude,
+            "speed": math.hypot(n.velocity_east, n.velocity_north),
+            "track": math.degrees(math.atan2(n.velocity_east, n.velocity_north)) % 360.0,
+            "climb": n.velocity_up, "position_covariance": [0.0] * 9,
+            "position_covariance_type": 0}
+
+
+def _nav_sat_of_gps_fix(g: Any) -> dict[str, Any]:
+    track = math.radians(g.track)
+    return {"header": _header(g.header), "latitude_deg": g.latitude,
+            "longitude_deg": g.longitude, "altitude": g.altitude,
+            "velocity_east": math.sin(track) * g.speed,
+            "velocity_north": math.cos(track) * g.speed, "velocity_up": g.climb}
 
 
 def known_ros_type(name: str) -> str:

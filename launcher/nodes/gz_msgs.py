@@ -155,6 +155,9 @@ TO_GZ: dict[str, Callable[[Data], Data]] = {
     "AirSpeedSensor": lambda d: {"header": _header_to_gz(d.get("header")),
                                  "diff_pressure": d.get("diff_pressure", 0.0),
                                  "temperature": d.get("temperature", 0.0)},
+    "PerformanceSensorMetrics": lambda d: {
+        **{k: v for k, v in d.items() if k != "fps"},
+        **({"fps_optional": {"data": d["fps"]}} if d.get("fps") else {})},
 }
 
 TO_SIM: dict[str, Callable[[Data], Data]] = {

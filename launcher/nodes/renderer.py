@@ -25,6 +25,9 @@ from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
 from launcher.bus.wire import split_time
 from launcher.errors import reported
+from launcher.sim.sensors.metrics import MESSAGE as METRICS
+from launcher.sim.sensors.metrics import SUFFIX as METRICS_STREAM
+from launcher.sim.sensors.metrics import Metrics
 
 NAME = "renderer"
 WANTED_PERIOD = 0.5  # s: the wanted cameras are said again this often (and on each change)
@@ -46,6 +49,7 @@ class Renderer:
         self.data: Any = None
         self.version = -1
         self.cameras: dict[str, dict[str, Any]] = {}
+        self.metrics: dict[str, Metrics] = {}  # the cameras with <enable_metrics>
         self.publishers: dict[tuple[str, str], Any] = {}
         self.contexts: dict[tuple[int, int], Any] = {}
         self.wanted: list[str] = []
@@ -81,6 +85,8 @@ class Renderer:
                     self.publishers[(name, f"ros:{index}")] = self.node.create_publisher(
                         output["type"], output["topic"], QoS(depth=1), space=keys.ROS)
         self.cameras = cameras
+        self.metrics = {name: self.metrics.get(name) or Metrics(c["name"], c["update_rate"])
+                        for name, c in cameras.items() if METRICS_STREAM in c["topics"]}
         self.contexts.clear()  # (they hold the old model)
         self.say_wanted()
 
@@ -143,6 +149,10 @@ class Renderer:
         self.publish(name, "camera_info", self.camera_info(header, camera))
         for key, output in ros:
             self.publish(name, key, self.ros_message(output, camera, stamp, colour, depth))
+        if name in self.metrics:
+            fields = self.metrics[name].update(stamp, frame=True)
+            if self.watched(name, METRICS_STREAM):
+                self.publish(name, METRICS_STREAM, self.message(METRICS, **fields))
 
     def ros_message(self, output: dict[str, Any], camera: dict[str, Any], stamp: float,
                     colour: Any, depth: Any) -> Any:
@@ -297,7 +307,7 @@ def _streams(camera: dict[str, Any]) -> list[str]:
     return [*camera["topics"], *(f"ros:{i}" for i in range(len(camera.get("ros", ()))))]
 
 
-_TYPES = {"camera_info": "mujoco_sim/msg/CameraInfo",
+_TYPES = {"camera_info": "mujoco_sim/msg/CameraInfo", METRICS_STREAM: METRICS,
           "points": "mujoco_sim/msg/PointCloudPacked"}
 
 

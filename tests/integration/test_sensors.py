@@ -66,6 +66,9 @@ def test_ros_gz_sim_demos_imu_launch_runs_unchanged_and_the_imu_reads_gravity(se
         assert found and float(found.group(1)) == pytest.approx(9.8, abs=0.05), gz.stdout
         info = sensor_ws.run("gz", "topic", "-i", "-t", "/imu").stdout
         assert "gz.msgs.IMU" in info, info
+        # its rate, as a subscriber gets it (100 Hz of sim time; the machine may be slower)
+        rate = re.search(r"Rate: ([\d.]+) Hz \((\d+) messages in 1.5 s\)", info)
+        assert rate and 0 < float(rate.group(1)) <= 130, info
         said = sensor_ws.output("demo.out")
         assert "[ERROR]" not in said and "Traceback" not in said, said
     finally:
@@ -111,11 +114,55 @@ def test_gz_sims_sensors_world_publishes_its_sensors_and_says_what_it_lacks(sens
         found = re.search(r"force \{[^}]*z: ([\d.]+)", wrench)
         assert found and float(found.group(1)) == pytest.approx(98, rel=0.02), wrench
         assert 'value: "force_torque_demo::joint_01::force_torque"' in wrench, wrench
+        # <enable_metrics> on the magnetometer: gz-sensors' performance metrics
+        metrics = sensor_ws.run("gz", "topic", "-e", "-t", "/magnetometer/performance_metrics",
+                                "-n", "3", timeout=60).stdout
+        assert 'name: "sensors_box::link::magnetometer"' in metrics, metrics
+        assert "nominal_update_rate: 100" in metrics, metrics
+        rates = [float(r) for r in re.findall(r"sim_update_rate: ([\d.e+-]+)", metrics)]
+        assert rates[-1] == pytest.approx(100, rel=1e-3), metrics  # in sim time, exactly
         said = sensor_ws.output("sim.out")
         assert ("sensors.sdf:156: sensor 'air_speed' (air_speed) publishes nothing: the world "
                 "does not load gz-sim-air-speed-system") in said, said
     finally:
         assert stop(proc) == 0
+
+
+NAVSAT_WORLD = """<?xml version="1.0"?>
+<sdf version="1.9"><world name="geo">
+<plugin filename="gz-sim-navsat-system" name="gz::sim::systems::NavSat"/>
+<spherical_coordinates><surface_model>EARTH_WGS84</surface_model>
+<latitude_deg>-22.9</latitude_deg><longitude_deg>-43.2</longitude_deg><elevation>10</elevation>
+<heading_deg>0</heading_deg></spherical_coordinates>
+<model name="rover"><pose>0 0 1 0 0 0</pose><link name="link"><inertial><mass>1</mass>
+</inertial><sensor name="gps" type="navsat"><always_on>1</always_on><update_rate>10</update_rate>
+<topic>navsat</topic></sensor></link></model>
+</world></sdf>
+"""
+
+
+def test_the_bridge_gives_navsat_as_a_gps_fix_as_navsat_gpsfix_maps_it(sensor_ws):
+    """ros_gz_sim_demos' navsat_gpsfix mapping: gz.msgs.NavSat → gps_msgs/GPSFix; the rover
+    falls from 1 m, so it climbs downwards."""
+    (sensor_ws.root / "geo.sdf").write_text(NAVSAT_WORLD)
+    sim = sensor_ws.start("gz", "sim", "-s", "-r", str(sensor_ws.root / "geo.sdf"),
+                          output="sim.out")
+    bridge = sensor_ws.start("run", "ros_gz_bridge", "parameter_bridge",
+                             "/navsat@gps_msgs/msg/GPSFix@gz.msgs.NavSat", output="bridge.out")
+    try:
+        sensor_ws.wait_for_output("bridging 1 of 1 entries", 60, "bridge.out")
+        fix = sensor_ws.run("topic", "echo", "/navsat", "gps_msgs/msg/GPSFix", "--once",
+                            "--timeout", "30", timeout=60)
+        assert fix.returncode == 0, fix.stderr
+        values = dict(re.findall(r"^(\w+): (\S+)$", fix.stdout, re.M))
+        assert float(values["latitude"]) == pytest.approx(-22.9, abs=1e-6), fix.stdout
+        assert float(values["longitude"]) == pytest.approx(-43.2, abs=1e-6), fix.stdout
+        assert 9.0 < float(values["altitude"]) <= 11.0, fix.stdout
+        assert "frame_id: rover::link::gps" in fix.stdout, fix.stdout
+        assert re.search(r"^  status: 2$", fix.stdout, re.M), fix.stdout  # STATUS_GBAS_FIX
+    finally:
+        assert stop(bridge) in (0, 130)
+        assert stop(sim) == 0
 
 
 CAMERA_WORLD = """<?xml version="1.0"?>

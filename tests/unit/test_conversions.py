@@ -182,6 +182,33 @@ def test_the_sensors_types_pass_through_the_bridge_as_ros_lays_them_out():
                                  "mujoco_sim/msg/NavSat").to_ros(fix)
     read = reg.reader("sensor_msgs/msg/NavSatFix", lambda name, values: values)(converted)
     assert read[2:5] == [45.0, 7.0, 200.0] and read[1][1] == 1  # status.service: GPS
+    back = reg.deserialize(conversions.find("sensor_msgs/msg/NavSatFix", "mujoco_sim/msg/NavSat")
+                           .to_sim(converted), "mujoco_sim/msg/NavSat")
+    assert (back.latitude_deg, back.longitude_deg, back.altitude, back.header.frame_id) == \
+        (45.0, 7.0, 200.0, "m::l::gps")  # and back, as ros_gz_bridge's `@` pairs allow
+
+
+def test_navsat_becomes_a_gps_fix_with_speed_track_and_climb_and_comes_back():
+    """gps_msgs/GPSFix (navsat_gpsfix's mapping): the track in degrees clockwise from north,
+    as GPSFix defines it."""
+    reg = registry()
+    cls = reg.message_class
+    fix = reg.writer("mujoco_sim/msg/NavSat")(cls("mujoco_sim/msg/NavSat")(
+        header=cls("std_msgs/msg/Header")(stamp=cls("builtin_interfaces/msg/Time")(
+            sec=3, nanosec=4), frame_id="m::l::gps"),
+        latitude_deg=-35.0, longitude_deg=149.0, altitude=600.0, velocity_east=3.0,
+        velocity_north=-3.0, velocity_up=0.5))
+    conversion = conversions.find("gps_msgs/msg/GPSFix", "mujoco_sim/msg/NavSat")
+    gps = reg.deserialize(conversion.to_ros(fix), "gps_msgs/msg/GPSFix")
+    assert (gps.header.stamp.sec, gps.header.frame_id) == (3, "m::l::gps")
+    assert (gps.latitude, gps.longitude, gps.altitude) == (-35.0, 149.0, 600.0)
+    assert gps.speed == pytest.approx(18 ** 0.5) and gps.climb == 0.5
+    assert gps.track == pytest.approx(135.0)  # south-east
+    assert gps.status.status == 2 and gps.position_covariance_type == 0
+    back = reg.deserialize(conversion.to_sim(reg.writer("gps_msgs/msg/GPSFix")(gps)),
+                           "mujoco_sim/msg/NavSat")
+    assert (back.velocity_east, back.velocity_north, back.velocity_up) == \
+        pytest.approx((3.0, -3.0, 0.5))
 
 
 def test_a_wrench_loses_its_header_to_geometry_msgs_wrench_and_gains_one_back():

@@ -203,6 +203,36 @@ def test_a_sensor_whose_system_the_world_lacks_publishes_nothing_and_says_why(tm
     assert len(said) == 1 and "does not load gz-sim-imu-system" in said[0]
 
 
+def test_a_cpu_lidar_runs_under_gz_sims_cpu_lidar_system_as_under_the_sensors_one(tmp_path):
+    """gz-sim 9 runs `type="lidar"` in gz-sim-cpu-lidar-system; a gpu_lidar still needs the
+    sensors system."""
+    lidars = (sensor("cpu", "lidar", LIDAR.format(h=8, v=1, lo=-1, hi=1), rate=10) +
+              sensor("gpu", "gpu_lidar", LIDAR.format(h=8, v=1, lo=-1, hi=1), rate=10))
+    world = world_with(tmp_path, lidars, systems='<plugin filename="gz-sim-cpu-lidar-system" '
+                       'name="gz::sim::systems::CpuLidar"/>')
+    run(world, 0.25)
+    published = world.transport.published
+    assert len(published["/world/w/model/box/link/link/sensor/cpu/scan"]) >= 2
+    assert "/world/w/model/box/link/link/sensor/gpu/scan" not in published
+    said = [m for m in world.transport.messages("warning") if "gz-sim-cpu-lidar" in m]
+    assert not said  # the system is one launcher provides: no "runs without it"
+
+
+def test_enable_metrics_publishes_the_sensors_rates_as_gz_sensors_does(tmp_path):
+    world = world_with(tmp_path, sensor("imu", "imu", "<enable_metrics>true</enable_metrics>",
+                                        rate=50, topic="imu"))
+    run(world, 0.2)
+    metrics = world.transport.published["/imu/performance_metrics"]
+    assert 9 <= len(metrics) <= 11  # one per update
+    assert metrics[0].sim_update_rate == 0.0  # no update before the first
+    assert metrics[-1].name == "box::link::imu"
+    assert metrics[-1].sim_update_rate == pytest.approx(50, rel=1e-6)
+    assert metrics[-1].nominal_update_rate == 50 and metrics[-1].real_update_rate > 0
+    plain = world_with(tmp_path, sensor("imu", "imu", rate=50, topic="imu"))
+    run(plain, 0.1)
+    assert "/imu/performance_metrics" not in plain.transport.published
+
+
 NOISY = """<imu><linear_acceleration><x><noise type="gaussian"><mean>0</mean><stddev>0.5</stddev>
 </noise></x></linear_acceleration></imu>"""
 

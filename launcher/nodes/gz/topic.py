@@ -1,7 +1,9 @@
-"""`gz topic -l | -i -t T | -e -t T [-n N] [-d S] [--json-output] | -t T -m TYPE -p TEXT`.
+"""`gz topic -l | -i -t T [-d S] | -e -t T [-n N] [-d S] [--json-output] | -t T -m TYPE -p TEXT`.
 
 Unlike Gazebo, `-p` waits (up to a second) for the topic's subscribers before it publishes,
-so the one message is not lost to discovery."""
+so the one message is not lost to discovery, and `-i` also gives the topic's rate, measured
+over a second and a half (`-d S`) with a subscriber of its own (so a lazy sensor runs for it,
+as it would for any subscriber)."""
 
 from __future__ import annotations
 
@@ -20,6 +22,8 @@ from launcher.errors import LaunchError, UsageError
 from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.gz.common import gz_name, message_type, print_names
 
+RATE_WINDOW = 1.5  # s: `-i` measures the rate over this long
+
 
 def build_parser() -> Parser:
     """`gz topic`'s command line."""
@@ -33,7 +37,8 @@ def build_parser() -> Parser:
     parser.add_argument("-t", "--topic", metavar="TOPIC", help="the topic (-i, -e, -p)")
     parser.add_argument("-m", "--msgtype", metavar="TYPE", help="e.g. gz.msgs.Twist")
     parser.add_argument("-n", "--num", type=int, default=None, help="-e: stop after N")
-    parser.add_argument("-d", "--duration", type=float, default=None, help="-e: stop after S s")
+    parser.add_argument("-d", "--duration", type=float, default=None,
+                        help="-e: stop after S s; -i: measure the rate over S s (1.5)")
     parser.add_argument("--json-output", action="store_true", help="-e: print JSON")
     return parser
 
@@ -48,7 +53,7 @@ def topic(argv: list[str]) -> int:
     if args.list:
         return _topic_list()
     if args.info:
-        return _topic_info(args.topic)
+        return _topic_info(args.topic, RATE_WINDOW if args.duration is None else args.duration)
     if args.echo:
         return _echo(args.topic, args.num, args.duration, args.json_output)
     if not args.msgtype:
@@ -65,24 +70,44 @@ def _topic_list() -> int:
     return print_names(lambda session: set(_sim_topics(session)))
 
 
-def _topic_info(name: str) -> int:
+def _topic_info(name: str, window: float) -> int:
     session = open_session("client")
     try:
         found = [e for e in graph.entities(session, space=keys.SIM) if e.topic == name
                  and e.kind in (keys.PUBLISHER, keys.SUBSCRIPTION)]
+        if not found:
+            raise LaunchError(f"no publishers or subscribers on topic [{name}]")
+        for kind, title in ((keys.PUBLISHER, "Publishers"), (keys.SUBSCRIPTION, "Subscribers")):
+            mine = [e for e in found if e.kind == kind]
+            if mine:
+                print(f"{title} [Node, Message Type]:")
+                for entity in sorted(mine, key=lambda e: e.node_fqn):
+                    print(f"  {entity.node_fqn}, {gz_name(entity.type_name)}")
+            else:
+                print(f"No {title.lower()} on topic [{name}]")
+        published = sorted({e.type_name for e in found if e.kind == keys.PUBLISHER})
+        if published:
+            print(_rate(session, name, published[0], window), flush=True)
     finally:
         session.close()
-    if not found:
-        raise LaunchError(f"no publishers or subscribers on topic [{name}]")
-    for kind, title in ((keys.PUBLISHER, "Publishers"), (keys.SUBSCRIPTION, "Subscribers")):
-        mine = [e for e in found if e.kind == kind]
-        if mine:
-            print(f"{title} [Node, Message Type]:")
-            for entity in sorted(mine, key=lambda e: e.node_fqn):
-                print(f"  {entity.node_fqn}, {gz_name(entity.type_name)}")
-        else:
-            print(f"No {title.lower()} on topic [{name}]")
     return 0
+
+
+def _rate(session: Any, name: str, type_name: str, window: float) -> str:
+    """The rate a subscriber gets on `name` over `window` seconds (the bytes, not decoded)."""
+    node = Node("_launcher_gz_topic", argv=[], parameter_services=False, session=session,
+                space=keys.SIM)
+    times: list[float] = []
+    node.create_subscription(type_name, name, lambda _: times.append(time.monotonic()),
+                             QoS(depth=10), raw=True, inline=True)
+    try:
+        time.sleep(max(0.0, window))
+    finally:
+        node.destroy_node()
+    if len(times) < 2:
+        return f"Rate: {len(times)} message{'' if len(times) == 1 else 's'} in {window:g} s"
+    return (f"Rate: {(len(times) - 1) / (times[-1] - times[0]):.3f} Hz "
+            f"({len(times)} messages in {window:g} s)")
 
 
 def _type_of(session: Any, name: str, deadline: float | None) -> str:

@@ -45,7 +45,7 @@ PLUGIN_VARIABLES = (PLUGIN_PATH, "GZ_SIM_SYSTEM_PLUGIN_PATH", "IGN_GAZEBO_SYSTEM
 # Gazebo systems that are the sim itself, or feed sensors launcher reports on its own
 INFRASTRUCTURE = {"physics", "user-commands", "scene-broadcaster", "sensors", "imu",
                   "contact", "altimeter", "air-pressure", "magnetometer", "navsat",
-                  "forcetorque", "air-speed", "logical-camera", "log", "wind-effects"}
+                  "forcetorque", "air-speed", "cpu-lidar", "logical-camera", "log", "wind-effects"}
 _GZ_FILE = re.compile(
     r"^(?:lib)?(?:gz-sim|ignition-gazebo)\d*-(?P<system>.+?)-system(?:\.so)?$")
 _GZ_CLASS = re.compile(r"^(?:gz::sim|ignition::gazebo)::systems::(?P<system>\w+)$")
@@ -254,7 +254,9 @@ def _unavailable(config: PluginConfig, folders: list[Path]) -> str:
 
 
 def _provided() -> set[str]:
-    return {name for name in BUILTIN if name.startswith("gz-sim-")}
+    from launcher.sim.sensors import SYSTEM_CLASSES
+
+    return {name for name in BUILTIN if name.startswith("gz-sim-")} | set(SYSTEM_CLASSES)
 
 
 def _load_file(path: Path, config: PluginConfig) -> Any:

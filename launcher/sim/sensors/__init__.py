@@ -52,8 +52,11 @@ SYSTEM_CLASSES = {
     "gz-sim-altimeter-system": "Altimeter", "gz-sim-air-pressure-system": "AirPressure",
     "gz-sim-navsat-system": "NavSat", "gz-sim-sensors-system": "Sensors",
     "gz-sim-forcetorque-system": "ForceTorque", "gz-sim-contact-system": "Contact",
-    "gz-sim-air-speed-system": "AirSpeed",
+    "gz-sim-air-speed-system": "AirSpeed", "gz-sim-cpu-lidar-system": "CpuLidar",
 }
+# SDF types that either of two systems runs: gz-sim 9 runs a CPU `lidar` (`ray`) in a system
+# of its own (gz-sim-cpu-lidar-system); earlier ones, and launcher, with the rendering sensors
+ALSO_RUN_BY = dict.fromkeys(("lidar", "ray"), "gz-sim-cpu-lidar-system")
 CLASSES = {
     "imu": "launcher.sim.sensors.inertial:Imu",
     "magnetometer": "launcher.sim.sensors.inertial:Magnetometer",

@@ -10,9 +10,10 @@ from typing import Any
 
 from launcher.sim.plugins import Plugin
 from launcher.sim.sdf.xmltree import SdfError
-from launcher.sim.sensors import SYSTEM_CLASSES, SYSTEMS
+from launcher.sim.sensors import ALSO_RUN_BY, SYSTEM_CLASSES, SYSTEMS
 from launcher.sim.sensors.classic import RosOutput, classic_outputs, convert
 from launcher.sim.sensors.config import SensorConfig
+from launcher.sim.sensors.metrics import MESSAGE, SUFFIX, Metrics, enabled
 from launcher.sim.sensors.noise import generator
 from launcher.sim.sensors.topics import TopicClaims
 
@@ -121,6 +122,10 @@ class Sensor(Plugin):
         self.ros_publishers = [(output, transport.publisher(output.type_name, output.topic,
                                                             ros=True))
                                for output in self.outputs]
+        if enabled(self.config.element):
+            self.metrics = Metrics(self.scoped_name, self.config.update_rate)
+            self.metrics_publisher = transport.publisher(MESSAGE,
+                                                         f"{self.topic_name()}/{SUFFIX}")
 
     def configure(self) -> None:
         """Read the sensor's own settings (subclasses)."""
@@ -145,11 +150,17 @@ class Sensor(Plugin):
         if self.reports(message):
             self.publisher.publish(message)
         self.publish_ros(message, data)
+        if self.metrics_publisher is not None and \
+                self.metrics_publisher.get_subscription_count() > 0:
+            self.metrics_publisher.publish(self.sim.transport.message(
+                MESSAGE, **self.metrics.update(now)))
 
     def watched(self) -> bool:
         """Whether the sensor has work: `<always_on>`, or someone listens to any of it."""
         return self.config.always_on or self.publisher.get_subscription_count() > 0 or \
-            any(p.get_subscription_count() > 0 for _, p in self.ros_publishers)
+            any(p.get_subscription_count() > 0 for _, p in self.ros_publishers) or \
+            (self.metrics_publisher is not None and
+             self.metrics_publisher.get_subscription_count() > 0)
 
     def reports(self, message: Any) -> bool:
         """Whether the sim's topic gets this reading (a contact sensor's only when touching)."""
@@ -174,13 +185,16 @@ class Sensor(Plugin):
         raise NotImplementedError
 
     publisher: Any = None
+    metrics_publisher: Any = None
+    metrics: Metrics | None = None
     ros_publishers: list[tuple[RosOutput, Any]] = []
     outputs: list[RosOutput] = []
 
     def close(self) -> None:
         self.claims.release(self)
-        if self.publisher is not None:
-            self.publisher.destroy()
+        for publisher in (self.publisher, self.metrics_publisher):
+            if publisher is not None:
+                publisher.destroy()
         for _, publisher in self.ros_publishers:
             publisher.destroy()
 
@@ -191,5 +205,6 @@ class Sensor(Plugin):
     def _missing_system(self) -> str:
         systems = getattr(self.sim, "systems", None)
         needed = SYSTEMS[self.config.kind]
-        named = f"gz::sim::systems::{SYSTEM_CLASSES[needed]}"
-        return "" if systems is None or needed in systems or named in systems else needed
+        either = [needed, *filter(None, [ALSO_RUN_BY.get(self.config.element.get("type", ""))])]
+        names = {*either, *(f"gz::sim::systems::{SYSTEM_CLASSES[n]}" for n in either)}
+        return "" if systems is None or names & set(systems) else needed

@@ -15,6 +15,7 @@ import numpy as np
 
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors.base import Sensor
+from launcher.sim.sensors.metrics import SUFFIX, enabled
 
 MAX_SIDE = 8192  # pixels a side
 MAX_PIXELS = 16_777_216  # 4096 × 4096: past it one frame would be hundreds of MB
@@ -141,12 +142,19 @@ class Camera(Sensor):
                      "camera_info": f"{main.rsplit('/', 1)[0]}/camera_info"}
             if kind == "depth_camera":
                 found["points"] = f"{main}/points"
-            return found
+            return self._with_metrics(found, main)
         base = self.topic_name() if given else \
             (scoped if kind == "rgbd_camera" else f"{scoped}/segmentation")
         streams = ("image", "depth_image", "points") if kind == "rgbd_camera" else \
             ("labels_map", "colored_map")
-        return {**{s: f"{base}/{s}" for s in streams}, "camera_info": f"{base}/camera_info"}
+        return self._with_metrics({**{s: f"{base}/{s}" for s in streams},
+                                   "camera_info": f"{base}/camera_info"}, base)
+
+    def _with_metrics(self, streams: dict[str, str], topic: str) -> dict[str, str]:
+        """`<enable_metrics>`: the renderer publishes them below the sensor's topic."""
+        if enabled(self.config.element):
+            streams[SUFFIX] = f"{topic}/{SUFFIX}"
+        return streams
 
     def settings(self) -> dict[str, Any]:
         """What the renderer needs of this camera (sent with the model)."""
@@ -155,7 +163,8 @@ class Camera(Sensor):
                 "far": self.far, "depth_near": self.depth_near, "depth_far": self.depth_far,
                 "k": [self.fx, 0.0, self.cx, 0.0, self.fy, self.cy, 0.0, 0.0, 1.0],
                 "frame_id": self.frame_id, "topics": self.topics(),
-                "always_on": self.config.always_on,
+                "always_on": self.config.always_on, "name": self.scoped_name,
+                "update_rate": self.config.update_rate,
                 "ros": [{"stream": o.stream, "type": o.type_name, "topic": o.topic,
                          "frame_id": o.frame_id} for o in self.outputs
                         if self.config.kind != "camera" or o.stream in COLOUR_STREAMS]}
