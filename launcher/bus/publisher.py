@@ -17,7 +17,7 @@ import zenoh.ext
 
 from launcher.bus import keys
 from launcher.bus.host import Host, direct
-from launcher.bus.qos import QoS
+from launcher.bus.qos import KEEP_ALL_DEPTH, QoS
 from launcher.bus.types import registry
 
 HEARTBEAT = 0.5  # s, a reliable latched publisher's sporadic heartbeat (rmw_zenoh's period)
@@ -32,12 +32,16 @@ class Publisher:
         self.space = space or host.space
         key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name),
                              self.space)
-        # Reliable means "do not drop": block under congestion, as ROS 2 reliable QoS does.
+        # As rmw_zenoh: only a reliable keep-all publisher blocks under congestion; the others
+        # drop what a congested link cannot take, so a subscriber that stops reading (a
+        # stopped process, a slow link) never stalls the publisher, nor the router's other
+        # links behind it (the sim's sensors, its clock).
+        blocking = qos.reliable and qos.depth == KEEP_ALL_DEPTH
         options: dict[str, Any] = {
-            "reliability": zenoh.Reliability.RELIABLE, "congestion_control":
-            zenoh.CongestionControl.BLOCK} if qos.reliable else {
-            "reliability": zenoh.Reliability.BEST_EFFORT,
-            "congestion_control": zenoh.CongestionControl.DROP}
+            "reliability": zenoh.Reliability.RELIABLE if qos.reliable else
+            zenoh.Reliability.BEST_EFFORT,
+            "congestion_control": zenoh.CongestionControl.BLOCK if blocking else
+            zenoh.CongestionControl.DROP}
         # Whether anyone listens (a plain publisher tells, an advanced one does not).
         self._publisher = host.session.declare_publisher(key, **options)
         self._latched: Any = None

@@ -176,7 +176,7 @@ CAMERA_WORLD = """<?xml version="1.0"?>
 <material><ambient>1 0 0 1</ambient><diffuse>1 0 0 1</diffuse></material></visual></link></model>
 <model name="cam"><static>true</static><pose>0 0 0.5 0 0 0</pose><link name="link">
 <sensor name="camera" type="camera"><topic>camera</topic><update_rate>20</update_rate>
-<camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
+<enable_metrics>true</enable_metrics><camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
 </image><clip><near>0.1</near><far>100</far></clip></camera></sensor>
 <sensor name="depth" type="depth_camera"><topic>depth_camera</topic><update_rate>20</update_rate>
 <camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
@@ -204,6 +204,9 @@ node.create_subscription("mujoco_sim/msg/Image", "/depth_camera",
                          lambda m: got.setdefault("depth", m))
 node.create_subscription("mujoco_sim/msg/CameraInfo", "/camera_info",
                          lambda m: got.setdefault("info", m))
+metrics = []
+node.create_subscription("mujoco_sim/msg/PerformanceSensorMetrics",
+                         "/camera/performance_metrics", metrics.append)
 snaps = []
 node.create_subscription("mujoco_sim/msg/Image", "/world/cam/model/cam/link/link/sensor/snap/"
                          "image", lambda m: snaps.append(m.header.stamp.sec))
@@ -222,7 +225,9 @@ print(json.dumps({"idle": idle, "centre": rgb[24, 32].tolist(), "corner": rgb[1,
                   "depth": float(depth[24, 32]), "depth_corner": str(depth[1, 1]),
                   "encoding": [got["rgb"].encoding, got["depth"].encoding],
                   "frame": got["rgb"].header.frame_id, "k": list(got["info"].k),
-                  "snaps": [before, len(snaps)]}))
+                  "snaps": [before, len(snaps)],
+                  "metrics": [[m.name, m.nominal_update_rate, m.sim_update_rate, m.fps]
+                              for m in metrics[-1:]]}))
 node.destroy_node()
 """
 
@@ -254,6 +259,10 @@ def test_cameras_draw_what_is_there_in_a_renderer_of_their_own(sensor_ws):
         fx = 64 / (2 * math.tan(1.047 / 2))
         assert seen["k"] == pytest.approx([fx, 0, 32, 0, fx, 24, 0, 0, 1])
         assert seen["snaps"] == [0, 1], seen  # one frame, for the one trigger
+        # <enable_metrics>: the renderer gives the frames' rate in sim time and real time
+        [[name, nominal, sim_rate, fps]] = seen["metrics"]
+        assert name == "cam::link::camera" and nominal == 20 and fps > 0, seen
+        assert sim_rate == pytest.approx(20, rel=0.01) or sim_rate < 20, seen  # (drops)
         assert "drawing the cameras of world 'cam' with egl" in sensor_ws.output("sim.out")
     finally:
         assert stop(proc) == 0
@@ -346,3 +355,90 @@ def test_gazebo_plugins_camera_demo_publishes_images_onto_the_ros_graph(sensor_w
         assert f"{640 / (2 * math.tan(1.3962634 / 2)):.3f}"[:6] in info.stdout, info.stdout
     finally:
         assert stop(proc) == 0
+
+
+FLOOD_WORLD = """<?xml version="1.0"?>
+<sdf version="1.9"><world name="flood">
+<plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors"/>
+<model name="wall"><static>true</static><pose>3 0 1 0 0 0</pose><link name="l"><collision
+name="c"><geometry><box><size>0.2 20 4</size></box></geometry></collision></link></model>
+<model name="bot"><static>true</static><pose>0 0 1 0 0 0</pose><link name="link">
+<sensor name="lidar" type="gpu_lidar"><topic>lidar</topic><update_rate>50</update_rate>
+<lidar><scan><horizontal><samples>1800</samples><min_angle>-3.14</min_angle>
+<max_angle>3.14</max_angle></horizontal><vertical><samples>16</samples>
+<min_angle>-0.2</min_angle><max_angle>0.2</max_angle></vertical></scan>
+<range><min>0.1</min><max>30</max></range></lidar></sensor></link></model>
+</world></sdf>
+"""
+
+STALLER = """
+import time
+from launcher.bus import keys
+from launcher.bus.node import Node
+node = Node("staller", argv=[], space=keys.SIM)
+got = []
+node.create_subscription("mujoco_sim/msg/PointCloudPacked", "/lidar/points",
+                         lambda payload: got.append(1), raw=True)
+while not got:
+    node.spin_once(0.1)
+print("reading", flush=True)
+node.spin()
+"""
+
+CLOCK_WATCH = """
+import json, struct, sys, time
+from launcher.bus import keys
+from launcher.bus.node import Node
+node = Node("clock_watch", argv=[], space=keys.SIM)
+clocks = []
+layout = struct.Struct("<4xiI")
+def on_clock(payload):
+    sec, nanosec = layout.unpack_from(payload)
+    clocks.append((time.monotonic(), sec + nanosec * 1e-9))
+node.create_subscription("mujoco_sim/msg/Clock", "/world/flood/clock", on_clock, raw=True,
+                         inline=True)
+while not clocks:
+    node.spin_once(0.1)
+node.spin(float(sys.argv[1]))
+(w0, s0), (w1, s1) = clocks[0], clocks[-1]
+gap = max(b[0] - a[0] for a, b in zip(clocks, clocks[1:]))
+print(json.dumps({"rtf": (s1 - s0) / (w1 - w0), "gap": gap}))
+"""
+
+
+def test_a_subscriber_that_never_reads_puts_no_back_pressure_on_the_sim(sensor_ws):
+    """A process that subscribes to the lidar's point clouds (about 0.9 MB at 50 Hz) and
+    then stops (SIGSTOP: it never reads again) fills its socket; the sim drops what it
+    cannot take (as rmw_zenoh does for keep-last topics) and steps on at its pace: no stall,
+    and its RTF as it was before (same run)."""
+    import json
+    import subprocess
+    import sys
+
+    sensor_ws.write("flood.sdf", FLOOD_WORLD)
+    staller_script = sensor_ws.write("staller.py", STALLER)
+    watch = sensor_ws.write("watch.py", CLOCK_WATCH)
+    sim = sensor_ws.start("gz", "sim", "-s", "-r", "-v", "3", "flood.sdf", output="sim.out")
+    staller = None
+    try:
+        sensor_ws.wait_for_output("running", 60, "sim.out")
+
+        def watch_clock(seconds: float) -> dict:
+            done = subprocess.run([sys.executable, str(watch), str(seconds)], env=sensor_ws.env,
+                                  capture_output=True, text=True, timeout=120)
+            assert done.returncode == 0, done.stderr
+            return json.loads(done.stdout.splitlines()[-1])
+
+        before = watch_clock(6)
+        staller = subprocess.Popen([sys.executable, str(staller_script)], env=sensor_ws.env,
+                                   stdout=subprocess.PIPE, text=True)
+        assert staller.stdout.readline().strip() == "reading"
+        staller.send_signal(signal.SIGSTOP)
+        stalled = watch_clock(12)  # Zenoh would give up on a blocked link after 5 s
+        assert stalled["gap"] < 1.0, (before, stalled)  # the sim never waited on it
+        assert stalled["rtf"] >= 0.95 * before["rtf"], (before, stalled)
+    finally:
+        if staller is not None:
+            staller.kill()
+            staller.wait(10)
+        assert stop(sim) == 0
