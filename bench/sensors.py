@@ -7,6 +7,10 @@ its lidar at update_rate 0 (a scan every step), a subscriber counting the scans 
 rays/s delivered against raw. Then the same world paced at real time (1 kHz physics) with the
 lidar at 10 Hz and subscribed: the sim's RTF from its clock.
 
+Ten robots: ten diff-drive robots driving circles among walls, each with a 2D lidar (360
+samples at 10 Hz) and an IMU (100 Hz, always on), the sim at real time (1 kHz physics): its
+RTF with one lidar subscribed, then with all ten subscribed.
+
 Camera: 640 × 480 RGB in the same scene with a shadow-casting light. Raw: `mujoco.Renderer`
 drawing that camera in this process, as fast as it can. Delivered: a real sim at real time,
 the camera always due (update_rate 0), its renderer process drawing as fast as it can, and a
@@ -167,6 +171,110 @@ def delivered(world: Path, env: dict[str, str], seconds: float, paced: bool,
         sim.wait(10)
 
 
+ROBOTS = 10
+ROBOT = """<model name="robot{i}"><pose>{x:.2f} {y:.2f} 0.1 0 0 {yaw:.2f}</pose>
+<link name="chassis"><inertial><mass>4</mass><inertia><ixx>0.05</ixx><iyy>0.08</iyy>
+<izz>0.1</izz></inertia></inertial><collision name="c"><geometry><box><size>0.5 0.3 0.1</size>
+</box></geometry></collision><visual name="v"><geometry><box><size>0.5 0.3 0.1</size></box>
+</geometry></visual>
+<sensor name="lidar" type="gpu_lidar"><pose>0.1 0 0.1 0 0 0</pose><topic>robot{i}/scan</topic>
+<update_rate>10</update_rate><lidar><scan><horizontal><samples>360</samples>
+<min_angle>-3.14159</min_angle><max_angle>3.14159</max_angle></horizontal></scan>
+<range><min>0.12</min><max>12</max></range></lidar></sensor>
+<sensor name="imu" type="imu"><always_on>1</always_on><update_rate>100</update_rate>
+<topic>robot{i}/imu</topic></sensor></link>
+{wheels}
+<link name="caster"><pose>-0.2 0 -0.05 0 0 0</pose><inertial><mass>0.1</mass><inertia>
+<ixx>1e-4</ixx><iyy>1e-4</iyy><izz>1e-4</izz></inertia></inertial><collision name="c">
+<geometry><sphere><radius>0.05</radius></sphere></geometry><surface><friction><ode><mu>0</mu>
+<mu2>0</mu2></ode></friction></surface></collision></link>
+<joint name="caster_joint" type="fixed"><parent>chassis</parent><child>caster</child></joint>
+<plugin filename="gz-sim-diff-drive-system" name="gz::sim::systems::DiffDrive">
+<left_joint>left_joint</left_joint><right_joint>right_joint</right_joint>
+<wheel_separation>0.36</wheel_separation><wheel_radius>0.1</wheel_radius></plugin>
+</model>"""
+WHEEL = """<link name="{side}"><pose>0.1 {y} 0 -1.5707963 0 0</pose><inertial><mass>0.5</mass>
+<inertia><ixx>1e-3</ixx><iyy>1e-3</iyy><izz>2e-3</izz></inertia></inertial><collision name="c">
+<geometry><cylinder><radius>0.1</radius><length>0.04</length></cylinder></geometry>
+</collision></link><joint name="{side}_joint" type="revolute"><parent>chassis</parent>
+<child>{side}</child><axis><xyz>0 0 1</xyz></axis></joint>"""
+
+
+def fleet_world(folder: Path) -> Path:
+    """Ten robots on a ring inside four walls."""
+    robots = []
+    for i in range(ROBOTS):
+        angle = 2 * math.pi * i / ROBOTS
+        wheels = WHEEL.format(side="left", y=0.18) + WHEEL.format(side="right", y=-0.18)
+        robots.append(ROBOT.format(i=i, x=4 * math.cos(angle), y=4 * math.sin(angle),
+                                   yaw=angle + math.pi / 2, wheels=wheels))
+    walls = "".join(
+        f"""<model name="wall{n}"><static>true</static><pose>{x} {y} 0.5 0 0 {yaw}</pose>
+<link name="l"><collision name="c"><geometry><box><size>16 0.2 1</size></box></geometry>
+</collision></link></model>""" for n, (x, y, yaw) in
+        enumerate([(8, 0, 1.5708), (-8, 0, 1.5708), (0, 8, 0), (0, -8, 0)]))
+    text = f"""<?xml version="1.0"?><sdf version="1.9"><world name="fleet">
+<physics name="1ms" type="ignored"><max_step_size>0.001</max_step_size></physics>
+<plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors"/>
+<plugin filename="gz-sim-imu-system" name="gz::sim::systems::Imu"/>
+<model name="ground"><static>true</static><link name="l"><collision name="c"><geometry><plane>
+<normal>0 0 1</normal><size>40 40</size></plane></geometry></collision></link></model>
+{walls}{''.join(robots)}
+</world></sdf>"""
+    path = folder / "fleet.sdf"
+    path.write_text(text)
+    return path
+
+
+def fleet(world: Path, env: dict[str, str], seconds: float) -> list[tuple[float, float]]:
+    """(the sim's RTF, lidar scans/s per subscribed lidar) with one lidar subscribed, then
+    with all ten, every robot driving a circle."""
+    from launcher.bus import keys
+    from launcher.bus.node import Node
+
+    sim = subprocess.Popen([PY, "-m", "launcher.nodes.sim", "-r", "-s", "-v", "1", str(world)],
+                           env=env)
+    node = Node("bench_fleet", argv=[], space=keys.SIM)
+    try:
+        drive = [node.create_publisher("mujoco_sim/msg/Twist", f"/model/robot{i}/cmd_vel")
+                 for i in range(ROBOTS)]
+        command = node.message("mujoco_sim/msg/Twist")
+        command.linear.x, command.angular.z = 0.5, 0.125  # a 4 m circle
+
+        def go() -> None:
+            for publisher in drive:
+                publisher.publish(command)
+
+        node.create_timer(0.5, go)
+        clocks: list[tuple[float, float]] = []
+        layout = struct.Struct("<4xiI")
+
+        def on_clock(payload: bytes) -> None:
+            sec, nanosec = layout.unpack_from(payload)
+            clocks.append((time.monotonic(), sec + nanosec * 1e-9))
+
+        node.create_subscription("mujoco_sim/msg/Clock", "/world/fleet/clock", on_clock,
+                                 raw=True, inline=True)
+        results, held = [], []
+        scans: list[float] = []
+        for watched in (1, ROBOTS):
+            for i in range(len(held), watched):
+                held.append(node.create_subscription(
+                    "mujoco_sim/msg/LaserScan", f"/robot{i}/scan",
+                    lambda payload: scans.append(time.monotonic()), raw=True))
+            node.spin(3.0)  # settle: subscribers found, robots moving
+            clocks.clear()
+            scans.clear()
+            node.spin(seconds)
+            (wall0, sim0), (wall1, sim1) = clocks[0], clocks[-1]
+            results.append(((sim1 - sim0) / (wall1 - wall0), len(scans) / seconds / watched))
+        return results
+    finally:
+        node.destroy_node()
+        sim.terminate()
+        sim.wait(10)
+
+
 def main() -> None:
     only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
     env, router = start_router()
@@ -174,17 +282,18 @@ def main() -> None:
     os.environ.setdefault("MUJOCO_GL", "egl")
     try:
         unpaced_world, paced_world = lidar_world(folder, 0), lidar_world(folder, 10)
+        lidar = only in ("", "lidar")
         ratios, raws, delivered_rates = [], [], []
-        for _ in range(3 if only != "camera" else 0):  # interleaved: raw, then delivered
+        for _ in range(3 if lidar else 0):  # interleaved: raw, then delivered
             raw = raw_rays_per_second(unpaced_world)
             rate, _ = delivered(unpaced_world, env, 6.0, paced=False)
             raws.append(raw / 1e6)
             delivered_rates.append(rate * RAYS / 1e6)
             ratios.append(rate * RAYS / raw)
-        scans, rtf = delivered(paced_world, env, 10.0, paced=True) if only != "camera" else \
+        scans, rtf = delivered(paced_world, env, 10.0, paced=True) if lidar else \
             (math.nan, math.nan)
         camera_rows = []
-        for kind in ("camera", "depth_camera") if only != "lidar" else ():
+        for kind in ("camera", "depth_camera") if only in ("", "camera") else ():
             label = "RGB" if kind == "camera" else "depth"
             paced_camera = lidar_world(folder, 10, CAMERA.format(kind=kind, rate=30))
             flat_out = lidar_world(folder, 0, CAMERA.format(kind=kind, rate=0))
@@ -210,7 +319,7 @@ def main() -> None:
                  summary(fps)),
                 (f"sim RTF while the {label} camera renders at 30 Hz", ">= 0.95",
                  summary(rtfs))]
-        if only != "camera":
+        if lidar:
             rows = [
                 (f"raw mj_multiRay, {VERTICAL} x {HORIZONTAL} rays, 40 obstacles, M rays/s",
                  "report", summary(raws)),
@@ -221,8 +330,18 @@ def main() -> None:
                 ("sim RTF at 1 kHz with the 10 Hz lidar subscribed", ">= 0.98", f"{rtf:.3f}"),
             ]
             table("sensors: the lidar", rows)
-        if only != "lidar":
+        if only in ("", "camera"):
             table("sensors: the camera", camera_rows)
+        if only in ("", "fleet"):
+            runs = [fleet(fleet_world(folder), env, 10.0) for _ in range(2)]
+            table("sensors: ten robots", [
+                ("RTF, 10 robots driving, 10 lidars (360 @ 10 Hz) + 10 IMUs (100 Hz), one "
+                 "lidar subscribed", ">= 0.95", summary([r[0][0] for r in runs])),
+                ("  scans/s the subscribed lidar delivers", "10",
+                 summary([r[0][1] for r in runs])),
+                ("RTF, the same with all ten lidars subscribed", "report",
+                 summary([r[1][0] for r in runs])),
+                ("  scans/s each lidar delivers", "10", summary([r[1][1] for r in runs]))])
     finally:
         router.terminate()
         router.wait(10)

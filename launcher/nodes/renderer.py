@@ -28,6 +28,15 @@ from launcher.errors import reported
 from launcher.sim.sensors.metrics import MESSAGE as METRICS
 from launcher.sim.sensors.metrics import SUFFIX as METRICS_STREAM
 from launcher.sim.sensors.metrics import Metrics
+from launcher.sim.sensors.noise import generator
+from launcher.sim.sensors.pictures import (
+    Lens,
+    add_noise,
+    distort,
+    lens,
+    segment,
+    segmentation_tables,
+)
 
 NAME = "renderer"
 WANTED_PERIOD = 0.5  # s: the wanted cameras are said again this often (and on each change)
@@ -49,7 +58,10 @@ class Renderer:
         self.data: Any = None
         self.version = -1
         self.cameras: dict[str, dict[str, Any]] = {}
+        self.geom_label = self.geom_instance = np.zeros(0, dtype=np.int64)
         self.metrics: dict[str, Metrics] = {}  # the cameras with <enable_metrics>
+        self.noise: dict[str, Any] = {}  # the generators of the cameras with <noise>
+        self.lenses: dict[str, Lens] = {}  # the cameras with a <distortion>
         self.publishers: dict[tuple[str, str], Any] = {}
         self.contexts: dict[tuple[int, int], Any] = {}
         self.wanted: list[str] = []
@@ -85,8 +97,14 @@ class Renderer:
                     self.publishers[(name, f"ros:{index}")] = self.node.create_publisher(
                         output["type"], output["topic"], QoS(depth=1), space=keys.ROS)
         self.cameras = cameras
+        self.geom_label, self.geom_instance = segmentation_tables(
+            self.model, json.loads(message.labels or "{}"))
+        self.lenses = {name: lens(c["width"], c["height"], c["k"], c["distortion"])
+                       for name, c in cameras.items() if any(c["distortion"])}
         self.metrics = {name: self.metrics.get(name) or Metrics(c["name"], c["update_rate"])
                         for name, c in cameras.items() if METRICS_STREAM in c["topics"]}
+        self.noise = {name: self.noise.get(name) or generator(c["seed"], c["name"])
+                      for name, c in cameras.items() if any(c["noise"])}
         self.contexts.clear()  # (they hold the old model)
         self.say_wanted()
 
@@ -143,9 +161,9 @@ class Renderer:
         if "points" in topics and depth is not None and self.watched(name, "points"):
             self.publish(name, "points", self.points(header, camera, depth, colour))
         if "labels_map" in topics:
-            labels = self.render(camera, "segmentation")
+            labels, colours = self.segment(camera, self.render(camera, "segmentation"))
             self.publish(name, "labels_map", self.image(header, labels, "rgb8"))
-            self.publish(name, "colored_map", self.image(header, _colour(labels), "rgb8"))
+            self.publish(name, "colored_map", self.image(header, colours, "rgb8"))
         self.publish(name, "camera_info", self.camera_info(header, camera))
         for key, output in ros:
             self.publish(name, key, self.ros_message(output, camera, stamp, colour, depth))
@@ -170,8 +188,15 @@ class Renderer:
 
     def render(self, camera: dict[str, Any], what: str) -> Any:
         """The camera's picture: RGB (uint8 H×W×3), depth (float32 metres, ±inf outside the
-        clip) or segmentation labels (uint8 H×W×3: each entity's number, wrapped at 256)."""
-        renderer = self.context(camera["width"], camera["height"])
+        clip) or segmentation (int32 H×W×2: each pixel's object id and type). A camera with a
+        lens is drawn wider, then seen through it (finish)."""
+        found = self.lenses.get(camera["camera"])
+        renderer = self.context(found.width, found.height) if found else \
+            self.context(camera["width"], camera["height"])
+        if found:
+            camera_id = self.model.camera(camera["camera"]).id
+            nominal, self.model.cam_fovy[camera_id] = \
+                float(self.model.cam_fovy[camera_id]), found.fovy
         near, far = (camera["depth_near"], camera["depth_far"]) if what == "depth" else \
             (camera["near"], camera["far"])
         extent = max(float(self.model.stat.extent), 1e-9)
@@ -184,14 +209,36 @@ class Renderer:
             renderer.update_scene(self.data, camera=camera["camera"])
             picture = renderer.render()
         finally:
+            if found:
+                self.model.cam_fovy[camera_id] = nominal
             renderer.disable_depth_rendering()
             renderer.disable_segmentation_rendering()
         if what == "depth":
             picture = picture.astype(np.float32)
             picture[picture >= far * 0.999] = np.inf
             picture[picture < near] = -np.inf
-        elif what == "segmentation":
-            picture = _labels(self.model, picture)
+            picture = self.finish(camera, picture, 1.0, np.inf)
+        elif what == "segmentation":  # (each pixel's object id and type: segment() reads them)
+            picture = self.finish(camera, picture, 0.0, -1)
+        else:
+            picture = self.finish(camera, picture, 255.0, 0)
+        return picture
+
+    def segment(self, camera: dict[str, Any], segmentation: Any) -> tuple[Any, Any]:
+        return segment(segmentation, self.geom_label, self.geom_instance,
+                       camera.get("segmentation") == "panoptic")
+
+    def finish(self, camera: dict[str, Any], picture: Any, unit: float, fill: Any) -> Any:
+        """The picture through the camera's lens (`<distortion>`) and with its `<noise>`
+        (`unit`: 255 a colour channel, 1 a metre of depth; `fill` where the lens shows
+        nothing)."""
+        found = self.lenses.get(camera["camera"])
+        if found is not None:
+            shape = (camera["height"], camera["width"], *picture.shape[2:])
+            picture = distort(picture, found, shape, fill)
+        rng = self.noise.get(camera["camera"])
+        if rng is not None and unit:
+            picture = add_noise(picture, rng, *camera["noise"], unit)
         return picture
 
     def context(self, width: int, height: int) -> Any:
@@ -290,7 +337,8 @@ class Renderer:
                                 height=0, width=0, do_rectify=False)
         return self.message(
             "mujoco_sim/msg/CameraInfo", header=header, height=camera["height"],
-            width=camera["width"], distortion_model="plumb_bob", d=[0.0] * 5, k=k,
+            width=camera["width"], distortion_model="plumb_bob", d=list(camera["distortion"]),
+            k=k,
             r=[1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0],
             p=[k[0], 0.0, k[2], 0.0, 0.0, k[4], k[5], 0.0, 0.0, 0.0, 1.0, 0.0], binning_x=0,
             binning_y=0, roi=roi)
@@ -309,28 +357,6 @@ def _streams(camera: dict[str, Any]) -> list[str]:
 
 _TYPES = {"camera_info": "mujoco_sim/msg/CameraInfo", METRICS_STREAM: METRICS,
           "points": "mujoco_sim/msg/PointCloudPacked"}
-
-
-def _labels(model: Any, segmentation: Any) -> Any:
-    """Each pixel's entity (its top-level body's number among the world's, 0 for none) as
-    one label in three channels, as Gazebo's semantic labels map has it."""
-    import mujoco
-
-    ids, types = segmentation[..., 0], segmentation[..., 1]
-    body_of_geom = model.geom_bodyid
-    roots = model.body_rootid
-    labels = np.zeros(ids.shape, dtype=np.int64)
-    geoms = (types == int(mujoco.mjtObj.mjOBJ_GEOM)) & (ids >= 0)
-    labels[geoms] = roots[body_of_geom[ids[geoms]]]
-    label = (labels % 256).astype(np.uint8)
-    return np.stack([label, label, label], axis=-1)
-
-
-def _colour(labels: Any) -> Any:
-    """A colour per label (a fixed pseudo-random one), for looking at."""
-    index = labels[..., 0].astype(np.uint32)
-    return np.stack([(index * 97) % 256, (index * 57) % 256, (index * 151) % 256],
-                    axis=-1).astype(np.uint8)
 
 
 def _gl_renderer() -> str:

@@ -173,7 +173,9 @@ CAMERA_WORLD = """<?xml version="1.0"?>
 <model name="red"><static>true</static><pose>3 0 0.5 0 0 0</pose><link name="l">
 <collision name="c"><geometry><box><size>1 1 1</size></box></geometry></collision>
 <visual name="v"><geometry><box><size>1 1 1</size></box></geometry>
-<material><ambient>1 0 0 1</ambient><diffuse>1 0 0 1</diffuse></material></visual></link></model>
+<material><ambient>1 0 0 1</ambient><diffuse>1 0 0 1</diffuse></material></visual></link>
+<plugin filename="gz-sim-label-system" name="gz::sim::systems::Label"><label>40</label></plugin>
+</model>
 <model name="cam"><static>true</static><pose>0 0 0.5 0 0 0</pose><link name="link">
 <sensor name="camera" type="camera"><topic>camera</topic><update_rate>20</update_rate>
 <enable_metrics>true</enable_metrics><camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
@@ -181,6 +183,12 @@ CAMERA_WORLD = """<?xml version="1.0"?>
 <sensor name="depth" type="depth_camera"><topic>depth_camera</topic><update_rate>20</update_rate>
 <camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height>
 <format>R_FLOAT32</format></image><clip><near>0.1</near><far>10</far></clip></camera></sensor>
+<sensor name="seg" type="segmentation"><topic>seg</topic><update_rate>20</update_rate>
+<camera><segmentation_type>panoptic</segmentation_type><horizontal_fov>1.047</horizontal_fov>
+<image><width>64</width><height>48</height></image></camera></sensor>
+<sensor name="lensed" type="camera"><topic>lensed</topic><update_rate>20</update_rate>
+<camera><horizontal_fov>1.047</horizontal_fov><image><width>64</width><height>48</height></image>
+<distortion><k1>1.5</k1></distortion></camera></sensor>
 <sensor name="snap" type="camera"><update_rate>0</update_rate><camera><triggered>true</triggered>
 <trigger_topic>take</trigger_topic><image><width>32</width><height>24</height></image></camera>
 </sensor>
@@ -204,6 +212,10 @@ node.create_subscription("mujoco_sim/msg/Image", "/depth_camera",
                          lambda m: got.setdefault("depth", m))
 node.create_subscription("mujoco_sim/msg/CameraInfo", "/camera_info",
                          lambda m: got.setdefault("info", m))
+node.create_subscription("mujoco_sim/msg/Image", "/seg/labels_map",
+                         lambda m: got.setdefault("seg", m))
+node.create_subscription("mujoco_sim/msg/Image", "/lensed",
+                         lambda m: got.setdefault("lensed", m))
 metrics = []
 node.create_subscription("mujoco_sim/msg/PerformanceSensorMetrics",
                          "/camera/performance_metrics", metrics.append)
@@ -211,7 +223,7 @@ snaps = []
 node.create_subscription("mujoco_sim/msg/Image", "/world/cam/model/cam/link/link/sensor/snap/"
                          "image", lambda m: snaps.append(m.header.stamp.sec))
 end = time.time() + 30
-while len(got) < 3 and time.time() < end:
+while len(got) < 5 and time.time() < end:
     node.spin_once(0.1)
 node.spin(1.0)
 before = len(snaps)
@@ -221,7 +233,11 @@ take.publish(node.message("mujoco_sim/msg/Boolean", data=True))
 node.spin(3.0)
 rgb = np.frombuffer(bytes(got["rgb"].data), np.uint8).reshape(48, 64, 3)
 depth = np.frombuffer(bytes(got["depth"].data), np.float32).reshape(48, 64)
-print(json.dumps({"idle": idle, "centre": rgb[24, 32].tolist(), "corner": rgb[1, 1].tolist(),
+seg = np.frombuffer(bytes(got["seg"].data), np.uint8).reshape(48, 64, 3)
+lensed = np.frombuffer(bytes(got["lensed"].data), np.uint8).reshape(48, 64, 3)
+red = lambda picture: int(((picture[..., 0] > 120) & (picture[..., 1] < 90)).sum())
+print(json.dumps({"idle": idle, "seg": [seg[24, 32].tolist(), seg[1, 1].tolist()],
+                  "red": [red(rgb), red(lensed)], "centre": rgb[24, 32].tolist(), "corner": rgb[1, 1].tolist(),
                   "depth": float(depth[24, 32]), "depth_corner": str(depth[1, 1]),
                   "encoding": [got["rgb"].encoding, got["depth"].encoding],
                   "frame": got["rgb"].header.frame_id, "k": list(got["info"].k),
@@ -259,6 +275,11 @@ def test_cameras_draw_what_is_there_in_a_renderer_of_their_own(sensor_ws):
         fx = 64 / (2 * math.tan(1.047 / 2))
         assert seen["k"] == pytest.approx([fx, 0, 32, 0, fx, 24, 0, 0, 1])
         assert seen["snaps"] == [0, 1], seen  # one frame, for the one trigger
+        # a pincushion lens draws the box larger, about the centre
+        plain_red, lensed_red = seen["red"]
+        assert lensed_red > 1.1 * plain_red > 0, seen
+        # the labelled box in the panoptic map: instance 1 of label 40; elsewhere background
+        assert seen["seg"] == [[1, 0, 40], [0, 0, 0]], seen
         # <enable_metrics>: the renderer gives the frames' rate in sim time and real time
         [[name, nominal, sim_rate, fps]] = seen["metrics"]
         assert name == "cam::link::camera" and nominal == 20 and fps > 0, seen

@@ -335,6 +335,137 @@ def test_cameras_publish_on_gz_sensors_topics(tmp_path, monkeypatch, kind, topic
         pytest.approx(math.degrees(2 * math.atan(120 / fx)))
 
 
+def test_a_cameras_noise_is_gz_sensors_image_noise_seeded_per_camera(tmp_path, monkeypatch):
+    """`<camera><noise>`: a gaussian draw added to each channel in colour units of 0..1
+    (clamped), and to each depth in metres; the same seed gives the same noise."""
+    import numpy as np
+
+    from launcher.sim.sensors.noise import generator
+    from launcher.sim.sensors.pictures import add_noise
+
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    noisy = camera("<noise><type>gaussian</type><mean>0.01</mean><stddev>0.02</stddev></noise>")
+    settings = world_with(tmp_path, noisy, seed=3).entities["box"].plugins[0].settings()
+    assert settings["noise"] == [0.01, 0.02] and settings["seed"] == 3
+
+    def drawn(picture, unit):
+        rng = generator(settings["seed"], settings["name"])
+        return add_noise(picture, rng, *settings["noise"], unit)
+
+    grey = np.full((240, 320, 3), 128, np.uint8)
+    first, again = drawn(grey, 255.0), drawn(grey, 255.0)
+    assert first.dtype == np.uint8 and np.array_equal(first, again)
+    offsets = first.astype(float) - 128
+    assert offsets.mean() == pytest.approx(0.01 * 255, abs=0.2)
+    assert offsets.std() == pytest.approx(0.02 * 255, rel=0.05)
+    assert drawn(np.full((4, 4, 3), 255, np.uint8), 255.0).max() == 255  # clamped
+    depth = drawn(np.full((240, 320), 2.0, np.float32), 1.0)
+    assert depth.mean() == pytest.approx(2.01, abs=1e-3) and depth.std() == \
+        pytest.approx(0.02, rel=0.05)
+    plain = world_with(tmp_path, camera()).entities["box"].plugins[0].settings()
+    assert plain["noise"] == [0.0, 0.0]
+
+
+LABELLED = """<model name="car{n}"><static>true</static><pose>{x} 0 0.5 0 0 0</pose>
+<link name="l"><visual name="body"><geometry><box><size>1 1 1</size></box></geometry></visual>
+<visual name="wheel"><geometry><sphere><radius>0.2</radius></sphere></geometry>{own}</visual>
+</link>{label}</model>"""
+LABEL = '<plugin filename="gz-sim-label-system" name="gz::sim::systems::Label">' \
+        '<label>{}</label></plugin>'
+
+
+def test_the_label_system_labels_visuals_for_segmentation_as_gz_rendering_does(tmp_path,
+                                                                              monkeypatch):
+    """gz-sim-label-system in a model labels its visuals, in a visual that visual alone (it
+    wins); unlabelled visuals are background. Panoptic maps count instances per label by
+    top-level model, from 1."""
+    import numpy as np
+
+    from launcher.sim.plugins.label import labels_of
+    from launcher.sim.sensors.pictures import segment, segmentation_tables
+
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    cars = "".join(LABELLED.format(n=n, x=3 + 2 * n, label=LABEL.format(40), own="")
+                   for n in range(2))
+    odd = LABELLED.format(n=2, x=9, label="", own=LABEL.format(7))
+    world = world_with(tmp_path, camera("<segmentation_type>instance</segmentation_type>",
+                                        kind="segmentation"), extra=cars + odd)
+    labels = labels_of(world)
+    assert labels == {"car0/l/visual/body": 40, "car0/l/visual/wheel": 40,
+                      "car1/l/visual/body": 40, "car1/l/visual/wheel": 40,
+                      "car2/l/visual/wheel": 7}
+    settings = world.entities["box"].plugins[0].settings()
+    assert settings["segmentation"] == "panoptic"
+    model = world.model
+    tables = segmentation_tables(model, labels)
+    geom = {name: model.geom(name).id for name in
+            ("car0/l/visual/body", "car1/l/visual/wheel", "car2/l/visual/body",
+             "car2/l/visual/wheel")}
+    picture = np.full((1, 5, 3), -1, dtype=np.int32)  # the last pixel: nothing there
+    picture[0, :4, 0] = list(geom.values())
+    picture[0, :4, 1] = 5  # mjOBJ_GEOM
+    labels_map, colours = segment(picture, *tables, panoptic=True)
+    assert labels_map[0].tolist() == [[1, 0, 40], [2, 0, 40], [0, 0, 0], [1, 0, 7], [0, 0, 0]]
+    assert colours[0, 2].tolist() == [0, 0, 0] and colours[0, 0].tolist() != [0, 0, 0]
+    assert colours[0, 0].tolist() != colours[0, 1].tolist()  # each instance its colour
+    semantic, flat = segment(picture, *tables, panoptic=False)
+    assert semantic[0].tolist() == [[40] * 3, [40] * 3, [0] * 3, [7] * 3, [0] * 3]
+    assert flat[0, 0].tolist() == flat[0, 1].tolist()  # one colour a label
+
+
+def test_a_bad_label_or_segmentation_type_is_located(tmp_path, monkeypatch):
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    world = world_with(tmp_path, camera("<segmentation_type>semantik</segmentation_type>",
+                                        kind="segmentation"),
+                       extra=LABELLED.format(n=0, x=3, label=LABEL.format(300), own=""))
+    said = "\n".join(world.transport.messages("error"))
+    assert "unknown <segmentation_type> 'semantik' (did you mean 'semantic'" in said, said
+    assert re.search(r"world\.sdf:\d+: plugin gz::sim::systems::Label: .*300", said), said
+
+
+def test_a_cameras_distortion_is_the_brown_model_camera_info_gives(tmp_path, monkeypatch):
+    """`<distortion>`: camera_info's D is (k1, k2, p1, p2, k3), as gz-sensors gives it; the
+    picture is distorted by that model about the principal point, so a direction's pixel
+    moves where the model says (and image_proc's rectification puts it back); a barrel lens
+    sees past the camera's field of view, so MuJoCo draws a wider picture for it."""
+    import numpy as np
+
+    from launcher.sim.sensors.pictures import distort, lens
+
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    body = "<distortion><k1>-0.25</k1><k2>0.12</k2><k3>0</k3><p1>-0.00028</p1>" \
+           "<p2>-0.00005</p2><center>0.5 0.5</center></distortion>"
+    settings = world_with(tmp_path, camera(body)).entities["box"].plugins[0].settings()
+    assert settings["distortion"] == [-0.25, 0.12, -0.00028, -0.00005, 0.0]
+    width, height, k = settings["width"], settings["height"], settings["k"]
+    found = lens(width, height, k, settings["distortion"])
+    fx, cx, cy = k[0], k[2], k[5]
+    assert found.width > width and found.height > height  # barrel: it sees more
+    assert found.fovy == pytest.approx(math.degrees(2 * math.atan(found.height / (2 * fx))))
+
+    def drawn_pixel(x: float, y: float) -> int:  # a direction's pixel in the wide picture
+        return int(y * fx + found.height / 2) * found.width + int(x * fx + found.width / 2)
+
+    # the direction (0.4, 0.3) shows where the model sends it
+    x, y = 0.4, 0.3
+    k1, k2, p1, p2, k3 = settings["distortion"]
+    r2 = x * x + y * y
+    radial = 1 + k1 * r2 + k2 * r2 * r2 + k3 * r2 ** 3
+    ud = (x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x)) * fx + cx
+    vd = (y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y) * fx + cy
+    source = found.index[int(vd) * width + int(ud)]
+    assert abs(source % found.width - drawn_pixel(x, y) % found.width) <= 1.5
+    assert abs(source // found.width - drawn_pixel(x, y) // found.width) <= 1.5
+    assert found.index[int(cy) * width + int(cx)] == drawn_pixel(0.0, 0.0)  # the centre stays
+    picture = np.arange(found.width * found.height, dtype=np.float32).reshape(found.height,
+                                                                            found.width)
+    seen = distort(picture, found, (height, width), np.inf)
+    assert seen.shape == (height, width) and seen[int(vd), int(ud)] == source
+    assert not np.isinf(seen).any()  # every pixel shows something: the corners see far
+    plain = world_with(tmp_path, camera()).entities["box"].plugins[0].settings()
+    assert plain["distortion"] == [0.0] * 5
+
+
 def test_a_camera_looks_along_the_sensors_x_axis(tmp_path, monkeypatch):
     """Gazebo's cameras look along +x with +z up; MuJoCo's along -z with +y up."""
     monkeypatch.setenv("LAUNCHER_RENDERER", "none")

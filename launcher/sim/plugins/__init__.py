@@ -57,6 +57,8 @@ BUILTIN = {
     "gz::sim::systems::DiffDrive": "launcher.sim.plugins.diff_drive:DiffDrive",
     "joint_state_publisher": "launcher.sim.plugins.joint_state:JointStatePublisher",
     "gz-sim-joint-state-publisher-system": "launcher.sim.plugins.joint_state:JointStatePublisher",
+    "gz-sim-label-system": "launcher.sim.plugins.label:Label",
+    "gz::sim::systems::Label": "launcher.sim.plugins.label:Label",
     "gz::sim::systems::JointStatePublisher":
         "launcher.sim.plugins.joint_state:JointStatePublisher",
     "joint_position_controller":

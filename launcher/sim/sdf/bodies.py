@@ -8,8 +8,10 @@ from typing import Any
 
 import mujoco
 
+from launcher.sim.plugins import canonical
+from launcher.sim.plugins.label import VisualLabel
 from launcher.sim.sdf.context import Context
-from launcher.sim.sdf.elements import check_children
+from launcher.sim.sdf.elements import check_children, plugin_configs
 from launcher.sim.sdf.geometry import add_geom
 from launcher.sim.sdf.inertial import set_inertial
 from launcher.sim.sdf.parts import UNLIMITED, Joint, Link, Parts
@@ -82,6 +84,21 @@ class Builder:
                 add_geom(body, self.spec, element, local, tag == "visual",
                                   self.context.warn, resolver, name if name not in seen else "")
                 seen.add(name)
+                if tag == "visual":
+                    self._visual_plugins(element, name[len(self.prefix):])
+
+    def _visual_plugins(self, element: Any, geom: str) -> None:
+        """A `<visual>`'s plugins: gz-sim-label-system labels that visual alone; Gazebo's
+        visual plugins (shaders, LEDs) draw nothing here and are a warning."""
+        for config in plugin_configs(element):
+            if canonical(config.filename) == "gz-sim-label-system" or \
+                    canonical(config.name) == "gz::sim::systems::Label":
+                self.parts.plugins.append(VisualLabel(config.filename, config.name,
+                                                      config.element, config.where,
+                                                      visual=geom))
+            else:
+                self.context.warn(config.element, f"visual plugin '{config.filename}' draws "
+                                  "nothing in launcher's renderer; it is ignored")
 
     def _sensors(self, body: Any, link: Link) -> None:
         """Each `<sensor>` of the link: a site at its pose (hidden, group 5), and its config

@@ -16,6 +16,7 @@ import numpy as np
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors.base import Sensor
 from launcher.sim.sensors.metrics import SUFFIX, enabled
+from launcher.sim.sensors.noise import noise_of
 
 MAX_SIDE = 8192  # pixels a side
 MAX_PIXELS = 16_777_216  # 4096 × 4096: past it one frame would be hundreds of MB
@@ -28,6 +29,8 @@ FORMATS = {"R8G8B8": "rgb8", "RGB_INT8": "rgb8", "B8G8R8": "bgr8", "BGR_INT8": "
 _ALIGN = np.zeros(4)
 mujoco.mju_mat2Quat(_ALIGN, np.array([[0, 0, -1], [-1, 0, 0], [0, 1, 0]], dtype=float)
                     .reshape(-1))
+# <segmentation_type> → how a segmentation camera's labels map is laid out (gz-rendering's)
+SEGMENTATION_TYPES = {"semantic": "semantic", "panoptic": "panoptic", "instance": "panoptic"}
 COLOUR_STREAMS = ("image", "camera_info")  # what gazebo_ros_camera gives of a plain camera
 SUFFIXES = {"camera": ("image",), "depth_camera": ("depth_image",),
             "rgbd_camera": ("image", "depth_image"),
@@ -80,6 +83,21 @@ class Camera(Sensor):
         self.fy = self._number(intrinsics, ("fy",), fx, 1e-6, math.inf)
         self.cx = self._number(intrinsics, ("cx",), self.width / 2, -math.inf, math.inf)
         self.cy = self._number(intrinsics, ("cy",), self.height / 2, -math.inf, math.inf)
+        # gz-sensors' image noise: gaussian, per channel, in colour units of 0..1 (depth: metres)
+        self.noise = noise_of(camera, self.rng)
+        # Brown's distortion (gz-sensors' camera_info order: k1, k2, p1, p2, k3)
+        self.distortion = [self._number(camera, ("distortion", tag), 0.0, -math.inf, math.inf)
+                           for tag in ("k1", "k2", "p1", "p2", "k3")]
+        written = (camera.value("segmentation_type") or "semantic") if camera is not None \
+            else "semantic"
+        if written.lower() not in SEGMENTATION_TYPES:
+            from launcher.errors import did_you_mean
+
+            raise SdfError(f"{self.label}: unknown <segmentation_type> '{written}'"
+                           f"{did_you_mean(written, list(SEGMENTATION_TYPES))}; expected "
+                           f"{', '.join(SEGMENTATION_TYPES)}",
+                           camera.find("segmentation_type").location)
+        self.segmentation = SEGMENTATION_TYPES[written.lower()]
         self.triggered = (camera is not None and (camera.value("triggered", "") or "")
                           .strip().lower() in ("true", "1"))
         trigger = camera.value("trigger_topic") if camera is not None else None
@@ -164,6 +182,9 @@ class Camera(Sensor):
                 "k": [self.fx, 0.0, self.cx, 0.0, self.fy, self.cy, 0.0, 0.0, 1.0],
                 "frame_id": self.frame_id, "topics": self.topics(),
                 "always_on": self.config.always_on, "name": self.scoped_name,
+                "noise": [self.noise.mean + self.noise.bias, self.noise.stddev],
+                "seed": getattr(self.sim, "seed", 0), "segmentation": self.segmentation,
+                "distortion": self.distortion,
                 "update_rate": self.config.update_rate,
                 "ros": [{"stream": o.stream, "type": o.type_name, "topic": o.topic,
                          "frame_id": o.frame_id} for o in self.outputs

@@ -23,6 +23,7 @@ import mujoco
 import numpy as np
 
 from launcher.bus.qos import LATCHED, QoS
+from launcher.sim.plugins.label import labels_of
 
 RENDERER_VARIABLE = "LAUNCHER_RENDERER"  # "none": the sim starts no renderer of its own
 
@@ -87,7 +88,7 @@ class Rendering:
         settings = [camera.settings() for camera in self.cameras.values()]
         self.model_publisher.publish(self.sim.transport.message(
             "mujoco_sim/msg/RenderModel", version=self.version, cameras=json.dumps(settings),
-            model=buffer.tobytes()))
+            model=buffer.tobytes(), labels=json.dumps(labels_of(self.sim))))
 
     def request(self, cameras: list[str], data: Any) -> None:
         """Ask the renderer to draw `cameras` from the state `data` holds now."""
