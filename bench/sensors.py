@@ -20,6 +20,7 @@ the sim's RTF meanwhile. Depth the same way (reported).
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 import random
@@ -30,6 +31,7 @@ import tempfile
 import time
 from pathlib import Path
 
+import psutil
 from _harness import start_router, summary, table
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # (the tests' Recorder)
@@ -255,8 +257,13 @@ def fleet(world: Path, env: dict[str, str], seconds: float) -> list[tuple[float,
 
         node.create_subscription("mujoco_sim/msg/Clock", "/world/fleet/clock", on_clock,
                                  raw=True, inline=True)
+        odometry: list[tuple[float, float]] = []
+        node.create_subscription("mujoco_sim/msg/Odometry", "/model/robot0/odometry",
+                                 lambda m: odometry.append((m.pose.position.x,
+                                                            m.pose.position.y)))
         results, held = [], []
         scans: list[float] = []
+        process = psutil.Process(sim.pid)
         for watched in (1, ROBOTS):
             for i in range(len(held), watched):
                 held.append(node.create_subscription(
@@ -265,9 +272,14 @@ def fleet(world: Path, env: dict[str, str], seconds: float) -> list[tuple[float,
             node.spin(3.0)  # settle: subscribers found, robots moving
             clocks.clear()
             scans.clear()
+            odometry.clear()
+            cpu = process.cpu_times()
             node.spin(seconds)
+            used = sum(process.cpu_times()[:2]) - sum(cpu[:2])
             (wall0, sim0), (wall1, sim1) = clocks[0], clocks[-1]
-            results.append(((sim1 - sim0) / (wall1 - wall0), len(scans) / seconds / watched))
+            path = sum(math.dist(a, b) for a, b in itertools.pairwise(odometry))
+            results.append(((sim1 - sim0) / (wall1 - wall0), len(scans) / seconds / watched,
+                            path / (sim1 - sim0), used / seconds))
         return results
     finally:
         node.destroy_node()
@@ -341,7 +353,11 @@ def main() -> None:
                  summary([r[0][1] for r in runs])),
                 ("RTF, the same with all ten lidars subscribed", "report",
                  summary([r[1][0] for r in runs])),
-                ("  scans/s each lidar delivers", "10", summary([r[1][1] for r in runs]))])
+                ("  scans/s each lidar delivers", "10", summary([r[1][1] for r in runs])),
+                ("  robot0's speed from its odometry, m/s (0.5 asked: they drive)", "report",
+                 summary([r[1][2] for r in runs])),
+                ("  the sim's CPU, cores (one lidar subscribed; all ten)", "report",
+                 f"{summary([r[0][3] for r in runs])}; {summary([r[1][3] for r in runs])}")])
     finally:
         router.terminate()
         router.wait(10)

@@ -34,6 +34,7 @@ from launcher.sim.mjcf import PluginConfig
 from launcher.sim.placement import Placement, checked
 from launcher.sim.plugin_host import PluginHost
 from launcher.sim.plugins import systems_of
+from launcher.sim.sdf.geometry import friction_priority
 from launcher.sim.sensors.geodesy import SphericalCoordinates
 from launcher.sim.stepping import Physics
 from launcher.sim.templates import Template, Templates
@@ -272,9 +273,11 @@ def _child_of(template: Template, joints: Mapping[str, float]) -> tuple[mujoco.M
     for link, mu in template.friction.items():
         body = child.body(link)
         if body is not None:
-            for geom in body.geoms:  # contacts take the larger friction unless the
-                geom.friction[0] = mu  # geom has priority over what it touches
-                geom.priority = max(geom.priority, 1)
+            for geom in body.geoms:
+                geom.friction[0] = mu
+    for geom in child.geoms:  # a contact takes the lower friction, as in Gazebo
+        if (geom.contype or geom.conaffinity) and not geom.priority:
+            geom.priority = friction_priority(float(geom.friction[0]))
     _check_joints(child, joints, template.label)
     return child, roots
 

@@ -242,6 +242,30 @@ def test_friction_colours_and_meshes(tmp_path):
     assert model.geom_rgba[visual] == pytest.approx([0, 1, 0, 1])
 
 
+def test_a_contact_takes_the_lower_friction_of_the_two_as_in_gazebo(tmp_path):
+    """Gazebo's engines combine two surfaces' mu as the lower one; MuJoCo takes the larger
+    unless a geom has priority: a caster of mu 0 must slide on a ground of mu 1."""
+    model = load(tmp_path, world_text("""
+      <model name="ground"><static>true</static><link name="l"><collision name="c"><geometry>
+        <plane><normal>0 0 1</normal><size>10 10</size></plane></geometry></collision></link>
+      </model>
+      <model name="caster"><pose>0 0 0.1 0 0 0</pose><link name="l"><inertial><mass>1</mass>
+        </inertial><collision name="c"><geometry><sphere><radius>0.1</radius></sphere>
+        </geometry><surface><friction><ode><mu>0</mu></ode></friction></surface></collision>
+      </link></model>
+      <model name="tyre"><pose>2 0 0.1 0 0 0</pose><link name="l"><inertial><mass>1</mass>
+        </inertial><collision name="c"><geometry><sphere><radius>0.1</radius></sphere>
+        </geometry><surface><friction><ode><mu>2</mu></ode></friction></surface></collision>
+      </link></model>""")).spec.compile()
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    touching = {tuple(sorted((model.geom(int(c.geom[0])).name, model.geom(int(c.geom[1])).name))):
+                float(c.friction[0]) for c in data.contact[:data.ncon]}
+    assert touching[("caster/l/collision/c", "ground/l/collision/c")] == \
+        pytest.approx(0.0, abs=1e-4)  # (MuJoCo keeps a floor of 1e-5)
+    assert touching[("ground/l/collision/c", "tyre/l/collision/c")] == 1.0  # min(2, 1)
+
+
 def test_includes_by_model_uri_with_name_pose_and_plugins(tmp_path):
     folder = tmp_path / "models" / "crate"
     folder.mkdir(parents=True)

@@ -92,6 +92,45 @@ def test_an_imu_at_rest_reads_gravity_up_and_its_first_orientation(tmp_path):
         == pytest.approx((0, 0, 0, 1), abs=1e-3)  # the yaw it started with is its zero
 
 
+@pytest.mark.parametrize("frame, expected", [
+    ("<localization>ENU</localization>", (0, 0, math.sin(0.35), math.cos(0.35))),
+    # NED: x north, z down; a sensor yawed 0.7 from east faces 90° - 40° = 50° from north
+    ("<localization>NED</localization>", None),
+    ("<localization>CUSTOM</localization><custom_rpy parent_frame='world'>0 0 0.7"
+     "</custom_rpy>", (0, 0, 0, 1)),
+    ("<localization>WSU</localization>", (0, 0, 0, 1)),  # unknown: its first orientation
+])
+def test_an_imus_orientation_is_against_the_frame_its_reference_names(tmp_path, frame,
+                                                                       expected):
+    body = f"<imu><orientation_reference_frame>{frame}</orientation_reference_frame></imu>"
+    world = world_with(tmp_path, sensor("imu", "imu", body), pose="0 0 0.5 0 0 0.7")
+    run(world, 0.05)
+    q = world.transport.published["/world/w/model/box/link/link/sensor/imu/imu"][-1].orientation
+    if expected is None:  # NED: the reading's rotation takes north-east-down to the body
+        from launcher.sim.transform import from_rpy, rotate
+        body_x = rotate((q.w, q.x, q.y, q.z), (1.0, 0.0, 0.0))
+        east_yaw = from_rpy(0, 0, 0, 0, 0, 0.7)
+        north, east = rotate(east_yaw.quat, (1.0, 0.0, 0.0))[1], \
+            rotate(east_yaw.quat, (1.0, 0.0, 0.0))[0]
+        assert body_x == pytest.approx((north, east, 0.0), abs=1e-6)
+        return
+    assert (q.x, q.y, q.z, q.w) == pytest.approx(expected, abs=1e-6)
+    if "WSU" in frame:
+        said = world.transport.messages("warning")
+        assert any("<localization> 'WSU' is not one Gazebo knows" in m for m in said), said
+
+
+def test_an_imu_without_orientation_says_so_as_ros_does(tmp_path):
+    body = "<imu><enable_orientation>false</enable_orientation></imu>"
+    world = world_with(tmp_path, sensor("imu", "imu", body))
+    run(world, 0.05)
+    reading = world.transport.published["/world/w/model/box/link/link/sensor/imu/imu"][-1]
+    q = reading.orientation
+    assert (q.x, q.y, q.z, q.w) == (0, 0, 0, 0)
+    assert list(reading.orientation_covariance)[0] == -1  # REP 145: no orientation
+    assert reading.linear_acceleration.z == pytest.approx(9.8, abs=0.05)
+
+
 def test_a_magnetometer_reads_the_worlds_field_in_its_own_frame(tmp_path):
     world = world_with(tmp_path, sensor("mag", "magnetometer", pose="0 0 0 0 0 1.5707963"),
                        world_extra="<magnetic_field>1e-5 2e-5 -4e-5</magnetic_field>")

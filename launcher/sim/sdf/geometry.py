@@ -61,13 +61,25 @@ def add_geom(body: Any, spec: Any, element: Element, pose: Pose, visual: bool, w
     else:
         kwargs.update(group=COLLISION_GROUP, rgba=[0.5, 0.5, 0.5, 1.0])
         mu = element.path("surface", "friction", "ode", "mu")
+        sliding = 1.0  # ODE's and MuJoCo's default
         if mu is not None and mu.stripped:
-            kwargs["friction"] = [max(number(mu, "a friction coefficient"), 0.0),
-                                  0.005, 0.0001]  # MuJoCo's torsional and rolling defaults
+            sliding = max(number(mu, "a friction coefficient"), 0.0)
+            kwargs["friction"] = [sliding, 0.005, 0.0001]  # MuJoCo's torsional and rolling
+        kwargs["priority"] = friction_priority(sliding)
     geom = body.add_geom()  # attributes one by one: faster than add_geom(**kwargs)
     for key, value in kwargs.items():
         setattr(geom, key, value)
     return geom
+
+
+def friction_priority(mu: float) -> int:
+    """The geom priority that makes a contact take the lower of two frictions, as Gazebo's
+    engines combine them (MuJoCo takes the larger unless one geom has priority): the less
+    friction, the higher the priority (a caster's mu 0 wins over the ground's 1)."""
+    return round(1000 * (MAX_FRICTION - min(max(mu, 0.0), MAX_FRICTION)))
+
+
+MAX_FRICTION = 100.0
 
 
 def _shape(shape: Element, spec: Any, resolve_mesh: ResolveMesh, warn: Warn, what: str,
