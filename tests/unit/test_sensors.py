@@ -374,6 +374,14 @@ def test_cameras_publish_on_gz_sensors_topics(tmp_path, monkeypatch, kind, topic
         pytest.approx(math.degrees(2 * math.atan(120 / fx)))
 
 
+def test_a_cameras_info_topic_is_its_camera_info_topic(tmp_path, monkeypatch):
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    world = world_with(tmp_path, camera("<camera_info_topic>front/info</camera_info_topic>",
+                                        topic="front"))
+    assert world.entities["box"].plugins[0].topics() == {"image": "/front",
+                                                         "camera_info": "/front/info"}
+
+
 def test_a_cameras_noise_is_gz_sensors_image_noise_seeded_per_camera(tmp_path, monkeypatch):
     """`<camera><noise>`: a gaussian draw added to each channel in colour units of 0..1
     (clamped), and to each depth in metres; the same seed gives the same noise."""

@@ -169,7 +169,12 @@ class Camera(Sensor):
                                    "camera_info": f"{base}/camera_info"}, base)
 
     def _with_metrics(self, streams: dict[str, str], topic: str) -> dict[str, str]:
-        """`<enable_metrics>`: the renderer publishes them below the sensor's topic."""
+        """`<camera_info_topic>` where given; `<enable_metrics>`: the renderer publishes
+        them below the sensor's topic."""
+        camera = self.config.element.find("camera")
+        info = camera.value("camera_info_topic") if camera is not None else None
+        if info:
+            streams["camera_info"] = info if info.startswith("/") else f"/{info}"
         if enabled(self.config.element):
             streams[SUFFIX] = f"{topic}/{SUFFIX}"
         return streams
