@@ -1,9 +1,15 @@
-"""Message and service definitions from packages: `msg/*.msg` and `srv/*.srv`.
+"""Message, service and action definitions from packages: `msg/*.msg`, `srv/*.srv` and
+`action/*.action`.
 
 `<pkg>/msg/<Name>` comes from `<pkg>/msg/<Name>.msg`; `<pkg>/srv/<Name>` from
 `<pkg>/srv/<Name>.srv`, whose halves become `<Name>_Request` and `<Name>_Response`. A service's
 type hash is ROS 2's: over the service type with its request, response and synthesised event
 message (whose `char[16] client_gid` is hashed as `uint8[16]`, as ROS 2 does).
+`<pkg>/action/<Name>` comes from `<pkg>/action/<Name>.action`, expanded as rosidl expands it:
+`<Name>_Goal`, `_Result` and `_Feedback`; the services `<Name>_SendGoal` (goal id and goal →
+accepted and stamp) and `<Name>_GetResult` (goal id → status and result); the message
+`<Name>_FeedbackMessage` (goal id and feedback). An error in a definition is at its
+file:line:column.
 """
 
 from __future__ import annotations
@@ -21,14 +27,40 @@ EVENT_INFO_FIELDS = ([], [("event_type", (T.BASE, ("uint8", 0))), ("stamp", (T.N
                           ("sequence_number", (T.BASE, ("int64", 0)))])
 
 
-def parse_msg(text: str, name: str, file: Path) -> dict[str, Any]:
+UUID = "unique_identifier_msgs/msg/UUID"
+ACTION_PARTS = ("_Goal", "_Result", "_Feedback")
+# the names an action's parts take, longest first (what is stripped to find the action)
+ACTION_SUFFIXES = ("_FeedbackMessage", "_SendGoal", "_GetResult", *ACTION_PARTS)
+
+
+def parse_msg(text: str, name: str, file: Path, first_line: int = 1) -> dict[str, Any]:
     from rosbags.typesys import get_types_from_msg  # (only for packages' own definitions)
 
     try:
         parsed = dict(get_types_from_msg(text, name))
-    except Exception as exc:  # rosbags' parser errors carry the reason
-        raise LaunchError(f"invalid message definition: {exc}", Location(str(file))) from None
+    except Exception as exc:  # rosbags' parser errors carry the reason and the offset
+        where, line = _where(str(exc), text, name, file, first_line)
+        raise LaunchError(f"invalid message definition: cannot read '{line.strip()}' "
+                          f"(expected a field `TYPE NAME [DEFAULT]` or a constant "
+                          f"`TYPE NAME=VALUE`)" if line else
+                          f"invalid message definition: {exc}", where) from None
     return parsed
+
+
+def _where(reason: str, text: str, name: str, file: Path, first_line: int
+           ) -> tuple[Location, str]:
+    """The file:line:column of a rosbags parse error in `text`, and that line's text."""
+    import re
+
+    found = re.search(r"\n(\d+)\n", reason)
+    if found is None:
+        return Location(str(file), first_line), ""
+    offset = int(found.group(1)) - len(f"MSG: {name}\n")  # (rosbags parses it so headed)
+    offset = min(max(offset, 0), len(text))
+    start = text.rfind("\n", 0, offset) + 1
+    end = text.find("\n", offset)
+    return (Location(str(file), first_line + text.count("\n", 0, offset), offset - start + 1),
+            text[start:end if end >= 0 else len(text)])
 
 
 def parse_srv(text: str, name: str, file: Path) -> dict[str, Any]:
@@ -41,11 +73,48 @@ def parse_srv(text: str, name: str, file: Path) -> dict[str, Any]:
     # ROS 2; then the two halves are filed under pkg/srv/Name_Request and _Response.
     package, _, base = name.split("/")
     out: dict[str, Any] = {}
-    for half, text in (("_Request", lines[:cut]), ("_Response", lines[cut + 1:])):
-        parsed = parse_msg("\n".join(text), f"{package}/msg/{base}{half}", file)
+    for half, text, first in (("_Request", lines[:cut], 1),
+                              ("_Response", lines[cut + 1:], cut + 2)):
+        parsed = parse_msg("\n".join(text), f"{package}/msg/{base}{half}", file, first)
         for key, value in parsed.items():
             out[f"{name}{half}" if key == f"{package}/msg/{base}{half}" else key] = value
     return out
+
+
+def parse_action(text: str, name: str, file: Path) -> dict[str, Any]:
+    """An `.action` file (goal, result and feedback, between two `---` lines), expanded as
+    rosidl expands it (see the module text)."""
+    lines = text.splitlines()
+    cuts = [i for i, line in enumerate(lines) if line.strip() == "---"]
+    if len(cuts) != 2:
+        raise LaunchError(f"an .action file needs exactly two '---' lines (goal, result, "
+                          f"feedback), found {len(cuts)}",
+                          Location(str(file), cuts[2] + 1 if len(cuts) > 2 else 0))
+    package, _, base = name.split("/")
+    sections = ((lines[:cuts[0]], 1), (lines[cuts[0] + 1:cuts[1]], cuts[0] + 2),
+                (lines[cuts[1] + 1:], cuts[1] + 2))
+    out: dict[str, Any] = {}
+    for part, (section, first) in zip(ACTION_PARTS, sections, strict=True):
+        parsed = parse_msg("\n".join(section), f"{package}/msg/{base}{part}", file, first)
+        for key, value in parsed.items():
+            out[f"{name}{part}" if key == f"{package}/msg/{base}{part}" else key] = value
+    out.update(action_definitions(name))
+    return out
+
+
+def action_definitions(name: str) -> dict[str, Any]:
+    """The services and message rosidl adds to an action's goal, result and feedback."""
+    goal_id = ("goal_id", (T.NAME, UUID))
+    return {
+        f"{name}_SendGoal_Request": ([], [goal_id, ("goal", (T.NAME, f"{name}_Goal"))]),
+        f"{name}_SendGoal_Response": ([], [("accepted", (T.BASE, ("bool", 0))),
+                                           ("stamp", (T.NAME, TIME))]),
+        f"{name}_GetResult_Request": ([], [goal_id]),
+        f"{name}_GetResult_Response": ([], [("status", (T.BASE, ("int8", 0))),
+                                            ("result", (T.NAME, f"{name}_Result"))]),
+        f"{name}_FeedbackMessage": ([], [goal_id,
+                                         ("feedback", (T.NAME, f"{name}_Feedback"))]),
+    }
 
 
 def service_hash_definitions(name: str) -> dict[str, Any]:
@@ -63,7 +132,8 @@ def service_hash_definitions(name: str) -> dict[str, Any]:
 
 
 def find_definition(name: str, package_share: Path) -> tuple[str, Path] | None:
-    """('msg'|'srv', file) for `pkg/msg/Name` or `pkg/srv/Name` in the package's folder."""
+    """('msg'|'srv'|'action', file) for `pkg/msg/Name`, `pkg/srv/Name` or `pkg/action/Name`
+    in the package's folder."""
     _, kind, base = name.split("/")
     path = package_share / kind / f"{base}.{kind}"
-    return (kind, path) if kind in ("msg", "srv") and path.is_file() else None
+    return (kind, path) if kind in ("msg", "srv", "action") and path.is_file() else None

@@ -73,6 +73,9 @@ class Service:
         try:
             request = types.deserialize(query.payload.to_bytes(), self.request_type,
                                         self._make)
+            if self.deferred:  # the callback keeps the reply to send it when it can
+                self._callback(request, Reply(self, query))
+                return
             response = self._callback(request, self._new_response())
             query.reply(query.key_expr, types.serialize(response, self.response_type),
                         attachment=query.attachment)
@@ -80,11 +83,39 @@ class Service:
             self._host.logger.error(f"service {self.name}: {type(exc).__name__}: {exc}")
             query.reply_err(f"{type(exc).__name__}: {exc}".encode())
 
+    deferred = False  # callback(request, Reply): the response is sent later (an action's result)
+
     def destroy(self) -> None:
         if not self._host.forget(self):
             return
         self._queryable.undeclare()
         self._token.undeclare()
+
+
+class Reply:
+    """A request's reply to come, for a deferred service: `send(response)` answers the caller
+    (once; it may be from any thread), `new_response()` makes one to fill."""
+
+    def __init__(self, service: Service, query: zenoh.Query) -> None:
+        self._service, self._query = service, query
+        self._lock = threading.Lock()
+
+    def new_response(self) -> Any:
+        return self._service._new_response()
+
+    def send(self, response: Any) -> bool:
+        """Answer the caller; False if it was answered already."""
+        with self._lock:
+            query, self._query = self._query, None
+        if query is None:
+            return False
+        try:
+            query.reply(query.key_expr,
+                        registry().serialize(response, self._service.response_type),
+                        attachment=query.attachment)
+        finally:
+            query.drop()  # (the caller's get ends here)
+        return True
 
 
 class Client:

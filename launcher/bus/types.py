@@ -141,13 +141,18 @@ class TypeRegistry:
         return name
 
     def _from_package(self, name: str) -> bool:
-        """Look for `pkg/msg/Name.msg` or `pkg/srv/Name.srv` in the package index."""
+        """Look for `pkg/msg/Name.msg`, `pkg/srv/Name.srv` or `pkg/action/Name.action` in the
+        package index."""
         parts = name.split("/")
-        if len(parts) != 3 or parts[1] not in ("msg", "srv"):
+        if len(parts) != 3 or parts[1] not in ("msg", "srv", "action"):
             return False
         for half in ("_Request", "_Response"):  # a service's halves come with the service
-            if parts[1] == "srv" and name.endswith(half):
+            if parts[1] in ("srv", "action") and name.endswith(half):
                 return self._from_package(name.removesuffix(half))
+        if parts[1] == "action":  # an action's parts come with the action
+            for part in interfaces.ACTION_SUFFIXES:
+                if name.endswith(part):
+                    return self._from_package(name.removesuffix(part))
         index = self._package_index()
         if parts[0] not in index:  # a package made since the index was built?
             self._index = None
@@ -159,12 +164,29 @@ class TypeRegistry:
             return False
         kind, path = found
         text = path.read_text(encoding="utf-8")
-        parsed = interfaces.parse_msg(text, name, path) if kind == "msg" else \
-            interfaces.parse_srv(text, name, path)
-        self._available.update(parsed)
+        parse = {"msg": interfaces.parse_msg, "srv": interfaces.parse_srv,
+                 "action": interfaces.parse_action}[kind]
+        self._available.update(parse(text, name, path))
         if kind == "srv":
             self.services[name] = interfaces.service_hash_definitions(name)
+        if kind == "action":
+            for service in (f"{name}_SendGoal", f"{name}_GetResult"):
+                self.services[service] = interfaces.service_hash_definitions(service)
         return True
+
+    def action(self, name: str) -> str:
+        """An action type (its goal, result, feedback, services and feedback message
+        registered for CDR); an unknown one is an error with "did you mean"."""
+        name = normalize(name)
+        if f"{name}_Goal" not in self.fielddefs and f"{name}_Goal" not in self._available \
+                and not self._from_package(name):
+            raise UnknownType(f"unknown action type '{name}'"
+                              f"{did_you_mean(name, _package_actions())}")
+        for part in ("_Goal", "_Result", "_Feedback", "_FeedbackMessage"):
+            self.ensure(f"{name}{part}")
+        for service in ("_SendGoal", "_GetResult"):
+            self.service(f"{name}{service}")
+        return name
 
     def _package_index(self) -> Any:
         """The package index, built once and rebuilt when a package is not found in it."""
@@ -332,14 +354,23 @@ def _referenced(kind: Any, detail: Any) -> list[str]:
 
 def _package_services() -> list[str]:
     """Every `pkg/srv/Name` the packages define (for "did you mean")."""
+    return _package_interfaces("srv")
+
+
+def _package_actions() -> list[str]:
+    """Every `pkg/action/Name` the packages define (for "did you mean")."""
+    return _package_interfaces("action")
+
+
+def _package_interfaces(kind: str) -> list[str]:
     from launcher.packages.index import PackageIndex  # only when reporting an error
 
     found = []
     for package in PackageIndex.from_environment():
-        folder = package.path / "srv"
+        folder = package.path / kind
         if folder.is_dir():
-            found += [f"{package.name}/srv/{p.stem}" for p in folder.glob("*.srv")]
-    return found
+            found += [f"{package.name}/{kind}/{p.stem}" for p in folder.glob(f"*.{kind}")]
+    return sorted(found)
 
 
 _registry: TypeRegistry | None = None

@@ -32,7 +32,7 @@ _API_NAMES = ("rclpy", "rospy")
 # `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 _SHIM_NAMES = ("ament_index_python", "launch", "launch_ros")
-_KINDS = ("msg", "srv")
+_KINDS = ("msg", "srv", "action")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 
 
@@ -107,9 +107,9 @@ def _inside_standard_import() -> bool:
 
 def _lazy_types(package: str, kind: str) -> Any:
     def get(name: str) -> Any:
-        # Only what looks like a type name (CamelCase) is looked up; the rest (dunders,
+        # Only what looks like a type name (capitalised) is looked up; the rest (dunders,
         # getattr(module, "X", default) probes) is a plain AttributeError.
-        if not (name[:1].isupper() and any(c.islower() for c in name)):
+        if not (name[:1].isupper() and name.isidentifier()):  # (UUID is a type too)
             raise AttributeError(f"module '{package}.{kind}' has no attribute '{name}'")
         from launcher.bus.types import UnknownType
         from launcher.compat import rosidl
@@ -121,10 +121,15 @@ def _lazy_types(package: str, kind: str) -> Any:
             if half:  # ROS 1's TriggerRequest, and Trigger_Request
                 service = rosidl.service_class(type_name[:-len(half)].rstrip("_"))
                 cls = getattr(service, half)
+            elif kind == "action":
+                cls = rosidl.action_class(type_name)
             else:
                 cls = rosidl.service_class(type_name) if kind == "srv" else \
                     rosidl.message_class(type_name)
         except UnknownType:
+            if not any(c.islower() for c in name):  # an all-capitals probe (`REAL`), not a
+                raise AttributeError(  # type (UUID): getattr(module, "REAL", default) works
+                    f"module '{package}.{kind}' has no attribute '{name}'") from None
             # ImportError, not AttributeError: `from pkg.msg import Twst` shows this text
             # (Python replaces an AttributeError's with its own "cannot import name")
             raise ImportError(_unknown(package, kind, name),
@@ -139,8 +144,8 @@ def _unknown(package: str, kind: str, name: str) -> str:
     from launcher.errors import did_you_mean
 
     known = [t.rsplit("/", 1)[-1] for t in registry().known() if t.startswith(f"{package}/{kind}/")
-             and not t.endswith(("_Request", "_Response", "_Event"))]
-    if kind == "srv" or not known:
+             and not t.endswith(("_Request", "_Response", "_Event"))] if kind != "action" else []
+    if kind in ("srv", "action") or not known:
         known += _package_definitions(package, kind)
     listing = ", ".join(sorted(set(known))[:20]) or "none"
     return (f"cannot import name '{name}' from '{package}.{kind}': no {kind} type "
@@ -156,7 +161,7 @@ def _interface_packages() -> set[str]:
 
 
 def _workspace_interface_package(name: str) -> bool:
-    """A package of the index with `msg/` or `srv/` definitions."""
+    """A package of the index with `msg/`, `srv/` or `action/` definitions."""
     folder = _package_folder(name)
     return folder is not None and any(os.path.isdir(os.path.join(folder, k)) for k in _KINDS)
 
@@ -175,7 +180,8 @@ def _package_definitions(package: str, kind: str) -> list[str]:
     if folder is None:
         return []
     try:
-        return [f[:-4] for f in os.listdir(os.path.join(folder, kind)) if f.endswith(f".{kind}")]
+        return [f[:-len(kind) - 1] for f in os.listdir(os.path.join(folder, kind))
+                if f.endswith(f".{kind}")]
     except OSError:
         return []
 

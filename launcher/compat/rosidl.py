@@ -376,6 +376,40 @@ def service_class(type_name: str) -> type:
     return cls
 
 
+_actions: dict[str, type] = {}
+
+
+def action_class(type_name: str) -> type:
+    """The class of `pkg/action/Name`, as rosidl generates it: `Goal`, `Result`, `Feedback`,
+    and `Impl` with the services and messages rclpy.action speaks (`SendGoalService`,
+    `GetResultService`, `CancelGoalService`, `FeedbackMessage`, `GoalStatusMessage`)."""
+    name = normalize(type_name)
+    found = _actions.get(name)
+    if found is not None:
+        return found
+    registry().action(name)
+    package, kind, short = name.split("/")
+    module = f"{package}.{kind}"
+    impl = type("Impl", (), {
+        "__module__": module, "__qualname__": f"{short}.Impl",
+        "SendGoalService": service_class(f"{name}_SendGoal"),
+        "GetResultService": service_class(f"{name}_GetResult"),
+        "CancelGoalService": service_class("action_msgs/srv/CancelGoal"),
+        "FeedbackMessage": message_class(f"{name}_FeedbackMessage", module,
+                                         f"{short}_FeedbackMessage"),
+        "GoalStatusMessage": message_class("action_msgs/msg/GoalStatusArray"),
+    })
+    cls = type(short, (), {
+        "__module__": module, "_TYPE": name,
+        "Goal": message_class(f"{name}_Goal", module, f"{short}_Goal"),
+        "Result": message_class(f"{name}_Result", module, f"{short}_Result"),
+        "Feedback": message_class(f"{name}_Feedback", module, f"{short}_Feedback"),
+        "Impl": impl,
+    })
+    _actions[name] = cls
+    return cls
+
+
 def type_name_of(value: Any) -> str:
     """`pkg/msg/Name` (or `pkg/srv/Name`) of a class from here, or a type name given as text."""
     if isinstance(value, str):

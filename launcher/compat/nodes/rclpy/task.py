@@ -7,6 +7,8 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
+_driving = threading.local()  # .task: an executor's Task is stepping a coroutine here
+
 
 class Future:
     def __init__(self, *, executor: Any = None) -> None:
@@ -19,7 +21,9 @@ class Future:
 
     def __await__(self) -> Any:
         while self._state == "pending":
-            yield self
+            # To an executor's Task, the future itself (it resumes the task when this is
+            # done); to anything else (asyncio), a bare yield, as rclpy's Future gives
+            yield self if getattr(_driving, "task", False) else None
         return self.result()
 
     def cancel(self) -> None:
@@ -108,6 +112,7 @@ class Task(Future):
             self._running.release()
 
     def _step(self) -> None:
+        outer, _driving.task = getattr(_driving, "task", False), True
         try:
             awaited = self._coroutine.send(None)
         except StopIteration as end:
@@ -116,6 +121,8 @@ class Task(Future):
         except Exception as exc:  # the task's error: kept on the task, re-raised by the executor
             self.set_exception(exc)
             raise
+        finally:
+            _driving.task = outer
         if isinstance(awaited, Future):
             awaited.add_done_callback(lambda _f: self._resume())
         else:

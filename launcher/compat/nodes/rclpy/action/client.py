@@ -1,0 +1,253 @@
+"""rclpy.action.client: ActionClient and ClientGoalHandle, as rclpy behaves.
+
+`send_goal_async` returns a Future of the goal's handle (accepted or not); the handle's
+`get_result_async` a Future of the GetResult response (`status`, `result`), answered when the
+goal ends; `cancel_goal_async` a Future of the CancelGoal response. Futures are completed by
+the node's executor, so done callbacks and awaiting coroutines run there, as in rclpy; the
+blocking `send_goal`, `get_result` and `cancel_goal` wait on the calling thread. Feedback for
+a goal goes to its `feedback_callback` (the FeedbackMessage, as rclpy passes it); the status
+topic keeps each handle's `status` current.
+"""
+
+from __future__ import annotations
+
+import threading
+import uuid
+from typing import Any
+
+from launcher.bus.qos import QoS
+from launcher.compat import rosidl
+from rclpy.action import names as N
+from rclpy.task import Future
+
+CALL_TIMEOUT = 10.0  # s: a goal or cancel request's answer
+RESULT_TIMEOUT = 365 * 24 * 3600.0  # s: a result comes when the goal ends, however long
+
+
+class ClientGoalHandle:
+    def __init__(self, action_client: ActionClient, goal_id: Any, goal_response: Any) -> None:
+        self._action_client = action_client
+        self._goal_id = goal_id
+        self._goal_response = goal_response
+        self._status = N.UNKNOWN if not goal_response.accepted else N.ACCEPTED
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, ClientGoalHandle) and \
+            N.uuid_key(self._goal_id) == N.uuid_key(other._goal_id)
+
+    def __hash__(self) -> int:
+        return hash(N.uuid_key(self._goal_id))
+
+    def __repr__(self) -> str:
+        return f"ClientGoalHandle <id={self.goal_id.uuid}, accepted={self.accepted}, " \
+               f"status={self.status}>"
+
+    @property
+    def goal_id(self) -> Any:
+        return self._goal_id
+
+    @property
+    def stamp(self) -> Any:
+        return self._goal_response.stamp
+
+    @property
+    def accepted(self) -> bool:
+        return bool(self._goal_response.accepted)
+
+    @property
+    def status(self) -> int:
+        return self._status
+
+    def cancel_goal(self) -> Any:
+        return self._action_client._cancel_goal(self)
+
+    def cancel_goal_async(self) -> Future:
+        return self._action_client._cancel_goal_async(self)
+
+    def get_result(self) -> Any:
+        return self._action_client._get_result(self)
+
+    def get_result_async(self) -> Future:
+        return self._action_client._get_result_async(self)
+
+
+class ActionClient:
+    def __init__(self, node: Any, action_type: Any, action_name: str, *,
+                 callback_group: Any = None, goal_service_qos_profile: Any = None,
+                 result_service_qos_profile: Any = None,
+                 cancel_service_qos_profile: Any = None, feedback_sub_qos_profile: Any = None,
+                 status_sub_qos_profile: Any = None) -> None:
+        node._check_alive()
+        self._node, self._action_name = node, action_name
+        self._type_name = N.action_type_name(action_type)
+        self._action_type = rosidl.action_class(self._type_name)
+        self.callback_group = callback_group or node.default_callback_group
+        bus = node._bus
+        self._send_goal = bus.create_client(f"{self._type_name}_SendGoal",
+                                            N.endpoint(action_name, N.SEND_GOAL),
+                                            make=rosidl.make)
+        self._cancel = bus.create_client(N.CANCEL_TYPE, N.endpoint(action_name, N.CANCEL_GOAL),
+                                         make=rosidl.make)
+        self._get_result = bus.create_client(f"{self._type_name}_GetResult",
+                                             N.endpoint(action_name, N.GET_RESULT),
+                                             make=rosidl.make)
+        self._feedback_callbacks: dict[bytes, Any] = {}
+        self._handles: dict[bytes, ClientGoalHandle] = {}
+        self._lock = threading.Lock()
+        grouped = node._grouped
+        self._feedback = bus.create_subscription(
+            f"{self._type_name}_FeedbackMessage", N.endpoint(action_name, N.FEEDBACK),
+            grouped(self.callback_group, self._on_feedback), QoS(depth=10), make=rosidl.make)
+        self._status = bus.create_subscription(
+            N.STATUS_TYPE, N.endpoint(action_name, N.STATUS),
+            grouped(self.callback_group, self._on_status), QoS(depth=1, transient_local=True),
+            make=rosidl.make)
+        node._entities.append(self)
+
+    # --- the server -----------------------------------------------------------------------------
+    def server_is_ready(self) -> bool:
+        return all(client.wait_for_service(0.05)
+                   for client in (self._send_goal, self._cancel, self._get_result))
+
+    def wait_for_server(self, timeout_sec: float | None = None) -> bool:
+        """Whether the server's three services are there, waiting up to `timeout_sec` (None:
+        as long as it takes, while the context is up)."""
+        import time
+
+        deadline = None if timeout_sec is None else time.monotonic() + timeout_sec
+        for client in (self._send_goal, self._cancel, self._get_result):
+            while True:
+                left = 1.0 if deadline is None else deadline - time.monotonic()
+                if left <= 0:
+                    return False
+                if client.wait_for_service(min(left, 1.0)):
+                    break
+                if not self._node.context.ok():
+                    return False
+        return True
+
+    # --- goals --------------------------------------------------------------------------------
+    def send_goal_async(self, goal: Any, feedback_callback: Any = None,
+                        goal_uuid: Any = None) -> Future:
+        if not isinstance(goal, self._action_type.Goal):
+            raise TypeError(f"Expected type {self._action_type.Goal}, got {type(goal)}")
+        from unique_identifier_msgs.msg import UUID
+
+        goal_id = goal_uuid if goal_uuid is not None else UUID(uuid=list(uuid.uuid4().bytes))
+        key = N.uuid_key(goal_id)
+        if feedback_callback is not None:
+            with self._lock:
+                self._feedback_callbacks[key] = feedback_callback
+        request = self._action_type.Impl.SendGoalService.Request(goal_id=goal_id, goal=goal)
+
+        def handle(response: Any) -> ClientGoalHandle:
+            found = ClientGoalHandle(self, goal_id, response)
+            with self._lock:
+                if found.accepted:
+                    self._handles[key] = found
+                else:
+                    self._feedback_callbacks.pop(key, None)
+            return found
+        return self._call_async(self._send_goal, request, CALL_TIMEOUT, handle)
+
+    def send_goal(self, goal: Any, **kwargs: Any) -> Any:
+        """Send a goal and wait for its result (the GetResult response); None if rejected."""
+        handle = self._wait(self.send_goal_async(goal, **kwargs))
+        if not handle.accepted:
+            return None
+        return self._get_result(handle)
+
+    def _get_result_async(self, goal_handle: ClientGoalHandle) -> Future:
+        if not goal_handle.accepted:
+            raise TypeError("Goal was not accepted")
+        request = self._action_type.Impl.GetResultService.Request(goal_id=goal_handle.goal_id)
+
+        def done(response: Any) -> Any:
+            goal_handle._status = response.status
+            with self._lock:
+                key = N.uuid_key(goal_handle.goal_id)
+                self._feedback_callbacks.pop(key, None)
+                self._handles.pop(key, None)
+            return response
+        return self._call_async(self._get_result, request, RESULT_TIMEOUT, done)
+
+    def _get_result(self, goal_handle: ClientGoalHandle) -> Any:
+        return self._wait(self._get_result_async(goal_handle))
+
+    def _cancel_goal_async(self, goal_handle: ClientGoalHandle) -> Future:
+        if not goal_handle.accepted:
+            raise TypeError("Goal was not accepted")
+        from action_msgs.msg import GoalInfo
+        from action_msgs.srv import CancelGoal
+
+        request = CancelGoal.Request(goal_info=GoalInfo(goal_id=goal_handle.goal_id))
+        return self._call_async(self._cancel, request, CALL_TIMEOUT, lambda r: r)
+
+    def _cancel_goal(self, goal_handle: ClientGoalHandle) -> Any:
+        return self._wait(self._cancel_goal_async(goal_handle))
+
+    # --- topics ---------------------------------------------------------------------------------
+    def _on_feedback(self, message: Any) -> None:
+        with self._lock:
+            callback = self._feedback_callbacks.get(N.uuid_key(message.goal_id))
+        if callback is not None:
+            callback(message)
+
+    def _on_status(self, message: Any) -> None:
+        for status in message.status_list:
+            with self._lock:
+                handle = self._handles.get(N.uuid_key(status.goal_info.goal_id))
+            if handle is not None:
+                handle._status = status.status
+
+    # --- calls ----------------------------------------------------------------------------------
+    def _call_async(self, client: Any, request: Any, timeout: float, shape: Any) -> Future:
+        """A Future completed on the node's executor with `shape(response)`."""
+        future = Future(executor=self._node.executor)
+        host = self._node._host_or_none()
+
+        def finish(method: Any, value: Any) -> None:
+            method(value)
+
+        def run() -> None:
+            try:
+                outcome: tuple[Any, Any] = (future.set_result,
+                                            shape(client.call(request, timeout)))
+            except Exception as exc:  # the caller sees it from future.result()
+                outcome = (future.set_exception, exc)
+            if host is not None:
+                host.enqueue(finish, *outcome)
+            else:
+                finish(*outcome)
+        threading.Thread(target=run, daemon=True).start()
+        return future
+
+    def _wait(self, future: Future) -> Any:
+        """The future's result, waited for on this thread (the executor completes it: it
+        must be spinning elsewhere, as rclpy requires for its blocking calls)."""
+        event = threading.Event()
+        future.add_done_callback(lambda _f: event.set())
+        if self._node.executor is None:  # nobody spins: complete it here
+            while not event.wait(0.01):
+                self._node._host_or_none() and self._drain()
+        else:
+            event.wait()
+        return future.result()
+
+    def _drain(self) -> None:
+        import queue
+
+        host = self._node._host_or_none()
+        while host is not None:
+            try:
+                callback, args = host._queue.get_nowait()
+            except queue.Empty:
+                return
+            callback(*args)
+
+    def destroy(self) -> None:
+        for entity in (self._send_goal, self._cancel, self._get_result, self._feedback,
+                       self._status):
+            entity.destroy()
+        if self in self._node._entities:
+            self._node._entities.remove(self)
