@@ -144,3 +144,79 @@ def test_an_independent_client_finds_and_uses_the_action_on_rmw_zenohs_keys(exam
         assert "feedback [0, 1, 1, 2, 3, 5]" in out and "statuses [4]" in out, out
     finally:
         assert stop(server) == 0, examples.output("server.txt")
+
+
+def test_the_action_cli_lists_describes_and_sends_goals_as_ros2_action_does(examples):
+    server = examples.start("run", SERVER, "server", output="server.txt")
+    try:
+        examples.wait_for_output("", 5, "server.txt")
+        listed = examples.run("action", "list", "-t")
+        for _ in range(50):  # (the server's tokens take a moment to spread)
+            if "/fibonacci" in listed.stdout:
+                break
+            time.sleep(0.1)
+            listed = examples.run("action", "list", "-t")
+        assert listed.stdout == "/fibonacci [example_interfaces/action/Fibonacci]\n", listed
+        info = examples.run("action", "info", "/fibonacci").stdout
+        assert info == ("Action: /fibonacci\nAction clients: 0\nAction servers: 1\n"
+                        "    /minimal_action_server\n"), info
+        assert examples.run("action", "type", "/fibonacci").stdout == \
+            "example_interfaces/action/Fibonacci\n"
+        sent = examples.run("action", "send_goal", "/fibonacci",
+                            "example_interfaces/action/Fibonacci", "{order: 2}", "--feedback",
+                            timeout=60)
+        assert sent.returncode == 0, sent.stderr
+        out = sent.stdout
+        assert out.startswith("Waiting for an action server to become available...\n"
+                              "Sending goal:\n     order: 2\n\nGoal accepted with ID: "), out
+        assert re.search(r"Goal accepted with ID: [0-9a-f]{32}\n\nFeedback:\n    sequence:\n"
+                         r"- 0\n- 1\n- 1\n", out), out
+        assert out.endswith("Result:\n    sequence:\n- 0\n- 1\n- 1\n\n"
+                            "Goal finished with status: SUCCEEDED\n"), out
+        # bad input: a server that is not there, a malformed goal, an unknown type
+        missing = examples.run("action", "send_goal", "/fibonaci",
+                               "example_interfaces/action/Fibonacci", "{order: 2}",
+                               "--timeout", "1")
+        assert missing.returncode == 1 and "Traceback" not in missing.stderr
+        assert ("no action server for /fibonaci (example_interfaces/action/Fibonacci) after "
+                "1 s (did you mean '/fibonacci'?); the graph's actions: /fibonacci") \
+            in missing.stderr, missing.stderr
+        malformed = examples.run("action", "send_goal", "/fibonacci",
+                                 "example_interfaces/action/Fibonacci", "{order: many}")
+        assert malformed.returncode == 2
+        assert "the goal for example_interfaces/action/Fibonacci: order: expected int32, got " \
+               "'many'" in malformed.stderr, malformed.stderr
+        unknown = examples.run("action", "send_goal", "/fibonacci",
+                               "example_interfaces/action/Fibonaci", "{order: 2}")
+        assert unknown.returncode == 2 and "did you mean 'example_interfaces/action/" \
+            "Fibonacci'" in unknown.stderr, unknown.stderr
+    finally:
+        assert stop(server) == 0
+
+
+def test_an_action_file_with_a_mistake_is_an_error_at_its_line_and_column(examples):
+    """A package's own `.action` file, found with no build step; one that is wrong is an
+    error at its file:line:column."""
+    examples.write("ws/my_actions/package.xml", """
+    <?xml version="1.0"?>
+    <package format="3"><name>my_actions</name><version>0.1.0</version><description>a
+    </description><maintainer email="a@b.c">a</maintainer><license>MIT</license></package>
+    """)
+    examples.write("ws/my_actions/action/Dock.action",
+                   "string station\n---\nbool docked\n---\nfloat32 distance\n")
+    examples.write("ws/my_actions/action/Broken.action",
+                   "string station\n---\nbool docked\nfloat32[ distance\n---\nint8 x\n")
+    examples.write("ws/my_actions/action/Short.action", "string station\n---\nbool docked\n")
+    import os
+
+    examples.env["LAUNCHER_PACKAGE_PATH"] += os.pathsep + str(examples.root / "ws")
+    shown = examples.run("interface", "show", "my_actions/action/Dock")
+    assert shown.returncode == 0, shown.stderr
+    assert "string station\n---\nbool docked\n---\nfloat32 distance" in shown.stdout, shown
+    broken = examples.run("action", "send_goal", "/dock", "my_actions/action/Broken", "{}")
+    assert broken.returncode != 0 and "Traceback" not in broken.stderr
+    assert f"{examples.root}/ws/my_actions/action/Broken.action:4:1: invalid message " \
+           "definition: cannot read 'float32[ distance'" in broken.stderr, broken.stderr
+    short = examples.run("action", "send_goal", "/dock", "my_actions/action/Short", "{}")
+    assert "Short.action: an .action file needs exactly two '---' lines (goal, result, " \
+           "feedback), found 1" in short.stderr, short.stderr
