@@ -83,14 +83,15 @@ class ActionClient:
         self._action_type = rosidl.action_class(self._type_name)
         self.callback_group = callback_group or node.default_callback_group
         bus = node._bus
-        self._send_goal = bus.create_client(f"{self._type_name}_SendGoal",
+        self._goal_client = bus.create_client(f"{self._type_name}_SendGoal",
                                             N.endpoint(action_name, N.SEND_GOAL),
                                             make=rosidl.make)
-        self._cancel = bus.create_client(N.CANCEL_TYPE, N.endpoint(action_name, N.CANCEL_GOAL),
-                                         make=rosidl.make)
-        self._get_result = bus.create_client(f"{self._type_name}_GetResult",
-                                             N.endpoint(action_name, N.GET_RESULT),
-                                             make=rosidl.make)
+        self._cancel_client = bus.create_client(N.CANCEL_TYPE,
+                                                N.endpoint(action_name, N.CANCEL_GOAL),
+                                                make=rosidl.make)
+        self._result_client = bus.create_client(f"{self._type_name}_GetResult",
+                                                N.endpoint(action_name, N.GET_RESULT),
+                                                make=rosidl.make)
         self._feedback_callbacks: dict[bytes, Any] = {}
         self._handles: dict[bytes, ClientGoalHandle] = {}
         self._lock = threading.Lock()
@@ -107,7 +108,7 @@ class ActionClient:
     # --- the server -----------------------------------------------------------------------------
     def server_is_ready(self) -> bool:
         return all(client.wait_for_service(0.05)
-                   for client in (self._send_goal, self._cancel, self._get_result))
+                   for client in (self._goal_client, self._cancel_client, self._result_client))
 
     def wait_for_server(self, timeout_sec: float | None = None) -> bool:
         """Whether the server's three services are there, waiting up to `timeout_sec` (None:
@@ -115,7 +116,7 @@ class ActionClient:
         import time
 
         deadline = None if timeout_sec is None else time.monotonic() + timeout_sec
-        for client in (self._send_goal, self._cancel, self._get_result):
+        for client in (self._goal_client, self._cancel_client, self._result_client):
             while True:
                 left = 1.0 if deadline is None else deadline - time.monotonic()
                 if left <= 0:
@@ -148,7 +149,7 @@ class ActionClient:
                 else:
                     self._feedback_callbacks.pop(key, None)
             return found
-        return self._call_async(self._send_goal, request, CALL_TIMEOUT, handle)
+        return self._call_async(self._goal_client, request, CALL_TIMEOUT, handle)
 
     def send_goal(self, goal: Any, **kwargs: Any) -> Any:
         """Send a goal and wait for its result (the GetResult response); None if rejected."""
@@ -169,7 +170,7 @@ class ActionClient:
                 self._feedback_callbacks.pop(key, None)
                 self._handles.pop(key, None)
             return response
-        return self._call_async(self._get_result, request, RESULT_TIMEOUT, done)
+        return self._call_async(self._result_client, request, RESULT_TIMEOUT, done)
 
     def _get_result(self, goal_handle: ClientGoalHandle) -> Any:
         return self._wait(self._get_result_async(goal_handle))
@@ -181,7 +182,7 @@ class ActionClient:
         from action_msgs.srv import CancelGoal
 
         request = CancelGoal.Request(goal_info=GoalInfo(goal_id=goal_handle.goal_id))
-        return self._call_async(self._cancel, request, CALL_TIMEOUT, lambda r: r)
+        return self._call_async(self._cancel_client, request, CALL_TIMEOUT, lambda r: r)
 
     def _cancel_goal(self, goal_handle: ClientGoalHandle) -> Any:
         return self._wait(self._cancel_goal_async(goal_handle))
@@ -246,8 +247,8 @@ class ActionClient:
             callback(*args)
 
     def destroy(self) -> None:
-        for entity in (self._send_goal, self._cancel, self._get_result, self._feedback,
-                       self._status):
+        for entity in (self._goal_client, self._cancel_client, self._result_client,
+                       self._feedback, self._status):
             entity.destroy()
         if self in self._node._entities:
             self._node._entities.remove(self)

@@ -1,0 +1,17 @@
+"""tf2_ros.TransformBroadcaster: TransformStamped (one or a list) on `/tf`."""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+class TransformBroadcaster:
+    def __init__(self, node: Any, qos: Any = None) -> None:
+        from tf2_msgs.msg import TFMessage
+
+        self._message = TFMessage
+        self.pub_tf = node.create_publisher(TFMessage, "/tf", qos or 100)
+
+    def sendTransform(self, transform: Any) -> None:  # noqa: N802 (tf2_ros's name)
+        transforms = list(transform) if isinstance(transform, list | tuple) else [transform]
+        self.pub_tf.publish(self._message(transforms=transforms))

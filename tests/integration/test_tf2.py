@@ -1,0 +1,79 @@
+"""tf2 on the bus: a broadcaster's /tf and a static broadcaster's latched /tf_static reach a
+TransformListener's Buffer in another process, a listener that starts late included."""
+
+from __future__ import annotations
+
+import signal
+
+from tests.integration.test_node_apis import node_package
+
+BROADCASTER = """
+import math
+import rclpy
+from geometry_msgs.msg import TransformStamped
+from rclpy.node import Node
+from tf2_ros import StaticTransformBroadcaster, TransformBroadcaster
+
+rclpy.init()
+node = Node("broadcaster")
+static = StaticTransformBroadcaster(node)
+moving = TransformBroadcaster(node)
+
+
+def transform(parent, child, x, yaw=0.0):
+    t = TransformStamped()
+    t.header.stamp = node.get_clock().now().to_msg()
+    t.header.frame_id, t.child_frame_id = parent, child
+    t.transform.translation.x = x
+    t.transform.rotation.z, t.transform.rotation.w = math.sin(yaw / 2), math.cos(yaw / 2)
+    return t
+
+
+static.sendTransform(transform("map", "odom", 1.0))
+static.sendTransform(transform("base_link", "laser", 0.25))  # both kept, as tf2_ros does
+node.create_timer(0.05, lambda: moving.sendTransform(transform("odom", "base_link", 2.0,
+                                                               math.pi / 2)))
+print("broadcasting", flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""
+
+LISTENER = """
+import sys
+import rclpy
+from rclpy.duration import Duration
+from rclpy.node import Node
+from rclpy.time import Time
+from tf2_ros import Buffer, LookupException, TransformListener
+
+rclpy.init()
+node = Node("listener")
+buffer = Buffer()
+listener = TransformListener(buffer, node, spin_thread=True)
+t = buffer.lookup_transform("map", "laser", Time(), timeout=Duration(seconds=20))
+v = t.transform.translation
+print(f"map->laser {v.x:.3f} {v.y:.3f} {v.z:.3f} {t.header.frame_id} {t.child_frame_id}")
+try:
+    buffer.lookup_transform("map", "gripper", Time())
+except LookupException as exc:
+    print("lookup:", exc)
+rclpy.shutdown()
+"""
+
+
+def test_transforms_broadcast_in_one_process_are_looked_up_in_another(ws):
+    ws.own_bus()
+    node_package(ws, "tf_nodes", {"broadcaster.py": BROADCASTER, "listener.py": LISTENER})
+    broadcaster = ws.start("run", "tf_nodes", "broadcaster.py", output="broadcaster.txt")
+    try:
+        ws.wait_for_output("broadcasting", 30, "broadcaster.txt")
+        done = ws.run("run", "tf_nodes", "listener.py", timeout=60)
+        assert done.returncode == 0, done.stderr
+        assert "map->laser 3.000 0.250 0.000 map laser" in done.stdout, done.stdout
+        assert 'lookup: "gripper" passed to lookupTransform argument source_frame does not ' \
+               "exist. Known frames: base_link, laser, map, odom" in done.stdout, done.stdout
+    finally:
+        broadcaster.send_signal(signal.SIGINT)
+        assert broadcaster.wait(20) == 0, ws.output("broadcaster.txt")
