@@ -26,6 +26,7 @@ COMMANDS = {
     "service": ("launcher.cli.service_command", "services: list, call, type, find, info"),
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "action": ("launcher.cli.action_command", "actions: list, info, type, send_goal"),
+    "lifecycle": ("launcher.cli.lifecycle_command", "lifecycle nodes: nodes, list, get, set"),
     "param": ("launcher.cli.param_command",
               "parameters of a running node: list, get, set, describe, delete, dump, load"),
     "rosparam": ("launcher.cli.rosparam_command",

@@ -1,0 +1,46 @@
+"""rclpy.lifecycle.managed_entity: what a lifecycle node activates and deactivates."""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+class ManagedEntity:
+    def on_configure(self, state: Any) -> Any:
+        from rclpy.lifecycle.node import TransitionCallbackReturn
+
+        return TransitionCallbackReturn.SUCCESS
+
+    def on_cleanup(self, state: Any) -> Any:
+        return self.on_configure(state)
+
+    def on_shutdown(self, state: Any) -> Any:
+        return self.on_configure(state)
+
+    def on_activate(self, state: Any) -> Any:
+        return self.on_configure(state)
+
+    def on_deactivate(self, state: Any) -> Any:
+        return self.on_configure(state)
+
+    def on_error(self, state: Any) -> Any:
+        return self.on_configure(state)
+
+
+class SimpleManagedEntity(ManagedEntity):
+    """Enabled while its node is active."""
+
+    def __init__(self) -> None:
+        self._enabled = False
+
+    def on_activate(self, state: Any) -> Any:
+        self._enabled = True
+        return super().on_activate(state)
+
+    def on_deactivate(self, state: Any) -> Any:
+        self._enabled = False
+        return super().on_deactivate(state)
+
+    @property
+    def is_activated(self) -> bool:
+        return self._enabled

@@ -1,0 +1,264 @@
+"""rclpy.lifecycle's node: rcl_lifecycle's state machine with the user's on_configure,
+on_activate, … callbacks, its services (`~/get_state`, `~/change_state`,
+`~/get_available_states`, `~/get_available_transitions`, `~/get_transition_graph`) and
+`~/transition_event`. A transition that is not allowed from the current state is refused
+(ChangeState's `success` false) and logged with the transitions that are."""
+
+from __future__ import annotations
+
+import enum
+import threading
+import time
+from typing import Any
+
+from rclpy.lifecycle.managed_entity import ManagedEntity
+from rclpy.lifecycle.publisher import LifecyclePublisher
+from rclpy.node import Node
+from rclpy.qos import qos_profile_services_default
+
+
+class TransitionCallbackReturn(enum.IntEnum):
+    SUCCESS = 97
+    FAILURE = 98
+    ERROR = 99
+
+
+class LifecycleState:
+    def __init__(self, label: str, state_id: int) -> None:
+        self.label, self.state_id = label, state_id
+
+    def __repr__(self) -> str:
+        return f"LifecycleState(label='{self.label}', state_id={self.state_id})"
+
+
+# lifecycle_msgs/msg/State
+UNCONFIGURED, INACTIVE, ACTIVE, FINALIZED = 1, 2, 3, 4
+CONFIGURING, CLEANINGUP, SHUTTINGDOWN, ACTIVATING, DEACTIVATING, ERRORPROCESSING = \
+    10, 11, 12, 13, 14, 15
+LABELS = {0: "unknown", 1: "unconfigured", 2: "inactive", 3: "active", 4: "finalized",
+          10: "configuring", 11: "cleaningup", 12: "shuttingdown", 13: "activating",
+          14: "deactivating", 15: "errorprocessing"}
+# the transitions a user asks for: id → (label, from, through, on success, callback)
+PRIMARY = {
+    1: ("configure", UNCONFIGURED, CONFIGURING, INACTIVE, "on_configure"),
+    2: ("cleanup", INACTIVE, CLEANINGUP, UNCONFIGURED, "on_cleanup"),
+    3: ("activate", INACTIVE, ACTIVATING, ACTIVE, "on_activate"),
+    4: ("deactivate", ACTIVE, DEACTIVATING, INACTIVE, "on_deactivate"),
+    5: ("shutdown", UNCONFIGURED, SHUTTINGDOWN, FINALIZED, "on_shutdown"),
+    6: ("shutdown", INACTIVE, SHUTTINGDOWN, FINALIZED, "on_shutdown"),
+    7: ("shutdown", ACTIVE, SHUTTINGDOWN, FINALIZED, "on_shutdown"),
+}
+# the transitions out of a transition state: (state, outcome) → (id, label, goal)
+OUTCOMES = {
+    (CONFIGURING, 97): (10, "transition_success", INACTIVE),
+    (CONFIGURING, 98): (11, "transition_failure", UNCONFIGURED),
+    (CONFIGURING, 99): (12, "transition_error", ERRORPROCESSING),
+    (CLEANINGUP, 97): (20, "transition_success", UNCONFIGURED),
+    (CLEANINGUP, 98): (21, "transition_failure", INACTIVE),
+    (CLEANINGUP, 99): (22, "transition_error", ERRORPROCESSING),
+    (ACTIVATING, 97): (30, "transition_success", ACTIVE),
+    (ACTIVATING, 98): (31, "transition_failure", INACTIVE),
+    (ACTIVATING, 99): (32, "transition_error", ERRORPROCESSING),
+    (DEACTIVATING, 97): (40, "transition_success", INACTIVE),
+    (DEACTIVATING, 98): (41, "transition_failure", ACTIVE),
+    (DEACTIVATING, 99): (42, "transition_error", ERRORPROCESSING),
+    (SHUTTINGDOWN, 97): (50, "transition_success", FINALIZED),
+    (SHUTTINGDOWN, 98): (51, "transition_failure", FINALIZED),
+    (SHUTTINGDOWN, 99): (52, "transition_error", ERRORPROCESSING),
+    (ERRORPROCESSING, 97): (60, "transition_success", UNCONFIGURED),
+    (ERRORPROCESSING, 98): (61, "transition_failure", FINALIZED),
+    (ERRORPROCESSING, 99): (62, "transition_error", FINALIZED),
+}
+
+
+class LifecycleNodeMixin:
+    def _init_lifecycle(self, enable_communication_interface: bool = True) -> None:
+        from lifecycle_msgs.msg import TransitionEvent
+        from lifecycle_msgs.srv import (
+            ChangeState,
+            GetAvailableStates,
+            GetAvailableTransitions,
+            GetState,
+        )
+
+        self._state_id = UNCONFIGURED
+        self._managed_entities: set[ManagedEntity] = set()
+        self._transition_lock = threading.RLock()
+        self._state_publisher = None
+        if enable_communication_interface:
+            self._state_publisher = self.create_publisher(  # type: ignore[attr-defined]
+                TransitionEvent, "~/transition_event", 10)
+            for srv, name, callback in (
+                    (GetState, "~/get_state", self._on_get_state),
+                    (ChangeState, "~/change_state", self._on_change_state),
+                    (GetAvailableStates, "~/get_available_states", self._on_states),
+                    (GetAvailableTransitions, "~/get_available_transitions",
+                     self._on_transitions),
+                    (GetAvailableTransitions, "~/get_transition_graph", self._on_graph)):
+                self.create_service(srv, name, callback,  # type: ignore[attr-defined]
+                                    qos_profile=qos_profile_services_default)
+
+    # --- the callbacks users override ------------------------------------------------------
+    def on_configure(self, state: LifecycleState) -> TransitionCallbackReturn:
+        return self._entities_call("on_configure", state)
+
+    def on_cleanup(self, state: LifecycleState) -> TransitionCallbackReturn:
+        return self._entities_call("on_cleanup", state)
+
+    def on_shutdown(self, state: LifecycleState) -> TransitionCallbackReturn:
+        return self._entities_call("on_shutdown", state)
+
+    def on_activate(self, state: LifecycleState) -> TransitionCallbackReturn:
+        return self._entities_call("on_activate", state)
+
+    def on_deactivate(self, state: LifecycleState) -> TransitionCallbackReturn:
+        return self._entities_call("on_deactivate", state)
+
+    def on_error(self, state: LifecycleState) -> TransitionCallbackReturn:
+        return self._entities_call("on_error", state)
+
+    def _entities_call(self, method: str, state: LifecycleState) -> TransitionCallbackReturn:
+        for entity in self._managed_entities:
+            outcome = getattr(entity, method)(state)
+            if outcome != TransitionCallbackReturn.SUCCESS:
+                return outcome
+        return TransitionCallbackReturn.SUCCESS
+
+    def add_managed_entity(self, entity: ManagedEntity) -> None:
+        self._managed_entities.add(entity)
+
+    def create_lifecycle_publisher(self, *args: Any, **kwargs: Any) -> LifecyclePublisher:
+        kwargs["publisher_class"] = LifecyclePublisher
+        publisher = self.create_publisher(*args, **kwargs)  # type: ignore[attr-defined]
+        self._managed_entities.add(publisher)
+        return publisher
+
+    # --- transitions -----------------------------------------------------------------------
+    def trigger_configure(self) -> TransitionCallbackReturn:
+        return self._trigger(1)
+
+    def trigger_cleanup(self) -> TransitionCallbackReturn:
+        return self._trigger(2)
+
+    def trigger_activate(self) -> TransitionCallbackReturn:
+        return self._trigger(3)
+
+    def trigger_deactivate(self) -> TransitionCallbackReturn:
+        return self._trigger(4)
+
+    def trigger_shutdown(self) -> TransitionCallbackReturn:
+        return self._trigger({UNCONFIGURED: 5, INACTIVE: 6, ACTIVE: 7}.get(self._state_id, 5))
+
+    def _allowed(self) -> list[int]:
+        return [tid for tid, (_, start, *_rest) in PRIMARY.items() if start == self._state_id]
+
+    def _trigger(self, transition: int) -> TransitionCallbackReturn:
+        with self._transition_lock:
+            if transition not in self._allowed():
+                label = PRIMARY[transition][0] if transition in PRIMARY else str(transition)
+                allowed = ", ".join(f"{PRIMARY[t][0]} [{t}]" for t in self._allowed()) or \
+                    "none"
+                self.get_logger().error(  # type: ignore[attr-defined]
+                    f"Unable to start transition {label} [{transition}] from current state "
+                    f"{LABELS[self._state_id]}: it is not allowed there (allowed: {allowed})")
+                raise TransitionNotAllowed(label, LABELS[self._state_id], allowed)
+            label, start, through, _, method = PRIMARY[transition]
+            self._move(transition, label, start, through)
+            outcome = self._call(method, through, start)
+            goal = self._finish(through, outcome)
+            if goal == ERRORPROCESSING:
+                error = self._call("on_error", ERRORPROCESSING, through)
+                self._finish(ERRORPROCESSING, error)
+            return outcome
+
+    def _call(self, method: str, through: int, previous: int) -> TransitionCallbackReturn:
+        # (rclpy hands the callback the state the transition started from)
+        state = LifecycleState(LABELS[previous], previous)
+        try:
+            outcome = getattr(self, method)(state)
+        except Exception as exc:  # an exception is an error, as rclpy has it
+            self.get_logger().error(  # type: ignore[attr-defined]
+                f"Caught exception in callback for transition {through}: {exc}")
+            return TransitionCallbackReturn.ERROR
+        if outcome not in (97, 98, 99):
+            self.get_logger().error(  # type: ignore[attr-defined]
+                f"{method} returned {outcome!r}: return a TransitionCallbackReturn; taken as "
+                "ERROR")
+            return TransitionCallbackReturn.ERROR
+        return TransitionCallbackReturn(int(outcome))
+
+    def _finish(self, through: int, outcome: int) -> int:
+        transition, label, goal = OUTCOMES[(through, int(outcome))]
+        self._move(transition, label, through, goal)
+        return goal
+
+    def _move(self, transition: int, label: str, start: int, goal: int) -> None:
+        self._state_id = goal
+        if self._state_publisher is None:
+            return
+        from lifecycle_msgs.msg import State, Transition, TransitionEvent
+
+        self._state_publisher.publish(TransitionEvent(
+            timestamp=time.time_ns(), transition=Transition(id=transition, label=label),
+            start_state=State(id=start, label=LABELS[start]),
+            goal_state=State(id=goal, label=LABELS[goal])))
+
+    # --- services ----------------------------------------------------------------------------
+    def _on_get_state(self, request: Any, response: Any) -> Any:
+        from lifecycle_msgs.msg import State
+
+        response.current_state = State(id=self._state_id, label=LABELS[self._state_id])
+        return response
+
+    def _on_change_state(self, request: Any, response: Any) -> Any:
+        transition = request.transition.id
+        if transition == 0 and request.transition.label:  # by label, as ros2 lifecycle asks
+            named = [t for t in self._allowed() if PRIMARY[t][0] == request.transition.label]
+            transition = named[0] if named else -1
+        try:
+            outcome = self._trigger(transition)
+        except TransitionNotAllowed:
+            response.success = False
+            return response
+        response.success = outcome == TransitionCallbackReturn.SUCCESS
+        return response
+
+    def _on_states(self, request: Any, response: Any) -> Any:
+        from lifecycle_msgs.msg import State
+
+        response.available_states = [State(id=i, label=label) for i, label in LABELS.items()]
+        return response
+
+    def _describe(self, transitions: list[int]) -> list[Any]:
+        from lifecycle_msgs.msg import State, Transition, TransitionDescription
+
+        return [TransitionDescription(
+            transition=Transition(id=t, label=PRIMARY[t][0]),
+            start_state=State(id=PRIMARY[t][1], label=LABELS[PRIMARY[t][1]]),
+            goal_state=State(id=PRIMARY[t][2], label=LABELS[PRIMARY[t][2]]))
+            for t in transitions]
+
+    def _on_transitions(self, request: Any, response: Any) -> Any:
+        response.available_transitions = self._describe(self._allowed())
+        return response
+
+    def _on_graph(self, request: Any, response: Any) -> Any:
+        response.available_transitions = self._describe(list(PRIMARY))
+        return response
+
+    @property
+    def _current_state(self) -> LifecycleState:
+        return LifecycleState(LABELS[self._state_id], self._state_id)
+
+
+class TransitionNotAllowed(RuntimeError):
+    def __init__(self, label: str, state: str, allowed: str) -> None:
+        super().__init__(f"transition {label} is not allowed from state {state} (allowed: "
+                         f"{allowed})")
+
+
+class LifecycleNode(LifecycleNodeMixin, Node):
+    def __init__(self, node_name: str, *args: Any, enable_communication_interface: bool = True,
+                 **kwargs: Any) -> None:
+        Node.__init__(self, node_name, *args, **kwargs)
+        self._init_lifecycle(enable_communication_interface)

@@ -1,0 +1,96 @@
+"""Lifecycle nodes (rclpy.lifecycle) on the bus, driven with `launcher lifecycle` as with
+`ros2 lifecycle`: states, transitions, a lifecycle publisher that speaks only when active,
+transition events, and a transition that is not allowed refused with the ones that are."""
+
+from __future__ import annotations
+
+import signal
+
+from tests.integration.test_node_apis import node_package
+
+TALKER = """
+import rclpy
+from rclpy.lifecycle import Node, State, TransitionCallbackReturn
+from std_msgs.msg import String
+
+
+class LifecycleTalker(Node):
+    def on_configure(self, state: State) -> TransitionCallbackReturn:
+        self._pub = self.create_lifecycle_publisher(String, "lifecycle_chatter", 10)
+        self._timer = self.create_timer(0.1, self.publish)
+        self.get_logger().info(f"on_configure() is called from {state.label}.")
+        return TransitionCallbackReturn.SUCCESS
+
+    def on_activate(self, state: State) -> TransitionCallbackReturn:
+        self.get_logger().info("on_activate() is called.")
+        return super().on_activate(state)
+
+    def on_deactivate(self, state: State) -> TransitionCallbackReturn:
+        self.get_logger().info("on_deactivate() is called.")
+        return super().on_deactivate(state)
+
+    def publish(self):
+        self._pub.publish(String(data="Lifecycle HelloWorld!"))
+
+
+rclpy.init()
+node = LifecycleTalker("lc_talker")
+print("up", flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""
+
+
+def test_a_lifecycle_node_is_driven_through_its_states_from_the_cli(ws):
+    ws.own_bus()
+    node_package(ws, "lc", {"talker.py": TALKER})
+    talker = ws.start("run", "lc", "talker.py", output="talker.txt")
+    try:
+        ws.wait_for_output("up", 30, "talker.txt")
+        assert ws.run("lifecycle", "nodes").stdout == "/lc_talker\n"
+        assert ws.run("lifecycle", "get", "/lc_talker").stdout == "unconfigured [1]\n"
+        offered = ws.run("lifecycle", "list", "/lc_talker").stdout
+        assert offered == ("- configure [1]\n\tStart: unconfigured\n\tGoal: configuring\n"
+                           "- shutdown [5]\n\tStart: unconfigured\n\tGoal: shuttingdown\n")
+        refused = ws.run("lifecycle", "set", "/lc_talker", "activate")
+        assert refused.returncode == 1 and "Traceback" not in refused.stderr
+        assert "Unknown transition requested 'activate': /lc_talker is unconfigured, where " \
+               "it offers configure, shutdown" in refused.stderr, refused.stderr
+        direct = ws.run("service", "call", "/lc_talker/change_state",
+                        "lifecycle_msgs/srv/ChangeState", "{transition: {id: 3}}")
+        assert "success: false" in direct.stdout, direct  # as lifecycle_msgs reports it
+        assert ws.run("lifecycle", "set", "/lc_talker", "configure").stdout == \
+            "Transitioning successful\n"
+        assert ws.run("lifecycle", "get", "/lc_talker").stdout == "inactive [2]\n"
+        quiet = ws.run("topic", "echo", "/lifecycle_chatter", "std_msgs/msg/String", "--once",
+                       "--timeout", "1")
+        assert quiet.returncode != 0  # inactive: the lifecycle publisher says nothing
+        events = ws.start("topic", "echo", "/lc_talker/transition_event",
+                          "lifecycle_msgs/msg/TransitionEvent", output="events.txt")
+        try:
+            ws.wait_for_output("", 2, "events.txt")
+            import time
+
+            time.sleep(1.0)
+            assert ws.run("lifecycle", "set", "/lc_talker", "3").returncode == 0
+            heard = ws.run("topic", "echo", "/lifecycle_chatter", "std_msgs/msg/String",
+                           "--once", "--timeout", "10")
+            assert "data: Lifecycle HelloWorld!" in heard.stdout, heard
+            said = ws.wait_for_output("label: active", 10, "events.txt")
+            assert "label: activating" in said and "label: transition_success" in said
+        finally:
+            events.send_signal(signal.SIGINT)
+            events.wait(10)
+        assert ws.run("lifecycle", "get", "/lc_talker").stdout == "active [3]\n"
+        log = ws.output("talker.txt")
+        assert "[lc_talker]: on_configure() is called from unconfigured." in log
+        assert "Unable to start transition activate [3] from current state unconfigured: it " \
+               "is not allowed there (allowed: configure [1], shutdown [5])" in log, log
+        missing = ws.run("lifecycle", "get", "/lc_talkr")
+        assert "Node not found: '/lc_talkr' is not a lifecycle node on the graph (did you " \
+               "mean '/lc_talker'?)" in missing.stderr, missing.stderr
+    finally:
+        talker.send_signal(signal.SIGINT)
+        assert talker.wait(20) == 0, ws.output("talker.txt")
