@@ -77,3 +77,41 @@ def test_transforms_broadcast_in_one_process_are_looked_up_in_another(ws):
     finally:
         broadcaster.send_signal(signal.SIGINT)
         assert broadcaster.wait(20) == 0, ws.output("broadcaster.txt")
+
+
+def test_static_transform_publisher_and_tf2_echo_as_ros_2_has_them(ws):
+    ws.own_bus()
+    new = ws.start("run", "tf2_ros", "static_transform_publisher", "--x", "1", "--y", "2",
+                   "--yaw", "1.5707963", "--frame-id", "map", "--child-frame-id", "odom",
+                   output="new.txt")
+    old = ws.start("run", "tf2_ros", "static_transform_publisher", "0.5", "0", "0", "0", "0",
+                   "0", "odom", "base_link", output="old.txt")
+    try:
+        said = ws.wait_for_output("from 'map' to 'odom'", 30, "new.txt")
+        assert "Spinning until stopped - publishing transform\ntranslation: ('1.000000', " \
+               "'2.000000', '0.000000')\nrotation: ('0.000000', '0.000000', '0.707107', " \
+               "'0.707107')" in said, said
+        assert "Old-style arguments are deprecated" in ws.wait_for_output(
+            "from 'odom' to 'base_link'", 30, "old.txt")
+        echo = ws.start("run", "tf2_ros", "tf2_echo", "map", "base_link", "5",
+                        output="echo.txt")
+        try:
+            shown = ws.wait_for_output("- Matrix:", 30, "echo.txt")
+            # base_link is 0.5 m ahead of odom, which is turned 90° at (1, 2): (1, 2.5)
+            assert "- Translation: [1.000, 2.500, 0.000]" in shown, shown
+            assert "- Rotation: in Quaternion (xyzw) [0.000, 0.000, 0.707, 0.707]" in shown
+            assert "- Rotation: in RPY (degree) [0.000, 0.000, 90.000]" in shown, shown
+        finally:
+            echo.send_signal(signal.SIGINT)
+            assert echo.wait(20) in (0, 130)
+        bad = ws.run("run", "tf2_ros", "static_transform_publisher", "--x", "one",
+                     "--frame-id", "a", "--child-frame-id", "b")
+        assert bad.returncode != 0 and "Traceback" not in bad.stderr
+        assert "usage: static_transform_publisher [--x X] [--y Y] [--z Z] [--qx QX]" \
+            in bad.stderr, bad.stderr
+        few = ws.run("run", "tf2_ros", "static_transform_publisher", "1", "2", "map")
+        assert "expected 8 or 9 positional arguments" in few.stderr, few.stderr
+    finally:
+        for proc in (new, old):
+            proc.send_signal(signal.SIGINT)
+            assert proc.wait(20) in (0, 130)
