@@ -1,0 +1,72 @@
+"""The small tools launch files start: joint_state_publisher (and its _gui, with no desktop),
+as ROS 2's, on real processes."""
+
+from __future__ import annotations
+
+import re
+import signal
+
+URDF = """<robot name="arm"><link name="base"/><link name="a"/><link name="b"/><link name="c"/>
+<link name="d"/><link name="e"/>
+<joint name="shoulder" type="revolute"><parent link="base"/><child link="a"/>
+<axis xyz="0 0 1"/><limit lower="0.5" upper="1.5" effort="1" velocity="1"/></joint>
+<joint name="wheel" type="continuous"><parent link="a"/><child link="b"/></joint>
+<joint name="slide" type="prismatic"><parent link="b"/><child link="c"/>
+<limit lower="-0.2" upper="0.2" effort="1" velocity="1"/></joint>
+<joint name="finger" type="revolute"><parent link="c"/><child link="d"/>
+<limit lower="-1" upper="1" effort="1" velocity="1"/><mimic joint="shoulder" multiplier="2"
+offset="0.1"/></joint>
+<joint name="bolt" type="fixed"><parent link="d"/><child link="e"/></joint>
+</robot>"""
+
+
+def positions(text: str) -> dict[str, float]:
+    names = re.findall(r"^name:\n((?:- .*\n)+)", text, re.M)[0]
+    values = re.findall(r"^position:\n((?:- .*\n)+)", text, re.M)[0]
+    return dict(zip([n[2:] for n in names.splitlines()],
+                    [float(v[2:]) for v in values.splitlines()], strict=True))
+
+
+def test_joint_state_publisher_publishes_the_moving_joints_at_their_zeros(ws):
+    ws.own_bus()
+    publisher = ws.start("run", "joint_state_publisher", "joint_state_publisher", "--ros-args",
+                         "-p", f"robot_description:={URDF}", "-p", "zeros.wheel:=0.25",
+                         "-p", "rate:=20.0", output="jsp.txt")
+    try:
+        heard = ws.run("topic", "echo", "/joint_states", "sensor_msgs/msg/JointState",
+                       "--once", "--timeout", "30")
+        assert heard.returncode == 0, heard.stderr
+        # 0 is outside the shoulder's limits: the middle; the mimic follows its master
+        assert positions(heard.stdout) == {"shoulder": 1.0, "wheel": 0.25, "slide": 0.0,
+                                           "finger": 2.1}, heard.stdout
+    finally:
+        publisher.send_signal(signal.SIGINT)
+        assert publisher.wait(20) in (0, 130)
+
+
+def test_joint_state_publisher_gui_needs_no_desktop_and_says_how_to_move_joints(ws):
+    ws.own_bus()
+    description = ws.start("topic", "pub", "--latched",
+                           "/robot_description", "std_msgs/msg/String", f"{{data: '{URDF}'}}",
+                           output="description.txt")
+    gui = ws.start("run", "joint_state_publisher_gui", "joint_state_publisher_gui",
+                   "--ros-args", "-p", "source_list:=[/moved]", output="gui.txt")
+    try:
+        said = ws.wait_for_output("no desktop here for its sliders", 30, "gui.txt")
+        assert "source_list" in said and "Traceback" not in said
+        moved = ws.start("topic", "pub", "-r", "10", "/moved", "sensor_msgs/msg/JointState",
+                         "{name: [slide], position: [0.15]}", output="moved.txt")
+        try:
+            for _ in range(20):
+                heard = ws.run("topic", "echo", "/joint_states", "sensor_msgs/msg/JointState",
+                               "--once", "--timeout", "30")
+                if positions(heard.stdout).get("slide") == 0.15:
+                    break
+            assert positions(heard.stdout)["slide"] == 0.15, heard.stdout
+        finally:
+            moved.send_signal(signal.SIGINT)
+            moved.wait(20)
+    finally:
+        for proc in (gui, description):
+            proc.send_signal(signal.SIGINT)
+            proc.wait(20)
