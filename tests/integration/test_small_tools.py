@@ -70,3 +70,56 @@ def test_joint_state_publisher_gui_needs_no_desktop_and_says_how_to_move_joints(
         for proc in (gui, description):
             proc.send_signal(signal.SIGINT)
             proc.wait(20)
+
+
+def rate_of(ws, topic: str) -> str:
+    """What `launcher topic hz` says of the topic over four seconds."""
+    import time
+
+    hz = ws.start("topic", "hz", topic, output=f"hz{topic.replace('/', '_')}.txt")
+    time.sleep(4)
+    hz.send_signal(signal.SIGINT)
+    hz.wait(20)
+    return ws.output(f"hz{topic.replace('/', '_')}.txt")
+
+
+def test_topic_tools_relay_throttle_drop_and_mux(ws):
+    ws.own_bus()
+    source = ws.start("topic", "pub", "-r", "20", "/chatter", "std_msgs/msg/String",
+                      "{data: hello}", output="source.txt")
+    other = ws.start("topic", "pub", "-r", "20", "/other", "std_msgs/msg/String",
+                     "{data: other}", output="other.txt")
+    tools = [ws.start("run", "topic_tools", "relay", "/chatter", "/relayed", output="relay.txt"),
+             ws.start("run", "topic_tools", "throttle", "messages", "/chatter", "2",
+                      output="throttle.txt"),
+             ws.start("run", "topic_tools", "drop", "/chatter", "1", "2", output="drop.txt"),
+             ws.start("run", "topic_tools", "mux", "/muxed", "/chatter", "/other",
+                      output="mux.txt")]
+    try:
+        relayed = ws.run("topic", "echo", "/relayed", "std_msgs/msg/String", "--once",
+                         "--timeout", "30")
+        assert "data: hello" in relayed.stdout, relayed
+        hz = rate_of(ws, "/chatter_throttle")
+        rates = [float(r) for r in re.findall(r"average rate: ([\d.]+)", hz)]
+        assert rates and 1.0 < rates[-1] < 3.0, hz  # 2 a second of 20
+        dropped = rate_of(ws, "/chatter_drop")
+        rates = [float(r) for r in re.findall(r"average rate: ([\d.]+)", dropped)]
+        assert rates and 6.0 < rates[-1] < 14.0, dropped  # half of 20
+        assert "data: hello" in ws.run("topic", "echo", "/muxed", "std_msgs/msg/String",
+                                       "--once", "--timeout", "30").stdout
+        chosen = ws.run("service", "call", "/mux/select",
+                        "topic_tools_interfaces/srv/MuxSelect", "{topic: /other}")
+        assert "prev_topic: /chatter" in chosen.stdout and "success: true" in chosen.stdout
+        heard = ""
+        for _ in range(5):
+            heard = ws.run("topic", "echo", "/muxed", "std_msgs/msg/String", "--once",
+                           "--timeout", "30").stdout
+            if "data: other" in heard:
+                break
+        assert "data: other" in heard, heard
+        bad = ws.run("run", "topic_tools", "drop", "/chatter", "3", "2")
+        assert bad.returncode != 0 and "X must be at least 0 and below Y" in bad.stderr
+    finally:
+        for proc in (*tools, source, other):
+            proc.send_signal(signal.SIGINT)
+            proc.wait(20)
