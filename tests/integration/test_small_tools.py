@@ -123,3 +123,52 @@ def test_topic_tools_relay_throttle_drop_and_mux(ws):
         for proc in (*tools, source, other):
             proc.send_signal(signal.SIGINT)
             proc.wait(20)
+
+
+def test_teleop_twist_keyboard_drives_from_keys_and_gives_the_terminal_back(ws):
+    """In a pseudo-terminal, as a user's: keys become Twists on cmd_vel, q steps the speeds
+    up 10%, Ctrl-C ends it with the terminal's settings as they were."""
+    import os
+    import subprocess
+    import termios
+    import time
+
+    from tests.conftest import launcher_argv
+
+    ws.own_bus()
+    master, slave = os.openpty()
+    before = termios.tcgetattr(slave)
+    teleop = subprocess.Popen([*launcher_argv(), "run", "teleop_twist_keyboard",
+                               "teleop_twist_keyboard"], stdin=slave, stdout=slave,
+                              stderr=slave, cwd=ws.root, env=ws.env)
+    try:
+        screen = b""
+        deadline = time.monotonic() + 30
+        while b"currently:" not in screen and time.monotonic() < deadline:
+            screen += os.read(master, 4096)
+        assert b"Moving around:" in screen and b"currently:\tspeed 0.5\tturn 1.0" in screen
+        listener = ws.start("topic", "echo", "/cmd_vel", "geometry_msgs/msg/Twist",
+                            output="cmd_vel.txt")
+        time.sleep(1.5)
+        os.write(master, b"i")
+        said = ws.wait_for_output("x: 0.5", 20, "cmd_vel.txt")
+        os.write(master, b"q")
+        time.sleep(0.3)
+        os.write(master, b"j")
+        said = ws.wait_for_output("z: 1.1", 20, "cmd_vel.txt")
+        assert "x: 0.5" in said
+        os.write(master, b"\x03")
+        assert teleop.wait(20) == 0
+        assert termios.tcgetattr(slave) == before  # raw mode undone
+        listener.send_signal(signal.SIGINT)
+        listener.wait(20)
+    finally:
+        if teleop.poll() is None:
+            teleop.kill()
+            teleop.wait()
+        os.close(master)
+        os.close(slave)
+    no_terminal = ws.run("run", "teleop_twist_keyboard", "teleop_twist_keyboard",
+                         stdin=subprocess.DEVNULL)
+    assert no_terminal.returncode == 1 and "Traceback" not in no_terminal.stderr
+    assert "its stdin is not one: run it in a terminal of its own" in no_terminal.stderr
