@@ -66,7 +66,12 @@ class Service:
         return self._types()[1]
 
     def _on_query(self, query: zenoh.Query) -> None:
-        self._host.enqueue(self._answer, query)
+        if self.inline:
+            self._answer(query)
+        else:
+            self._host.enqueue(self._answer, query)
+
+    inline = False  # answered on Zenoh's thread, not the executor (no user code in it)
 
     def _answer(self, query: zenoh.Query) -> None:
         types = registry()
@@ -158,6 +163,41 @@ class Client:
                 raise LaunchError(f"service {self.name} did not answer within {timeout:g} s "
                                   "(is its server running?)")
             time.sleep(0.05)
+
+    def call_then(self, request: Any, timeout: float, done: Callable[[Any, Any], None]
+                  ) -> None:
+        """Send the request and return at once; `done(response, None)` or `done(None, error)`
+        comes on Zenoh's thread when the server answers (or the time is up): no thread is
+        made per call. A query no server matched yet is not sent again (use `call` for the
+        first one after start, or wait for the service first)."""
+        types = registry()
+        payload = types.serialize(request, self.request_type)
+        attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
+        answered: list[bool] = []
+
+        def on_reply(reply: Any) -> None:
+            if answered:
+                return
+            answered.append(True)
+            if reply.ok is not None:
+                try:
+                    done(types.deserialize(reply.ok.payload.to_bytes(), self.response_type,
+                                           self._make), None)
+                except Exception as exc:  # a malformed answer is the caller's error
+                    done(None, exc)
+            else:
+                done(None, LaunchError(
+                    f"service {self.name} failed: "
+                    f"{reply.err.payload.to_bytes().decode(errors='replace')}"))
+
+        def on_end() -> None:
+            if not answered:
+                answered.append(True)
+                done(None, LaunchError(f"service {self.name} did not answer within "
+                                       f"{timeout:g} s (is its server running?)"))
+        self._host.session.get(self._key, zenoh.handlers.Callback(on_reply, on_end,
+                                                                   indirect=False),
+                               payload=payload, attachment=attachment, timeout=timeout)
 
     def call_async(self, request: Any, timeout: float = 5.0) -> Future:
         future = Future()

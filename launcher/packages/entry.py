@@ -18,10 +18,12 @@ def main() -> int:
                                  "[ARGS…]"))
     target = sys.argv[1]
     module_name, _, attribute = target.partition(":")
+    # the program's own arguments, before its module is imported: one that reads sys.argv
+    # at import (argparse at module level) must not see this runner's MODULE:FUNCTION
+    sys.argv = [module_name.rsplit(".", 1)[-1], *sys.argv[2:]]
     function = importlib.import_module(module_name)
     for part in attribute.split("."):
         function = getattr(function, part)
-    sys.argv = [module_name.rsplit(".", 1)[-1], *sys.argv[2:]]
     try:
         result = function()
     except KeyboardInterrupt:  # Ctrl-C (or the launch stopping): a quiet exit, no traceback

@@ -18,6 +18,7 @@ class Future:
         self._callbacks: list[Callable[[Future], None]] = []
         self._lock = threading.Lock()
         self._executor = executor
+        self._waiting: list[threading.Event] = []
 
     def __await__(self) -> Any:
         while self._state == "pending":
@@ -57,6 +58,9 @@ class Future:
                 return
             self._state = state
             callbacks, self._callbacks = self._callbacks, []
+            waiting, self._waiting = self._waiting, []
+        for event in waiting:  # a blocking wait wakes now, not a turn of the executor later
+            event.set()
         for callback in callbacks:
             self._schedule(callback)
 
@@ -66,6 +70,14 @@ class Future:
             executor.create_task(callback, self)
         else:
             callback(self)
+
+    def _wake_on_done(self, event: threading.Event) -> None:
+        """Set `event` the moment this is done (for a thread that blocks on it)."""
+        with self._lock:
+            if self._state == "pending":
+                self._waiting.append(event)
+                return
+        event.set()
 
     def add_done_callback(self, callback: Callable[[Future], None]) -> None:
         with self._lock:

@@ -99,10 +99,11 @@ class ActionClient:
         self._feedback = bus.create_subscription(
             f"{self._type_name}_FeedbackMessage", N.endpoint(action_name, N.FEEDBACK),
             grouped(self.callback_group, self._on_feedback), QoS(depth=10), make=rosidl.make)
+        # the status array names every goal the server keeps (hundreds, on a busy one): read
+        # as bytes, for the few goals of this client, not made into messages each time
         self._status = bus.create_subscription(
-            N.STATUS_TYPE, N.endpoint(action_name, N.STATUS),
-            grouped(self.callback_group, self._on_status), QoS(depth=1, transient_local=True),
-            make=rosidl.make)
+            N.STATUS_TYPE, N.endpoint(action_name, N.STATUS), self._on_status,
+            QoS(depth=1, transient_local=True), raw=True, inline=True)
         node._entities.append(self)
 
     # --- the server -----------------------------------------------------------------------------
@@ -194,40 +195,46 @@ class ActionClient:
         if callback is not None:
             callback(message)
 
-    def _on_status(self, message: Any) -> None:
-        for status in message.status_list:
-            with self._lock:
-                handle = self._handles.get(N.uuid_key(status.goal_info.goal_id))
-            if handle is not None:
-                handle._status = status.status
+    def _on_status(self, payload: bytes) -> None:
+        with self._lock:
+            if not self._handles:
+                return
+            for uuid, status in _statuses(payload):
+                handle = self._handles.get(uuid)
+                if handle is not None:
+                    handle._status = status
 
     # --- calls ----------------------------------------------------------------------------------
     def _call_async(self, client: Any, request: Any, timeout: float, shape: Any) -> Future:
-        """A Future completed on the node's executor with `shape(response)`."""
+        """A Future completed on the node's executor with `shape(response)` (the answer
+        comes on Zenoh's thread and is handed to the executor: no thread per call)."""
         future = Future(executor=self._node.executor)
         host = self._node._host_or_none()
 
-        def finish(method: Any, value: Any) -> None:
-            method(value)
-
-        def run() -> None:
-            try:
-                outcome: tuple[Any, Any] = (future.set_result,
-                                            shape(client.call(request, timeout)))
-            except Exception as exc:  # the caller sees it from future.result()
-                outcome = (future.set_exception, exc)
-            if host is not None:
-                host.enqueue(finish, *outcome)
+        def finish(response: Any, error: Any) -> None:
+            if error is None:
+                try:
+                    future.set_result(shape(response))
+                except Exception as exc:
+                    future.set_exception(exc)
             else:
-                finish(*outcome)
-        threading.Thread(target=run, daemon=True).start()
+                future.set_exception(error)
+
+        def done(response: Any, error: Any) -> None:
+            # A future with an executor runs its done callbacks there whoever completes it:
+            # completed here, on Zenoh's thread, it wakes a blocking wait a hand-over sooner
+            if future._executor is not None or host is None:
+                finish(response, error)
+            else:
+                host.enqueue(finish, response, error)
+        client.call_then(request, timeout, done)
         return future
 
     def _wait(self, future: Future) -> Any:
         """The future's result, waited for on this thread (the executor completes it: it
         must be spinning elsewhere, as rclpy requires for its blocking calls)."""
         event = threading.Event()
-        future.add_done_callback(lambda _f: event.set())
+        future._wake_on_done(event)
         if self._node.executor is None:  # nobody spins: complete it here
             while not event.wait(0.01):
                 self._node._host_or_none() and self._drain()
@@ -252,3 +259,18 @@ class ActionClient:
             entity.destroy()
         if self in self._node._entities:
             self._node._entities.remove(self)
+
+
+def _statuses(payload: bytes) -> list[tuple[bytes, int]]:
+    """(goal uuid, status) of each entry of a GoalStatusArray's CDR (little or big endian):
+    uuid[16], stamp (int32, uint32, aligned to 4), status int8."""
+    big = payload[1] == 0
+    count = int.from_bytes(payload[4:8], "big" if big else "little")
+    found, at = [], 8
+    for _ in range(count):
+        uuid = payload[at:at + 16]
+        at += 16
+        at += -(at - 4) % 4
+        found.append((bytes(uuid), payload[at + 8]))
+        at += 9
+    return found

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import enum
 import inspect
+import struct
 import threading
 import time
 from typing import Any
@@ -75,6 +76,7 @@ class ServerGoalHandle:
         self._lock = threading.Lock()
         self._result_future: Future = Future()
         self.ended_at: float | None = None
+        self._status_made: tuple[int, bytes] | None = None
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, ServerGoalHandle) and \
@@ -82,6 +84,15 @@ class ServerGoalHandle:
 
     def __hash__(self) -> int:
         return hash(N.uuid_key(self.goal_id))
+
+    def _status_cdr(self) -> bytes:
+        """Its status array entry (status_entry_cdr), made again only when its state moves."""
+        made = self._status_made
+        if made is None or made[0] != self._state:
+            stamp = self._goal_info.stamp
+            made = self._status_made = (self._state, status_entry_cdr(
+                bytes(self.goal_id.uuid), stamp.sec, stamp.nanosec, self._state))
+        return made[1]
 
     @property
     def request(self) -> Any:
@@ -180,16 +191,17 @@ class ActionServer:
             f"{self._type_name}_GetResult", N.endpoint(action_name, N.GET_RESULT),
             self._on_result_request, make=rosidl.make,
             new_response=impl.GetResultService.Response)
-        self._get_result.deferred = True
+        # a result request runs none of the user's code: answered (or kept for the goal's
+        # end) on Zenoh's thread, a hand-over to the executor less on every goal's way
+        self._get_result.deferred = self._get_result.inline = True
         self._feedback = bus.create_publisher(f"{self._type_name}_FeedbackMessage",
                                               N.endpoint(action_name, N.FEEDBACK), QoS(depth=10))
         self._status = bus.create_publisher(N.STATUS_TYPE, N.endpoint(action_name, N.STATUS),
                                             QoS(depth=1, transient_local=True))
         node._entities.append(self)
-        from action_msgs.msg import GoalInfo, GoalStatus, GoalStatusArray
+        from action_msgs.msg import GoalInfo
 
-        self._goal_info, self._goal_status, self._status_array = \
-            GoalInfo, GoalStatus, GoalStatusArray
+        self._goal_info = GoalInfo
 
     # --- callbacks the user gives -------------------------------------------------------------
     def register_goal_callback(self, goal_callback: Any) -> None:
@@ -330,10 +342,12 @@ class ActionServer:
 
     # --- status -------------------------------------------------------------------------------
     def _publish_status(self) -> None:
+        """Every goal kept (terminal ones until their results expire), as rclpy publishes
+        them; each goal's entry is made once per state, so a server that has seen many goals
+        does not rebuild them all at each change."""
         with self._lock:
-            goals = list(self._goals.values())
-        self._status.publish(self._status_array(status_list=[
-            self._goal_status(goal_info=g._goal_info, status=g.status) for g in goals]))
+            entries = [g._status_cdr() for g in self._goals.values()]
+        self._status.publish_raw(status_array_join(entries))
 
     def _expire(self) -> None:
         """Forget goals whose results have been kept `result_timeout` seconds."""
@@ -352,6 +366,32 @@ class ActionServer:
             entity.destroy()
         if self in self._node._entities:
             self._node._entities.remove(self)
+
+
+_COUNT = struct.Struct("<I")
+_ENTRY_TAIL = struct.Struct("<iIb")
+
+
+def status_entry_cdr(uuid: bytes, sec: int, nanosec: int, status: int) -> bytes:
+    """One GoalStatus as it sits in a GoalStatusArray after the first entry (every entry
+    but the first starts 1 past a multiple of 4, so its stamp is padded by 3)."""
+    return uuid + b"\x00\x00\x00" + _ENTRY_TAIL.pack(sec, nanosec, status)
+
+
+def status_array_join(entries: list[bytes]) -> bytes:
+    """action_msgs/GoalStatusArray's CDR (little endian) from status_entry_cdr's entries,
+    written directly: a server keeps every goal until its result expires and says them all
+    at each change, so this is made often and grows (rcl does it in C)."""
+    if not entries:
+        return b"\x00\x01\x00\x00" + _COUNT.pack(0)
+    first = entries[0]
+    return b"".join((b"\x00\x01\x00\x00", _COUNT.pack(len(entries)), first[:16], first[19:],
+                     *entries[1:]))
+
+
+def status_array_cdr(entries: list[tuple[bytes, int, int, int]]) -> bytes:
+    """The same from (uuid, sec, nanosec, status) entries."""
+    return status_array_join([status_entry_cdr(*e) for e in entries])
 
 
 def _resolve(value: Any) -> Any:
