@@ -18,6 +18,8 @@ from typing import Any
 from rclpy.task import Future, Task
 from rclpy.utilities import get_default_context
 
+BELL_LOST = 0.1  # s: the longest an executor waits without looking (see _next_work)
+
 
 class ExternalShutdownException(Exception):
     """The context was shut down (a signal, or another thread) while spinning."""
@@ -132,8 +134,11 @@ class Executor:
             wait = min(ends) - now if ends else None
             if deadline is not None and now >= deadline:
                 return None
-            if wait is None:
-                self._context.bell.acquire()
+            # The bell is the context's, shared by every executor of it: one may take a ring
+            # meant for another (two executors on two threads, as rclpy programs have), so
+            # none sleeps longer than BELL_LOST before it looks at its work again.
+            if wait is None or wait > BELL_LOST:
+                self._context.bell.acquire(timeout=BELL_LOST)
             elif wait > 0:
                 self._context.bell.acquire(timeout=wait)
 
@@ -152,7 +157,10 @@ class Executor:
 
     # --- spinning ---------------------------------------------------------------------------
     def spin_once(self, timeout_sec: float | None = None) -> None:
-        work = self._next_work(timeout_sec)
+        try:
+            work = self._next_work(timeout_sec)
+        except ShutdownException:  # (rclpy's spin_once lets an executor's shutdown pass)
+            return
         if work is not None:
             self._run(*work)
 

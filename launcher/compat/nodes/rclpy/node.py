@@ -38,6 +38,9 @@ from rclpy.subscription import Subscription
 from rclpy.timer import Rate, Timer
 from rclpy.utilities import get_default_context
 
+EMPTY_AFTER_PRE_SET = ("parameter list cannot be empty, this might be due to "
+                       "pre_set_parameters_callback modifying the original parameters list.")
+
 
 class Node:
     PARAM_REL_TOL = 1e-6
@@ -88,6 +91,9 @@ class Node:
         self._declared: dict[str, Parameter] = {}
         self._descriptors: dict[str, Any] = {}
         self._set_callbacks: list[Callable[[list[Parameter]], Any]] = []
+        self._pre_set_callbacks: list[Callable[[list[Parameter]], Any]] = []
+        self._post_set_callbacks: list[Callable[[list[Parameter]], None]] = []
+        self._pending_post: list[Parameter] | None = None
         self._bus._parameters.clear()  # what is declared, as rclpy lists it
         self._declare_now("use_sim_time", self._overrides.get("use_sim_time", False))
         if automatically_declare_parameters_from_overrides:
@@ -98,6 +104,36 @@ class Node:
         self._bus.gate, self._bus.describer = self._gate, self._describe_for_bus
         self._clock = ROSClock(self._bus.get_clock())
         self._context.track_node(self)
+        if enable_logger_service:
+            self._logger_services()
+
+    def _logger_services(self) -> None:
+        """`~/get_logger_levels` and `~/set_logger_levels` (rcl_interfaces), as rclpy offers
+        them with enable_logger_service=True."""
+        from rcl_interfaces.msg import LoggerLevel, SetLoggerLevelsResult
+        from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
+
+        from rclpy.logging import LoggingSeverity, get_logger
+
+        def get_levels(request: Any, response: Any) -> Any:
+            response.levels = [LoggerLevel(name=name, level=int(
+                get_logger(name).get_effective_level())) for name in request.names]
+            return response
+
+        def set_levels(request: Any, response: Any) -> Any:
+            results = []
+            for wanted in request.levels:
+                try:
+                    get_logger(wanted.name).set_level(LoggingSeverity(wanted.level))
+                    results.append(SetLoggerLevelsResult(successful=True))
+                except ValueError:
+                    results.append(SetLoggerLevelsResult(
+                        successful=False, reason=f"{wanted.level} is not a logging severity "
+                                                 "(0, 10, 20, 30, 40, 50)"))
+            response.results = results
+            return response
+        self.create_service(GetLoggerLevels, "~/get_logger_levels", get_levels)
+        self.create_service(SetLoggerLevels, "~/set_logger_levels", set_levels)
 
     # --- identity ---------------------------------------------------------------------------
     @property
@@ -457,6 +493,9 @@ class Node:
     def set_parameters_atomically(self, parameter_list: list[Parameter]) -> Any:
         from rcl_interfaces.msg import SetParametersResult
 
+        parameter_list = self._pre_set(list(parameter_list))
+        if not parameter_list:
+            return SetParametersResult(successful=False, reason=EMPTY_AFTER_PRE_SET)
         for parameter in parameter_list:
             if parameter.name not in self._declared and not self._allow_undeclared:
                 raise ParameterNotDeclaredException(parameter.name)
@@ -467,7 +506,34 @@ class Node:
         for parameter in parameter_list:
             self._declared[parameter.name] = parameter
             self._bus._parameters[parameter.name] = parameter.value
+        self._post_set(parameter_list)
         return SetParametersResult(successful=True)
+
+    # --- rclpy's pre-set (may change the list) and post-set (told what was set) callbacks ---
+    def add_pre_set_parameters_callback(self, callback: Callable[[list[Parameter]], Any]
+                                        ) -> Callable[[list[Parameter]], Any]:
+        self._pre_set_callbacks.insert(0, callback)
+        return callback
+
+    def remove_pre_set_parameters_callback(self, callback: Any) -> None:
+        self._pre_set_callbacks.remove(callback)
+
+    def add_post_set_parameters_callback(self, callback: Callable[[list[Parameter]], None]
+                                         ) -> Callable[[list[Parameter]], None]:
+        self._post_set_callbacks.insert(0, callback)
+        return callback
+
+    def remove_post_set_parameters_callback(self, callback: Any) -> None:
+        self._post_set_callbacks.remove(callback)
+
+    def _pre_set(self, parameters: list[Parameter]) -> list[Parameter]:
+        for callback in self._pre_set_callbacks:
+            parameters = list(callback(list(parameters)) or [])
+        return parameters
+
+    def _post_set(self, parameters: list[Parameter]) -> None:
+        for callback in self._post_set_callbacks:
+            callback(list(parameters))
 
     def _gate(self, name: str, value: Any) -> str | None:
         """A set or delete asked from outside, checked as rclcpp/rclpy check it (the declared
@@ -483,18 +549,30 @@ class Node:
                 return "cannot undeclare a statically typed parameter"
             self._declared.pop(name, None)
             return None
-        parameter = Parameter(name, value=_plain(value))
-        old = self._declared.get(name)
-        if old is not None and old.type_ != Parameter.Type.NOT_SET and not dynamic and \
-                old.type_ != parameter.type_:
-            return (f"Wrong parameter type, parameter {{{name}}} is of type "
-                    f"{{{old.type_.name.lower()}}}, setting it to "
-                    f"{{{parameter.type_.name.lower()}}} is not allowed.")
+        parameters = self._pre_set([Parameter(name, value=_plain(value))])
+        if not parameters:
+            return EMPTY_AFTER_PRE_SET
+        for parameter in parameters:
+            old = self._declared.get(parameter.name)
+            described = self._descriptors.get(parameter.name)
+            loose = described is not None and described.dynamic_typing
+            if parameter.name not in self._declared and not self._allow_undeclared:
+                return (f"parameter '{parameter.name}' cannot be set because it was not "
+                        "declared")
+            if old is not None and old.type_ != Parameter.Type.NOT_SET and not loose and \
+                    old.type_ != parameter.type_:
+                return (f"Wrong parameter type, parameter {{{parameter.name}}} is of type "
+                        f"{{{old.type_.name.lower()}}}, setting it to "
+                        f"{{{parameter.type_.name.lower()}}} is not allowed.")
         for callback in self._set_callbacks:
-            result = callback([parameter])
+            result = callback(list(parameters))
             if result is not None and not result.successful:
                 return result.reason or "refused by the node's parameter callback"
-        self._declared[name] = parameter
+        for parameter in parameters:
+            self._declared[parameter.name] = parameter
+            if parameter.name != name:  # one a pre-set callback added: set here
+                self._bus._parameters[parameter.name] = parameter.value
+        self._pending_post = parameters
         return None
 
     def _describe_for_bus(self, name: str) -> dict[str, Any]:
@@ -510,6 +588,10 @@ class Node:
     def _on_bus_set(self, name: str, value: Any) -> None:
         """`launcher param set` (or ros2 param) changed one: the callbacks hear of it."""
         parameter = Parameter(name, value=_plain(value))
+        pending, self._pending_post = self._pending_post, None
+        if pending is not None and any(p.name == name for p in pending):
+            self._post_set(pending)  # (gated: validated and stored already)
+            return
         if self._declared.get(name) == parameter:
             return
         self._declared[name] = parameter

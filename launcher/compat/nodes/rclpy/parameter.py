@@ -129,3 +129,49 @@ def parameter_value_to_python(value: Any) -> Any:
         return None
     found = getattr(value, field)
     return list(found) if kind.name.endswith("ARRAY") else found
+
+
+def parameter_dict_from_yaml_file(parameter_file: str, use_wildcard: bool = False,
+                                  target_nodes: list[str] | None = None,
+                                  namespace: str = "") -> dict[str, Any]:
+    """{name: rcl_interfaces/Parameter} of a ROS 2 parameters file, as rclpy reads it: the
+    `ros__parameters` of the target nodes (or of every node), `/**` when `use_wildcard`,
+    nested maps flattened with dots."""
+    import yaml
+
+    try:
+        with open(parameter_file, encoding="utf-8") as handle:
+            document = yaml.safe_load(handle)
+    except OSError as exc:
+        raise FileNotFoundError(f"Parameter file {parameter_file} not found: {exc}") from None
+    except yaml.YAMLError as exc:
+        raise RuntimeError(f"Failed to parse parameter file {parameter_file}: {exc}") \
+            from None
+    if not isinstance(document, dict):
+        raise RuntimeError(f"Param file {parameter_file} does not contain a map of nodes")
+    wanted = None if target_nodes is None else {n.strip("/") for n in target_nodes}
+    found: dict[str, Any] = {}
+    for node, body in document.items():
+        name = str(node).strip("/")
+        if namespace:
+            name = name.removeprefix(namespace.strip("/") + "/")
+        matches = wanted is None or name in wanted or (use_wildcard and name == "**")
+        if not matches:
+            continue
+        if not isinstance(body, dict) or "ros__parameters" not in body:
+            raise RuntimeError(f"Param file {parameter_file} does not contain selected "
+                               f"parameters for node {node} (no ros__parameters)")
+        for key, value in _flatten(body["ros__parameters"] or {}):
+            found[key] = Parameter(key, value=value).to_parameter_msg()
+    return found
+
+
+def _flatten(values: dict[str, Any], prefix: str = "") -> list[tuple[str, Any]]:
+    out = []
+    for key, value in values.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out += _flatten(value, f"{name}.")
+        else:
+            out.append((name, value))
+    return out

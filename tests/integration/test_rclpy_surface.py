@@ -1,0 +1,106 @@
+"""The rest of rclpy that real nodes use (found failing on ros2/demos' demo_nodes_py):
+pre- and post-set parameter callbacks, parameter_dict_from_yaml_file, the logger service
+with two executors on two threads, and an entry point that reads sys.argv as it is imported."""
+
+from __future__ import annotations
+
+import signal
+
+from tests.integration.test_node_apis import node_package
+
+PARAMS = """
+import threading, time
+import rclpy
+from rcl_interfaces.msg import LoggerLevel, SetParametersResult
+from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.parameter import Parameter, parameter_dict_from_yaml_file
+
+rclpy.init()
+node = Node("tuned", enable_logger_service=True)
+node.declare_parameter("param1", 0.0)
+node.declare_parameter("param2", 0.0)
+seen = []
+node.add_pre_set_parameters_callback(
+    lambda ps: ps + [Parameter("param2", Parameter.Type.DOUBLE, 4.0)]
+    if any(p.name == "param1" for p in ps) else ps)
+node.add_on_set_parameters_callback(lambda ps: SetParametersResult(successful=True))
+node.add_post_set_parameters_callback(lambda ps: seen.append(sorted(p.name for p in ps)))
+node.set_parameters([Parameter("param1", Parameter.Type.DOUBLE, 1.0)])
+print("internal", node.get_parameter("param2").value, seen[-1], flush=True)
+values = parameter_dict_from_yaml_file(PARAMS_FILE, target_nodes=["tuned"])
+print("yaml", sorted(values), values["arm.gain"].value.double_value, flush=True)
+
+executor = SingleThreadedExecutor()
+executor.add_node(node)
+threading.Thread(target=executor.spin, daemon=True).start()
+asker = Node("asker")
+setter = asker.create_client(SetLoggerLevels, "/tuned/set_logger_levels")
+getter = asker.create_client(GetLoggerLevels, "/tuned/get_logger_levels")
+setter.wait_for_service(10)
+future = setter.call_async(SetLoggerLevels.Request(levels=[LoggerLevel(name="tuned", level=10)]))
+rclpy.spin_until_future_complete(asker, future, timeout_sec=10)  # (a second executor)
+future = getter.call_async(GetLoggerLevels.Request(names=["tuned"]))
+rclpy.spin_until_future_complete(asker, future, timeout_sec=10)
+print("logger", future.result().levels[0].level, flush=True)
+print("ready", flush=True)
+while rclpy.ok():
+    time.sleep(0.1)
+    if seen and seen[-1] == ["param1", "param2"] and node.get_parameter("param1").value == 5.0:
+        print("external", node.get_parameter("param2").value, flush=True)
+        break
+"""
+
+
+def test_parameter_callbacks_yaml_files_and_the_logger_service(ws):
+    params_file = ws.write("params.yaml", """
+    tuned:
+      ros__parameters:
+        arm:
+          gain: 2.5
+          joints: [a, b]
+    other:
+      ros__parameters:
+        x: 1
+    """)
+    node_package(ws, "surface", {"params.py": PARAMS.replace(
+        "PARAMS_FILE", repr(str(params_file)))})
+    ws.own_bus()
+    proc = ws.start("run", "surface", "params.py", output="params.txt")
+    try:
+        said = ws.wait_for_output("ready", 60, "params.txt")
+        assert "internal 4.0 ['param1', 'param2']" in said, said  # the pre-set callback added
+        assert "yaml ['arm.gain', 'arm.joints'] 2.5" in said, said
+        assert "logger 10" in said, said
+        done = ws.run("param", "set", "/tuned", "param1", "5.0")
+        assert done.returncode == 0, done.stderr
+        assert "external 4.0" in ws.wait_for_output("external", 30, "params.txt")
+    finally:
+        proc.send_signal(signal.SIGINT)
+        proc.wait(20)
+
+
+def test_an_entry_point_reading_sys_argv_as_it_is_imported_gets_its_own(ws):
+    ws.own_bus()
+    ws.write("ws/argv_pkg/package.xml", """
+    <?xml version="1.0"?>
+    <package format="3"><name>argv_pkg</name><version>0.1.0</version><description>a
+    </description><maintainer email="a@b.c">a</maintainer><license>MIT</license></package>
+    """)
+    ws.write("ws/argv_pkg/setup.cfg", """
+    [options.entry_points]
+    console_scripts =
+        show = argv_pkg.show:main
+    """)
+    ws.write("ws/argv_pkg/argv_pkg/__init__.py", "")
+    ws.write("ws/argv_pkg/argv_pkg/show.py", """
+    import argparse, sys
+    ARGS = argparse.ArgumentParser().parse_args()  # at import, as some nodes do
+    def main():
+        print("argv", sys.argv[1:])
+    """)
+    ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "ws")
+    done = ws.run("run", "argv_pkg", "show")
+    assert done.returncode == 0, done.stderr
+    assert "argv []" in done.stdout, done.stdout
