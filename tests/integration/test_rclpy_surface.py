@@ -104,3 +104,71 @@ def test_an_entry_point_reading_sys_argv_as_it_is_imported_gets_its_own(ws):
     done = ws.run("run", "argv_pkg", "show")
     assert done.returncode == 0, done.stderr
     assert "argv []" in done.stdout, done.stdout
+
+
+BLACKBOARD = """
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+rclpy.init()
+node = Node("parameter_blackboard", allow_undeclared_parameters=True,
+            automatically_declare_parameters_from_overrides=True)
+publisher = node.create_publisher(String, "board", 10)
+node.create_timer(0.1, lambda: publisher.publish(String(data="chalk")))
+print("up", flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""
+
+CLIENT = """
+import rclpy
+from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter_client import AsyncParameterClient
+from rclpy.wait_for_message import wait_for_message
+from std_msgs.msg import String
+rclpy.init()
+node = rclpy.create_node("async_param_client")
+client = AsyncParameterClient(node, "parameter_blackboard")
+assert client.wait_for_services(10.0)
+future = client.set_parameters([Parameter("int_parameter", Parameter.Type.INTEGER, 10),
+                                 Parameter("string_parameter", Parameter.Type.STRING, "Fee")])
+rclpy.spin_until_future_complete(node, future)
+print("set", [r.successful for r in future.result().results])
+future = client.get_parameters(["int_parameter", "string_parameter"])
+rclpy.spin_until_future_complete(node, future)
+print("get", [parameter_value_to_python(v) for v in future.result().values])
+future = client.load_parameter_file(PARAMS_FILE)
+rclpy.spin_until_future_complete(node, future)
+print("load", [r.successful for r in future.result().results])
+future = client.get_parameters(["int_parameter"])
+rclpy.spin_until_future_complete(node, future)
+print("loaded", parameter_value_to_python(future.result().values[0]))
+ok, message = wait_for_message(String, node, "board", time_to_wait=10.0)
+print("message", ok, message.data)
+print("none", wait_for_message(String, node, "silent", time_to_wait=0.3))
+"""
+
+
+def test_async_parameter_client_and_wait_for_message(ws):
+    params_file = ws.write("board.yaml", """
+    /parameter_blackboard:
+      ros__parameters:
+        int_parameter: 12
+    """)
+    node_package(ws, "board", {"blackboard.py": BLACKBOARD, "client.py": CLIENT.replace(
+        "PARAMS_FILE", repr(str(params_file)))})
+    ws.own_bus()
+    board = ws.start("run", "board", "blackboard.py", output="board.txt")
+    try:
+        ws.wait_for_output("up", 30, "board.txt")
+        done = ws.run("run", "board", "client.py", timeout=60)
+        assert done.returncode == 0, done.stderr
+        out = done.stdout
+        assert "set [True, True]" in out and "get [10, 'Fee']" in out, out
+        assert "load [True]" in out and "loaded 12" in out, out
+        assert "message True chalk" in out and "none (False, None)" in out, out
+    finally:
+        board.send_signal(signal.SIGINT)
+        board.wait(20)

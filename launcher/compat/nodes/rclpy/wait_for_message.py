@@ -1,0 +1,37 @@
+"""rclpy.wait_for_message: the next message on a topic, waited for without spinning the
+node (a subscription of its own that lives for the wait)."""
+
+from __future__ import annotations
+
+import threading
+from typing import Any
+
+
+def wait_for_message(msg_type: Any, node: Any, topic: str, *, qos_profile: Any = 1,
+                     time_to_wait: float = -1) -> tuple[bool, Any]:
+    """(True, the message), or (False, None) if none came within `time_to_wait` seconds
+    (-1: for as long as it takes while the context is up)."""
+    from launcher.compat import rosidl
+    from rclpy.qos import to_launcher
+
+    got: list[Any] = []
+    arrived = threading.Event()
+
+    def take(message: Any) -> None:
+        if not got:
+            got.append(message)
+            arrived.set()
+    type_name = rosidl.type_name_of(msg_type)
+    subscription = node._bus.create_subscription(type_name, topic, take,
+                                                 to_launcher(qos_profile), inline=True,
+                                                 make=rosidl.make)
+    try:
+        if time_to_wait is None or time_to_wait < 0:
+            while not arrived.wait(0.1):
+                if not node.context.ok():
+                    return False, None
+        elif not arrived.wait(time_to_wait):
+            return False, None
+        return True, got[0]
+    finally:
+        subscription.destroy()
