@@ -172,3 +172,50 @@ def test_async_parameter_client_and_wait_for_message(ws):
     finally:
         board.send_signal(signal.SIGINT)
         board.wait(20)
+
+
+MATCHED = """
+import time
+import rclpy
+from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+from rclpy.node import Node
+from std_msgs.msg import String
+rclpy.init()
+node = Node("watcher")
+seen = []
+node.create_publisher(String, "out", 10, event_callbacks=PublisherEventCallbacks(
+    matched=lambda info: seen.append(("pub", info.current_count, info.current_count_change,
+                                      info.total_count))))
+node.create_subscription(String, "in", lambda m: None, 10,
+                         event_callbacks=SubscriptionEventCallbacks(
+                             matched=lambda info: seen.append(("sub", info.current_count))))
+other = Node("other")
+
+
+def settle(expected):
+    end = time.monotonic() + 10
+    while len(seen) < expected and time.monotonic() < end:
+        rclpy.spin_once(node, timeout_sec=0.1)
+
+
+a = other.create_subscription(String, "out", lambda m: None, 10)
+settle(1)
+b = other.create_subscription(String, "out", lambda m: None, 10)
+settle(2)
+other.destroy_subscription(a)
+settle(3)
+p = other.create_publisher(String, "in", 10)
+settle(4)
+other.destroy_publisher(p)
+settle(5)
+print(seen)
+"""
+
+
+def test_matched_events_count_the_other_side_as_it_comes_and_goes(ws):
+    node_package(ws, "matched", {"watch.py": MATCHED})
+    ws.own_bus()
+    done = ws.run("run", "matched", "watch.py", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "[('pub', 1, 1, 1), ('pub', 2, 1, 2), ('pub', 1, -1, 2), ('sub', 1), ('sub', 0)]" \
+        in done.stdout, done.stdout

@@ -206,7 +206,31 @@ class Node:
         bus = self._bus.create_publisher(rosidl.type_name_of(msg_type), topic, qos)
         publisher = publisher_class(bus, msg_type, topic, qos_profile, event_callbacks)
         self._entities.append(publisher)
+        self._watch_matches(event_callbacks, bus.topic, keys.SUBSCRIPTION, callback_group,
+                            publisher)
         return publisher
+
+    def _watch_matches(self, event_callbacks: Any, topic: str, kind: str, group: Any,
+                       entity: Any) -> None:
+        """A matched-event callback, if given: told as the other side comes and goes."""
+        matched = getattr(event_callbacks, "matched", None)
+        if matched is None:
+            return
+        from rclpy.matched import (
+            MatchWatcher,
+            QoSPublisherMatchedInfo,
+            QoSSubscriptionMatchedInfo,
+        )
+
+        info = QoSPublisherMatchedInfo if kind == keys.SUBSCRIPTION else \
+            QoSSubscriptionMatchedInfo
+        watcher = MatchWatcher(self, topic, kind, self._grouped(group, matched), info)
+        destroy = entity.destroy
+
+        def destroy_both() -> None:
+            watcher.destroy()
+            destroy()
+        entity.destroy = destroy_both
 
     def create_subscription(self, msg_type: Any, topic: str, callback: Callable[[Any], Any],
                             qos_profile: QoSProfile | int, *, callback_group: Any = None,
@@ -223,6 +247,8 @@ class Node:
         subscription = Subscription(bus, msg_type, topic, callback, callback_group,
                                     qos_profile, raw, event_callbacks)
         self._entities.append(subscription)
+        self._watch_matches(event_callbacks, bus.topic, keys.PUBLISHER, callback_group,
+                            subscription)
         return subscription
 
     def create_service(self, srv_type: Any, srv_name: str,

@@ -1,6 +1,6 @@
-"""rclpy.qos_event (rclpy.event_handler): event callback holders. Launcher's bus raises none
-of these events (deadlines, liveliness and incompatible QoS are not enforced), so callbacks
-given here are kept and never called."""
+"""rclpy.qos_event (rclpy.event_handler): event callback holders. Of the events, launcher
+raises the matched ones (rclpy/matched.py); deadlines, liveliness and incompatible QoS are not
+enforced on its bus, so those callbacks are kept and never called."""
 
 from __future__ import annotations
 
