@@ -204,6 +204,19 @@ class TypeRegistry:
             raise UnknownType(f"unknown service type '{name}'{did_you_mean(name, known)}")
         return self.ensure(f"{name}_Request"), self.ensure(f"{name}_Response")
 
+    def service_event(self, name: str) -> str:
+        """`pkg/srv/Name_Event`, the message service introspection publishes (its info, the
+        request and the response), registered for CDR."""
+        name = normalize(name)
+        self.service(name)
+        event = f"{name}_Event"
+        if event not in self.fielddefs:
+            definitions = self.services.get(name) or interfaces.service_hash_definitions(name)
+            for key, value in definitions.items():
+                if key != name:  # (the service itself is no message)
+                    self._available.setdefault(key, value)
+        return self.ensure(event)
+
     def service_hash(self, name: str) -> str:
         """ROS 2's RIHS01 hash of a service type (see interfaces.py)."""
         request, response = self.service(name)

@@ -42,7 +42,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     info = verbs.add_parser("info", help="a service's type, and how many serve and call it")
     info.add_argument("name", help="the service").completer = completion.services  # type: ignore[attr-defined]
     info.set_defaults(run=run_info)
-    for verb in (listing, call, kind, find, info):
+    verb_echo = echo = verbs.add_parser(
+        "echo", help="a service's events (its servers and clients must have introspection on)")
+    echo.add_argument("name", help="the service").completer = completion.services  # type: ignore[attr-defined]
+    echo.add_argument("type", nargs="?", help="its type (found on the graph when left out)")
+    echo.add_argument("--once", action="store_true", help="one event, then exit")
+    echo.set_defaults(run=run_echo)
+    for verb in (listing, call, kind, find, info, verb_echo):
         verb.add_argument("--sim", action="store_true",
                           help="the simulator's own services (Gazebo's gz-transport side), not "
                                "the ROS graph's")
@@ -159,4 +165,30 @@ def run_node_info(args: argparse.Namespace) -> int:
         print(f"  {title}:")
         for entity in sorted((e for e in mine if e.kind == kind), key=lambda e: e.topic):
             print(f"    {entity.topic}: {entity.type_name}")
+    return 0
+
+
+def run_echo(args: argparse.Namespace) -> int:
+    """`ros2 service echo`: the events on `<name>/_service_event`, as YAML, `---` between."""
+    type_name = args.type
+    if type_name is None:
+        types = sorted({e.type_name for e in _named(args) if e.kind == keys.SERVICE})
+        type_name = types[0]
+    event = registry().service_event(type_name)
+    node = Node("_launcher_service_echo", argv=[], parameter_services=False,
+                space=_space(args))
+    done = [False]
+
+    def show(message: object) -> None:
+        if done[0]:
+            return
+        print(yaml.safe_dump(to_data(message), sort_keys=False) + "---", flush=True)
+        if args.once:
+            done[0] = True
+            node.shutdown()
+    try:
+        node.create_subscription(event, f"{args.name}/_service_event", show)
+        node.spin()
+    finally:
+        node.destroy_node()
     return 0

@@ -219,3 +219,46 @@ def test_matched_events_count_the_other_side_as_it_comes_and_goes(ws):
     assert done.returncode == 0, done.stderr
     assert "[('pub', 1, 1, 1), ('pub', 2, 1, 2), ('pub', 1, -1, 2), ('sub', 1), ('sub', 0)]" \
         in done.stdout, done.stdout
+
+
+INTROSPECTED = """
+import rclpy
+from example_interfaces.srv import AddTwoInts
+from rclpy.node import Node
+from rclpy.qos import qos_profile_system_default
+from rclpy.service_introspection import ServiceIntrospectionState
+rclpy.init()
+node = Node("adder")
+service = node.create_service(AddTwoInts, "add_two_ints",
+                              lambda req, resp: setattr(resp, "sum", req.a + req.b) or resp)
+service.configure_introspection(node.get_clock(), qos_profile_system_default,
+                                ServiceIntrospectionState.CONTENTS)
+print("up", flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""
+
+
+def test_service_introspection_and_service_echo(ws):
+    node_package(ws, "intro", {"adder.py": INTROSPECTED})
+    ws.own_bus()
+    adder = ws.start("run", "intro", "adder.py", output="adder.txt")
+    echo = ws.start("service", "echo", "/add_two_ints", "example_interfaces/srv/AddTwoInts",
+                    output="echo.txt")
+    try:
+        ws.wait_for_output("up", 30, "adder.txt")
+        import time
+
+        time.sleep(1.5)
+        called = ws.run("service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts",
+                        "{a: 2, b: 3}")
+        assert "sum: 5" in called.stdout, called
+        said = ws.wait_for_output("event_type: 2", 20, "echo.txt")
+        assert "event_type: 1" in said and "request:\n- a: 2\n  b: 3" in said, said
+        assert "response:\n- sum: 5" in said, said
+    finally:
+        for proc in (echo, adder):
+            proc.send_signal(signal.SIGINT)
+            proc.wait(20)

@@ -36,9 +36,31 @@ class Client:
                             f"got {type(request)}")
         return request
 
+    @property
+    def _introspection(self) -> Any:
+        found = self.__dict__.get("_introspection_made")
+        if found is None:
+            from rclpy.service_introspection import Introspection
+
+            found = self.__dict__["_introspection_made"] = Introspection(
+                self._node, self._bus.name, self.srv_type, getattr(self._bus, "_gid",
+                                                                   bytes(16)))
+        return found
+
+    def configure_introspection(self, clock: Any, service_event_qos_profile: Any,
+                                introspection_state: Any) -> None:
+        """Publish this client's events on `<name>/_service_event`, as rclpy's."""
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
+
     def call(self, request: Any, timeout_sec: float | None = None) -> Any:
-        return self._bus.call(self._check(request),
-                              CALL_TIMEOUT if timeout_sec is None else timeout_sec)
+        from rclpy.service_introspection import REQUEST_SENT, RESPONSE_RECEIVED
+
+        sequence = self._introspection.next_sequence()
+        self._introspection.say(REQUEST_SENT, sequence, request=request)
+        response = self._bus.call(self._check(request),
+                                  CALL_TIMEOUT if timeout_sec is None else timeout_sec)
+        self._introspection.say(RESPONSE_RECEIVED, sequence, response=response)
+        return response
 
     def call_async(self, request: Any) -> Future:
         payload = self._check(request)
@@ -50,10 +72,16 @@ class Client:
             self._pending.discard(future)
             method(value)
 
+        from rclpy.service_introspection import REQUEST_SENT, RESPONSE_RECEIVED
+
+        sequence = self._introspection.next_sequence()
+        self._introspection.say(REQUEST_SENT, sequence, request=payload)
+
         def run() -> None:
             try:
-                outcome: tuple[Any, Any] = (future.set_result,
-                                            self._bus.call(payload, CALL_TIMEOUT))
+                answer = self._bus.call(payload, CALL_TIMEOUT)
+                self._introspection.say(RESPONSE_RECEIVED, sequence, response=answer)
+                outcome: tuple[Any, Any] = (future.set_result, answer)
             except Exception as exc:  # the caller sees it from future.result()
                 outcome = (future.set_exception, exc)
             if host is not None:

@@ -34,6 +34,11 @@ from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
 from rclpy.qos import QoSProfile, qos_profile_services_default, to_launcher
 from rclpy.service import Service
+from rclpy.service_introspection import (
+    REQUEST_RECEIVED,
+    RESPONSE_SENT,
+    Introspection,
+)
 from rclpy.subscription import Subscription
 from rclpy.timer import Rate, Timer
 from rclpy.utilities import get_default_context
@@ -258,15 +263,22 @@ class Node:
         self._check_alive()
         type_name = rosidl.type_name_of(srv_type)
 
+        introspection = Introspection(self, self._bus.resolve(srv_name, "service name"),
+                                      srv_type, bytes(16))
+
         def answer(request: Any, response: Any) -> Any:
+            sequence = introspection.next_sequence()
+            introspection.say(REQUEST_RECEIVED, sequence, request=request)
             result = callback(request, response)
             if result is None:
                 raise RuntimeError("the service callback returned None: return the response")
+            introspection.say(RESPONSE_SENT, sequence, response=result)
             return result
         bus = self._bus.create_service(type_name, srv_name,
                                        self._grouped(callback_group, answer),
                                        make=rosidl.make, new_response=srv_type.Response)
         service = Service(bus, srv_type, srv_name, callback, callback_group, qos_profile)
+        service._introspection = introspection
         self._entities.append(service)
         return service
 

@@ -19,7 +19,16 @@ class Service:
     def srv_name(self) -> str:
         return self._bus.name
 
+    _introspection: Any = None
+
+    def configure_introspection(self, clock: Any, service_event_qos_profile: Any,
+                                introspection_state: Any) -> None:
+        """Publish this service's events on `<name>/_service_event` (OFF, METADATA or
+        CONTENTS), as rclpy's."""
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
+
     def destroy(self) -> None:
+        self._introspection.configure(None, None, 0)
         self._bus.destroy()
 
     @property
