@@ -262,3 +262,49 @@ def test_service_introspection_and_service_echo(ws):
         for proc in (echo, adder):
             proc.send_signal(signal.SIGINT)
             proc.wait(20)
+
+
+CUSTOM_EXECUTOR = """
+from concurrent.futures import ThreadPoolExecutor
+import rclpy
+from rclpy.executors import Executor, ShutdownException, TimeoutException
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class PoolExecutor(Executor):
+    def __init__(self):
+        super().__init__()
+        self.pool = ThreadPoolExecutor(max_workers=2)
+        self.handled = 0
+
+    def spin_once(self, timeout_sec=None):
+        try:
+            handler, group, node = self.wait_for_ready_callbacks(timeout_sec=timeout_sec)
+        except (ShutdownException, TimeoutException):
+            return
+        self.handled += 1
+        self.pool.submit(handler)
+
+
+rclpy.init()
+node = Node("custom")
+heard = []
+node.create_subscription(String, "words", lambda m: heard.append(m.data), 10)
+publisher = node.create_publisher(String, "words", 10)
+node.create_timer(0.05, lambda: publisher.publish(String(data="hi")))
+executor = PoolExecutor()
+executor.add_node(node)
+while len(heard) < 5:
+    executor.spin_once(timeout_sec=1.0)
+print("heard", heard[:5], executor.handled >= 10)
+executor.pool.shutdown()
+"""
+
+
+def test_an_executor_of_the_users_spins_with_wait_for_ready_callbacks(ws):
+    node_package(ws, "custom_exec", {"custom.py": CUSTOM_EXECUTOR})
+    ws.own_bus()
+    done = ws.run("run", "custom_exec", "custom.py", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "heard ['hi', 'hi', 'hi', 'hi', 'hi'] True" in done.stdout, done.stdout

@@ -155,6 +155,19 @@ class Executor:
             task = Task(lambda: result, executor=self)
             task()
 
+    def wait_for_ready_callbacks(self, timeout_sec: float | None = None, nodes: Any = None,
+                                 condition: Any = None) -> tuple[Task, Any, Any]:
+        """(handler, callback group, node) of the next ready work, as rclpy gives it to an
+        executor of the user's that overrides spin_once: calling the handler (a Task) runs
+        it. TimeoutException if none came within `timeout_sec`."""
+        work = self._next_work(timeout_sec)
+        if work is None:
+            raise TimeoutException()
+        node, callback, args = work
+        task = Task(lambda: self._run(node, callback, args))
+        group = node.default_callback_group if node is not None else None
+        return task, group, node
+
     # --- spinning ---------------------------------------------------------------------------
     def spin_once(self, timeout_sec: float | None = None) -> None:
         try:
