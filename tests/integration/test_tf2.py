@@ -115,3 +115,26 @@ def test_static_transform_publisher_and_tf2_echo_as_ros_2_has_them(ws):
         for proc in (new, old):
             proc.send_signal(signal.SIGINT)
             assert proc.wait(20) in (0, 130)
+
+
+def test_tf2_monitor_reports_each_frames_rate_and_delay(ws):
+    ws.own_bus()
+    node_package(ws, "tf_nodes", {"broadcaster.py": BROADCASTER})
+    broadcaster = ws.start("run", "tf_nodes", "broadcaster.py", output="broadcaster.txt")
+    monitor = ws.start("run", "tf2_ros", "tf2_monitor", "map", "base_link",
+                       output="monitor.txt")
+    try:
+        ws.wait_for_output("broadcasting", 30, "broadcaster.txt")
+        said = ws.wait_for_output("Frame: base_link", 30, "monitor.txt")
+        assert "RESULTS: for map to base_link" in said, said
+        import re
+        import time
+
+        time.sleep(2.5)
+        rates = re.findall(r"Frame: base_link, .*Rate: ([\d.]+) Hz", ws.output("monitor.txt"))
+        assert rates and 10.0 < float(rates[-1]) < 30.0, rates  # a transform every 0.05 s
+        assert "Chain is: map -> base_link" in ws.output("monitor.txt")
+    finally:
+        for proc in (monitor, broadcaster):
+            proc.send_signal(signal.SIGINT)
+            proc.wait(20)
