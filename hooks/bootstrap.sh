@@ -35,17 +35,18 @@ if ! "$ldconfig" -p 2>/dev/null | grep -q 'libEGL_mesa.so.0'; then
 fi
 
 # The tests put a graph across two network namespaces (`ip`, iproute2), act as another user
-# (`setpriv`, util-linux) and try tab completion in zsh.
-if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv && command -v zsh; } \
-    >/dev/null 2>&1; then
+# (`setpriv`, util-linux), try tab completion in zsh and draw view_frames' PDF (graphviz's dot).
+if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv && command -v zsh \
+    && command -v dot; } >/dev/null 2>&1; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-        say "installing iproute2, util-linux and zsh (ip, setpriv, zsh): the tests put a graph" \
-            "across two network namespaces, act as another user and complete in zsh"
+        say "installing iproute2, util-linux, zsh and graphviz (ip, setpriv, zsh, dot): the" \
+            "tests put a graph across two network namespaces, act as another user, complete" \
+            "in zsh and draw the tf tree"
         apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-            iproute2 util-linux zsh >/dev/null
+            iproute2 util-linux zsh graphviz >/dev/null
     else
-        echo "note: the tests need ip, setpriv and zsh: apt-get install iproute2 util-linux" \
-            "zsh" >&2
+        echo "note: the tests need ip, setpriv, zsh and dot: apt-get install iproute2" \
+            "util-linux zsh graphviz" >&2
     fi
 fi
 

@@ -138,3 +138,41 @@ def test_tf2_monitor_reports_each_frames_rate_and_delay(ws):
         for proc in (monitor, broadcaster):
             proc.send_signal(signal.SIGINT)
             proc.wait(20)
+
+
+def test_view_frames_writes_the_tree_as_graphviz_and_pdf(ws):
+    """(graphviz's dot comes with the test set-up, as Debian's package, as users install it)"""
+    import os
+    import subprocess
+
+    from tests.conftest import launcher_argv
+
+    ws.own_bus()
+    node_package(ws, "tf_nodes", {"broadcaster.py": BROADCASTER})
+    broadcaster = ws.start("run", "tf_nodes", "broadcaster.py", output="broadcaster.txt")
+    try:
+        ws.wait_for_output("broadcasting", 30, "broadcaster.txt")
+        done = ws.run("run", "tf2_tools", "view_frames", "--wait-time", "1.5", timeout=60)
+        assert done.returncode == 0, done.stderr
+        said = done.stdout + done.stderr
+        assert "Listening to tf data for 1.5 seconds..." in said, said
+        gv = sorted(ws.root.glob("frames_*.gv"))
+        pdf = sorted(ws.root.glob("frames_*.pdf"))
+        assert len(gv) == 1 and len(pdf) == 1, said
+        text = gv[0].read_text()
+        assert '"map" -> "odom"' in text and '"odom" -> "base_link"' in text, text
+        assert '"base_link" -> "laser"' in text and '}->"map";' in text, text
+        assert pdf[0].read_bytes().startswith(b"%PDF")
+        assert f"Generating graph in {pdf[0].name} file..." in said
+        # no dot on PATH: the .gv, and how to get the PDF
+        env = dict(ws.env, PATH=os.pathsep.join(
+            p for p in ws.env["PATH"].split(os.pathsep) if not os.path.exists(f"{p}/dot")))
+        (ws.root / "nodot").mkdir()
+        bare = subprocess.run([*launcher_argv(), "run", "tf2_tools", "view_frames", "-t", "0.5"],
+                              cwd=ws.root / "nodot", env=env, capture_output=True, text=True,
+                              timeout=60)
+        assert bare.returncode == 1 and "apt-get install graphviz" in bare.stderr, bare.stderr
+        assert len(list((ws.root / "nodot").glob("frames_*.gv"))) == 1
+    finally:
+        broadcaster.send_signal(signal.SIGINT)
+        broadcaster.wait(20)
