@@ -1,0 +1,136 @@
+"""`launcher plot /topic/field… [-o plot.png] [--duration S] [--bag BAG]`: fields of messages
+drawn over time with matplotlib, as rqt_plot draws them: live from the graph for `--duration`
+seconds (10; Ctrl-C ends sooner), or from a recorded bag. Into a PNG (or SVG, PDF), or a window
+when there is a display and no `-o`. A field is a topic and a path into its messages
+(`/odom/pose/pose/position/x`, `/joint_states/position/0`)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import time
+from pathlib import Path
+from typing import Any
+
+from launcher.bus import graph
+from launcher.errors import LaunchError, UsageError, did_you_mean
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser("plot", help="draw fields of messages over time (as rqt_plot)")
+    p.add_argument("fields", nargs="+", help="/topic/path/to/field (…/position/0 for an item)")
+    p.add_argument("-o", "--output", default=None,
+                   help="the picture to write (.png, .svg, .pdf); default: a window when "
+                        "there is a display, else plot.png")
+    p.add_argument("-d", "--duration", type=float, default=10.0,
+                   help="seconds to listen (live; default 10)")
+    p.add_argument("--bag", default=None, help="read a recorded bag instead")
+    p.set_defaults(run=run)
+
+
+def _split(field: str, topics: list[str]) -> tuple[str, list[str]]:
+    """(topic, path) of `/topic/a/b`: the longest topic that prefixes it."""
+    for topic in sorted(topics, key=len, reverse=True):
+        if field == topic or field.startswith(topic + "/"):
+            return topic, [p for p in field[len(topic):].split("/") if p]
+    raise UsageError(f"no topic for the field '{field}'{did_you_mean(field, topics)}; "
+                     f"topics: {', '.join(sorted(topics)) or 'none'}")
+
+
+def _value(message: Any, path: list[str], field: str) -> float:
+    value = message
+    for part in path:
+        try:
+            value = value[int(part)] if part.isdigit() else getattr(value, part)
+        except (AttributeError, IndexError, TypeError):
+            raise LaunchError(f"'{field}': the messages have no '{part}' there") from None
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise LaunchError(f"'{field}' is not a number (it is {type(value).__name__}): name a "
+                          "number inside it") from None
+
+
+def _stamp(message: Any, received: float) -> float:
+    header = getattr(message, "header", None)
+    stamp = getattr(header, "stamp", None)
+    if stamp is not None and (stamp.sec or stamp.nanosec):
+        return stamp.sec + stamp.nanosec / 1e9
+    return received
+
+
+def _live(fields: list[str], duration: float) -> dict[str, list[tuple[float, float]]]:
+    from launcher.bus.node import Node
+    from launcher.bus.session import open_session
+
+    session = open_session("client")
+    try:
+        known = {n: sorted(info.types) for n, info in graph.topics(session).items()
+                 if info.publishers}
+    finally:
+        session.close()
+    series: dict[str, list[tuple[float, float]]] = {f: [] for f in fields}
+    node = Node("_launcher_plot", argv=[], parameter_services=False)
+    try:
+        for field in fields:
+            topic, path = _split(field, list(known))
+
+            def take(message: Any, field: str = field, path: list[str] = path) -> None:
+                series[field].append((_stamp(message, time.time()),
+                                      _value(message, path, field)))
+            node.create_subscription(known[topic][0], topic, take)
+        node.spin(duration)
+    finally:
+        node.destroy_node()
+    return series
+
+
+def _recorded(fields: list[str], bag: Path) -> dict[str, list[tuple[float, float]]]:
+    from rosbags.rosbag2 import Reader
+
+    from launcher.bus.types import registry
+
+    series: dict[str, list[tuple[float, float]]] = {f: [] for f in fields}
+    types = registry()
+    with Reader(bag) as reader:
+        topics = {c.topic: c for c in reader.connections}
+        chosen = {field: _split(field, list(topics)) for field in fields}
+        for connection, stamp, data in reader.messages():
+            for field, (topic, path) in chosen.items():
+                if connection.topic == topic:
+                    message = types.deserialize(data, connection.msgtype)
+                    series[field].append((_stamp(message, stamp / 1e9),
+                                          _value(message, path, field)))
+    return series
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.duration <= 0:
+        raise UsageError(f"--duration must be above 0, got {args.duration:g}")
+    series = _recorded(args.fields, Path(args.bag)) if args.bag else \
+        _live(args.fields, args.duration)
+    import matplotlib
+
+    window = args.output is None and bool(os.environ.get("DISPLAY"))
+    if not window:
+        matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    figure, axes = plt.subplots(figsize=(9, 4.5))
+    start = min((points[0][0] for points in series.values() if points), default=0.0)
+    for field, points in series.items():
+        axes.plot([t - start for t, _ in points], [v for _, v in points], label=field)
+    axes.set_xlabel("time (s)")
+    axes.grid(True, alpha=0.3)
+    axes.legend(loc="best")
+    empty = [f for f, points in series.items() if not points]
+    if window:
+        plt.show()
+    else:
+        output = Path(args.output or "plot.png")
+        figure.savefig(output, dpi=100, bbox_inches="tight")
+        counts = ", ".join(f"{f}: {len(p)}" for f, p in series.items())
+        print(f"wrote {output} ({counts})")
+    if empty:
+        raise LaunchError(f"no messages for {', '.join(empty)} (is anything publishing?)")
+    return 0
