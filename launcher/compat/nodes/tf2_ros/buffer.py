@@ -173,22 +173,16 @@ class Buffer:
                     self._arrived.wait(min(left, 0.05))
 
 
-_classes: list[Any] = []
-
-
 def _stamped(pose: Any, stamp: int, target: str, source: str) -> Any:
-    if not _classes:  # (imported once: a lookup is made many times a second)
-        from builtin_interfaces.msg import Time
-        from geometry_msgs.msg import Quaternion, Transform, TransformStamped, Vector3
-        from std_msgs.msg import Header
+    """A TransformStamped, made as received messages are (rosidl.make: no per-field checks on
+    values that are right by construction); lookups are made many times a second."""
+    from launcher.compat.rosidl import make
 
-        _classes.extend((TransformStamped, Header, Time, Transform, Vector3, Quaternion))
-    stamped, header, time_, transform, vector, quaternion = _classes
     (x, y, z), (qx, qy, qz, qw) = pose
-    return stamped(
-        header=header(stamp=time_(sec=stamp // 1_000_000_000, nanosec=stamp % 1_000_000_000),
-                      frame_id=target),
-        child_frame_id=source,
-        transform=transform(translation=vector(x=float(x), y=float(y), z=float(z)),
-                            rotation=quaternion(x=float(qx), y=float(qy), z=float(qz),
-                                                w=float(qw))))
+    header = make("std_msgs/msg/Header", [
+        make("builtin_interfaces/msg/Time", [stamp // 1_000_000_000, stamp % 1_000_000_000]),
+        target])
+    transform = make("geometry_msgs/msg/Transform", [
+        make("geometry_msgs/msg/Vector3", [float(x), float(y), float(z)]),
+        make("geometry_msgs/msg/Quaternion", [float(qx), float(qy), float(qz), float(qw)])])
+    return make("geometry_msgs/msg/TransformStamped", [header, source, transform])
