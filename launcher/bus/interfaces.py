@@ -137,3 +137,44 @@ def find_definition(name: str, package_share: Path) -> tuple[str, Path] | None:
     _, kind, base = name.split("/")
     path = package_share / kind / f"{base}.{kind}"
     return (kind, path) if kind in ("msg", "srv", "action") and path.is_file() else None
+
+
+ROS1_ACTION_SUFFIXES = ("ActionGoal", "ActionResult", "ActionFeedback", "Action", "Goal",
+                        "Result", "Feedback")
+
+
+def ros1_action_base(name: str) -> tuple[str, str] | None:
+    """(package, action) when `pkg/msg/<X><suffix>` names one of the messages ROS 1's
+    genaction makes of `action/<X>.action`; None otherwise."""
+    package, kind, base = name.split("/")
+    if kind != "msg":
+        return None
+    for suffix in ROS1_ACTION_SUFFIXES:
+        if base.endswith(suffix) and len(base) > len(suffix):
+            return package, base[:-len(suffix)]
+    return None
+
+
+def parse_ros1_action(text: str, package: str, action: str, file: Path) -> dict[str, Any]:
+    """An `.action` file as ROS 1's genaction expands it, into `pkg/msg/` messages:
+    `<X>Goal`, `<X>Result`, `<X>Feedback`; `<X>ActionGoal` (header, actionlib_msgs GoalID,
+    goal), `<X>ActionResult` and `<X>ActionFeedback` (header, GoalStatus, result or
+    feedback), and `<X>Action` holding the three (what actionlib's Python takes)."""
+    name = f"{package}/action/{action}"
+    parsed = parse_action(text, name, file)
+    out: dict[str, Any] = {}
+    for part in ACTION_PARTS:
+        out[f"{package}/msg/{action}{part[1:]}"] = parsed[f"{name}{part}"]
+    out.update({k: v for k, v in parsed.items() if not k.startswith(name)})
+    header = ("header", (T.NAME, "std_msgs/msg/Header"))
+    status = ("status", (T.NAME, "actionlib_msgs/msg/GoalStatus"))
+    m = f"{package}/msg/{action}"
+    out[f"{m}ActionGoal"] = ([], [header, ("goal_id", (T.NAME, "actionlib_msgs/msg/GoalID")),
+                                  ("goal", (T.NAME, f"{m}Goal"))])
+    out[f"{m}ActionResult"] = ([], [header, status, ("result", (T.NAME, f"{m}Result"))])
+    out[f"{m}ActionFeedback"] = ([], [header, status,
+                                      ("feedback", (T.NAME, f"{m}Feedback"))])
+    out[f"{m}Action"] = ([], [("action_goal", (T.NAME, f"{m}ActionGoal")),
+                              ("action_result", (T.NAME, f"{m}ActionResult")),
+                              ("action_feedback", (T.NAME, f"{m}ActionFeedback"))])
+    return out

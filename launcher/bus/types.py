@@ -161,7 +161,7 @@ class TypeRegistry:
             return False
         found = interfaces.find_definition(name, index.share(parts[0]))
         if found is None:
-            return False
+            return self._ros1_action(name, index)
         kind, path = found
         text = path.read_text(encoding="utf-8")
         parse = {"msg": interfaces.parse_msg, "srv": interfaces.parse_srv,
@@ -173,6 +173,20 @@ class TypeRegistry:
             for service in (f"{name}_SendGoal", f"{name}_GetResult"):
                 self.services[service] = interfaces.service_hash_definitions(service)
         return True
+
+    def _ros1_action(self, name: str, index: Any) -> bool:
+        """A ROS 1 action's messages (`pkg/msg/FibonacciActionGoal`, …) made from the
+        package's `action/Fibonacci.action`, as genaction makes them."""
+        found = interfaces.ros1_action_base(name)
+        if found is None:
+            return False
+        package, action = found
+        path = index.share(package) / "action" / f"{action}.action"
+        if not path.is_file():
+            return False
+        self._available.update(interfaces.parse_ros1_action(
+            path.read_text(encoding="utf-8"), package, action, path))
+        return name in self._available
 
     def action(self, name: str) -> str:
         """An action type (its goal, result, feedback, services and feedback message
