@@ -28,7 +28,7 @@ if TYPE_CHECKING:  # (typing's names are not imported at run time: this runs at 
 
 NODE_APIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "nodes")
 _API_NAMES = ("rclpy", "rospy", "tf2_ros", "tf2_geometry_msgs", "sensor_msgs_py", "cv_bridge",
-              "message_filters", "actionlib")
+              "message_filters", "actionlib", "tf")
 # launch files' and xacro's modules (compat/shims): found here too, so that a shell with
 # `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")

@@ -92,3 +92,64 @@ def test_a_rospy_simple_action_server_and_client_as_the_tutorials_write_them(ws)
     finally:
         server.send_signal(signal.SIGINT)
         server.wait(20)
+
+
+TF_BROADCASTER = """#!/usr/bin/env python
+import rospy
+import tf
+import tf2_ros
+from geometry_msgs.msg import TransformStamped
+
+rospy.init_node("turtle_tf_broadcaster")
+moving = tf.TransformBroadcaster()
+static = tf2_ros.StaticTransformBroadcaster()
+t = TransformStamped()
+t.header.stamp = rospy.Time.now()
+t.header.frame_id, t.child_frame_id = "base_link", "laser"
+t.transform.translation.x, t.transform.rotation.w = 0.2, 1.0
+static.sendTransform(t)
+print("broadcasting", flush=True)
+rate = rospy.Rate(20)
+while not rospy.is_shutdown():
+    moving.sendTransform((1.0, 2.0, 0.0), tf.transformations.quaternion_from_euler(0, 0, 1.5708),
+                         rospy.Time.now(), "base_link", "world")
+    rate.sleep()
+"""
+
+TF_LISTENER = """#!/usr/bin/env python
+import rospy
+import tf
+import tf2_ros
+
+rospy.init_node("turtle_tf_listener")
+listener = tf.TransformListener()
+listener.waitForTransform("world", "laser", rospy.Time(0), rospy.Duration(20))
+(trans, rot) = listener.lookupTransform("world", "laser", rospy.Time(0))
+print("tf", [round(v, 3) for v in trans], round(tf.transformations.euler_from_quaternion(rot)[2], 3))
+buffer = tf2_ros.Buffer()
+tf2_ros.TransformListener(buffer)
+t = buffer.lookup_transform("world", "laser", rospy.Time(0), rospy.Duration(20))
+print("tf2", round(t.transform.translation.x, 3), round(t.transform.translation.y, 3))
+try:
+    listener.lookupTransform("world", "gripper", rospy.Time(0))
+except tf.LookupException as exc:
+    print("lookup", exc)
+"""
+
+
+def test_rospys_tf_and_tf2_ros_as_ros_1_code_writes_them(ws):
+    ws.own_bus()
+    node_package(ws, "turtle_tf", {"broadcaster.py": TF_BROADCASTER,
+                                   "listener.py": TF_LISTENER})
+    broadcaster = ws.start("run", "turtle_tf", "broadcaster.py", output="broadcaster.txt")
+    try:
+        ws.wait_for_output("broadcasting", 30, "broadcaster.txt")
+        done = ws.run("run", "turtle_tf", "listener.py", timeout=60)
+        assert done.returncode == 0, done.stderr
+        assert "tf [1.0, 2.2, 0.0] 1.571" in done.stdout, done.stdout
+        assert "tf2 1.0 2.2" in done.stdout, done.stdout
+        assert 'lookup "gripper" passed to lookupTransform argument source_frame does not ' \
+               "exist." in done.stdout, done.stdout
+    finally:
+        broadcaster.send_signal(signal.SIGINT)
+        broadcaster.wait(20)

@@ -30,6 +30,8 @@ def _ns(value: Any) -> int:
         return 0
     if hasattr(value, "nanoseconds"):
         return int(value.nanoseconds)
+    if hasattr(value, "to_nsec"):  # rospy's Time and Duration
+        return int(value.to_nsec())
     if hasattr(value, "sec"):
         return int(value.sec) * 1_000_000_000 + int(value.nanosec)
     return int(float(value) * 1e9)

@@ -8,14 +8,20 @@ from typing import Any
 
 
 class StaticTransformBroadcaster:
-    def __init__(self, node: Any, qos: Any = None) -> None:
-        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+    def __init__(self, node: Any = None, qos: Any = None) -> None:
         from tf2_msgs.msg import TFMessage
 
-        qos = qos or QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL,
-                                history=HistoryPolicy.KEEP_LAST)
         self._message = TFMessage
-        self.pub_tf = node.create_publisher(TFMessage, "/tf_static", qos)
+        if node is None:  # ROS 1's: StaticTransformBroadcaster(), latched on rospy's node
+            import rospy
+
+            self.pub_tf = rospy.Publisher("/tf_static", TFMessage, latch=True, queue_size=100)
+        else:
+            from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+
+            qos = qos or QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL,
+                                    history=HistoryPolicy.KEEP_LAST)
+            self.pub_tf = node.create_publisher(TFMessage, "/tf_static", qos)
         self.net_message = TFMessage()
         self._child_frames: dict[str, Any] = {}
 

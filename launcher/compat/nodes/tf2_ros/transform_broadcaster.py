@@ -6,10 +6,15 @@ from typing import Any
 
 
 class TransformBroadcaster:
-    def __init__(self, node: Any, qos: Any = None) -> None:
+    def __init__(self, node: Any = None, qos: Any = None, **ros1: Any) -> None:
         from tf2_msgs.msg import TFMessage
 
         self._message = TFMessage
+        if node is None:  # ROS 1's: TransformBroadcaster(), on rospy's node
+            import rospy
+
+            self.pub_tf = rospy.Publisher("/tf", TFMessage, queue_size=100)
+            return
         self.pub_tf = node.create_publisher(TFMessage, "/tf", qos or 100)
 
     def sendTransform(self, transform: Any) -> None:  # noqa: N802 (tf2_ros's name)

@@ -8,12 +8,20 @@ from typing import Any
 
 
 class TransformListener:
-    def __init__(self, buffer: Any, node: Any, *, spin_thread: bool = False, qos: Any = None,
-                 static_qos: Any = None) -> None:
-        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+    def __init__(self, buffer: Any, node: Any = None, *, spin_thread: bool = False,
+                 qos: Any = None, static_qos: Any = None, **ros1: Any) -> None:
         from tf2_msgs.msg import TFMessage
 
         self.buffer, self.node = buffer, node
+        if node is None:  # ROS 1's tf2_ros: TransformListener(buffer), on rospy's node
+            import rospy
+
+            self.tf_sub = rospy.Subscriber("/tf", TFMessage, self.callback, queue_size=100)
+            self.tf_static_sub = rospy.Subscriber("/tf_static", TFMessage,
+                                                  self.static_callback, queue_size=100)
+            return
+        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+
         if buffer.core.warn is None:
             buffer.core.warn = node.get_logger().warning
         qos = qos or QoSProfile(depth=100, durability=DurabilityPolicy.VOLATILE,
@@ -45,6 +53,10 @@ class TransformListener:
             self.buffer.set_transform_static(transform, "default_authority")
 
     def unregister(self) -> None:
+        if self.node is None:
+            self.tf_sub.unregister()
+            self.tf_static_sub.unregister()
+            return
         self.node.destroy_subscription(self.tf_sub)
         self.node.destroy_subscription(self.tf_static_sub)
 
