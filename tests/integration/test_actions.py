@@ -220,3 +220,25 @@ def test_an_action_file_with_a_mistake_is_an_error_at_its_line_and_column(exampl
     short = examples.run("action", "send_goal", "/dock", "my_actions/action/Short", "{}")
     assert "Short.action: an .action file needs exactly two '---' lines (goal, result, " \
            "feedback), found 1" in short.stderr, short.stderr
+
+
+NO_SERVER = """
+import time
+import rclpy
+from example_interfaces.action import Fibonacci
+from rclpy.action import ActionClient
+from rclpy.node import Node
+rclpy.init()
+node = Node("lonely_client")
+client = ActionClient(node, Fibonacci, "nobody_serves_this")
+start = time.monotonic()
+print("ready", client.wait_for_server(timeout_sec=0.5), client.server_is_ready(),
+      round(time.monotonic() - start, 1) < 3)
+"""
+
+
+def test_waiting_for_a_server_that_is_not_there_ends_with_false(examples):
+    node_package(examples, "lonely", {"client.py": NO_SERVER})
+    done = examples.run("run", "lonely", "client.py", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "ready False False True" in done.stdout, done.stdout

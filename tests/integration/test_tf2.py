@@ -176,3 +176,45 @@ def test_view_frames_writes_the_tree_as_graphviz_and_pdf(ws):
     finally:
         broadcaster.send_signal(signal.SIGINT)
         broadcaster.wait(20)
+
+
+SYNCED = """
+import rclpy
+import message_filters
+from rclpy.node import Node
+from sensor_msgs.msg import CameraInfo, Image
+
+rclpy.init()
+node = Node("synced")
+pairs = []
+images = message_filters.Subscriber(node, Image, "image")
+infos = message_filters.Subscriber(node, CameraInfo, "camera_info")
+sync = message_filters.ApproximateTimeSynchronizer([images, infos], 10, 0.02)
+sync.registerCallback(lambda i, c: pairs.append((i.header.frame_id, c.header.frame_id)))
+image_pub = node.create_publisher(Image, "image", 10)
+info_pub = node.create_publisher(CameraInfo, "camera_info", 10)
+
+
+def send():
+    stamp = node.get_clock().now().to_msg()
+    image, info = Image(), CameraInfo()
+    image.header.stamp = info.header.stamp = stamp
+    image.header.frame_id, info.header.frame_id = "cam", "cam_info"
+    image_pub.publish(image)
+    info_pub.publish(info)
+
+
+node.create_timer(0.05, send)
+while len(pairs) < 3:
+    rclpy.spin_once(node, timeout_sec=1.0)
+print("pairs", pairs[:3], images.getTopic())
+"""
+
+
+def test_message_filters_subscribers_on_the_bus_are_synchronised(ws):
+    ws.own_bus()
+    node_package(ws, "synced", {"synced.py": SYNCED})
+    done = ws.run("run", "synced", "synced.py", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "pairs [('cam', 'cam_info'), ('cam', 'cam_info'), ('cam', 'cam_info')] /image" \
+        in done.stdout, done.stdout
