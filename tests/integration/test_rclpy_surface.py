@@ -308,3 +308,33 @@ def test_an_executor_of_the_users_spins_with_wait_for_ready_callbacks(ws):
     done = ws.run("run", "custom_exec", "custom.py", timeout=60)
     assert done.returncode == 0, done.stderr
     assert "heard ['hi', 'hi', 'hi', 'hi', 'hi'] True" in done.stdout, done.stdout
+
+
+def test_launcher_logger_gets_and_sets_a_nodes_level(ws):
+    node_package(ws, "loud", {"loud.py": """
+import rclpy
+from rclpy.node import Node
+rclpy.init()
+node = Node("loud", enable_logger_service=True)
+node.create_timer(0.1, lambda: node.get_logger().debug("whisper"))
+print("up", flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""})
+    ws.own_bus()
+    loud = ws.start("run", "loud", "loud.py", output="loud.txt")
+    try:
+        ws.wait_for_output("up", 30, "loud.txt")
+        assert ws.run("logger", "get", "/loud").stdout == "loud: INFO\n"
+        assert ws.run("logger", "set", "/loud", "debug").stdout == "loud: DEBUG\n"
+        ws.wait_for_output("whisper", 10, "loud.txt")  # debug messages now come out
+        bad = ws.run("logger", "set", "/loud", "chatty")
+        assert bad.returncode == 2 and "unknown level 'chatty'" in bad.stderr
+        absent = ws.run("logger", "get", "/quiet")
+        assert absent.returncode == 1 and "offers no get_logger_levels service" in \
+            absent.stderr, absent.stderr
+    finally:
+        loud.send_signal(signal.SIGINT)
+        loud.wait(20)
