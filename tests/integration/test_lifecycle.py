@@ -94,3 +94,45 @@ def test_a_lifecycle_node_is_driven_through_its_states_from_the_cli(ws):
     finally:
         talker.send_signal(signal.SIGINT)
         assert talker.wait(20) == 0, ws.output("talker.txt")
+
+
+FAILING = """
+import rclpy
+from rclpy.lifecycle import Node, State, TransitionCallbackReturn
+
+
+class Fragile(Node):
+    attempts = 0
+
+    def on_configure(self, state: State) -> TransitionCallbackReturn:
+        self.attempts += 1
+        if self.attempts == 1:
+            return TransitionCallbackReturn.FAILURE  # back to unconfigured
+        if self.attempts == 2:
+            raise RuntimeError("sensor not found")  # an error: error processing
+        return TransitionCallbackReturn.SUCCESS
+
+    def on_error(self, state: State) -> TransitionCallbackReturn:
+        self.get_logger().info(f"on_error from {state.label}")
+        return TransitionCallbackReturn.SUCCESS  # recovered: unconfigured
+
+
+rclpy.init()
+node = Fragile("fragile")
+for _ in range(3):
+    outcome = node.trigger_configure()
+    print("configure", outcome.name, node._current_state.label, flush=True)
+print("shutdown", node.trigger_shutdown().name, node._current_state.label, flush=True)
+"""
+
+
+def test_a_failing_or_raising_transition_goes_where_rcl_lifecycle_sends_it(ws):
+    ws.own_bus()
+    node_package(ws, "fragile", {"fragile.py": FAILING})
+    done = ws.run("run", "fragile", "fragile.py", timeout=60)
+    assert done.returncode == 0, done.stderr
+    out = done.stdout + done.stderr
+    assert "configure FAILURE unconfigured" in out, out
+    assert "configure ERROR unconfigured" in out and "on_error from configuring" in out, out
+    assert "Caught exception in callback for transition 10: sensor not found" in out, out
+    assert "configure SUCCESS inactive" in out and "shutdown SUCCESS finalized" in out, out

@@ -32,3 +32,23 @@ def test_the_client_reads_goal_statuses_from_the_bytes():
     entries = [(bytes(range(16)), 5, 7, 2), (bytes(range(16, 32)), 6, 8, 4)]
     assert _statuses(status_array_cdr(entries)) == [(bytes(range(16)), 2),
                                                      (bytes(range(16, 32)), 4)]
+
+
+def test_the_standard_action_types_are_there_with_their_fields():
+    from action_tutorials_interfaces.action import Fibonacci
+    from control_msgs.action import FollowJointTrajectory, GripperCommand
+    from nav2_msgs.action import NavigateToPose
+
+    goal = FollowJointTrajectory.Goal()
+    goal.trajectory.joint_names = ["shoulder", "elbow"]
+    data = registry().serialize(goal, "control_msgs/action/FollowJointTrajectory_Goal")
+    back = registry().deserialize(data, "control_msgs/action/FollowJointTrajectory_Goal")
+    assert list(back.trajectory.joint_names) == ["shoulder", "elbow"]
+    assert FollowJointTrajectory.Result.GOAL_TOLERANCE_VIOLATED == -5
+    assert GripperCommand.Goal().command.max_effort == 0.0
+    assert "stalled" in GripperCommand.Result.get_fields_and_field_types()
+    pose = NavigateToPose.Goal()
+    pose.pose.header.frame_id = "map"
+    assert NavigateToPose.Impl.SendGoalService.Request(goal=pose).goal.pose.header.frame_id \
+        == "map"
+    assert "partial_sequence" in Fibonacci.Feedback.get_fields_and_field_types()
