@@ -125,6 +125,43 @@ def test_topic_tools_relay_throttle_drop_and_mux(ws):
             proc.wait(20)
 
 
+def test_teleop_twist_keyboard_stamped_with_its_frame_id(ws):
+    """`stamped:=true` publishes TwistStamped, with the `frame_id` parameter's frame."""
+    import os
+    import subprocess
+    import time
+
+    from tests.conftest import launcher_argv
+
+    ws.own_bus()
+    master, slave = os.openpty()
+    teleop = subprocess.Popen([*launcher_argv(), "run", "teleop_twist_keyboard",
+                               "teleop_twist_keyboard", "--ros-args", "-p", "stamped:=true",
+                               "-p", "frame_id:=base_link"], stdin=slave, stdout=slave,
+                              stderr=slave, cwd=ws.root, env=ws.env)
+    try:
+        screen = b""
+        deadline = time.monotonic() + 30
+        while b"currently:" not in screen and time.monotonic() < deadline:
+            screen += os.read(master, 4096)
+        listener = ws.start("topic", "echo", "/cmd_vel", "geometry_msgs/msg/TwistStamped",
+                            output="stamped.txt")
+        time.sleep(1.5)
+        os.write(master, b"l")
+        said = ws.wait_for_output("z: -1.0", 20, "stamped.txt")
+        assert "frame_id: base_link" in said, said
+        os.write(master, b"\x03")
+        assert teleop.wait(20) == 0
+        listener.send_signal(signal.SIGINT)
+        listener.wait(20)
+    finally:
+        if teleop.poll() is None:
+            teleop.kill()
+            teleop.wait()
+        os.close(master)
+        os.close(slave)
+
+
 def test_teleop_twist_keyboard_drives_from_keys_and_gives_the_terminal_back(ws):
     """In a pseudo-terminal, as a user's: keys become Twists on cmd_vel, q steps the speeds
     up 10%, Ctrl-C ends it with the terminal's settings as they were."""
