@@ -74,11 +74,11 @@ fi
 # puts the repo on sys.path with a plain .pth entry: no import hook, faster start-up.
 if [ ! -f .venv/.installed ] || [ pyproject.toml -nt .venv/.installed ]; then
     say "installing launcher into .venv with its dependencies from PyPI (MuJoCo, Zenoh," \
-        "rosbags, xacro, matplotlib for launcher plot, the tests' pytest, mcap, selenium, and" \
-        "MkDocs for the docs site the tests build): about a minute the first time, seconds" \
-        "after"
+        "rosbags, xacro, matplotlib for launcher plot, OpenCV for cv_bridge, the tests'" \
+        "pytest, mcap, selenium, and MkDocs for the docs site the tests build): about a" \
+        "minute the first time, seconds after"
     .venv/bin/python -m pip install --quiet --disable-pip-version-check \
-        --config-settings editable_mode=compat -e ".[test,docs,plot]"
+        --config-settings editable_mode=compat -e ".[test,docs,plot,vision]"
     touch .venv/.installed
 else
     say ".venv is up to date"

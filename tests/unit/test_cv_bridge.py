@@ -62,3 +62,24 @@ def test_what_needs_opencv_says_so_when_it_is_not_there(monkeypatch):
     with pytest.raises(CvBridgeError, match="needs OpenCV, which is not installed: pip install "
                                             "opencv-python-headless"):
         CvBridge().compressed_imgmsg_to_cv2(CompressedImage(format="jpeg", data=b"\xff\xd8"))
+
+
+def test_compressed_images_and_bayer_through_opencv():
+    """(OpenCV is the set-up's `vision` extra)"""
+    bridge = CvBridge()
+    picture = np.zeros((48, 64, 3), np.uint8)
+    picture[:, :32] = (0, 0, 255)  # red on the left, in OpenCV's BGR
+    compressed = bridge.cv2_to_compressed_imgmsg(picture, "png")
+    assert compressed.format == "png" and bytes(compressed.data)[:4] == b"\x89PNG"
+    back = bridge.compressed_imgmsg_to_cv2(compressed)
+    assert np.array_equal(back, picture)
+    rgb = bridge.compressed_imgmsg_to_cv2(compressed, "rgb8")
+    assert rgb[0, 0].tolist() == [255, 0, 0]
+    jpeg = bridge.cv2_to_compressed_imgmsg(picture)
+    assert jpeg.format == "jpg" and bridge.compressed_imgmsg_to_cv2(jpeg).shape == (48, 64, 3)
+    bayer = np.zeros((8, 8), np.uint8)
+    bayer[0::2, 0::2] = 200  # the red sites of an RGGB pattern: a red picture
+    mosaic = Image(height=8, width=8, encoding="bayer_rggb8", step=8, data=bayer.tobytes())
+    colour = bridge.imgmsg_to_cv2(mosaic, "rgb8")
+    assert colour.shape == (8, 8, 3)
+    assert colour[2:6, 2:6, 0].mean() > 150 > colour[2:6, 2:6, 2].mean()

@@ -137,8 +137,9 @@ class CvBridge:
     def _convert(self, image: np.ndarray, source: str, target: str) -> np.ndarray:
         if source.startswith("bayer_"):
             cv2 = _opencv()
-            pattern = source[6:10].upper()
-            code = getattr(cv2, f"COLOR_Bayer{pattern[2:4]}2{'RGB' if 'rgb' in target else 'BGR'}")
+            # OpenCV names a Bayer pattern by its second row (as cv_bridge maps them)
+            pattern = {"rggb": "BG", "bggr": "RG", "gbrg": "GR", "grbg": "GB"}[source[6:10]]
+            code = getattr(cv2, f"COLOR_Bayer{pattern}2{'RGB' if 'rgb' in target else 'BGR'}")
             image, source = cv2.cvtColor(image, code), "rgb8" if "rgb" in target else "bgr8"
         if source not in _COLOUR or target not in _COLOUR:
             _layout(target)  # an unknown one is named
