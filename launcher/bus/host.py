@@ -67,6 +67,11 @@ class Host:
         return self.session.liveliness().declare_token(
             keys.liveliness_key(keys.DOMAIN, entity, space))
 
+    def share_queue(self, other: Host) -> None:
+        """Hand this host's callbacks to `other`'s executor: the two nodes are spun as one
+        (the nodes a process runs on one thread, as the sim runs its controllers')."""
+        self._queue, self._bell = other._queue, other._bell
+
     def enqueue(self, callback: Callable[..., Any], *args: Any) -> None:
         """Work for the node's executor (spin), from any thread."""
         self._queue.put((callback, args))

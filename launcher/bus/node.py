@@ -141,6 +141,11 @@ class Node:
         return self._host.adopt(Client(self._host, type_name,
                                        self.resolve(name, "service name"), space, make))
 
+    def spin_with(self, other: Node) -> None:
+        """This node's callbacks run when `other` spins (one thread for both); call it before
+        anything arrives."""
+        self._host.share_queue(other._host)
+
     def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
         if period <= 0:
             raise LaunchError(f"timer period must be > 0, got {period}")

@@ -30,6 +30,7 @@ class PluginConfig:
     name: str
     element: ET.Element
     where: str  # file:line, for messages
+    robot: str = ""  # a URDF plugin's robot description (gz_ros2_control reads its blocks)
 
 
 @dataclass

@@ -47,7 +47,8 @@ def prepare(text: str, label: str, base: Path | None, packages: object | None = 
         for plugin in gazebo.findall("plugin"):
             result.plugins.append(PluginConfig(plugin.get("filename", ""),
                                                plugin.get("name", ""), plugin,
-                                               f"{label}:{line_of(text, plugin, 'plugin')}"))
+                                               f"{label}:{line_of(text, plugin, 'plugin')}",
+                                               robot=text))
         reference = gazebo.get("reference")
         for sensor in gazebo.findall("sensor"):
             _sensor(result, robot, text, label, sensor, reference, preserved)

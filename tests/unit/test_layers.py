@@ -20,11 +20,13 @@ ALLOWED = {
     "frontend": {"records", "user_files", "private", "schema", "frontend", "description", "runtime",
                  "errors", "compat"},
     "cli": {"records", "user_files", "schema", "arguments", "cli", "frontend", "description", "runtime",
-            "packages", "errors", "compat", "api", "bus", "nodes"},
+            "packages", "errors", "compat", "api", "bus", "nodes", "control"},
     "bus": {"records", "user_files", "private", "lineage", "schema", "arguments", "bus", "errors",
             "packages"},
-    "sim": {"records", "user_files", "schema", "sim", "bus", "errors", "packages"},
-    "nodes": {"records", "user_files", "schema", "arguments", "nodes", "sim", "bus", "errors", "packages"},
+    "control": {"records", "schema", "control", "bus", "errors"},
+    "sim": {"records", "user_files", "schema", "sim", "control", "bus", "errors", "packages"},
+    "nodes": {"records", "user_files", "schema", "arguments", "nodes", "sim", "control", "bus",
+              "errors", "packages"},
     "compat": {"compat", "api", "packages", "runtime", "bus", "errors"},
 }
 

@@ -72,12 +72,22 @@ BUILTIN = {
         "launcher.sim.plugins.joint_controller:JointVelocityController",
     "gz::sim::systems::JointController":
         "launcher.sim.plugins.joint_controller:JointVelocityController",
+    "gz_ros2_control::GazeboSimROS2ControlPlugin":
+        "launcher.sim.plugins.ros2_control:GzRos2Control",
+    "ign_ros2_control::IgnitionROS2ControlPlugin":
+        "launcher.sim.plugins.ros2_control:GzRos2Control",
+    "gazebo_ros2_control::GazeboRosControlPlugin":
+        "launcher.sim.plugins.ros2_control:GzRos2Control",
 }
 CLASSIC = {
     "gazebo_ros_diff_drive": "launcher.sim.plugins.classic:ClassicDiffDrive",
     "gazebo_ros_joint_state_publisher": "launcher.sim.plugins.classic:ClassicJointStates",
     "gazebo_ros_p3d": "launcher.sim.plugins.classic_state:P3D",
     "gazebo_ros_ft_sensor": "launcher.sim.plugins.classic_state:FTSensor",
+    # gz_ros2_control's plugin, in its gz, ignition and classic spellings (lib…so stripped)
+    "gz_ros2_control-system": "launcher.sim.plugins.ros2_control:GzRos2Control",
+    "ign_ros2_control-system": "launcher.sim.plugins.ros2_control:GzRos2Control",
+    "gazebo_ros2_control": "launcher.sim.plugins.ros2_control:GzRos2Control",
 }
 
 

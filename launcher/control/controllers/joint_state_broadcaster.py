@@ -1,0 +1,82 @@
+"""joint_state_broadcaster/JointStateBroadcaster: every joint's position, velocity and effort
+on `joint_states` (sensor_msgs/JointState) and every interface on `dynamic_joint_states`
+(control_msgs/DynamicJointState), in the manager's namespace.
+
+Parameters (ros2_controllers'): `joints` and `interfaces` (both given: only those; else every
+state interface), `use_local_topics` (publish under `~/`), `map_interface_to_joint_state`
+(`position`/`velocity`/`effort` → another interface's name), `extra_joints` (published at 0).
+A joint lacking one of position, velocity and effort has NaN there in JointState, as
+ros2_controllers fills it; extra joints are at 0. Nothing is built while no one subscribes.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launcher.control.controller import Controller, ControllerError
+
+KINDS = ("position", "velocity", "effort")
+NAN = float("nan")
+
+
+class JointStateBroadcaster(Controller):
+    def on_init(self) -> None:
+        self.joints = self.names("joints", required=False)
+        self.interfaces = self.names("interfaces", required=False)
+        if bool(self.joints) != bool(self.interfaces):
+            raise ControllerError(self._at(
+                f"controller '{self.name}': 'joints' and 'interfaces' must be given together "
+                f"(one alone is ignored by ros2_controllers and is surely a mistake)"))
+
+    def state_interfaces(self) -> list[str] | None:
+        if self.joints:
+            return [f"{j}/{i}" for j in self.joints for i in self.interfaces]
+        return None
+
+    def on_configure(self) -> None:
+        local = bool(self.param("use_local_topics", False, bool))
+        prefix = "~/" if local else ""
+        self.mapping = {k: str(self.param(f"map_interface_to_joint_state.{k}", k, str))
+                        for k in KINDS}
+        self.extra = self.names("extra_joints", required=False)
+        self.joint_pub = self.node.create_publisher("sensor_msgs/msg/JointState",
+                                                    f"{prefix}joint_states", 10)
+        self.dynamic_pub = self.node.create_publisher("control_msgs/msg/DynamicJointState",
+                                                      f"{prefix}dynamic_joint_states", 10)
+
+    def on_activate(self) -> None:
+        order: list[str] = []
+        for handle in self.states.values():
+            if handle.prefix not in order:
+                order.append(handle.prefix)
+        self.order = order
+        by_joint: dict[str, dict[str, Any]] = {j: {} for j in order}
+        for handle in self.states.values():
+            by_joint[handle.prefix][handle.interface] = handle
+        self.by_joint = by_joint
+        # the joints of JointState: those with a position, velocity or effort
+        self.joint_names = [j for j in order
+                            if any(self.mapping[k] in by_joint[j] for k in KINDS)]
+        self.columns = [[by_joint[j].get(self.mapping[k]) for j in self.joint_names]
+                        for k in KINDS]
+
+    def on_cleanup(self) -> None:
+        self.joint_pub.destroy()
+        self.dynamic_pub.destroy()
+
+    def update(self, time: float, period: float) -> None:
+        make = self.node.message
+        if self.joint_pub.get_subscription_count():
+            values = [[h.value if h is not None else NAN for h in column]
+                      for column in self.columns]
+            self.joint_pub.publish(make(
+                "sensor_msgs/msg/JointState", header=self.header(time),
+                name=self.joint_names + self.extra, position=values[0] + [0.0] * len(self.extra),
+                velocity=values[1] + [0.0] * len(self.extra),
+                effort=values[2] + [0.0] * len(self.extra)))
+        if self.dynamic_pub.get_subscription_count():
+            self.dynamic_pub.publish(make(
+                "control_msgs/msg/DynamicJointState", header=self.header(time),
+                joint_names=self.order, interface_values=[make(
+                    "control_msgs/msg/InterfaceValue", interface_names=list(self.by_joint[j]),
+                    values=[h.value for h in self.by_joint[j].values()]) for j in self.order]))

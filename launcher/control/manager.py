@@ -1,0 +1,389 @@
+"""controller_manager: loads, configures, switches and unloads controllers and runs them over
+the hardware each cycle, with controller_manager_msgs' services, as ros2_control's does.
+
+    manager = ControllerManager(node, components, parameter_files)
+    manager.update(time)          # at update_rate: read hardware, update controllers, write
+
+Every callback runs on the thread that calls `update` (the sim's loop, or ros2_control_node's
+spin), so a switch lands between two cycles. A controller's parameters come from the files the
+manager was started with (gz_ros2_control's `<parameters>`) and its `<name>.params_file`; its
+type from the manager's `<name>.type`. Switches follow controller_manager's rules: STRICT
+refuses the whole request when one part fails, BEST_EFFORT does what it can; a command
+interface is never claimed twice, and a refused switch leaves the running controllers running.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launcher.bus.node import Node
+from launcher.control.controller import Controller, ControllerError
+from launcher.control.controllers import TYPES, controller_class
+from launcher.control.resources import (
+    ACTIVE,
+    FINALIZED,
+    INACTIVE,
+    STATE_LABELS,
+    UNCONFIGURED,
+    Component,
+    Resources,
+)
+from launcher.control.yaml_places import block_place, key_place, params_files
+from launcher.errors import did_you_mean
+
+SRV = "controller_manager_msgs/srv/"
+BEST_EFFORT, STRICT, AUTO, FORCE_AUTO = 1, 2, 3, 4
+
+
+class ControllerManager:
+    def __init__(self, node: Node, components: list[Component], parameter_files: list[str],
+                 remaps: list[str] | None = None) -> None:
+        self.node, self.log = node, node.get_logger()
+        self.resources = Resources(components)
+        self.files = list(parameter_files)
+        self.remaps = list(remaps or [])
+        self.controllers: dict[str, Controller] = {}
+        self.active: list[Controller] = []  # in activation order: their update order
+        self.update_rate = int(node.parameters.get("update_rate", 100) or 100)
+        self.period = 1.0 / self.update_rate
+        self.time = 0.0
+        self._last: float | None = None
+        for name, callback in (("list_controllers", self.on_list_controllers),
+                               ("list_controller_types", self.on_list_types),
+                               ("list_hardware_components", self.on_list_components),
+                               ("list_hardware_interfaces", self.on_list_interfaces),
+                               ("load_controller", self.on_load),
+                               ("configure_controller", self.on_configure),
+                               ("cleanup_controller", self.on_cleanup),
+                               ("switch_controller", self.on_switch),
+                               ("unload_controller", self.on_unload),
+                               ("reload_controller_libraries", self.on_reload),
+                               ("set_hardware_component_state", self.on_component_state)):
+            type_name = SRV + "".join(p.capitalize() for p in name.split("_"))
+            node.create_service(type_name, f"~/{name}", callback)
+
+    # --- the cycle -------------------------------------------------------------------------
+    def update(self, time: float) -> None:
+        period = time - self._last if self._last is not None else self.period
+        self._last = self.time = time
+        self.resources.read(time, period)
+        for controller in self.active:
+            rate = controller.update_rate
+            if rate and rate < self.update_rate and controller.last_update is not None and \
+                    time - controller.last_update < 1.0 / rate - 1e-9:
+                continue
+            since = time - controller.last_update if controller.last_update is not None \
+                else period
+            controller.last_update = time
+            try:
+                controller.update(time, since)
+            except Exception as exc:  # a controller's bug: it stops, the others go on
+                self.log.error(f"controller '{controller.name}' raised in update: "
+                               f"{type(exc).__name__}: {exc}; it is deactivated")
+                self._deactivate(controller)
+        self.resources.write(time, period)
+
+    # --- lifecycle of controllers ---------------------------------------------------------
+    def load(self, name: str) -> tuple[bool, str]:
+        if name in self.controllers:
+            return False, f"A controller named '{name}' was already loaded inside the " \
+                          f"controller manager"
+        parameters = self.node.parameters
+        type_name = parameters.get(f"{name}.type")
+        files = [*self.files, *params_files(parameters.get(f"{name}.params_file"))]
+        where = block_place(files, name, self.node.namespace or "/")
+        if not type_name:
+            at = f"{where}: " if where else ""
+            return False, (f"{at}The 'type' param was not defined for '{name}' (give it "
+                           f"'{name}: type: <package>/<Class>' under "
+                           f"{self.node.name}'s ros__parameters, or 'type' in {name}'s own)")
+        cls = controller_class(str(type_name))
+        if cls is None:
+            place = key_place(self.files, self.node.name, f"{name}.type") or where
+            at = f"{place}: " if place else ""
+            return False, (f"{at}Loader for controller '{name}' (type '{type_name}') not found; "
+                           f"available classes: {', '.join(sorted(TYPES))}"
+                           f"{did_you_mean(str(type_name), TYPES)}")
+        self.log.info(f"Loading controller : '{name}' of type '{type_name}'")
+        controller_node = self._node_for(name, files)
+        controller = cls(name, controller_node, where)
+        controller.type_name = str(type_name)
+        try:
+            controller.on_init()
+        except ControllerError as exc:
+            controller_node.destroy_node()
+            return False, str(exc)
+        self.controllers[name] = controller
+        return True, ""
+
+    def _node_for(self, name: str, files: list[str]) -> Node:
+        argv = ["--ros-args"]
+        for path in files:
+            argv += ["--params-file", path]
+        argv += ["-p", "use_sim_time:=true"]
+        for remap in self.remaps:
+            argv += ["-r", remap]
+        node = Node(name, namespace=self.node.namespace, argv=argv, session=self.node.session)
+        node.spin_with(self.node)
+        return node
+
+    def configure(self, name: str) -> tuple[bool, str]:
+        controller = self.controllers.get(name)
+        if controller is None:
+            return False, f"Could not configure controller with name '{name}' because no " \
+                          f"controller with this name exists"
+        if controller.state == ACTIVE:
+            return False, f"Controller '{name}' can not be configured from 'active' state."
+        if controller.state == INACTIVE:
+            controller.on_cleanup()
+            controller.state = UNCONFIGURED
+        self.log.info(f"Configuring controller: '{name}'")
+        try:
+            controller.on_configure()
+        except ControllerError as exc:
+            return False, str(exc)
+        controller.update_rate = int(controller.node.parameters.get("update_rate", 0) or 0)
+        controller.state = INACTIVE
+        return True, ""
+
+    def cleanup(self, name: str) -> tuple[bool, str]:
+        controller = self.controllers.get(name)
+        if controller is None:
+            return False, f"Could not cleanup controller with name '{name}' because no " \
+                          f"controller with this name exists"
+        if controller.state != INACTIVE:
+            return False, f"Controller '{name}' can not be cleaned-up from " \
+                          f"'{STATE_LABELS[controller.state]}' state."
+        controller.on_cleanup()
+        controller.state = UNCONFIGURED
+        return True, ""
+
+    def unload(self, name: str) -> tuple[bool, str]:
+        controller = self.controllers.get(name)
+        if controller is None:
+            return False, f"Could not unload controller with name '{name}' because no " \
+                          f"controller with this name exists"
+        if controller.state == ACTIVE:
+            return False, f"Could not unload controller with name '{name}' because it is " \
+                          f"still active"
+        self.log.info(f"Unloading controller: '{name}'")
+        controller.state = FINALIZED
+        del self.controllers[name]
+        controller.node.destroy_node()
+        return True, ""
+
+    def switch(self, activate: list[str], deactivate: list[str],
+               strictness: int = STRICT) -> tuple[bool, str]:
+        """Deactivate, then activate, as one step between two cycles."""
+        strict = strictness != BEST_EFFORT
+        messages: list[str] = []
+        to_stop, to_start = [], []
+        for action, names, into in (("deactivate", deactivate, to_stop),
+                                    ("activate", activate, to_start)):
+            for name in names:
+                if name in self.controllers:
+                    into.append(self.controllers[name])
+                    continue
+                message = f"Could not {action} controller with name '{name}' because no " \
+                          f"controller with this name exists{did_you_mean(name, self.controllers)}"
+                if strict:
+                    self.log.error(f"{message}; aborting, no controller is switched "
+                                   f"('STRICT' switch)")
+                    return False, message
+                messages.append(message)
+        freed = {i for c in to_stop for i, owner in self.resources.claimed.items()
+                 if owner == c.name}
+        taken: set[str] = set()
+        starting: list[Controller] = []
+        for controller in to_start:
+            problem = self._cannot_activate(controller, to_stop, freed, taken)
+            if problem:
+                self.log.warning(problem)
+                if strict:
+                    return False, problem
+                messages.append(problem)
+                continue
+            starting.append(controller)
+            taken.update(controller.command_interfaces())
+        stopping = [c for c in to_stop if c.state == ACTIVE]
+        for controller in to_stop:
+            if controller.state != ACTIVE and controller not in to_start:
+                message = f"Controller with name '{controller.name}' is not active, so it " \
+                          f"can not be deactivated."
+                if strict:
+                    return False, message
+                messages.append(message)
+        if strict and not (starting or stopping) and (activate or deactivate):
+            return False, "\n".join(messages)
+        for controller in stopping:
+            self._deactivate(controller)
+        for controller in starting:
+            self._activate(controller)
+        if starting:
+            self.log.info(f"Activating controllers: [ {' '.join(c.name for c in starting)} ]")
+        ok = bool(starting or stopping) or not (activate or deactivate)
+        return ok, "\n".join(messages)
+
+    def _cannot_activate(self, controller: Controller, stopping: list[Controller],
+                         freed: set[str], taken: set[str]) -> str:
+        name = controller.name
+        if controller.state == UNCONFIGURED:
+            return (f"Controller with name '{name}' is in 'unconfigured' state. The controller "
+                    f"needs to be configured to be in 'inactive' state before it can be checked "
+                    f"and activated.")
+        if controller.state == ACTIVE and controller not in stopping:
+            return f"Controller with name '{name}' is already active."
+        resources = self.resources
+        for interface in controller.command_interfaces():
+            if not resources.available(interface, command=True):
+                return (f"Unable to activate controller '{name}' since the command interface "
+                        f"'{interface}' is not available (the hardware exports: "
+                        f"{', '.join(sorted(resources.commands)) or 'none'})"
+                        f"{did_you_mean(interface, resources.commands)}")
+            if interface in resources.claimed and interface not in freed:
+                return (f"Unable to activate controller '{name}' since the command interface "
+                        f"'{interface}' is currently claimed by another controller "
+                        f"('{resources.claimed[interface]}').")
+            if interface in taken:
+                return (f"Unable to activate controller '{name}' since the command interface "
+                        f"'{interface}' will be used by another controller that is being "
+                        f"activated.")
+        for interface in controller.state_interfaces() or []:
+            if not resources.available(interface, command=False):
+                return (f"Unable to activate controller '{name}' since the state interface "
+                        f"'{interface}' is not available (the hardware exports: "
+                        f"{', '.join(sorted(resources.states)) or 'none'})"
+                        f"{did_you_mean(interface, resources.states)}")
+        return ""
+
+    def _activate(self, controller: Controller) -> None:
+        wanted = controller.state_interfaces()
+        names = sorted(self.resources.states) if wanted is None else wanted
+        controller.states = {n: self.resources.states[n] for n in names}
+        controller.commands = self.resources.claim(controller.name,
+                                                   controller.command_interfaces())
+        controller.last_update = None
+        try:
+            controller.on_activate()
+        except Exception as exc:
+            self.log.error(f"Could not activate controller : '{controller.name}': {exc}")
+            self.resources.release(controller.name)
+            controller.commands = []
+            return
+        controller.state = ACTIVE
+        self.active.append(controller)
+
+    def _deactivate(self, controller: Controller) -> None:
+        try:
+            controller.on_deactivate()
+        finally:
+            self.resources.release(controller.name)
+            controller.commands = []
+            controller.state = INACTIVE
+            if controller in self.active:
+                self.active.remove(controller)
+
+    def shutdown(self) -> None:
+        for controller in list(self.active):
+            self._deactivate(controller)
+        for controller in list(self.controllers.values()):
+            controller.node.destroy_node()
+        self.controllers.clear()
+
+    # --- services --------------------------------------------------------------------------
+    def _answer(self, response: Any, result: tuple[bool, str], what: str, name: str) -> Any:
+        ok, message = result
+        if not ok and message:
+            self.log.error(message)
+        response.ok = ok
+        return response
+
+    def on_load(self, request: Any, response: Any) -> Any:
+        return self._answer(response, self.load(request.name), "load", request.name)
+
+    def on_configure(self, request: Any, response: Any) -> Any:
+        return self._answer(response, self.configure(request.name), "configure", request.name)
+
+    def on_cleanup(self, request: Any, response: Any) -> Any:
+        return self._answer(response, self.cleanup(request.name), "cleanup", request.name)
+
+    def on_unload(self, request: Any, response: Any) -> Any:
+        return self._answer(response, self.unload(request.name), "unload", request.name)
+
+    def on_reload(self, request: Any, response: Any) -> Any:
+        response.ok = True  # the controllers are Python classes: nothing to reload
+        return response
+
+    def on_switch(self, request: Any, response: Any) -> Any:
+        ok, message = self.switch(list(request.activate_controllers),
+                                  list(request.deactivate_controllers), request.strictness)
+        response.ok = ok
+        if hasattr(response, "message"):
+            response.message = message
+        return response
+
+    def on_list_controllers(self, request: Any, response: Any) -> Any:
+        message = self.node.message
+        response.controller = [message(
+            "controller_manager_msgs/msg/ControllerState", name=c.name,
+            state=STATE_LABELS[c.state], type=c.type_name, is_async=False,
+            update_rate=c.update_rate or self.update_rate,
+            claimed_interfaces=[i for i, o in self.resources.claimed.items() if o == c.name],
+            required_command_interfaces=c.command_interfaces() if c.state != UNCONFIGURED
+            else [],
+            required_state_interfaces=(c.state_interfaces() or []) if c.state != UNCONFIGURED
+            else []) for c in self.controllers.values()]
+        return response
+
+    def on_list_types(self, request: Any, response: Any) -> Any:
+        response.types = sorted(TYPES)
+        response.base_classes = [controller_class(t).base_class for t in response.types]
+        return response
+
+    def _interfaces(self, names: list[str], command: bool) -> list[Any]:
+        make = self.node.message
+        return [make("controller_manager_msgs/msg/HardwareInterface", name=n, data_type="double",
+                     is_available=self.resources.available(n, command),
+                     is_claimed=command and n in self.resources.claimed) for n in names]
+
+    def on_list_interfaces(self, request: Any, response: Any) -> Any:
+        commands, states = self.resources.describe()
+        response.command_interfaces = self._interfaces(commands, True)
+        response.state_interfaces = self._interfaces(states, False)
+        return response
+
+    def on_list_components(self, request: Any, response: Any) -> Any:
+        make = self.node.message
+        response.component = [make(
+            "controller_manager_msgs/msg/HardwareComponentState", name=c.info.name,
+            type=c.info.type, is_async=False, rw_rate=self.update_rate,
+            plugin_name=c.info.plugin,
+            state=make("lifecycle_msgs/msg/State", id=c.state, label=STATE_LABELS[c.state]),
+            command_interfaces=self._interfaces(list(c.commands), True),
+            state_interfaces=self._interfaces(list(c.states), False))
+            for c in self.resources.components]
+        return response
+
+    def on_component_state(self, request: Any, response: Any) -> Any:
+        found = [c for c in self.resources.components if c.info.name == request.name]
+        target = request.target_state.id or {v: k for k, v in STATE_LABELS.items()}.get(
+            request.target_state.label, 0)
+        make = self.node.message
+        if not found or target not in (UNCONFIGURED, INACTIVE, ACTIVE):
+            response.ok = False
+            if not found:
+                known = [c.info.name for c in self.resources.components]
+                self.log.error(f"Hardware component '{request.name}' is unknown"
+                               f"{did_you_mean(request.name, known)}")
+            return response
+        component = found[0]
+        if target != ACTIVE:  # its command interfaces go: the controllers using them stop
+            for controller in list(self.active):
+                if any(self.resources.owner.get(i) is component
+                       for i in controller.command_interfaces()):
+                    self._deactivate(controller)
+        component.state = target
+        response.ok = True
+        response.state = make("lifecycle_msgs/msg/State", id=target, label=STATE_LABELS[target])
+        return response
+

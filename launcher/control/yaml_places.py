@@ -1,0 +1,86 @@
+"""Where a node's block is in ROS parameter files (file:line), for messages about it, and the
+`params_file` values spawner gives the manager (a path, a list, or a list written as text)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+def block_place(files: list[str], node: str, namespace: str = "/") -> str:
+    """`file:line` of the first block of the files for node `node` (by the keys ROS matches:
+    `node`, `/ns/node`, `/**/node`, under `/**`), or ""."""
+    import yaml
+
+    full = f"{namespace.rstrip('/')}/{node}"
+    keys = {node, full, f"/**/{node}", f"/**{full}"}
+    for path in files:
+        try:
+            with open(path, encoding="utf-8") as stream:
+                root = yaml.compose(stream)
+        except (OSError, yaml.YAMLError):
+            continue
+        if not isinstance(root, yaml.MappingNode):
+            continue
+        for key, value in root.value:
+            if key.value in keys:
+                return f"{path}:{key.start_mark.line + 1}"
+            if key.value == "/**" and isinstance(value, yaml.MappingNode):
+                for inner, _ in value.value:
+                    if inner.value in keys:
+                        return f"{path}:{inner.start_mark.line + 1}"
+    return ""
+
+
+def key_place(files: list[str], node: str, dotted: str) -> str:
+    """`file:line` of `node: ros__parameters: a: b:` for dotted name `a.b`, or ""."""
+    import yaml
+
+    parts = dotted.split(".")
+    for path in files:
+        try:
+            with open(path, encoding="utf-8") as stream:
+                root = yaml.compose(stream)
+        except (OSError, yaml.YAMLError):
+            continue
+        found = _descend(root, [node, "ros__parameters", *parts]) or \
+            _descend(root, [f"/{node}", "ros__parameters", *parts])
+        if found is not None:
+            return f"{path}:{found.start_mark.line + 1}"
+    return ""
+
+
+def _descend(node: Any, path: list[str]) -> Any:
+    import yaml
+
+    for part in path:
+        if not isinstance(node, yaml.MappingNode):
+            return None
+        for key, value in node.value:
+            if key.value == part:
+                node = value
+                break
+            if part.count(".") == 0 and key.value.startswith(part + "."):
+                continue
+        else:
+            return None
+    return node
+
+
+def params_files(value: Any) -> list[str]:
+    """A `<controller>.params_file` value as paths: spawner sets it to a list written as text
+    (`['/a.yaml']`), users to a path or a list."""
+    if value is None or value == "":
+        return []
+    if isinstance(value, list | tuple):
+        return [str(v) for v in value]
+    text = str(value).strip()
+    if text.startswith("["):
+        import yaml
+
+        try:
+            loaded = yaml.safe_load(text)
+        except yaml.YAMLError:
+            return [text]
+        if isinstance(loaded, list):
+            return [str(v) for v in loaded]
+    return [text]
