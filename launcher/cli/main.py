@@ -27,6 +27,8 @@ COMMANDS = {
     "node": ("launcher.cli.node_command", "nodes: list, info"),
     "action": ("launcher.cli.action_command", "actions: list, info, type, send_goal"),
     "lifecycle": ("launcher.cli.lifecycle_command", "lifecycle nodes: nodes, list, get, set"),
+    "control": ("launcher.cli.control_command", "ros2_control's controller manager: "
+                "list_controllers, load_controller, switch_controllers, …"),
     "logger": ("launcher.cli.logger_command", "a node's logger levels: get, set"),
     "graph": ("launcher.cli.graph_command", "draw the graph's nodes and topics (as rqt_graph)"),
     "plot": ("launcher.cli.plot_command", "draw fields of messages over time (as rqt_plot)"),
