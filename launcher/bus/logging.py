@@ -35,3 +35,6 @@ class Logger:
 
     def error(self, message: str, once: bool = False) -> None:
         self._log("ERROR", message, once)
+
+    def fatal(self, message: str, once: bool = False) -> None:
+        self._log("FATAL", message, once)

@@ -135,3 +135,271 @@ def test_diff_drive_example_runs_unchanged_and_twist_stamped_moves_odometry(demo
         assert after and abs(after[0] - rest) < 0.01, (rest, after)
     finally:
         assert stop(proc) == 130
+
+
+ARM = """<?xml version="1.0"?>
+<robot name="arm">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="5"/><inertia ixx="1" iyy="1" izz="1" ixy="0"
+    ixz="0" iyz="0"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
+    <origin xyz="0 0 0.5"/></joint>
+  {links}
+  <ros2_control name="ArmSystem" type="system">
+    <hardware><plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
+    <joint name="j1"><command_interface name="position"><param name="min">-2</param>
+      <param name="max">2</param></command_interface>
+      <state_interface name="position"/><state_interface name="velocity"/>
+      <state_interface name="effort"/></joint>
+    <joint name="j2"><command_interface name="position"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+    <joint name="j3"><command_interface name="velocity"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+    <joint name="j4"><command_interface name="effort"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+  </ros2_control>
+  <gazebo><plugin filename="gz_ros2_control-system"
+    name="gz_ros2_control::GazeboSimROS2ControlPlugin">
+    <parameters>{yaml}</parameters></plugin></gazebo>
+</robot>
+"""
+LINK = """<link name="l{n}"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1"
+  ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="j{n}" type="revolute"><parent link="{parent}"/><child link="l{n}"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="50"
+    velocity="5"/><dynamics damping="0.5"/></joint>"""
+ARM_YAML = """
+controller_manager:
+  ros__parameters:
+    update_rate: 500
+    joint_state_broadcaster: {type: joint_state_broadcaster/JointStateBroadcaster}
+    arm_controller: {type: joint_trajectory_controller/JointTrajectoryController}
+    forward: {type: forward_command_controller/ForwardCommandController}
+    position_group: {type: position_controllers/JointGroupPositionController}
+    velocity_group: {type: velocity_controllers/JointGroupVelocityController}
+    effort_group: {type: effort_controllers/JointGroupEffortController}
+    few_states: {type: joint_state_broadcaster/JointStateBroadcaster}
+    no_such_joint: {type: position_controllers/JointGroupPositionController}
+    typo_type: {type: joint_trajectory_controler/JointTrajectoryController}
+arm_controller:
+  ros__parameters:
+    joints: [j1, j2]
+    command_interfaces: [position]
+    state_interfaces: [position, velocity]
+forward:
+  ros__parameters:
+    joints: [j1]
+    interface_name: position
+position_group:
+  ros__parameters:
+    joints: [j2]
+velocity_group:
+  ros__parameters:
+    joints: [j3]
+effort_group:
+  ros__parameters:
+    joints: [j4]
+few_states:
+  ros__parameters:
+    joints: [j1]
+    interfaces: [position]
+    use_local_topics: true
+no_such_joint:
+  ros__parameters:
+    joints: [elbow]
+untyped:
+  ros__parameters:
+    joints: [j1]
+"""
+
+
+@pytest.fixture
+def arm(ws):
+    ws.own_bus()
+    yaml = ws.write("arm_controllers.yaml", ARM_YAML)
+    links = "\n  ".join(LINK.format(n=n, parent="base" if n == 1 else f"l{n - 1}")
+                        for n in range(1, 5))
+    ws.write("arm.urdf", ARM.format(links=links, yaml=yaml))
+    proc = ws.start("gz", "sim", "-r", "-s", "-v", "3", "empty.sdf", output="sim.out")
+    ws.wait_for_output("running", 60, "sim.out")
+    spawned = ws.run("run", "ros_gz_sim", "create", "-file", "arm.urdf", "-name", "arm")
+    assert spawned.returncode == 0, spawned.stderr
+    ws.wait_for_output("controller_manager of entity 'arm'", 30, "sim.out")
+    yield ws
+    assert stop(proc) in (0, 130)
+
+
+def spawner(ws, *args: str):
+    return ws.run("run", "controller_manager", "spawner", *args, timeout=60)
+
+
+def joint(ws, name: str, kind: str = "position") -> float:
+    message = ws.run("topic", "echo", "/joint_states", "sensor_msgs/msg/JointState", "--once",
+                     timeout=30).stdout
+    order = re.search(r"name:\n((?:- .*\n)+)", message).group(1).split("\n")
+    joints = [line[2:] for line in order if line]
+    values = re.search(rf"{kind}:\n((?:- .*\n)+)", message).group(1).split("\n")
+    return float(values[joints.index(name)][2:])
+
+
+def test_every_controller_through_a_real_spawner_against_the_sim(arm):
+    assert spawner(arm, "joint_state_broadcaster").returncode == 0
+    listed = arm.run("topic", "echo", "/joint_states", "sensor_msgs/msg/JointState", "--once",
+                     timeout=30).stdout
+    assert all(f"- j{n}" in listed for n in range(1, 5)), listed
+    dynamic = arm.run("topic", "echo", "/dynamic_joint_states",
+                      "control_msgs/msg/DynamicJointState", "--once", timeout=30).stdout
+    assert "- effort" in dynamic and "- j4" in dynamic, dynamic
+    # joints/interfaces filters and local topics
+    assert spawner(arm, "few_states").returncode == 0
+    few = arm.run("topic", "echo", "/few_states/joint_states", "sensor_msgs/msg/JointState",
+                  "--once", timeout=30).stdout
+    assert "- j1" in few and "- j2" not in few, few
+    # the trajectory controller and the JointGroup controllers, all at once
+    done = spawner(arm, "arm_controller", "velocity_group", "effort_group",
+                   "--activate-as-group")
+    assert done.returncode == 0, done.stderr
+    arm.run("topic", "pub", "--once", "/arm_controller/joint_trajectory",
+            "trajectory_msgs/msg/JointTrajectory",
+            "{joint_names: [j2, j1], points: [{positions: [-0.4, 0.8], velocities: [0, 0], "
+            "time_from_start: {sec: 1}}]}")
+    arm.run("topic", "pub", "--once", "/velocity_group/commands",
+            "std_msgs/msg/Float64MultiArray", "{data: [0.5]}")
+    assert wait_until(lambda: abs(joint(arm, "j1") - 0.8) < 0.02 and
+                      abs(joint(arm, "j2") + 0.4) < 0.02)
+    assert abs(joint(arm, "j3", "velocity") - 0.5) < 0.05
+    before = joint(arm, "j4", "velocity")
+    arm.run("topic", "pub", "--once", "/effort_group/commands",
+            "std_msgs/msg/Float64MultiArray", "{data: [2.0]}")
+    assert wait_until(lambda: joint(arm, "j4", "velocity") > before + 0.5)
+    # a wrong-sized or NaN command is refused
+    arm.run("topic", "pub", "--once", "/velocity_group/commands",
+            "std_msgs/msg/Float64MultiArray", "{data: [0.1, 0.2]}")
+    arm.run("topic", "pub", "--once", "/velocity_group/commands",
+            "std_msgs/msg/Float64MultiArray", "{data: [.nan]}")
+    time.sleep(0.5)
+    assert abs(joint(arm, "j3", "velocity") - 0.5) < 0.05
+    out = arm.output("sim.out")
+    assert "command size (2) does not match number of interfaces (1)" in out
+    assert "NaN or an infinite value" in out
+    # two controllers claiming j1/position: refused, the running one keeps running
+    refused = spawner(arm, "forward")
+    assert refused.returncode == 1
+    assert "currently claimed by another controller ('arm_controller')" in \
+        refused.stdout + refused.stderr
+    assert re.search(r"arm_controller\s+\S+\s+active", controllers(arm))
+    assert re.search(r"forward\s+\S+\s+inactive", controllers(arm))
+    loaded = arm.run("control", "load_controller", "position_group", "--set-state", "inactive")
+    assert loaded.returncode == 0, loaded.stderr
+    assert "Successfully loaded controller position_group into state inactive" in loaded.stdout
+    # switch: arm_controller out, forward and position_group in, in one step
+    switched = arm.run("control", "switch_controllers", "--deactivate", "arm_controller",
+                       "--activate", "forward", "position_group", "--strict")
+    assert switched.returncode == 0, switched.stderr
+    arm.run("topic", "pub", "--once", "/forward/commands", "std_msgs/msg/Float64MultiArray",
+            "{data: [5.0]}")  # beyond the interface's max (2): clamped
+    arm.run("topic", "pub", "--once", "/position_group/commands",
+            "std_msgs/msg/Float64MultiArray", "{data: [0.3]}")
+    assert wait_until(lambda: abs(joint(arm, "j1") - 2.0) < 0.03 and
+                      abs(joint(arm, "j2") - 0.3) < 0.03), (joint(arm, "j1"), joint(arm, "j2"))
+    interfaces = arm.run("control", "list_hardware_interfaces").stdout
+    assert "\tj1/position [available] [claimed]" in interfaces, interfaces
+    assert "\tj3/velocity [available] [claimed]" in interfaces
+    verbose = controllers(arm, "-v")
+    assert "\tclaimed interfaces:\n\t\tj2/position" in verbose, verbose
+    components = arm.run("control", "list_hardware_components").stdout
+    assert "name: ArmSystem" in components and "gz_ros2_control/GazeboSimSystem" in components
+    types = arm.run("control", "list_controller_types").stdout
+    assert "diff_drive_controller/DiffDriveController" in types
+    # unspawner: deactivated and unloaded
+    gone = arm.run("run", "controller_manager", "unspawner", "velocity_group")
+    assert gone.returncode == 0, gone.stderr
+    assert "velocity_group" not in controllers(arm)
+    drawn = arm.run("control", "view_controller_chains")
+    assert drawn.returncode == 0, drawn.stderr
+    assert (arm.root / "controller_diagram.gv.pdf").stat().st_size > 0
+
+
+def test_bad_controller_configurations_are_refused_with_where_and_why(arm):
+    yaml = str(arm.root / "arm_controllers.yaml")
+    # not in the YAML at all: spawner.py's message, non-zero exit
+    missing = spawner(arm, "nonexistent_controller")
+    assert missing.returncode == 1
+    assert "Failed loading controller nonexistent_controller" in missing.stderr + missing.stdout
+    # a block with no type
+    untyped = spawner(arm, "untyped")
+    assert untyped.returncode == 1
+    out = arm.wait_for_output("The 'type' param was not defined for 'untyped'", 10, "sim.out")
+    assert re.search(rf"{re.escape(yaml)}:\d+: The 'type' param", out), out
+    # an unknown type: the known ones, and the likely one
+    typo = spawner(arm, "typo_type")
+    assert typo.returncode == 1
+    out = arm.wait_for_output("Loader for controller 'typo_type'", 10, "sim.out")
+    assert "did you mean 'joint_trajectory_controller/JointTrajectoryController'" in out
+    assert re.search(rf"{re.escape(yaml)}:\d+: Loader", out), out
+    # a joint the hardware does not have
+    elbow = spawner(arm, "no_such_joint")
+    assert elbow.returncode == 1
+    text = elbow.stdout + elbow.stderr
+    assert "command interface 'elbow/position' is not available" in text, text
+    assert "j1/position" in text  # what the hardware exports
+    # nothing above left a controller active
+    assert not re.search(r"\sactive", controllers(arm))
+
+
+def test_an_unknown_hardware_plugin_is_refused_at_its_line(ws):
+    ws.own_bus()
+    yaml = ws.write("c.yaml", "controller_manager:\n  ros__parameters:\n    update_rate: 100\n")
+    links = LINK.format(n=1, parent="base")
+    text = ARM.format(links=links, yaml=yaml).replace(
+        "gz_ros2_control/GazeboSimSystem", "my_robot_hardware/RealArm")
+    path = ws.write("bad.urdf", text)
+    line = text.splitlines().index('  <ros2_control name="ArmSystem" type="system">') + 1
+    proc = ws.start("gz", "sim", "-r", "-s", "-v", "3", "empty.sdf", output="sim.out")
+    try:
+        ws.wait_for_output("running", 60, "sim.out")
+        spawned = ws.run("run", "ros_gz_sim", "create", "-file", str(path), "-name", "arm")
+        assert spawned.returncode != 0
+        message = spawned.stderr + ws.output("sim.out")
+        assert f"bad.urdf:{line}: <ros2_control name=\"ArmSystem\">: unknown hardware " \
+               f"plugin 'my_robot_hardware/RealArm'" in message, message
+        assert "mock_components/GenericSystem" in message
+        assert "Traceback" not in message
+    finally:
+        assert stop(proc) in (0, 130)
+
+
+def test_ros2_control_node_runs_the_manager_on_mock_hardware(ws):
+    ws.own_bus()
+    yaml = ws.write("arm_controllers.yaml", ARM_YAML)
+    links = "\n  ".join(LINK.format(n=n, parent="base" if n == 1 else f"l{n - 1}")
+                        for n in range(1, 5))
+    ws.write("arm.urdf", ARM.format(links=links, yaml=yaml).replace(
+        "gz_ros2_control/GazeboSimSystem", "mock_components/GenericSystem"))
+    ws.write("mock.launch.yaml", f"""
+    launch:
+      - node:
+          pkg: robot_state_publisher
+          exec: robot_state_publisher
+          param: [{{name: robot_description, value: "$(command 'cat arm.urdf')"}}]
+      - node:
+          pkg: controller_manager
+          exec: ros2_control_node
+          output: screen
+          param: [{{from: {yaml}}}]
+    """)
+    proc = ws.start("launch", "mock.launch.yaml", output="mock.out")
+    try:
+        ws.wait_for_output("Received robot description from topic.", 60, "mock.out")
+        assert spawner(ws, "joint_state_broadcaster").returncode == 0
+        done = spawner(ws, "arm_controller")
+        assert done.returncode == 0, done.stderr
+        ws.run("topic", "pub", "--once", "/arm_controller/joint_trajectory",
+               "trajectory_msgs/msg/JointTrajectory",
+               "{joint_names: [j1, j2], points: [{positions: [0.5, -0.5], "
+               "time_from_start: {sec: 1}}]}")
+        # mock hardware: the state follows the command exactly
+        assert wait_until(lambda: joint(ws, "j1") == 0.5 and joint(ws, "j2") == -0.5)
+        assert "runs as mock_components/GenericSystem" not in ws.output("mock.out")
+    finally:
+        assert stop(proc) == 130
