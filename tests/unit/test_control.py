@@ -162,3 +162,16 @@ def test_params_file_values_and_controller_blocks_are_found(tmp_path):
     assert block_place([str(path)], "x") == f"{path}:1"
     assert block_place([str(path)], "arm") == f"{path}:4"
     assert block_place([str(path)], "nope") == ""
+
+
+@pytest.mark.parametrize("names", [["a", "bc", "def"], [], ["j1"]])
+def test_joint_states_packed_directly_are_the_serializers_bytes(names):
+    from launcher.bus.types import registry
+    from launcher.bus.wire import JointStateLayout
+
+    count = len(names)
+    packed = JointStateLayout(names).pack(5, 7, [1.0] * count, [2.0] * count, [3.0] * count)
+    message = registry().deserialize(packed, "sensor_msgs/msg/JointState")
+    assert list(message.name) == names and list(message.velocity) == [2.0] * count
+    assert (message.header.stamp.sec, message.header.stamp.nanosec) == (5, 7)
+    assert registry().serialize(message, "sensor_msgs/msg/JointState") == packed

@@ -201,7 +201,7 @@ class DiffDriveController(Controller):
         tf_wanted = self.tf_enabled and self.tf_pub.get_subscription_count() > 0
         if not (odom_wanted or tf_wanted):
             return
-        make = self.node.message
+        make = self.make
         header = self.header(time, self.odom_frame)
         quat = make("geometry_msgs/msg/Quaternion", x=0.0, y=0.0,
                     z=math.sin(self.heading / 2), w=math.cos(self.heading / 2))

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from launcher.bus.wire import JointStateLayout, split_time
 from launcher.control.controller import Controller, ControllerError
 
 KINDS = ("position", "velocity", "effort")
@@ -59,21 +60,19 @@ class JointStateBroadcaster(Controller):
                             if any(self.mapping[k] in by_joint[j] for k in KINDS)]
         self.columns = [[by_joint[j].get(self.mapping[k]) for j in self.joint_names]
                         for k in KINDS]
+        self.layout = JointStateLayout(self.joint_names + self.extra)
 
     def on_cleanup(self) -> None:
         self.joint_pub.destroy()
         self.dynamic_pub.destroy()
 
     def update(self, time: float, period: float) -> None:
-        make = self.node.message
+        make = self.make
         if self.joint_pub.get_subscription_count():
-            values = [[h.value if h is not None else NAN for h in column]
+            extra = [0.0] * len(self.extra)
+            values = [[h.value if h is not None else NAN for h in column] + extra
                       for column in self.columns]
-            self.joint_pub.publish(make(
-                "sensor_msgs/msg/JointState", header=self.header(time),
-                name=self.joint_names + self.extra, position=values[0] + [0.0] * len(self.extra),
-                velocity=values[1] + [0.0] * len(self.extra),
-                effort=values[2] + [0.0] * len(self.extra)))
+            self.joint_pub.publish_raw(self.layout.pack(*split_time(time), *values))
         if self.dynamic_pub.get_subscription_count():
             self.dynamic_pub.publish(make(
                 "control_msgs/msg/DynamicJointState", header=self.header(time),

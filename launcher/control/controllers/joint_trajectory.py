@@ -204,7 +204,7 @@ class JointTrajectoryController(Controller):
         return path, goal, goal_time
 
     def _result(self, code: int, text: str) -> Any:
-        return self.node.message(f"{ACTION}_Result", error_code=code, error_string=text)
+        return self.make(f"{ACTION}_Result", error_code=code, error_string=text)
 
     # --- the cycle ---------------------------------------------------------------------------
     def update(self, time: float, period: float) -> None:
@@ -280,13 +280,13 @@ class JointTrajectoryController(Controller):
             self.goal = None
 
     def _point(self, positions: list[float], velocities: list[float] | None = None) -> Any:
-        return self.node.message("trajectory_msgs/msg/JointTrajectoryPoint",
+        return self.make("trajectory_msgs/msg/JointTrajectoryPoint",
                                  positions=positions, velocities=velocities or [])
 
     def _feedback(self, time: float, desired: Any, actual: list[float], errors: list[float]) \
             -> Any:
         speeds = [v.value if v is not None else 0.0 for v in self.velocity]
-        return self.node.message(
+        return self.make(
             f"{ACTION}_Feedback", header=self.header(time), joint_names=self.joints,
             desired=self._point(desired[0], desired[1]), actual=self._point(actual, speeds),
             error=self._point(errors, [d - s for d, s in zip(desired[1], speeds, strict=True)]))
@@ -294,7 +294,7 @@ class JointTrajectoryController(Controller):
     def _publish_state(self, time: float, desired: Any, actual: list[float]) -> None:
         speeds = [v.value if v is not None else 0.0 for v in self.velocity]
         output = [h.value for h in self.commands[:len(self.joints)]]
-        self.state_pub.publish(self.node.message(
+        self.state_pub.publish(self.make(
             "control_msgs/msg/JointTrajectoryControllerState", header=self.header(time),
             joint_names=self.joints, reference=self._point(desired[0], desired[1]),
             feedback=self._point(actual, speeds),
