@@ -30,6 +30,8 @@ def load_python(path: Path) -> LaunchDescription:
         raise ParseError("cannot load this Python file", Location(str(path)))
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
+    writes_bytecode = sys.dont_write_bytecode
+    sys.dont_write_bytecode = True  # no __pycache__ left in the user's (or a package's) folder
     try:
         spec.loader.exec_module(module)
         generate = getattr(module, "generate_launch_description", None)
@@ -57,6 +59,7 @@ def load_python(path: Path) -> LaunchDescription:
         raise _user_error(exc, path) from None
     finally:
         sys.modules.pop(name, None)
+        sys.dont_write_bytecode = writes_bytecode
     where = _definition(generate, path)
     if not isinstance(result, LaunchDescription):
         raise ParseError(f"generate_launch_description() returned {type(result).__name__}, "

@@ -71,3 +71,17 @@ def test_on_exit_takes_one_action_as_ros_2_does():
     (log,) = process.on_start
     assert isinstance(shutdown, type(Shutdown())) and list(process.sub_actions()) == [log,
                                                                                       shutdown]
+
+
+def test_loading_a_python_launch_file_leaves_no_bytecode_beside_it(tmp_path, monkeypatch):
+    """ROS 2's launch leaves __pycache__ in the package's launch folder; launcher does not."""
+    monkeypatch.setattr("sys.dont_write_bytecode", False)  # as a user's Python has it
+    (tmp_path / "child.launch.yaml").write_text(
+        "launch:\n  - arg: {name: name}\n  - log: {message: 'child $(var name)'}\n")
+    path = tmp_path / "main.launch.py"
+    path.write_text(LAUNCH_PY)
+    run(load_file(path), {"robot": "bb"})
+    assert not (tmp_path / "__pycache__").exists()
+    import sys
+
+    assert sys.dont_write_bytecode is False  # put back
