@@ -581,3 +581,62 @@ def test_world_names_are_valid_topic_name_parts(given, expected):
     from launcher.sim.world import world_name
 
     assert world_name(given) == expected
+
+
+def _arm_with(plugin: str) -> str:
+    return ARM.replace(
+        "<joint_name>shoulder</joint_name><p_gain>20</p_gain><d_gain>2</d_gain>", plugin)
+
+
+def _run(world, steps: int) -> None:
+    """Step as the sim's loop does: in batches that end where a plugin is due."""
+    while steps > 0:
+        batch = world.physics.steps_until_update(steps)
+        world.physics.step(batch)
+        steps -= batch
+
+
+def _shoulder(world) -> float:
+    return world.data.qpos[world.model.joint("arm/shoulder").qposadr[0]]
+
+
+def test_joint_position_controller_topics_are_gz_sims():
+    """<topic> is used as given (not under /model/…), <sub_topic> goes under the model."""
+    for element, topic in (("<topic>custom/cmd</topic>", "/custom/cmd"),
+                           ("<topic>/abs/cmd</topic>", "/abs/cmd"),
+                           ("<sub_topic>arm_cmd</sub_topic>", "/model/arm/arm_cmd"),
+                           ("<joint_index>0</joint_index>", "/model/arm/joint/shoulder/0/cmd_pos")):
+        world = make_world()
+        world.spawn(world.templates.from_string(_arm_with(
+            f"<joint_name>shoulder</joint_name>{element}")), "arm", [0, 0, 0.5], IDENTITY)
+        assert topic in world.transport.callbacks, (element, list(world.transport.callbacks))
+
+
+def test_joint_position_controller_integral_term_and_offset_are_honoured():
+    """A constant offset force holds the joint off its target by offset/p with no integral
+    term; gz-sim's i_gain (bounded by i_max/i_min) takes that error away."""
+    errors = {}
+    for i_gain in (0.0, 20.0):
+        world = make_world()
+        world.spawn(world.templates.from_string(_arm_with(
+            f"<joint_name>shoulder</joint_name><p_gain>20</p_gain><d_gain>2</d_gain>"
+            f"<i_gain>{i_gain}</i_gain><i_max>10</i_max><i_min>-10</i_min>"
+            f"<cmd_offset>2</cmd_offset>")), "arm", [0, 0, 0.5], IDENTITY)
+        world.transport.callbacks["/model/arm/joint/shoulder/0/cmd_pos"](
+            SimpleNamespace(data=0.5))
+        _run(world, 8000)
+        errors[i_gain] = _shoulder(world) - 0.5
+    assert errors[0.0] == pytest.approx(2 / 20, abs=0.01)
+    assert abs(errors[20.0]) < 0.01
+
+
+def test_joint_position_controller_velocity_commands_are_bounded_by_cmd_max():
+    world = make_world()
+    world.spawn(world.templates.from_string(_arm_with(
+        "<joint_name>shoulder</joint_name><use_velocity_commands>true</use_velocity_commands>"
+        "<cmd_max>0.5</cmd_max>")), "arm", [0, 0, 0.5], IDENTITY)
+    world.transport.callbacks["/model/arm/joint/shoulder/0/cmd_pos"](SimpleNamespace(data=1.0))
+    _run(world, 1000)
+    assert _shoulder(world) == pytest.approx(0.5, abs=0.05)  # 0.5 rad/s for 1 s
+    _run(world, 2000)
+    assert _shoulder(world) == pytest.approx(1.0, abs=0.01)

@@ -1,12 +1,21 @@
 """Joint controllers for arms: a position servo and a velocity servo per joint.
 
-JointPositionController (Gazebo's gz-sim-joint-position-controller-system): `joint_name`,
-`p_gain` (1), `d_gain` (0.1), `cmd_max` / `cmd_min` (force limits), `initial_position`, `topic`
-(default `joint/<joint>/0/cmd_pos`, under `/model/<name>/`), std Double commands in radians
-(or metres). JointVelocityController (gz-sim-joint-controller-system): `joint_name`, `p_gain`
-(velocity gain, 1), `cmd_max` / `cmd_min`, `initial_velocity`, `topic` (default
-`joint/<joint>/cmd_vel`). Each adds one MuJoCo actuator on its joint; a NaN command is
-ignored with one warning.
+JointPositionController (Gazebo's gz-sim-joint-position-controller-system), with gz-sim's
+parameters and defaults: `joint_name`, `joint_index` (0), the PID `p_gain` (1), `i_gain`
+(0.1), `d_gain` (0.01), `i_max` / `i_min` (±1: the integral term's bounds), `cmd_max` /
+`cmd_min` (±1000: the force's), `cmd_offset` (0), `initial_position`, and
+`use_velocity_commands` (move the joint by velocity, at most `cmd_max` per second, instead of
+by force). Topics as gz-sim makes them: `<topic>` as given (relative names are from the
+root), `<sub_topic>` under `/model/<name>/`, else `/model/<name>/joint/<joint>/<index>/cmd_pos`.
+The P and D terms are a MuJoCo position servo (stable at any gain: integrated implicitly);
+the I term and the offset are added to it every I_PERIOD of sim time. (launcher's own short
+names, `joint_position_controller` and `joint_velocity_controller`, keep relative `<topic>`s
+under the model.)
+
+JointVelocityController (gz-sim-joint-controller-system): `joint_name`, `p_gain` (velocity
+gain, 1), `cmd_max` / `cmd_min`, `initial_velocity`, and the same topic rules (default
+`/model/<name>/joint/<joint>/cmd_vel`). Each adds one MuJoCo actuator on its joint; a NaN
+command is ignored with one warning.
 """
 
 from __future__ import annotations
@@ -26,12 +35,19 @@ class Parameters:
     """gz-sim's joint position and joint (velocity) controllers' parameters."""
 
     joint_name: str = attr(Kind.TEXT, "", required=True)
+    joint_index: int = attr(Kind.INT, 0, minimum=0)
     topic: str = attr(Kind.TEXT, "")
-    p_gain: float = attr(Kind.FLOAT, 1.0, minimum=0.0)
-    d_gain: float = attr(Kind.FLOAT, 0.1, minimum=0.0)
-    i_gain: float = attr(Kind.FLOAT, 0.0)  # accepted; MuJoCo's servos have no integral term
-    cmd_max: float = attr(Kind.FLOAT, math.inf)
-    cmd_min: float = attr(Kind.FLOAT, -math.inf)
+    sub_topic: str = attr(Kind.TEXT, "")
+    p_gain: float | None = attr(Kind.FLOAT, None, minimum=0.0)
+    d_gain: float | None = attr(Kind.FLOAT, None, minimum=0.0)
+    i_gain: float | None = attr(Kind.FLOAT, None)
+    i_max: float = attr(Kind.FLOAT, 1.0)
+    i_min: float = attr(Kind.FLOAT, -1.0)
+    cmd_max: float | None = attr(Kind.FLOAT, None)
+    cmd_min: float | None = attr(Kind.FLOAT, None)
+    cmd_offset: float = attr(Kind.FLOAT, 0.0)
+    use_velocity_commands: bool = attr(Kind.BOOL, False)
+    use_force_commands: bool = attr(Kind.BOOL, False)
     initial_position: float = attr(Kind.FLOAT, 0.0)
     initial_velocity: float = attr(Kind.FLOAT, 0.0)
 
@@ -52,7 +68,7 @@ class _JointServo(Plugin):
                                      target=self.in_spec(self.joint),
                                      trntype=mujoco.mjtTrn.mjTRN_JOINT)
         self.configure(actuator)
-        low, high = self.params.cmd_min, self.params.cmd_max
+        low, high = self.limits()
         if math.isfinite(low) or math.isfinite(high):
             actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
             actuator.forcerange = [low if math.isfinite(low) else -1e9,
@@ -66,8 +82,27 @@ class _JointServo(Plugin):
     def initial(self) -> float:
         raise NotImplementedError
 
+    def limits(self) -> tuple[float, float]:
+        p = self.params
+        return (p.cmd_min if p.cmd_min is not None else -math.inf,
+                p.cmd_max if p.cmd_max is not None else math.inf)
+
+    def command_topic(self) -> str:
+        """gz-sim's rule: <topic> as given, <sub_topic> under the model, else the default."""
+        p = self.params
+        if self.config.filename in ("joint_position_controller", "joint_velocity_controller"):
+            # launcher's own short names: relative topics under the model, as before
+            return self.topic(p.topic or None, self.default_topic.format(
+                joint=self.joint, index=p.joint_index))
+        if p.topic:
+            return "/" + p.topic.lstrip("/")
+        if p.sub_topic:
+            return f"/model/{self.entity.name}/{p.sub_topic.lstrip('/')}"
+        return self.topic(None, self.default_topic.format(joint=self.joint,
+                                                          index=p.joint_index))
+
     def load(self) -> None:
-        topic = self.topic(self.params.topic, self.default_topic.format(joint=self.joint))
+        topic = self.command_topic()
         self.subscription = self.sim.transport.subscribe("mujoco_sim/msg/Double", topic,
                                                          self.on_command)
 
@@ -96,15 +131,85 @@ class _JointServo(Plugin):
         self.subscription.destroy()
 
 
+I_PERIOD = 0.002  # s of sim time between updates of the integral term
+
+
 class JointPositionController(_JointServo):
     kind = "position"
-    default_topic = "joint/{joint}/0/cmd_pos"
+    default_topic = "joint/{joint}/{index}/cmd_pos"
 
     def configure(self, actuator: Any) -> None:
-        actuator.set_to_position(kp=self.params.p_gain, kv=self.params.d_gain)
+        p = self.params
+        self.kp = 1.0 if p.p_gain is None else p.p_gain
+        self.ki = 0.1 if p.i_gain is None else p.i_gain
+        kd = 0.01 if p.d_gain is None else p.d_gain
+        self.by_velocity = p.use_velocity_commands
+        if self.by_velocity:  # gz: a velocity of −error/dt, at most cmd_max
+            actuator.set_to_velocity(kv=1.0)  # the gain is set from the joint at bind
+        else:
+            actuator.set_to_position(kp=self.kp, kv=kd)
+        self.integral = 0.0
+        self.last_time: float | None = None
+
+    def limits(self) -> tuple[float, float]:
+        if self.params.use_velocity_commands:  # cmd_max bounds the speed, not the force
+            return -math.inf, math.inf
+        p = self.params
+        return (p.cmd_min if p.cmd_min is not None else -1000.0,
+                p.cmd_max if p.cmd_max is not None else 1000.0)
 
     def initial(self) -> float:
         return self.params.initial_position
+
+    def bind(self, model: Any, data: Any) -> None:
+        super().bind(model, data)
+        joint = model.joint(f"{self.entity.name}/{self.joint}")
+        self.qpos, self.dof = int(joint.qposadr[0]), int(joint.dofadr[0])
+        if self.by_velocity:
+            gain = float(model.dof_M0[self.dof]) / 0.005 or 200.0
+            model.actuator_gainprm[self.index, 0] = gain
+            model.actuator_biasprm[self.index, 2] = -gain
+        self._apply(data)
+
+    def _apply(self, data: Any) -> None:
+        """The servo's target, with the integral term and the offset folded into it."""
+        if self.by_velocity:
+            error = data.qpos[self.qpos] - self.command
+            step = self.model_timestep
+            speed = -error / step
+            top = self.params.cmd_max
+            if top is not None and abs(error) > top * step:
+                speed = math.copysign(top, speed)
+            data.ctrl[self.index] = speed
+            return
+        extra = min(max(self.ki * self.integral, self.params.i_min), self.params.i_max) + \
+            self.params.cmd_offset
+        data.ctrl[self.index] = self.command + (extra / self.kp if self.kp else 0.0)
+
+    def on_command(self, message: Any) -> None:
+        super().on_command(message)
+        if math.isfinite(message.data):
+            self._apply(self.data)
+
+    def post_step(self, model: Any, data: Any) -> None:
+        self.model_timestep = model.opt.timestep
+        now = data.time
+        if self.by_velocity:
+            self._apply(data)
+            self.next_update = now  # every step, as gz's velocity mode
+            return
+        if self.ki:
+            dt = now - self.last_time if self.last_time is not None else 0.0
+            self.last_time = now
+            self.integral += (self.command - data.qpos[self.qpos]) * dt
+            self._apply(data)
+        self.next_update = now + I_PERIOD if self.ki else math.inf
+
+    def reset(self) -> None:
+        self.integral, self.last_time = 0.0, None
+        super().reset()
+
+    model_timestep = 0.001
 
 
 class JointVelocityController(_JointServo):
@@ -112,7 +217,7 @@ class JointVelocityController(_JointServo):
     default_topic = "joint/{joint}/cmd_vel"
 
     def configure(self, actuator: Any) -> None:
-        actuator.set_to_velocity(kv=self.params.p_gain)
+        actuator.set_to_velocity(kv=1.0 if self.params.p_gain is None else self.params.p_gain)
 
     def initial(self) -> float:
         return self.params.initial_velocity
