@@ -42,43 +42,59 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
 
     listing = verb("list_controllers", "the loaded controllers, their type and state",
                    run_list_controllers)
-    for flag in ("--claimed-interfaces", "--required-state-interfaces",
-                 "--required-command-interfaces", "--chained-interfaces",
-                 "--reference-interfaces", "--exported-interfaces"):
-        listing.add_argument(flag, action="store_true")
-    listing.add_argument("-v", "--verbose", action="store_true")
+    for flag, text in (("--claimed-interfaces", "each one's claimed interfaces"),
+                       ("--required-state-interfaces", "the state interfaces each needs"),
+                       ("--required-command-interfaces", "the command interfaces each needs"),
+                       ("--chained-interfaces", "the interfaces each is chained to"),
+                       ("--reference-interfaces", "the references each exports (deprecated "
+                                                  "in ROS 2: --exported-interfaces)"),
+                       ("--exported-interfaces", "the state and reference interfaces each "
+                                                 "exports")):
+        listing.add_argument(flag, action="store_true", help=text)
+    listing.add_argument("-v", "--verbose", action="store_true",
+                         help="update rate and every interface list")
     verb("list_controller_types", "the controller types the manager can load",
          run_list_types)
     verb("list_hardware_interfaces", "the command and state interfaces",
-         run_list_interfaces).add_argument("-v", "--verbose", action="store_true")
+         run_list_interfaces).add_argument("-v", "--verbose", action="store_true",
+                                           help="with each interface's data type")
     verb("list_hardware_components", "the hardware components",
-         run_list_components).add_argument("-v", "--verbose", action="store_true")
+         run_list_components).add_argument("-v", "--verbose", action="store_true",
+                                           help="with the state interfaces and data types")
     load = verb("load_controller", "load a controller", run_load)
-    load.add_argument("controller_name")
-    load.add_argument("param_file", nargs="?")
-    load.add_argument("--set-state", choices=("inactive", "active"))
+    load.add_argument("controller_name", help="the controller (a name in the manager's YAML)")
+    load.add_argument("param_file", nargs="?", help="a YAML file with its parameters")
+    load.add_argument("--set-state", choices=("inactive", "active"),
+                      help="configure it (inactive), or configure and activate it (active)")
     state = verb("set_controller_state", "configure, activate, deactivate or clean up",
                  run_set_state)
-    state.add_argument("controller_name")
-    state.add_argument("state", choices=("unconfigured", "inactive", "active"))
+    state.add_argument("controller_name", help="the controller")
+    state.add_argument("state", choices=("unconfigured", "inactive", "active"),
+                       help="the state to take it to")
     switch = verb("switch_controllers", "activate and deactivate in one step", run_switch)
-    switch.add_argument("--deactivate", nargs="*", default=[])
-    switch.add_argument("--activate", nargs="*", default=[])
+    switch.add_argument("--deactivate", nargs="*", default=[], help="controllers to stop")
+    switch.add_argument("--activate", nargs="*", default=[], help="controllers to start")
     strictness = switch.add_mutually_exclusive_group()
-    strictness.add_argument("--strict", action="store_true")
-    strictness.add_argument("--best-effort", action="store_true")
-    switch.add_argument("--activate-asap", action="store_true")
-    switch.add_argument("--switch-timeout", type=float, default=5.0)
+    strictness.add_argument("--strict", action="store_true",
+                            help="all or nothing (the default)")
+    strictness.add_argument("--best-effort", action="store_true",
+                            help="switch what can be switched")
+    switch.add_argument("--activate-asap", action="store_true",
+                        help="accepted: a switch always lands between two control cycles")
+    switch.add_argument("--switch-timeout", type=float, default=5.0,
+                        help="seconds the manager may take to switch (default 5)")
     unload = verb("unload_controller", "unload a controller", run_unload)
-    unload.add_argument("controller_name")
+    unload.add_argument("controller_name", help="the controller")
     cleanup = verb("cleanup_controller", "clean up a controller", run_cleanup)
-    cleanup.add_argument("controller_name")
+    cleanup.add_argument("controller_name", help="the controller")
     component = verb("set_hardware_component_state", "a hardware component's state",
                      run_component_state)
-    component.add_argument("hardware_component_name")
-    component.add_argument("state", choices=("unconfigured", "inactive", "active"))
+    component.add_argument("hardware_component_name", help="the hardware component")
+    component.add_argument("state", choices=("unconfigured", "inactive", "active"),
+                           help="the state to take it to")
     verb("reload_controller_libraries", "reload the controller libraries", run_reload)\
-        .add_argument("--force-kill", action="store_true")
+        .add_argument("--force-kill", action="store_true",
+                      help="accepted: launcher's controllers are Python classes")
     verb("view_controller_chains", "draw the controllers and their interfaces (graphviz)",
          run_view)
 

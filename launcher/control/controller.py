@@ -117,7 +117,10 @@ class Controller:
         found = _CLASSES.get(type_name)
         if found is None:
             found = _CLASSES[type_name] = registry().message_class(type_name)
-        return found(**fields)
+        try:
+            return found(**fields)
+        except TypeError:  # fields left out: the builder fills them with their defaults
+            return self.node.message(type_name, **fields)
 
     def stamp(self, time: float) -> Any:
         sec, nanosec = split_time(time)

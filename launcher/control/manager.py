@@ -276,6 +276,9 @@ class ControllerManager:
     def _deactivate(self, controller: Controller) -> None:
         try:
             controller.on_deactivate()
+        except Exception as exc:  # it stops all the same
+            self.log.error(f"controller '{controller.name}' raised in on_deactivate: "
+                           f"{type(exc).__name__}: {exc}")
         finally:
             self.resources.release(controller.name)
             controller.commands = []

@@ -74,9 +74,11 @@ class Templates:
             for config, pose in prepared.sensors:  # a site at each sensor's pose on its link
                 site = spec.body(config.link).add_site(name=config.site, group=5)
                 site.pos, site.quat = list(pose.pos), list(pose.quat)
+            # a root link named "world" anchors the robot to the world, as in Gazebo
             return Template(spec, prepared.name, label,
                             [*prepared.plugins, *(c for c, _ in prepared.sensors)],
-                            prepared.friction, warnings=prepared.warnings)
+                            prepared.friction, static=prepared.root_link == "world",
+                            warnings=prepared.warnings)
         if stripped.startswith("<mujoco"):
             source = mjcf.read(text, path, environ=self.environ)
             spec = mjcf.compile_spec(source)

@@ -403,3 +403,184 @@ def test_ros2_control_node_runs_the_manager_on_mock_hardware(ws):
         assert "runs as mock_components/GenericSystem" not in ws.output("mock.out")
     finally:
         assert stop(proc) == 130
+
+
+def wheel(name: str, parent: str, xyz: str, kind: str = "continuous", radius: float = 0.15,
+          axis: str = "0 0 1", rpy: str = "-1.5707963 0 0") -> str:
+    return f"""<link name="{name}"><collision><geometry><sphere radius="{radius}"/></geometry>
+  </collision><inertial><mass value="0.5"/><inertia ixx="0.005" iyy="0.005" izz="0.005"
+  ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="{name}_joint" type="{kind}"><parent link="{parent}"/><child link="{name}"/>
+  <origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="{axis}"/>
+  <limit lower="-0.8" upper="0.8" effort="50" velocity="5"/></joint>"""
+
+
+def pivot(name: str, xyz: str) -> str:
+    """A steering knuckle: a small body turning about z."""
+    return f"""<link name="{name}"><inertial><mass value="0.2"/><inertia ixx="0.001"
+  iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="{name}_joint" type="revolute"><parent link="chassis"/><child link="{name}"/>
+  <origin xyz="{xyz}"/><axis xyz="0 0 1"/>
+  <limit lower="-0.8" upper="0.8" effort="50" velocity="5"/></joint>"""
+
+
+def base(name: str, parts: str, control: str, yaml: str) -> str:
+    return f"""<?xml version="1.0"?><robot name="{name}">
+  <link name="chassis"><collision><origin xyz="0 0 0.4"/><geometry><box size="1.2 0.6 0.1"/>
+  </geometry></collision><inertial><origin xyz="0 0 0.25"/><mass value="4"/><inertia
+  ixx="0.2" iyy="0.5" izz="0.6" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  {parts}
+  <ros2_control name="{name}_hw" type="system"><hardware>
+  <plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>{control}</ros2_control>
+  <gazebo><plugin filename="ign_ros2_control-system"
+  name="ign_ros2_control::IgnitionROS2ControlPlugin"><parameters>{yaml}</parameters>
+  <ros><namespace>{name}</namespace></ros></plugin></gazebo></robot>"""
+
+
+def joint_block(name: str, command: str, *states: str) -> str:
+    return f'<joint name="{name}"><command_interface name="{command}"/>' + "".join(
+        f'<state_interface name="{s}"/>' for s in states) + "</joint>"
+
+
+def test_steered_bases_grippers_and_sensor_broadcasters_in_the_sim(ws):
+    ws.own_bus()
+    tri_yaml = ws.write("tricycle.yaml", """
+    /tricycle/controller_manager:
+      ros__parameters:
+        update_rate: 100
+        tricycle_controller: {type: tricycle_controller/TricycleController}
+    /tricycle/tricycle_controller:
+      ros__parameters:
+        traction_joint_name: front_wheel_joint
+        steering_joint_name: knuckle_joint
+        wheel_radius: 0.15
+        wheelbase: 0.8
+        base_frame_id: chassis
+    """)
+    tricycle = base("tricycle", pivot("knuckle", "0.4 0 0.15")
+                    + wheel("front_wheel", "knuckle", "0 0 0")
+                    + wheel("left_rear", "chassis", "-0.4 0.35 0.15")
+                    + wheel("right_rear", "chassis", "-0.4 -0.35 0.15"),
+                    joint_block("front_wheel_joint", "velocity", "velocity", "position")
+                    + joint_block("knuckle_joint", "position", "position"), tri_yaml)
+    ack_yaml = ws.write("ackermann.yaml", """
+    /car/controller_manager:
+      ros__parameters:
+        update_rate: 100
+        ackermann: {type: ackermann_steering_controller/AckermannSteeringController}
+    /car/ackermann:
+      ros__parameters:
+        rear_wheels_names: [left_rear_joint, right_rear_joint]
+        front_wheels_names: [left_knuckle_joint, right_knuckle_joint]
+        wheelbase: 0.8
+        front_wheel_track: 0.7
+        rear_wheel_track: 0.7
+        front_wheels_radius: 0.15
+        rear_wheels_radius: 0.15
+        base_frame_id: chassis
+    """)
+    car = base("car", pivot("left_knuckle", "0.4 0.35 0.15") + pivot("right_knuckle",
+                                                                      "0.4 -0.35 0.15")
+               + wheel("left_front", "left_knuckle", "0 0 0")
+               + wheel("right_front", "right_knuckle", "0 0 0")
+               + wheel("left_rear", "chassis", "-0.4 0.35 0.15")
+               + wheel("right_rear", "chassis", "-0.4 -0.35 0.15"),
+               joint_block("left_rear_joint", "velocity", "velocity", "position")
+               + joint_block("right_rear_joint", "velocity", "velocity", "position")
+               + joint_block("left_knuckle_joint", "position", "position")
+               + joint_block("right_knuckle_joint", "position", "position"), ack_yaml)
+    hand_yaml = ws.write("hand.yaml", """
+    /hand/controller_manager:
+      ros__parameters:
+        update_rate: 200
+        gripper: {type: position_controllers/GripperActionController}
+        parallel: {type: parallel_gripper_action_controller/GripperActionController}
+        imu: {type: imu_sensor_broadcaster/IMUSensorBroadcaster}
+        wrench: {type: force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster}
+    /hand/gripper:
+      ros__parameters: {joint: finger_a_joint}
+    /hand/parallel:
+      ros__parameters: {joint: finger_b_joint}
+    /hand/imu:
+      ros__parameters: {sensor_name: palm_imu, frame_id: palm}
+    /hand/wrench:
+      ros__parameters: {sensor_name: wrist_ft, frame_id: palm}
+    """)
+    finger = """<link name="finger_{s}"><inertial><mass value="0.1"/><inertia ixx="0.001"
+      iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+      <joint name="finger_{s}_joint" type="prismatic"><parent link="palm"/>
+      <child link="finger_{s}"/><axis xyz="0 1 0"/>
+      <limit lower="0" upper="0.05" effort="20" velocity="0.5"/></joint>"""
+    imu = [f"orientation.{a}" for a in "xyzw"] + [f"angular_velocity.{a}" for a in "xyz"] + \
+        [f"linear_acceleration.{a}" for a in "xyz"]
+    ft = [f"{p}.{a}" for p in ("force", "torque") for a in "xyz"]
+    hand = f"""<?xml version="1.0"?><robot name="hand"><link name="world"/>
+      <link name="palm"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01"
+      ixy="0" ixz="0" iyz="0"/></inertial></link>
+      <joint name="wrist" type="fixed"><parent link="world"/><child link="palm"/>
+      <origin xyz="0 0 1"/></joint>
+      {finger.format(s="a")}{finger.format(s="b")}
+      <gazebo reference="palm"><sensor name="palm_imu" type="imu">
+        <update_rate>100</update_rate></sensor></gazebo>
+      <gazebo reference="finger_a_joint"><sensor name="wrist_ft" type="force_torque">
+        <update_rate>100</update_rate></sensor></gazebo>
+      <ros2_control name="hand_hw" type="system"><hardware>
+      <plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
+      {joint_block("finger_a_joint", "position", "position", "velocity")}
+      {joint_block("finger_b_joint", "position", "position", "velocity")}
+      <sensor name="palm_imu">{"".join(f'<state_interface name="{i}"/>' for i in imu)}</sensor>
+      <sensor name="wrist_ft">{"".join(f'<state_interface name="{i}"/>' for i in ft)}</sensor>
+      </ros2_control>
+      <gazebo><plugin filename="libgazebo_ros2_control.so" name="gazebo_ros2_control">
+      <parameters>{hand_yaml}</parameters><ros><namespace>/hand</namespace></ros></plugin>
+      </gazebo></robot>"""
+    for name, text in (("tricycle", tricycle), ("car", car), ("hand", hand)):
+        ws.write(f"{name}.urdf", text)
+    proc = ws.start("gz", "sim", "-r", "-s", "-v", "3", "empty.sdf", output="sim.out")
+    try:
+        ws.wait_for_output("running", 60, "sim.out")
+        for name, y in (("tricycle", "0"), ("car", "5"), ("hand", "-5")):
+            done = ws.run("run", "ros_gz_sim", "create", "-file", f"{name}.urdf", "-name", name,
+                          "-y", y, "-z", "0.02")
+            assert done.returncode == 0, done.stderr
+        for manager, names in (("/tricycle/controller_manager", ["tricycle_controller"]),
+                               ("/car/controller_manager", ["ackermann"]),
+                               ("/hand/controller_manager",
+                                ["gripper", "parallel", "imu", "wrench"])):
+            done = spawner(ws, *names, "-c", manager)
+            assert done.returncode == 0, done.stdout + done.stderr
+        # the sensors, through their broadcasters
+        imu_out = field(ws, "/hand/imu/imu", "sensor_msgs/msg/Imu", "linear_acceleration.z")
+        assert imu_out[0] == pytest.approx(9.8, abs=0.3)
+        frame = ws.run("topic", "echo", "/hand/imu/imu", "sensor_msgs/msg/Imu", "--once",
+                       "--field", "header.frame_id").stdout
+        assert "palm" in frame
+        force = field(ws, "/hand/wrench/wrench", "geometry_msgs/msg/WrenchStamped",
+                      "wrench.force")
+        assert len(force) == 3 and any(abs(v) > 0.1 for v in force), force  # holds the finger
+        # grippers: GripperCommand and ParallelGripperCommand goals
+        goal = ws.run("action", "send_goal", "/hand/gripper/gripper_cmd",
+                      "control_msgs/action/GripperCommand",
+                      "{command: {position: 0.03, max_effort: 10.0}}", timeout=60)
+        assert "SUCCEEDED" in goal.stdout and "reached_goal: true" in goal.stdout, goal.stdout
+        goal = ws.run("action", "send_goal", "/hand/parallel/gripper_cmd",
+                      "control_msgs/action/ParallelGripperCommand",
+                      "{command: {name: [finger_b_joint], position: [0.02]}}", timeout=60)
+        assert "SUCCEEDED" in goal.stdout and "reached_goal: true" in goal.stdout, goal.stdout
+        refused = ws.run("action", "send_goal", "/hand/gripper/gripper_cmd",
+                         "control_msgs/action/GripperCommand",
+                         "{command: {position: .nan}}", timeout=60)
+        assert "rejected" in (refused.stdout + refused.stderr).lower()
+        # the tricycle and the car drive forward and turn left
+        for topic, command, odom in (
+                ("/tricycle/tricycle_controller/cmd_vel", "geometry_msgs/msg/TwistStamped",
+                 "/tricycle/tricycle_controller/odom"),
+                ("/car/ackermann/reference", "geometry_msgs/msg/TwistStamped",
+                 "/car/ackermann/odometry")):
+            sent = ws.run("topic", "pub", "-r", "20", "-t", "40", topic, command,
+                          "{twist: {linear: {x: 0.6}, angular: {z: 0.3}}}", timeout=30)
+            assert sent.returncode == 0, sent.stderr
+            x, y = field(ws, odom, "nav_msgs/msg/Odometry", "pose.pose.position")[:2]
+            assert x > 0.5 and y > 0.05, (odom, x, y)
+    finally:
+        assert stop(proc) in (0, 130)

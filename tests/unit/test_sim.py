@@ -640,3 +640,16 @@ def test_joint_position_controller_velocity_commands_are_bounded_by_cmd_max():
     assert _shoulder(world) == pytest.approx(0.5, abs=0.05)  # 0.5 rad/s for 1 s
     _run(world, 2000)
     assert _shoulder(world) == pytest.approx(1.0, abs=0.01)
+
+
+def test_a_urdf_rooted_at_a_world_link_is_anchored_as_gazebo_anchors_it(world):
+    """Gazebo fixes a URDF whose root link is `world` to the world: no free joint, no fall."""
+    anchored = """<robot name="post"><link name="world"/>
+      <link name="top"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1"
+      ixy="0" ixz="0" iyz="0"/></inertial></link>
+      <joint name="fix" type="fixed"><parent link="world"/><child link="top"/>
+      <origin xyz="0 0 1"/></joint></robot>"""
+    world.spawn(world.templates.from_string(anchored), "post", [2, 0, 0], IDENTITY)
+    world.physics.step(500)
+    assert list(world.data.xpos[world.model.body("post/top").id]) == pytest.approx([2, 0, 1])
+    assert all(world.model.jnt_type[j] != 0 for j in range(world.model.njnt))  # none free

@@ -21,6 +21,18 @@ TYPES = {
     "effort_controllers/JointGroupEffortController":
         f"{_HERE}.forward_command:JointGroupEffortController",
     "diff_drive_controller/DiffDriveController": f"{_HERE}.diff_drive:DiffDriveController",
+    "tricycle_controller/TricycleController": f"{_HERE}.steering:TricycleController",
+    "ackermann_steering_controller/AckermannSteeringController":
+        f"{_HERE}.steering:AckermannSteeringController",
+    "imu_sensor_broadcaster/IMUSensorBroadcaster":
+        f"{_HERE}.sensor_broadcasters:IMUSensorBroadcaster",
+    "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster":
+        f"{_HERE}.sensor_broadcasters:ForceTorqueSensorBroadcaster",
+    "position_controllers/GripperActionController": f"{_HERE}.gripper:GripperActionController",
+    "effort_controllers/GripperActionController":
+        f"{_HERE}.gripper:EffortGripperActionController",
+    "parallel_gripper_action_controller/GripperActionController":
+        f"{_HERE}.gripper:ParallelGripperActionController",
 }
 
 

@@ -77,6 +77,7 @@ class SimSystem(Component):
                 inertia = float(model.dof_M0[dof]) or 1.0
                 self.gain[joint.name] = inertia / SERVO_TIME
         self.by_name = {row[0]: row for row in self.rows}
+        self.sensors = [(sensor, None) for sensor in self.info.sensors]
         self.mimics = [(self.by_name[j.name], self.by_name.get(j.mimic[0]), j.mimic[1],
                         j.mimic[2]) for j in self.joints if j.mimic]
         for name in self.actuated:
@@ -123,7 +124,37 @@ class SimSystem(Component):
                     (self.modes[joint].add if add else self.modes[joint].discard)(kind)
                     self._apply_mode(joint)
 
+    def _sensor_plugin(self, name: str) -> Any:
+        for plugin in self.plugin.entity.plugins:
+            config = plugin.config
+            if getattr(config, "kind", None) is not None and config.name == name:
+                return plugin
+        return None
+
+    def _read_sensors(self) -> None:
+        """A `<sensor>` block's state interfaces from the robot's sim sensor of that name
+        (`orientation.x`, `angular_velocity.z`, `force.y`, …), as gz_ros2_control reads them."""
+        for index, (sensor, plugin) in enumerate(self.sensors):
+            if plugin is None:
+                plugin = self._sensor_plugin(sensor.name)
+                if plugin is None:
+                    if not getattr(self, "_warned_sensor", False):
+                        self._warned_sensor = True
+                        self.plugin.sim.transport.logger.warning(
+                            f"{self.info.where}: ros2_control sensor '{sensor.name}' has no sim "
+                            f"sensor of that name on the robot (a <gazebo reference=…><sensor "
+                            f"name=\"{sensor.name}\">); its state interfaces stay 0")
+                    continue
+                self.sensors[index] = (sensor, plugin)
+            message = plugin.measure(self.model, self.data)
+            for interface in sensor.state_interfaces:
+                value = _field(message, interface.name)
+                if value is not None:
+                    self.states[f"{sensor.name}/{interface.name}"].value = value
+
     def read(self, time: float, period: float) -> None:
+        if self.sensors:
+            self._read_sensors()
         data = self.data
         qpos, qvel, force = data.qpos, data.qvel, data.qfrc_actuator
         for row in self.rows:
@@ -162,6 +193,19 @@ class SimSystem(Component):
             if leader is not None and mimic[3] >= 0:
                 error = qpos[mimic[1]] - (qpos[leader[1]] * multiplier + offset)
                 ctrl[mimic[3]] = -error * rate
+
+
+def _field(message: Any, name: str) -> float | None:
+    """`orientation.x` of an IMU message, `force.y` of a wrench (under `wrench`)."""
+    for root in (message, getattr(message, "wrench", None)):
+        value = root
+        for part in name.split("."):
+            value = getattr(value, part, None)
+            if value is None:
+                break
+        if isinstance(value, float | int):
+            return float(value)
+    return None
 
 
 def _clamped(handle: Any) -> float | None:

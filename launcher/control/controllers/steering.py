@@ -1,0 +1,212 @@
+"""Steered bases, as ros2_controllers' tricycle_controller and steering_controllers_library's
+ackermann_steering_controller.
+
+tricycle_controller/TricycleController: `traction_joint_name` (velocity), `steering_joint_name`
+(position), `wheel_radius`, `wheelbase`, `odom_frame_id`, `base_frame_id`, `enable_odom_tf`,
+`cmd_vel_timeout` (milliseconds, 500, as tricycle_controller has it), `use_stamped_vel`,
+`traction.max_velocity` and `steering.max_position` limits; `~/cmd_vel` (TwistStamped),
+`~/odom`, `/tf`. A turn in place points the wheel sideways, as tricycle_controller does.
+
+ackermann_steering_controller/AckermannSteeringController: `rear_wheels_names` (velocity),
+`front_wheels_names` (position), `wheelbase`, `front_wheel_track`, `rear_wheel_track`,
+`front_wheels_radius`, `rear_wheels_radius`, `open_loop`, `position_feedback`,
+`reference_timeout` (s), `odom_frame_id`, `base_frame_id`, `enable_odom_tf`; `~/reference`
+(TwistStamped), `~/odometry`, `~/tf_odometry`. Each front wheel is steered to its own
+Ackermann angle and each rear wheel turns at its own radius' speed.
+
+A command holding NaN or an infinity is refused (one warning); the last good one stands.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from launcher.control.controller import Controller, ControllerError
+
+
+class _Steered(Controller):
+    """What both share: a command with a timeout, odometry integrated from (v, w)."""
+
+    command_topic = "~/cmd_vel"
+    odom_topic, tf_topic = "~/odom", "/tf"
+
+    def _common(self, timeout: float) -> None:
+        p = self.param
+        self.odom_frame = str(p("odom_frame_id", "odom", str))
+        self.base_frame = str(p("base_frame_id", "base_link", str))
+        self.tf_enabled = bool(p("enable_odom_tf", True, bool))
+        self.timeout = timeout
+        stamped = bool(p("use_stamped_vel", True, bool))
+        self.cmd_sub = self.node.create_subscription(
+            "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist",
+            self.command_topic, (lambda m: self._take(m.twist)) if stamped else self._take, 10)
+        self.odom_pub = self.node.create_publisher("nav_msgs/msg/Odometry", self.odom_topic, 10)
+        self.tf_pub = self.node.create_publisher("tf2_msgs/msg/TFMessage", self.tf_topic, 10)
+
+    def on_cleanup(self) -> None:
+        for entity in (self.cmd_sub, self.odom_pub, self.tf_pub):
+            entity.destroy()
+
+    def _reset(self) -> None:
+        self.target = (0.0, 0.0)
+        self.last_command = -math.inf
+        self.now = self.x = self.y = self.heading = self.v = self.w = 0.0
+
+    def _take(self, twist: Any) -> None:
+        if not self.is_active:
+            return
+        values = [twist.linear.x, twist.angular.z]
+        if self.refuse_non_finite(values, f"a command on {self.command_topic}"):
+            return
+        self.target, self.last_command = (values[0], values[1]), self.now
+
+    def _wanted(self, time: float) -> tuple[float, float]:
+        self.now = time
+        if self.timeout > 0 and time - self.last_command > self.timeout:
+            self.target = (0.0, 0.0)
+        return self.target
+
+    def _integrate(self, v: float, w: float, period: float) -> None:
+        self.v, self.w = v, w
+        heading = self.heading + w * period / 2
+        self.x += v * period * math.cos(heading)
+        self.y += v * period * math.sin(heading)
+        self.heading = math.atan2(math.sin(self.heading + w * period),
+                                  math.cos(self.heading + w * period))
+
+    def _publish(self, time: float) -> None:
+        odom = self.odom_pub.get_subscription_count() > 0
+        tf = self.tf_enabled and self.tf_pub.get_subscription_count() > 0
+        if not (odom or tf):
+            return
+        make = self.make
+        header = self.header(time, self.odom_frame)
+        quat = make("geometry_msgs/msg/Quaternion", x=0.0, y=0.0,
+                    z=math.sin(self.heading / 2), w=math.cos(self.heading / 2))
+        if odom:
+            self.odom_pub.publish(make(
+                "nav_msgs/msg/Odometry", header=header, child_frame_id=self.base_frame,
+                pose=make("geometry_msgs/msg/PoseWithCovariance", pose=make(
+                    "geometry_msgs/msg/Pose", position=make(
+                        "geometry_msgs/msg/Point", x=self.x, y=self.y, z=0.0),
+                    orientation=quat)),
+                twist=make("geometry_msgs/msg/TwistWithCovariance", twist=make(
+                    "geometry_msgs/msg/Twist",
+                    linear=make("geometry_msgs/msg/Vector3", x=self.v, y=0.0, z=0.0),
+                    angular=make("geometry_msgs/msg/Vector3", x=0.0, y=0.0, z=self.w)))))
+        if tf:
+            self.tf_pub.publish(make("tf2_msgs/msg/TFMessage", transforms=[make(
+                "geometry_msgs/msg/TransformStamped", header=header,
+                child_frame_id=self.base_frame, transform=make(
+                    "geometry_msgs/msg/Transform", translation=make(
+                        "geometry_msgs/msg/Vector3", x=self.x, y=self.y, z=0.0),
+                    rotation=quat))]))
+
+
+class TricycleController(_Steered):
+    def on_init(self) -> None:
+        self.traction = str(self.param("traction_joint_name", kind=str, required=True))
+        self.steering = str(self.param("steering_joint_name", kind=str, required=True))
+
+    def command_interfaces(self) -> list[str]:
+        return [f"{self.traction}/velocity", f"{self.steering}/position"]
+
+    def state_interfaces(self) -> list[str]:
+        return [f"{self.traction}/velocity", f"{self.steering}/position"]
+
+    def on_configure(self) -> None:
+        p = self.param
+        self.radius = float(p("wheel_radius", kind=(int, float), required=True))
+        self.wheelbase = float(p("wheelbase", kind=(int, float), required=True))
+        if self.radius <= 0 or self.wheelbase <= 0:
+            raise ControllerError(self._at(f"controller '{self.name}': wheel_radius and "
+                                           f"wheelbase must be positive"))
+        self.max_speed = float(p("traction.max_velocity", math.inf, (int, float)))
+        self.max_angle = float(p("steering.max_position", math.pi / 2, (int, float)))
+        self._common(float(p("cmd_vel_timeout", 500, (int, float))) / 1000.0)
+
+    def on_activate(self) -> None:
+        self._reset()
+        self.speed_state = self.states[f"{self.traction}/velocity"]
+        self.angle_state = self.states[f"{self.steering}/position"]
+
+    def update(self, time: float, period: float) -> None:
+        v, w = self._wanted(time)
+        if v == 0 and w != 0:  # in place: the wheel sideways
+            angle = math.copysign(math.pi / 2, w)
+            speed = abs(w) * self.wheelbase / self.radius
+        elif v != 0:
+            angle = math.atan(w * self.wheelbase / v)
+            speed = v / (self.radius * math.cos(angle))
+        else:
+            angle = speed = 0.0
+        angle = max(-self.max_angle, min(self.max_angle, angle))
+        speed = max(-self.max_speed, min(self.max_speed, speed))
+        self.commands[0].value, self.commands[1].value = speed, angle
+        measured, steer = self.speed_state.value * self.radius, self.angle_state.value
+        self._integrate(measured * math.cos(steer), measured * math.sin(steer) / self.wheelbase,
+                        period)
+        self._publish(time)
+
+
+class AckermannSteeringController(_Steered):
+    command_topic = "~/reference"
+    odom_topic, tf_topic = "~/odometry", "~/tf_odometry"
+
+    def on_init(self) -> None:
+        self.rear = self.names("rear_wheels_names")
+        self.front = self.names("front_wheels_names")
+        if len(self.rear) != 2 or len(self.front) != 2:
+            raise ControllerError(self._at(f"controller '{self.name}': an Ackermann base has "
+                                           f"two rear and two front wheels (left, right)"))
+        self.position_feedback = bool(self.param("position_feedback", False, bool))
+
+    def command_interfaces(self) -> list[str]:
+        return [f"{w}/velocity" for w in self.rear] + [f"{w}/position" for w in self.front]
+
+    def state_interfaces(self) -> list[str]:
+        kind = "position" if self.position_feedback else "velocity"
+        return [f"{w}/{kind}" for w in self.rear] + [f"{w}/position" for w in self.front]
+
+    def on_configure(self) -> None:
+        p = self.param
+        self.wheelbase = float(p("wheelbase", kind=(int, float), required=True))
+        self.front_track = float(p("front_wheel_track", kind=(int, float), required=True))
+        self.rear_track = float(p("rear_wheel_track", kind=(int, float), required=True))
+        self.rear_radius = float(p("rear_wheels_radius", kind=(int, float), required=True))
+        self.open_loop = bool(p("open_loop", False, bool))
+        self._common(float(p("reference_timeout", 1.0, (int, float))))
+
+    def on_activate(self) -> None:
+        self._reset()
+        self.previous: list[float] | None = None
+
+    def update(self, time: float, period: float) -> None:
+        v, w = self._wanted(time)
+        half_front, half_rear = self.front_track / 2, self.rear_track / 2
+        if abs(w) < 1e-9 or v == 0:
+            angles = [0.0, 0.0]
+            speeds = [v / self.rear_radius] * 2
+        else:
+            radius = v / w  # of the base's centre of the rear axle
+            angles = [math.atan(self.wheelbase / (radius - half_front)),
+                      math.atan(self.wheelbase / (radius + half_front))]
+            speeds = [w * (radius - half_rear) / self.rear_radius,
+                      w * (radius + half_rear) / self.rear_radius]
+        for handle, value in zip(self.commands, speeds + angles, strict=True):
+            handle.value = value
+        if self.open_loop:
+            self._integrate(v, w, period)
+        else:
+            rear = [self.states[n].value for n in self.state_interfaces()[:2]]
+            if self.position_feedback:
+                if self.previous is None:
+                    self.previous = rear
+                turned = [(a - b) / period if period > 0 else 0.0
+                          for a, b in zip(rear, self.previous, strict=True)]
+                self.previous = rear
+                rear = turned
+            left, right = (s * self.rear_radius for s in rear)
+            self._integrate((left + right) / 2, (right - left) / self.rear_track, period)
+        self._publish(time)
