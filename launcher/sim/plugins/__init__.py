@@ -72,6 +72,14 @@ BUILTIN = {
         "launcher.sim.plugins.joint_controller:JointVelocityController",
     "gz::sim::systems::JointController":
         "launcher.sim.plugins.joint_controller:JointVelocityController",
+    "gz-sim-apply-joint-force-system": "launcher.sim.plugins.motion:ApplyJointForce",
+    "gz::sim::systems::ApplyJointForce": "launcher.sim.plugins.motion:ApplyJointForce",
+    "gz-sim-velocity-control-system": "launcher.sim.plugins.motion:VelocityControl",
+    "gz::sim::systems::VelocityControl": "launcher.sim.plugins.motion:VelocityControl",
+    "gz-sim-odometry-publisher-system": "launcher.sim.plugins.pose_systems:OdometryPublisher",
+    "gz::sim::systems::OdometryPublisher": "launcher.sim.plugins.pose_systems:OdometryPublisher",
+    "gz-sim-pose-publisher-system": "launcher.sim.plugins.pose_systems:PosePublisher",
+    "gz::sim::systems::PosePublisher": "launcher.sim.plugins.pose_systems:PosePublisher",
     "gz_ros2_control::GazeboSimROS2ControlPlugin":
         "launcher.sim.plugins.ros2_control:GzRos2Control",
     "ign_ros2_control::IgnitionROS2ControlPlugin":
@@ -140,7 +148,8 @@ class Plugin:
         """The entity's joints in `spec`, without the prefix (of `types` if given)."""
         prefix = self.spec_prefix
         return [j.name[len(prefix):] for j in spec.joints
-                if j.name.startswith(prefix) and (not types or j.type in types)]
+                if j.name.startswith(prefix) and j.name != prefix and
+                (not types or j.type in types)]
 
     # --- configuration ---------------------------------------------------------------------
     def text(self, name: str, default: str | None = None) -> str | None:
