@@ -117,3 +117,23 @@ def test_bad_velocity_control_values_are_located():
         spawn(world, '<plugin filename="gz-sim-velocity-control-system" '
                      'name="gz::sim::systems::VelocityControl"><initial_linear>1 two 3'
                      '</initial_linear></plugin>')
+
+
+@pytest.mark.parametrize("force_mode", [False, True])
+def test_joint_controller_holds_a_speed_by_velocity_or_by_a_force_pid(force_mode):
+    extra = "<use_force_commands>true</use_force_commands><p_gain>0.2</p_gain>" \
+            "<i_gain>2</i_gain><i_max>5</i_max><i_min>-5</i_min><cmd_max>0.1</cmd_max>" \
+        if force_mode else ""
+    world = make_world()
+    spawn(world, f'<plugin filename="gz-sim-joint-controller-system" '
+                 f'name="gz::sim::systems::JointController"><joint_name>flag_hinge'
+                 f'</joint_name><topic>flag_speed</topic>{extra}</plugin>', z=0.11)
+    world.transport.callbacks["/flag_speed"](SimpleNamespace(data=2.0))
+    run(world, 0.05)
+    early = hinge_speed(world)
+    run(world, 3.0)
+    assert hinge_speed(world) == pytest.approx(2.0, abs=0.05)
+    if force_mode:  # at most 0.1 N·m on the flag (0.01 kg·m²): 10 rad/s²
+        assert early < 1.0
+    else:  # the speed is held at once, as gz's velocity command holds it
+        assert early == pytest.approx(2.0, abs=0.1)

@@ -12,10 +12,11 @@ the I term and the offset are added to it every I_PERIOD of sim time. (launcher'
 names, `joint_position_controller` and `joint_velocity_controller`, keep relative `<topic>`s
 under the model.)
 
-JointVelocityController (gz-sim-joint-controller-system): `joint_name`, `p_gain` (velocity
-gain, 1), `cmd_max` / `cmd_min`, `initial_velocity`, and the same topic rules (default
-`/model/<name>/joint/<joint>/cmd_vel`). Each adds one MuJoCo actuator on its joint; a NaN
-command is ignored with one warning.
+JointVelocityController (gz-sim-joint-controller-system): `joint_name`, `initial_velocity`,
+velocity mode (the joint held at the commanded speed) or `use_force_commands` (a PID on the
+speed error: `p_gain`, `i_gain`, `i_max`, `i_min`, `cmd_max`, `cmd_min`, `cmd_offset`), and the
+same topic rules (default `/model/<name>/joint/<joint>/cmd_vel`). Each adds one MuJoCo
+actuator on its joint; a NaN command is ignored with one warning.
 """
 
 from __future__ import annotations
@@ -213,11 +214,72 @@ class JointPositionController(_JointServo):
 
 
 class JointVelocityController(_JointServo):
+    """gz-sim's JointController. Velocity mode (the default under Gazebo's names): the joint
+    is held at the commanded speed (gz: JointVelocityCmd), by a servo whose gain comes from the
+    joint's inertia, so it settles in about SERVO_TIME. Force mode (`use_force_commands`): a
+    PID on the speed error, `p_gain` (1), `i_gain` (0) within `i_min`/`i_max`, `cmd_max` /
+    `cmd_min` (±1000) bounding the force, `cmd_offset`. launcher's own short name keeps a
+    servo of gain `p_gain`."""
+
     kind = "velocity"
     default_topic = "joint/{joint}/cmd_vel"
 
     def configure(self, actuator: Any) -> None:
-        actuator.set_to_velocity(kv=1.0 if self.params.p_gain is None else self.params.p_gain)
+        p = self.params
+        self.short_name = self.config.filename == "joint_velocity_controller"
+        self.force_mode = p.use_force_commands and not self.short_name
+        self.kv = 1.0 if p.p_gain is None else p.p_gain
+        self.ki = (p.i_gain or 0.0) if self.force_mode else 0.0
+        self.from_inertia = not (self.force_mode or self.short_name)
+        actuator.set_to_velocity(kv=self.kv)
+        self.integral, self.last_time = 0.0, None
+
+    def limits(self) -> tuple[float, float]:
+        p = self.params
+        if not self.force_mode:
+            return super().limits()
+        return (p.cmd_min if p.cmd_min is not None else -1000.0,
+                p.cmd_max if p.cmd_max is not None else 1000.0)
 
     def initial(self) -> float:
         return self.params.initial_velocity
+
+    def bind(self, model: Any, data: Any) -> None:
+        super().bind(model, data)
+        joint = model.joint(f"{self.entity.name}/{self.joint}")
+        self.dof = int(joint.dofadr[0])
+        if self.from_inertia:
+            self.kv = float(model.dof_M0[self.dof]) / SERVO_TIME or self.kv
+            model.actuator_gainprm[self.index, 0] = self.kv
+            model.actuator_biasprm[self.index, 2] = -self.kv
+        self._apply(data)
+
+    def _apply(self, data: Any) -> None:
+        extra = 0.0
+        if self.force_mode:
+            extra = min(max(self.ki * self.integral, self.params.i_min), self.params.i_max) + \
+                self.params.cmd_offset
+        data.ctrl[self.index] = self.command + (extra / self.kv if self.kv else 0.0)
+
+    def on_command(self, message: Any) -> None:
+        super().on_command(message)
+        if math.isfinite(message.data):
+            self._apply(self.data)
+
+    def post_step(self, model: Any, data: Any) -> None:
+        if not (self.ki or self.params.cmd_offset) or not self.force_mode:
+            self.next_update = math.inf
+            return
+        now = data.time
+        dt = now - self.last_time if self.last_time is not None else 0.0
+        self.last_time = now
+        self.integral += (self.command - data.qvel[self.dof]) * dt
+        self._apply(data)
+        self.next_update = now + I_PERIOD
+
+    def reset(self) -> None:
+        self.integral, self.last_time = 0.0, None
+        super().reset()
+
+
+SERVO_TIME = 0.005  # s: how fast a velocity servo with a gain from the joint's inertia settles
