@@ -137,3 +137,52 @@ def test_joint_controller_holds_a_speed_by_velocity_or_by_a_force_pid(force_mode
         assert early < 1.0
     else:  # the speed is held at once, as gz's velocity command holds it
         assert early == pytest.approx(2.0, abs=0.1)
+
+
+def _link(name: str, pose: str, shape: str = "", mass: float = 1.0) -> str:
+    collision = f'<collision name="c"><geometry>{shape}</geometry></collision>' if shape else ""
+    return f"""<link name="{name}"><pose>{pose}</pose><inertial><mass>{mass}</mass><inertia>
+      <ixx>0.02</ixx><iyy>0.02</iyy><izz>0.02</izz></inertia></inertial>{collision}</link>"""
+
+
+def _joint(name: str, kind: str, parent: str, child: str, axis: str) -> str:
+    return f"""<joint name="{name}" type="{kind}"><parent>{parent}</parent><child>{child}</child>
+      <axis><xyz>{axis}</xyz></axis></joint>"""
+
+
+CAR = """<?xml version="1.0"?><sdf version="1.9"><model name="car">
+  {chassis}{parts}
+  <plugin filename="gz-sim-ackermann-steering-system" name="gz::sim::systems::AckermannSteering">
+    <left_joint>rl</left_joint><right_joint>rr</right_joint>
+    <left_steering_joint>fl_steer</left_steering_joint>
+    <right_steering_joint>fr_steer</right_steering_joint>
+    <kingpin_width>0.9</kingpin_width><steering_limit>0.6</steering_limit>
+    <wheel_base>1.2</wheel_base><wheel_separation>1.0</wheel_separation>
+    <wheel_radius>0.2</wheel_radius><steer_p_gain>20</steer_p_gain>
+  </plugin>
+</model></sdf>"""
+
+
+def test_ackermann_steering_drives_and_turns_the_way_it_is_told():
+    sphere = "<sphere><radius>0.2</radius></sphere>"
+    parts = ""
+    for side, y in (("l", 0.5), ("r", -0.5)):
+        parts += _link(f"f{side}_knuckle", f"0.6 {y} 0.2 0 0 0", mass=0.2)
+        parts += _joint(f"f{side}_steer", "revolute", "chassis", f"f{side}_knuckle", "0 0 1")
+        parts += _link(f"f{side}_wheel", f"0.6 {y} 0.2 -1.5708 0 0", sphere)
+        parts += _joint(f"f{side}", "revolute", f"f{side}_knuckle", f"f{side}_wheel", "0 0 1")
+        parts += _link(f"r{side}_wheel", f"-0.6 {y} 0.2 -1.5708 0 0", sphere)
+        parts += _joint(f"r{side}", "revolute", "chassis", f"r{side}_wheel", "0 0 1")
+    chassis = _link("chassis", "0 0 0.6 0 0 0", "<box><size>1.6 0.6 0.2</size></box>", 5.0)
+    world = make_world()
+    world.spawn(world.templates.from_string(CAR.format(chassis=chassis, parts=parts)), "car",
+                [0, 0, 0.02], IDENTITY)
+    world.transport.callbacks["/model/car/cmd_vel"](twist(x=1.0, yaw=0.4))
+    run(world, 3.0)
+    body = world.model.body("car/chassis").id
+    x, y = world.data.xpos[body][:2]
+    assert x > 1.5 and y > 0.2, (x, y)  # forward, curving left
+    odometry = world.transport.published["/model/car/odometry"][-1]
+    assert odometry.header.frame_id == "car/odom"
+    assert odometry.pose.position.x > 1.5 and odometry.pose.position.y > 0.2
+    assert odometry.twist.angular.z > 0.1

@@ -72,6 +72,8 @@ BUILTIN = {
         "launcher.sim.plugins.joint_controller:JointVelocityController",
     "gz::sim::systems::JointController":
         "launcher.sim.plugins.joint_controller:JointVelocityController",
+    "gz-sim-ackermann-steering-system": "launcher.sim.plugins.ackermann:AckermannSteering",
+    "gz::sim::systems::AckermannSteering": "launcher.sim.plugins.ackermann:AckermannSteering",
     "gz-sim-apply-joint-force-system": "launcher.sim.plugins.motion:ApplyJointForce",
     "gz::sim::systems::ApplyJointForce": "launcher.sim.plugins.motion:ApplyJointForce",
     "gz-sim-velocity-control-system": "launcher.sim.plugins.motion:VelocityControl",
