@@ -14,6 +14,8 @@ from typing import Any
 from launcher.nodes.prototext import Enum
 
 Data = dict[str, Any]
+# gz.msgs.BatteryState.PowerSupplyStatus, the same numbers as sensor_msgs/BatteryState's
+BATTERY_STATUS = {0: "UNKNOWN", 1: "CHARGING", 2: "DISCHARGING", 3: "NOT_CHARGING", 4: "FULL"}
 
 
 def _rename(data: Any, old: str, new: str) -> Any:
@@ -141,6 +143,11 @@ TO_GZ: dict[str, Callable[[Data], Data]] = {
     "FluidPressure": lambda d: {"header": _header_to_gz(d.get("header")),
                                 "pressure": d.get("fluid_pressure", 0.0),
                                 "variance": d.get("variance", 0.0)},
+    "BatteryState": lambda d: {"header": _header_to_gz(d.get("header")),
+                               **{k: d.get(k, 0) for k in ("voltage", "current", "charge",
+                                                           "capacity", "percentage")},
+                               "power_supply_status": Enum(BATTERY_STATUS.get(
+                                   d.get("power_supply_status", 0), "UNKNOWN"))},
     "NavSat": lambda d: {"header": _header_to_gz(d.get("header")),
                          **{k: v for k, v in d.items() if k != "header"},
                          "frame_id": (d.get("header") or {}).get("frame_id", "")},

@@ -186,3 +186,43 @@ def test_ackermann_steering_drives_and_turns_the_way_it_is_told():
     assert odometry.header.frame_id == "car/odom"
     assert odometry.pose.position.x > 1.5 and odometry.pose.position.y > 0.2
     assert odometry.twist.angular.z > 0.1
+
+
+BATTERY = """<plugin filename="gz-sim-apply-joint-force-system"
+  name="gz::sim::systems::ApplyJointForce"><joint_name>flag_hinge</joint_name></plugin>
+  <plugin filename="gz-sim-linearbatteryplugin-system"
+  name="gz::sim::systems::LinearBatteryPlugin">
+  <battery_name>linear_battery</battery_name><voltage>4.2</voltage>
+  <open_circuit_voltage_constant_coef>4.2</open_circuit_voltage_constant_coef>
+  <open_circuit_voltage_linear_coef>-2.0</open_circuit_voltage_linear_coef>
+  <initial_charge>0.001</initial_charge><capacity>0.001</capacity>
+  <resistance>0.07</resistance><smooth_current_tau>0.1</smooth_current_tau>
+  <power_load>10</power_load><start_on_motion>true</start_on_motion></plugin>"""
+
+
+def test_a_linear_battery_drains_once_the_model_moves_and_says_when_it_is_empty():
+    world = make_world()
+    spawn(world, BATTERY)
+    topic = "/model/vehicle/battery/linear_battery/state"
+    run(world, 0.5)  # not moving: full, not draining
+    idle = world.transport.published[topic][-1]
+    assert idle.percentage == pytest.approx(1.0) and idle.power_supply_status == 4  # FULL
+    world.transport.callbacks["/model/vehicle/joint/flag_hinge/cmd_force"](
+        SimpleNamespace(data=0.1))
+    run(world, 0.5)
+    draining = world.transport.published[topic][-1]
+    assert draining.power_supply_status == 2  # DISCHARGING
+    assert draining.percentage < 0.9 and draining.current > 1.0  # ~2.4 A at ~4 V
+    assert draining.voltage < 4.2
+    run(world, 3.0)  # 3.6 A·s of charge at about 2.5 A
+    assert any("out of battery" in m for m in world.transport.messages("warning"))
+    states = world.transport.published[topic]
+    assert all(b.percentage <= a.percentage + 1e-9 for a, b in zip(states, states[1:]))
+
+
+def test_a_battery_without_capacity_is_refused_at_its_line():
+    world = make_world()
+    with pytest.raises(SpawnError, match="<string>:11: .*capacity is required"):
+        spawn(world, BATTERY.replace("<capacity>0.001</capacity>", ""))
+    with pytest.raises(SpawnError, match="<string>:11: .*<capacity> must be greater than 0"):
+        spawn(world, BATTERY.replace("<capacity>0.001</capacity>", "<capacity>0</capacity>"))
