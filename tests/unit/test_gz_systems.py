@@ -3,6 +3,7 @@ VelocityControl, OdometryPublisher and PosePublisher, as gz-sim documents them."
 
 from __future__ import annotations
 
+import itertools
 import math
 from types import SimpleNamespace
 
@@ -217,7 +218,7 @@ def test_a_linear_battery_drains_once_the_model_moves_and_says_when_it_is_empty(
     run(world, 3.0)  # 3.6 A·s of charge at about 2.5 A
     assert any("out of battery" in m for m in world.transport.messages("warning"))
     states = world.transport.published[topic]
-    assert all(b.percentage <= a.percentage + 1e-9 for a, b in zip(states, states[1:]))
+    assert all(b.percentage <= a.percentage + 1e-9 for a, b in itertools.pairwise(states))
 
 
 def test_a_battery_without_capacity_is_refused_at_its_line():
