@@ -23,7 +23,8 @@ SIM_MESSAGES = ("Clock", "Twist", "Odometry", "Pose", "PoseV", "Model", "ModelSt
                 "Double", "Float", "Boolean", "Int32", "StringMsg", "Empty", "EntityFactory",
                 "WorldControl", "Entity", "IMU", "Magnetometer", "FluidPressure", "Altimeter",
                 "NavSat", "LaserScan", "PointCloudPacked", "Image", "CameraInfo", "Wrench",
-                "Contacts", "AirSpeedSensor", "PerformanceSensorMetrics", "BatteryState")
+                "Contacts", "AirSpeedSensor", "PerformanceSensorMetrics", "BatteryState",
+                "JointTrajectory")
 # (request, response) of Gazebo's services → the sim's service type
 SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
                 ("EntityFactory", "Boolean"): f"{SIM}/srv/Create",
@@ -221,6 +222,7 @@ def conversions() -> dict[tuple[str, str], Conversion]:
         ("sensor_msgs/msg/MagneticField", f"{m}/Magnetometer"): same,
         ("sensor_msgs/msg/FluidPressure", f"{m}/FluidPressure"): same,
         ("sensor_msgs/msg/BatteryState", f"{m}/BatteryState"): same,
+        ("trajectory_msgs/msg/JointTrajectory", f"{m}/JointTrajectory"): same,
         ("sensor_msgs/msg/LaserScan", f"{m}/LaserScan"): same,
         ("sensor_msgs/msg/PointCloud2", f"{m}/PointCloudPacked"): same,
         ("sensor_msgs/msg/Image", f"{m}/Image"): same,

@@ -227,3 +227,56 @@ def test_a_battery_without_capacity_is_refused_at_its_line():
         spawn(world, BATTERY.replace("<capacity>0.001</capacity>", ""))
     with pytest.raises(SpawnError, match="<string>:11: .*<capacity> must be greater than 0"):
         spawn(world, BATTERY.replace("<capacity>0.001</capacity>", "<capacity>0</capacity>"))
+
+
+ARM2 = """<?xml version="1.0"?><sdf version="1.9"><model name="arm"><static>false</static>
+  <link name="base"><inertial><mass>50</mass><inertia><ixx>1</ixx><iyy>1</iyy><izz>1</izz>
+  </inertia></inertial></link>
+  <joint name="anchor" type="fixed"><parent>world</parent><child>base</child></joint>
+  {links}
+  <plugin filename="gz-sim-joint-trajectory-controller-system"
+    name="gz::sim::systems::JointTrajectoryController">
+    <joint_name>j1</joint_name><initial_position>0.3</initial_position>
+    <position_p_gain>40</position_p_gain><position_d_gain>4</position_d_gain>
+    <position_i_gain>2</position_i_gain><position_i_min>-1</position_i_min>
+    <position_i_max>1</position_i_max>
+    <joint_name>j2</joint_name><initial_position>-0.2</initial_position>
+    <position_p_gain>40</position_p_gain><position_d_gain>4</position_d_gain>
+  </plugin>
+</model></sdf>"""
+
+
+def test_gz_joint_trajectory_controller_holds_then_follows_points_and_reports_progress():
+    links = ""
+    for n, parent in ((1, "base"), (2, "l1")):
+        links += f"""<link name="l{n}"><pose>0 0 {0.2 * n} 0 0 0</pose><inertial><mass>1</mass>
+          <inertia><ixx>0.02</ixx><iyy>0.02</iyy><izz>0.02</izz></inertia></inertial></link>
+          <joint name="j{n}" type="revolute"><parent>{parent}</parent><child>l{n}</child>
+          <axis><xyz>0 0 1</xyz></axis></joint>"""
+    world = make_world()
+    world.spawn(world.templates.from_string(ARM2.format(links=links)), "arm", [0, 0, 0],
+                IDENTITY)
+
+    def angle(n: int) -> float:
+        return float(world.data.qpos[world.model.joint(f"arm/j{n}").qposadr[0]])
+
+    run(world, 2.0)  # held at the initial positions
+    assert (angle(1), angle(2)) == pytest.approx((0.3, -0.2), abs=0.01)
+    point = lambda positions, sec: SimpleNamespace(  # noqa: E731
+        positions=positions, velocities=[], effort=[],
+        time_from_start=SimpleNamespace(sec=sec, nanosec=0))
+    stamp = SimpleNamespace(stamp=SimpleNamespace(sec=0, nanosec=0))
+    world.transport.callbacks["/model/arm/joint_trajectory"](SimpleNamespace(
+        header=stamp, joint_names=["j2", "j1"],
+        points=[point([0.5, 1.0], 1), point([0.0, -0.5], 2)]))
+    run(world, 1.5)
+    assert (angle(1), angle(2)) == pytest.approx((1.0, 0.5), abs=0.02)
+    run(world, 1.5)
+    assert (angle(1), angle(2)) == pytest.approx((-0.5, 0.0), abs=0.02)
+    progress = [m.data for m in world.transport.published["/model/arm/joint_trajectory_progress"]]
+    assert progress == [0.5, 1.0]
+    world.transport.callbacks["/model/arm/joint_trajectory"](SimpleNamespace(
+        header=stamp, joint_names=["elbow"], points=[point([1.0], 1)]))
+    run(world, 1.0)
+    assert angle(1) == pytest.approx(-0.5, abs=0.02)  # refused: held
+    assert any("joint trajectory refused" in m for m in world.transport.messages("warning"))

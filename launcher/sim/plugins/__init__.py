@@ -77,6 +77,10 @@ BUILTIN = {
     "gz-sim-linearbatteryplugin-system": "launcher.sim.plugins.battery:LinearBattery",
     "gz-sim-linear-battery-plugin-system": "launcher.sim.plugins.battery:LinearBattery",
     "gz::sim::systems::LinearBatteryPlugin": "launcher.sim.plugins.battery:LinearBattery",
+    "gz-sim-joint-trajectory-controller-system":
+        "launcher.sim.plugins.gz_trajectory:JointTrajectoryController",
+    "gz::sim::systems::JointTrajectoryController":
+        "launcher.sim.plugins.gz_trajectory:JointTrajectoryController",
     "gz-sim-apply-joint-force-system": "launcher.sim.plugins.motion:ApplyJointForce",
     "gz::sim::systems::ApplyJointForce": "launcher.sim.plugins.motion:ApplyJointForce",
     "gz-sim-velocity-control-system": "launcher.sim.plugins.motion:VelocityControl",
