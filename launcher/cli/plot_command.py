@@ -1,6 +1,6 @@
 """`launcher plot /topic/field… [-o plot.png] [--duration S] [--bag BAG]`: fields of messages
 drawn over time with matplotlib, as rqt_plot draws them: live from the graph for `--duration`
-seconds (10; Ctrl-C ends sooner), or from a recorded bag. Into a PNG (or SVG, PDF), or a window
+seconds from the first message (10; Ctrl-C ends sooner), or from a recorded bag. Into a PNG (or SVG, PDF), or a window
 when there is a display and no `-o`. A field is a topic and a path into its messages
 (`/odom/pose/pose/position/x`, `/joint_states/position/0`)."""
 
@@ -23,7 +23,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                    help="the picture to write (.png, .svg, .pdf); default: a window when "
                         "there is a display, else plot.png")
     p.add_argument("-d", "--duration", type=float, default=10.0,
-                   help="seconds to listen (live; default 10)")
+                   help="seconds to listen, from the first message (live; default 10)")
     p.add_argument("--bag", default=None, help="read a recorded bag instead")
     p.set_defaults(run=run)
 
@@ -59,6 +59,9 @@ def _stamp(message: Any, received: float) -> float:
     return received
 
 
+FIRST_WAIT = 10.0  # s to wait for the first message before the --duration window starts
+
+
 def _live(fields: list[str], duration: float) -> dict[str, list[tuple[float, float]]]:
     from launcher.bus.node import Node
     from launcher.bus.session import open_session
@@ -79,6 +82,10 @@ def _live(fields: list[str], duration: float) -> dict[str, list[tuple[float, flo
                 series[field].append((_stamp(message, time.time()),
                                       _value(message, path, field)))
             node.create_subscription(known[topic][0], topic, take)
+        # the window opens at the first message (a busy machine may take a while to connect)
+        deadline = time.monotonic() + FIRST_WAIT
+        while not any(series.values()) and time.monotonic() < deadline:
+            node.spin(0.05)
         node.spin(duration)
     finally:
         node.destroy_node()
