@@ -1,8 +1,8 @@
 """`launcher plot /topic/field… [-o plot.png] [--duration S] [--bag BAG]`: fields of messages
 drawn over time with matplotlib, as rqt_plot draws them: live from the graph for `--duration`
 seconds from the first message (10; Ctrl-C ends sooner), or from a recorded bag. Into a PNG
-(or SVG, PDF), or a window when there is a display and no `-o`. A field is a topic and a path into its messages
-(`/odom/pose/pose/position/x`, `/joint_states/position/0`)."""
+(or SVG, PDF), or a window when there is a display and no `-o`. A field is a topic and a path
+into its messages (`/odom/pose/pose/position/x`, `/joint_states/position/0`)."""
 
 from __future__ import annotations
 
