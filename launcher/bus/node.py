@@ -101,14 +101,19 @@ class Node:
     def fully_qualified_name(self) -> str:
         return f"{self.namespace}/{self.name}"
 
-    def resolve(self, name: str, what: str = "topic name") -> str:
+    def resolve(self, name: str, what: str = "topic name",
+                space: keys.Space | None = None) -> str:
+        """The full name; remaps apply on the ROS graph only (a bridge's `-r` renames its
+        ROS side, never the simulator's topic it reads, as ros_gz's does)."""
         full = names.expand(name, self.name, self.namespace, what)
+        if (space or self._host.space) != keys.ROS:
+            return full
         return names.remap(full, self.remaps, self.name, self.namespace)
 
     # --- endpoints --------------------------------------------------------------------------
     def create_publisher(self, type_name: str, topic: str, qos: QoS | int = 10,
                          space: keys.Space | None = None) -> Publisher:
-        return self._host.adopt(Publisher(self._host, type_name, self.resolve(topic),
+        return self._host.adopt(Publisher(self._host, type_name, self.resolve(topic, space=space),
                                           qos_of(qos), space))
 
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
@@ -122,7 +127,8 @@ class Node:
         thread-safe against the node's other callbacks and must not block. `remote_only=True`
         ignores what this node publishes (a two-way bridge must not hear itself). `make`
         builds messages of other classes from field values (see TypeRegistry.deserialize)."""
-        return self._host.adopt(Subscription(self._host, type_name, self.resolve(topic), callback,
+        return self._host.adopt(Subscription(self._host, type_name,
+                                             self.resolve(topic, space=space), callback,
                                              qos_of(qos), raw, inline, remote_only, space, make))
 
     def create_service(self, type_name: str, name: str,
@@ -132,14 +138,15 @@ class Node:
                        new_response: Callable[[], Any] | None = None,
                        type_hash: str | None = None) -> Service:
         return self._host.adopt(Service(self._host, type_name,
-                                        self.resolve(name, "service name"), callback, space,
+                                        self.resolve(name, "service name", space), callback,
+                                        space,
                                         make, new_response, type_hash))
 
     def create_client(self, type_name: str, name: str,
                       space: keys.Space | None = None,
                       make: Callable[[str, list[Any]], Any] | None = None) -> Client:
         return self._host.adopt(Client(self._host, type_name,
-                                       self.resolve(name, "service name"), space, make))
+                                       self.resolve(name, "service name", space), space, make))
 
     def spin_with(self, other: Node) -> None:
         """This node's callbacks run when `other` spins (one thread for both); call it before
