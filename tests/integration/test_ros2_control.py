@@ -497,6 +497,7 @@ def test_steered_bases_grippers_and_sensor_broadcasters_in_the_sim(ws):
         parallel: {type: parallel_gripper_action_controller/GripperActionController}
         imu: {type: imu_sensor_broadcaster/IMUSensorBroadcaster}
         wrench: {type: force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster}
+        states: {type: joint_state_broadcaster/JointStateBroadcaster}
     /hand/gripper:
       ros__parameters: {joint: finger_a_joint}
     /hand/parallel:
@@ -520,6 +521,8 @@ def test_steered_bases_grippers_and_sensor_broadcasters_in_the_sim(ws):
       <joint name="wrist" type="fixed"><parent link="world"/><child link="palm"/>
       <origin xyz="0 0 1"/></joint>
       {finger.format(s="a")}{finger.format(s="b")}
+      {finger.format(s="c").replace('velocity="0.5"/>',
+                                    'velocity="0.5"/><mimic joint="finger_a_joint"/>')}
       <gazebo reference="palm"><sensor name="palm_imu" type="imu">
         <update_rate>100</update_rate></sensor></gazebo>
       <gazebo reference="finger_a_joint"><sensor name="wrist_ft" type="force_torque">
@@ -528,6 +531,7 @@ def test_steered_bases_grippers_and_sensor_broadcasters_in_the_sim(ws):
       <plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
       {joint_block("finger_a_joint", "position", "position", "velocity")}
       {joint_block("finger_b_joint", "position", "position", "velocity")}
+      <joint name="finger_c_joint"><state_interface name="position"/></joint>
       <sensor name="palm_imu">{"".join(f'<state_interface name="{i}"/>' for i in imu)}</sensor>
       <sensor name="wrist_ft">{"".join(f'<state_interface name="{i}"/>' for i in ft)}</sensor>
       </ros2_control>
@@ -546,7 +550,7 @@ def test_steered_bases_grippers_and_sensor_broadcasters_in_the_sim(ws):
         for manager, names in (("/tricycle/controller_manager", ["tricycle_controller"]),
                                ("/car/controller_manager", ["ackermann"]),
                                ("/hand/controller_manager",
-                                ["gripper", "parallel", "imu", "wrench"])):
+                                ["gripper", "parallel", "imu", "wrench", "states"])):
             done = spawner(ws, *names, "-c", manager)
             assert done.returncode == 0, done.stdout + done.stderr
         # the sensors, through their broadcasters
@@ -563,6 +567,15 @@ def test_steered_bases_grippers_and_sensor_broadcasters_in_the_sim(ws):
                       "control_msgs/action/GripperCommand",
                       "{command: {position: 0.03, max_effort: 10.0}}", timeout=60)
         assert "SUCCEEDED" in goal.stdout and "reached_goal: true" in goal.stdout, goal.stdout
+        # finger c mimics finger a (<mimic> in the URDF), as gz_ros2_control makes it
+        hand_states = ws.run("topic", "echo", "/hand/joint_states", "sensor_msgs/msg/JointState",
+                             "--once").stdout
+        names = re.findall(r"^- (finger_\w+)", hand_states, re.M)
+        positions = [float(v) for v in re.search(r"position:\n((?:- .*\n)+)",
+                                                 hand_states).group(1).replace("- ", "").split()]
+        mimic = dict(zip(names, positions, strict=True))
+        assert mimic["finger_c_joint"] == pytest.approx(mimic["finger_a_joint"], abs=0.003)
+        assert mimic["finger_a_joint"] == pytest.approx(0.03, abs=0.011)
         goal = ws.run("action", "send_goal", "/hand/parallel/gripper_cmd",
                       "control_msgs/action/ParallelGripperCommand",
                       "{command: {name: [finger_b_joint], position: [0.02]}}", timeout=60)
