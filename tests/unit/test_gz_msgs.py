@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from launcher.nodes import gz_msgs
+from launcher.sim import gz_msgs
 
 
 def test_times_are_nsec_in_gazebo_and_nanosec_in_the_sim_at_any_depth():

@@ -280,3 +280,56 @@ def test_gz_joint_trajectory_controller_holds_then_follows_points_and_reports_pr
     run(world, 1.0)
     assert angle(1) == pytest.approx(-0.5, abs=0.02)  # refused: held
     assert any("joint trajectory refused" in m for m in world.transport.messages("warning"))
+
+
+TRIGGER = """<plugin filename="gz-sim-velocity-control-system"
+  name="gz::sim::systems::VelocityControl"/>
+  <plugin filename="gz-sim-triggered-publisher-system"
+  name="gz::sim::systems::TriggeredPublisher">
+  <input type="gz.msgs.Boolean" topic="/start"><match field="data">true</match></input>
+  <output type="gz.msgs.Twist" topic="/model/vehicle/cmd_vel">linear: {x: 0.5}</output>
+  <output type="gz.msgs.StringMsg" topic="/said">data: "going"</output>
+  <delay_ms>500</delay_ms></plugin>"""
+
+
+def test_triggered_publisher_publishes_its_outputs_when_the_input_matches():
+    from launcher.bus.messages import build
+
+    world = make_world()
+    spawn(world, TRIGGER)
+    body = world.model.body("vehicle/chassis").id
+    start = world.transport.callbacks["/start"]
+    start(build("mujoco_sim/msg/Boolean", {"data": False}))  # no match
+    run(world, 1.0)
+    assert "/said" not in world.transport.published or not world.transport.published["/said"]
+    x0 = float(world.data.xpos[body][0])
+    start(build("mujoco_sim/msg/Boolean", {"data": True}))
+    run(world, 0.3)  # within the delay: nothing yet
+    assert not world.transport.published.get("/said")
+    run(world, 1.0)
+    assert [m.data for m in world.transport.published["/said"]] == ["going"]
+    # the Twist output went to the model's VelocityControl (on the stand-in bus, by hand)
+    twist = world.transport.published["/model/vehicle/cmd_vel"][-1]
+    world.transport.callbacks["/model/vehicle/cmd_vel"](twist)
+    run(world, 1.0)
+    assert float(world.data.xpos[body][0]) > x0 + 0.4
+
+
+@pytest.mark.parametrize("change, expected", [
+    ('type="gz.msgs.Boolean"', r"no message type 'gz.msgs.Bolean' \(did you mean 'gz.msgs.Boolean'"),
+    ("linear: {x: 0.5}", "does not fit"),
+    ("<delay_ms>500</delay_ms>", None),
+])
+def test_triggered_publisher_mistakes_are_located(change, expected):
+    world = make_world()
+    text = TRIGGER
+    if change.startswith("type="):
+        text = text.replace(change, 'type="gz.msgs.Bolean"')
+    elif change.startswith("linear"):
+        text = text.replace(change, "linear: {q: 1}")
+    else:
+        text = text.replace('<input type="gz.msgs.Boolean" topic="/start">', "<nothing>") \
+            .replace("</input>", "</nothing>")
+        expected = "needs <input"
+    with pytest.raises(SpawnError, match=rf"<string>:\d+: .*{expected}"):
+        spawn(world, text)

@@ -10,9 +10,9 @@ from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
-from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.conversions import _short, sim_type
 from launcher.nodes.gz.common import print_names
+from launcher.sim import gz_msgs, prototext
 
 
 def build_parser() -> Parser:

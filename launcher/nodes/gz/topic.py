@@ -19,8 +19,8 @@ from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
-from launcher.nodes import gz_msgs, prototext
 from launcher.nodes.gz.common import gz_name, message_type, print_names
+from launcher.sim import gz_msgs, prototext
 
 RATE_WINDOW = 1.5  # s: `-i` measures the rate over this long
 

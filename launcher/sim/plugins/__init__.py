@@ -81,6 +81,8 @@ BUILTIN = {
         "launcher.sim.plugins.gz_trajectory:JointTrajectoryController",
     "gz::sim::systems::JointTrajectoryController":
         "launcher.sim.plugins.gz_trajectory:JointTrajectoryController",
+    "gz-sim-triggered-publisher-system": "launcher.sim.plugins.triggered:TriggeredPublisher",
+    "gz::sim::systems::TriggeredPublisher": "launcher.sim.plugins.triggered:TriggeredPublisher",
     "gz-sim-apply-joint-force-system": "launcher.sim.plugins.motion:ApplyJointForce",
     "gz::sim::systems::ApplyJointForce": "launcher.sim.plugins.motion:ApplyJointForce",
     "gz-sim-velocity-control-system": "launcher.sim.plugins.motion:VelocityControl",

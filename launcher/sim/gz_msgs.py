@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from launcher.nodes.prototext import Enum
+from launcher.sim.prototext import Enum
 
 Data = dict[str, Any]
 # gz.msgs.BatteryState.PowerSupplyStatus, the same numbers as sensor_msgs/BatteryState's
