@@ -711,3 +711,33 @@ def test_gz_sims_sensor_worlds_load_unchanged(tmp_path, name):
     loaded = load_world_file(path, environ={"GZ_FUEL_CACHE_PATH": str(cache)})
     assert loaded.spec.compile().nbody > 2
     assert not [w for w in loaded.warnings if "custom element" in w or "gz:" in w]
+
+
+def test_a_merged_include_adds_its_links_joints_and_plugins_to_the_model(tmp_path):
+    """`<include merge="true">` (SDFormat 1.9): no nested scope, so the parent's joints and
+    the included plugins name the included links and joints as they are."""
+    folder = tmp_path / "models" / "wheel_kit"
+    folder.mkdir(parents=True)
+    (folder / "model.config").write_text('<model><sdf version="1.9">model.sdf</sdf></model>')
+    (folder / "model.sdf").write_text("""<sdf version="1.9"><model name="wheel_kit">
+      <link name="hub"><pose>0.5 0 0 0 0 0</pose><inertial><mass>1</mass></inertial></link>
+      <link name="wheel"><pose>0.5 0 0 0 0 0</pose><inertial><mass>1</mass></inertial></link>
+      <joint name="axle" type="revolute"><parent>hub</parent><child>wheel</child>
+        <axis><xyz>0 1 0</xyz></axis></joint>
+      <plugin filename="gz-sim-joint-position-controller-system"
+        name="gz::sim::systems::JointPositionController"><joint_name>axle</joint_name></plugin>
+    </model></sdf>""")
+    env = {"GZ_SIM_RESOURCE_PATH": str(tmp_path / "models")}
+    loaded = load(tmp_path, world_text("""
+      <model name="cart"><link name="body"><inertial><mass>5</mass></inertial></link>
+        <include merge="true"><uri>model://wheel_kit</uri><pose>0 0 0.2 0 0 0</pose></include>
+        <joint name="mount" type="fixed"><parent>body</parent><child>hub</child></joint>
+      </model>"""), env=env)
+    (cart,) = loaded.models
+    assert [p.name for p in cart.plugins] == ["gz::sim::systems::JointPositionController"]
+    model = loaded.spec.compile()
+    assert model.joint("cart/axle").id >= 0  # not cart/wheel_kit::axle
+    hub = model.body("cart/hub").id
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    assert data.xpos[hub] == pytest.approx([0.5, 0, 0.2])  # the include's pose, then its own

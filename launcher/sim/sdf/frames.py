@@ -24,6 +24,8 @@ class Scope:
     element: Element
     frames: dict[str, tuple[Element, str]] = field(default_factory=dict)  # name -> (el, default)
     nested: dict[str, Scope] = field(default_factory=dict)
+    # frames of a `merge="true"` include: their own names, found in the include's scope
+    merged: dict[str, str] = field(default_factory=dict)  # frame -> the include's name
     _resolved: dict[str, Pose] = field(default_factory=dict)
     _resolving: set[str] = field(default_factory=set)
 
@@ -51,6 +53,9 @@ class Scope:
             head, _, rest = name.partition("::")
             if head in self.nested:
                 return self.resolve(head, asked_by) * self.nested[head].resolve(rest, asked_by)
+        if name not in self.frames and name in self.merged:
+            head = self.merged[name]
+            return self.resolve(head, asked_by) * self.nested[head].resolve(name, asked_by)
         if name not in self.frames:
             where = asked_by or self.element
             model = self.element.get("name", "")

@@ -58,12 +58,16 @@ def collect(model: Element, origin: Origin, context: Context, scope_prefix: str,
     """Links, joints and plugins of `model` and its nested models, posed in the top frame."""
     check_children(model, context)
     nested: dict[str, tuple[Element, Origin, Element | None]] = {}  # model, origin, include
+    merged: set[str] = set()  # the includes with merge="true"
     for child in model.children:
         if child.tag == "model":
             nested[child.get("name", "")] = (child, origin, None)
         elif child.tag == "include":
             included, where = context.include(child, origin)
-            nested[child.value("name") or included.get("name", "")] = (included, where, child)
+            name = child.value("name") or included.get("name", "")
+            nested[name] = (included, where, child)
+            if (child.get("merge") or "").lower() in ("true", "1"):
+                merged.add(name)
     # an include is placed by its own <pose>, else by the included model's
     scope = Scope.of(model, {n: include if include is not None and include.find("pose")
                              is not None else element
@@ -81,10 +85,14 @@ def collect(model: Element, origin: Origin, context: Context, scope_prefix: str,
     for nested_name, (element, where, include) in nested.items():
         if include is not None:
             parts.plugins += plugin_configs(include)
+        # a merged include's links, joints and plugins are the model's own: no scope prefix
+        prefix = scope_prefix if nested_name in merged else f"{scope_prefix}{nested_name}::"
         with context.inside(where):
-            scope.nested[nested_name] = collect(element, where, context,
-                                                 f"{scope_prefix}{nested_name}::",
+            scope.nested[nested_name] = collect(element, where, context, prefix,
                                                  frame * scope.resolve(nested_name), parts)
+        if nested_name in merged:
+            for name in scope.nested[nested_name].frames:
+                scope.merged.setdefault(name, nested_name)
     for joint in model.findall("joint"):
         parts.joints.append(_joint(joint, scope, scope_prefix, frame, origin))
     return scope
@@ -100,6 +108,8 @@ def _joint(joint: Element, scope: Scope, prefix: str, frame: Pose, origin: Origi
     if not parent or not child:
         raise joint.error(f"joint '{name}' needs <parent> and <child>")
     links = [n for n, (element, _) in scope.frames.items() if element.tag == "link"]
+    links += [n for n, head in scope.merged.items()
+              if scope.nested[head].frames[n][0].tag == "link"]
     if "::" not in child and child not in links:
         raise joint.error(f"joint '{name}': child link '{child}' does not exist in model "
                           f"'{scope.element.get('name', '')}'{did_you_mean(child, links)} "
