@@ -1,10 +1,14 @@
 """A URDF's joint tree and its forward kinematics.
 
 `Tree.parse(text)` checks the URDF (XML, one root, no loops, joints naming real links) and
-keeps each joint's origin, axis, type and mimic. `Tree.transforms(positions)` gives, for the
-moving joints, the parent → child transform (translation, quaternion x y z w), as
-robot_state_publisher publishes them on /tf. Fixed joints' transforms are constant
-(`Tree.fixed`). Floating and planar joints are skipped, as ROS's robot_state_publisher does.
+keeps each joint's origin, axis, type and mimic. An SDF `<model>` is read as sdformat_urdf
+reads it for ROS 2's robot_state_publisher (what ros_gz's demos feed it): its links (nested
+ones by their scoped names) and joints, each joint's origin the child link's pose in the
+parent link's frame and its axis in the child's; a joint to `world` is left out.
+`Tree.transforms(positions)` gives, for the moving joints, the parent → child transform
+(translation, quaternion x y z w), as robot_state_publisher publishes them on /tf. Fixed
+joints' transforms are constant (`Tree.fixed`). Floating and planar joints are skipped, as
+ROS's robot_state_publisher does.
 
 Plain Python, no numpy: what is fixed per joint is worked out once, so a joint costs one sine,
 one cosine and a few products per message (20 joints at 1 kHz: a few % of a core), and the
@@ -14,14 +18,29 @@ node starts without numpy's ~0.1 s import.
 from __future__ import annotations
 
 import math
+import re
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from launcher.errors import LaunchError
+from launcher.sim.transform import IDENTITY as _IDENTITY
 from launcher.sim.urdf_tree import parse_robot, root_link
 
 MOVING = ("revolute", "continuous", "prismatic")
+_PROLOGUE = re.compile(r"^\s*(?:<\?.*?\?>|<!--.*?-->|\s)*", re.S)  # <?xml?>, comments
+_SDF_KINDS = {"revolute": "revolute", "continuous": "continuous", "prismatic": "prismatic",
+              "fixed": "fixed"}
+
+
+def _unlimited(limit: ET.Element, unlimited: float) -> bool:
+    """SDF writes no limit as ±1e16 (or leaves <lower>/<upper> out)."""
+    try:
+        lower = float(limit.findtext("lower", "-1e16"))
+        upper = float(limit.findtext("upper", "1e16"))
+    except ValueError:
+        return False
+    return lower <= -unlimited and upper >= unlimited
 
 
 @dataclass
@@ -49,6 +68,8 @@ class Tree:
         if not text or not text.strip():
             raise LaunchError(f"{label} is empty: give the URDF (e.g. from $(command 'xacro "
                               "robot.xacro'))")
+        if _PROLOGUE.sub("", text).lstrip().startswith("<sdf"):
+            return cls._from_sdf(text, label)
         robot = parse_robot(text, label)
         root = root_link(robot, text, label)
         joints = [_joint(element, label) for element in robot.findall("joint")]
@@ -62,6 +83,48 @@ class Tree:
         tree.fixed = [j for j in joints if j.kind == "fixed"]
         tree._arrays()
         return tree
+
+    @classmethod
+    def _from_sdf(cls, text: str, label: str) -> Tree:
+        # the SDF reader (and the MuJoCo it brings) only when a description is SDF
+        from launcher.sim.sdf.context import Context, top_element
+        from launcher.sim.sdf.parts import UNLIMITED, Parts, canonical_link, collect, tree
+
+        element, origin = top_element(text, None, "model", ": robot_state_publisher takes a "
+                                                           "<model>")
+        parts = Parts()
+        context = Context({}, None)
+        with context.inside(origin):
+            collect(element, origin, context, "", _IDENTITY, parts)
+        parents = tree(parts, element)
+        joints = []
+        for child, joint in parents.items():
+            if joint.parent == "world":
+                continue
+            kind = _SDF_KINDS.get(joint.kind)
+            if kind is None:
+                raise LaunchError(f"{label}: joint '{joint.name}' is a {joint.kind} joint, which "
+                                  f"robot_state_publisher cannot follow (as sdformat_urdf: "
+                                  f"revolute, continuous, prismatic and fixed joints)")
+            limit = joint.element.find("axis")
+            limit = limit.find("limit") if limit is not None else None
+            if kind == "revolute" and (limit is None or _unlimited(limit, UNLIMITED)):
+                kind = "continuous"
+            parent_pose, child_pose = parts.links[joint.parent].pose, parts.links[child].pose
+            relative = parent_pose.inverse() * child_pose
+            w, x, y, z = relative.quat
+            cw, cx, cy, cz = child_pose.quat
+            axis = _rotate((-cx, -cy, -cz, cw), joint.axes[0]) if joint.axes else (1.0, 0, 0)
+            joints.append(Joint(joint.name, kind, joint.parent, child, relative.pos,
+                                (x, y, z, w), axis))
+        root = canonical_link(element, parts)
+        while root in parents and parents[root].parent != "world":
+            root = parents[root].parent
+        tree_ = cls(element.get("name", ""), root, joints)
+        tree_.moving = [j for j in joints if j.kind in MOVING]
+        tree_.fixed = [j for j in joints if j.kind == "fixed"]
+        tree_._arrays()
+        return tree_
 
     def _arrays(self) -> None:
         """Per moving joint: its origin, how it slides (prismatic), the quaternions of its turn

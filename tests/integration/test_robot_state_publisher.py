@@ -110,3 +110,37 @@ def test_bad_parameters_exit_1_with_a_clear_message(rsp_ws, args, expected):
                           text=True, timeout=60)
     assert done.returncode == 1 and expected in done.stderr, done.stderr
     assert "Traceback" not in done.stderr
+
+
+SDF_LAUNCH = """
+launch:
+  - node:
+      pkg: robot_state_publisher
+      exec: robot_state_publisher
+      output: screen
+      param:
+        - {name: robot_description, value: "$(command 'cat pendulum.sdf')"}
+"""
+
+
+def test_an_sdf_robot_description_drives_robot_state_publisher(rsp_ws):
+    """As ros_gz's demos feed it (sdformat_urdf in ROS 2): the SDF model's links and joints."""
+    from tests.unit.test_kinematics import SDF_ROBOT
+
+    rsp_ws.write("pendulum.sdf", SDF_ROBOT)
+    rsp_ws.write("rsp.launch.yaml", SDF_LAUNCH)
+    proc = rsp_ws.start("launch", "rsp.launch.yaml", output="launch.out")
+    try:
+        rsp_ws.wait_for_output("robot 'pendulum': 2 moving joints", 60, "launch.out")
+        rsp_ws.write("probe.py", PROBE.replace("/arm1/joint_states", "/joint_states")
+                     .replace('["j1", "fa"], [0.1, 0.02]', '["hinge", "spin"], [0.3, 0.0]'))
+        probe = subprocess.run([PY, "probe.py"], cwd=rsp_ws.root, env=rsp_ws.env,
+                               capture_output=True, text=True, timeout=60)
+        assert probe.returncode == 0, probe.stderr
+        frames = json.loads(probe.stdout.split("RESULT", 1)[1])
+        by_child = {child: (parent, y) for parent, child, y, _ in frames}
+        assert by_child["arm"] == ("base", pytest.approx(0.2))
+        assert by_child["tip"][0] == "arm"
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(30) == 130

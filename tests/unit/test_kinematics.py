@@ -134,3 +134,38 @@ def test_the_rate_limiter_and_time_going_backwards():
     publisher.ignore_timestamp = True
     publisher.on_joints(1, 31_000_000, ["j1"], np.array([0.2]))
     assert len(recorded.payloads) == 5
+
+
+SDF_ROBOT = """<?xml version="1.0"?>
+<sdf version="1.9"><model name="pendulum">
+  <!-- an SDF 1.4 file would give axes in the model frame -->
+  <link name="base"><pose>0 0 1 0 0 0</pose></link>
+  <link name="arm"><pose>0 0.2 1 0 0 1.5707963</pose></link>
+  <link name="tip"><pose>0 0.2 0.5 0 0 1.5707963</pose></link>
+  <joint name="to_world" type="fixed"><parent>world</parent><child>base</child></joint>
+  <joint name="hinge" type="revolute"><parent>base</parent><child>arm</child>
+    <axis><xyz>1 0 0</xyz><limit><lower>-1</lower><upper>1</upper></limit></axis></joint>
+  <joint name="spin" type="revolute"><parent>arm</parent><child>tip</child>
+    <axis><xyz>0 0 1</xyz></axis></joint>
+</model></sdf>"""
+
+
+def test_an_sdf_robot_description_is_read_as_sdformat_urdf_reads_it():
+    tree = Tree.parse(SDF_ROBOT)
+    assert (tree.name, tree.root) == ("pendulum", "base")
+    assert [(j.name, j.kind, j.parent, j.child) for j in tree.moving] == [
+        ("hinge", "revolute", "base", "arm"), ("spin", "continuous", "arm", "tip")]
+    hinge = tree.moving[0]
+    assert hinge.xyz == pytest.approx((0.0, 0.2, 0.0))  # the child's pose in the parent's
+    assert hinge.quat == pytest.approx((0, 0, math.sin(math.pi / 4), math.cos(math.pi / 4)))
+    # SDF 1.9 gives the axis in the joint's frame (the child's, here): URDF's too
+    assert hinge.axis == pytest.approx((1.0, 0.0, 0.0), abs=1e-6)
+    spin = tree.moving[1]
+    assert spin.xyz == pytest.approx((0.0, 0.0, -0.5), abs=1e-6)
+    translations, quats = tree.transforms([0.0, 0.0])
+    assert translations[0] == pytest.approx((0.0, 0.2, 0.0))
+
+
+def test_an_sdf_joint_robot_state_publisher_cannot_follow_is_named():
+    with pytest.raises(LaunchError, match="joint 'hinge' is a ball joint"):
+        Tree.parse(SDF_ROBOT.replace('name="hinge" type="revolute"', 'name="hinge" type="ball"'))
