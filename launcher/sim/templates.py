@@ -74,10 +74,12 @@ class Templates:
             for config, pose in prepared.sensors:  # a site at each sensor's pose on its link
                 site = spec.body(config.link).add_site(name=config.site, group=5)
                 site.pos, site.quat = list(pose.pos), list(pose.quat)
-            # a root link named "world" anchors the robot to the world, as in Gazebo
+            static = prepared.root_link == "world"
+            if static:  # a root link named "world" anchors the robot, as in Gazebo
+                _exclude_anchored_parents(spec)
             return Template(spec, prepared.name, label,
                             [*prepared.plugins, *(c for c, _ in prepared.sensors)],
-                            prepared.friction, static=prepared.root_link == "world",
+                            prepared.friction, static=static,
                             warnings=prepared.warnings)
         if stripped.startswith("<mujoco"):
             source = mjcf.read(text, path, environ=self.environ)
@@ -91,6 +93,25 @@ class Templates:
                             warnings=loaded.warnings)
         raise LaunchError(f"{label}: not a model description: expected URDF (<robot>), SDF "
                           f"(<sdf>) or MJCF (<mujoco>), found '{stripped[:40]}'")
+
+
+def _exclude_anchored_parents(spec: Any) -> None:
+    """MuJoCo never collides a body with its parent, except where the parent is welded to the
+    world: a cart on a rail fixed to the `world` link would grind along it. Gazebo collides no
+    two links of one model (self_collide off), so a moving link and the model's fixed links are
+    excluded pairs, which restores the parent filter for the anchored part."""
+    fixed, moving = [], []
+    stack = list(spec.worldbody.bodies)
+    while stack:
+        body = stack.pop()
+        if body.joints:
+            moving.append(body.name)
+        else:
+            fixed.append(body.name)
+            stack.extend(body.bodies)
+    for child in moving:
+        for parent in fixed:
+            spec.add_exclude(bodyname1=parent, bodyname2=child)
 
 
 def _spec_from(text: str, label: str) -> Any:

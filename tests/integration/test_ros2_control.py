@@ -90,6 +90,14 @@ def test_cart_example_position_runs_unchanged_and_follows_trajectories(demos):
                       "trajectory_msgs/msg/JointTrajectory", bad)
         time.sleep(1.5)
         assert abs(cart_position(demos) - 3.0) < 0.02
+        # a goal's own path tolerance, broken: aborted, and the cart stops where it is
+        strict = demos.run("action", "send_goal", "/joint_trajectory_controller/"
+                           "follow_joint_trajectory", "control_msgs/action/FollowJointTrajectory",
+                           "{trajectory: {joint_names: [slider_to_cart], points: [{positions: "
+                           "[-3.0], time_from_start: {sec: 1}}]}, path_tolerance: [{name: "
+                           "slider_to_cart, position: 0.000001}]}", timeout=60)
+        assert "ABORTED" in strict.stdout and "error_code: -4" in strict.stdout, strict.stdout
+        assert cart_position(demos) > 2.0
         refused = demos.run("action", "send_goal", "/joint_trajectory_controller/"
                             "follow_joint_trajectory",
                             "control_msgs/action/FollowJointTrajectory",
@@ -168,6 +176,10 @@ LINK = """<link name="l{n}"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0
   <joint name="j{n}" type="revolute"><parent link="{parent}"/><child link="l{n}"/>
     <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="50"
     velocity="5"/><dynamics damping="0.5"/></joint>"""
+EFFORT_BLOCK = """effort_group:
+  ros__parameters:
+    joints: [j4]
+"""
 ARM_YAML = """
 controller_manager:
   ros__parameters:
@@ -196,9 +208,6 @@ position_group:
 velocity_group:
   ros__parameters:
     joints: [j3]
-effort_group:
-  ros__parameters:
-    joints: [j4]
 few_states:
   ros__parameters:
     joints: [j1]
@@ -217,9 +226,12 @@ untyped:
 def arm(ws):
     ws.own_bus()
     yaml = ws.write("arm_controllers.yaml", ARM_YAML)
+    # a second <parameters> file: effort_group's parameters are only there
+    effort = ws.write("arm_effort.yaml", f"""
+    {EFFORT_BLOCK.replace(chr(10), chr(10) + "    ")}""")
     links = "\n  ".join(LINK.format(n=n, parent="base" if n == 1 else f"l{n - 1}")
                         for n in range(1, 5))
-    ws.write("arm.urdf", ARM.format(links=links, yaml=yaml))
+    ws.write("arm.urdf", ARM.format(links=links, yaml=f"{yaml}</parameters><parameters>{effort}"))
     proc = ws.start("gz", "sim", "-r", "-s", "-v", "3", "empty.sdf", output="sim.out")
     ws.wait_for_output("running", 60, "sim.out")
     spawned = ws.run("run", "ros_gz_sim", "create", "-file", "arm.urdf", "-name", "arm")
@@ -311,10 +323,34 @@ def test_every_controller_through_a_real_spawner_against_the_sim(arm):
     assert "name: ArmSystem" in components and "gz_ros2_control/GazeboSimSystem" in components
     types = arm.run("control", "list_controller_types").stdout
     assert "diff_drive_controller/DiffDriveController" in types
+    # lifecycle through launcher control: deactivate, clean up, configure, activate
+    for state, said in (("inactive", "Successfully deactivated position_group"),
+                        ("unconfigured", "successfully cleaned up position_group"),
+                        ("inactive", "Successfully configured position_group"),
+                        ("active", "Successfully activated position_group")):
+        changed = arm.run("control", "set_controller_state", "position_group", state)
+        assert changed.returncode == 0 and said in changed.stdout, changed.stdout + changed.stderr
+    wrong = arm.run("control", "set_controller_state", "nothing_here", "active")
+    assert wrong.returncode == 1 and "does not seem to be loaded" in wrong.stderr
+    # the hardware component taken down stops the controllers on it; back up, they can start
+    down = arm.run("control", "set_hardware_component_state", "ArmSystem", "inactive")
+    assert down.returncode == 0, down.stderr
+    assert not re.search(r"position_group\s+\S+\s+active", controllers(arm))
+    assert "[unavailable]" in arm.run("control", "list_hardware_interfaces").stdout
+    assert arm.run("control", "set_hardware_component_state", "ArmSystem",
+                   "active").returncode == 0
+    assert arm.run("control", "switch_controllers", "--activate", "position_group",
+                   "velocity_group").returncode == 0
     # unspawner: deactivated and unloaded
     gone = arm.run("run", "controller_manager", "unspawner", "velocity_group")
     assert gone.returncode == 0, gone.stderr
     assert "velocity_group" not in controllers(arm)
+    # --inactive: loaded and configured, not started; unload_controller takes it away
+    inactive = spawner(arm, "velocity_group", "--inactive")
+    assert inactive.returncode == 0, inactive.stderr
+    assert re.search(r"velocity_group\s+\S+\s+inactive", controllers(arm))
+    unloaded = arm.run("control", "unload_controller", "velocity_group")
+    assert unloaded.returncode == 0 and "Successfully unloaded" in unloaded.stdout
     drawn = arm.run("control", "view_controller_chains")
     assert drawn.returncode == 0, drawn.stderr
     assert (arm.root / "controller_diagram.gv.pdf").stat().st_size > 0

@@ -653,3 +653,24 @@ def test_a_urdf_rooted_at_a_world_link_is_anchored_as_gazebo_anchors_it(world):
     world.physics.step(500)
     assert list(world.data.xpos[world.model.body("post/top").id]) == pytest.approx([2, 0, 1])
     assert all(world.model.jnt_type[j] != 0 for j in range(world.model.njnt))  # none free
+
+
+def test_a_link_moving_on_an_anchored_part_does_not_collide_with_it(world):
+    """A cart on a rail fixed to `world` overlaps the rail, as gz_ros2_control's cart does;
+    Gazebo never collides a model's own links, so the cart slides freely."""
+    box = '<collision><geometry><box size="{}"/></geometry></collision><inertial>' \
+          '<mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>'
+    cart = f"""<robot name="cart"><link name="world"/>
+      <link name="rail">{box.format("30 0.05 0.05")}</link>
+      <link name="cart">{box.format("0.5 0.5 0.2")}</link>
+      <joint name="fix" type="fixed"><parent link="world"/><child link="rail"/>
+      <origin xyz="0 0 1"/></joint>
+      <joint name="slide" type="prismatic"><parent link="rail"/><child link="cart"/>
+      <axis xyz="1 0 0"/><limit lower="-15" upper="15" effort="100" velocity="30"/></joint>
+      </robot>"""
+    world.spawn(world.templates.from_string(cart), "cart", [0, 0, 0], IDENTITY)
+    world.data.qvel[world.model.jnt_dofadr[world.model.joint("cart/slide").id]] = 1.0
+    world.physics.step(1000)
+    assert world.data.ncon == 0
+    slide = world.model.jnt_qposadr[world.model.joint("cart/slide").id]
+    assert world.data.qpos[slide] == pytest.approx(1.0, abs=0.02)  # 1 m/s for 1 s, unbraked
