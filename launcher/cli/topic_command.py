@@ -148,9 +148,12 @@ def _type_of(session: Any, topic: str, given: str | None,
         if info and info.publishers:
             return sorted(info.types)[0]
         if time.monotonic() > deadline:
-            known = sorted(table)
-            raise LaunchError(f"nobody publishes '{topic}'{did_you_mean(topic, known)}; "
-                              "give its type to wait for it: launcher topic echo TOPIC TYPE")
+            if info:  # subscribed to, never published: its own name is no suggestion
+                hint = f" (it has {len(info.subscribers)} subscriber(s))"
+            else:
+                hint = did_you_mean(topic, (t for t, i in table.items() if i.publishers))
+            raise LaunchError(f"nobody publishes '{topic}'{hint}; give its type to wait for "
+                              "it: launcher topic echo TOPIC TYPE")
         time.sleep(0.1)
 
 

@@ -98,3 +98,23 @@ def test_qos_options_start_from_a_profile_and_override_it():
     assert not chosen(parser.parse_args(["--qos-durability", "volatile"])).transient_local
     with pytest.raises(SystemExit):
         parser.parse_args(["--qos-reliability", "sometimes"])
+
+
+def test_a_topic_only_subscribed_to_is_not_its_own_suggestion(monkeypatch):
+    from launcher.bus import graph
+    from launcher.cli import topic_command
+    from launcher.errors import LaunchError
+
+    clock = graph.TopicInfo("/clock")
+    clock.subscribers.append(object())
+    chatter = graph.TopicInfo("/chatter")
+    chatter.publishers.append(object())
+    monkeypatch.setattr(graph, "topics", lambda session, space: {"/clock": clock,
+                                                                 "/chatter": chatter})
+    monkeypatch.setattr(topic_command.time, "monotonic", iter(range(0, 100, 10)).__next__)
+    with pytest.raises(LaunchError) as caught:
+        topic_command._type_of(None, "/clock", None)
+    assert "nobody publishes '/clock' (it has 1 subscriber(s))" in str(caught.value)
+    with pytest.raises(LaunchError) as caught:
+        topic_command._type_of(None, "/chattr", None)
+    assert "did you mean '/chatter'" in str(caught.value)
