@@ -114,10 +114,14 @@ def _recorded(fields: list[str], bag: Path) -> dict[str, list[tuple[float, float
 def run(args: argparse.Namespace) -> int:
     if args.duration <= 0:
         raise UsageError(f"--duration must be above 0, got {args.duration:g}")
+    try:
+        import matplotlib
+    except ImportError:  # said before any waiting
+        raise LaunchError("launcher plot draws with matplotlib, which is not installed: "
+                          "sh hooks/bootstrap.sh test installs it (or pip install "
+                          "'launcher[plot]')") from None
     series = _recorded(args.fields, Path(args.bag)) if args.bag else \
         _live(args.fields, args.duration)
-    import matplotlib
-
     window = args.output is None and bool(os.environ.get("DISPLAY"))
     if not window:
         matplotlib.use("Agg")
