@@ -132,8 +132,35 @@ def real_ros() -> Check:
     return OK, "ROS install", "none needed: launcher's rclpy, rospy and messages are used"
 
 
+def commands() -> Check:
+    """Which `ros2`, `gz`, `roslaunch`, … this shell runs: launcher's, or a real one (which
+    always wins: launcher's come last on PATH)."""
+    import shutil
+
+    from launcher import compat
+
+    ours, real, absent = [], [], []
+    for name in compat.command_names():
+        found = shutil.which(name)
+        if found is None:
+            absent.append(name)
+        elif os.path.dirname(os.path.abspath(found)) == compat.COMMANDS:
+            ours.append(name)
+        else:
+            real.append(f"{name} → {found}")
+    parts = []
+    if real:
+        parts.append(f"real: {', '.join(real)}")
+    if ours:
+        parts.append(f"launcher's: {', '.join(ours)}")
+    if absent:
+        parts.append(f"not on PATH: {', '.join(absent)} (. hooks/setup.sh puts them there)")
+    return (NOTE if absent else OK), "commands", "; ".join(parts)
+
+
 def run(args: argparse.Namespace) -> int:
-    checks: list[Callable[[], Check]] = [python, mujoco, egl, zenoh, router, real_ros]
+    checks: list[Callable[[], Check]] = [python, mujoco, egl, zenoh, router, real_ros,
+                                         commands]
     results = [check() for check in checks]
     package_check, index = packages()
     results += [package_check, hooks(index)]

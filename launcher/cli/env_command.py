@@ -35,6 +35,8 @@ def run(args: argparse.Namespace) -> int:
     before = dict(os.environ)
     after = hooked_environment(load_index(), before)
     compat.node_apis_for_shell(after)
+    if args.shell != "json":  # the shell gets `ros2`, `gz`, `roslaunch`, … (last on PATH)
+        compat.commands_for_shell(after)
     diff = changes(before, after)
     if args.shell == "json":
         print(json.dumps(diff, indent=2, sort_keys=True))

@@ -13,6 +13,7 @@ import sys
 
 from launcher import __version__
 from launcher.arguments import Parser
+from launcher.cli.ros1 import TOOLS as ROS1_TOOLS
 from launcher.errors import reported
 
 COMMANDS = {
@@ -48,11 +49,11 @@ COMMANDS = {
 }
 
 
-def build_parser(selected: str | None) -> tuple[argparse.ArgumentParser,
-                                                 argparse._SubParsersAction]:
+def build_parser(selected: str | None, prog: str = "launcher") -> tuple[
+        argparse.ArgumentParser, argparse._SubParsersAction]:
     """The parser, and its subcommands (only the selected one's module is imported)."""
     parser = Parser(  # (its subcommands' parsers are Parsers too)
-        prog="launcher", description="ROS 2-style launch files for simulated robots.")
+        prog=prog, description="ROS 2-style launch files for simulated robots.")
     parser.add_argument("--version", action="version", version=f"launcher {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, (module, helptext) in COMMANDS.items():
@@ -63,12 +64,22 @@ def build_parser(selected: str | None) -> tuple[argparse.ArgumentParser,
     return parser, commands
 
 
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, prog: str = "launcher") -> int:
     if "_ARGCOMPLETE" in os.environ:  # the shell asks for completions (hooks/setup.sh)
         from launcher.cli.completion import complete
 
         return complete(build_parser, COMMANDS)
     argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["ros2"]:  # ROS 2's `ros2` (compat/bin): its verbs are launcher's commands
+        from launcher.cli.ros2_command import translate
+
+        debug = "--debug" in argv
+        return reported(lambda: _ros2(translate(argv[1:])), "", debug)
+    if argv[:1] and argv[0] in ROS1_TOOLS:  # ROS 1's rostopic, roslaunch, … (compat/bin)
+        tool = importlib.import_module(ROS1_TOOLS[argv[0]])
+        debug = "--debug" in argv
+        rest = [a for a in argv[1:] if a != "--debug"]
+        return reported(lambda: tool.main(rest, argv[0]), "", debug)
     if argv[:1] == ["sim"]:  # every flag after it is the sim's own (gz sim's), -h included
         from launcher.cli.sim_command import run_sim
 
@@ -82,12 +93,16 @@ def main(argv: list[str] | None = None) -> int:
 
         return reported(lambda: run_gz([a for a in argv[1:] if a != "--debug"]), "",
                         "--debug" in argv)
-    return reported(lambda: _parse_and_run(argv), "", "--debug" in argv)
+    return reported(lambda: _parse_and_run(argv, prog), "", "--debug" in argv)
 
 
-def _parse_and_run(argv: list[str]) -> int | None:
+def _ros2(argv: list[str] | None) -> int:
+    return 0 if argv is None else main(argv, "ros2")
+
+
+def _parse_and_run(argv: list[str], prog: str = "launcher") -> int | None:
     selected = next((word for word in argv if not word.startswith("-")), None)
-    parser, commands = build_parser(selected if selected in COMMANDS else None)
+    parser, commands = build_parser(selected if selected in COMMANDS else None, prog)
     if selected == "launch" and argv[0] == "launch":
         # `name:=value` may come before or after options (`--duration 10 drive:=false`)
         args = commands.choices["launch"].parse_intermixed_args(argv[1:])

@@ -228,6 +228,7 @@ def run_echo(args: argparse.Namespace) -> int:
                 space=_space(args))
     received = threading.Event()
     shown = echo_options(args)
+    shown_count = [0]  # printed so far (rostopic's `-n COUNT` stops at COUNT)
 
     def show(message: Any) -> None:
         if args.raw:
@@ -245,7 +246,8 @@ def run_echo(args: argparse.Namespace) -> int:
                     if isinstance(data, dict | list) else f"{data}\n"
         received.set()
         print(text if args.csv else text + "---", flush=True)
-        if args.once:
+        shown_count[0] += 1
+        if args.once or shown_count[0] == getattr(args, "count", 0):
             node.shutdown()
 
     node.create_subscription(type_name, topic, show, qos_options.chosen(args), raw=args.raw)

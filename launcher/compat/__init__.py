@@ -19,7 +19,7 @@ if TYPE_CHECKING:  # imported by every node's start (the finder): nothing more t
     from collections.abc import MutableMapping
 
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
-COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz, rosparam
+COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz, ros2, …
 SHIMMED = ("ament_index_python", "launch", "launch_ros")
 SITE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "site")  # node APIs' hook
 
@@ -60,13 +60,23 @@ def node_apis_for_shell(environment: MutableMapping[str, str]) -> None:
 
 
 def commands_for_children(environment: MutableMapping[str, str]) -> None:
-    """Append launcher's `gz` and `rosparam` to the children's PATH: last, so a real Gazebo's
-    `gz` or ROS 1's `rosparam` earlier on PATH wins. The user's own shell never gets them
-    (there they are `launcher gz`, `launcher rosparam`)."""
+    """Append launcher's `gz`, `ros2` and ROS 1's tools to the children's PATH: last, so a
+    real Gazebo's `gz` or ROS's tools earlier on PATH win."""
     path = environment.get("PATH", "")
     parts = path.split(os.pathsep) if path else []
     if COMMANDS not in parts:
         environment["PATH"] = os.pathsep.join([*parts, COMMANDS])
+
+
+def commands_for_shell(environment: MutableMapping[str, str]) -> None:
+    """What `launcher env` adds for the user's shell: `ros2`, `gz`, ROS 1's tools, last on
+    PATH, so the user's own (a real ROS or Gazebo) earlier on PATH wins."""
+    commands_for_children(environment)
+
+
+def command_names() -> list[str]:
+    """The names launcher provides as shell commands (compat/bin)."""
+    return sorted(name for name in os.listdir(COMMANDS) if not name.startswith("."))
 
 
 def real_node_apis(environment: MutableMapping[str, str]) -> str:

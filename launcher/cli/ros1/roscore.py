@@ -1,0 +1,70 @@
+"""`roscore`: the graph and its parameter server, started (or joined, when a launch or another
+roscore already runs them), with `/run_id`, `/rosdistro` and `/rosversion` set as roscore
+sets them; it prints roscore's summary and stays until Ctrl-C. The graph's router lives on
+while other nodes use it, and stops a few seconds after the last one, as launcher's routers
+do; nothing of roscore's stays."""
+
+from __future__ import annotations
+
+import argparse
+import uuid
+
+from launcher.arguments import Parser
+
+DISTRO = "noetic"
+VERSION = "1.16.0"
+
+
+def parameters(run_id: str) -> dict[str, str]:
+    """What roscore's roslaunch sets (rosdistro and rosversion end in a newline there)."""
+    return {"/run_id": run_id, "/rosdistro": f"{DISTRO}\n", "/rosversion": f"{VERSION}\n"}
+
+
+def main(argv: list[str], prog: str = "roscore") -> int:
+    p = Parser(prog=prog, description="roscore will start up a ROS Master, a ROS Parameter "
+                                      "Server and a rosout logging node (launcher's graph)")
+    p.add_argument("-p", "--port", help="master port (accepted: the graph needs none)")
+    p.add_argument("-v", dest="verbose", action="store_true", help="verbose printing")
+    p.add_argument("-w", "--numworkers", help=argparse.SUPPRESS)
+    p.add_argument("-t", "--timeout", help=argparse.SUPPRESS)
+    p.parse_args_strictly(argv)
+
+    from launcher.bus import discovery
+    from launcher.bus import graph_parameters as graph
+    from launcher.bus.node import Node
+    from launcher.errors import LaunchError
+
+    joined = discovery.answers(discovery.socket_path())
+    discovery.start()
+    node = Node("_roscore", argv=[], parameter_services=False)
+    try:
+        server = graph.GraphParameters(node, 10.0)
+        if not server.available(10.0):
+            raise LaunchError("the graph's parameter server did not answer within 10 s")
+        run_id = str(uuid.uuid1())
+        if "/run_id" in server.names("/"):
+            run_id = str(server.get("/run_id"))
+        server.set_many(parameters(run_id))
+        print(_summary(run_id, joined), flush=True)
+        node.spin()
+    except KeyboardInterrupt:
+        pass
+    finally:
+        node.destroy_node()
+    return 0
+
+
+def _summary(run_id: str, joined: bool) -> str:
+    from launcher.bus import discovery
+
+    where = discovery.socket_path()
+    started = (f"joined the running graph at {where}" if joined
+               else f"auto-starting new master (the graph's router at {where})")
+    return "\n".join([
+        "... logging to the graph's router log", "",
+        f"ros_comm version {VERSION}", "", "",
+        "SUMMARY", "========", "",
+        "PARAMETERS", f" * /rosdistro: {DISTRO}", f" * /rosversion: {VERSION}", "",
+        "NODES", "", started,
+        f"setting /run_id to {run_id}",
+        "started core service [/rosout]", ""])

@@ -1,0 +1,99 @@
+"""`roslaunch [options] [package] <filename> [arg_name:=value …]`, as ROS 1's roslaunch finds
+its file (a path, or a file anywhere in the package) and says so when it cannot, then runs it
+as `launcher launch` does. roslaunch's display options are taken: `--screen` (every node's
+output is on the screen already), `--wait` (the graph needs no master to wait for), `-v`,
+`--ros-args` (the file's arguments)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+from pathlib import Path
+
+from launcher.arguments import Parser
+from launcher.errors import LaunchError, UsageError
+
+
+def parser(prog: str = "roslaunch") -> Parser:
+    p = Parser(prog=prog, usage="roslaunch [options] [package] <filename> [arg_name:=value...]"
+               "\n       roslaunch [options] <filename> [<filename>...] [arg_name:=value...]",
+               description="Run a ROS 1 launch file (or a ROS 2 one) on launcher's graph.")
+    p.add_argument("words", nargs="*", help=argparse.SUPPRESS)
+    p.add_argument("--screen", action="store_true",
+                   help="force output of all local nodes to screen (they print there already)")
+    p.add_argument("--wait", action="store_true",
+                   help="wait for master to start (the graph needs none: no wait)")
+    p.add_argument("-v", dest="verbose", action="store_true", help="verbose printing")
+    p.add_argument("--ros-args", dest="show_args", action="store_true",
+                   help="display the arguments of the launch file and exit")
+    p.add_argument("--duration", type=float, default=None, metavar="SECONDS",
+                   help="shut the launch down cleanly after this many seconds (launcher's)")
+    p.add_argument("--debug", action="store_true", help="tracebacks with errors (launcher's)")
+    for name in ("--core", "--local", "--disable-title", "--no-summary", "--skip-log-check",
+                 "--sigint-timeout", "--sigterm-timeout"):
+        p.add_argument(name, action="store_true" if "timeout" not in name else "store",
+                       help=argparse.SUPPRESS)
+    return p
+
+
+def main(argv: list[str], prog: str = "roslaunch") -> int:
+    args, extra = parser(prog).parse_known_args(argv)
+    words = [*args.words, *extra]
+    flags = [w for w in words if w.startswith("-")]
+    if flags:
+        parser(prog).error(f"unrecognized arguments: {' '.join(flags)}")
+    files, assignments = _split(words)
+    from launcher.cli import launch_command
+    from launcher.cli.workspace import load_index
+
+    path = resolve(files, load_index())
+    launch = argparse.Namespace(file=str(path), arguments=assignments,
+                                show_args=args.show_args, print=False, debug=args.debug,
+                                launch_prefix="", noninteractive=False,
+                                duration=args.duration)
+    return launch_command.run(launch)
+
+
+def _split(words: list[str]) -> tuple[list[str], list[str]]:
+    files = [w for w in words if ":=" not in w]
+    assignments = [w for w in words if ":=" in w]
+    if not files:
+        raise UsageError("roslaunch: you must specify at least one input file")
+    return files, assignments
+
+
+def resolve(files: list[str], index: object) -> Path:
+    """The launch file, found as roslaunch's rlutil.resolve_launch_arguments finds it."""
+    from launcher.packages.index import PackageIndex, PackageNotFound
+
+    assert isinstance(index, PackageIndex)
+    if os.path.isfile(files[0]):
+        if len(files) > 1:
+            raise LaunchError("roslaunch: several launch files at once are not supported "
+                              f"by launcher yet; give one ({files[0]})")
+        return Path(files[0])
+    if len(files) < 2:
+        raise LaunchError(f"RLException: [{files[0]}] is neither a launch file in package "
+                          f"nor is it a launch file name (no such file: "
+                          f"{os.path.abspath(files[0])})")
+    package_name, file_name = files[0], files[1]
+    try:
+        package = index.get(package_name)
+    except PackageNotFound as exc:
+        raise LaunchError(f"RLException: [{package_name}] is not a package or launch file "
+                          f"name; {str(exc).split('; ', 1)[0]}") from None
+    matches = sorted(p for p in package.path.rglob(file_name) if p.is_file())
+    if len(matches) > 1:
+        listed = "".join(f"\n  {m}" for m in matches)
+        raise LaunchError(f"RLException: multiple files named [{file_name}] in package "
+                          f"[{package_name}]:{listed}\nPlease specify full path instead")
+    if not matches:
+        from launcher.errors import did_you_mean
+
+        have = sorted({p.name for pattern in ("*.launch", "*.launch.*", "*.xml")
+                       for p in package.path.rglob(pattern)})
+        raise LaunchError(f"RLException: [{file_name}] is neither a launch file in package "
+                          f"[{package_name}] nor is [{package_name}] a launch file name"
+                          f"{did_you_mean(file_name, have)}; the package ({package.path}) "
+                          f"has: {', '.join(have) or 'no launch files'}")
+    return matches[0]

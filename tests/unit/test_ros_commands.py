@@ -1,0 +1,62 @@
+"""`ros2`'s verbs onto launcher's commands, and ROS 1's rostopic word rules (`/topic/field`,
+a message from YAML or its fields in order), as ros2cli and rostopic have them."""
+
+from __future__ import annotations
+
+import pytest
+
+from launcher.cli.ros1 import ros1_type
+from launcher.cli.ros1.rostopic import message_values, split_field
+from launcher.cli.ros2_command import translate
+from launcher.errors import LaunchError, UsageError
+
+
+def test_ros2_verbs_are_launchers_commands_and_wtf_is_doctor():
+    assert translate(["topic", "echo", "/x"]) == ["topic", "echo", "/x"]
+    assert translate(["launch", "pkg", "f.launch.py", "a:=1"]) == \
+        ["launch", "pkg", "f.launch.py", "a:=1"]
+    assert translate(["wtf"]) == ["doctor"]
+    assert translate(["--use-python-default-buffering", "node", "list"]) == ["node", "list"]
+
+
+def test_ros2_daemon_prints_as_ros2_and_help_lists_the_verbs(capsys):
+    assert translate(["daemon", "stop"]) is None
+    assert capsys.readouterr().out == "The daemon has been stopped\n"
+    assert translate([]) is None
+    assert "  multicast  Various multicast related sub-commands" in capsys.readouterr().out
+
+
+def test_ros2_unknown_and_missing_verbs():
+    with pytest.raises(UsageError, match=r"'lanch' is not a ros2 command \(did you mean "
+                                         r"'launch'\?\)"):
+        translate(["lanch"])
+    with pytest.raises(UsageError, match="'restart' is not a daemon command"):
+        translate(["daemon", "restart"])
+    with pytest.raises(LaunchError, match="ros2 multicast: launcher's graph never uses "
+                                          "multicast"):
+        translate(["multicast", "receive"])
+
+
+def test_rostopic_echo_reads_a_field_path_after_the_topic():
+    topics = {"/odom": 1, "/a/b": 1}
+    assert split_field("/odom/pose/pose", topics) == ("/odom", "pose.pose")
+    assert split_field("/a/b", topics) == ("/a/b", None)
+    assert split_field("/a/b/c", topics) == ("/a/b", "c")
+    assert split_field("/nothing/here", topics) == ("/nothing/here", None)
+
+
+def test_rostopic_pub_values_from_yaml_or_the_fields_in_order():
+    assert message_values("std_msgs/msg/String", ["hello"]) == {"data": "hello"}
+    assert message_values("std_msgs/msg/String", ["{data: hi}"]) == {"data": "hi"}
+    assert message_values("geometry_msgs/msg/Vector3", ["1", "2", "3"]) == \
+        {"x": 1, "y": 2, "z": 3}
+    assert message_values("std_msgs/msg/Empty", []) == {}
+    with pytest.raises(UsageError, match="too many arguments"):
+        message_values("std_msgs/msg/String", ["a", "b"])
+    with pytest.raises(UsageError, match="is not valid YAML"):
+        message_values("std_msgs/msg/String", ["{data: [x"])
+
+
+def test_ros1_type_names():
+    assert ros1_type("std_msgs/msg/String") == "std_msgs/String"
+    assert ros1_type("std_msgs/String") == "std_msgs/String"
