@@ -83,6 +83,17 @@ if [ ! -f .venv/.installed ] || [ pyproject.toml -nt .venv/.installed ]; then
 else
     say ".venv is up to date"
 fi
+# The build tools of `colcon build` (pyproject's `tools` extra), apart under .venv/tools: their
+# colcon and cmake must never shadow a user's own (launcher's `colcon` runs them from there).
+if [ ! -f .venv/tools/.installed ] || [ pyproject.toml -nt .venv/tools/.installed ]; then
+    say "installing the build tools of colcon build under .venv/tools (colcon with its ROS," \
+        "CMake and Python extensions, CMake, Ninja): a few seconds"
+    .venv/bin/python -c 'import tomllib; print("\n".join(tomllib.load(open("pyproject.toml",
+"rb"))["project"]["optional-dependencies"]["tools"]))' > .venv/tools-requirements.txt
+    .venv/bin/python -m pip install --quiet --disable-pip-version-check --prefix .venv/tools \
+        -r .venv/tools-requirements.txt
+    touch .venv/tools/.installed
+fi
 # Byte-compile once: start-up time is benchmarked and some machines set PYTHONDONTWRITEBYTECODE.
 .venv/bin/python -m compileall -q launcher >/dev/null
 say "ready. In your shell, . hooks/setup.sh puts launcher, your workspace's hooks and tab" \

@@ -158,9 +158,20 @@ def commands() -> Check:
     return (NOTE if absent else OK), "commands", "; ".join(parts)
 
 
+def build_tools() -> Check:
+    """colcon and CMake for `colcon build`, installed apart under .venv/tools by the set-up."""
+    from launcher.packages import build
+
+    try:
+        build.check_installed()
+    except build.BuildError as exc:
+        return NOTE, "build tools", str(exc)
+    return OK, "build tools", f"colcon and CMake under {build.TOOLS}"
+
+
 def run(args: argparse.Namespace) -> int:
     checks: list[Callable[[], Check]] = [python, mujoco, egl, zenoh, router, real_ros,
-                                         commands]
+                                         commands, build_tools]
     results = [check() for check in checks]
     package_check, index = packages()
     results += [package_check, hooks(index)]

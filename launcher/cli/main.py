@@ -75,6 +75,10 @@ def main(argv: list[str] | None = None, prog: str = "launcher") -> int:
 
         debug = "--debug" in argv
         return reported(lambda: _ros2(translate(argv[1:])), "", debug)
+    if argv[:1] == ["colcon"]:  # colcon (compat/bin): the real one, from the build tools
+        from launcher.cli.colcon_command import main as colcon
+
+        return reported(lambda: colcon(argv[1:]), "", "--debug" in argv)
     if argv[:1] and argv[0] in ROS1_TOOLS:  # ROS 1's rostopic, roslaunch, … (compat/bin)
         tool = importlib.import_module(ROS1_TOOLS[argv[0]])
         debug = "--debug" in argv

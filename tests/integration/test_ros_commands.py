@@ -74,14 +74,14 @@ def graph(ws):
 def test_a_real_tool_on_path_wins_and_launchers_come_last(ws):
     real = ws.root / "real-ros"
     real.mkdir()
-    for name in ("ros2", "rostopic"):
+    for name in ("ros2", "rostopic", "colcon"):
         (real / name).write_text(f"#!/bin/sh\necho REAL-{name} \"$@\"\n")
         (real / name).chmod(0o755)
     path = f"{real}{os.pathsep}{ws.env['PATH']}"
-    done = shell(ws, "ros2 daemon status; rostopic list; command -v roslaunch; "
+    done = shell(ws, "ros2 daemon status; rostopic list; colcon build; command -v roslaunch; "
                      "echo \"PATH=$PATH\"; launcher doctor", path=path, timeout=120)
     assert "REAL-ros2 daemon status" in done.stdout, done.stdout + done.stderr
-    assert "REAL-rostopic list" in done.stdout
+    assert "REAL-rostopic list" in done.stdout and "REAL-colcon build" in done.stdout
     ours = REPO / "launcher" / "compat" / "bin"
     assert f"{ours}/roslaunch" in done.stdout
     folders = re.search(r"PATH=(.*)", done.stdout).group(1).split(os.pathsep)
@@ -94,7 +94,7 @@ def test_a_real_tool_on_path_wins_and_launchers_come_last(ws):
 def test_the_names_are_not_console_scripts_of_the_python_environment():
     scripts = Path(sys.executable).parent
     names = os.listdir(REPO / "launcher" / "compat" / "bin")
-    assert {"ros2", "roslaunch", "rostopic", "roscore", "rosrun"} <= set(names)
+    assert {"ros2", "roslaunch", "rostopic", "roscore", "rosrun", "colcon"} <= set(names)
     assert not [n for n in names if (scripts / n).exists()]
 
 
