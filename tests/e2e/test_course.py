@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 import signal
+import subprocess
 import time
 
 import pytest
@@ -98,22 +99,33 @@ def test_the_course_gazebo_commands_with_the_course_text(course):
                    f'{{x: 2.0, y: -2.0, z: 0.5}}}}}}')
     assert "success: true" in spawned, spawned
     call(course, "/gazebo/pause_physics", "std_srvs/srv/Empty")
-    sent = course.run("topic", "pub", "--once", "/gazebo/set_model_state",
-                      "gazebo_msgs/ModelState", course_set_model_state())
-    assert sent.returncode == 0, sent.stderr
-    deadline = time.monotonic() + 10
-    while True:
-        state = call(course, "/gazebo/get_model_state", "gazebo_msgs/srv/GetModelState",
-                     "{model_name: unit_box}")
-        if field(state, "x") == pytest.approx(10.0) or time.monotonic() > deadline:
-            break
-        time.sleep(0.2)
+    # the course's own command line, in a bash that sourced launcher's setup file: rostopic
+    # pub latches the message and stays until Ctrl-C, as ROS 1's does
+    sent = subprocess.Popen(["bash", "-c", f". {REPO / 'hooks' / 'setup.bash'} && exec rostopic "
+                             "pub /gazebo/set_model_state gazebo_msgs/ModelState "
+                             f'"{course_set_model_state()}"'], cwd=course.root, env=course.env,
+                            stdout=subprocess.PIPE, text=True)
+    try:
+        assert "publishing and latching message" in sent.stdout.readline()
+        deadline = time.monotonic() + 10
+        while True:
+            state = call(course, "/gazebo/get_model_state", "gazebo_msgs/srv/GetModelState",
+                         "{model_name: unit_box}")
+            if field(state, "x") == pytest.approx(10.0) or time.monotonic() > deadline:
+                break
+            time.sleep(0.2)
+    finally:
+        sent.send_signal(signal.SIGINT)
+        assert sent.wait(20) == 0
     assert (field(state, "x"), field(state, "y"), field(state, "z")) == \
         pytest.approx((10.0, 20.0, 1.0))  # paused: it stays where the course put it
     physics = call(course, "/gazebo/get_physics_properties",
                    "gazebo_msgs/srv/GetPhysicsProperties")
     assert "pause: true" in physics and field(physics, "time_step") == 0.001
-    call(course, "/gazebo/reset_world", "std_srvs/srv/Empty")  # the course's rosservice call
+    reset = subprocess.run(["bash", "-c", f". {REPO / 'hooks' / 'setup.bash'} && rosservice "
+                            "call /gazebo/reset_world"], cwd=course.root, env=course.env,
+                           capture_output=True, text=True, timeout=60)  # the course's words
+    assert (reset.returncode, reset.stdout) == (0, ""), reset.stderr
     state = call(course, "/gazebo/get_model_state", "gazebo_msgs/srv/GetModelState",
                  "{model_name: unit_box}")
     assert (field(state, "x"), field(state, "y")) == pytest.approx((2.0, -2.0))

@@ -112,3 +112,67 @@ def test_the_course_roslaunch_files_spawn_and_drive(catkin):
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(60) == 130
+
+
+def course_world_plugin_cmake() -> str:
+    """world_plugin's CMakeLists.txt as the course prints it (on one line, as its text has)."""
+    from tests.e2e.test_course import course_text
+
+    text = course_text()
+    start = text.index("cmake_minimum_required(VERSION 3.0.2) project(world_plugin)")
+    end = text.index("${GAZEBO_LIBRARIES})", start) + len("${GAZEBO_LIBRARIES})")
+    return text[start:end] + "\n"
+
+
+def test_the_course_command_lines_verbatim_in_a_shell(catkin):
+    """catkin_make, source devel/setup.bash, roslaunch, a second roslaunch, rostopic echo and
+    rosservice call, typed as the course types them in a bash that sourced launcher's setup."""
+    import os
+    import subprocess
+
+    from tests.conftest import REPO
+
+    setup = REPO / "hooks" / "setup.bash"
+    cmake = catkin.write("catkin_ws/src/world_plugin/CMakeLists.txt", course_world_plugin_cmake())
+    script = catkin.root / "catkin_ws/src/course_nodes/scripts/publisher.py"
+    script.chmod(0o644)  # as the course's editor leaves it: catkin_make makes it runnable
+
+    def shell(line: str, **kwargs):
+        return subprocess.Popen(["bash", "-c", f". {setup} && cd catkin_ws && {line}"],
+                                cwd=catkin.root, env=catkin.env, text=True, **kwargs)
+
+    made = shell("catkin_make", stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    said = made.communicate(timeout=120)[0]
+    assert made.returncode == 0, said
+    line = cmake.read_text().count("\n", 0, cmake.read_text().index("add_library")) + 1
+    assert f"{cmake}:{line}: warning: add_library(my_gazebo_world_plugin) of package " \
+           "'world_plugin' is C++, left out: C++ Gazebo plugins" in said, said
+    assert os.access(script, os.X_OK)
+    assert (catkin.root / "catkin_ws/devel/setup.bash").is_file()
+    out = open(catkin.root / "course.out", "w")  # noqa: SIM115
+    world = shell("source devel/setup.bash && exec roslaunch world_plugin gazebo.launch",
+                  stdout=out, stderr=subprocess.STDOUT)
+    try:
+        catkin.wait_for_output("spawned 'robot' into world 'default'", 120, "course.out")
+        second = shell("source devel/setup.bash && roslaunch robot_description spawn.launch "
+                       "x:=6 model_name:=second_model", stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT)
+        said = second.communicate(timeout=120)[0]
+        assert second.returncode == 0 and "spawned 'second_model'" in said, said
+        echo = shell("rostopic echo /gazebo/model_states", stdout=subprocess.PIPE)
+        try:
+            seen = ""
+            while "---" not in seen:
+                seen += echo.stdout.readline()
+            assert "second_model" in seen and "robot" in seen, seen
+        finally:
+            echo.send_signal(signal.SIGINT)
+            echo.wait(20)
+        reset = shell("rosservice call /gazebo/reset_world", stdout=subprocess.PIPE,
+                      stderr=subprocess.PIPE)
+        outs = reset.communicate(timeout=60)
+        assert reset.returncode == 0, outs
+        assert outs[0] == "", outs  # an empty response prints nothing, as in ROS 1
+    finally:
+        world.send_signal(signal.SIGINT)
+        assert world.wait(60) in (0, 130)

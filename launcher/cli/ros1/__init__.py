@@ -18,6 +18,7 @@ TOOLS = {  # the tool's name → its module
     "rosmsg": "launcher.cli.ros1.rosmsg",
     "rossrv": "launcher.cli.ros1.rosmsg",
     "rospack": "launcher.cli.ros1.rospack",
+    "catkin_make": "launcher.cli.ros1.catkin_make",
 }
 
 

@@ -113,7 +113,8 @@ def run_call(args: argparse.Namespace) -> int:
         response = node.create_client(type_name, name).call(request, 10.0)
     finally:
         node.destroy_node()
-    data = to_data(response)
+    data = {k: v for k, v in to_data(response).items()
+            if k != "structure_needs_at_least_one_member"}  # ROS 2's filler of an empty one
     if data:
         print(yaml.safe_dump(data, sort_keys=False, default_flow_style=False), end="")
     return 0
