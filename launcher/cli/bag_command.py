@@ -56,6 +56,12 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     play.add_argument("--start-offset", type=float, default=0.0, metavar="SECONDS",
                       help="skip this many seconds from the bag's start")
     play.set_defaults(run=run_play)
+    convert = verbs.add_parser("convert", help="a ROS 1 bag (.bag) to a rosbag2 bag (MCAP), "
+                                               "or back")
+    convert.add_argument("source", metavar="IN", help="a .bag file, or a rosbag2 bag folder")
+    convert.add_argument("target", metavar="OUT",
+                         help="the new rosbag2 folder, or the new .bag file")
+    convert.set_defaults(run=run_convert)
     listing = verbs.add_parser("list", help="the storage formats (or converters, "
                                             "compressors) bags can use")
     listing.add_argument("plugin", nargs="?", default="storage",
@@ -123,6 +129,14 @@ def run_play(args: argparse.Namespace) -> int:
         node.destroy_node()
     if sent >= 0:
         print(f"played {sent} messages")
+    return 0
+
+
+def run_convert(args: argparse.Namespace) -> int:
+    from launcher.bus import bag1
+
+    bag1.convert(Path(args.source), Path(args.target))
+    print(f"wrote {args.target}")
     return 0
 
 

@@ -222,3 +222,54 @@ def test_roscore_joins_the_graph_sets_roslaunchs_parameters_and_stops_on_ctrl_c(
     finally:
         core.send_signal(signal.SIGINT)
         assert core.wait(20) == 0
+
+
+def test_rosbag_records_a_ros1_bag_that_rosbags_reads_and_plays_it_back(graph):
+    from rosbags.rosbag1 import Reader
+    from rosbags.typesys import Stores, get_typestore
+
+    done = shell(graph, "rosbag record -O chat.bag /chatter --duration 2 && rosbag info "
+                        "chat.bag", timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "[ INFO] Recording to 'chat.bag'." in done.stdout
+    assert re.search(r"topics:\s+/chatter\s+\d+ msgs\s+: std_msgs/String", done.stdout)
+    assert "std_msgs/String [992ce8a1687cec8c8bd883ec73ca41d1]" in done.stdout  # ROS 1's md5
+    noetic = get_typestore(Stores.ROS1_NOETIC)  # an independent reader, ROS 1's types
+    with Reader(graph.root / "chat.bag") as reader:
+        texts = [noetic.deserialize_ros1(raw, "std_msgs/msg/String").data
+                 for _c, _t, raw in reader.messages()]
+    assert len(texts) >= 10 and set(texts) == {"hello"}
+    converted = shell(graph, "launcher bag convert chat.bag chat2 && launcher bag info chat2")
+    assert converted.returncode == 0 and "Topic: /chatter" in converted.stdout, converted.stderr
+    note = subprocess.Popen(["bash", "-c", f". {SETUP} && exec rostopic pub -r 10 /note "
+                                           "std_msgs/String 'from the bag'"],
+                            cwd=graph.root, env=graph.env, stdout=subprocess.DEVNULL)
+    try:
+        recorded = shell(graph, "rosbag record -O note.bag /note --duration 2", timeout=120)
+        assert "recorded" in recorded.stdout, recorded.stdout + recorded.stderr
+    finally:
+        note.send_signal(signal.SIGINT)
+        note.wait(20)
+    listener = subprocess.Popen(["bash", "-c", f". {SETUP} && exec rostopic echo -n 1 /note"],
+                                cwd=graph.root, env=graph.env, stdout=subprocess.PIPE, text=True)
+    try:
+        time.sleep(1.0)
+        played = shell(graph, "rosbag play note.bag", timeout=60)
+        assert played.returncode == 0 and "Done." in played.stdout, played.stderr
+        assert "data: from the bag" in listener.communicate(timeout=30)[0]
+    finally:
+        if listener.poll() is None:
+            listener.send_signal(signal.SIGINT)
+            listener.wait(20)
+
+
+def test_rosbag_record_into_a_folder_that_is_not_writable(graph):
+    """/proc/1 takes no new file from anyone, root included (who writes past permission bits)."""
+    done = shell(graph, "rosbag record -O /proc/1/race.bag /chatter")
+    assert done.returncode == 1
+    assert "cannot write '/proc/1/race.bag': the folder '/proc/1' is not writable" in \
+        done.stderr, done.stderr
+    assert "Traceback" not in done.stderr
+    missing = shell(graph, "rosbag record -O no/such/folder/race.bag /chatter")
+    assert missing.returncode == 1 and "the folder 'no/such/folder' does not exist" in \
+        missing.stderr
