@@ -21,6 +21,8 @@ ROS 1 → launcher:
 
 from __future__ import annotations
 
+import uuid
+
 from launcher.errors import Location, ParseError
 from launcher.frontend.entity import Attribute, Entity
 
@@ -80,12 +82,26 @@ def _signs(entity: Entity) -> tuple[tuple[str, Location] | None, tuple[str, Loca
     return one, two
 
 
+RUN_ID = str(uuid.uuid1())  # one per launch, as roslaunch's
+ROSLAUNCH_PARAMETERS = {"/run_id": RUN_ID, "/rosdistro": "noetic\n", "/rosversion": "1.16.0\n"}
+
+
 def translate(root: Entity) -> Entity:
-    """The ROS 2 entity tree that does what this roslaunch tree does."""
+    """The ROS 2 entity tree that does what this roslaunch tree does. Like roslaunch, it puts
+    /run_id, /rosdistro and /rosversion on the parameter server, so the server holds them
+    while the launch runs, whatever else it sets."""
     _unique_names(root.children, "", {})
     out = Entity("launch", root.location, nested_in_children=True)
-    out.children = _body(root.children)
+    out.children = [*(_server_parameter(name, value, root.location)
+                      for name, value in ROSLAUNCH_PARAMETERS.items()), *_body(root.children)]
     return out
+
+
+def _server_parameter(name: str, value: str, where: Location) -> Entity:
+    made = Entity("set_parameter", where, nested_in_children=True)
+    made.attributes.update(name=_text(name, where), value=_text(value, where),
+                           type=_text("str", where), server_only=_text("true", where))
+    return made
 
 
 def _literal(entity: Entity, name: str) -> str | None:

@@ -149,6 +149,10 @@ def test_ros1_topic_service_and_node_tools_on_a_running_graph(graph):
     assert "Node [/talker]" in info and " * /chatter [std_msgs/String]" in info
     assert " * /switch" in info
     assert "reply from /talker\ttime=" in ping
+    # the launch set no parameter, yet the server holds roslaunch's own, as roscore's would
+    params = shell(graph, "rosparam list; rosparam get /rosversion")
+    assert {"/rosdistro", "/rosversion", "/run_id"} <= set(params.stdout.split()), params
+    assert "1.16.0" in params.stdout
     unknown = shell(graph, "rosnode info /talkr")
     assert unknown.returncode == 1
     assert "Unknown node [/talkr] (did you mean '/talker'?)" in unknown.stderr

@@ -282,7 +282,8 @@ def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
         listing = ros1.run("rosparam", "list")
         assert listing.stdout.split() == [
             "/absolute", "/fleet/r1/driver/gain", "/fleet/rate", "/fleet/tuning/kp",
-            "/gains/i", "/gains/limits/max", "/gains/p", "/robot_description"], listing.stderr
+            "/gains/i", "/gains/limits/max", "/gains/p", "/robot_description", "/rosdistro",
+            "/rosversion", "/run_id"], listing.stderr  # the last three: roslaunch's own
         assert ros1.run("rosparam", "list", "/fleet/r1").stdout.split() == \
             ["/fleet/r1/driver/gain"]
         gains = ros1.run("rosparam", "get", "/gains")
@@ -315,8 +316,8 @@ def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
 </launch>
 """)
         forget = ros1.run("launch", "forget.launch", timeout=60)
-        assert "1 parameter set on the graph's parameter server (/_parameter_server), " \
-            "1 deleted" in forget.stdout, forget.stdout + forget.stderr
+        assert "4 parameters set on the graph's parameter server (/_parameter_server), " \
+            "1 deleted" in forget.stdout, forget.stdout + forget.stderr  # (3: roslaunch's own)
         assert ros1.run("rosparam", "list", "/loaded").stdout.split() == ["/loaded/again"]
         # roslaunch deletes before it sets: /loaded's old tree is gone, what the launch set
         # after the delete stays; a launched script's `rosparam` (launcher's) sees just that

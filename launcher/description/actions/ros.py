@@ -45,6 +45,9 @@ class SetParameter(Action):
                                  doc="roslaunch's rosparam command (default load).")
     server: Any = attr(Kind.BOOL, False, doc="roslaunch's: also on the graph's parameter "
                                              "server, by its full name.")
+    server_only: Any = attr(Kind.BOOL, False, doc="roslaunch's own (/run_id, /rosdistro): on "
+                                                  "the graph's parameter server alone, not "
+                                                  "for the nodes.")
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -74,6 +77,9 @@ class SetParameter(Action):
             value = params.value_of(context, self.value, kind, name)
         except ExecutionError as exc:
             raise exc if exc.location else exc.at(self.where) from None
+        if resolve(context, self.server_only, Kind.BOOL, "server_only"):
+            to_graph(context, graph_name(context, name), value)
+            return
         self._set(context, name, value, server)
 
     @staticmethod
