@@ -36,6 +36,9 @@ find_package(ament_cmake REQUIRED)
 install(DIRECTORY {folders} DESTINATION share/${{PROJECT_NAME}})
 ament_package()
 """
+EXPORT = """  <buildtool_depend>ament_cmake</buildtool_depend>
+  <export><build_type>ament_cmake</build_type></export>
+"""
 
 
 def timed(argv: list[str], env: dict[str, str], runs: int) -> list[float]:
@@ -89,6 +92,14 @@ def colcon(runs: int) -> list[tuple[str, str, str]]:
         shutil.copytree(source, target)
         folders = " ".join(sorted(p.name for p in target.iterdir() if p.is_dir()))
         (target / "CMakeLists.txt").write_text(CMAKE.format(name=name, folders=folders))
+        manifest = target / "package.xml"  # as an ament_cmake package's (and an email that
+        text = manifest.read_text().replace("@localhost", "@example.com")  # catkin_pkg takes)
+        if "<export>" in text:
+            text = text.replace("<export>", "<buildtool_depend>ament_cmake</buildtool_depend>"
+                                "\n  <export><build_type>ament_cmake</build_type>")
+        else:
+            text = text.replace("</package>", EXPORT + "</package>")
+        manifest.write_text(text)
     env = {**os.environ, "PATH": f"{Path(sys.executable).parent}:/usr/bin:/bin:{COMMANDS}"}
     found = []
     for _ in range(runs):

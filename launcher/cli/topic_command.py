@@ -9,25 +9,20 @@ import threading
 import time
 from collections import deque
 from itertools import pairwise
-from typing import Any
-
-import yaml
+from typing import TYPE_CHECKING, Any
 
 from launcher.bus import graph, keys
-from launcher.bus.messages import build, echo_data, ros_repr, to_data
 from launcher.bus.names import expand
-from launcher.bus.node import Node, Rate
 from launcher.bus.qos import PROFILES, QoS
 from launcher.bus.session import open_session
-from launcher.bus.types import registry
 from launcher.cli import completion, positive_count, positive_number, qos_options
-from launcher.description.safe_expression import (
-    ExpressionError,
-    check_expression,
-    evaluate,
-    fields_of,
-)
 from launcher.errors import LaunchError, UsageError, did_you_mean
+
+if TYPE_CHECKING:
+    from launcher.bus.node import Node
+
+# (messages, nodes, YAML and the filter's evaluator are imported by the verbs that use them:
+# `topic list`, the most typed, starts in a few tens of milliseconds: bench/commands)
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
@@ -220,6 +215,10 @@ def _csv(data: Any) -> str:
 
 
 def run_echo(args: argparse.Namespace) -> int:
+    import yaml
+
+    from launcher.bus.node import Node
+
     accept = _filter(args.filter_expr)
     session = open_session("client")
     topic = _topic(args.topic)
@@ -260,6 +259,8 @@ def run_echo(args: argparse.Namespace) -> int:
 
 def echo_options(args: argparse.Namespace) -> Any:
     """message → printable data, as `--no-arr`, `--no-str` and the truncation say."""
+    from launcher.bus.messages import echo_data
+
     limit = None if args.full_length else args.truncate_length
     return lambda message, type_name: echo_data(message, type_name, limit=limit,
                                                 no_arr=args.no_arr, no_str=args.no_str)
@@ -268,6 +269,14 @@ def echo_options(args: argparse.Namespace) -> Any:
 def _filter(expression: str | None) -> Any:
     """`--filter EXPR` as a test of a message; the expression is checked before anything
     starts, and a message it fails on is said once and not printed."""
+    from launcher.bus.messages import to_data
+    from launcher.description.safe_expression import (
+        ExpressionError,
+        check_expression,
+        evaluate,
+        fields_of,
+    )
+
     if expression is None:
         return None
     try:
@@ -290,6 +299,11 @@ def _filter(expression: str | None) -> Any:
 
 def run_pub(args: argparse.Namespace) -> int:
     """As `ros2 topic pub`, its messages printed as rclpy prints them."""
+    import yaml
+
+    from launcher.bus.messages import build, ros_repr
+    from launcher.bus.node import Node, Rate
+
     try:
         values = yaml.safe_load(args.values)
     except yaml.YAMLError as exc:
@@ -351,6 +365,8 @@ def _wait_for_subscriptions(node: Node, publisher: Any, wanted: int,
 def run_hz(args: argparse.Namespace) -> int:
     """As `ros2 topic hz`: every second, each topic's rate over its last `--window` messages,
     with the shortest and longest gap and their spread."""
+    from launcher.bus.node import Node
+
     session = open_session("client")
     node = Node("_launcher_topic_hz", argv=[], parameter_services=False, session=session,
                 space=_space(args))
@@ -389,6 +405,8 @@ def rate_lines(stamps: list[float]) -> str:
 def run_bw(args: argparse.Namespace) -> int:
     """As `ros2 topic bw`: every second, bytes per second over the last `--window` messages,
     and the messages' sizes."""
+    from launcher.bus.node import Node
+
     session = open_session("client")
     node = Node("_launcher_topic_bw", argv=[], parameter_services=False, session=session,
                 space=_space(args))
@@ -430,6 +448,9 @@ def bandwidth_lines(samples: list[tuple[float, int]], now: float) -> str:
 def run_delay(args: argparse.Namespace) -> int:
     """As `ros2 topic delay`: every second, how old messages are on arrival (their
     header.stamp against now), over the last `--window` messages."""
+    from launcher.bus.node import Node
+    from launcher.bus.types import registry
+
     session = open_session("client")
     argv = ["--ros-args", "-p", "use_sim_time:=true"] if args.use_sim_time else []
     node = Node("_launcher_topic_delay", argv=argv, parameter_services=False, session=session,

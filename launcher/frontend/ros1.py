@@ -16,7 +16,8 @@ ROS 1 → launcher:
 - `group ns` → `group` with `push_ros_namespace`; `include file ns pass_all_args` with `arg`
   children → `include` (its arguments kept apart, as roslaunch scopes them per file).
 - `remap` and `env` outside a node → `set_remap`, `set_env` (scoped by `group`).
-- `machine` (one host here) is skipped with a warning; `test` runs as a node.
+- `machine` on this host is accepted (a node sent to another host is refused); `test` is
+  rostest's, which roslaunch does not run.
 """
 
 from __future__ import annotations
@@ -91,10 +92,67 @@ def translate(root: Entity) -> Entity:
     /run_id, /rosdistro and /rosversion on the parameter server, so the server holds them
     while the launch runs, whatever else it sets."""
     _unique_names(root.children, "", {})
+    _args_once(root.children, {})
+    _whole_evals(root)
+    _local_machines(root)
     out = Entity("launch", root.location, nested_in_children=True)
     out.children = [*(_server_parameter(name, value, root.location)
                       for name, value in ROSLAUNCH_PARAMETERS.items()), *_body(root.children)]
     return out
+
+
+def _args_once(children: list[Entity], seen: dict[str, Location]) -> None:
+    """roslaunch's loader: an arg is declared once in a file (its groups share the file's
+    declarations; an include's file has its own)."""
+    for child in children:
+        if child.tag == "arg":
+            name = _literal(child, "name")
+            # (one under if= or unless= may be declared again under the opposite condition,
+            # as gazebo_ros's empty_world.launch does: roslaunch skips the one that is off)
+            if name and not {"if", "unless"} & set(child.attributes):
+                if name in seen:
+                    raise ParseError(f"Invalid <arg> tag: arg '{name}' has already been "
+                                     f"declared (at line {seen[name].line})", child.location)
+                seen[name] = child.location
+        elif child.tag == "group":
+            _args_once(child.children, seen)
+
+
+def _whole_evals(root: Entity) -> None:
+    """roslaunch evaluates `$(eval …)` only as a whole attribute: inside other text it is an
+    unknown substitution there, and an error here, said plainly."""
+    for entity in _walk(root):
+        for name, attribute in entity.attributes.items():
+            text = attribute.value if isinstance(attribute.value, str) else ""
+            if "$(eval" in text and not (text.startswith("$(eval ") and text.endswith(")")):
+                raise ParseError(f"{name}='{text}': roslaunch evaluates $(eval …) only as the "
+                                 "whole attribute (the attribute is then the expression's "
+                                 "value); write it alone, or put the text inside the "
+                                 "expression", attribute.location)
+
+
+LOCAL_ADDRESSES = {"localhost", "127.0.0.1", "::1"}
+
+
+def _local_machines(root: Entity) -> None:
+    """roslaunch's `<machine>`: one on this host is accepted; a node sent to another host is
+    an error (launcher runs every node here), said at the node, naming the machine."""
+    import socket
+
+    here = LOCAL_ADDRESSES | {socket.gethostname(), socket.getfqdn()}
+    remote: dict[str, str] = {}
+    for entity in _walk(root):
+        if entity.tag == "machine":
+            name, address = _literal(entity, "name"), _literal(entity, "address")
+            if name and address and address not in here:
+                remote[name] = address
+    for entity in _walk(root):
+        machine = _literal(entity, "machine") if entity.tag in ("node", "test") else None
+        if machine and machine in remote:
+            raise ParseError(f"machine='{machine}' is {remote[machine]}, another host: "
+                             "launcher runs every node on this host (remote machines are "
+                             "not supported); leave machine= out, or point the <machine> at "
+                             "localhost", entity.attributes["machine"].location)
 
 
 def _server_parameter(name: str, value: str, where: Location) -> Entity:
@@ -176,12 +234,17 @@ def _entity(entity: Entity) -> list[Entity]:
     tag = entity.tag
     if tag == "arg":
         _known(entity, {"name", "default", "value", "doc"})
-        if "value" in entity.attributes:
-            return [_copy(entity, "let", {"name": "name", "value": "value"})]
+        if "value" in entity.attributes:  # a constant: overriding it is roslaunch's error
+            fixed = _copy(entity, "let", {"name": "name", "value": "value"})
+            fixed.attributes["fixed"] = _text("true", entity.location)
+            return [fixed]
         return [_copy(entity, "arg", {"name": "name", "default": "default",
                                       "doc": "description"})]
-    if tag in ("node", "test"):
+    if tag == "node":
         return [_node(entity)]
+    if tag == "test":  # rostest runs it; roslaunch ignores it
+        _node(entity)  # (checked all the same)
+        return []
     if tag == "param":
         return [_global_param(entity)]
     if tag == "rosparam":
@@ -203,12 +266,8 @@ def _entity(entity: Entity) -> list[Entity]:
     if tag == "env":
         _known(entity, {"name", "value"})
         return [_copy(entity, "set_env", {"name": "name", "value": "value"})]
-    if tag == "machine":
-        log = Entity("log", entity.location, nested_in_children=True)
-        log.attributes["message"] = _text(
-            "<machine> is skipped: launcher runs every node on this host", entity.location)
-        log.attributes["level"] = _text("warn", entity.location)
-        return [log]
+    if tag == "machine":  # this host's (a remote one is refused at its nodes)
+        return []
     raise ParseError(f"roslaunch has no tag <{tag}> (ROS 1's tags: arg, node, param, "
                      "rosparam, group, include, remap, env, machine, test)", entity.location)
 

@@ -183,7 +183,10 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
   </include>
   <include file="$(find tools)/launch/inner.launch" ns="three" pass_all_args="true"/>
   <node name="subst" pkg="tools" type="report" output="screen"
-        args="$(optenv NO_SUCH_VARIABLE fallback) $(eval arg('radius') * 2) $(eval radius + 'cm') $(dirname)"/>
+        args="$(optenv NO_SUCH_VARIABLE fallback) $(dirname)"/>
+  <node name="doubled" pkg="tools" type="report" output="screen"
+        args="$(eval arg('radius') * 2)"/>
+  <node name="measured" pkg="tools" type="report" output="screen" args="$(eval radius + 'cm')"/>
   <node name="$(anon worker)" pkg="tools" type="report" output="screen"/>
 </launch>
 """)
@@ -194,7 +197,10 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
     # roslaunch's parameters outlive the file that set them: a node after the includes gets
     # what an included file set (an include with ns= sets it in its namespace)
     assert got["/subst"]["params"].get("set_inside") is None  # (all three had ns=)
-    assert got["/subst"]["args"] == ["fallback", "0.50.5", "0.5cm", str(ros1.root)]
+    assert got["/subst"]["args"] == ["fallback", str(ros1.root)]
+    # $(eval) only as a whole attribute (roslaunch/substitution_args.py resolve_args: the
+    # value must start with '$(eval ' and end with ')'; elsewhere it is no substitution)
+    assert got["/doubled"]["args"] == ["0.50.5"] and got["/measured"]["args"] == ["0.5cm"]
     anonymous = [name for name in got if name.startswith("/worker_")]
     assert len(anonymous) == 1
 
@@ -379,24 +385,38 @@ def test_rosparam_bad_input(ros1, args, expected):
 
 
 def test_required_test_and_machine(ros1):
-    """roslaunch: a node with required="true" ends the launch when it exits; <test> runs as a
-    node (launcher: and reports its result); <machine> is skipped here with a warning."""
+    """roslaunch: a node with required="true" ends the launch when it exits; <test> is
+    rostest's, which roslaunch ignores (roslaunch/xmlloader.py runs tests only for rostest);
+    a <machine> on this host is accepted, and a node sent to another host is refused (launcher
+    runs every node here)."""
     ros1.write("req.launch", """<launch>
+  <machine name="here" address="localhost"/>
   <machine name="far" address="10.0.0.2"/>
-  <node name="quick" pkg="tools" type="report" output="screen" required="true"/>
+  <node name="quick" pkg="tools" type="report" output="screen" required="true"
+        machine="here"/>
   <node name="forever" pkg="tools" type="report" output="screen" args="--wait"/>
 </launch>
 """)
     result = ros1.run("launch", "req.launch", timeout=60)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "<machine> is skipped" in result.stdout
+    assert "<machine>" not in result.stdout + result.stderr  # (no warning: one host)
     assert "REPORT" in result.stdout and "process stopped" in result.stdout
+    ros1.write("far.launch", """<launch>
+  <machine name="far" address="10.0.0.2"/>
+  <node name="remote" pkg="tools" type="report" machine="far"/>
+</launch>
+""")
+    far = ros1.run("launch", "far.launch", timeout=60)
+    assert far.returncode == 1
+    assert "far.launch:3:3: machine='far' is 10.0.0.2, another host" in far.stderr, far.stderr
     ros1.write("test.launch", """<launch>
   <test test-name="reports" pkg="tools" type="report"/>
+  <node name="plain" pkg="tools" type="report" output="screen"/>
 </launch>
 """)
     done = ros1.run("launch", "test.launch", timeout=60)
-    assert done.returncode == 0 and "process has finished cleanly" in done.stdout
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert done.stdout.count("REPORT") == 1 and "/plain" in done.stdout  # the test: not run
 
 
 def test_ros2_xml_named_launch_stays_ros2(ros1):

@@ -6,11 +6,8 @@ from __future__ import annotations
 
 import argparse
 
-import yaml
-
 from launcher.arguments import Parser
 from launcher.bus import graph, keys
-from launcher.bus.messages import to_data
 from launcher.bus.names import expand
 from launcher.bus.session import open_session
 from launcher.cli.ros1 import ros1_type
@@ -77,7 +74,7 @@ def run_type(args: argparse.Namespace) -> int:
 
 
 def run_info(args: argparse.Namespace) -> int:
-    from launcher.bus.messages import build
+    from launcher.bus.messages import build, to_data
     from launcher.bus.types import registry
 
     mine = _providers(expand(args.service), _servers())
@@ -92,7 +89,9 @@ def run_info(args: argparse.Namespace) -> int:
 def run_call(args: argparse.Namespace) -> int:
     import time
 
-    from launcher.bus.messages import build
+    import yaml
+
+    from launcher.bus.messages import build, to_data
     from launcher.bus.node import Node
     from launcher.bus.types import registry
     from launcher.cli.ros1.rostopic import message_values

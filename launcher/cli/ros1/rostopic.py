@@ -8,14 +8,9 @@ import argparse
 import time
 from typing import Any
 
-import yaml
-
 from launcher.arguments import Parser
 from launcher.bus import graph
-from launcher.bus.messages import build, to_data
 from launcher.bus.names import expand
-from launcher.bus.node import Node, Rate
-from launcher.bus.qos import QoS
 from launcher.bus.session import open_session
 from launcher.cli import positive_number
 from launcher.cli.ros1 import ros1_type
@@ -159,6 +154,10 @@ def _echo_when_published(echo: argparse.Namespace) -> int:
 def message_values(type_name: str, words: list[str]) -> Any:
     """The message rostopic pub builds from its words: one YAML mapping, or values for the
     fields in their order (`rostopic pub /c std_msgs/String hello`)."""
+    import yaml
+
+    from launcher.bus.messages import build, to_data
+
     loaded = []
     for word in words:
         try:
@@ -178,6 +177,9 @@ def message_values(type_name: str, words: list[str]) -> Any:
 
 
 def run_pub(args: argparse.Namespace) -> int:
+    from launcher.bus.messages import build
+    from launcher.bus.node import Node, Rate
+    from launcher.bus.qos import QoS
     from launcher.bus.types import normalize
 
     type_name = normalize(args.type)

@@ -6,7 +6,7 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 from launcher.description.action import Action
-from launcher.description.fields import Kind, attr
+from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, describe_text, perform_text
 from launcher.errors import ExecutionError, did_you_mean
@@ -86,6 +86,22 @@ def declared_arguments(actions: Sequence[Action]) -> list[DeclareLaunchArgument]
     return found
 
 
+def declared_args(actions: Sequence[Action]) -> set[str]:
+    """The names a roslaunch file declares as `<arg>` (with default=, or value= as a constant
+    `let`), looking into groups but not into includes: what an include may pass it."""
+    names = {a.name for a in declared_arguments(actions)}
+
+    def constants(items: Sequence[Action]) -> None:
+        for item in items:
+            if isinstance(item, SetLaunchConfiguration) and item.fixed not in (None, False):
+                names.add(describe_text(item.name))
+            elif not getattr(item, "is_include", False):
+                constants(item.sub_actions())
+
+    constants(actions)
+    return names
+
+
 def check_required(actions: Sequence[Action], given: dict[str, str]) -> None:
     """Fail before anything runs if a required argument (no default, no condition) is missing."""
     missing = [a for a in declared_arguments(actions)
@@ -99,10 +115,26 @@ def check_required(actions: Sequence[Action], given: dict[str, str]) -> None:
 class SetLaunchConfiguration(Action):
     name: Text_ = attr(Kind.TEXT, required=True, doc="The configuration to set.")
     value: Text_ = attr(Kind.TEXT, required=True, doc="Its new value.")
+    fixed: Any = attr(Kind.BOOL, False, doc="roslaunch's `<arg value=>`: a constant; a value "
+                                            "given for it (command line, include) is an "
+                                            "error, unless the file was included with "
+                                            "pass_all_args.")
 
     def execute(self, context: LaunchContext) -> None:
-        context.configurations[perform_text(context, self.name)] = perform_text(context,
-                                                                               self.value)
+        name = perform_text(context, self.name)
+        fixed = self.fixed is not None and resolve(context, self.fixed, Kind.BOOL, "fixed")
+        if fixed:
+            context.declared.add(name)  # an arg of the file's, for the command line's check
+        if fixed and name in context.configurations and \
+                context.configurations.get(PASS_ALL_ARGS) != "true":
+            raise ExecutionError(f"Invalid <arg> tag: cannot override arg '{name}', which has "
+                                 "already been set (an <arg value=> is a constant: it takes "
+                                 "no value from the command line or an include; use "
+                                 "default= to let it)", self.where)
+        context.configurations[name] = perform_text(context, self.value)
+
+
+PASS_ALL_ARGS = "<pass_all_args>"  # whether roslaunch's include passed every arg
 
 
 @action("reset")

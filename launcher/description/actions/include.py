@@ -12,7 +12,12 @@ from pathlib import Path
 from typing import Any
 
 from launcher.description.action import Action, LaunchDescription, PopScope, PushScope
-from launcher.description.actions.arguments import SetLaunchConfiguration, check_required
+from launcher.description.actions.arguments import (
+    PASS_ALL_ARGS,
+    SetLaunchConfiguration,
+    check_required,
+    declared_args,
+)
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.parameters import GLOBAL_PARAMETERS
 from launcher.description.registry import action
@@ -90,12 +95,21 @@ class IncludeLaunchDescription(Action):
         check_required(description.actions, {**context.configurations, **values})
         sets: list[Action] = [SetLaunchConfiguration(name=to_text(k), value=to_text(v))
                               for k, v in values.items()]
-        if self.pass_all_args is not None and not resolve(context, self.pass_all_args,
-                                                          Kind.BOOL, "pass_all_args"):
-            # roslaunch: the file sees only what is passed (the launch's ROS settings stay)
+        if self.pass_all_args is not None:  # roslaunch's include
+            every = resolve(context, self.pass_all_args, Kind.BOOL, "pass_all_args")
+            mark = SetLaunchConfiguration(name=to_text(PASS_ALL_ARGS),
+                                          value=to_text("true" if every else "false"))
+            if every:
+                return [PushScope(), mark, *sets, description, PopScope()]
+            unused = sorted(set(values) - declared_args(description.actions))
+            if unused:
+                raise ExecutionError(f"unused args [{', '.join(unused)}] for include of "
+                                     f"[{self.resolve_path(context)}]: the file declares no such "
+                                     "<arg>", self.where)
+            # the file sees only what is passed (the launch's ROS settings stay)
             kept = {k: v for k, v in context.configurations.items() if k.startswith("<")}
             # its parameters are the parameter server's: the nodes after the include get them
-            return [PushScope(forwarding=False, keep=kept), *sets, description,
+            return [PushScope(forwarding=False, keep=kept), mark, *sets, description,
                     PopScope(carry=(GLOBAL_PARAMETERS,))]
         if resolve(context, self.scoped, Kind.BOOL, "scoped"):
             return [PushScope(), *sets, description, PopScope()]

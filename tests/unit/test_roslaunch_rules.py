@@ -1,0 +1,104 @@
+"""roslaunch's loader rules, each with its expected outcome read from roslaunch's source
+(ros/ros_comm tools/roslaunch/src/roslaunch, 1.15/1.16):
+  * loader.py LoaderContext.add_arg: an arg declared twice in one file is "arg 'x' has
+    already been declared"; an arg with value= is a constant, and a value given for it before
+    (command line, include) is "cannot override arg 'x', which has already been set", unless
+    the file was included with pass_all_args;
+  * loader.py post_process_include_args: an include passing an arg its file does not
+    declare is "unused args [x] for include of [file]";
+  * xmlloader.py: a tag under a false if=/unless= is skipped whole (so an arg may be
+    declared under opposite conditions); <test> is rostest's (roslaunch does not run it);
+  * substitution_args.py resolve_args: $(eval …) is evaluated only when the attribute starts
+    with '$(eval ' and ends with ')';
+  * <machine>: launcher runs every node on this host (a remote one is refused at its node)."""
+
+from __future__ import annotations
+
+import pytest
+
+from launcher.errors import LaunchError, ParseError
+from launcher.frontend.loader import load_file
+from tests.unit.helpers import run
+
+
+def launch(tmp_path, text: str, name: str = "top.launch"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_an_arg_declared_twice_in_a_file_groups_included(tmp_path):
+    path = launch(tmp_path, '<launch>\n<arg name="a" default="1"/>\n<group>\n'
+                            '<arg name="a" default="2"/>\n</group>\n</launch>\n')
+    with pytest.raises(ParseError, match=r"arg 'a' has already been declared \(at line 2\)") \
+            as caught:
+        load_file(path)
+    assert caught.value.location.line == 4
+
+
+def test_an_arg_declared_under_opposite_conditions_is_declared_once(tmp_path):
+    path = launch(tmp_path, '<launch>\n<arg name="paused" default="false"/>\n'
+                            '<arg unless="$(arg paused)" name="flag" value=""/>\n'
+                            '<arg if="$(arg paused)" name="flag" value="-u"/>\n</launch>\n')
+    context, _ = run(load_file(path))
+    assert context.configurations["flag"] == ""
+
+
+def test_a_constant_arg_takes_no_value_from_the_command_line(tmp_path):
+    path = launch(tmp_path, '<launch>\n  <arg name="a" value="1"/>\n</launch>\n')
+    assert run(load_file(path))[0].configurations["a"] == "1"
+    with pytest.raises(LaunchError, match="cannot override arg 'a', which has already been "
+                                          "set"):
+        run(load_file(path), {"a": "2"})
+
+
+def test_a_constant_arg_takes_no_value_from_an_include_unless_all_args_pass(tmp_path):
+    launch(tmp_path, '<launch>\n  <arg name="a" value="1"/>\n</launch>\n', "inner.launch")
+    passing = launch(tmp_path, '<launch>\n<include file="$(dirname)/inner.launch">\n'
+                               '  <arg name="a" value="2"/>\n</include>\n</launch>\n')
+    with pytest.raises(LaunchError, match="cannot override arg 'a'"):
+        run(load_file(passing))
+    every = launch(tmp_path, '<launch>\n<arg name="a" default="2"/>\n'
+                             '<include file="$(dirname)/inner.launch" pass_all_args="true"/>\n'
+                             '</launch>\n', "every.launch")
+    run(load_file(every))  # pass_all_args: the included file's value= wins, no error
+
+
+def test_an_include_passing_an_undeclared_arg(tmp_path):
+    launch(tmp_path, '<launch>\n  <arg name="a" default="1"/>\n</launch>\n', "inner.launch")
+    path = launch(tmp_path, '<launch>\n<include file="$(dirname)/inner.launch">\n'
+                            '  <arg name="a" value="2"/>\n  <arg name="zz" value="1"/>\n'
+                            '</include>\n</launch>\n')
+    with pytest.raises(LaunchError, match=r"unused args \[zz\] for include of \[.*inner"
+                                          r"\.launch\]") as caught:
+        run(load_file(path))
+    assert caught.value.location.line == 2
+
+
+@pytest.mark.parametrize("value", ["x$(eval 1+1)", "$(eval 1+1) cm", "$(eval 1)$(eval 2)x"])
+def test_eval_only_as_the_whole_attribute(tmp_path, value):
+    path = launch(tmp_path, f'<launch>\n<param name="p" value="{value}"/>\n</launch>\n')
+    with pytest.raises(ParseError, match=r"evaluates \$\(eval …\) only as the whole "
+                                         "attribute"):
+        load_file(path)
+
+
+def test_a_test_tag_is_not_run_by_roslaunch(tmp_path):
+    path = launch(tmp_path, '<launch>\n<test test-name="t" pkg="p" type="check"/>\n'
+                            '</launch>\n')
+    _, service = run(load_file(path))
+    assert not [s for s in service.specs if "check" in " ".join(s.argv)]
+
+
+def test_a_node_on_a_remote_machine_is_refused_a_local_one_runs(tmp_path):
+    remote = launch(tmp_path, '<launch>\n<machine name="far" address="10.1.2.3"/>\n'
+                              '<machine name="near" address="localhost"/>\n'
+                              '<node name="n" pkg="p" type="t" machine="far"/>\n</launch>\n')
+    with pytest.raises(ParseError, match="machine='far' is 10.1.2.3, another host") as caught:
+        load_file(remote)
+    assert caught.value.location.line == 4
+    local = launch(tmp_path, '<launch>\n<machine name="near" address="localhost"/>\n'
+                             '<machine name="far" address="10.1.2.3"/>\n'
+                             '<node name="n" pkg="p" type="t" machine="near"/>\n</launch>\n',
+                   "local.launch")
+    load_file(local)  # a remote machine no node uses is no error, as in roslaunch
