@@ -15,6 +15,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                             description="Packages in the workspaces launcher can see.")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="every package, with where it is")
+    listing.add_argument("--names", action="store_true",
+                         help="the names alone, as `ros2 pkg list` prints them")
     listing.set_defaults(run=run_list)
     for verb, helptext in (("prefix", "the install prefix of a package"),
                            ("share", "the share folder of a package (the package itself)"),
@@ -39,7 +41,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
 
 def run_list(args: argparse.Namespace) -> int:
     for package in sorted(load_index(), key=lambda p: p.name):
-        print(f"{package.name:30} {package.origin:9} {package.path}")
+        print(package.name if args.names else
+              f"{package.name:30} {package.origin:9} {package.path}")
     return 0
 
 

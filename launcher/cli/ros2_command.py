@@ -74,6 +74,8 @@ def translate(argv: list[str]) -> list[str] | None:
     if verb == "--use-python-default-buffering":
         return translate(rest)
     if verb in SAME:
+        if verb == "pkg" and rest[:1] == ["list"]:  # ros2 lists the names alone
+            return [verb, "list", "--names", *rest[1:]]
         return [verb, *rest]
     if verb in ALIASES:
         return [ALIASES[verb], *rest]

@@ -16,6 +16,7 @@ def test_ros2_verbs_are_launchers_commands_and_wtf_is_doctor():
     assert translate(["launch", "pkg", "f.launch.py", "a:=1"]) == \
         ["launch", "pkg", "f.launch.py", "a:=1"]
     assert translate(["wtf"]) == ["doctor"]
+    assert translate(["pkg", "list"]) == ["pkg", "list", "--names"]  # names alone, as ros2
     assert translate(["--use-python-default-buffering", "node", "list"]) == ["node", "list"]
 
 
