@@ -241,7 +241,9 @@ def _entity(entity: Entity) -> list[Entity]:
         return [_copy(entity, "arg", {"name": "name", "default": "default",
                                       "doc": "description"})]
     if tag == "node":
-        return [_node(entity)]
+        name = str(entity.attributes["name"].value) if "name" in entity.attributes else ""
+        ns = str(entity.attributes["ns"].value).strip("/") if "ns" in entity.attributes else ""
+        return [*_clearing(entity, f"{ns}/{name}" if ns and name else name), _node(entity)]
     if tag == "test":  # rostest runs it; roslaunch ignores it
         _node(entity)  # (checked all the same)
         return []
@@ -256,7 +258,7 @@ def _entity(entity: Entity) -> list[Entity]:
             push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
             push.attributes["namespace"] = entity.attributes["ns"]
             group.children.append(push)
-        group.children += _body(entity.children)
+        group.children += [*_clearing(entity, ""), *_body(entity.children)]
         return [group]
     if tag == "include":
         return [_include(entity)]
@@ -424,6 +426,28 @@ def _global_rosparam(entity: Entity) -> list[Entity]:
     return [_rosparam_into(entity, made)]
 
 
+def _clearing(entity: Entity, name: str) -> list[Entity]:
+    """roslaunch's clear_params="true": the parameter server forgets what it holds under the
+    group's namespace, or the node's private one, before the launch sets its own (only on the
+    server: what this launch sets stays)."""
+    flag = entity.attributes.get("clear_params")
+    if flag is None or str(flag.value).strip().lower() not in ("true", "1"):
+        return []
+    if entity.tag in ("group", "include") and "ns" not in entity.attributes:
+        raise ParseError(f"<{entity.tag} clear_params=\"true\">: 'ns' attribute must be set in "
+                         "order to use 'clear_params' (roslaunch never clears the root "
+                         "namespace)", flag.location)
+    if entity.tag == "node" and not name:
+        raise ParseError("<node clear_params=\"true\"> needs name=: it clears the node's "
+                         "private parameters", flag.location)
+    made = Entity("set_parameter", entity.location, nested_in_children=True)
+    made.attributes.update(name=_text(name, flag.location),
+                           rosparam_command=_text("delete", flag.location),
+                           server=_text("true", flag.location),
+                           server_only=_text("true", flag.location))
+    return [made]
+
+
 def _include(entity: Entity) -> Entity:
     _known(entity, {"file", "ns", "clear_params", "pass_all_args"})
     include = _copy(entity, "include", {"file": "file"})
@@ -446,5 +470,5 @@ def _include(entity: Entity) -> Entity:
     include.attributes.pop("unless", None)
     push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
     push.attributes["namespace"] = entity.attributes["ns"]
-    group.children = [push, include]
+    group.children = [push, *_clearing(entity, ""), include]
     return group

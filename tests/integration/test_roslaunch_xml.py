@@ -481,3 +481,34 @@ def test_a_launched_scripts_rosparam_is_a_real_ros1_one_when_the_user_has_it(ros
     """)
     done = ros1.run("launch", "script.launch.yaml", timeout=60)
     assert "[rosparam-1] REAL-ROS1-ROSPARAM get /x" in done.stdout, done.stdout + done.stderr
+
+
+def test_clear_params_empties_the_servers_namespace_before_the_launch_sets_its_own(ros1):
+    """roslaunch (xmlloader.py, launch.py): clear_params="true" on a group (which needs ns) or a
+    node deletes what the parameter server holds under the group's namespace or the node's
+    private one, before the launch's parameters are set."""
+    router = ros1.start("router", output="router.out")
+    try:
+        ros1.wait_for_output("listening", 30, "router.out")
+        for name in ("/crew/old", "/fleet/r1/driver/stale", "/keep"):
+            assert ros1.run("rosparam", "set", name, "1").returncode == 0
+        ros1.write("clear.launch", """<launch>
+  <group ns="crew" clear_params="true"><param name="fresh" value="2"/></group>
+  <node name="driver" pkg="tools" type="report" ns="fleet/r1" clear_params="true">
+    <param name="gain" value="2.5"/>
+  </node>
+</launch>
+""")
+        done = ros1.run("launch", "clear.launch", timeout=60)
+        assert done.returncode == 0, done.stdout + done.stderr
+        names = ros1.run("rosparam", "list").stdout.split()
+        assert {"/crew/fresh", "/fleet/r1/driver/gain", "/keep"} <= set(names), names
+        assert "/crew/old" not in names and "/fleet/r1/driver/stale" not in names, names
+    finally:
+        router.send_signal(signal.SIGINT)
+        router.wait(30)
+    ros1.write("root.launch", '<launch>\n  <group clear_params="true"/>\n</launch>\n')
+    refused = ros1.run("launch", "root.launch", timeout=60)
+    assert refused.returncode == 1
+    assert "root.launch:2:3: <group clear_params=\"true\">: 'ns' attribute must be set in " \
+           "order to use 'clear_params'" in refused.stderr, refused.stderr

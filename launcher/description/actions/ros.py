@@ -103,6 +103,8 @@ class SetParameter(Action):
                     context, graph_name(context, perform_text(context, self.name)
                                         if self.name is not None else "/"),
                     loader, params_folder(context))
+            if resolve(context, self.server_only, Kind.BOOL, "server_only"):
+                return  # (clear_params: what the server held, not what this launch sets)
             kept = tuple(item for item in params.global_settings(context)
                          if item[0] == params.FILE or not under(item[0]))
             context.configurations[params.GLOBAL_PARAMETERS] = kept  # type: ignore[assignment]
