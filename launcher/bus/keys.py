@@ -161,6 +161,12 @@ def parse_liveliness(key: str) -> Entity | None:
     return entity
 
 
+def shutdown_key(domain: int, zid: str, node_id: int) -> str:
+    """Where a node hears `rosnode kill` (launcher's own key, off the ROS graph: no tool of
+    ROS 2 lists it)."""
+    return f"launcher_control/{domain}/shutdown/{zid}/{node_id}"
+
+
 def attachment(sequence: int, timestamp_ns: int, gid: bytes) -> bytes:
     return _ATTACHMENT.pack(sequence, timestamp_ns, 16, gid[:16].ljust(16, b"\0"))
 

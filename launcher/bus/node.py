@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import os
+import signal
 import sys
 import threading
 import time
@@ -80,6 +82,9 @@ class Node:
         self.session = self._host.session
         self._timers: list[Timer] = []
         self._token = self._host.announce(keys.NODE)
+        self._shutdown = self.session.declare_queryable(
+            keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self._host.node_id),
+            self._asked_to_shut_down) if space == keys.ROS and within is None else None
         self._stopped = threading.Event()
         self.interrupted = False  # Ctrl-C arrived during spin()
         self._destroyed = False
@@ -95,6 +100,12 @@ class Node:
 
             serve(self)
         self._clock = Clock(self, bool(self._parameters.get("use_sim_time", False)))
+
+    def _asked_to_shut_down(self, query: Any) -> None:
+        """`rosnode kill`: the process ends as on Ctrl-C (rospy's and rclpy's shutdown, the
+        launch's supervision), once the asker has its answer."""
+        query.reply(query.key_expr, b"killed")
+        os.kill(os.getpid(), signal.SIGINT)
 
     # --- names ------------------------------------------------------------------------------
     @property
@@ -289,6 +300,9 @@ class Node:
             with contextlib.suppress(zenoh.ZError, RuntimeError):
                 entity.destroy()
         self._token.undeclare()
+        if self._shutdown is not None:
+            with contextlib.suppress(zenoh.ZError):
+                self._shutdown.undeclare()
         if self._owns_session:
             self.session.close()
 

@@ -277,3 +277,15 @@ def test_rosbag_record_into_a_folder_that_is_not_writable(graph):
     missing = shell(graph, "rosbag record -O no/such/folder/race.bag /chatter")
     assert missing.returncode == 1 and "the folder 'no/such/folder' does not exist" in \
         missing.stderr
+
+
+def test_rosnode_kill_ends_the_node_as_ros1s_does(graph):
+    done = shell(graph, "rosnode kill /talker")
+    assert (done.returncode, done.stdout) == (0, "killing /talker\nkilled\n"), done.stderr
+    deadline = time.monotonic() + 20
+    while "/talker" in shell(graph, "rosnode list").stdout.split():
+        assert time.monotonic() < deadline, graph.output("talker.out")
+        time.sleep(0.3)
+    assert "ROSInterruptException" in graph.output("talker.out")  # rospy's shutdown, as ROS 1
+    unknown = shell(graph, "rosnode kill /talker")
+    assert unknown.returncode == 1 and "Unknown node [/talker]" in unknown.stderr

@@ -1,6 +1,7 @@
 """`rosnode list | info | ping | kill`, as ROS 1's rosnode prints them. A node answers a
-ping through its liveliness on the graph (there is no XML-RPC server to ask); `kill` says
-plainly that it is not available yet (launcher's nodes have no remote shutdown)."""
+ping through its liveliness on the graph (there is no XML-RPC server to ask); `kill` asks
+each node, on a key of launcher's own beside the graph, to shut down, and it ends as on
+Ctrl-C (rospy's is_shutdown, rclpy's shutdown, the launch's supervision)."""
 
 from __future__ import annotations
 
@@ -126,5 +127,29 @@ def run_ping(args: argparse.Namespace) -> int:
 
 
 def run_kill(args: argparse.Namespace) -> int:
-    raise LaunchError("rosnode kill: not available yet: launcher's nodes have no remote "
-                      "shutdown; stop the launch (Ctrl-C) or the node's own terminal")
+    """As rosnode kill: each node is asked to shut down (it ends as on Ctrl-C)."""
+    from launcher.bus import keys
+
+    if not args.nodes and not args.all:
+        raise LaunchError("Please specify the nodes to kill (or -a for all)")
+    entities = _entities()
+    names = _names(entities) if args.all else [_known(n, entities) for n in args.nodes]
+    nodes = {e.node_fqn: e for e in entities if e.kind == keys.NODE}
+    session = open_session("client")
+    failed = []
+    try:
+        for name in names:
+            node = nodes.get(name)
+            print(f"killing {name}", flush=True)
+            answered = node is not None and any(
+                reply.ok is not None for reply in session.get(
+                    keys.shutdown_key(keys.DOMAIN, node.zid, node.node_id), timeout=3.0))
+            if not answered:
+                failed.append(name)
+    finally:
+        session.close()
+    if failed:
+        raise LaunchError(f"ERROR: could not kill {', '.join(failed)}: no answer (a node of "
+                          "another ROS, or an older launcher's)")
+    print("killed")
+    return 0
