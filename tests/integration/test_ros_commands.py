@@ -289,3 +289,15 @@ def test_rosnode_kill_ends_the_node_as_ros1s_does(graph):
     assert "ROSInterruptException" in graph.output("talker.out")  # rospy's shutdown, as ROS 1
     unknown = shell(graph, "rosnode kill /talker")
     assert unknown.returncode == 1 and "Unknown node [/talker]" in unknown.stderr
+
+
+def test_rostopic_hz_and_catkin_tools_verbs(graph):
+    hz = shell(graph, "timeout -s INT 3.5 rostopic hz /chatter; true")
+    assert hz.stdout.startswith("subscribed to [/chatter]\n"), hz.stdout + hz.stderr
+    assert "average rate: " in hz.stdout
+    late = shell(graph, "timeout -s INT 1.5 rostopic echo /nobody; true")
+    assert "WARNING: topic [/nobody] does not appear to be published yet" in late.stderr
+    done = shell(graph, "catkin init && catkin build && test -f devel/setup.bash && "
+                        "catkin clean && test ! -e devel")
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "Initialized new catkin workspace" in done.stdout and "- chat" in done.stdout

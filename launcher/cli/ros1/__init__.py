@@ -19,6 +19,7 @@ TOOLS = {  # the tool's name → its module
     "rossrv": "launcher.cli.ros1.rosmsg",
     "rospack": "launcher.cli.ros1.rospack",
     "catkin_make": "launcher.cli.ros1.catkin_make",
+    "catkin": "launcher.cli.ros1.catkin",
     "rosbag": "launcher.cli.ros1.rosbag",
 }
 

@@ -5,6 +5,7 @@ latching (without `-1` or `-r` it publishes once, latches, and stays until Ctrl-
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from typing import Any
 
@@ -127,8 +128,9 @@ def run_echo(args: argparse.Namespace) -> int:
     topics = _topics()
     topic, field = split_field(wanted, topics)
     info = topics.get(topic)
-    if info is None or not info.publishers:
-        print(f"WARNING: topic [{wanted}] does not appear to be published yet", flush=True)
+    if info is None or not info.publishers:  # (on stderr, as rostopic writes it)
+        print(f"WARNING: topic [{wanted}] does not appear to be published yet",
+              file=sys.stderr, flush=True)
     echo = argparse.Namespace(
         topic=topic, type=None, once=args.count == 1, count=args.count, field=field,
         csv=args.plot, timeout=None, no_arr=args.noarr, no_str=args.nostr, flow_style=False,
@@ -212,6 +214,9 @@ def run_pub(args: argparse.Namespace) -> int:
 def run_rate(args: argparse.Namespace) -> int:
     from launcher.cli import topic_command
 
+    if args.verb == "hz":
+        for topic in args.topics:
+            print(f"subscribed to [{expand(topic)}]", flush=True)
     rate = argparse.Namespace(topics=[expand(t) for t in args.topics], wall_time=False,
                               window=args.window or (10000 if args.verb == "hz" else 100),
                               sim=False)
