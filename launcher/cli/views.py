@@ -145,7 +145,8 @@ def _show(value: Any) -> str:
     if isinstance(value, tuple) and all(isinstance(v, Substitution) for v in value):
         return repr(describe_text(value))
     if isinstance(value, Written):  # a parameter value: a string shows its quotes
-        return repr(value.describe()) if value.string else value.describe()
+        text = value.describe()  # (and one with a line break shows it escaped: one line each)
+        return repr(text) if value.string or "\n" in text else text
     if isinstance(value, list):
         return "[" + ", ".join(_show_entry(v) for v in value) + "]"
     return repr(value)
