@@ -64,13 +64,38 @@ def usage() -> str:
         "usage.\n"
 
 
+# ros2cli's options that ask for what launcher's graph does anyway: the daemon (there is
+# none: the router answers), its spin time (the graph's answer is complete at once), hidden
+# actions and nodes (launcher's lists show them), doctor's report flavours (its checks are
+# its report); taken and dropped, as flag → number of values after it
+IMPLIED = {"--no-daemon": 0, "--spin-time": 1, "--include-hidden-actions": 0,
+           "--include-hidden-nodes": 0}
+DOCTOR_IMPLIED = {"-r": 0, "--report": 0, "-rf": 0, "--report-failed": 0,
+                  "-iw": 0, "--include-warnings": 0}
+
+
+def _without_implied(words: list[str], implied: dict[str, int]) -> list[str]:
+    kept: list[str] = []
+    skip = 0
+    for word in words:
+        if skip:
+            skip -= 1
+        elif word.split("=", 1)[0] in implied:
+            skip = 0 if "=" in word else implied[word]
+        else:
+            kept.append(word)
+    return kept
+
+
 def translate(argv: list[str]) -> list[str] | None:
     """launcher's argv for `ros2 argv…`, or None when this answered by itself (help,
     daemon)."""
     if not argv or argv[0] in ("-h", "--help"):
         sys.stdout.write(usage())
         return None
-    verb, rest = argv[0], argv[1:]
+    verb, rest = argv[0], _without_implied(argv[1:], IMPLIED)
+    if verb in ("doctor", "wtf"):
+        rest = _without_implied(rest, DOCTOR_IMPLIED)
     if verb == "--use-python-default-buffering":
         return translate(rest)
     if verb in SAME:

@@ -21,6 +21,9 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser("service", help="services: list, call, type, find, info")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
     listing = verbs.add_parser("list", help="the services on the bus")
+    listing.add_argument("--include-hidden-services", action="store_true",
+                         help="also the hidden ones (a name part that begins with '_', as "
+                              "actions' /_action/ services), which ros2 leaves out")
     listing.add_argument("-t", "--show-types", action="store_true",
                          help="each service's type too")
     listing.set_defaults(run=run_list)
@@ -59,7 +62,9 @@ def _space(args: argparse.Namespace) -> keys.Space:
 
 
 def run_list(args: argparse.Namespace) -> int:
-    found = {(e.topic, e.type_name) for e in _services(args) if e.kind == keys.SERVICE}
+    found = {(e.topic, e.type_name) for e in _services(args) if e.kind == keys.SERVICE
+             and (getattr(args, "include_hidden_services", True)
+                  or not any(p.startswith("_") for p in e.topic.split("/")))}
     for name, type_name in sorted(found):
         print(f"{name} [{type_name}]" if args.show_types else name)
     return 0

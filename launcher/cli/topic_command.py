@@ -34,6 +34,9 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                          help="each topic's message type too")
     listing.add_argument("-v", "--verbose", action="store_true",
                          help="published and subscribed topics, with their types and counts")
+    listing.add_argument("--include-hidden-topics", action="store_true",
+                         help="also the hidden ones (a name part that begins with '_', as "
+                              "actions' /_action/ topics), which ros2 leaves out")
     listing.add_argument("-c", "--count-topics", action="store_true",
                          help="how many topics there are")
     listing.set_defaults(run=run_list)
@@ -124,6 +127,11 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
                                "the ROS graph's")
 
 
+def hidden(name: str) -> bool:
+    """ROS 2's hidden names: a part that begins with '_' (ros2cli leaves them out)."""
+    return any(part.startswith("_") for part in name.split("/"))
+
+
 def _space(args: argparse.Namespace) -> keys.Space:
     return keys.SIM if args.sim else keys.ROS
 
@@ -156,6 +164,8 @@ def run_list(args: argparse.Namespace) -> int:
     session = open_session("client")
     topics = sorted(graph.topics(session, _space(args)).items())
     session.close()
+    if not getattr(args, "include_hidden_topics", True):
+        topics = [(name, info) for name, info in topics if not hidden(name)]
     if args.count_topics:
         print(len(topics))
         return 0

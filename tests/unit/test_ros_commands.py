@@ -17,6 +17,10 @@ def test_ros2_verbs_are_launchers_commands_and_wtf_is_doctor():
         ["launch", "pkg", "f.launch.py", "a:=1"]
     assert translate(["wtf"]) == ["doctor"]
     assert translate(["pkg", "list"]) == ["pkg", "list", "--names"]  # names alone, as ros2
+    # ros2cli's daemon and hidden-name options ask for what launcher's graph does anyway
+    assert translate(["topic", "list", "--no-daemon", "--spin-time", "2", "-t"]) == \
+        ["topic", "list", "-t"]
+    assert translate(["doctor", "--report"]) == ["doctor"]
     assert translate(["--use-python-default-buffering", "node", "list"]) == ["node", "list"]
 
 
@@ -56,6 +60,13 @@ def test_rostopic_pub_values_from_yaml_or_the_fields_in_order():
         message_values("std_msgs/msg/String", ["a", "b"])
     with pytest.raises(UsageError, match="is not valid YAML"):
         message_values("std_msgs/msg/String", ["{data: [x"])
+
+
+def test_hidden_names_are_ros2s():
+    from launcher.cli.topic_command import hidden
+
+    assert hidden("/fibonacci/_action/feedback") and hidden("/_private")
+    assert not hidden("/cmd_vel") and not hidden("/robot_1/odom")
 
 
 def test_ros1_type_names():
