@@ -30,6 +30,10 @@ DETACHED = "LAUNCHER_DETACHED"
 # server: the file they are loaded from; FILE.loaded appears once they are there (or the
 # loading gave up), so a node asks the server only then, as roslaunch sets them first.
 GRAPH_PARAMETERS = "LAUNCHER_GRAPH_PARAMETERS"
+# Set on a node a roslaunch file starts: its parameters as ROS 2's `--ros-args` words (JSON),
+# for launcher's own nodes, since its command line is ROS 1's (rospy reads the server); the
+# node takes them out of its environment, so that no process it starts inherits them.
+NODE_PARAMETERS = "LAUNCHER_NODE_PARAMETERS"
 _PR_SET_CHILD_SUBREAPER = 36
 _PROC = Path("/proc")
 

@@ -9,9 +9,13 @@ and `/NS/NAME` apply to the node they match. Nested maps flatten to dotted names
 
 from __future__ import annotations
 
+import json
+import os
+import re
 from typing import Any
 
 from launcher.errors import LaunchError, Location
+from launcher.lineage import NODE_PARAMETERS
 from launcher.records import dataclass, field
 from launcher.user_files import read_text
 
@@ -32,17 +36,40 @@ class RosArgs:
         return dict(source for kind, source in self.parameter_sources if kind == "value")
 
 
+_ROS1_WORD = re.compile(r"^(?:__\w+|_\w+|[~/A-Za-z][\w/~]*):=")
+_inherited: list[str] | None = None
+
+
+def _launched_parameters() -> list[str]:
+    """A roslaunch node's parameters as `--ros-args` words (lineage.NODE_PARAMETERS), taken
+    out of the environment once, so that no process this one starts inherits them."""
+    global _inherited
+    if _inherited is None:
+        text = os.environ.pop(NODE_PARAMETERS, "")
+        try:
+            _inherited = [str(w) for w in json.loads(text)] if text else []
+        except ValueError:
+            _inherited = []
+    return _inherited
+
+
 def parse(argv: list[str]) -> RosArgs:
-    """Split argv into the program's own arguments and its ROS arguments."""
+    """Split argv into the program's own arguments and its ROS arguments: ROS 2's after
+    `--ros-args`, and ROS 1's as roslaunch gives them (`FROM:=TO`, `__name:=`, `__ns:=`,
+    `_param:=value`; `__log:=` and the master's are taken and unused)."""
     out = RosArgs()
     inside = False
     i = 0
+    argv = [*argv, *(["--ros-args", *_launched_parameters()] if _launched_parameters()
+                     else [])]
     while i < len(argv):
         word = argv[i]
         if word == "--ros-args":
             inside = True
         elif inside and word == "--":
             inside = False
+        elif not inside and _ROS1_WORD.match(word):
+            _ros1_word(out, word)
         elif not inside:
             out.user_args.append(word)
         elif word in ("-r", "--remap", "-p", "--param", "--params-file", "--log-level",
@@ -55,6 +82,20 @@ def parse(argv: list[str]) -> RosArgs:
             raise LaunchError(f"--ros-args: unknown argument '{word}'")
         i += 1
     return out
+
+
+def _ros1_word(out: RosArgs, word: str) -> None:
+    name, _, text = word.partition(":=")
+    if name in ("__name", "__node"):
+        out.node_name = text
+    elif name == "__ns":
+        out.namespace = text if text.startswith("/") else "/" + text
+    elif name.startswith("__"):  # __log, __ip, __hostname, __master: ROS 1's, unused
+        return
+    elif name.startswith("_"):  # a private parameter
+        out.parameter_sources.append(("value", (name[1:], _typed(text))))
+    else:
+        out.remaps.append((name, text))
 
 
 def _option(out: RosArgs, word: str, value: str) -> None:

@@ -288,6 +288,7 @@ def _node(entity: Entity) -> Entity:
     node = _copy(entity, "node", NODE_ATTRS)
     node.attributes["unique"] = _text("true", entity.location)
     node.attributes["server"] = _text("true", entity.location)
+    node.attributes["ros1"] = _text("true", entity.location)  # roslaunch's command line
     if "name" not in entity.attributes and entity.tag == "test":
         node.attributes["name"] = entity.attributes.get("test-name") or \
             entity.attributes["type"]

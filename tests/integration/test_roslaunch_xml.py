@@ -13,15 +13,28 @@ import yaml
 from tests.unit.test_packages import make_tree, manifest
 
 # Reports its argv, its environment's GREETING, and the parameters it was given (its params
-# files, any key, and -p values).
+# files, any key, and -p values). A roslaunch file's node gets roslaunch's command line
+# (FROM:=TO, __name:=, __ns:=, __log:=) and its parameters, for launcher's own nodes, as
+# --ros-args words in LAUNCHER_NODE_PARAMETERS; a ROS 2 file's gets --ros-args.
 REPORT = """
-import os, sys, yaml
+import json, os, sys, yaml
 
 def main():
     args = sys.argv[1:]
     ros = args[args.index("--ros-args"):] if "--ros-args" in args else []
     mine = args[:len(args) - len(ros)]
     params, remaps, name, ns = {}, [], "", ""
+    for word in [w for w in mine if ":=" in w]:  # ROS 1's
+        key, _, value = word.partition(":=")
+        if key == "__name":
+            name = value
+        elif key == "__ns":
+            ns = value
+        elif not key.startswith("__"):
+            remaps.append(word)
+    ros1 = [w for w in mine if ":=" in w]
+    mine = [w for w in mine if ":=" not in w]
+    ros = ros + json.loads(os.environ.get("LAUNCHER_NODE_PARAMETERS", "[]"))
     for i, word in enumerate(ros):
         if word == "--params-file":
             with open(ros[i + 1]) as handle:
@@ -39,7 +52,8 @@ def main():
             else:
                 remaps.append(f"{key}:={value}")
     print("REPORT", repr({"node": f"{ns.rstrip('/')}/{name}", "args": mine,
-                          "params": params, "remaps": remaps,
+                          "params": params, "remaps": remaps, "ros1": ros1,
+                          "namespace_env": os.environ.get("ROS_NAMESPACE"),
                           "greeting": os.environ.get("GREETING")}), flush=True)
     if "--wait" in mine:
         import time
@@ -512,3 +526,27 @@ def test_clear_params_empties_the_servers_namespace_before_the_launch_sets_its_o
     assert refused.returncode == 1
     assert "root.launch:2:3: <group clear_params=\"true\">: 'ns' attribute must be set in " \
            "order to use 'clear_params'" in refused.stderr, refused.stderr
+
+
+def test_a_nodes_command_line_is_roslauchs(ros1):
+    """roslaunch/node_args.py create_local_process_args: the executable, `args` split as shlex
+    splits them (substitutions inside quotes resolved first), the remappings as FROM:=TO,
+    `__name:=`; nodeprocess.py adds `__log:=` and core.py's setup_env puts the namespace in
+    ROS_NAMESPACE (launcher also gives `__ns:=`, which rospy and roscpp read too). No
+    --ros-args: that is ROS 2's."""
+    ros1.write("argv.launch", """<launch>
+  <arg name="who" default="two words"/>
+  <group ns="fleet">
+    <node name="driver" pkg="tools" type="report" output="screen" args="a '$(arg who)' c">
+      <remap from="in" to="/out"/>
+      <param name="gain" value="2"/>
+    </node>
+  </group>
+</launch>
+""")
+    got = reports(ros1, "argv.launch")["/fleet/driver"]
+    assert got["args"] == ["a", "two words", "c"]
+    assert got["ros1"][:3] == ["in:=/out", "__name:=driver", "__ns:=/fleet"]
+    assert got["ros1"][3].startswith("__log:=") and got["ros1"][3].endswith("driver-1.log")
+    assert len(got["ros1"]) == 4 and got["namespace_env"] == "/fleet/"
+    assert got["params"]["gain"] == 2  # (launcher's own nodes get them from the environment)

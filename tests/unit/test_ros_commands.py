@@ -72,3 +72,30 @@ def test_hidden_names_are_ros2s():
 def test_ros1_type_names():
     assert ros1_type("std_msgs/msg/String") == "std_msgs/String"
     assert ros1_type("std_msgs/String") == "std_msgs/String"
+
+
+def test_launchers_own_nodes_read_a_roslaunch_command_line_in_ros2s_layout():
+    from launcher.packages.entry import ros2_layout
+
+    assert ros2_layout(["-urdf", "in:=/out", "__name:=spawner", "__ns:=/r1", "_rate:=5",
+                        "__log:=/tmp/x.log"]) == \
+        ["-urdf", "--ros-args", "-r", "in:=/out", "-r", "__node:=spawner", "-r",
+         "__ns:=/r1", "-p", "rate:=5"]
+    assert ros2_layout(["-x", "1"]) == ["-x", "1"]
+
+
+def test_ros_args_read_roslaunchs_words_and_the_launchs_parameters(monkeypatch):
+    import json
+
+    from launcher.bus import ros_args
+    from launcher.lineage import NODE_PARAMETERS
+
+    monkeypatch.setattr(ros_args, "_inherited", None)
+    monkeypatch.setenv(NODE_PARAMETERS, json.dumps(["-p", "gain:=2.5"]))
+    parsed = ros_args.parse(["mine", "in:=/out", "__name:=driver", "__ns:=fleet",
+                             "_rate:=5", "__log:=/tmp/x.log"])
+    assert (parsed.node_name, parsed.namespace) == ("driver", "/fleet")
+    assert parsed.remaps == [("in", "/out")] and parsed.user_args == ["mine"]
+    assert parsed.parameters == {"rate": 5, "gain": 2.5}
+    import os
+    assert NODE_PARAMETERS not in os.environ  # taken: no child of the node inherits them

@@ -12,7 +12,10 @@ such a node is one error and the rest of the launch runs (ROS 2 would end the wh
 
 from __future__ import annotations
 
+import json
 import os
+import tempfile
+from pathlib import Path
 from typing import Any
 
 from launcher.description import parameters as params
@@ -29,7 +32,7 @@ from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
-from launcher.lineage import GRAPH_PARAMETERS
+from launcher.lineage import GRAPH_PARAMETERS, NODE_PARAMETERS
 from launcher.packages.executables import find_executable
 from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
@@ -77,6 +80,9 @@ class Node(ExecuteProcess):
                                              "full name is an error (else a warning).")
     server: Any = attr(Kind.BOOL, False, doc="roslaunch's: its own parameters also on the "
                                              "graph's parameter server (/NODE/NAME).")
+    ros1: Any = attr(Kind.BOOL, False, doc="roslaunch's command line: ARGS, then FROM:=TO, "
+                                           "__name:=, __ns:= and __log:=, the namespace also "
+                                           "in ROS_NAMESPACE (no --ros-args).")
     name: Any = None  # the label comes from exec_name / node_name
 
     def __post_init__(self) -> None:
@@ -108,25 +114,39 @@ class Node(ExecuteProcess):
         if self.node_name is not None:
             check_node_name(node, self.where)
         check_namespace(space, self.where)
-        argv = [*self.launch_prefix(context), *found.argv,
-                *self._words(context, self.arguments), "--ros-args",
-                *self._words(context, self.ros_arguments)]
-        if node:
-            argv += ["-r", f"__node:={node}"]
-        if space:
-            argv += ["-r", f"__ns:={space}"]
-        argv += self._parameter_arguments(context, node, space, node or found.name)
         own = ((perform_text(context, r.source), perform_text(context, r.target))
                for r in self.remappings)
-        for source, target in [*params.remaps(context), *own]:
-            argv += ["-r", f"{source}:={target}"]
+        remaps = [*params.remaps(context), *own]
+        words = self._parameter_arguments(context, node, space, node or found.name)
+        ros1 = resolve(context, self.ros1, Kind.BOOL, "ros1")
+        argv = [*self.launch_prefix(context), *found.argv,
+                *self._words(context, self.arguments)]
+        if ros1:  # as roslaunch's node_args.create_local_process_args builds it
+            argv += [f"{source}:={target}" for source, target in remaps]
+            argv += [f"__name:={node}"] if node else []
+            argv += [f"__ns:={space}"] if space else []
+        else:
+            argv += ["--ros-args", *self._words(context, self.ros_arguments)]
+            argv += ["-r", f"__node:={node}"] if node else []
+            argv += ["-r", f"__ns:={space}"] if space else []
+            argv += words
+            for source, target in remaps:
+                argv += ["-r", f"{source}:={target}"]
         self._check_unique(context, node or found.name, space)
         label = self.exec_name if self.exec_name is not None else self.node_name
         base = perform_text(context, label) if label is not None else found.name
         env = found.environment(self.environment(context))
         if context.graph_parameters_file is not None:  # being loaded: rospy waits for them
             env[GRAPH_PARAMETERS] = str(context.graph_parameters_file)
+        if ros1:
+            if space:
+                env["ROS_NAMESPACE"] = space.rstrip("/") + "/"
+            if words:  # its parameters, for launcher's own nodes (rospy reads the server)
+                env[NODE_PARAMETERS] = json.dumps(words)
         spec = self.process_spec(context, argv, env, base)
+        if ros1:
+            log = (context.log_dir or Path(tempfile.gettempdir())) / f"{spec.label}.log"
+            spec.argv = [*spec.argv, f"__log:={log}"]
         spec.joins_graph = True
         return spec
 
