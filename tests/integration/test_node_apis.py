@@ -325,7 +325,7 @@ try:
 except rospy.ROSException as exc:
     print('timeout:', exc)
 stamp = rospy.Time.now()
-print('time:', stamp.secs > 0, (stamp + rospy.Duration(1.5)).to_sec() - stamp.to_sec())
+print('time:', stamp.secs > 0, round((stamp + rospy.Duration(1.5)).to_sec() - stamp.to_sec(), 6))
 ''',
 }
 
