@@ -24,7 +24,7 @@ import time
 from pathlib import Path
 
 from _harness import start_router, summary, table
-from roslaunch import sleeping
+from roslaunch import time_to_running, workspace
 
 REPO = Path(__file__).resolve().parent.parent
 COMMANDS = REPO / "launcher" / "compat" / "bin"
@@ -114,48 +114,13 @@ def colcon(runs: int) -> list[tuple[str, str, str]]:
              "report", summary(found))]
 
 
-def hundred(folder: Path) -> Path:
-    package = folder / "src" / "bench_nodes"
-    (package / "scripts").mkdir(parents=True)
-    (package / "package.xml").write_text(
-        '<?xml version="1.0"?><package format="2"><name>bench_nodes</name><version>0.0.1'
-        '</version><description>b</description><maintainer email="a@b.c">a</maintainer>'
-        "<license>MIT</license></package>\n")
-    script = package / "scripts" / "sleeper"
-    script.write_text("#!/bin/sh\nexec sleep 60\n")
-    script.chmod(0o755)
-    nodes = "\n".join(f'  <node name="n{i}" pkg="bench_nodes" type="sleeper"/>'
-                      for i in range(NODES))
-    path = folder / "hundred.launch"
-    path.write_text(f"<launch>\n{nodes}\n</launch>\n")
-    return path
-
-
-def to_running(argv: list[str], env: dict[str, str]) -> float:
-    from _harness import wait_for
-
-    begin = time.perf_counter()
-    proc = subprocess.Popen(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            start_new_session=True)
-    try:
-        end = wait_for(lambda: sleeping(proc.pid) >= NODES, timeout=120, step=0.005)
-    finally:
-        os.killpg(proc.pid, 2)
-        try:
-            proc.wait(30)
-        except subprocess.TimeoutExpired:
-            os.killpg(proc.pid, 9)
-            proc.wait()
-    return end - begin
-
-
 def roslaunch(runs: int) -> list[tuple[str, str, str]]:
     folder = Path(tempfile.mkdtemp(prefix="launcher-bench-roslaunch-"))
-    path = hundred(folder)
+    path = workspace(folder, NODES)
     ours_env = {**os.environ, "LAUNCHER_PACKAGE_PATH": str(folder / "src"),
                 "LAUNCHER_RUN_DIR": str(folder / "run"),
                 "PATH": f"{Path(sys.executable).parent}:/usr/bin:/bin:{COMMANDS}"}
-    ours = [to_running([str(COMMANDS / "roslaunch"), str(path)], ours_env)
+    ours = [time_to_running([str(COMMANDS / "roslaunch"), str(path)], ours_env, NODES)
             for _ in range(runs)]
     rows = [(f"roslaunch, {NODES} nodes to all running: launcher's, s", "report",
              summary(ours))]
@@ -170,7 +135,8 @@ def roslaunch(runs: int) -> list[tuple[str, str, str]]:
                                 start_new_session=True)
         try:
             time.sleep(3)
-            theirs = [to_running([real, str(path)], ros_env) for _ in range(runs)]
+            theirs = [time_to_running([real, str(path)], ros_env, NODES)
+                      for _ in range(runs)]
         finally:
             os.killpg(core.pid, 2)
             core.wait(20)

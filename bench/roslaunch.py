@@ -23,7 +23,8 @@ from _harness import launcher_cmd, summary, table, wait_for, workdir
 NODES = 20
 
 
-def workspace(folder: Path) -> Path:
+def workspace(folder: Path, count: int = NODES) -> Path:
+    """A package with a `sleeper` executable, and a launch file of `count` nodes of it."""
     package = folder / "src" / "bench_nodes"
     (package / "scripts").mkdir(parents=True)
     (package / "package.xml").write_text(
@@ -31,11 +32,11 @@ def workspace(folder: Path) -> Path:
         '</version><description>b</description><maintainer email="a@b.c">a</maintainer>'
         "<license>MIT</license></package>\n")
     script = package / "scripts" / "sleeper"
-    script.write_text("#!/bin/sh\nexec sleep 30\n")
+    script.write_text("#!/bin/sh\nexec sleep 120\n")
     script.chmod(0o755)
     nodes = "\n".join(f'  <node name="n{i}" pkg="bench_nodes" type="sleeper"/>'
-                      for i in range(NODES))
-    path = folder / "twenty.launch"
+                      for i in range(count))
+    path = folder / f"nodes{count}.launch"
     path.write_text(f"<launch>\n  <arg name=\"unused\" default=\"1\"/>\n{nodes}\n</launch>\n")
     return path
 
@@ -48,16 +49,17 @@ def sleeping(root: int) -> int:
         return 0
 
 
-def time_to_running(argv: list[str], env: dict[str, str]) -> float:
+def time_to_running(argv: list[str], env: dict[str, str], count: int = NODES) -> float:
+    """Seconds from the command to its `count`-th node running."""
     begin = time.perf_counter()
     proc = subprocess.Popen(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                             start_new_session=True)
     try:
-        end = wait_for(lambda: sleeping(proc.pid) >= NODES, timeout=60, step=0.002)
+        end = wait_for(lambda: sleeping(proc.pid) >= count, timeout=120, step=0.002)
     finally:
         os.killpg(proc.pid, 2)
         try:
-            proc.wait(15)
+            proc.wait(30)
         except subprocess.TimeoutExpired:
             os.killpg(proc.pid, 9)
             proc.wait()
