@@ -72,3 +72,9 @@ def remap(full: str, rules: list[tuple[str, str]], node: str = "", namespace: st
         except InvalidName:
             continue
     return full
+
+
+def hidden(name: str) -> bool:
+    """ROS 2's hidden names: a part that begins with '_' (ros2cli leaves them out of its
+    lists, as /fibonacci/_action/feedback)."""
+    return any(part.startswith("_") for part in name.split("/"))

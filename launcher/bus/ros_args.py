@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import json
 import os
-import re
 from typing import Any
 
 from launcher.errors import LaunchError, Location
 from launcher.lineage import NODE_PARAMETERS
+from launcher.packages import ros1_args
 from launcher.records import dataclass, field
 from launcher.user_files import read_text
 
@@ -36,7 +36,6 @@ class RosArgs:
         return dict(source for kind, source in self.parameter_sources if kind == "value")
 
 
-_ROS1_WORD = re.compile(r"^(?:__\w+|_\w+|[~/A-Za-z][\w/~]*):=")
 _inherited: list[str] | None = None
 
 
@@ -68,8 +67,9 @@ def parse(argv: list[str]) -> RosArgs:
             inside = True
         elif inside and word == "--":
             inside = False
-        elif not inside and _ROS1_WORD.match(word):
-            _ros1_word(out, word)
+        elif not inside and ros1_args.is_ros1(word):
+            for flag, value in zip(*[iter(ros1_args.as_ros2(word))] * 2, strict=True):
+                _option(out, flag, value)
         elif not inside:
             out.user_args.append(word)
         elif word in ("-r", "--remap", "-p", "--param", "--params-file", "--log-level",
@@ -82,20 +82,6 @@ def parse(argv: list[str]) -> RosArgs:
             raise LaunchError(f"--ros-args: unknown argument '{word}'")
         i += 1
     return out
-
-
-def _ros1_word(out: RosArgs, word: str) -> None:
-    name, _, text = word.partition(":=")
-    if name in ("__name", "__node"):
-        out.node_name = text
-    elif name == "__ns":
-        out.namespace = text if text.startswith("/") else "/" + text
-    elif name.startswith("__"):  # __log, __ip, __hostname, __master: ROS 1's, unused
-        return
-    elif name.startswith("_"):  # a private parameter
-        out.parameter_sources.append(("value", (name[1:], _typed(text))))
-    else:
-        out.remaps.append((name, text))
 
 
 def _option(out: RosArgs, word: str, value: str) -> None:

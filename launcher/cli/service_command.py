@@ -10,6 +10,7 @@ import yaml
 
 from launcher.bus import graph, keys
 from launcher.bus.messages import build, to_data
+from launcher.bus.names import hidden
 from launcher.bus.node import Node
 from launcher.bus.session import open_session
 from launcher.bus.types import registry
@@ -63,8 +64,7 @@ def _space(args: argparse.Namespace) -> keys.Space:
 
 def run_list(args: argparse.Namespace) -> int:
     found = {(e.topic, e.type_name) for e in _services(args) if e.kind == keys.SERVICE
-             and (getattr(args, "include_hidden_services", True)
-                  or not any(p.startswith("_") for p in e.topic.split("/")))}
+             and (getattr(args, "include_hidden_services", True) or not hidden(e.topic))}
     for name, type_name in sorted(found):
         print(f"{name} [{type_name}]" if args.show_types else name)
     return 0

@@ -12,7 +12,7 @@ from itertools import pairwise
 from typing import TYPE_CHECKING, Any
 
 from launcher.bus import graph, keys
-from launcher.bus.names import expand
+from launcher.bus.names import expand, hidden
 from launcher.bus.qos import PROFILES, QoS
 from launcher.bus.session import open_session
 from launcher.cli import completion, positive_count, positive_number, qos_options
@@ -125,11 +125,6 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         verb.add_argument("--sim", action="store_true",
                           help="the simulator's own topics (Gazebo's gz-transport side), not "
                                "the ROS graph's")
-
-
-def hidden(name: str) -> bool:
-    """ROS 2's hidden names: a part that begins with '_' (ros2cli leaves them out)."""
-    return any(part.startswith("_") for part in name.split("/"))
 
 
 def _space(args: argparse.Namespace) -> keys.Space:

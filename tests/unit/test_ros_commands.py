@@ -63,7 +63,7 @@ def test_rostopic_pub_values_from_yaml_or_the_fields_in_order():
 
 
 def test_hidden_names_are_ros2s():
-    from launcher.cli.topic_command import hidden
+    from launcher.bus.names import hidden
 
     assert hidden("/fibonacci/_action/feedback") and hidden("/_private")
     assert not hidden("/cmd_vel") and not hidden("/robot_1/odom")
@@ -75,7 +75,7 @@ def test_ros1_type_names():
 
 
 def test_launchers_own_nodes_read_a_roslaunch_command_line_in_ros2s_layout():
-    from launcher.packages.entry import ros2_layout
+    from launcher.packages.ros1_args import ros2_layout
 
     assert ros2_layout(["-urdf", "in:=/out", "__name:=spawner", "__ns:=/r1", "_rate:=5",
                         "__log:=/tmp/x.log"]) == \

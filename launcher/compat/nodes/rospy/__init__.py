@@ -69,30 +69,6 @@ def _need_node(what: str) -> Any:
 
 
 # --- the node ---------------------------------------------------------------------------------
-def _ros1_to_ros2_args(argv: list[str]) -> tuple[list[str], dict[str, Any]]:
-    """ROS 1's `from:=to`, `__name:=`, `__ns:=`, `_param:=value` as `--ros-args` words, and
-    the private parameters."""
-    from launcher.bus.ros_args import typed
-
-    words: list[str] = []
-    params: dict[str, Any] = {}
-    for arg in argv:
-        if ":=" not in arg or arg.startswith("-"):
-            continue
-        left, right = arg.split(":=", 1)
-        if left in ("__name", "__node"):
-            words += ["-r", f"__node:={right}"]
-        elif left == "__ns":
-            words += ["-r", f"__ns:={right if right.startswith('/') else '/' + right}"]
-        elif left in ("__log", "__ip", "__hostname", "__master"):
-            continue
-        elif left.startswith("_") and not left.startswith("__"):
-            params[left[1:]] = typed(right)
-        else:
-            words += ["-r", f"{left}:={right}"]
-    return words, params
-
-
 def myargv(argv: list[str] | None = None) -> list[str]:
     """argv without ROS remapping arguments (`name:=value`)."""
     return [a for a in (sys.argv if argv is None else argv) if ":=" not in a]
@@ -115,15 +91,12 @@ def init_node(name: str, argv: list[str] | None = None, anonymous: bool = False,
         if anonymous:
             name = f"{name}_{os.getpid()}_{int(_time.time() * 1000)}"
         given = sys.argv[1:] if argv is None else argv[1:]
-        # a launch's node action adds ROS 2's `--ros-args …` (its name, params files, -p):
-        # taken as they are; ROS 1's `from:=to`, `_param:=` come before it
-        cut = given.index("--ros-args") if "--ros-args" in given else len(given)
-        words, private = _ros1_to_ros2_args(given[:cut])
+        # ROS 1's `from:=to`, `__name:=`, `_param:=` (roslaunch's, rosrun's) and ROS 2's
+        # `--ros-args …` are both read by the node (bus/ros_args.py)
         try:
-            node = Node(name, argv=[*given[cut:], *(["--ros-args", *words] if words else [])])
+            node = Node(name, argv=given)
         except LaunchError as exc:
             raise ROSInitException(str(exc)) from None
-        node._parameters.update(private)
         if log_level is not None:
             _state.level = log_level
         _state.node = node
