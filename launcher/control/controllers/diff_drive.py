@@ -21,6 +21,7 @@ from collections import deque
 from typing import Any
 
 from launcher.control.controller import Controller, ControllerError
+from launcher.control.controllers import odometry
 
 
 class Limit:
@@ -197,35 +198,5 @@ class DiffDriveController(Controller):
         self.heading = math.atan2(math.sin(self.heading + turn), math.cos(self.heading + turn))
 
     def _publish(self, time: float) -> None:
-        odom_wanted = self.odom_pub.get_subscription_count() > 0
-        tf_wanted = self.tf_enabled and self.tf_pub.get_subscription_count() > 0
-        if not (odom_wanted or tf_wanted):
-            return
-        make = self.make
-        header = self.header(time, self.odom_frame)
-        quat = make("geometry_msgs/msg/Quaternion", x=0.0, y=0.0,
-                    z=math.sin(self.heading / 2), w=math.cos(self.heading / 2))
-        if odom_wanted:
-            pose_cov, twist_cov = [0.0] * 36, [0.0] * 36
-            for i in range(6):
-                pose_cov[i * 7] = self.pose_covariance[i] if i < len(self.pose_covariance) else 0
-                twist_cov[i * 7] = self.twist_covariance[i] \
-                    if i < len(self.twist_covariance) else 0
-            self.odom_pub.publish(make(
-                "nav_msgs/msg/Odometry", header=header, child_frame_id=self.base_frame,
-                pose=make("geometry_msgs/msg/PoseWithCovariance", pose=make(
-                    "geometry_msgs/msg/Pose", position=make(
-                        "geometry_msgs/msg/Point", x=self.x, y=self.y, z=0.0),
-                    orientation=quat), covariance=pose_cov),
-                twist=make("geometry_msgs/msg/TwistWithCovariance", twist=make(
-                    "geometry_msgs/msg/Twist",
-                    linear=make("geometry_msgs/msg/Vector3", x=self.linear, y=0.0, z=0.0),
-                    angular=make("geometry_msgs/msg/Vector3", x=0.0, y=0.0, z=self.angular)),
-                    covariance=twist_cov)))
-        if tf_wanted:
-            self.tf_pub.publish(make("tf2_msgs/msg/TFMessage", transforms=[make(
-                "geometry_msgs/msg/TransformStamped", header=header,
-                child_frame_id=self.base_frame, transform=make(
-                    "geometry_msgs/msg/Transform", translation=make(
-                        "geometry_msgs/msg/Vector3", x=self.x, y=self.y, z=0.0),
-                    rotation=quat))]))
+        odometry.publish(self, time, self.x, self.y, self.heading, self.linear, self.angular,
+                         self.pose_covariance, self.twist_covariance)

@@ -23,6 +23,7 @@ import math
 from typing import Any
 
 from launcher.control.controller import Controller, ControllerError
+from launcher.control.controllers import odometry
 
 
 class _Steered(Controller):
@@ -76,32 +77,7 @@ class _Steered(Controller):
                                   math.cos(self.heading + w * period))
 
     def _publish(self, time: float) -> None:
-        odom = self.odom_pub.get_subscription_count() > 0
-        tf = self.tf_enabled and self.tf_pub.get_subscription_count() > 0
-        if not (odom or tf):
-            return
-        make = self.make
-        header = self.header(time, self.odom_frame)
-        quat = make("geometry_msgs/msg/Quaternion", x=0.0, y=0.0,
-                    z=math.sin(self.heading / 2), w=math.cos(self.heading / 2))
-        if odom:
-            self.odom_pub.publish(make(
-                "nav_msgs/msg/Odometry", header=header, child_frame_id=self.base_frame,
-                pose=make("geometry_msgs/msg/PoseWithCovariance", pose=make(
-                    "geometry_msgs/msg/Pose", position=make(
-                        "geometry_msgs/msg/Point", x=self.x, y=self.y, z=0.0),
-                    orientation=quat)),
-                twist=make("geometry_msgs/msg/TwistWithCovariance", twist=make(
-                    "geometry_msgs/msg/Twist",
-                    linear=make("geometry_msgs/msg/Vector3", x=self.v, y=0.0, z=0.0),
-                    angular=make("geometry_msgs/msg/Vector3", x=0.0, y=0.0, z=self.w)))))
-        if tf:
-            self.tf_pub.publish(make("tf2_msgs/msg/TFMessage", transforms=[make(
-                "geometry_msgs/msg/TransformStamped", header=header,
-                child_frame_id=self.base_frame, transform=make(
-                    "geometry_msgs/msg/Transform", translation=make(
-                        "geometry_msgs/msg/Vector3", x=self.x, y=self.y, z=0.0),
-                    rotation=quat))]))
+        odometry.publish(self, time, self.x, self.y, self.heading, self.v, self.w)
 
 
 class TricycleController(_Steered):
