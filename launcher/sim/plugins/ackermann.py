@@ -23,7 +23,7 @@ import mujoco
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
-from launcher.sim.plugins.diff_drive import _approach, _yaw_quat
+from launcher.sim.plugins.diff_drive import _approach, publish_odometry
 
 CONTROL_PERIOD = 0.005  # s of sim time between updates of the wheel and steering commands
 SERVO_TIME = 0.005  # s: the joint velocity servos' settling time (gain from the inertia)
@@ -190,22 +190,7 @@ class AckermannSteering(Plugin):
                                self.next_odom if frequency > 0 else math.inf)
 
     def _publish(self, now: float) -> None:
-        odom, tf = self.odom_pub.get_subscription_count(), self.tf_pub.get_subscription_count()
-        if not (odom or tf):
-            return
-        transport = self.sim.transport
-        header = transport.header(now, self.frame_id)
-        pose = transport.pose(self.x, self.y, 0.0, _yaw_quat(self.heading))
-        if odom:
-            self.odom_pub.publish(transport.message(
-                "mujoco_sim/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
-                pose=pose, twist=transport.message(
-                    "geometry_msgs/msg/Twist", linear=transport.vector(self.linear, 0.0, 0.0),
-                    angular=transport.vector(0.0, 0.0, self.angular))))
-        if tf:
-            self.tf_pub.publish(transport.message(
-                "mujoco_sim/msg/PoseV", header=header, name=[self.child_frame_id],
-                parent=[self.frame_id], pose=[pose]))
+        publish_odometry(self, now, self.x, self.y, self.heading, self.linear, self.angular)
 
     def close(self) -> None:
         for item in (self.cmd_sub, self.odom_pub, self.tf_pub):

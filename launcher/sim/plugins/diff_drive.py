@@ -212,29 +212,35 @@ class DiffDrive(Plugin):
             self.linear, self.angular = distance / dt, turn / dt
 
     def _publish(self, now: float) -> None:
-        odom_wanted = self.odom_pub.get_subscription_count() > 0
-        tf_wanted = self.tf_pub.get_subscription_count() > 0
-        if not (odom_wanted or tf_wanted):
-            return
-        transport = self.sim.transport
-        header = transport.header(now, self.frame_id)
-        pose = transport.pose(self.x, self.y, 0.0, _yaw_quat(self.theta))
-        odom = transport.message(
-            "mujoco_sim/msg/Odometry", header=header, child_frame_id=self.child_frame_id,
-            pose=pose, twist=transport.message(
-                "geometry_msgs/msg/Twist",
-                linear=transport.vector(self.linear, 0.0, 0.0),
-                angular=transport.vector(0.0, 0.0, self.angular)))
-        if odom_wanted:
-            self.odom_pub.publish(odom)
-        if tf_wanted:
-            self.tf_pub.publish(transport.message(
-                "mujoco_sim/msg/PoseV", header=header, name=[self.child_frame_id],
-                parent=[self.frame_id], pose=[pose]))
+        publish_odometry(self, now, self.x, self.y, self.theta, self.linear, self.angular)
 
     def close(self) -> None:
         for item in (self.odom_pub, self.tf_pub, self.cmd_sub):
             item.destroy()
+
+
+def publish_odometry(plugin: Any, now: float, x: float, y: float, heading: float,
+                     linear: float, angular: float) -> None:
+    """gz-sim's odometry of a wheeled base: gz.msgs.Odometry on the plugin's `odom_pub` and its
+    pose as gz.msgs.Pose_V on `tf_pub`, each only while someone listens (DiffDrive,
+    AckermannSteering)."""
+    odom_wanted = plugin.odom_pub.get_subscription_count() > 0
+    tf_wanted = plugin.tf_pub.get_subscription_count() > 0
+    if not (odom_wanted or tf_wanted):
+        return
+    transport = plugin.sim.transport
+    header = transport.header(now, plugin.frame_id)
+    pose = transport.pose(x, y, 0.0, _yaw_quat(heading))
+    if odom_wanted:
+        plugin.odom_pub.publish(transport.message(
+            "mujoco_sim/msg/Odometry", header=header, child_frame_id=plugin.child_frame_id,
+            pose=pose, twist=transport.message(
+                "geometry_msgs/msg/Twist", linear=transport.vector(linear, 0.0, 0.0),
+                angular=transport.vector(0.0, 0.0, angular))))
+    if tf_wanted:
+        plugin.tf_pub.publish(transport.message(
+            "mujoco_sim/msg/PoseV", header=header, name=[plugin.child_frame_id],
+            parent=[plugin.frame_id], pose=[pose]))
 
 
 def _approach(current: float, target: float, dt: float, low: float, high: float) -> float:
