@@ -59,8 +59,9 @@ def parse(argv: list[str]) -> RosArgs:
     out = RosArgs()
     inside = False
     i = 0
-    argv = [*argv, *(["--ros-args", *_launched_parameters()] if _launched_parameters()
-                     else [])]
+    inherited = _launched_parameters()
+    if inherited:
+        argv = [*argv, "--ros-args", *inherited]
     while i < len(argv):
         word = argv[i]
         if word == "--ros-args":

@@ -83,8 +83,16 @@ def _signs(entity: Entity) -> tuple[tuple[str, Location] | None, tuple[str, Loca
     return one, two
 
 
-RUN_ID = str(uuid.uuid1())  # one per launch, as roslaunch's
-ROSLAUNCH_PARAMETERS = {"/run_id": RUN_ID, "/rosdistro": "noetic\n", "/rosversion": "1.16.0\n"}
+DISTRO, VERSION = "noetic", "1.16.0"  # the ROS 1 that launcher's ROS 1 side stands for
+
+
+def roslaunch_parameters(run_id: str) -> dict[str, str]:
+    """What roslaunch (and roscore) put on the parameter server (rosdistro and rosversion end
+    in a newline there)."""
+    return {"/run_id": run_id, "/rosdistro": f"{DISTRO}\n", "/rosversion": f"{VERSION}\n"}
+
+
+ROSLAUNCH_PARAMETERS = roslaunch_parameters(str(uuid.uuid1()))  # one run id per launch
 
 
 def translate(root: Entity) -> Entity:

@@ -10,14 +10,7 @@ import argparse
 import uuid
 
 from launcher.arguments import Parser
-
-DISTRO = "noetic"
-VERSION = "1.16.0"
-
-
-def parameters(run_id: str) -> dict[str, str]:
-    """What roscore's roslaunch sets (rosdistro and rosversion end in a newline there)."""
-    return {"/run_id": run_id, "/rosdistro": f"{DISTRO}\n", "/rosversion": f"{VERSION}\n"}
+from launcher.frontend.ros1 import DISTRO, VERSION, roslaunch_parameters
 
 
 def main(argv: list[str], prog: str = "roscore") -> int:
@@ -44,7 +37,7 @@ def main(argv: list[str], prog: str = "roscore") -> int:
         run_id = str(uuid.uuid1())
         if "/run_id" in server.names("/"):
             run_id = str(server.get("/run_id"))
-        server.set_many(parameters(run_id))
+        server.set_many(roslaunch_parameters(run_id))
         print(_summary(run_id, joined), flush=True)
         node.spin()
     except KeyboardInterrupt:
