@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Any
 
 
@@ -13,12 +14,7 @@ def block_place(files: list[str], node: str, namespace: str = "/") -> str:
 
     full = f"{namespace.rstrip('/')}/{node}"
     keys = {node, full, f"/**/{node}", f"/**{full}"}
-    for path in files:
-        try:
-            with open(path, encoding="utf-8") as stream:
-                root = yaml.compose(stream)
-        except (OSError, yaml.YAMLError):
-            continue
+    for path, root in _composed(files):
         if not isinstance(root, yaml.MappingNode):
             continue
         for key, value in root.value:
@@ -33,20 +29,25 @@ def block_place(files: list[str], node: str, namespace: str = "/") -> str:
 
 def key_place(files: list[str], node: str, dotted: str) -> str:
     """`file:line` of `node: ros__parameters: a: b:` for dotted name `a.b`, or ""."""
-    import yaml
-
     parts = dotted.split(".")
-    for path in files:
-        try:
-            with open(path, encoding="utf-8") as stream:
-                root = yaml.compose(stream)
-        except (OSError, yaml.YAMLError):
-            continue
+    for path, root in _composed(files):
         found = _descend(root, [node, "ros__parameters", *parts]) or \
             _descend(root, [f"/{node}", "ros__parameters", *parts])
         if found is not None:
             return f"{path}:{found.start_mark.line + 1}"
     return ""
+
+
+def _composed(files: list[str]) -> Iterator[tuple[str, Any]]:
+    """Each file's YAML node tree (with its lines), skipping one that cannot be read."""
+    import yaml
+
+    for path in files:
+        try:
+            with open(path, encoding="utf-8") as stream:
+                yield path, yaml.compose(stream)
+        except (OSError, yaml.YAMLError):
+            continue
 
 
 def _descend(node: Any, path: list[str]) -> Any:
