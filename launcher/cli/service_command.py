@@ -64,7 +64,7 @@ def _space(args: argparse.Namespace) -> keys.Space:
 
 def run_list(args: argparse.Namespace) -> int:
     found = {(e.topic, e.type_name) for e in _services(args) if e.kind == keys.SERVICE
-             and (getattr(args, "include_hidden_services", True) or not hidden(e.topic))}
+             and (args.include_hidden_services or not hidden(e.topic))}
     for name, type_name in sorted(found):
         print(f"{name} [{type_name}]" if args.show_types else name)
     return 0

@@ -159,7 +159,7 @@ def run_list(args: argparse.Namespace) -> int:
     session = open_session("client")
     topics = sorted(graph.topics(session, _space(args)).items())
     session.close()
-    if not getattr(args, "include_hidden_topics", True):
+    if not args.include_hidden_topics:
         topics = [(name, info) for name, info in topics if not hidden(name)]
     if args.count_topics:
         print(len(topics))
