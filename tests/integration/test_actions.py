@@ -162,6 +162,15 @@ def test_the_action_cli_lists_describes_and_sends_goals_as_ros2_action_does(exam
                         "    /minimal_action_server\n"), info
         assert examples.run("action", "type", "/fibonacci").stdout == \
             "example_interfaces/action/Fibonacci\n"
+        # its topics and services are hidden names: left out of the lists, as ros2 does
+        topics = examples.run("topic", "list").stdout.split()
+        assert "/fibonacci/_action/status" not in topics
+        assert "/fibonacci/_action/status" in \
+            examples.run("topic", "list", "--include-hidden-topics").stdout.split()
+        assert "/fibonacci/_action/send_goal" not in \
+            examples.run("service", "list").stdout.split()
+        assert "/fibonacci/_action/send_goal" in \
+            examples.run("service", "list", "--include-hidden-services").stdout.split()
         sent = examples.run("action", "send_goal", "/fibonacci",
                             "example_interfaces/action/Fibonacci", "{order: 2}", "--feedback",
                             timeout=60)
