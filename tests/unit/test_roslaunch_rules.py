@@ -84,10 +84,17 @@ def test_eval_only_as_the_whole_attribute(tmp_path, value):
 
 
 def test_a_test_tag_is_not_run_by_roslaunch(tmp_path):
-    path = launch(tmp_path, '<launch>\n<test test-name="t" pkg="p" type="check"/>\n'
-                            '</launch>\n')
-    _, service = run(load_file(path))
-    assert not [s for s in service.specs if "check" in " ".join(s.argv)]
+    def started(tag: str) -> list:
+        path = launch(tmp_path, f'<launch>\n<{tag} name="t" test-name="t" pkg="p" '
+                                f'type="check_tag_exe"/>\n</launch>\n', f"{tag}.launch")
+        try:
+            _, service = run(load_file(path))
+        except LaunchError:
+            return ["failed to resolve: it was going to run"]
+        return [s for s in service.specs if any(a.endswith("check_tag_exe") for a in s.argv)]
+
+    assert started("node")  # the same entry as a node is run
+    assert not started("test")
 
 
 def test_a_node_on_a_remote_machine_is_refused_a_local_one_runs(tmp_path):
