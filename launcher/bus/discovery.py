@@ -31,18 +31,21 @@ from collections.abc import Iterator, Mapping
 from pathlib import Path
 
 from launcher import lineage
+from launcher.bus import places
+from launcher.bus.places import (  # noqa: F401 - the names discovery's users know
+    DEFAULT_TIMEOUT,
+    DOMAIN_VARIABLE,
+    MAX_DOMAIN,
+    ROUTER_VARIABLE,
+    TIMEOUT_VARIABLE,
+    is_local,
+)
 from launcher.errors import LaunchError, UsageError
 from launcher.private import open_private, private_folder
 
-ROUTER_VARIABLE = "LAUNCHER_ROUTER"
-TIMEOUT_VARIABLE = "LAUNCHER_BUS_TIMEOUT"  # seconds to wait for a router; default 5
-DOMAIN_VARIABLE = "ROS_DOMAIN_ID"
-DEFAULT_TIMEOUT = 5.0
 LINGER = 3.0  # seconds a started router waits with nothing connected before it stops
 LINGER_VARIABLE = "LAUNCHER_ROUTER_LINGER"  # sets that
-MAX_DOMAIN = 232  # as ROS 2 allows
 PEER_PREFIX = "peer-"
-_SOCKET_PATH_MAX = 107  # sun_path, less its terminating NUL
 _ENDPOINT = re.compile(r"(?P<protocol>tcp|udp|tls|quic|ws)/(?P<host>\[[0-9a-fA-F:.]+\]|[^/:\s"
                        r"\[\]]+):(?P<port>\d{1,5})(?:#.*)?$|unixsock-stream/(?P<path>/\S+)$")
 
@@ -53,37 +56,25 @@ class NoRouter(LaunchError):
 
 def domain_id(environ: Mapping[str, str] | None = None) -> int:
     env = os.environ if environ is None else environ
-    text = env.get(DOMAIN_VARIABLE, "").strip()
-    if not text:
-        return 0
-    if not text.isdigit() or int(text) > MAX_DOMAIN:
-        raise UsageError(f"{DOMAIN_VARIABLE}={text!r}: expected a whole number from 0 to "
-                         f"{MAX_DOMAIN} (as ROS 2 allows)")
-    return int(text)
+    found = places.domain(env)
+    if found is None:
+        raise UsageError(f"{DOMAIN_VARIABLE}={env[DOMAIN_VARIABLE].strip()!r}: expected a "
+                         f"whole number from 0 to {MAX_DOMAIN} (as ROS 2 allows)")
+    return found
 
 
 def run_dir(environ: Mapping[str, str] | None = None) -> Path:
-    env = os.environ if environ is None else environ
-    if env.get("LAUNCHER_RUN_DIR"):
-        return Path(env["LAUNCHER_RUN_DIR"])
-    runtime = env.get("XDG_RUNTIME_DIR")
-    if runtime and os.path.isdir(runtime):
-        return Path(runtime) / "launcher"
-    return Path.home() / ".launcher" / "run"
+    return Path(places.run_folder(os.environ if environ is None else environ))
 
 
 def socket_path(environ: Mapping[str, str] | None = None) -> Path:
-    path = run_dir(environ) / f"domain-{domain_id(environ)}.sock"
-    if len(str(path)) > _SOCKET_PATH_MAX:
+    env = os.environ if environ is None else environ
+    path = Path(places.socket_file(env, domain_id(env)))
+    if len(str(path)) > places.SOCKET_PATH_MAX:
         raise UsageError(f"the run folder {path.parent} is too long a path for the graph's "
-                         f"socket ({len(str(path))} > {_SOCKET_PATH_MAX} characters); set "
-                         "LAUNCHER_RUN_DIR to a shorter folder")
+                         f"socket ({len(str(path))} > {places.SOCKET_PATH_MAX} characters); "
+                         "set LAUNCHER_RUN_DIR to a shorter folder")
     return path
-
-
-def is_local(endpoint: str) -> bool:
-    """Whether the endpoint is a Unix socket (this host, guarded by file permissions)."""
-    return endpoint.startswith("unixsock-stream/")
 
 
 def peer_endpoint(environ: Mapping[str, str] | None = None) -> str:
@@ -131,11 +122,7 @@ def explicit_endpoints(environ: Mapping[str, str] | None = None) -> list[str]:
 
 
 def timeout(environ: Mapping[str, str] | None = None) -> float:
-    env = os.environ if environ is None else environ
-    try:
-        return float(env.get(TIMEOUT_VARIABLE, DEFAULT_TIMEOUT))
-    except ValueError:
-        return DEFAULT_TIMEOUT
+    return places.timeout(os.environ if environ is None else environ)
 
 
 def linger(environ: Mapping[str, str] | None = None) -> float:
@@ -168,7 +155,7 @@ def _own_folder(folder: Path) -> None:
 
 
 def lock_path(sock: Path) -> Path:
-    return sock.with_suffix(".lock")
+    return Path(places.lock_file(str(sock)))
 
 
 def log_path(sock: Path) -> Path:

@@ -25,13 +25,23 @@ from __future__ import annotations
 import os
 import struct
 
+from launcher.bus.tokens import (  # noqa: F401 - the names keys' users know
+    CLIENT,
+    NODE,
+    PUBLISHER,
+    SERVICE,
+    SUBSCRIPTION,
+    fields,
+    mangle,
+    unmangle,
+)
+from launcher.bus.tokens import ROS as LIVELINESS
+from launcher.bus.tokens import SIM as SIM_LIVELINESS
 from launcher.records import dataclass
 
 _DOMAIN_TEXT = os.environ.get("ROS_DOMAIN_ID", "").strip()
 # checked (0–232) where sessions open (discovery.domain_id): a bad one is said there
 DOMAIN = int(_DOMAIN_TEXT) if _DOMAIN_TEXT.isdigit() else 0
-
-LIVELINESS = "@ros2_lv"
 
 
 @dataclass(frozen=True)
@@ -46,8 +56,7 @@ class Space:
 
 
 ROS = Space("", LIVELINESS)
-SIM = Space("@sim/", "@sim_lv")
-NODE, PUBLISHER, SUBSCRIPTION, SERVICE, CLIENT = "NN", "MP", "MS", "SS", "SC"
+SIM = Space("@sim/", SIM_LIVELINESS)
 _ATTACHMENT = struct.Struct("<qqB16s")
 
 
@@ -111,14 +120,6 @@ def split_topic_key(key: str) -> tuple[str, str, str]:
     return "/" + topic, ros_type(dds), type_hash
 
 
-def mangle(name: str) -> str:
-    return name.replace("/", "%") if name else "%"
-
-
-def unmangle(name: str) -> str:
-    return "" if name == "%" else name.replace("%", "/")
-
-
 @dataclass(frozen=True)
 class Entity:
     """What a liveliness token says about a node or one of its endpoints."""
@@ -149,10 +150,10 @@ def liveliness_key(domain: int, entity: Entity, space: Space = ROS) -> str:
 
 
 def parse_liveliness(key: str) -> Entity | None:
-    parts = key.split("/")
-    if len(parts) < 9 or parts[0] not in (ROS.liveliness, SIM.liveliness):
+    parts = fields(key)
+    if parts is None:
         return None
-    _, _, zid, nid, eid, kind, _, namespace, node, *rest = parts
+    zid, nid, eid, kind, _, namespace, node, *rest = parts
     entity = Entity(zid, int(nid), int(eid), kind, unmangle(namespace), node)
     if len(rest) >= 3:
         return Entity(zid, int(nid), int(eid), kind, unmangle(namespace), node,

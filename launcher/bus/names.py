@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from launcher.bus.tokens import hidden  # noqa: F401 - with the other rules for names
 from launcher.errors import LaunchError
 
 _TOKEN = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
@@ -72,9 +73,3 @@ def remap(full: str, rules: list[tuple[str, str]], node: str = "", namespace: st
         except InvalidName:
             continue
     return full
-
-
-def hidden(name: str) -> bool:
-    """ROS 2's hidden names: a part that begins with '_' (ros2cli leaves them out of its
-    lists, as /fibonacci/_action/feedback)."""
-    return any(part.startswith("_") for part in name.split("/"))

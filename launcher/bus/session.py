@@ -20,9 +20,10 @@ import zenoh
 
 from launcher.bus import credentials, discovery
 from launcher.bus.discovery import NoRouter
+from launcher.bus.zenoh_settings import json5, settings
 from launcher.private import write_private
 
-__all__ = ["NoRouter", "config", "open_session", "write_session_config"]
+__all__ = ["NoRouter", "config", "open_session", "settings", "write_session_config"]
 
 
 def config(mode: str, listen: list[str], connect: list[str],
@@ -31,40 +32,8 @@ def config(mode: str, listen: list[str], connect: list[str],
     c = zenoh.Config()
     for key, value in settings(mode, listen, connect, timeout_s, environ,
                                check_others).items():
-        c.insert_json5(key, json.dumps(value))
+        c.insert_json5(key, json5(value))
     return c
-
-
-def settings(mode: str, listen: list[str], connect: list[str],
-             timeout_s: float = discovery.DEFAULT_TIMEOUT,
-             environ: Mapping[str, str] | None = None,
-             check_others: bool = False) -> dict[str, object]:
-    """The config as key paths and values (also written out for other Zenoh programs).
-    Credentials are presented where a connect endpoint leaves this host; `check_others` (a
-    router listening beyond it) checks those who connect against them."""
-    values: dict[str, object] = {
-        "mode": mode,
-        "scouting/multicast/enabled": False,
-        "scouting/gossip/enabled": True,
-        "scouting/delay": 0,
-        # as rmw_zenoh's default config: advanced publishers (latched topics) need it
-        "timestamping/enabled": {"router": True, "peer": True, "client": True},
-        "listen/endpoints": listen,
-        "connect/endpoints": connect,
-    }
-    if check_others:
-        values["transport/auth/usrpwd"] = {
-            "dictionary_file": str(credentials.load(environ).file)}
-    elif any(not discovery.is_local(endpoint) for endpoint in connect):
-        secret = credentials.load(environ)
-        values["transport/auth/usrpwd"] = {"user": secret.user, "password": secret.password}
-    if connect:
-        ms = int(timeout_s * 1000)
-        values["connect/timeout_ms"] = {"router": ms, "peer": ms, "client": ms}
-        values["connect/exit_on_failure"] = {"router": False, "peer": True, "client": True}
-        values["connect/retry"] = {"period_init_ms": 20, "period_max_ms": 500,
-                                   "period_increase_factor": 2}
-    return values
 
 
 def write_session_config(environ: Mapping[str, str] | None = None) -> Path:

@@ -119,6 +119,54 @@ def test_ros2_verbs_daemon_and_the_ones_launcher_lacks(ws):
     assert packages.returncode == 0 and packages.stdout.strip(), packages.stderr
 
 
+def test_topic_lists_take_the_fast_path_and_say_what_the_full_command_says(graph):
+    """`ros2 topic list` and `rostopic list` are answered without the full command line
+    (cli/quick.py); LAUNCHER_ROUTER naming the same router sends them the full way, which
+    must print the same: ros2 hides hidden names, rostopic lists them."""
+    hidden = graph.start("rostopic", "pub", "/_secret/state", "std_msgs/String", "x",
+                         output="hidden.out")
+    try:
+        lists = "ros2 topic list; echo ===; rostopic list; echo ===; launcher topic list"
+        deadline = time.monotonic() + 30
+        while "/_secret/state" not in shell(graph, "rostopic list").stdout:
+            assert time.monotonic() < deadline, graph.output("hidden.out")
+            time.sleep(0.2)
+        fast = shell(graph, lists)
+        socket = Path(graph.env["LAUNCHER_RUN_DIR"]) / "domain-0.sock"
+        full = shell(graph, f"export LAUNCHER_ROUTER=unixsock-stream/{socket}; {lists}")
+        assert fast.returncode == full.returncode == 0, fast.stderr + full.stderr
+        assert fast.stdout == full.stdout, (fast.stdout, full.stdout)
+        ros2, ros1, ours = fast.stdout.split("===\n")
+        assert "/chatter" in ros2.split() and "/_secret/state" not in ros2.split()
+        assert {"/chatter", "/_secret/state"} <= set(ros1.split()) and ours == ros2
+        imports = shell(graph, f"{sys.executable} -X importtime -P -c 'import sys; "
+                               "from launcher.cli.entry import main; sys.exit(main())' "
+                               "ros2 topic list")
+        assert imports.returncode == 0 and "/chatter" in imports.stdout.split()
+        assert " argparse\n" not in imports.stderr and "zenoh" in imports.stderr
+    finally:
+        hidden.send_signal(signal.SIGINT)
+        hidden.wait(30)
+
+
+def test_the_commands_run_launchers_interpreter_and_fall_back_to_launcher(ws):
+    """compat/bin's scripts run the interpreter named on `launcher`'s first line, without
+    the current folder on the module path (a zenoh.py there is not imported); where
+    `launcher` is not a Python script, they run `launcher` itself."""
+    (ws.root / "zenoh.py").write_text("raise SystemExit('the folder was on the module path')\n")
+    done = shell(ws, "ros2 daemon status")
+    assert (done.returncode, done.stdout.strip()) == (0, "The daemon is running"), done.stderr
+    other = ws.root / "other"
+    other.mkdir()
+    (other / "launcher").write_text('#!/bin/sh\necho "STAND-IN $*"\n')
+    (other / "launcher").chmod(0o755)
+    ours = REPO / "launcher" / "compat" / "bin"
+    done = subprocess.run([str(ours / "ros2"), "topic", "list"], capture_output=True,
+                          text=True, env=dict(ws.env, PATH=f"{other}:/usr/bin:/bin"),
+                          timeout=30)
+    assert done.stdout == "STAND-IN ros2 topic list\n", done.stderr
+
+
 def test_ros1_topic_service_and_node_tools_on_a_running_graph(graph):
     done = shell(graph, "rostopic list; echo ===; rostopic type /chatter; echo ===; "
                         "rostopic info /chatter; echo ===; rostopic echo -n 2 /chatter; "
