@@ -125,9 +125,9 @@ def _convert(text: str, kind: str, name: str) -> Any:
         except ValueError:
             raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
                                  f" {kind}") from None
-    if kind == "auto":  # roslaunch's typing of an untyped value: a number, true/false, else text
-        try:
-            return float(text) if "." in text else int(text) if "_" not in text else text
+    if kind == "auto":  # roslaunch's typing of an untyped value: a number, true/false, else
+        try:  # text (loader.convert_value: Python's float() and int(), so 1e3 stays text)
+            return float(text) if "." in text else int(text)
         except ValueError:
             low = text.lower()
             return low == "true" if low in ("true", "false") else text

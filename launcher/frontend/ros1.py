@@ -102,6 +102,7 @@ def translate(root: Entity) -> Entity:
     _unique_names(root.children, "", {})
     _args_once(root.children, {})
     _whole_evals(root)
+    _one_condition(root)
     _local_machines(root)
     out = Entity("launch", root.location, nested_in_children=True)
     out.children = [*(_server_parameter(name, value, root.location)
@@ -137,6 +138,15 @@ def _whole_evals(root: Entity) -> None:
                                  "whole attribute (the attribute is then the expression's "
                                  "value); write it alone, or put the text inside the "
                                  "expression", attribute.location)
+
+
+def _one_condition(root: Entity) -> None:
+    """xmlloader.ifunless_test: "cannot set both 'if' and 'unless' on the same tag"."""
+    for entity in _walk(root):
+        if "if" in entity.attributes and "unless" in entity.attributes:
+            raise ParseError(f"<{entity.tag}> has both if= and unless=: roslaunch takes one "
+                             "of them on a tag (nest a <group> for the other)",
+                             entity.attributes["unless"].location)
 
 
 LOCAL_ADDRESSES = {"localhost", "127.0.0.1", "::1"}
@@ -334,11 +344,15 @@ PARAM_TYPES = {"str": "str", "string": "str", "int": "int", "double": "float",
 def _param_attrs(entity: Entity, made: Entity) -> None:
     _known(entity, {"name", "value", "type", "textfile", "binfile", "command"})
     if "binfile" in entity.attributes:
-        raise ParseError("<param binfile=> is not supported: a ROS 2 parameter holds no bytes "
-                         "from a file; use textfile= for text", entity.location)
+        raise ParseError("<param binfile=> is not supported: launcher's parameters hold text, "
+                         "numbers, bools and lists, not a file's bytes; use textfile= for "
+                         "text", entity.location)
     for key in ("value", "command", "textfile"):
         if key in entity.attributes:
             made.attributes[key] = entity.attributes[key]
+    if "value" in entity.attributes:  # roslaunch strips value= (not a file's or command's text)
+        value = entity.attributes["value"]
+        made.attributes["value"] = Attribute(str(value.value).strip(), value.location)
     given = [k for k in ("value", "command", "textfile") if k in entity.attributes]
     if len(given) != 1:
         raise ParseError("<param> needs exactly one of value=, command= and textfile=",
@@ -351,10 +365,8 @@ def _param_attrs(entity: Entity, made: Entity) -> None:
                              "or auto",
                              kind.location)
         made.attributes["type"] = Attribute(PARAM_TYPES[word], kind.location)
-    elif "command" in entity.attributes or "textfile" in entity.attributes:
-        made.attributes["type"] = _text("str", entity.location)
-    else:  # roslaunch types an untyped value itself (a number, true or false, else text)
-        made.attributes["type"] = _text("auto", entity.location)
+    else:  # roslaunch types an untyped value itself, a file's text and a command's output
+        made.attributes["type"] = _text("auto", entity.location)  # too (loader.param_value)
 
 
 def _param_entry(entity: Entity) -> Entity:
@@ -375,13 +387,16 @@ def _private(entity: Entity) -> Attribute:
 
 def _global_param(entity: Entity) -> Entity:
     """A `<param>` outside a node: on the graph's parameter server, and a parameter of every
-    node after it in its scope."""
+    node after it in its scope (a `~name`: of those nodes alone)."""
     made = _copy(entity, "set_parameter", {})
-    made.attributes["server"] = _text("true", entity.location)
     name = entity.attributes.get("name")
     if name is None:
         raise ParseError("<param> needs name=", entity.location)
-    made.attributes["name"] = Attribute(str(name.value).lstrip("~"), name.location)
+    # a ~name is the later nodes' own alone (xmlloader._param_tag: context.add_param), never
+    # the server's
+    private = str(name.value).strip().startswith("~")
+    made.attributes["server"] = _text("false" if private else "true", entity.location)
+    made.attributes["name"] = Attribute(str(name.value).strip().lstrip("~"), name.location)
     _param_attrs(entity, made)
     return made
 

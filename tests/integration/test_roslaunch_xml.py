@@ -132,6 +132,7 @@ def test_nodes_params_and_scopes_as_roslaunch_has_them(ros1):
   <env name="GREETING" value="hello"/>
   <group ns="fleet">
     <remap from="cmd_vel" to="/fleet/cmd"/>
+    <remap from="scan" to="/fleet/scan"/>
     <node name="driver" pkg="tools" type="report" ns="r1" output="screen"
           args="--speed $(arg speed) $(arg fixed)">
       <param name="gain" value="2.5"/>
@@ -144,8 +145,10 @@ def test_nodes_params_and_scopes_as_roslaunch_has_them(ros1):
       <rosparam command="load" file="$(find tools)/config/substituted.yaml"
                 subst_value="true"/>
       <remap from="odom" to="odometry"/>
+      <remap from="scan" to="own_scan"/>
     </node>
   </group>
+  <param name="~later" value="9"/>
   <node name="plain" pkg="tools" type="report" output="screen"/>
 </launch>
 """)
@@ -159,11 +162,14 @@ def test_nodes_params_and_scopes_as_roslaunch_has_them(ros1):
     assert driver["params"]["robot_description"] == "<robot name='r'/>\n"
     assert driver["params"]["rate"] == 50 and driver["params"]["gains.p"] == 1.5
     assert driver["params"]["gains.limits.max"] == 2
-    assert driver["remaps"] == ["cmd_vel:=/fleet/cmd", "odom:=odometry"]
+    # LoaderContext.remap_args: the scope's, less those the node remaps itself, then its own
+    assert driver["remaps"] == ["cmd_vel:=/fleet/cmd", "odom:=odometry", "scan:=own_scan"]
     assert driver["greeting"] == "hello"
     plain = got["/plain"]
     assert plain["remaps"] == [] and "gain" not in plain["params"]  # the group's stay inside
     assert plain["params"]["rate"] == 50
+    # a ~name outside a node is the private parameter of the nodes after it (not before)
+    assert plain["params"]["later"] == 9 and "later" not in driver["params"]
 
 
 def test_rosparam_dump_and_delete(ros1):

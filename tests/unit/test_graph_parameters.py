@@ -56,6 +56,14 @@ ROS1 = """<launch>
   <param name="typed/listed" value="[1, 2]"/>
   <param name="typed/under" value="1_000"/>
   <param name="typed/real" value="3."/>
+  <param name="typed/exponent" value="1e3"/>
+  <param name="~for_later_nodes" value="5"/>
+  <param name="typed/spaced" value=" true "/>
+  <param name="typed/spaced_text" value="  two words  " type="str"/>
+  <param name="typed/file" textfile="$(dirname)/count.txt"/>
+  <param name="typed/file_bool" textfile="$(dirname)/flag.txt"/>
+  <param name="typed/output" command="printf 2.5"/>
+  <param name="typed/output_text" command="printf 2.5" type="str"/>
   <include file="$(dirname)/inner.launch"/>
 </launch>
 """
@@ -64,6 +72,8 @@ ROS1 = """<launch>
 def test_a_ros1_launch_hands_every_parameter_to_the_server_once_at_the_end(tmp_path):
     (tmp_path / "top.launch").write_text(ROS1)
     (tmp_path / "inner.launch").write_text('<launch><param name="inner" value="7"/></launch>')
+    (tmp_path / "count.txt").write_text("42\n")
+    (tmp_path / "flag.txt").write_text("true\n")
     context, service = run(load_file(tmp_path / "top.launch"), environment={
         "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)})
     loads = [s for s in service.specs if "launcher.nodes.load_parameters" in s.argv]
@@ -71,13 +81,18 @@ def test_a_ros1_launch_hands_every_parameter_to_the_server_once_at_the_end(tmp_p
     path = loads[0].argv[-1]
     written = json.loads(Path(path).read_text())
     assert written["delete"] == ["/fleet/spare"]  # on the server too, before the values
+    assert "/for_later_nodes" not in written["set"]  # a ~name is the later nodes' alone
     assert written["set"] == {
         "/robot_description": "urdf", "/gains/p": 1.5, "/gains/i": 0, "/fleet/rate": 50,
         "/absolute": "yes", "/inner": 7,
-        # roslaunch's own typing of an untyped value (roslaunch/loader.py convert_value):
-        # a number (with a dot: a float; with an underscore: text), true/false, else text
-        "/typed/flag": True, "/typed/listed": "[1, 2]", "/typed/under": "1_000",
-        "/typed/real": 3.0,
+        # roslaunch's own typing of an untyped value (roslaunch/loader.py convert_value, on
+        # Python 3 as Debian's roslaunch runs): float() with a dot, else int() (so 1_000 is
+        # a number and 1e3 text), then true/false, else text; param_value strips value=
+        # (not a file's text or a command's output) and types all three the same way
+        "/typed/flag": True, "/typed/listed": "[1, 2]", "/typed/under": 1000,
+        "/typed/real": 3.0, "/typed/exponent": "1e3", "/typed/spaced": True,
+        "/typed/spaced_text": "two words", "/typed/file": 42, "/typed/file_bool": "true\n",
+        "/typed/output": 2.5, "/typed/output_text": "2.5",
         # roslaunch's own, on the server whatever the launch sets
         "/run_id": ROSLAUNCH_PARAMETERS["/run_id"], "/rosdistro": "noetic\n",
         "/rosversion": "1.16.0\n"}

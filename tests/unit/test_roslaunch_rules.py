@@ -109,3 +109,28 @@ def test_a_node_on_a_remote_machine_is_refused_a_local_one_runs(tmp_path):
                              '<node name="n" pkg="p" type="t" machine="near"/>\n</launch>\n',
                    "local.launch")
     load_file(local)  # a remote machine no node uses is no error, as in roslaunch
+
+
+@pytest.mark.parametrize("condition", ['if="yes"', 'unless="maybe"', 'if=""'])
+def test_a_condition_that_is_not_a_boolean(tmp_path, condition):
+    """loader.convert_value(value, 'bool'): true or 1, false or 0 (any case), else an
+    error."""
+    path = launch(tmp_path, f'<launch>\n<param name="x" value="1" {condition}/>\n</launch>\n')
+    with pytest.raises(LaunchError, match=r"expected true, false, 1 or 0") as caught:
+        run(load_file(path))
+    assert caught.value.location.line == 2
+
+
+def test_conditions_read_as_roslaunch_reads_them_and_never_both(tmp_path):
+    for condition, kept in (('if="TRUE"', True), ('if="0"', False), ('unless="False"', True),
+                            ('unless="1"', False)):
+        path = launch(tmp_path, f'<launch>\n<param name="x" value="1" {condition}/>\n'
+                                '</launch>\n')
+        context, _ = run(load_file(path))
+        assert any("x" in str(item) for item in context.configurations.get(
+            "<global_parameters>", ())) == kept, condition
+    both = launch(tmp_path, '<launch>\n<param name="x" value="1" if="true" unless="false"/>'
+                            '\n</launch>\n')
+    with pytest.raises(ParseError, match=r"<param> has both if= and unless=") as caught:
+        load_file(both)
+    assert caught.value.location.line == 2

@@ -105,7 +105,8 @@ class ComposableNode:
             name = perform_text(context, entry.name)
             extra[name] = params.value_of(context, params.Written(entry.value), None, name)
         return LoadRequest(package, plugin, node_name, space,
-                           [*params.remaps(context), *mine], inline, [str(f) for f in files],
+                           [*mine, *params.remaps(context)],  # launch_ros's order: its own
+                           inline, [str(f) for f in files],  # first (the first match wins)
                            extra, self.where)
 
 

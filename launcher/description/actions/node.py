@@ -114,11 +114,16 @@ class Node(ExecuteProcess):
         if self.node_name is not None:
             check_node_name(node, self.where)
         check_namespace(space, self.where)
-        own = ((perform_text(context, r.source), perform_text(context, r.target))
-               for r in self.remappings)
-        remaps = [*params.remaps(context), *own]
+        own = [(perform_text(context, r.source), perform_text(context, r.target))
+               for r in self.remappings]
         words = self._parameter_arguments(context, node, space, node or found.name)
         ros1 = resolve(context, self.ros1, Kind.BOOL, "ros1")
+        if ros1:  # roslaunch's LoaderContext.remap_args: one per `from`, the latest, in order
+            remaps: list[tuple[str, str]] = []
+            for source, target in [*params.remaps(context), *own]:
+                remaps = [r for r in remaps if r[0] != source] + [(source, target)]
+        else:  # launch_ros: the node's own, then its scope's (rcl takes the first match)
+            remaps = [*own, *params.remaps(context)]
         argv = [*self.launch_prefix(context), *found.argv,
                 *self._words(context, self.arguments)]
         if ros1:  # as roslaunch's node_args.create_local_process_args builds it
