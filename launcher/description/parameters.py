@@ -29,6 +29,7 @@ from launcher.user_files import read_text
 
 NAMESPACE = "<ros_namespace>"
 GLOBAL_PARAMETERS = "<global_parameters>"  # a tuple of (name, value) and (FILE, path) items
+PRIVATE_PARAMETERS = "<private_parameters>"  # roslaunch's ~name outside a node: (name, value)
 FILE = "<file>"
 REMAPS = "<remaps>"  # a tuple of (from, to)
 LIST_TYPES = {"list_of_str": "str", "list_of_int": "int", "list_of_float": "float",
@@ -245,6 +246,16 @@ def global_parameters(context: LaunchContext) -> dict[str, Any]:
 
 def add_global_parameter(context: LaunchContext, name: str, value: Any) -> None:
     _add(context, GLOBAL_PARAMETERS, ((name, value),))
+
+
+def add_private_parameter(context: LaunchContext, name: str, value: Any) -> None:
+    """roslaunch's `<param name="~x">` outside a node: a parameter of each node after it in its
+    scope, as if the node had declared it (on the server under the node's name)."""
+    _add(context, PRIVATE_PARAMETERS, ((name, value),))
+
+
+def private_parameters(context: LaunchContext) -> dict[str, Any]:
+    return dict(context.configurations.get(PRIVATE_PARAMETERS, ()))  # type: ignore[arg-type]
 
 
 def add_graph_parameter(context: LaunchContext, name: str, value: Any,

@@ -392,10 +392,12 @@ def _global_param(entity: Entity) -> Entity:
     name = entity.attributes.get("name")
     if name is None:
         raise ParseError("<param> needs name=", entity.location)
-    # a ~name is the later nodes' own alone (xmlloader._param_tag: context.add_param), never
-    # the server's
-    private = str(name.value).strip().startswith("~")
-    made.attributes["server"] = _text("false" if private else "true", entity.location)
+    # a ~name is each later node's own (xmlloader._param_tag: context.add_param), on the
+    # server under that node's name alone
+    if str(name.value).strip().startswith("~"):
+        made.attributes["private"] = _text("true", entity.location)
+    else:
+        made.attributes["server"] = _text("true", entity.location)
     made.attributes["name"] = Attribute(str(name.value).strip().lstrip("~"), name.location)
     _param_attrs(entity, made)
     return made

@@ -556,3 +556,46 @@ def test_a_nodes_command_line_is_roslauchs(ros1):
     assert got["ros1"][3].startswith("__log:=") and got["ros1"][3].endswith("driver-1.log")
     assert len(got["ros1"]) == 4 and got["namespace_env"] == "/fleet/"
     assert got["params"]["gain"] == 2  # (launcher's own nodes get them from the environment)
+
+
+def test_roslaunchs_views_load_the_launch_and_start_nothing(ros1):
+    """roslaunch --nodes, --args NODE, --find-node NODE, --files and --dump-params
+    (roslaunch/__init__.py, node_args.py, param_dump.py): the launch is loaded whole as a run
+    loads it (includes, arguments, command= parameters), printed, and nothing runs."""
+    marker = ros1.root / "ran"
+    ros1.write("views.launch", f"""<launch>
+  <arg name="who" default="two words"/>
+  <param name="top" command="sh -c 'touch {marker}.param; echo 4'"/>
+  <group ns="fleet">
+    <env name="GREETING" value="hi there"/>
+    <node name="driver" pkg="tools" type="report" args="a '$(arg who)'">
+      <param name="gain" value="2"/>
+    </node>
+  </group>
+  <param name="~later" value="9"/>
+  <include file="$(find tools)/launch/inner.launch"/>
+  <node name="toucher" pkg="tools" type="report" args="--wait" launch-prefix="sh -c 'touch {marker}' --"/>
+</launch>
+""")
+
+    def roslaunch(*words: str) -> str:
+        done = ros1.run("roslaunch", *words, "views.launch", "who:=one", timeout=60)
+        assert done.returncode == 0, done.stdout + done.stderr
+        return done.stdout
+
+    assert roslaunch("--nodes").split() == ["/fleet/driver", "/inner_node", "/toucher"]
+    line = roslaunch("--args", "fleet/driver")
+    assert "GREETING='hi there'" in line and "ROS_NAMESPACE=/fleet/" in line
+    assert line.rstrip().split(" ")[-5:-1] == ["a", "one", "__name:=driver", "__ns:=/fleet"]
+    inner = ros1.root / "src" / "tools" / "launch" / "inner.launch"
+    assert roslaunch("--find-node", "/inner_node").strip() == str(inner)
+    assert roslaunch("--files").split() == [str(ros1.root / "views.launch"), str(inner)]
+    dumped = yaml.safe_load(roslaunch("--dump-params"))
+    assert dumped == {"/top": 4, "/fleet/driver/gain": 2, "/inner_node/later": 9,
+                      "/toucher/later": 9, "/set_inside": 7, "/rosdistro": "noetic\n",
+                      "/rosversion": "1.16.0\n"}
+    assert (ros1.root / "ran.param").exists()  # command= ran, as roslaunch runs it to load
+    assert not marker.exists()  # no node started
+    wrong = ros1.run("roslaunch", "--args", "/drivr", "views.launch")
+    assert wrong.returncode == 1 and "Traceback" not in wrong.stderr
+    assert "Cannot find node named [/drivr] (did you mean '/fleet/driver'?)" in wrong.stderr

@@ -2,7 +2,8 @@
 its file (a path, or a file anywhere in the package) and says so when it cannot, then runs it
 as `launcher launch` does. roslaunch's display options are taken: `--screen` (every node's
 output is on the screen already), `--wait` (the graph needs no master to wait for), `-v`,
-`--ros-args` (the file's arguments)."""
+`--ros-args` (the file's arguments); `--nodes`, `--args`, `--find-node`, `--files` and
+`--dump-params` print roslaunch's views instead of running (roslaunch_views.py)."""
 
 from __future__ import annotations
 
@@ -26,6 +27,16 @@ def parser(prog: str = "roslaunch") -> Parser:
     p.add_argument("-v", dest="verbose", action="store_true", help="verbose printing")
     p.add_argument("--ros-args", dest="show_args", action="store_true",
                    help="display the arguments of the launch file and exit")
+    p.add_argument("--nodes", action="store_true",
+                   help="print the name of every node the file(s) start, and exit")
+    p.add_argument("--args", dest="node_args", metavar="NODE_NAME",
+                   help="print the command line of a node, and exit")
+    p.add_argument("--find-node", metavar="NODE_NAME",
+                   help="print the launch file that declares a node, and exit")
+    p.add_argument("--files", action="store_true",
+                   help="print the launch files the launch reads, and exit")
+    p.add_argument("--dump-params", action="store_true",
+                   help="print the parameters the launch sets, as YAML, and exit")
     p.add_argument("--duration", type=float, default=None, metavar="SECONDS",
                    help="shut the launch down cleanly after this many seconds (launcher's)")
     p.add_argument("--debug", action="store_true", help="tracebacks with errors (launcher's)")
@@ -44,9 +55,12 @@ def main(argv: list[str], prog: str = "roslaunch") -> int:
         parser(prog).error(f"unrecognized arguments: {' '.join(flags)}")
     files, assignments = _split(words)
     from launcher.cli import launch_command
+    from launcher.cli.ros1 import roslaunch_views
     from launcher.cli.workspace import load_index
 
     path = resolve(files, load_index())
+    if any(getattr(args, view) for view in roslaunch_views.VIEWS):
+        return roslaunch_views.show(args, path, launch_command.parse_assignments(assignments))
     launch = argparse.Namespace(file=str(path), arguments=assignments,
                                 show_args=args.show_args, print=False, debug=args.debug,
                                 launch_prefix="", noninteractive=False,

@@ -175,7 +175,11 @@ class Node(ExecuteProcess):
                 words += ["-p", params.parameter_argument(name, value)]
         known = bool(node) and bool(space or self.namespace is not None)
         key = f"{space.rstrip('/')}/{node}" if known else "/**"
-        for group in parameter_groups(context, self.parameters, self.where):
+        groups = parameter_groups(context, self.parameters, self.where)
+        private = params.private_parameters(context)
+        if private:  # roslaunch's ~names before it: as the node's first own <param>
+            groups.insert(0, private)
+        for group in groups:
             if isinstance(group, dict):
                 if resolve(context, self.server, Kind.BOOL, "server"):
                     self._to_server(context, f"{space.rstrip('/')}/{stem}", group)

@@ -48,6 +48,9 @@ class SetParameter(Action):
     server_only: Any = attr(Kind.BOOL, False, doc="roslaunch's own (/run_id, /rosdistro): on "
                                                   "the graph's parameter server alone, not "
                                                   "for the nodes.")
+    private: Any = attr(Kind.BOOL, False, doc="roslaunch's ~name outside a node: each later "
+                                              "node's own parameter (on the server under "
+                                              "the node's name).")
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -79,6 +82,9 @@ class SetParameter(Action):
             raise exc if exc.location else exc.at(self.where) from None
         if resolve(context, self.server_only, Kind.BOOL, "server_only"):
             to_graph(context, graph_name(context, name), value)
+            return
+        if resolve(context, self.private, Kind.BOOL, "private"):
+            params.add_private_parameter(context, name, value)
             return
         self._set(context, name, value, server)
 
