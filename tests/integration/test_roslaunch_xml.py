@@ -599,3 +599,30 @@ def test_roslaunchs_views_load_the_launch_and_start_nothing(ros1):
     wrong = ros1.run("roslaunch", "--args", "/drivr", "views.launch")
     assert wrong.returncode == 1 and "Traceback" not in wrong.stderr
     assert "Cannot find node named [/drivr] (did you mean '/fleet/driver'?)" in wrong.stderr
+
+
+def test_roslaunch_runs_several_files_as_one_launch(ros1):
+    """rlutil.resolve_launch_arguments: when the first word is a file, every word is one, and
+    roslaunch loads them all into one launch, each file with its own args (the command line's
+    given to all)."""
+    for name, node in (("one", "first"), ("two", "second")):
+        ros1.write(f"{name}.launch", f"""<launch>
+  <arg name="shared"/>
+  <arg name="word" default="{name}"/>
+  <node name="{node}" pkg="tools" type="report" output="screen"
+        args="$(arg word) $(arg shared)"/>
+</launch>
+""")
+    done = ros1.run("roslaunch", "one.launch", "two.launch", "shared:=both", timeout=60)
+    assert done.returncode == 0, done.stdout + done.stderr
+    got = {}
+    for line in done.stdout.splitlines():
+        if "REPORT " in line:
+            report = eval(line.split("REPORT ", 1)[1])  # noqa: S307 - our own node's repr
+            got[report["node"]] = report["args"]
+    assert got == {"/first": ["one", "both"], "/second": ["two", "both"]}
+    listed = ros1.run("roslaunch", "--nodes", "one.launch", "two.launch", "shared:=x")
+    assert listed.stdout.split() == ["/first", "/second"], listed.stderr
+    missing = ros1.run("roslaunch", "one.launch", "three.launch")
+    assert missing.returncode == 1 and "Traceback" not in missing.stderr
+    assert "RLException: [three.launch] is not a launch file name" in missing.stderr

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import os
 from pathlib import Path
+from typing import Any
 
 from launcher.arguments import Parser
 from launcher.errors import LaunchError, UsageError
@@ -58,14 +59,30 @@ def main(argv: list[str], prog: str = "roslaunch") -> int:
     from launcher.cli.ros1 import roslaunch_views
     from launcher.cli.workspace import load_index
 
-    path = resolve(files, load_index())
+    index = load_index()
+    paths = resolve(files, index)
+    configurations = launch_command.parse_assignments(assignments)
     if any(getattr(args, view) for view in roslaunch_views.VIEWS):
-        return roslaunch_views.show(args, path, launch_command.parse_assignments(assignments))
-    launch = argparse.Namespace(file=str(path), arguments=assignments,
+        return roslaunch_views.show(args, combined(paths), configurations, index)
+    launch = argparse.Namespace(file=str(paths[0]), arguments=assignments,
                                 show_args=args.show_args, print=False, debug=args.debug,
                                 launch_prefix="", noninteractive=False,
                                 duration=args.duration)
-    return launch_command.run(launch)
+    if len(paths) == 1 or args.show_args:
+        return launch_command.run(launch)
+    return launch_command.launch(launch, combined(paths), configurations, index)
+
+
+def combined(paths: list[Path]) -> Any:
+    """The files as one launch, as roslaunch loads several into one config: each file in a
+    scope of its own (its args and settings its own), the arguments given to all."""
+    from launcher.description.action import LaunchDescription
+    from launcher.description.actions.group import GroupAction
+    from launcher.frontend.loader import load_file
+
+    if len(paths) == 1:
+        return load_file(paths[0])
+    return LaunchDescription([GroupAction(actions=[load_file(p)]) for p in paths])
 
 
 def _split(words: list[str]) -> tuple[list[str], list[str]]:
@@ -76,16 +93,17 @@ def _split(words: list[str]) -> tuple[list[str], list[str]]:
     return files, assignments
 
 
-def resolve(files: list[str], index: object) -> Path:
-    """The launch file, found as roslaunch's rlutil.resolve_launch_arguments finds it."""
+def resolve(files: list[str], index: object) -> list[Path]:
+    """The launch files, found as roslaunch's rlutil.resolve_launch_arguments finds them."""
     from launcher.packages.index import PackageIndex, PackageNotFound
 
     assert isinstance(index, PackageIndex)
-    if os.path.isfile(files[0]):
-        if len(files) > 1:
-            raise LaunchError("roslaunch: several launch files at once are not supported "
-                              f"by launcher yet; give one ({files[0]})")
-        return Path(files[0])
+    if os.path.isfile(files[0]):  # then every word is a file (rlutil.resolve_launch_arguments)
+        for name in files[1:]:
+            if not os.path.isfile(name):
+                raise LaunchError(f"RLException: [{name}] is not a launch file name (no such "
+                                  f"file: {os.path.abspath(name)})")
+        return [Path(name) for name in files]
     if len(files) < 2:
         raise LaunchError(f"RLException: [{files[0]}] is neither a launch file in package "
                           f"nor is it a launch file name (no such file: "
@@ -110,4 +128,4 @@ def resolve(files: list[str], index: object) -> Path:
                           f"[{package_name}] nor is [{package_name}] a launch file name"
                           f"{did_you_mean(file_name, have)}; the package ({package.path}) "
                           f"has: {', '.join(have) or 'no launch files'}")
-    return matches[0]
+    return matches[:1]

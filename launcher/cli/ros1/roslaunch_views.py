@@ -24,15 +24,13 @@ class Loaded:
     """A launch file loaded by a dry run: its nodes (full name → process spec and where it is
     declared), the files it read, and the parameters it sets on the graph's server."""
 
-    def __init__(self, path: Path, configurations: dict[str, str]) -> None:
+    def __init__(self, description: Any, configurations: dict[str, str], index: Any) -> None:
         from launcher.cli.launch_command import children_environment
-        from launcher.cli.workspace import load_index
         from launcher.frontend.builder import parse_file_text
         from launcher.frontend.loader import load_file
         from launcher.runtime.context import LaunchContext
         from launcher.runtime.dry_run import DryRun
 
-        index = load_index()
         dry = DryRun()
         with tempfile.TemporaryDirectory(prefix="launcher-roslaunch-") as folder:
             self.environment = children_environment(index, False)
@@ -40,7 +38,8 @@ class Loaded:
                                     service=dry, log_dir=Path(folder),
                                     load_description=dry.loader(load_file), packages=index,
                                     parse_text=parse_file_text)
-            dry.visit([dry.loader(load_file)(path)], context)
+            dry.files += _files(description)
+            dry.visit([description], context)
             self.parameters = _server_parameters(dry.specs)
         self.files = list(dict.fromkeys(dry.files))
         self.where = dict(context.node_names)
@@ -61,8 +60,8 @@ class Loaded:
         return full
 
 
-def show(args: Any, path: Path, configurations: dict[str, str]) -> int:
-    loaded = Loaded(path, configurations)
+def show(args: Any, description: Any, configurations: dict[str, str], index: Any) -> int:
+    loaded = Loaded(description, configurations, index)
     if args.nodes:
         print("\n".join(loaded.nodes))
     elif args.node_args:
@@ -77,6 +76,13 @@ def show(args: Any, path: Path, configurations: dict[str, str]) -> int:
 
         print(yaml.safe_dump(loaded.parameters, default_flow_style=False), end="")
     return 0
+
+
+def _files(description: Any) -> list[Path]:
+    """The files given on the command line (a description, or the group of each)."""
+    if description.file is not None:
+        return [Path(description.file).resolve()]
+    return [Path(group.actions[0].file).resolve() for group in description.actions]
 
 
 def _node_name(spec: Any) -> str | None:
