@@ -3,6 +3,7 @@ robot description) are the user's own: folders 0700, files 0600, whatever the um
 
 from __future__ import annotations
 
+import contextlib
 import os
 from pathlib import Path
 from typing import IO, Any
@@ -29,3 +30,20 @@ def open_private(path: Path, mode: str = "w", **kwargs: Any) -> IO[Any]:
 def write_private(path: Path, text: str) -> None:
     with open_private(path, "w", encoding="utf-8") as handle:
         handle.write(text)
+
+
+def create_once(path: Path, text: str) -> None:
+    """Write `path` (0600, its folder 0700) unless it exists, under a temporary name linked
+    into place: two processes making it at once end up with the same one."""
+    private_folder(path.parent)
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.{os.urandom(4).hex()}")
+    descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    with os.fdopen(descriptor, "w", encoding="utf-8") as handle:
+        handle.write(text)
+    try:
+        os.link(temporary, path)
+    except FileExistsError:
+        pass  # another process was first: its file is the one
+    finally:
+        with contextlib.suppress(OSError):
+            temporary.unlink()

@@ -9,14 +9,13 @@ LAUNCHER_CREDENTIALS names (copy it to the other hosts of a multi-host graph).
 
 from __future__ import annotations
 
-import contextlib
 import os
 from collections.abc import Mapping
 from pathlib import Path
 from typing import NamedTuple
 
 from launcher.errors import Location, ParseError
-from launcher.private import private_folder
+from launcher.private import create_once
 
 VARIABLE = "LAUNCHER_CREDENTIALS"
 USER = "launcher"
@@ -62,17 +61,4 @@ def parse(text: str, name: str) -> Credentials:
 
 
 def _create(file: Path) -> None:
-    """Write a fresh file under a temporary name and link it into place: two processes
-    making it at once end up with the same one."""
-    private_folder(file.parent)
-    temporary = file.with_name(f".{file.name}.{os.getpid()}.{os.urandom(4).hex()}")
-    descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
-    with os.fdopen(descriptor, "w", encoding="utf-8") as handle:
-        handle.write(f"{USER}:{os.urandom(24).hex()}\n")
-    try:
-        os.link(temporary, file)
-    except FileExistsError:
-        pass  # another process was first: its file is the one
-    finally:
-        with contextlib.suppress(OSError):
-            temporary.unlink()
+    create_once(file, f"{USER}:{os.urandom(24).hex()}\n")

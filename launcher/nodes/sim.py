@@ -52,9 +52,12 @@ def build_parser() -> Parser:
                              f"next free one); --gui=PORT for that port only")
     parser.add_argument("--gui-port", type=_port, default=None, help=argparse.SUPPRESS)
     parser.add_argument("--gui-host", default="127.0.0.1", metavar="ADDRESS",
-                        help="the address the viewer listens on (default 127.0.0.1). The "
-                             "viewer has no authentication: another address lets anyone who "
-                             "can reach it watch the world and read the model")
+                        help="the address the viewer listens on (default 127.0.0.1); "
+                             "every request needs the graph's token, in the printed URL")
+    parser.add_argument("--no-token", action="store_true",
+                        help="no token check (for a viewer bound on purpose to a private "
+                             "network): anyone who reaches the port can watch and pause the "
+                             "world; LAUNCHER_NO_TOKEN=1 does the same")
     parser.add_argument("--gui-rate", type=float, default=viewer.DEFAULT_RATE, metavar="HZ",
                         help=f"how often the viewer gets the state (1 to {viewer.MAX_RATE:g}, "
                              f"default {viewer.DEFAULT_RATE:g})")
@@ -215,16 +218,21 @@ def start_view(args: argparse.Namespace, log: Any, port: int | None,
                world: Any) -> viewer.WebView | None:
     """The web viewer, or None (said why) when it cannot start: the sim runs on headless. On
     `port`, or without one on the first free one from 8080 (as more than one sim may run)."""
+    from launcher.bus import listen_token
+
+    token = None if args.no_token or listen_token.off() else listen_token.load()
     try:
         view = viewer.WebView.start(port, args.gui_host, args.gui_rate, log, args.camera,
-                                    args.track)
+                                    args.track, token)
         view.say_what_is_missing(world, log)
     except viewer.ViewerError as exc:
         log.error(f"{exc}; the sim runs on without it")
         return None
+    if token is None:
+        log.warning(f"web viewer: {listen_token.OFF_WARNING}")
     if args.gui_host not in ("127.0.0.1", "localhost", "::1"):
-        log.warning(f"the web viewer listens on {args.gui_host}: it has no authentication, "
-                    f"anyone who can reach that address can watch the world")
+        log.warning(f"the web viewer listens on {args.gui_host}: anyone who can reach that "
+                    f"address {'and holds the token ' if token else ''}can watch the world")
     # on the screen at any verbosity, as Gazebo's window would be
     print(f"[sim] the world in a browser: {view.url}", file=sys.stderr, flush=True)
     return view

@@ -34,8 +34,9 @@ class ViewerError(LaunchError):
 
 class WebView:
     def __init__(self, port: int, host: str, rate: float, camera: str = "",
-                 track: str = "") -> None:
+                 track: str = "", token: str | None = None) -> None:
         self.port, self.host = port, host
+        self.token = token  # the graph's, asked of every request (viewer_gate.py); None: off
         self.camera_name, self.track = camera, track  # the view asked for, if any
         self._period = 1.0 / min(max(rate, 1.0), MAX_RATE)
         self._next = 0.0
@@ -50,27 +51,31 @@ class WebView:
 
     @property
     def url(self) -> str:
+        from launcher.bus import listen_token
+
         host = f"[{self.host}]" if ":" in self.host else self.host
-        return f"http://{host}:{self.port}/"
+        return listen_token.url(f"http://{host}:{self.port}/", self.token)
 
     @classmethod
     def start(cls, port: int | None, host: str = "127.0.0.1", rate: float = DEFAULT_RATE,
-              log: Any = None, camera: str = "", track: str = "") -> WebView:
+              log: Any = None, camera: str = "", track: str = "",
+              token: str | None = None) -> WebView:
         """Serve the viewer on `port`, or (None) on the first free one from 8080; `log` (the
         sim's logger) hears of browsers coming and going. The view is the world's `camera`,
-        or follows the entity `track`, or frames every entity."""
+        or follows the entity `track`, or frames every entity. Every request must present
+        `token` (None: no check)."""
         try:
             import mujoco
             from mujoco.studio import launch_thread, viewer_protocol
             from mujoco.studio.web import web_server
 
-            from launcher.sim import viewer_page
+            from launcher.sim import viewer_gate, viewer_page
         except ImportError as exc:
             version = _mujoco_version()
             raise ViewerError(f"the web viewer needs MuJoCo Studio (mujoco>=4); this is "
                               f"mujoco {version} ({exc})") from None
         listener, port = _listen(host, port)
-        view = cls(port, host, rate, camera, track)
+        view = cls(port, host, rate, camera, track, token)
         view._camera = mujoco.MjvCamera()
         config = viewer_protocol.ViewerConfig(gfx="web", http_port=port, open_browser=False,
                                               title="launcher sim")
@@ -82,11 +87,16 @@ class WebView:
 
         _route_studio_log(log)
 
-        bind = web_server.bind_public_socket
+        bind, loopback, websockets_serve = (web_server.bind_public_socket,
+                                            web_server.bind_loopback_socket, web_server.serve)
         # Studio binds "::" (every interface) with no way to say otherwise: it is handed the
         # socket made here, on `host`, listening already (a port another sim has is found
-        # taken here, not in Studio's server thread)
+        # taken here, not in Studio's server thread); its requests pass the token check and
+        # its internal port takes this user's connections alone (viewer_gate.py)
         web_server.bind_public_socket = lambda _host, _port: listener
+        web_server.bind_loopback_socket = viewer_gate.own_user_listener
+        if token is not None:
+            web_server.serve = viewer_gate.guarded_serve(websockets_serve, token, port)
         try:
             with contextlib.redirect_stdout(None):  # its banner names the wrong address
                 view._handle = launch_thread.launch_thread(
@@ -96,7 +106,8 @@ class WebView:
             listener.close()
             raise
         finally:
-            web_server.bind_public_socket = bind
+            web_server.bind_public_socket, web_server.bind_loopback_socket = bind, loopback
+            web_server.serve = websockets_serve
         return view
 
     def follow(self, world: Any, paused: bool, now: float | None = None) -> None:

@@ -5,10 +5,13 @@ installed by the set-up)."""
 from __future__ import annotations
 
 import io
+import os
 import re
 import shutil
 import socket
+import subprocess
 import time
+import urllib.error
 import urllib.request
 
 import psutil
@@ -54,18 +57,49 @@ def stop(proc) -> None:
     proc.wait(20)
 
 
-def test_the_sim_serves_the_world_on_loopback_only_and_says_where(view_ws):
+def token_of(ws) -> str:
+    """The graph's token, as the printed URL carries it (and its 0600 file holds it)."""
+    return re.search(r"in a browser: http://\S+\?token=(\S+)", said(ws)).group(1)
+
+
+def fetch(url: str, headers: dict[str, str] | None = None) -> tuple[int, bytes, dict]:
+    request = urllib.request.Request(url, headers=headers or {})
+    try:
+        with urllib.request.urlopen(request, timeout=10) as answer:
+            return answer.status, answer.read(), dict(answer.headers)
+    except urllib.error.HTTPError as refused:
+        return refused.code, refused.read(), dict(refused.headers)
+
+
+def test_the_sim_serves_the_world_on_loopback_only_to_token_holders_and_says_where(view_ws):
     port = free_port()
     proc = view_ws.start("sim", "-r", f"--gui={port}", "empty.sdf")  # (default verbosity)
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
-        text = said(view_ws)
-        assert f"the world in a browser: http://127.0.0.1:{port}/" in text
+        token = token_of(view_ws)
+        assert f"the world in a browser: http://127.0.0.1:{port}/?token={token}" in \
+            said(view_ws)
+        file = view_ws.root / "run" / "domain-0.token"
+        assert file.read_text().strip() == token and file.stat().st_mode & 0o777 == 0o600
         assert listening(proc.pid, port) == ["127.0.0.1"]  # never every interface
-        page = urllib.request.urlopen(f"http://127.0.0.1:{port}/", timeout=10).read()
-        assert b"<!doctype html>" in page.lower()[:200]
-        model = urllib.request.urlopen(f"http://127.0.0.1:{port}/model", timeout=10).read()
-        assert len(model) > 1000  # the compiled world, as the page loads it
+        # without the token: the refusal page, for the page, its files and its streams
+        for path in ("/", "/model", "/index.html"):
+            status, body, _ = fetch(f"http://127.0.0.1:{port}{path}")
+            assert status == 403 and b"needs the graph's token" in body, path
+        status, _, _ = fetch(f"http://127.0.0.1:{port}/state", {
+            "Connection": "Upgrade", "Upgrade": "websocket", "Sec-WebSocket-Version": "13",
+            "Sec-WebSocket-Key": "dGhlIHNhbXBsZSBub25jZQ=="})
+        assert status == 403  # no handshake: no state, no buttons
+        status, _, _ = fetch(f"http://127.0.0.1:{port}/?token=wrong{token}")
+        assert status == 403
+        # with it: the page, and the cookie its own requests carry
+        status, page, headers = fetch(f"http://127.0.0.1:{port}/?token={token}")
+        assert status == 200 and b"<!doctype html>" in page.lower()[:200]
+        assert headers["Set-Cookie"].startswith(f"launcher_token_{port}={token};")
+        assert "HttpOnly" in headers["Set-Cookie"]
+        status, model, _ = fetch(f"http://127.0.0.1:{port}/model",
+                                 {"Cookie": f"launcher_token_{port}={token}"})
+        assert status == 200 and len(model) > 1000  # the compiled world, as the page loads it
     finally:
         stop(proc)
     assert proc.returncode == 0
@@ -164,8 +198,8 @@ def test_gz_sim_g_asks_the_running_server_to_serve_its_viewer(view_ws):
                     if c.status == psutil.CONN_LISTEN]  # server only: nothing served
         asked = view_ws.run("gz", "sim", "-g", timeout=60)
         assert asked.returncode == 0, asked.stderr
-        url = re.search(r"the world 'empty' in a browser: (http://127\.0\.0\.1:(\d+)/)",
-                        asked.stderr)
+        url = re.search(r"the world 'empty' in a browser: (http://127\.0\.0\.1:(\d+)/"
+                        r"\?token=\S+)", asked.stderr)
         assert url, asked.stderr
         assert listening(proc.pid, int(url.group(2))) == ["127.0.0.1"]
         page = urllib.request.urlopen(url.group(1), timeout=10).read()
@@ -287,7 +321,9 @@ def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spaw
     proc = view_ws.start("sim", "-r", "-v", "3", f"--gui={port}", str(world))
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
-        browser.get(f"http://127.0.0.1:{port}/")
+        browser.get(f"http://localhost:{port}/")  # another host name: no cookie, no token
+        assert "needs the graph's token" in browser.page_source
+        browser.get(f"http://127.0.0.1:{port}/?token={token_of(view_ws)}")
         # the scene: both vehicles of gz-sim's diff_drive.sdf, framed as a snapshot frames
         def both_vehicles():
             shown = picture(browser)
@@ -339,7 +375,7 @@ def test_in_a_real_browser_the_robots_are_drawn_move_stop_when_paused_and_a_spaw
         # the page left and opened again (a reload is a disconnect and a reconnect)
         browser.get("about:blank")
         time.sleep(1)
-        browser.get(f"http://127.0.0.1:{port}/")
+        browser.get(f"http://127.0.0.1:{port}/")  # (the cookie the first visit was given)
         wait_for(lambda: share_of(picture(browser), RED) > 0.005, 60)
         # and vanishes when removed
         removed = view_ws.run("gz", "service", "-s", "/world/diff_drive/remove", "--reqtype",
@@ -365,7 +401,8 @@ def test_a_world_with_nothing_to_frame_is_served_too(view_ws):
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
         time.sleep(0.5)  # a few turns of the viewer on a world with no geometry
-        page = urllib.request.urlopen(f"http://127.0.0.1:{port}/model", timeout=10).read()
+        page = urllib.request.urlopen(f"http://127.0.0.1:{port}/model?token="
+                                      f"{token_of(view_ws)}", timeout=10).read()
         assert page and proc.poll() is None
     finally:
         stop(proc)
@@ -396,7 +433,7 @@ def test_in_a_real_browser_track_keeps_the_driving_robot_in_view(view_ws, browse
                          str(world))
     try:
         wait_for(lambda: "the world in a browser" in said(view_ws))
-        browser.get(f"http://127.0.0.1:{port}/")
+        browser.get(f"http://127.0.0.1:{port}/?token={token_of(view_ws)}")
         first = wait_for(lambda: (shown := picture(browser)) and share_of(shown, BLUE) > 0.02
                          and shown, 90)
         where = view_ws.run("gz", "model", "-m", "vehicle_blue", "-p").stdout
@@ -416,6 +453,67 @@ def test_in_a_real_browser_track_keeps_the_driving_robot_in_view(view_ws, browse
     except BaseException:
         keep_shots(browser, "track")
         raise
+    finally:
+        stop(proc)
+    assert proc.returncode == 0
+
+
+AS_ANOTHER_USER = """
+import socket, sys, urllib.error, urllib.request
+port, internal, token = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+def status(url):
+    try:
+        return urllib.request.urlopen(url, timeout=10).status
+    except urllib.error.HTTPError as refused:
+        return refused.code
+print("PLAIN", status(f"http://127.0.0.1:{port}/"))
+print("TOKEN", status(f"http://127.0.0.1:{port}/model?token={token}"))
+with socket.create_connection(("127.0.0.1", internal), timeout=5) as sock:
+    try:
+        sock.sendall(b"\\x00" * 64)
+        print("INTERNAL", "closed" if sock.recv(100) == b"" else "answered")
+    except ConnectionResetError:
+        print("INTERNAL closed")
+    except TimeoutError:
+        print("INTERNAL open")  # the UI bridge took it and waits for more
+"""
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="needs root to act as another user")
+def test_another_user_reaches_the_viewer_only_with_the_token_and_never_its_internal_port(
+        view_ws):
+    """As the user nobody: the page's port refuses a request without the token and serves
+    one with it; Studio's internal port (its UI client's, which carries the buttons) closes
+    the connection unread, token or not."""
+    port = free_port()
+    proc = view_ws.start("sim", "-r", f"--gui={port}", "empty.sdf")
+    try:
+        wait_for(lambda: "the world in a browser" in said(view_ws))
+        ports = {c.laddr.port for c in psutil.Process(proc.pid).net_connections("inet")
+                 if c.status == psutil.CONN_LISTEN}
+        (internal,) = ports - {port}
+        done = subprocess.run(["setpriv", "--reuid=nobody", "--regid=nogroup",
+                               "--clear-groups", "/usr/bin/python3", "-c", AS_ANOTHER_USER,
+                               str(port), str(internal), token_of(view_ws)],
+                              capture_output=True, text=True, timeout=60, cwd="/")
+        assert done.returncode == 0, done.stderr
+        assert done.stdout.split("\n")[:3] == ["PLAIN 403", "TOKEN 200", "INTERNAL closed"], \
+            done.stdout
+        assert proc.poll() is None
+    finally:
+        stop(proc)
+    assert proc.returncode == 0
+
+
+def test_no_token_serves_anyone_and_says_so(view_ws):
+    port = free_port()
+    proc = view_ws.start("sim", "-r", f"--gui={port}", "--no-token", "empty.sdf")
+    try:
+        wait_for(lambda: "the world in a browser" in said(view_ws))
+        assert f"in a browser: http://127.0.0.1:{port}/\n" in said(view_ws)
+        assert "the token check is off" in said(view_ws)
+        status, page, _ = fetch(f"http://127.0.0.1:{port}/")
+        assert status == 200 and b"<!doctype html>" in page.lower()[:200]
     finally:
         stop(proc)
     assert proc.returncode == 0
