@@ -65,6 +65,19 @@ then
     fi
 fi
 
+# The foxglove bridge's tests drive Foxglove's own client (@foxglove/ws-protocol, from npm)
+# with Node.js: Debian's nodejs and npm where they are missing.
+if [ "${1:-}" = test ] && ! { command -v node && command -v npm; } >/dev/null 2>&1; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        say "installing nodejs and npm: the foxglove bridge's tests drive Foxglove's own" \
+            "client with them"
+        apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+            nodejs npm >/dev/null
+    else
+        echo "note: the foxglove bridge's tests need Node.js: apt-get install nodejs npm" >&2
+    fi
+fi
+
 if [ ! -x .venv/bin/python ]; then
     python=$(find_python)
     say "making the virtual environment .venv with $python ($("$python" --version 2>&1))"
@@ -93,6 +106,13 @@ if [ ! -f .venv/tools/.installed ] || [ pyproject.toml -nt .venv/tools/.installe
     .venv/bin/python -m pip install --quiet --disable-pip-version-check --prefix .venv/tools \
         -r .venv/tools-requirements.txt
     touch .venv/tools/.installed
+fi
+# The test clients from npm (tests/js/package-lock.json), in tests/js/node_modules.
+if [ "${1:-}" = test ] && command -v npm >/dev/null 2>&1 && { [ ! -d tests/js/node_modules ] ||
+    [ tests/js/package-lock.json -nt tests/js/node_modules ]; }; then
+    say "installing the tests' Foxglove clients from npm (@foxglove/ws-protocol," \
+        "@foxglove/rosmsg2-serialization) into tests/js/node_modules"
+    (cd tests/js && npm ci --no-audit --no-fund --silent) && touch tests/js/node_modules
 fi
 # Byte-compile once: start-up time is benchmarked and some machines set PYTHONDONTWRITEBYTECODE.
 .venv/bin/python -m compileall -q launcher >/dev/null

@@ -146,7 +146,11 @@ class Client:
         until one answers or the time is up, so a call right after start waits for the
         service as `ros2 service call` does. A server that got it never gets it twice."""
         types = registry()
-        payload = types.serialize(request, self.request_type)
+        answer = self.call_raw(types.serialize(request, self.request_type), timeout)
+        return types.deserialize(answer, self.response_type, self._make)
+
+    def call_raw(self, payload: bytes, timeout: float = 5.0) -> bytes:
+        """`call` with the request's CDR bytes: the response's (as a bridge passes them)."""
         deadline = time.monotonic() + timeout
         while True:
             left = deadline - time.monotonic()
@@ -155,8 +159,7 @@ class Client:
                                              timeout=max(left, 0.001))
             for reply in replies:
                 if reply.ok is not None:
-                    return types.deserialize(reply.ok.payload.to_bytes(), self.response_type,
-                                             self._make)
+                    return reply.ok.payload.to_bytes()
                 raise LaunchError(f"service {self.name} failed: "
                                   f"{reply.err.payload.to_bytes().decode(errors='replace')}")
             if deadline - time.monotonic() < 0.05:

@@ -351,6 +351,12 @@ class TypeRegistry:
                 values[index] = numpy.array(values[index], dtype=dtype)
         return self.message_class(name)(*values)
 
+    def definition(self, name: str) -> str:
+        """The type's ros2msg text, each type it names after it (`MSG: pkg/Type` under a
+        line of '='), as rosbag2's MCAP files and Foxglove take it."""
+        name = self.ensure(name)  # (first: the store registers what is ensured)
+        return str(self.store.generate_msgdef(name, ros_version=2)[0])
+
     def type_hash(self, name: str) -> str:
         name = self.ensure(name)
         if name not in self._hashes:
