@@ -120,7 +120,7 @@ async function run() {
       const got = await answer;
       say({ parameters: got ? got.parameters : null });
     } else if (step.do === "graph") {
-      const answer = once("connectionGraphUpdate", () => true, 10);
+      const answer = once("connectionGraphUpdate", (e) => (e.publishedTopics || []).length > 0, 10);
       client.subscribeConnectionGraph();
       const got = await answer;
       say({ graph: got });

@@ -1,0 +1,172 @@
+"""foxglove_bridge, served to Foxglove's own client: @foxglove/ws-protocol (npm) driven by
+Node.js, decoding with @foxglove/rosmsg2-serialization (tests/js/foxglove_client.js), against
+the demo's real sim, bridge and robot_state_publisher on a real router; the token asked of
+every connection, as the user nobody too."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+import socket
+import subprocess
+import time
+
+import pytest
+
+from launcher.bus.types import registry
+from tests.conftest import REPO
+
+LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
+CLIENT = REPO / "tests" / "js" / "foxglove_client.js"
+TWIST = "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n" + "=" * 80 + \
+    "\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n"
+
+
+def free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
+
+
+def wait_for(predicate, timeout: float = 60.0):
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        value = predicate()
+        if value:
+            return value
+        time.sleep(0.1)
+    raise AssertionError("timed out")
+
+
+def client(url: str, *steps: dict, timeout: float = 120) -> list[dict]:
+    """Foxglove's client, run by node, through `steps`: its JSON lines."""
+    node = shutil.which("node")
+    assert node, "the set-up installs Node.js (nodejs) for these tests"
+    done = subprocess.run([node, str(CLIENT), url, json.dumps(list(steps))],
+                          capture_output=True, text=True, timeout=timeout,
+                          cwd=CLIENT.parent)
+    lines = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
+    assert lines, done.stdout + done.stderr
+    return lines
+
+
+def found(lines: list[dict], key: str) -> dict:
+    return next(line for line in lines if key in line)
+
+
+@pytest.fixture
+def served(ws):
+    """The demo (not driving) and a foxglove_bridge on a port of the test's; its URL."""
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
+    port = free_port()
+    demo = ws.start("launch", LAUNCH, "drive:=false", output="demo.out")
+    bridge = ws.start("run", "foxglove_bridge", "foxglove_bridge", "--ros-args", "-p",
+                      f"port:={port}", output="bridge.out")
+    try:
+        url = wait_for(lambda: re.search(r"Foxglove connects to (ws://\S+)",
+                                         ws.output("bridge.out")), 60).group(1)
+        wait_for(lambda: "/odom" in ws.run("topic", "list").stdout.split(), 90)
+        yield ws, url, port
+    finally:
+        for proc in (bridge, demo):
+            proc.send_signal(2)
+        for proc in (bridge, demo):
+            proc.wait(60)
+
+
+def odom_x(ws) -> float:
+    out = ws.run("topic", "echo", "/odom", "--once", "--field", "pose.pose.position.x").stdout
+    return float(re.findall(r"-?\d+\.\d+(?:e-?\d+)?", out)[0])
+
+
+def test_foxglove_client_sees_decodes_drives_and_calls_through_the_token(served):
+    ws, url, port = served
+    assert re.fullmatch(rf"ws://127\.0\.0\.1:{port}/\?token=\S+", url)
+    token = url.split("token=")[1]
+    assert (ws.root / "run" / "domain-0.token").read_text().strip() == token
+    start = odom_x(ws)
+    lines = client(
+        url,
+        {"do": "channels", "topic": "/odom"},
+        {"do": "echo", "topic": "/odom", "count": 2},
+        {"do": "publish", "topic": "/cmd_vel", "type": "geometry_msgs/msg/Twist",
+         "schema": TWIST, "message": {"linear": {"x": 1.0, "y": 0, "z": 0},
+                                      "angular": {"x": 0, "y": 0, "z": 0}},
+         "hz": 10, "seconds": 4},
+        {"do": "call", "service": "/robot_state_publisher/list_parameters",
+         "request": {"prefixes": [], "depth": 0}},
+        {"do": "asset", "uri": "package://robot_description/urdf/robot.xacro"},
+        {"do": "asset", "uri": "package://robot_description/../../../../etc/passwd"},
+        {"do": "asset", "uri": "file:///etc/passwd"},
+        {"do": "parameters", "names": ["/robot_state_publisher.robot_description"]},
+        {"do": "graph"})
+    connected = found(lines, "connected")
+    assert connected["connected"] == "foxglove_bridge"
+    assert {"clientPublish", "services", "connectionGraph", "parameters"} <= \
+        set(connected["capabilities"])
+    odom = next(c for c in found(lines, "channels")["channels"] if c["topic"] == "/odom")
+    assert (odom["encoding"], odom["schemaName"], odom["schemaEncoding"]) == \
+        ("cdr", "nav_msgs/msg/Odometry", "ros2msg")
+    assert odom["schema"] == registry().definition("nav_msgs/msg/Odometry")
+    assert "MSG: geometry_msgs/PoseWithCovariance" in odom["schema"]
+    message = found(lines, "echo")["messages"][0]
+    assert message["child_frame_id"] and message["header"]["frame_id"]
+    assert abs(message["pose"]["pose"]["position"]["x"] - start) < 0.2  # the sim's, at rest
+    assert found(lines, "published")["sent"] >= 30
+    moved = odom_x(ws) - start
+    assert abs(moved) > 0.3, moved  # the client's Twist drove the robot
+    called = found(lines, "called")
+    assert "robot_description" in called["response"]["result"]["names"], called
+    assets = [line for line in lines if "asset" in line]
+    assert assets[0]["status"] == 0 and assets[0]["size"] > 100, assets[0]
+    assert [a["status"] for a in assets[1:]] == [1, 1]  # refused: outside, and not allowed
+    parameters = found(lines, "parameters")["parameters"]
+    assert [p["name"] for p in parameters] == ["/robot_state_publisher.robot_description"]
+    assert "<robot" in parameters[0]["value"]
+    graph = found(lines, "graph")["graph"]
+    published = {t["name"]: t["publisherIds"] for t in graph["publishedTopics"]}
+    assert "/odom" in published and published["/odom"]
+
+
+def test_without_the_token_every_connection_is_refused(served):
+    ws, url, port = served
+    base = url.split("?")[0]
+    for wrong in (base, f"{base}?token=not-it", f"{base}?token="):
+        assert found(client(wrong), "refused")["refused"] == 403
+
+
+HANDSHAKE = """
+import socket, sys
+port, token = int(sys.argv[1]), sys.argv[2]
+for query in ("", "?token=" + token):
+    with socket.create_connection(("127.0.0.1", port), timeout=10) as sock:
+        sock.sendall(("GET /" + query + " HTTP/1.1\\r\\nHost: 127.0.0.1\\r\\n"
+                      "Upgrade: websocket\\r\\nConnection: Upgrade\\r\\n"
+                      "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\\r\\n"
+                      "Sec-WebSocket-Version: 13\\r\\nSec-WebSocket-Protocol: foxglove.sdk.v1"
+                      "\\r\\n\\r\\n").encode())
+        print(sock.recv(200).split(b"\\r\\n")[0].decode())
+"""
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="needs root to act as another user")
+def test_another_user_is_refused_without_the_token_and_served_with_it(served):
+    """As the user nobody: the front refuses the handshake without the token, and the SDK's
+    own server, in the bridge's private network, is nowhere on this host's ports."""
+    ws, url, port = served
+    token = url.split("token=")[1]
+    done = subprocess.run(["setpriv", "--reuid=nobody", "--regid=nogroup", "--clear-groups",
+                           "/usr/bin/python3", "-c", HANDSHAKE, str(port), token],
+                          capture_output=True, text=True, timeout=60, cwd="/")
+    assert done.returncode == 0, done.stderr
+    refused, served_line = done.stdout.splitlines()
+    assert refused.startswith("HTTP/1.1 403") and served_line.startswith("HTTP/1.1 101")
+    import psutil
+
+    bridge = next(p for p in psutil.process_iter(["cmdline"])
+                  if "launcher.nodes.foxglove:main" in " ".join(p.info["cmdline"] or []))
+    ports = {c.laddr.port for c in bridge.net_connections("inet")
+             if c.status == psutil.CONN_LISTEN}
+    assert ports == {port}  # the front alone: the SDK's listener is in its own network
