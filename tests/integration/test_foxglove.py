@@ -170,3 +170,48 @@ def test_another_user_is_refused_without_the_token_and_served_with_it(served):
     ports = {c.laddr.port for c in bridge.net_connections("inet")
              if c.status == psutil.CONN_LISTEN}
     assert ports == {port}  # the front alone: the SDK's listener is in its own network
+
+
+def test_bad_clients_leave_the_bridge_serving_the_others(served):
+    """A client subscribing to 10,000 channel ids, publishing on a channel it never
+    advertised, sending a frame far over the size cap or text that is not JSON, publishing
+    bytes that are not its schema's, and calling a service that is gone: each is refused or
+    dropped, said in the bridge's log, and another client is served as before."""
+    ws, url, port = served
+    start = odom_x(ws)
+    for what in ("subscribe10000", "unadvertised"):
+        lines = client(url, {"do": "abuse", "what": what}, {"do": "wait", "seconds": 0.5})
+        assert found(lines, "abused")["abused"] == what
+    garbage = client(url, {"do": "abuse", "what": "garbage"}, {"do": "wait", "seconds": 1})
+    assert found(garbage, "status")["level"] == 2  # an error status: "Invalid message"
+    oversized = client(url, {"do": "abuse", "what": "oversized", "bytes": 80 * 1024 * 1024},
+                       {"do": "wait", "seconds": 3})
+    assert "closed" in found(oversized, "closed")  # over the SDK's 16 MiB cap: dropped
+    mismatched = client(url, {"do": "publish", "topic": "/cmd_vel",
+                              "type": "geometry_msgs/msg/Twist", "raw": [1, 2, 3],
+                              "hz": 20, "seconds": 2})
+    assert found(mismatched, "published")["sent"] >= 10
+    wait_for(lambda: "is not a geometry_msgs/msg/Twist in CDR: dropped" in
+             ws.output("bridge.out"), 20)
+    assert abs(odom_x(ws) - start) < 0.05  # nothing reached the robot
+    # a service that goes: the call fails, and says so, instead of hanging
+    source = ws.start("rostopic", "pub", "-r", "5", "/mux_in", "std_msgs/String", "x",
+                      output="source.out")
+    mux = ws.start("run", "topic_tools", "mux", "/mux_out", "/mux_in", output="mux.out")
+    try:
+        listed = client(url, {"do": "call", "service": "/mux/list", "request": {}})
+        assert found(listed, "called")["response"]["topics"] == ["/mux_in"]
+        mux.send_signal(2)
+        mux.wait(30)
+        gone = client(url, {"do": "call", "service": "/mux/list", "request": {},
+                            "seconds": 20})
+        assert "failed" in found(gone, "called"), gone
+    finally:
+        for proc in (mux, source):
+            if proc.poll() is None:
+                proc.send_signal(2)
+                proc.wait(30)
+    # and the bridge serves a well-behaved client as before
+    lines = client(url, {"do": "echo", "topic": "/odom", "count": 3})
+    assert len(found(lines, "echo")["messages"]) == 3
+    assert "Traceback" not in ws.output("bridge.out")

@@ -43,6 +43,8 @@ client.on("advertise", (list) => list.forEach((c) => channels.set(c.topic, c)));
 client.on("unadvertise", (ids) => ids.forEach((id) => { for (const [t, c] of channels) if (c.id === id) channels.delete(t); }));
 client.on("advertiseServices", (list) => list.forEach((s) => services.set(s.name, s)));
 client.on("status", (s) => say({ status: s.message, level: s.level }));
+let closing = false;
+ws.on("close", (code, reason) => { if (!closing) say({ closed: code, reason: String(reason) }); });
 for (const name of Object.keys(waiting)) client.on(name, (e) => waiting[name].forEach((f) => f(e)));
 
 const until = async (check, seconds) => {
@@ -143,6 +145,7 @@ async function run() {
       say({ abused: step.what });
     }
   }
+  closing = true;
   client.close();
   await sleep(100);
   process.exit(0);
