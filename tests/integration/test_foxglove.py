@@ -16,7 +16,7 @@ import time
 import pytest
 
 from launcher.bus.types import registry
-from tests.conftest import REPO
+from tests.conftest import REPO, tagged_processes
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 CLIENT = REPO / "tests" / "js" / "foxglove_client.js"
@@ -165,8 +165,8 @@ def test_another_user_is_refused_without_the_token_and_served_with_it(served):
     assert refused.startswith("HTTP/1.1 403") and served_line.startswith("HTTP/1.1 101")
     import psutil
 
-    bridge = next(p for p in psutil.process_iter(["cmdline"])
-                  if "launcher.nodes.foxglove:main" in " ".join(p.info["cmdline"] or []))
+    bridge = next(p for p in tagged_processes(ws.tag)
+                  if "launcher.nodes.foxglove:main" in " ".join(p.cmdline()))
     ports = {c.laddr.port for c in bridge.net_connections("inet")
              if c.status == psutil.CONN_LISTEN}
     assert ports == {port}  # the front alone: the SDK's listener is in its own network
