@@ -33,6 +33,8 @@ COMMANDS = {
     "logger": ("launcher.cli.logger_command", "a node's logger levels: get, set"),
     "graph": ("launcher.cli.graph_command", "draw the graph's nodes and topics (as rqt_graph)"),
     "plot": ("launcher.cli.plot_command", "draw fields of messages over time (as rqt_plot)"),
+    "rviz2-layout": ("launcher.cli.rviz_command", "convert an rviz config into a Foxglove "
+                                                  "layout"),
     "param": ("launcher.cli.param_command",
               "parameters of a running node: list, get, set, describe, delete, dump, load"),
     "rosparam": ("launcher.cli.rosparam_command",

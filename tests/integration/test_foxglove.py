@@ -215,3 +215,32 @@ def test_bad_clients_leave_the_bridge_serving_the_others(served):
     lines = client(url, {"do": "echo", "topic": "/odom", "count": 3})
     assert len(found(lines, "echo")["messages"]) == 3
     assert "Traceback" not in ws.output("bridge.out")
+
+
+def test_rviz2_points_to_the_running_bridge_and_a_real_rviz2_wins(served):
+    ws, url, port = served
+    config = REPO / "tests" / "unit" / "missing.rviz"
+    assert not config.exists()
+    ws.env["HOME"] = str(ws.root)
+    ws.write("view.rviz", "Visualization Manager:\n  Global Options: {Fixed Frame: odom}\n"
+                          "  Displays:\n    - {Class: rviz_default_plugins/Odometry, "
+                          "Topic: /odom}\n")
+    rviz = ws.start("run", "rviz2", "rviz2", "-d", str(ws.root / "view.rviz"),
+                    output="rviz.out")
+    try:
+        wait_for(lambda: "import the layout" in ws.output("rviz.out"), 60)
+        assert f"connect Foxglove (the app, or app.foxglove.dev) to {url}" in \
+            ws.output("rviz.out")  # the running bridge's address: no second bridge
+    finally:
+        rviz.send_signal(2)
+        assert rviz.wait(30) == 0
+    # a real rviz2 earlier on PATH is the one that runs, with the same arguments
+    real = ws.root / "real-ros"
+    real.mkdir()
+    (real / "rviz2").write_text('#!/bin/sh\necho "REAL-rviz2 $*"\n')
+    (real / "rviz2").chmod(0o755)
+    ws.env["PATH"] = f"{real}:{ws.env['PATH']}"
+    done = ws.run("run", "rviz2", "rviz2", "-d", "x.rviz")
+    assert done.stdout.strip() == "REAL-rviz2 -d x.rviz", done.stdout + done.stderr
+    wrong = ws.run("rviz2-layout", str(config))
+    assert wrong.returncode == 1 and "cannot read the rviz config" in wrong.stderr

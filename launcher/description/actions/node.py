@@ -38,16 +38,18 @@ from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
-GUI_TOOLS = ("rviz2", "rviz", "rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",
+GUI_TOOLS = ("rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",
              "rqt_image_view", "rqt_robot_steering", "joint_state_publisher_gui", "gzclient")
 
 
 def is_gui_tool(package: str) -> bool:
-    """rviz, rqt and its plugins (rqt_topic, rqt_reconfigure, …), and the other GUI tools."""
+    """rqt and its plugins (rqt_topic, rqt_reconfigure, …), and the other GUI tools (rviz2
+    and rviz are launcher's packages: the view is Foxglove's)."""
     return package in GUI_TOOLS or package.startswith("rqt_")
 
 
-INSTEAD = ("pictures of the world: `launcher sim snapshot -o world.png`; topics: "
+INSTEAD = ("the robot's data in Foxglove: `launcher run foxglove_bridge foxglove_bridge`; "
+           "pictures of the world: `launcher sim snapshot -o world.png`; topics: "
            "`launcher topic echo`")
 
 

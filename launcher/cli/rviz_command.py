@@ -1,0 +1,33 @@
+"""`launcher rviz2-layout CONFIG.rviz [-o layout.json]`: an rviz config as a Foxglove layout
+(nodes/rviz/layout.py), for users who want the file alone; the displays with no mapping are
+listed."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser("rviz2-layout", help="convert an rviz config into a Foxglove "
+                                                 "layout")
+    p.add_argument("config", help="the .rviz file (rviz2's, or ROS 1 rviz's)")
+    p.add_argument("-o", "--output", default=None,
+                   help="the layout to write (default: the config's name, .json, here)")
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from launcher.nodes.rviz import layout
+
+    config = Path(args.config)
+    made, unmapped = layout.convert(layout.read(config))
+    target = Path(args.output) if args.output else Path(f"{config.stem}.json")
+    layout.write(made, target)
+    panels = ", ".join(key.split("!")[0] for key in made["configById"])
+    print(f"{target}: {panels}")
+    if unmapped:
+        print(f"not shown (no Foxglove panel for them): {', '.join(unmapped)}",
+              file=sys.stderr)
+    return 0
