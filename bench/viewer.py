@@ -92,6 +92,17 @@ class Sim:
         self.node.create_subscription("mujoco_sim/msg/Clock", "/world/diff_drive/clock",
                                       on_clock, raw=True)
 
+    @property
+    def url(self) -> str:
+        """The address the sim printed (the graph's token in it)."""
+        import re
+
+        for line in self.said:
+            found = re.search(r"in a browser: (\S+)", line)
+            if found:
+                return found.group(1)
+        raise RuntimeError("the sim said no address")
+
     def _drain(self) -> None:
         assert self.proc.stdout is not None
         for line in self.proc.stdout:
@@ -182,7 +193,7 @@ def cpu_part(args: argparse.Namespace) -> None:
                 sim = Sim(env, gui=condition != "headless")
                 try:
                     if condition == "watched":
-                        driver.get(f"http://127.0.0.1:{sim.port}/")
+                        driver.get(sim.url)
                         sim.wait_said("browser connected")
                     figures[condition].append(sim.measure(args.seconds))
                 finally:
@@ -219,7 +230,7 @@ def spawn_part(args: argparse.Namespace) -> None:
     try:
         sim = Sim(env, gui=True)
         try:
-            driver.get(f"http://127.0.0.1:{sim.port}/")
+            driver.get(sim.url)
             sim.wait_said("browser connected")
             time.sleep(5)  # the page loaded and drawing
             seen, shots = appearance(sim, driver, args.runs)

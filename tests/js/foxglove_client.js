@@ -5,6 +5,7 @@
 //   {"do": "channels"}                                     the advertised channels
 //   {"do": "echo", "topic": T, "count": N}                 N decoded messages of T
 //   {"do": "rate", "topic": T, "seconds": S}               messages of T received in S seconds
+//   {"do": "watchall", "seconds": S}                       every channel subscribed for S seconds
 //   {"do": "publish", "topic": T, "type": "pkg/msg/X", "message": {...}, "hz": H, "seconds": S}
 //   {"do": "call", "service": S, "request": {...}}         a service's decoded response
 //   {"do": "asset", "uri": U}                              a fetchAsset's status and size
@@ -85,6 +86,16 @@ async function run() {
       waiting.message = waiting.message.filter((g) => g !== f);
       if (step.do === "echo") say({ echo: step.topic, messages: got });
       else say({ rate: step.topic, count, seconds: (Date.now() - start) / 1000 });
+    } else if (step.do === "watchall") {
+      await until(() => channels.size > 0, 15);
+      let count = 0;
+      const f = () => { count += 1; };
+      waiting.message.push(f);
+      const subs = [...channels.values()].map((c) => client.subscribe(c.id));
+      await sleep(step.seconds * 1000);
+      subs.forEach((id) => client.unsubscribe(id));
+      waiting.message = waiting.message.filter((g) => g !== f);
+      say({ watched: subs.length, count });
     } else if (step.do === "publish") {
       const channel = { topic: step.topic, encoding: "cdr", schemaName: step.type };
       const id = client.advertise(channel);
