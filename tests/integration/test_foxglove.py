@@ -244,3 +244,31 @@ def test_rviz2_points_to_the_running_bridge_and_a_real_rviz2_wins(served):
     assert done.stdout.strip() == "REAL-rviz2 -d x.rviz", done.stdout + done.stderr
     wrong = ws.run("rviz2-layout", str(config))
     assert wrong.returncode == 1 and "cannot read the rviz config" in wrong.stderr
+
+
+def test_the_packages_launch_file_serves_sim_time_and_the_latched_robot(served):
+    """`ros2 launch foxglove_bridge foxglove_bridge_launch.xml`, as the ROS package ships it,
+    with use_sim_time: the server's time is the sim's /clock; the latched /robot_description
+    and /tf_static reach a client that comes after them (the 3D panel draws the robot)."""
+    ws, url, _ = served
+    port = free_port()
+    launched = ws.start("launch", "foxglove_bridge", "foxglove_bridge_launch.xml",
+                        f"port:={port}", "use_sim_time:=true", output="launched.out")
+    try:
+        other = wait_for(lambda: re.search(r"Foxglove connects to (ws://\S+)",
+                                           ws.output("launched.out")), 60).group(1)
+        assert f":{port}/?token=" in other and other.split("?")[1] == url.split("?")[1]
+        lines = client(other, {"do": "time", "seconds": 2},
+                       {"do": "echo", "topic": "/robot_description", "count": 1},
+                       {"do": "echo", "topic": "/tf_static", "count": 1})
+        assert "time" in found(lines, "connected")["capabilities"]
+        times = found(lines, "times")["times"]
+        assert len(times) > 10 and times == sorted(times)
+        assert times[-1] < 3600 * 1e9  # sim time: seconds since the sim began, not the epoch
+        description = [line for line in lines if line.get("echo") == "/robot_description"]
+        assert "<robot" in description[0]["messages"][0]["data"]
+        static = [line for line in lines if line.get("echo") == "/tf_static"]
+        assert static[0]["messages"][0]["transforms"]
+    finally:
+        launched.send_signal(2)
+        assert launched.wait(30) == 130
