@@ -24,7 +24,7 @@ from typing import Any
 from launcher.errors import LaunchError, UsageError, reported
 
 NAME = "rviz2"
-LAUNCHER_ROOT = Path(__file__).resolve().parents[2]  # launcher's own files: not a real rviz2
+OWN_FILES = Path(__file__).resolve().parents[2]  # launcher's own files: not a real rviz2
 BRIDGE_WAIT = 2.0  # s: a bridge starting beside rviz2 (the same launch) is waited for
 URL_WAIT = 60.0  # s for a started bridge to say where it listens
 DEFAULT_CONFIG = {"Visualization Manager": {
@@ -117,7 +117,7 @@ def _real_tool(tool: str) -> str | None:
     """A real rviz2 (or ROS 1's rviz): on PATH (not one of launcher's own commands), or in an
     install (AMENT_PREFIX_PATH, CMAKE_PREFIX_PATH for ROS 1)."""
     found = shutil.which(tool)
-    if found and not Path(found).resolve().is_relative_to(LAUNCHER_ROOT):
+    if found and not Path(found).resolve().is_relative_to(OWN_FILES):
         return found
     prefixes = os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) + \
         os.environ.get("CMAKE_PREFIX_PATH", "").split(os.pathsep)
