@@ -12,6 +12,7 @@ import shutil
 import socket
 import subprocess
 import time
+from pathlib import Path
 
 import pytest
 
@@ -272,3 +273,55 @@ def test_the_packages_launch_file_serves_sim_time_and_the_latched_robot(served):
     finally:
         launched.send_signal(2)
         assert launched.wait(30) == 130
+
+
+ISOLATED = """
+import socket
+from launcher.nodes.foxglove import isolation
+isolation.enter_user_namespace()
+network = isolation.PrivateNetwork()
+
+def serve():
+    listener = socket.socket()
+    listener.bind(("127.0.0.1", 0))
+    listener.listen()
+    return listener
+
+inner = network.call(serve)
+port = inner.getsockname()[1]
+try:
+    socket.create_connection(("127.0.0.1", port), timeout=2).close()
+    print("REACHABLE FROM THE HOST")
+except OSError:
+    print("PRIVATE")
+network.call(lambda: socket.create_connection(("127.0.0.1", port), timeout=2)).close()
+print("INSIDE OK")
+outside = socket.socket()
+outside.bind(("127.0.0.1", 0))
+outside.listen()
+socket.create_connection(outside.getsockname(), timeout=2).close()
+print("HOST OK")
+"""
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="needs root to act as another user")
+def test_the_private_network_works_for_a_user_other_than_root():
+    """The bridge's isolation as most users run it, not root: a user namespace of its own,
+    then one thread's network namespace; the rest of the process stays on the host's
+    network. (launcher's Python files are copied where the user nobody can read them.)"""
+    import tempfile
+
+    copy = Path(tempfile.mkdtemp(prefix="launcher-nobody-"))
+    try:
+        shutil.copytree(REPO / "launcher", copy / "launcher",
+                        ignore=shutil.ignore_patterns("__pycache__", "builtin", "*.so"))
+        for path in [copy, *copy.rglob("*")]:
+            path.chmod(0o755 if path.is_dir() else 0o644)
+        done = subprocess.run(["setpriv", "--reuid=nobody", "--regid=nogroup",
+                               "--clear-groups", "/usr/bin/python3", "-c", ISOLATED], cwd="/",
+                              capture_output=True, text=True, timeout=60,
+                              env={"PYTHONPATH": str(copy), "PATH": "/usr/bin:/bin"})
+    finally:
+        shutil.rmtree(copy, ignore_errors=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["PRIVATE", "INSIDE", "OK", "HOST", "OK"], done.stdout

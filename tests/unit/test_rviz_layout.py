@@ -93,6 +93,15 @@ def test_rviz2_layout_writes_the_file_and_says_where_a_config_is_wrong(tmp_path)
     assert done.stdout.strip() == f"{target}: 3D, Image"
     assert json.loads(target.read_text())["configById"]
     assert target.stat().st_mode & 0o777 == 0o600
+    assert target.parent.stat().st_mode & 0o777 == 0o700  # made for it: private
+    shared_folder = tmp_path / "shared"
+    shared_folder.mkdir(mode=0o755)
+    shared_folder.chmod(0o755)
+    done = subprocess.run([*launcher_argv(), "rviz2-layout", str(config), "-o",
+                           str(shared_folder / "c.json")], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert shared_folder.stat().st_mode & 0o777 == 0o755  # a folder of the user's: untouched
     broken = tmp_path / "broken.rviz"
     broken.write_text("Panels:\n  - Class: x\nVisualization Manager: [1, 2\n")
     done = subprocess.run([*launcher_argv(), "rviz2-layout", str(broken)],

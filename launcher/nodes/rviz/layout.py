@@ -286,12 +286,14 @@ def _tree(panels: list[str]) -> Any:
 
 
 def write(layout: dict[str, Any], path: Path) -> None:
-    """The layout as JSON, 0600 in a 0700 folder (it names the user's topics and frames)."""
+    """The layout as JSON, 0600 (it names the user's topics and frames); a folder made for it
+    is 0700, and an existing one is left as it is."""
     import json
     import os
 
-    path.parent.mkdir(parents=True, exist_ok=True)
-    os.chmod(path.parent, 0o700)
+    if not path.parent.exists():
+        path.parent.mkdir(parents=True)
+        os.chmod(path.parent, 0o700)
     descriptor = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
     with os.fdopen(descriptor, "w", encoding="utf-8") as handle:
         json.dump(layout, handle, indent=2)
