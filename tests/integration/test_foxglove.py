@@ -325,3 +325,34 @@ def test_the_private_network_works_for_a_user_other_than_root():
         shutil.rmtree(copy, ignore_errors=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["PRIVATE", "INSIDE", "OK", "HOST", "OK"], done.stdout
+
+
+def test_a_subscribed_parameter_sends_its_changes(served):
+    ws, url, _ = served
+    name = "/foxglove_bridge.max_qos_depth"
+    watcher = subprocess.Popen([shutil.which("node"), str(CLIENT), url, json.dumps(
+        [{"do": "paramwatch", "names": [name], "seconds": 8}])], stdout=subprocess.PIPE,
+        text=True, cwd=CLIENT.parent)
+    time.sleep(3)
+    changed = ws.run("param", "set", "/foxglove_bridge", "max_qos_depth", "30")
+    assert changed.returncode == 0, changed.stderr
+    out, _ = watcher.communicate(timeout=60)
+    updates = next(json.loads(line) for line in out.splitlines() if "parameterUpdates" in line)
+    values = [p["value"] for p in updates["parameterUpdates"] if p["name"] == name]
+    assert values[0] == 25 and values[-1] == 30, values  # the value, then its change
+
+
+def test_token_false_serves_without_the_token_and_warns(ws):
+    ws.own_bus()
+    port = free_port()
+    bridge = ws.start("run", "foxglove_bridge", "foxglove_bridge", "--ros-args", "-p",
+                      f"port:={port}", "-p", "token:=false", output="bridge.out")
+    try:
+        url = wait_for(lambda: re.search(r"Foxglove connects to (ws://\S+)",
+                                         ws.output("bridge.out")), 60).group(1)
+        assert url == f"ws://127.0.0.1:{port}/"
+        assert "the token check is off" in ws.output("bridge.out")
+        assert found(client(url), "connected")["connected"] == "foxglove_bridge"
+    finally:
+        bridge.send_signal(2)
+        bridge.wait(30)

@@ -10,6 +10,7 @@
 //   {"do": "call", "service": S, "request": {...}}         a service's decoded response
 //   {"do": "asset", "uri": U}                              a fetchAsset's status and size
 //   {"do": "parameters", "names": [...]}                   getParameters
+//   {"do": "paramwatch", "names": [...], "seconds": S}     parameter updates for S seconds
 //   {"do": "graph"}                                        the connection graph
 //   {"do": "time", "seconds": S}                           the server's time messages
 //   {"do": "abuse", "what": "subscribe10000"|"unadvertised"|"oversized"|"mismatched"|"garbage"}
@@ -132,6 +133,15 @@ async function run() {
       client.getParameters(step.names || [], "p1");
       const got = await answer;
       say({ parameters: got ? got.parameters : null });
+    } else if (step.do === "paramwatch") {
+      const seen = [];
+      const f = (e) => seen.push(...e.parameters);
+      waiting.parameterValues.push(f);
+      client.subscribeParameterUpdates(step.names);
+      await sleep(step.seconds * 1000);
+      client.unsubscribeParameterUpdates(step.names);
+      waiting.parameterValues = waiting.parameterValues.filter((g) => g !== f);
+      say({ parameterUpdates: seen });
     } else if (step.do === "graph") {
       const answer = once("connectionGraphUpdate", (e) => (e.publishedTopics || []).length > 0, 10);
       client.subscribeConnectionGraph();

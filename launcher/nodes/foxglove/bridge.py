@@ -9,7 +9,8 @@ serves it: a node like any other, never in the sim.
 - clientPublish: a client's advertised channel (cdr) becomes a publisher; each message must
   decode as its type, else it is dropped with a warning;
 - services (`service_whitelist`) are the SDK's services, their CDR passed both ways;
-- parameters of every node (`param_whitelist`), `node.name` as foxglove_bridge names them;
+- parameters of every node (`param_whitelist`), `node.name` as foxglove_bridge names them,
+  got, set, and subscribed to (a change is sent at the next look at the graph, each second);
 - time from /clock under use_sim_time; the connection graph; assets (assets.py).
 Each client's queue is the SDK's (bounded: a slow client loses frames, never slows the bus).
 """
@@ -105,6 +106,8 @@ class Bridge:
         self._warned: set[str] = set()
         self._graph_watched = False
         self._clock_time = 0
+        self._watched_parameters: dict[str, Any] = {}  # name -> last value sent
+        self._parameters_busy = threading.Lock()
 
     # --- the graph --------------------------------------------------------------------
     def sync(self) -> None:
@@ -128,6 +131,11 @@ class Bridge:
                 self._sync_services(services)
         if self._graph_watched and self.server is not None:
             self.server.publish_connection_graph(self._connection_graph(entities))
+        if self._watched_parameters and self.server is not None and \
+                not self._parameters_busy.locked():
+            # (apart from the node's executor: the bridge's own parameters are read through
+            # its services, which that executor answers)
+            threading.Thread(target=self._send_changed_parameters, daemon=True).start()
 
     def _shown(self, name: str, patterns: list[re.Pattern[str]]) -> bool:
         return (self.settings.include_hidden or not names.hidden(name)) and \
@@ -372,6 +380,26 @@ class Bridge:
                 setter.destroy()
         return self.get_parameters([p.name for p in given])
 
+    def watch_parameters(self, names: list[str], on: bool) -> None:
+        """Clients subscribed to these parameters (or left them): their changes are sent
+        at each look at the graph."""
+        for name in names:
+            if on:
+                self._watched_parameters.setdefault(name, None)
+            else:
+                self._watched_parameters.pop(name, None)
+
+    def _send_changed_parameters(self) -> None:
+        with self._parameters_busy:
+            changed = []
+            for parameter in self.get_parameters(list(self._watched_parameters)):
+                value = parameter.get_value()
+                if self._watched_parameters.get(parameter.name) != value:
+                    self._watched_parameters[parameter.name] = value
+                    changed.append(parameter)
+            if changed:
+                self.server.publish_parameter_values(changed)
+
     # --- the rest -----------------------------------------------------------------------
     def watch_graph(self, on: bool) -> None:
         self._graph_watched = on
@@ -413,6 +441,10 @@ def listener(bridge: Bridge) -> Any:
         on_set_parameters = staticmethod(guarded(
             lambda client, parameters, request_id=None: bridge.set_parameters(
                 list(parameters)), []))
+        on_parameters_subscribe = staticmethod(guarded(
+            lambda names: bridge.watch_parameters(list(names), True)))
+        on_parameters_unsubscribe = staticmethod(guarded(
+            lambda names: bridge.watch_parameters(list(names), False)))
         on_connection_graph_subscribe = staticmethod(guarded(lambda: bridge.watch_graph(True)))
         on_connection_graph_unsubscribe = staticmethod(guarded(
             lambda: bridge.watch_graph(False)))
