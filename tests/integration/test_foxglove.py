@@ -11,6 +11,7 @@ import re
 import shutil
 import socket
 import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -356,3 +357,43 @@ def test_token_false_serves_without_the_token_and_warns(ws):
     finally:
         bridge.send_signal(2)
         bridge.wait(30)
+
+
+IMAGES = """
+import sys, time
+from launcher.bus.node import Node
+from launcher.bus.types import registry
+node = Node("camera_like")
+message = node.message("sensor_msgs/msg/Image", height=480, width=640, encoding="rgb8",
+                       step=1920, data=[0] * (640 * 480 * 3))
+payload = registry().serialize(message, "sensor_msgs/msg/Image")
+publisher = node.create_publisher("sensor_msgs/msg/Image", "/camera_like")
+begin = time.monotonic()
+while time.monotonic() - begin < float(sys.argv[1]):
+    publisher.publish_raw(payload)
+    time.sleep(1 / 30)
+node.destroy_node()
+"""
+
+
+def test_a_slow_client_loses_frames_and_the_others_do_not_wait(served):
+    """A client that stops reading for 10 s while 30 images a second come: the bridge keeps
+    a bounded queue for it (frames are dropped, not piled up), and another client receives
+    throughout."""
+    ws, url, _ = served
+    images = subprocess.Popen([sys.executable, "-c", IMAGES, "25"], env=ws.env, cwd=ws.root)
+    try:
+        wait_for(lambda: "/camera_like" in ws.run("topic", "list").stdout.split(), 30)
+        slow = subprocess.Popen([shutil.which("node"), str(CLIENT), url, json.dumps(
+            [{"do": "stall", "topic": "/camera_like", "seconds": 10}])],
+            stdout=subprocess.PIPE, text=True, cwd=CLIENT.parent)
+        time.sleep(3)
+        fast = client(url, {"do": "rate", "topic": "/camera_like", "seconds": 5})
+        out, _ = slow.communicate(timeout=60)
+    finally:
+        images.wait(60)
+    stalled = next(json.loads(line) for line in out.splitlines() if "stalled" in line)
+    sent_meanwhile = 30 * (stalled["seconds"] + 3)  # (about: at 30 Hz, the stall and after)
+    assert stalled["after"] < sent_meanwhile - 100, stalled  # dropped, not all kept for it
+    assert stalled["after"] > 0  # and it reads on afterwards
+    assert found(fast, "rate")["count"] > 30  # the other client was served meanwhile

@@ -6,6 +6,7 @@
 //   {"do": "echo", "topic": T, "count": N}                 N decoded messages of T
 //   {"do": "rate", "topic": T, "seconds": S}               messages of T received in S seconds
 //   {"do": "watchall", "seconds": S}                       every channel subscribed for S seconds
+//   {"do": "stall", "topic": T, "seconds": S}              subscribed, but not reading for S seconds
 //   {"do": "publish", "topic": T, "type": "pkg/msg/X", "message": {...}, "hz": H, "seconds": S}
 //   {"do": "call", "service": S, "request": {...}}         a service's decoded response
 //   {"do": "asset", "uri": U}                              a fetchAsset's status and size
@@ -87,6 +88,22 @@ async function run() {
       waiting.message = waiting.message.filter((g) => g !== f);
       if (step.do === "echo") say({ echo: step.topic, messages: got });
       else say({ rate: step.topic, count, seconds: (Date.now() - start) / 1000 });
+    } else if (step.do === "stall") {
+      // subscribe, then stop reading the socket for S seconds (a slow client), then read on
+      const channel = await until(() => channels.get(step.topic), 15);
+      if (!channel) { say({ missing: step.topic }); continue; }
+      let count = 0;
+      const f = () => { count += 1; };
+      waiting.message.push(f);
+      client.subscribe(channel.id);
+      await sleep(500);
+      ws.pause();
+      const before = count;
+      await sleep(step.seconds * 1000);
+      ws.resume();
+      await sleep(3000);
+      waiting.message = waiting.message.filter((g) => g !== f);
+      say({ stalled: step.topic, before, after: count - before, seconds: step.seconds });
     } else if (step.do === "watchall") {
       await until(() => channels.size > 0, 15);
       let count = 0;

@@ -98,5 +98,5 @@ def test_bad_settings_are_said(values, expected):
 def test_settings_defaults_are_foxglove_bridges():
     settings = Settings(FakeNode({}))
     assert (settings.port, settings.address, settings.max_qos_depth) == (8765, "127.0.0.1", 25)
-    assert settings.backlog == 152 and settings.token is True
+    assert settings.backlog == 19 and settings.token is True
     assert "assets" in settings.capabilities

@@ -70,8 +70,9 @@ class Settings:
     @property
     def backlog(self) -> int:
         """The SDK bounds each client's queue in messages, not bytes: send_buffer_limit read
-        as that many 64 KiB messages (10 MB: 152), from 8 to 1024."""
-        return max(8, min(1024, self.send_buffer_limit // 65536))
+        as that many 512 KiB messages (10 MB: 19, about 10 MB of camera images), from 8 to
+        1024."""
+        return max(8, min(1024, self.send_buffer_limit // (512 * 1024)))
 
 
 def _patterns(values: Any, name: str) -> list[re.Pattern[str]]:
