@@ -100,3 +100,15 @@ def test_settings_defaults_are_foxglove_bridges():
     assert (settings.port, settings.address, settings.max_qos_depth) == (8765, "127.0.0.1", 25)
     assert settings.backlog == 19 and settings.token is True
     assert "assets" in settings.capabilities
+
+
+def test_whitelists_and_hidden_names_choose_what_is_served():
+    from launcher.nodes.foxglove.bridge import Bridge
+
+    bridge = Bridge.__new__(Bridge)
+    bridge.settings = Settings(FakeNode({"topic_whitelist": ["/odom", "/camera/.*"]}))
+    shown = [t for t in ("/odom", "/odom/extra", "/camera/image", "/tf",
+                         "/camera/_private/x") if bridge._shown(t, bridge.settings.topics)]
+    assert shown == ["/odom", "/camera/image"]  # whole-name matches; hidden names left out
+    bridge.settings = Settings(FakeNode({"include_hidden": True}))
+    assert bridge._shown("/fibonacci/_action/status", bridge.settings.topics)
