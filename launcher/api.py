@@ -14,6 +14,7 @@ from launcher.description.actions import arguments as _arguments
 from launcher.description.actions import composition as _composition
 from launcher.description.actions import environment as _environment
 from launcher.description.actions import group as _group
+from launcher.description.actions import lifecycle as _lifecycle
 from launcher.description.actions import log as _log
 from launcher.description.actions import loops as _loops
 from launcher.description.actions import node as _node
@@ -56,7 +57,8 @@ __all__ = [
     "UnsetEnvironmentVariable", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
     "Node", "ComposableNodeContainer", "LoadComposableNodes", "ComposableNode",
     "FindPackageShare", "FindPackagePrefix", "ParameterValue", "PushRosNamespace",
-    "SetParameter", "SetRemap", "SetUseSimTime", "SetParametersFromFile",
+    "SetParameter", "SetRemap", "SetUseSimTime", "SetParametersFromFile", "LifecycleNode",
+    "EmitEvent", "ChangeState", "OnStateTransition", "matches_action",
 ]
 
 
@@ -207,6 +209,19 @@ def Node(*, package: Any, executable: Any, name: Any = None, namespace: Any = No
                  namespace=namespace, exec_name=exec_name, parameters=_parameters(parameters),
                  remappings=list(remappings), arguments=list(arguments) or None,
                  ros_arguments=list(ros_arguments) or None, **kw)
+
+
+def LifecycleNode(*, name: Any, namespace: Any, autostart: Any = False,  # noqa: N802
+                  **kw: Any) -> Any:
+    """launch_ros.actions.LifecycleNode: a Node the launch can drive through its states."""
+    return Node(name=name, namespace=namespace, autostart=autostart,
+                _kind=_lifecycle.LifecycleNode, **kw)
+
+
+EmitEvent = _lifecycle.EmitEvent
+ChangeState = _lifecycle.ChangeState
+OnStateTransition = _lifecycle.OnStateTransition
+matches_action = _lifecycle.matches_action
 
 
 def ComposableNodeContainer(*, name: Any, namespace: Any,  # noqa: N802

@@ -12,6 +12,7 @@ from launcher import compat
 from launcher.bus import discovery
 from launcher.cli import completion
 from launcher.cli.components import BusLoader
+from launcher.cli.lifecycle_bus import BusLifecycle
 from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
 from launcher.description.actions.arguments import check_required
@@ -118,7 +119,7 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
         log_root=log_root(), environment=environment,
         configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
         load_description=load_file, parse_text=parse_file_text, packages=index,
-        loader=BusLoader(),
+        loader=BusLoader(), lifecycle=BusLifecycle(environment),
         # the graph's router, unless one runs, once the first process that may join the graph
         # is spawned (so it starts while that one imports); a launch of system programs needs
         # none, and a node that opens its session sooner starts it itself

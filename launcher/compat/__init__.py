@@ -33,9 +33,14 @@ def _real_installed(name: str) -> bool:
 
 
 def enable_in_process() -> None:
-    """Make the shims importable here, for modules that have no real version installed."""
+    """Make the shims importable here, for modules that have no real version installed, and
+    the message packages (a Python launch file imports lifecycle_msgs' Transition ids; the
+    finder comes last, so a real one wins)."""
     if SHIMS not in sys.path and not all(_real_installed(name) for name in SHIMMED):
         sys.path.append(SHIMS)
+    from launcher.compat import finder
+
+    finder.install()
 
 
 def enable_for_children(environment: MutableMapping[str, str]) -> None:

@@ -31,6 +31,7 @@ BUILTINS: dict[str, dict[str, str]] = {
         "shutdown": _ACTIONS + "shutdown",
         **dict.fromkeys(("for", "for_each"), _ACTIONS + "loops"),
         "node": _ACTIONS + "node",
+        "lifecycle_node": _ACTIONS + "lifecycle",
         **dict.fromkeys(("node_container", "load_composable_node"), _ACTIONS + "composition"),
         **dict.fromkeys(("push_ros_namespace", "push-ros-namespace", "set_parameter",
                          "set_parameters_from_file", "set_remap", "set_use_sim_time"),

@@ -91,6 +91,7 @@ class LaunchContext:
         self.packages = packages
         self.parse_text = parse_text
         self.node_names: dict[str, Any] = {}  # fully qualified node name -> where declared
+        self.lifecycle_nodes: list[Any] = []  # lifecycle_node actions started, in order
         self.declared: set[str] = set()  # the launch arguments an `arg` has declared
         # ROS 1 parameters for the graph's parameter server (full names), and whether its
         # start is queued (it comes once everything queued now has been visited)

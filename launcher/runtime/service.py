@@ -25,6 +25,7 @@ from launcher.runtime.composition import Loader, LoadRequest
 from launcher.runtime.context import LaunchContext
 from launcher.runtime.custody import TICK, Custody
 from launcher.runtime.ending import Ending
+from launcher.runtime.lifecycle import Lifecycle, LifecycleRequests
 from launcher.runtime.logs import RunLog
 from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Printer, Record
@@ -51,6 +52,7 @@ class LaunchService:
         custody: Custody | None = None,
         loader: Loader | None = None,
         on_graph: Callable[[], None] | None = None,
+        lifecycle: Lifecycle | None = None,
     ) -> None:
         """`on_graph` runs once, when the first process that may join the graph is spawned
         (`launcher launch` starts the graph's router there)."""
@@ -74,6 +76,8 @@ class LaunchService:
                                   self.run_log, self.log, self.emit, lambda: bool(self._handlers),
                                   self._check_idle, on_graph and self._graph_hook(on_graph))
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
+        self.lifecycles = LifecycleRequests(self.loop, lifecycle, self.emit, self.log,
+                                            self.report, self._check_idle)
         self.ending = Ending(self.loop, self.table, self.custody, self.log, self.emit,
                              self._pending, self._queue.clear, self._cancel)
 
@@ -97,6 +101,7 @@ class LaunchService:
             self.loop.run()
         finally:
             self.loads.close()
+            self.lifecycles.close()
             self.loop.close()
             # its last look (the sweep) found nothing left: the watchdog need not look again
             self.custody.end(nothing_left=self.ending.swept_all)
@@ -203,6 +208,12 @@ class LaunchService:
                         alive: Callable[[], bool] | None) -> None:
         self.loads.load(container, requests, dict(self.context.environment), alive)
 
+    def watch_lifecycle(self, node: str, origin: Any) -> None:
+        self.lifecycles.watch(node, origin)
+
+    def change_states(self, node: str, transitions: list[int], where: Any) -> None:
+        self.lifecycles.change_states(node, transitions, where)
+
     def register_handler(self, handler: events.EventHandler) -> None:
         self._handlers.append(handler)
 
@@ -243,7 +254,8 @@ class LaunchService:
 
     # --- what the ending asks ---------------------------------------------------------------
     def _pending(self) -> bool:
-        return bool(self._queue or self._draining or self._timers or self.loads.out)
+        return bool(self._queue or self._draining or self._timers or self.loads.out or
+                    self.lifecycles.out)
 
     def _cancel(self) -> None:
         for timer, cancel in list(self._timers.items()):
@@ -251,6 +263,7 @@ class LaunchService:
                 timer.cancel()
                 del self._timers[timer]
         self.loads.cancel()
+        self.lifecycles.cancel()
 
     def _check_idle(self) -> None:
         self.ending.check()

@@ -136,3 +136,92 @@ def test_a_failing_or_raising_transition_goes_where_rcl_lifecycle_sends_it(ws):
     assert "configure ERROR unconfigured" in out and "on_error from configuring" in out, out
     assert "Caught exception in callback for transition 10: sensor not found" in out, out
     assert "configure SUCCESS inactive" in out and "shutdown SUCCESS finalized" in out, out
+
+
+def wait_state(ws, node: str, state: str, timeout: float = 60) -> None:
+    import time
+
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if ws.run("lifecycle", "get", node).stdout.startswith(state):
+            return
+        time.sleep(0.3)
+    raise AssertionError(f"{node} never {state}: {ws.run('lifecycle', 'get', node).stdout}")
+
+
+def test_a_launch_files_lifecycle_node_with_autostart_is_configured_and_activated(ws):
+    """launch_ros's `lifecycle_node` (YAML here; XML and Python alike) with `autostart`
+    (Jazzy): the launch configures and activates it once it runs, and logs its
+    transitions."""
+    ws.own_bus()
+    node_package(ws, "lc", {"talker.py": TALKER})
+    ws.write("managed.launch.yaml", """
+    launch:
+      - lifecycle_node: {pkg: lc, exec: talker.py, name: managed, namespace: fleet,
+                         autostart: true, output: screen}
+    """)
+    launch = ws.start("launch", "managed.launch.yaml", output="launch.txt")
+    try:
+        wait_state(ws, "/fleet/managed", "active [3]")
+        heard = ws.run("topic", "echo", "/fleet/lifecycle_chatter", "std_msgs/msg/String",
+                       "--once", "--timeout", "10")
+        assert "Lifecycle HelloWorld!" in heard.stdout, heard
+        ws.wait_for_output("/fleet/managed: inactive -> activating", 10, "launch.txt")
+    finally:
+        launch.send_signal(signal.SIGINT)
+        assert launch.wait(30) == 130
+
+
+EVENTS = """
+from launch import LaunchDescription
+from launch.actions import EmitEvent, LogInfo, RegisterEventHandler
+from launch.event_handlers import OnProcessStart
+from launch.events import matches_action
+from launch_ros.actions import LifecycleNode
+from launch_ros.event_handlers import OnStateTransition
+from launch_ros.events.lifecycle import ChangeState
+from lifecycle_msgs.msg import Transition
+
+
+def generate_launch_description():
+    node = LifecycleNode(package="lc", executable="talker.py", name="driven", namespace="",
+                         output="screen")
+    configure = EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                                            transition_id=Transition.TRANSITION_CONFIGURE))
+    activate = EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                                           transition_id=Transition.TRANSITION_ACTIVATE))
+    return LaunchDescription([
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=node, goal_state="inactive",
+            entities=[LogInfo(msg="CONFIGURED, now activating"), activate])),
+        RegisterEventHandler(OnProcessStart(target_action=node, on_start=[configure])),
+        node,
+    ])
+"""
+
+
+def test_change_state_events_and_on_state_transition_drive_a_node(ws):
+    """launch_ros's own pattern: configure when the process starts (EmitEvent of a
+    ChangeState matching the node), and on reaching `inactive`, log and activate."""
+    ws.own_bus()
+    node_package(ws, "lc", {"talker.py": TALKER})
+    ws.write("driven.launch.py", EVENTS)
+    launch = ws.start("launch", "driven.launch.py", output="launch.txt")
+    try:
+        wait_state(ws, "/driven", "active [3]")
+        ws.wait_for_output("CONFIGURED, now activating", 10, "launch.txt")
+    finally:
+        launch.send_signal(signal.SIGINT)
+        assert launch.wait(30) == 130
+
+
+def test_a_transition_the_node_refuses_is_reported(ws):
+    ws.own_bus()
+    node_package(ws, "lc", {"talker.py": TALKER})
+    ws.write("refused.launch.py", EVENTS.replace("on_start=[configure]",
+                                                 "on_start=[activate]"))
+    done = ws.run("launch", "refused.launch.py", "--duration", "6", timeout=90)
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "lifecycle node /driven: transition 'activate' failed: the node refused it" in \
+        done.stdout + done.stderr
+    assert "Traceback" not in done.stdout + done.stderr

@@ -3,6 +3,7 @@
 from launcher.api import (  # noqa: F401
     AppendEnvironmentVariable,
     DeclareLaunchArgument,
+    EmitEvent,
     ExecuteProcess,
     ForEach,
     ForLoop,

@@ -2,6 +2,7 @@
 
 from launcher.api import (  # noqa: F401
     ComposableNodeContainer,
+    LifecycleNode,
     LoadComposableNodes,
     Node,
     PushRosNamespace,

@@ -1,0 +1,1 @@
+"""launch_ros.events (launcher.api)."""

@@ -1,0 +1,54 @@
+"""launch_ros's lifecycle parts in launch descriptions: the `lifecycle_node` tag in XML and
+YAML, the Python names, and OnStateTransition's matching."""
+
+from __future__ import annotations
+
+from launcher.description.actions.lifecycle import (
+    ChangeState,
+    LifecycleNode,
+    OnStateTransition,
+    matches_action,
+)
+from launcher.runtime.lifecycle import StateTransition
+from tests.unit.helpers import xml_description, yaml_description
+
+
+def test_the_lifecycle_node_tag_in_xml_and_yaml():
+    xml = xml_description('<launch><lifecycle_node pkg="p" exec="e" name="n" namespace="ns" '
+                          'autostart="true"/></launch>')
+    yaml = yaml_description("""
+    launch:
+      - lifecycle_node: {pkg: p, exec: e, name: n, namespace: ns}
+    """)
+    for description in (xml, yaml):
+        (node,) = description.actions
+        assert isinstance(node, LifecycleNode)
+
+
+def test_on_state_transition_matches_its_node_and_states():
+    node, other = object(), object()
+    handler = OnStateTransition(target_lifecycle_node=node, goal_state="inactive",
+                                entities=[])
+    assert handler.matches(StateTransition(node, "/n", "configuring", "inactive"))
+    assert not handler.matches(StateTransition(node, "/n", "activating", "active"))
+    assert not handler.matches(StateTransition(other, "/o", "configuring", "inactive"))
+    every = OnStateTransition(start_state="activating", entities=[])
+    assert every.matches(StateTransition(other, "/o", "activating", "active"))
+    change = ChangeState(lifecycle_node_matcher=matches_action(node), transition_id=3)
+    assert change.matcher(node) and not change.matcher(other) and change.transition_id == 3
+
+
+def test_the_python_names_are_launch_ros():
+    from launcher import compat
+
+    compat.enable_in_process()  # (as the Python launch file loader does)
+    from launch.actions import EmitEvent  # noqa: F401 - (the shims, as a launch file has them)
+    from launch.events import matches_action as shim_matches
+    from launch_ros.actions import LifecycleNode as ShimNode
+    from launch_ros.event_handlers import OnStateTransition as ShimHandler
+    from launch_ros.events.lifecycle import ChangeState as ShimChange
+
+    assert shim_matches is matches_action and ShimHandler is OnStateTransition
+    assert ShimChange is ChangeState
+    made = ShimNode(package="p", executable="e", name="n", namespace="", autostart=True)
+    assert isinstance(made, LifecycleNode) and made.autostart is True
