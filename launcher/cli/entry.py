@@ -72,9 +72,11 @@ def main() -> int:
     global _running
     try:
         _running = True
-        from launcher.cli.quick import answer
+        code = None
+        if sys.argv[-1:] == ["list"]:  # a listing the fast path may answer (cli/quick.py);
+            from launcher.cli.quick import answer  # other commands never import it
 
-        code = answer(sys.argv[1:])
+            code = answer(sys.argv[1:])
         if code is None:
             from launcher.cli.main import main as run_command
 

@@ -57,6 +57,12 @@ class DryRun:
     def register_handler(self, handler: Any) -> None:
         pass
 
+    def watch_lifecycle(self, node: str, origin: Any) -> None:
+        pass
+
+    def change_states(self, node: str, transitions: list[int], where: Any) -> None:
+        pass
+
     def add_timer(self, period: float, callback: Callable[[], None],
                   cancel_on_shutdown: bool = True) -> None:
         pass

@@ -9,7 +9,6 @@ import json
 import os
 import re
 import shutil
-import socket
 import subprocess
 import sys
 import time
@@ -19,27 +18,12 @@ import pytest
 
 from launcher.bus.types import registry
 from tests.conftest import REPO, tagged_processes
+from tests.integration.test_viewer import free_port, wait_for
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 CLIENT = REPO / "tests" / "js" / "foxglove_client.js"
 TWIST = "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n" + "=" * 80 + \
     "\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n"
-
-
-def free_port() -> int:
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        return probe.getsockname()[1]
-
-
-def wait_for(predicate, timeout: float = 60.0):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        value = predicate()
-        if value:
-            return value
-        time.sleep(0.1)
-    raise AssertionError("timed out")
 
 
 def client(url: str, *steps: dict, timeout: float = 120) -> list[dict]:

@@ -56,6 +56,12 @@ class FakeService:
     def register_handler(self, handler: Any) -> None:
         self.handlers.append(handler)
 
+    def watch_lifecycle(self, node: str, origin: Any) -> None:
+        self.logs.append(("WATCH", node))
+
+    def change_states(self, node: str, transitions: list[int], where: Any) -> None:
+        self.logs.append(("CHANGE", f"{node} {transitions}"))
+
     def log(self, level: str, source: str, message: str) -> None:
         self.logs.append((level, message))
 

@@ -52,3 +52,16 @@ def test_the_python_names_are_launch_ros():
     assert ShimChange is ChangeState
     made = ShimNode(package="p", executable="e", name="n", namespace="", autostart=True)
     assert isinstance(made, LifecycleNode) and made.autostart is True
+
+
+def test_a_lifecycle_node_without_a_name_is_said_where_it_is():
+    import pytest
+
+    from launcher.errors import LaunchError
+    from tests.unit.helpers import run
+
+    description = xml_description('<launch>\n<lifecycle_node pkg="p" exec="e" '
+                                  'namespace="ns"/>\n</launch>', "lc.launch.xml")
+    with pytest.raises(LaunchError, match="lifecycle_node needs a name") as caught:
+        run(description)
+    assert caught.value.location.line == 2

@@ -37,13 +37,11 @@ class LifecycleNode(Node):
         self.node_fqn = f"{self._namespace(context).rstrip('/')}/{self._node_name(context)}"
         context.lifecycle_nodes.append(self)
         if context.service is not None:
-            watch = getattr(context.service, "watch_lifecycle", None)
-            if watch is not None:
-                watch(self.node_fqn, self)
-                if resolve(context, self.autostart, Kind.BOOL, "autostart"):
-                    context.service.change_states(  # type: ignore[attr-defined]
-                        self.node_fqn, [lifecycle.TRANSITIONS["configure"],
-                                        lifecycle.TRANSITIONS["activate"]], self.where)
+            context.service.watch_lifecycle(self.node_fqn, self)
+            if resolve(context, self.autostart, Kind.BOOL, "autostart"):
+                context.service.change_states(self.node_fqn, [
+                    lifecycle.TRANSITIONS["configure"], lifecycle.TRANSITIONS["activate"]],
+                    self.where)
         return done
 
 

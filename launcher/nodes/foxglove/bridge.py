@@ -26,7 +26,7 @@ from typing import Any
 from launcher.bus import graph, keys, names
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
-from launcher.bus.types import UnknownType, normalize, registry
+from launcher.bus.types import normalize, registry
 from launcher.errors import LaunchError
 
 SYNC_PERIOD = 1.0  # s between looks at the graph's topics and services
@@ -145,7 +145,7 @@ class Bridge:
     def _schema(self, type_name: str) -> Any:
         try:
             text = registry().definition(type_name)
-        except (UnknownType, LaunchError, Exception) as exc:  # noqa: BLE001 - said once
+        except Exception as exc:  # noqa: BLE001 - an unknown or unreadable type: said once
             self._warn_once(type_name, f"no schema for {type_name} ({exc}): its topics are "
                                        "not served")
             return None
