@@ -222,9 +222,11 @@ node.create_subscription("mujoco_sim/msg/PerformanceSensorMetrics",
 snaps = []
 node.create_subscription("mujoco_sim/msg/Image", "/world/cam/model/cam/link/link/sensor/snap/"
                          "image", lambda m: snaps.append(m.header.stamp.sec))
-end = time.time() + 30
+end = time.time() + 150  # (a busy machine renders slowly: the first frames may take long)
 while len(got) < 5 and time.time() < end:
     node.spin_once(0.1)
+if len(got) < 5:
+    sys.exit(f"no frame within 150 s from: {sorted({'rgb', 'depth', 'info', 'seg', 'lensed'} - set(got))}")
 node.spin(1.0)
 before = len(snaps)
 take = node.create_publisher("mujoco_sim/msg/Boolean", "/take")
@@ -262,7 +264,7 @@ def test_cameras_draw_what_is_there_in_a_renderer_of_their_own(sensor_ws):
         sensor_ws.wait_for_output("running", 60, "sim.out")
         probe = sensor_ws.write("probe.py", PROBE)
         done = subprocess.run([sys.executable, str(probe)], env=sensor_ws.env,
-                              capture_output=True, text=True, timeout=120)
+                              capture_output=True, text=True, timeout=240)
         assert done.returncode == 0, done.stderr
         seen = json.loads(done.stdout.splitlines()[-1])
         assert seen["idle"] == 0
