@@ -311,8 +311,14 @@ def _node(entity: Entity) -> Entity:
         node.attributes["name"] = entity.attributes.get("test-name") or \
             entity.attributes["type"]
     cwd = entity.attributes.get("cwd")
-    if cwd is not None:  # ROS 1's cwd is a word: ROS_HOME (default) or node
+    if cwd is not None:  # ROS 1's cwd is a word: ROS_HOME (the default) or node
         del node.attributes["cwd"]
+        word = str(cwd.value).strip()
+        if "$(" not in word and word.lower() not in ("ros_home", "node"):
+            raise ParseError(f"cwd='{word}': roslaunch's cwd is ROS_HOME or node",
+                             cwd.location)
+        node.attributes["home"] = Attribute("node" if word == "node" else "ROS_HOME",
+                                            cwd.location)
     required = entity.attributes.get("required")
     if entity.tag == "test" or (required is not None and
                                 str(required.value).strip().lower() == "true"):

@@ -1,9 +1,10 @@
 """Finding packages: workspaces, the checkout's `packages/`, built-ins, then ament prefixes.
 
 Search order (the first package of a name wins; a second one is a warning naming both):
-  1. every root in LAUNCHER_PACKAGE_PATH (colon-separated), scanned recursively like colcon:
-     a folder with a package.xml is a package; folders holding COLCON_IGNORE or AMENT_IGNORE,
-     hidden folders and Python caches are skipped;
+  1. every root in LAUNCHER_PACKAGE_PATH, then in ROS_PACKAGE_PATH (ROS 1's, as rospack
+     crawls it), colon-separated, scanned recursively like colcon: a folder with a package.xml
+     is a package; folders holding COLCON_IGNORE or AMENT_IGNORE, hidden folders and Python
+     caches are skipped;
   2. `packages/` of the launcher checkout the command runs in (found from the working folder);
   3. the packages built into launcher (`launcher/builtin/`);
   4. the install prefixes in AMENT_PREFIX_PATH, through the ament resource index, so a real
@@ -67,7 +68,8 @@ class PackageIndex:
                          cwd: Path | None = None) -> PackageIndex:
         env = os.environ if environ is None else environ
         roots = [SearchRoot(Path(p).expanduser(), "workspace")
-                 for p in env.get("LAUNCHER_PACKAGE_PATH", "").split(os.pathsep) if p]
+                 for variable in ("LAUNCHER_PACKAGE_PATH", "ROS_PACKAGE_PATH")
+                 for p in env.get(variable, "").split(os.pathsep) if p]
         checkout = find_checkout((cwd or Path.cwd()).resolve())
         if checkout is not None:
             roots.append(SearchRoot(checkout / "packages", "checkout"))

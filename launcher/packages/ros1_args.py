@@ -5,6 +5,7 @@ nodes (bus/ros_args.py), rospy and the entry-point runner (entry.py) all read th
 
 from __future__ import annotations
 
+import os
 import re
 
 WORD = re.compile(r"^(?:__\w+|_\w+|[~/A-Za-z][\w/~]*):=")
@@ -29,13 +30,18 @@ def as_ros2(word: str) -> list[str]:
 
 
 def ros2_layout(words: list[str]) -> list[str]:
-    """`words` with the ROS 1 ones before any `--ros-args` moved after it, as ROS 2's."""
+    """`words` with the ROS 1 ones before any `--ros-args` moved after it, as ROS 2's. A ROS 1
+    command line without `__ns:=` is in ROS_NAMESPACE's namespace, as rospy reads it (that is
+    how roslaunch gives a node its namespace)."""
     cut = words.index("--ros-args") if "--ros-args" in words else len(words)
     before, after = words[:cut], words[cut:]  # (after --ros-args: ROS 2's already)
     ros = [w for word in before if is_ros1(word) for w in as_ros2(word)]
     mine = [word for word in before if not is_ros1(word)]
     if len(mine) == len(before):
         return words
+    space = os.environ.get("ROS_NAMESPACE", "").strip()
+    if space and not any(word.startswith("__ns:=") for word in before):
+        ros += as_ros2(f"__ns:={space}")
     if after:
         return [*mine, after[0], *ros, *after[1:]]
     return [*mine, "--ros-args", *ros] if ros else mine

@@ -166,8 +166,9 @@ def test_hooks_find_pkg_share_and_node_command_line(workspace):
     files = [argv[i + 1] for i, w in enumerate(argv) if w == "--params-file"]
     assert len(files) == 6 and files[5].endswith("robot_bringup/config/params.yaml")
     assert out.count("KEY /fleet/r1/driver") == 5 and "KEY /**" in out
-    # launch_ros: the node's own remaps, then its scope's (rcl takes the first that matches)
-    assert argv[-4:] == ["-r", "odom:=odometry", "-r", "cmd_vel:=/fleet/cmd"]
+    # launch_ros: the scope's remaps (SetRemap), then the node's own (rcl takes the first that
+    # matches), as real ros2 launch orders them (tests/fidelity: ros2/xml/remap/*)
+    assert argv[-4:] == ["-r", "cmd_vel:=/fleet/cmd", "-r", "odom:=odometry"]
     assert "PARAM rate int 10" in out and "PARAM label str '10'" in out
     assert "PARAM rate_text str '10'" in out  # quoted in YAML: a string, as in launch_ros
     assert "PARAM limits.max float 1.5" in out and "PARAM use_sim_time bool True" in out

@@ -23,7 +23,7 @@ def main():
     args = sys.argv[1:]
     ros = args[args.index("--ros-args"):] if "--ros-args" in args else []
     mine = args[:len(args) - len(ros)]
-    params, remaps, name, ns = {}, [], "", ""
+    params, remaps, name, ns = {}, [], "", os.environ.get("ROS_NAMESPACE", "")
     for word in [w for w in mine if ":=" in w]:  # ROS 1's
         key, _, value = word.partition(":=")
         if key == "__name":
@@ -538,7 +538,7 @@ def test_a_nodes_command_line_is_roslauchs(ros1):
     """roslaunch/node_args.py create_local_process_args: the executable, `args` split as shlex
     splits them (substitutions inside quotes resolved first), the remappings as FROM:=TO,
     `__name:=`; nodeprocess.py adds `__log:=` and core.py's setup_env puts the namespace in
-    ROS_NAMESPACE (launcher also gives `__ns:=`, which rospy and roscpp read too). No
+    ROS_NAMESPACE (no `__ns:=`; the log file is named after the node's full name). No
     --ros-args: that is ROS 2's."""
     ros1.write("argv.launch", """<launch>
   <arg name="who" default="two words"/>
@@ -552,9 +552,9 @@ def test_a_nodes_command_line_is_roslauchs(ros1):
 """)
     got = reports(ros1, "argv.launch")["/fleet/driver"]
     assert got["args"] == ["a", "two words", "c"]
-    assert got["ros1"][:3] == ["in:=/out", "__name:=driver", "__ns:=/fleet"]
-    assert got["ros1"][3].startswith("__log:=") and got["ros1"][3].endswith("driver-1.log")
-    assert len(got["ros1"]) == 4 and got["namespace_env"] == "/fleet/"
+    assert got["ros1"][:2] == ["in:=/out", "__name:=driver"]
+    assert got["ros1"][2].startswith("__log:=") and got["ros1"][2].endswith("/fleet-driver-1.log")
+    assert len(got["ros1"]) == 3 and got["namespace_env"] == "/fleet"
     assert got["params"]["gain"] == 2  # (launcher's own nodes get them from the environment)
 
 
@@ -585,8 +585,8 @@ def test_roslaunchs_views_load_the_launch_and_start_nothing(ros1):
 
     assert roslaunch("--nodes").split() == ["/fleet/driver", "/inner_node", "/toucher"]
     line = roslaunch("--args", "fleet/driver")
-    assert "GREETING='hi there'" in line and "ROS_NAMESPACE=/fleet/" in line
-    assert line.rstrip().split(" ")[-5:-1] == ["a", "one", "__name:=driver", "__ns:=/fleet"]
+    assert "GREETING='hi there'" in line and "ROS_NAMESPACE=/fleet " in line
+    assert line.rstrip().split(" ")[-4:-1] == ["a", "one", "__name:=driver"]
     inner = ros1.root / "src" / "tools" / "launch" / "inner.launch"
     assert roslaunch("--find-node", "/inner_node").strip() == str(inner)
     assert roslaunch("--files").split() == [str(ros1.root / "views.launch"), str(inner)]

@@ -86,12 +86,12 @@ def _files(description: Any) -> list[Path]:
 
 
 def _node_name(spec: Any) -> str | None:
-    """A node's full name from its command line (roslaunch's __name:= and __ns:=, or ROS 2's
-    -r __node:= and __ns:=); None for a process that is no named node."""
+    """A node's full name from its command line (roslaunch's __name:= with ROS_NAMESPACE,
+    or ROS 2's -r __node:= and __ns:=); None for a process that is no named node."""
     words = [w for w in spec.argv if w.startswith(("__name:=", "__ns:=", "__node:="))]
     if not any(w.startswith(("__name:=", "__node:=")) for w in words):
         return None
-    name = space = ""
+    name, space = "", spec.env.get("ROS_NAMESPACE", "")
     for word in words:
         key, _, value = word.partition(":=")
         if key == "__ns":

@@ -114,11 +114,13 @@ class ExecuteProcess(Action):
         return self.process_spec(context, argv, self.environment(context), base)
 
     def process_spec(self, context: LaunchContext, argv: list[str], env: dict[str, str],
-                     base: str) -> ProcessSpec:
-        """The process to start, from its command line, environment and label base."""
+                     base: str, cwd: str | None = None) -> ProcessSpec:
+        """The process to start, from its command line, environment and label base (and its
+        working folder, when the action decides it otherwise than by `cwd`)."""
         if not argv:
             raise ExecutionError("the command line is empty")
-        cwd = None if self.cwd is None else perform_text(context, self.cwd)
+        if cwd is None and self.cwd is not None:
+            cwd = perform_text(context, self.cwd)
         program = _check_runnable(argv[0], env, cwd)
         mode = resolve(context, self.output or "log", Kind.TEXT, "output",
                        _field_spec(self, "output"))

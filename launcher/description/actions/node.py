@@ -85,6 +85,9 @@ class Node(ExecuteProcess):
     ros1: Any = attr(Kind.BOOL, False, doc="roslaunch's command line: ARGS, then FROM:=TO, "
                                            "__name:=, __ns:= and __log:=, the namespace also "
                                            "in ROS_NAMESPACE (no --ros-args).")
+    home: Any = attr(Kind.TEXT, doc="roslaunch's cwd word: ROS_HOME (the default: the node "
+                                    "runs in $ROS_HOME, else ~/.ros) or node (its "
+                                    "executable's folder).")
     name: Any = None  # the label comes from exec_name / node_name
 
     def __post_init__(self) -> None:
@@ -124,14 +127,13 @@ class Node(ExecuteProcess):
             remaps: list[tuple[str, str]] = []
             for source, target in [*params.remaps(context), *own]:
                 remaps = [r for r in remaps if r[0] != source] + [(source, target)]
-        else:  # launch_ros: the node's own, then its scope's (rcl takes the first match)
-            remaps = [*own, *params.remaps(context)]
+        else:  # launch_ros's Node: its scope's (SetRemap), then its own; rcl takes the
+            remaps = [*params.remaps(context), *own]  # first match, so the scope's win
         argv = [*self.launch_prefix(context), *found.argv,
                 *self._words(context, self.arguments)]
         if ros1:  # as roslaunch's node_args.create_local_process_args builds it
             argv += [f"{source}:={target}" for source, target in remaps]
-            argv += [f"__name:={node}"] if node else []
-            argv += [f"__ns:={space}"] if space else []
+            argv += [f"__name:={node}"] if node else []  # the namespace: ROS_NAMESPACE alone
         else:
             argv += ["--ros-args", *self._words(context, self.ros_arguments)]
             argv += ["-r", f"__node:={node}"] if node else []
@@ -146,16 +148,28 @@ class Node(ExecuteProcess):
         if context.graph_parameters_file is not None:  # being loaded: rospy waits for them
             env[GRAPH_PARAMETERS] = str(context.graph_parameters_file)
         if ros1:
-            if space:
-                env["ROS_NAMESPACE"] = space.rstrip("/") + "/"
+            if space:  # node_args: the namespace without its trailing slash
+                env["ROS_NAMESPACE"] = space.rstrip("/") or "/"
             if words:  # its parameters, for launcher's own nodes (rospy reads the server)
                 env[NODE_PARAMETERS] = json.dumps(words)
-        spec = self.process_spec(context, argv, env, base)
-        if ros1:
-            log = (context.log_dir or Path(tempfile.gettempdir())) / f"{spec.label}.log"
+        cwd = self._ros1_cwd(context, argv[0], env) if ros1 else None
+        spec = self.process_spec(context, argv, env, base, cwd)
+        if ros1:  # nodeprocess: the log file is named after the node's full name
+            stem = "-".join(p for p in (*space.split("/"), spec.label) if p)
+            log = (context.log_dir or Path(tempfile.gettempdir())) / f"{stem}.log"
             spec.argv = [*spec.argv, f"__log:={log}"]
         spec.joins_graph = True
         return spec
+
+    def _ros1_cwd(self, context: LaunchContext, program: str, env: dict[str, str]) -> str:
+        """nodeprocess.LocalProcess.start: the node's folder for cwd="node", else ROS home
+        (made when missing)."""
+        word = perform_text(context, self.home) if self.home is not None else "ROS_HOME"
+        if word == "node":
+            return os.path.dirname(program) or "."
+        home = env.get("ROS_HOME") or os.path.join(os.path.expanduser("~"), ".ros")
+        os.makedirs(home, exist_ok=True)
+        return home
 
     def _node_name(self, context: LaunchContext) -> str:
         return perform_text(context, self.node_name) if self.node_name is not None else ""

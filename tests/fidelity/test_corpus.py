@@ -1,0 +1,91 @@
+"""Every corpus case through launcher, compared with what the real tool did (expected/).
+
+The recordings come from real roslaunch and real ros2 launch (tests/fidelity/record.py), so
+this test needs no ROS. A difference fails the case unless choices.py lists it, with the
+reason, as launcher's deliberate choice; then launcher must give the chosen outcome instead.
+The cases run a few at a time (each is mostly waiting on process start) and every test
+compares one case.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import tempfile
+import time
+import uuid
+from concurrent.futures import Future, ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import tagged_processes
+from tests.fidelity.choices import CHOICES
+from tests.fidelity.corpus import Case, cases
+from tests.fidelity.known import KNOWN_DIFFERENCES
+from tests.fidelity.normalise import outcome
+from tests.fidelity.record import EXPECTED
+from tests.fidelity.runner import launcher_tool
+
+CASES = cases()
+JOBS = 3
+
+
+@pytest.fixture(scope="module")
+def runs(request):
+    """Each selected case's launcher outcome, computed a few at a time."""
+    chosen = [item.callspec.params["case"] for item in request.session.items
+              if getattr(item, "callspec", None) and "case" in item.callspec.params
+              and item.module.__name__ == __name__]
+    tag = uuid.uuid4().hex
+    scratch = Path(tempfile.mkdtemp(prefix="fidelity-"))
+    pool = ThreadPoolExecutor(JOBS)
+
+    def run(case: Case) -> dict:
+        folder = scratch / case.name.replace("/", "__")
+        tool = launcher_tool(case.flavour, folder / "run")
+        tool.env["LAUNCHER_TEST_TAG"] = tag
+        return outcome(tool.run(case, folder), folder, case.flavour)
+
+    futures: dict[str, Future] = {case.name: pool.submit(run, case) for case in chosen}
+    yield futures
+    pool.shutdown(wait=True)
+    deadline = time.monotonic() + 5
+    while tagged_processes(tag) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not tagged_processes(tag), "the corpus's launches left processes behind"
+
+
+def recorded(case: Case) -> dict:
+    path = EXPECTED / f"{case.name}.json"
+    assert path.exists(), f"{case.name} has no recording: python -m tests.fidelity.record --stale"
+    data = json.loads(path.read_text())
+    assert data["case"] == case.digest, \
+        f"{case.name} changed since it was recorded: python -m tests.fidelity.record --stale"
+    return data["outcome"]
+
+
+def _marked(case: Case):
+    if case.name not in KNOWN_DIFFERENCES:
+        return case
+    return pytest.param(case, marks=pytest.mark.xfail(
+        strict=True, reason="a known difference, not yet fixed (tests/fidelity/known.py)"))
+
+
+@pytest.mark.parametrize("case", [_marked(case) for case in CASES],
+                         ids=[case.name for case in CASES])
+def test_launcher_agrees_with_the_real_tool(case: Case, runs) -> None:
+    expected = recorded(case)
+    choice = CHOICES.get(case.name)
+    if choice is not None:
+        expected = choice.apply(expected)
+    got = runs[case.name].result(timeout=120)
+    assert got == expected, _difference(expected, got, choice)
+
+
+def _difference(expected: dict, got: dict, choice) -> str:
+    want = json.dumps(expected, indent=1, sort_keys=True).splitlines()
+    have = json.dumps(got, indent=1, sort_keys=True).splitlines()
+    diff = "\n".join(difflib.unified_diff(want, have, "the real tool" + (
+        " (with launcher's listed choice)" if choice else ""), "launcher", lineterm=""))
+    return f"launcher differs from the recording:\n{diff}"
