@@ -12,11 +12,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import performance  # noqa: E402
 import reference_cli  # noqa: E402
+import reference_fidelity  # noqa: E402
 import reference_launch  # noqa: E402
 import reference_types  # noqa: E402
 
 for name, module in (("cli", reference_cli), ("launch-files", reference_launch),
-                     ("types", reference_types)):
+                     ("types", reference_types), ("fidelity", reference_fidelity)):
     with mkdocs_gen_files.open(f"reference/{name}.md", "w") as page:
         page.write(module.page())
 

@@ -41,3 +41,13 @@ def IfCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python API na
 
 def UnlessCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python API name
     return Condition(to_text(value), negate=True)
+
+
+def entry_applies(context: LaunchContext, entry: object) -> bool:
+    """Whether a node's entry (env, remap, param) holds: roslaunch takes if= and unless= on
+    a node's children too (`only_if`, `only_unless`; launch_ros's entries take neither)."""
+    for field, negate in (("only_if", False), ("only_unless", True)):
+        text = getattr(entry, field, None)
+        if text is not None and not Condition(text, negate).evaluate(context):
+            return False
+    return True

@@ -225,13 +225,16 @@ def _body(children: list[Entity]) -> list[Entity]:
     return made
 
 
+ENTRY_CONDITIONS = ("only_if", "only_unless")  # a node child's if= and unless=, as entries
+
+
 def _copy(entity: Entity, tag: str, names: dict[str, str]) -> Entity:
     """`entity` as `tag`, its attributes renamed by `names` (old → new; others dropped)."""
     made = Entity(tag, entity.location, nested_in_children=True)
     for old, new in names.items():
         if old in entity.attributes:
             made.attributes[new] = entity.attributes[old]
-    for condition in ("if", "unless"):
+    for condition in ("if", "unless", *ENTRY_CONDITIONS):
         if condition in entity.attributes:
             made.attributes[condition] = entity.attributes[condition]
     return made
@@ -239,7 +242,7 @@ def _copy(entity: Entity, tag: str, names: dict[str, str]) -> Entity:
 
 def _known(entity: Entity, allowed: set[str]) -> None:
     for name, attribute in entity.attributes.items():
-        if name not in allowed | {"if", "unless"}:
+        if name not in allowed | {"if", "unless", *ENTRY_CONDITIONS}:
             raise ParseError(f"roslaunch's <{entity.tag}> has no attribute '{name}'; it takes "
                              f"{', '.join(sorted(allowed))}", attribute.name_location)
 
@@ -288,8 +291,16 @@ def _entity(entity: Entity) -> list[Entity]:
         return [_copy(entity, "set_env", {"name": "name", "value": "value"})]
     if tag == "machine":  # this host's (a remote one is refused at its nodes)
         return []
-    raise ParseError(f"roslaunch has no tag <{tag}> (ROS 1's tags: arg, node, param, "
-                     "rosparam, group, include, remap, env, machine, test)", entity.location)
+    return [_warning(f"{entity.location}: roslaunch has no tag <{tag}>; it is ignored, as "
+                     "roslaunch ignores it (ROS 1's tags: arg, node, param, rosparam, group, "
+                     "include, remap, env, machine, test)", entity.location)]
+
+
+def _warning(text: str, where: Location) -> Entity:
+    """What roslaunch only warns about (and then goes on): said when the launch runs."""
+    made = Entity("log", where, nested_in_children=True)
+    made.attributes.update(message=_text(text, where), level=_text("warn", where))
+    return made
 
 
 NODE_ATTRS = {"pkg": "pkg", "type": "exec", "name": "name", "ns": "namespace", "args": "args",
@@ -326,6 +337,9 @@ def _node(entity: Entity) -> Entity:
     if "machine" in entity.attributes:
         node.attributes.pop("machine", None)
     for child in entity.children:
+        for condition, field in (("if", "only_if"), ("unless", "only_unless")):
+            if condition in child.attributes:  # roslaunch takes them on a node's children too
+                child.attributes[field] = child.attributes.pop(condition)
         if child.tag == "param":
             node.children.append(_param_entry(child))
         elif child.tag == "rosparam":
@@ -380,7 +394,14 @@ def _param_entry(entity: Entity) -> Entity:
     made = Entity("param", entity.location, nested_in_children=True)
     made.attributes["name"] = _private(entity)
     _param_attrs(entity, made)
+    _carry_conditions(entity, made)
     return made
+
+
+def _carry_conditions(entity: Entity, made: Entity) -> None:
+    for condition in ENTRY_CONDITIONS:
+        if condition in entity.attributes:
+            made.attributes[condition] = entity.attributes[condition]
 
 
 def _private(entity: Entity) -> Attribute:
@@ -446,7 +467,9 @@ def _rosparam_entries(entity: Entity) -> list[Entity]:
     """A node's `<rosparam>`: parameters from ROS 1 YAML (a plain map)."""
     if not _loads(entity):
         return []  # a node's own dump or delete: nothing to act on
-    return [_rosparam_into(entity, Entity("param", entity.location, nested_in_children=True))]
+    made = _rosparam_into(entity, Entity("param", entity.location, nested_in_children=True))
+    _carry_conditions(entity, made)
+    return [made]
 
 
 def _global_rosparam(entity: Entity) -> list[Entity]:

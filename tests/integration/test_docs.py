@@ -17,6 +17,8 @@ from launcher.cli.main import COMMANDS
 from launcher.description.registry import Registry
 from launcher.nodes.conversions import conversions
 from tests.conftest import REPO
+from tests.fidelity.corpus import cases
+from tests.fidelity.known import KNOWN_DIFFERENCES
 
 
 @pytest.fixture(scope="module")
@@ -42,6 +44,17 @@ def test_the_cli_reference_has_every_command_and_option(site):
     for words in ("launcher topic echo", "--qos-reliability", "launcher sim snapshot",
                   "--gui-rate", "launcher gz topic", "--json-output", "launcher rosparam dump"):
         assert words in page, words
+
+
+def test_the_fidelity_page_gives_the_corpus_counts_and_every_open_difference(site):
+    page = text(site / "reference" / "fidelity" / "index.html")
+    corpus = cases()
+    ros1 = sum(case.flavour == "ros1" for case in corpus)
+    assert re.search(rf"ROS 1 \(roslaunch XML\)\s*{ros1}\b", page), page[:2000]
+    agree = len(corpus) - len(KNOWN_DIFFERENCES)
+    assert re.search(rf"agree with the real tool\s*{agree}\b", page), page[:2000]
+    for name in KNOWN_DIFFERENCES:
+        assert name in page, name
 
 
 def test_the_launch_file_reference_has_every_tag_substitution_and_field_doc(site):

@@ -10,6 +10,7 @@ from launcher.description.action import Action
 from launcher.description.actions.event_handlers import OnProcessExit, OnProcessStart
 from launcher.description.actions.shutdown import Shutdown
 from launcher.description.command_line import join_command, split_command
+from launcher.description.condition import entry_applies
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
@@ -32,6 +33,9 @@ OUTPUT_MODES = {
 class EnvEntry:
     name: Text_ = attr(Kind.TEXT, required=True, doc="Variable name.")
     value: Text_ = attr(Kind.TEXT, required=True, doc="Its value for this process.")
+    only_if: Any = attr(Kind.TEXT, doc="roslaunch's if= on a node's child: the entry holds "
+                                       "only when true.")
+    only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
 
 
 @action("executable")
@@ -104,7 +108,8 @@ class ExecuteProcess(Action):
     def environment(self, context: LaunchContext) -> dict[str, str]:
         env = dict(context.environment)
         for entry in self.additional_env:
-            env[perform_text(context, entry.name)] = perform_text(context, entry.value)
+            if entry_applies(context, entry):
+                env[perform_text(context, entry.name)] = perform_text(context, entry.value)
         return env
 
     def spec(self, context: LaunchContext) -> ProcessSpec:

@@ -27,6 +27,7 @@ from launcher.description.actions.param_entry import (
     params_folder,
     python_parameters,
 )
+from launcher.description.condition import entry_applies
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
@@ -57,6 +58,9 @@ INSTEAD = ("the robot's data in Foxglove: `launcher run foxglove_bridge foxglove
 class RemapEntry:
     source: Text_ = attr(Kind.TEXT, name="from", required=True, doc="The name in the node.")
     target: Text_ = attr(Kind.TEXT, name="to", required=True, doc="The name it becomes.")
+    only_if: Any = attr(Kind.TEXT, doc="roslaunch's if= on a node's child: the entry holds "
+                                       "only when true.")
+    only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
 
 
 @action("node")
@@ -120,7 +124,7 @@ class Node(ExecuteProcess):
             check_node_name(node, self.where)
         check_namespace(space, self.where)
         own = [(perform_text(context, r.source), perform_text(context, r.target))
-               for r in self.remappings]
+               for r in self.remappings if entry_applies(context, r)]
         words = self._parameter_arguments(context, node, space, node or found.name)
         ros1 = resolve(context, self.ros1, Kind.BOOL, "ros1")
         if ros1:  # roslaunch's LoaderContext.remap_args: one per `from`, the latest, in order

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.description import parameters as params
+from launcher.description.condition import entry_applies
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
@@ -37,6 +38,9 @@ class ParamEntry:
                                                       "parameters.")
     rosparam: Text_ | None = attr(Kind.TEXT, doc="roslaunch's rosparam: the YAML, inline.")
     children: list[Any] = attr(Kind.ENTRIES, name="param", doc="Nested parameters.")
+    only_if: Any = attr(Kind.TEXT, doc="roslaunch's if= on a node's child: the entry holds "
+                                       "only when true.")
+    only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
     group: bool = False  # a Python dict: one group of named children, one params file
     where: Any = None  # where the entry is written, for its errors
 
@@ -63,6 +67,8 @@ def parameter_groups(context: LaunchContext, entries: list[ParamEntry],
     is one group of values; each `from` is its file."""
     groups: list[Path | dict[str, Any]] = []
     for entry in entries:
+        if not entry_applies(context, entry):
+            continue
         if entry.from_file is not None:
             groups.append(_from_file(context, entry, entry.where or where))
             continue

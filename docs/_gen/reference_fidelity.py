@@ -1,0 +1,64 @@
+"""The fidelity page: the differential corpus's counts, launcher's deliberate differences
+with their reasons, and the differences still open, all read from tests/fidelity."""
+
+from __future__ import annotations
+
+import sys
+from collections import Counter
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+
+from tests.fidelity.choices import CHOICES  # noqa: E402
+from tests.fidelity.corpus import cases  # noqa: E402
+from tests.fidelity.known import KNOWN_DIFFERENCES  # noqa: E402
+
+INTRO = """# Fidelity: launcher against the real tools
+
+A launch file must mean what ROS makes it mean. The repo's differential corpus
+(`tests/fidelity/`) holds small launch files generated per tag, attribute, substitution and
+nesting, each with a probe node that records how it was started: its argv, the environment a
+launch sets, its working folder, the parameter files it was given and, for ROS 1, the whole
+parameter tree as the master holds it when the node starts. Each case was run through real
+roslaunch 1.15 (Debian's) and real ros2 launch (launch 3.7.1, launch_ros 0.28.0 over rclpy's
+Kilted wheels), and what they did is recorded in `tests/fidelity/expected/`. The test suite
+runs every case through launcher and compares, so it needs no ROS install.
+
+Re-record after adding cases (the real tools are installed apart, under `.fidelity/`, never
+on your PATH; ROS 2's launch is installed from checkouts you give):
+
+```sh
+python -m tests.fidelity.record --stale --ros2-source DIR   # DIR/launch, DIR/launch_ros
+python -m tests.fidelity.compare                            # which cases differ now
+```
+"""
+
+
+def page() -> str:
+    corpus = cases()
+    flavours = Counter(case.flavour for case in corpus)
+    chosen = [case.name for case in corpus if case.name in CHOICES]
+    known = sorted(name for name in KNOWN_DIFFERENCES)
+    agree = len(corpus) - len(chosen) - len(known)
+    lines = [INTRO, "## The corpus now", "",
+             "| | cases |", "| --- | --- |",
+             f"| ROS 1 (roslaunch XML) | {flavours['ros1']} |",
+             f"| ROS 2 (XML and YAML) | {flavours['ros2']} |",
+             f"| agree with the real tool | {agree} |",
+             f"| differ on purpose (below) | {len(chosen)} |",
+             f"| differ, not yet fixed (below) | {len(known)} |", "",
+             "## Where launcher differs on purpose", ""]
+    if chosen:
+        lines += ["| case | what launcher does instead, and why |", "| --- | --- |"]
+        lines += [f"| `{name}` | {CHOICES[name].reason} |" for name in chosen]
+    else:
+        lines.append("No case of the corpus: launcher does what the real tool does.")
+    lines += ["", "Beyond the cases: roslaunch registers its own XML-RPC server under "
+              "`/roslaunch/uris` on the parameter server; launcher has no such server and "
+              "sets nothing there. A ROS 1 launch whose nodes have all ended ends, as "
+              "`ros2 launch` does, where roslaunch keeps its master up until Ctrl-C.", "",
+              "## Differences not yet fixed", "",
+              "Each is a test expected to fail until it is fixed (then it must be taken off "
+              "the list: the test fails on an unexpected pass).", ""]
+    lines += [f"- `{name}`" for name in known]
+    return "\n".join(lines) + "\n"
