@@ -252,7 +252,7 @@ def arguments() -> Iterator[dict[str, Any]]:
         "include-leaks": '<include file="$(dirname)/inc.launch.xml"/>' +
                          node(attrs=' args="$(var leaked) $(var a)"'),
         "include-in-group": '<group><include file="$(dirname)/inc.launch.xml"/></group>' +
-                            node(attrs=' args="$(var a)"'),
+                            node(attrs=' args="$(var a outside)"'),
         "include-arg-from-command-line": '<include file="$(dirname)/inc.launch.xml"/>',
         "include-package": '<include file="$(find-pkg-share probe)/launch/probe.launch.xml">'
                            '<arg name="who" value="me"/></include>',
