@@ -45,7 +45,6 @@ def main():
         "env": {key: value for key, value in os.environ.items()
                 if key.startswith(("ROS_", "PROBE_")) and key != "PROBE_OUT"},
         "parameter_files": parameter_files(argv),
-        "time": time.time(),
     }
     if os.environ.get("PROBE_ROS1") == "1":
         try:
