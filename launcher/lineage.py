@@ -12,7 +12,6 @@ double-fork into a daemon. So a launch holds on to its processes two ways:
 
 A process that must outlive the launch (the graph's router) is started with `detached()`:
 without the marks and with LAUNCHER_DETACHED set, which every sweep leaves alone.
-GRAPH_PARAMETERS tells a launch's nodes when its parameters are on the graph's server.
 """
 
 from __future__ import annotations
@@ -26,10 +25,6 @@ from pathlib import Path
 
 MARK_PREFIX = "LAUNCHER_LAUNCH_"
 DETACHED = "LAUNCHER_DETACHED"
-# Set on a launch's nodes while its ROS 1 parameters are being put on the graph's parameter
-# server: the file they are loaded from; FILE.loaded appears once they are there (or the
-# loading gave up), so a node asks the server only then, as roslaunch sets them first.
-GRAPH_PARAMETERS = "LAUNCHER_GRAPH_PARAMETERS"
 # Set on a node a roslaunch file starts: its parameters as ROS 2's `--ros-args` words (JSON),
 # for launcher's own nodes, since its command line is ROS 1's (rospy reads the server); the
 # node takes them out of its environment, so that no process it starts inherits them.

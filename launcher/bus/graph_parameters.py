@@ -14,18 +14,14 @@ name above them gives the dict back, as ROS 1's server does.
 
 from __future__ import annotations
 
-import os
 import threading
 import time
 from collections.abc import Callable, Mapping
-from pathlib import Path
 from typing import Any
 
 from launcher.bus import parameters as params
 from launcher.bus.messages import build
 from launcher.errors import LaunchError
-from launcher.lineage import GRAPH_PARAMETERS
-from launcher.private import open_private
 
 NAME = "_parameter_server"  # hidden (a leading _), as ROS 2 hides infrastructure
 NODE = f"/{NAME}"
@@ -64,6 +60,14 @@ def leaves(ros1: str, value: Any) -> dict[str, Any]:
     return {key(ros1): value}
 
 
+def dump_text(value: Any) -> str:
+    """A value (a tree: a dict) as rosparam dump writes it: YAML, without its end marker."""
+    import yaml
+
+    text = yaml.safe_dump(value, default_flow_style=None, allow_unicode=True, sort_keys=True)
+    return text[:-5] if text.endswith("\n...\n") else text.rstrip("\n")
+
+
 def host(session: Any) -> Callable[[], None]:
     """Serve the parameter server on `session` (the router's), its callbacks on a thread of
     their own; returns what stops it."""
@@ -81,24 +85,9 @@ def host(session: Any) -> Callable[[], None]:
     return stop
 
 
-def loaded_marker(path: str) -> str:
-    return path + ".loaded"
-
-
-def mark_loaded(path: str) -> None:
-    """Say the launch's parameters are on the server (or that loading them gave up)."""
-    open_private(Path(loaded_marker(path)), "w").close()
-
-
-def wait_for_launch(environ: Mapping[str, str], timeout: float) -> None:
-    """Return once the parameters of the launch that started this node are on the server
-    (see lineage.GRAPH_PARAMETERS), or after `timeout`; at once when none are coming."""
-    path = environ.get(GRAPH_PARAMETERS)
-    if not path:
-        return
-    deadline = time.monotonic() + timeout
-    while not os.path.exists(loaded_marker(path)) and time.monotonic() < deadline:
-        time.sleep(0.01)
+def _related(one: str, other: str) -> bool:
+    """Whether one of the two names is the other's, or is below it."""
+    return one == other or one.startswith(other + ".") or other.startswith(one + ".")
 
 
 class GraphParameters:
@@ -167,11 +156,29 @@ class GraphParameters:
         self._set(leaves(ros1, value))
 
     def set_many(self, values: Mapping[str, Any]) -> None:
-        """Parameters by ROS 1 name, in one request."""
+        """Parameters by ROS 1 name, in one request, in their order, as ROS 1's master sets
+        them one after the other: a value replaces what was below its name (`/a` set after
+        `/a/b`), and a name below a value replaces that value (`/a/b` set after `/a`)."""
         found: dict[str, Any] = {}
         for name, value in values.items():
-            found.update(leaves(name, value))
+            for leaf, item in leaves(name, value).items():
+                for other in [k for k in found if _related(k, leaf)]:
+                    del found[other]
+                found[leaf] = item
+        self._clear_around(found)
         self._set(found)
+
+    def _clear_around(self, found: dict[str, Any]) -> None:
+        """What the server holds above or below the names about to be set."""
+        above = {name.rsplit(".", i)[0] for name in found for i in range(1, name.count(".") + 1)}
+        doomed = self._present(sorted(above - set(found))) if above else []
+        if found:
+            below = self._call(params.LIST, "list_parameters",
+                               {"prefixes": [n + "." for n in sorted(found)]}).result.names
+            doomed += [n for n in below if n not in found]
+        if doomed:
+            self._call(params.SET, "set_parameters", {"parameters": [
+                {"name": n, "value": params.to_message(None)} for n in set(doomed)]})
 
     def _set(self, values: dict[str, Any]) -> None:
         request = {"parameters": [{"name": n, "value": params.to_message(v)}

@@ -81,10 +81,9 @@ def _with_server(args: argparse.Namespace, work: Any) -> Any:
 
 
 def _yaml(value: Any) -> str:
-    import yaml
+    from launcher.bus.graph_parameters import dump_text
 
-    text = yaml.safe_dump(value, default_flow_style=None, allow_unicode=True, sort_keys=True)
-    return text[:-5] if text.endswith("\n...\n") else text.rstrip("\n")
+    return dump_text(value)
 
 
 def run_list(args: argparse.Namespace) -> int:

@@ -34,7 +34,9 @@ FILE = "<file>"
 REMAPS = "<remaps>"  # a tuple of (from, to)
 LIST_TYPES = {"list_of_str": "str", "list_of_int": "int", "list_of_float": "float",
               "list_of_bool": "bool"}
-TYPES = ("str", "int", "float", "bool", "yaml", *LIST_TYPES, "auto")  # auto: roslaunch's
+# roslaunch's type= (its loader.convert_value), as `ros1:<type>`; ros1:auto for none given
+ROS1_TYPES = ("str", "string", "int", "double", "bool", "boolean", "yaml", "auto")
+TYPES = ("str", "int", "float", "bool", "yaml", *LIST_TYPES, *(f"ros1:{t}" for t in ROS1_TYPES))
 _TRUE = ("true", "yes", "on", "1")
 _FALSE = ("false", "no", "off", "0")
 
@@ -61,6 +63,8 @@ def value_of(context: LaunchContext, value: Written | list[Written], kind: str |
     the written text is converted to it (launch_ros refuses `value: 42` with `type: str`;
     launcher gives "42"). `separator` (XML's `value-sep`) splits the text into a list.
     """
+    if kind is not None and kind.startswith("ros1:") and isinstance(value, Written):
+        return roslaunch_value(perform_text(context, value.text), kind[len("ros1:"):], name)
     if isinstance(value, Written) and separator:
         text = perform_text(context, value.text)
         value = [Written((Text(part),)) for part in text.split(separator)]
@@ -126,12 +130,6 @@ def _convert(text: str, kind: str, name: str) -> Any:
         except ValueError:
             raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
                                  f" {kind}") from None
-    if kind == "auto":  # roslaunch's typing of an untyped value: a number, true/false, else
-        try:  # text (loader.convert_value: Python's float() and int(), so 1e3 stays text)
-            return float(text) if "." in text else int(text)
-        except ValueError:
-            low = text.lower()
-            return low == "true" if low in ("true", "false") else text
     if kind == "bool":
         low = text.strip().lower()
         if low not in _TRUE + _FALSE:
@@ -140,6 +138,55 @@ def _convert(text: str, kind: str, name: str) -> Any:
         return low in _TRUE
     raise ExecutionError(f"param '{name}': unknown type '{kind}'; expected one of "
                          f"{', '.join(TYPES)}{did_you_mean(kind, TYPES)}")
+
+
+def roslaunch_value(text: str, kind: str, name: str) -> Any:
+    """`text` as roslaunch's loader.convert_value types it: `auto` (no type=) is a float
+    with a dot, an int (Python's int(), but 1_000 stays text), true/false, else the text;
+    `bool` takes true/false/1/0 alone; `yaml` may be a map (a namespace of parameters)."""
+    if kind == "auto":
+        try:
+            if "." in text:
+                return float(text)
+            if "_" not in text:
+                return int(text)
+        except ValueError:
+            pass
+        return text.lower() == "true" if text.lower() in ("true", "false") else text
+    if kind in ("str", "string"):
+        return text
+    if kind in ("int", "double"):
+        try:
+            return int(text) if kind == "int" else float(text)
+        except ValueError:
+            raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
+                                 f" {kind}") from None
+    if kind in ("bool", "boolean"):
+        low = text.lower().strip()
+        if low not in ("true", "1", "false", "0"):
+            raise ExecutionError(f"param '{name}': '{text}' is not a bool; roslaunch's bool is "
+                                 "true, false, 1 or 0")
+        return low in ("true", "1")
+    if kind == "yaml":
+        import yaml  # only where a value is read or written: a launch's start needs none
+
+        try:
+            return yaml.safe_load(text)
+        except yaml.YAMLError as exc:
+            raise ExecutionError(f"param '{name}': not valid YAML: {exc}") from None
+    raise ExecutionError(f"param '{name}': unknown type '{kind}'; roslaunch's types are "
+                         f"{', '.join(ROS1_TYPES)}{did_you_mean(kind, ROS1_TYPES)}")
+
+
+def unrolled(name: str, value: Any) -> dict[str, Any]:
+    """A parameter whose value is a map (roslaunch's type="yaml"), as the parameters below
+    `name` (dotted), as roslaunch's loader unrolls it; any other value as itself."""
+    if not isinstance(value, dict):
+        return {name: value}
+    out: dict[str, Any] = {}
+    for key, inner in value.items():
+        out.update(unrolled(f"{name}.{key}" if name else str(key), inner))
+    return out
 
 
 def _uniform(items: list[Any], name: str) -> list[Any]:
@@ -176,7 +223,8 @@ def rosparam_values(context: LaunchContext, text: str, prefix: str, where: Any,
     if substitute:
         if context.parse_text is None:
             raise ExecutionError("this run cannot read substitutions in files", where)
-        text = perform_text(context, context.parse_text(text, str(getattr(where, "file", ""))))
+        text = perform_text(context, context.parse_text(text, str(getattr(where, "file", "")),
+                                                        roslaunch=True))
     try:
         document = yaml.safe_load(text)
     except yaml.MarkedYAMLError as exc:
@@ -191,18 +239,7 @@ def rosparam_values(context: LaunchContext, text: str, prefix: str, where: Any,
             raise ExecutionError("rosparam: expected a map of parameters (or give param= to "
                                  "name the value)", where)
         return {prefix: document}
-    out: dict[str, Any] = {}
-
-    def flatten(values: dict[Any, Any], outer: str) -> None:
-        for key, value in values.items():
-            name = f"{outer}.{key}" if outer else str(key)
-            if isinstance(value, dict):
-                flatten(value, name)
-            else:
-                out[name] = value
-
-    flatten(document, prefix.replace("/", "."))
-    return out
+    return unrolled(prefix.replace("/", "."), document)
 
 
 def python_value(value: Any) -> Written:
@@ -266,26 +303,27 @@ def add_graph_parameter(context: LaunchContext, name: str, value: Any,
     _queue_load(context, load, folder)
 
 
-def delete_graph_parameters(context: LaunchContext, name: str, load: Callable[[Path], Any],
-                            folder: Path) -> None:
-    """`<rosparam command="delete">`: the name and everything below it, of what this launch
-    set before it and of what the server holds. (The server forgets before it takes the
-    launch's values, so values set after the delete stay.)"""
-    prefix = name.rstrip("/") + "/"
-    for key in [k for k in context.graph_parameters if k == name or k.startswith(prefix)]:
-        del context.graph_parameters[key]
-    context.graph_deletions.append(name)
+def graph_command(context: LaunchContext, command: list[str], load: Callable[[Path], Any],
+                  folder: Path) -> None:
+    """`<rosparam command="delete">` (and clear_params): `["delete", name]`, the name and
+    everything below it; `<rosparam command="dump">`: `["dump", name, file]`. Both act on
+    what the server holds before it takes the launch's values, in the order given, as
+    roslaunch runs `rosparam delete|dump` before it uploads the launch's parameters (so what
+    the launch sets stays, and is not dumped)."""
+    context.graph_commands.append(command)
     _queue_load(context, load, folder)
 
 
 def _queue_load(context: LaunchContext, load: Callable[[Path], Any], folder: Path) -> None:
     """The first change chooses the file they will be written to, in `folder`, and queues
     `load(file)`, the action that puts them on the server, after everything queued now (the
-    rest of the launch files: roslaunch sets the whole tree's parameters at once)."""
+    rest of the launch files: roslaunch sets the whole tree's parameters at once). Until they
+    are set, the nodes wait (Runtime.hold_graph)."""
     if context.graph_parameters_file is not None or context.service is None:
         return
     context.graph_parameters_file = _new_file(folder, "graph_parameters", ".json")
     context.graph_parameters_file.touch(mode=0o600)  # taken: the next batch has its own
+    context.service.hold_graph()
     context.service.schedule([load(context.graph_parameters_file)])
 
 

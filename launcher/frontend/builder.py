@@ -18,6 +18,7 @@ from launcher.description.registry import Registry, default_registry
 from launcher.description.substitution import Substitution, Text, Text_, is_literal
 from launcher.errors import LaunchError, Location, ParseError, did_you_mean
 from launcher.frontend.entity import Attribute, Entity
+from launcher.frontend.roslaunch_substitutions import parse_roslaunch
 from launcher.frontend.substitution_parser import Call, SubstitutionSyntaxError, parse_text
 
 _CONDITIONS = ("if", "unless")
@@ -189,9 +190,11 @@ def _condition(entity: Entity, registry: Registry) -> Condition | None:
 
 
 # --- substitutions ------------------------------------------------------------------------
-def parse_file_text(text: str, file: str, registry: Registry | None = None) -> Text_:
-    """The substitutions in a whole file's text (a params file read with allow_substs); an
-    error names the line and column in that file."""
+def parse_file_text(text: str, file: str, registry: Registry | None = None,
+                    roslaunch: bool = False) -> Text_:
+    """The substitutions in a whole file's text (a params file read with allow_substs, or
+    roslaunch's rosparam with subst_value: `roslaunch`); an error names the line and column
+    in that file."""
     registry = registry or default_registry()
 
     def at(offset: int) -> Location:
@@ -199,7 +202,7 @@ def parse_file_text(text: str, file: str, registry: Registry | None = None) -> T
         return Location(file, line, offset - (text.rfind("\n", 0, offset) + 1) + 1)
 
     try:
-        parts = parse_text(text)
+        parts = parse_roslaunch(text) if roslaunch else parse_text(text)
     except SubstitutionSyntaxError as exc:
         raise ParseError(exc.message, at(exc.offset)) from None
     whole = Attribute(text, Location(file, 1, 1))
@@ -212,10 +215,15 @@ def parse_file_text(text: str, file: str, registry: Registry | None = None) -> T
     return tuple(out)
 
 
+# roslaunch's substitutions that ROS 2 spells otherwise (ROS 2 refuses the ROS 1 names)
+ROS2_SPELLINGS = {"arg": "var", "find": "find-pkg-share", "optenv": "env"}
+
+
 def parse_substitutions(attribute: Attribute, registry: Registry) -> Text_:
     assert isinstance(attribute.value, str)
     try:
-        parts = parse_text(attribute.value)
+        parts = parse_roslaunch(attribute.value) if attribute.roslaunch else \
+            parse_text(attribute.value)
     except SubstitutionSyntaxError as exc:
         raise ParseError(exc.message, attribute.text_location(exc.offset)) from None
     return tuple(_part(p, attribute, registry) for p in parts)
@@ -227,6 +235,9 @@ def _part(part: str | Call, attribute: Attribute, registry: Registry) -> Substit
     where = attribute.text_location(part.offset)
     cls = registry.find_substitution(part.name)
     if cls is None:
+        if part.name in ROS2_SPELLINGS:
+            raise ParseError(f"unknown substitution '$({part.name})': that is roslaunch's (ROS 1)"
+                             f"; a ROS 2 file writes $({ROS2_SPELLINGS[part.name]} …)", where)
         hint = did_you_mean(part.name, registry.known('substitution'))
         raise ParseError(f"unknown substitution '$({part.name})'{hint}", where)
     args = [tuple(_part(p, attribute, registry) for p in arg) for arg in part.args]

@@ -23,6 +23,7 @@ class Attribute:
     # The format itself made the value a string (a quoted YAML scalar, or plain text YAML
     # reads as one); XML text is typed by YAML's rules where that matters (parameters).
     string: bool = False
+    roslaunch: bool = False  # its substitutions are roslaunch's (roslaunch_substitutions.py)
 
     @property
     def name_location(self) -> Location:

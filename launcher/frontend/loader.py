@@ -74,7 +74,12 @@ def _parse(kind: str, data: bytes, path: Path) -> Entity:
 
         root = load_xml(data, str(path))
         default = "ros1" if kind == ".launch" else "ros2"
-        return ros1.translate(root) if ros1.dialect(root, default) == "ros1" else root
+        if ros1.dialect(root, default) == "ros1":
+            return ros1.translate(root)
+        if "deprecated" in root.attributes:  # roslaunch's alone
+            raise ParseError("<launch> takes no attribute 'deprecated' (roslaunch's, not ROS "
+                             "2's)", root.location)
+        return root
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:

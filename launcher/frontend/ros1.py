@@ -22,9 +22,11 @@ ROS 1 → launcher:
 
 from __future__ import annotations
 
+import re
 import uuid
 
-from launcher.errors import Location, ParseError
+from launcher.description.parameters import ROS1_TYPES
+from launcher.errors import Location, ParseError, did_you_mean
 from launcher.frontend.entity import Attribute, Entity
 
 # What only ROS 1 says, and what only ROS 2 says (a tag, or an attribute of a tag).
@@ -101,18 +103,28 @@ def translate(root: Entity) -> Entity:
     while the launch runs, whatever else it sets."""
     _unique_names(root.children, "", {})
     _args_once(root.children, {})
-    _whole_evals(root)
     _one_condition(root)
     _local_machines(root)
     out = Entity("launch", root.location, nested_in_children=True)
+    _WARNINGS.clear()
+    deprecated = root.attributes.get("deprecated")
+    if deprecated is not None:  # roslaunch prints it, and goes on
+        _WARNINGS.append(_warning(f"{root.location}: DEPRECATED: {deprecated.value}",
+                                  deprecated.location))
+    body = _body(root.children)
     out.children = [*(_server_parameter(name, value, root.location)
-                      for name, value in ROSLAUNCH_PARAMETERS.items()), *_body(root.children)]
+                      for name, value in ROSLAUNCH_PARAMETERS.items()), *_WARNINGS, *body]
+    _WARNINGS.clear()
+    for entity in _walk(out):  # their text is read by roslaunch's rules
+        for attribute in entity.attributes.values():
+            attribute.roslaunch = True
     return out
 
 
 def _args_once(children: list[Entity], seen: dict[str, Location]) -> None:
-    """roslaunch's loader: an arg is declared once in a file (its groups share the file's
-    declarations; an include's file has its own)."""
+    """roslaunch's loader: an arg is declared once in a file; a group sees what was declared
+    before it, and what it declares is its own (the same name may be declared after it, or
+    in another group); an include's file has its own."""
     for child in children:
         if child.tag == "arg":
             name = _literal(child, "name")
@@ -124,20 +136,7 @@ def _args_once(children: list[Entity], seen: dict[str, Location]) -> None:
                                      f"declared (at line {seen[name].line})", child.location)
                 seen[name] = child.location
         elif child.tag == "group":
-            _args_once(child.children, seen)
-
-
-def _whole_evals(root: Entity) -> None:
-    """roslaunch evaluates `$(eval …)` only as a whole attribute: inside other text it is an
-    unknown substitution there, and an error here, said plainly."""
-    for entity in _walk(root):
-        for name, attribute in entity.attributes.items():
-            text = attribute.value if isinstance(attribute.value, str) else ""
-            if "$(eval" in text and not (text.startswith("$(eval ") and text.endswith(")")):
-                raise ParseError(f"{name}='{text}': roslaunch evaluates $(eval …) only as the "
-                                 "whole attribute (the attribute is then the expression's "
-                                 "value); write it alone, or put the text inside the "
-                                 "expression", attribute.location)
+            _args_once(child.children, dict(seen))
 
 
 def _one_condition(root: Entity) -> None:
@@ -164,6 +163,10 @@ def _local_machines(root: Entity) -> None:
             name, address = _literal(entity, "name"), _literal(entity, "address")
             if name and address and address not in here:
                 remote[name] = address
+            for child in entity.children:
+                raise ParseError(f"<machine> takes no <{child.tag}> (roslaunch refuses <env> "
+                                 "in <machine> since ROS Fuerte); put the <env> in the "
+                                 "<node>, or around it", child.location)
     for entity in _walk(root):
         machine = _literal(entity, "machine") if entity.tag in ("node", "test") else None
         if machine and machine in remote:
@@ -240,11 +243,20 @@ def _copy(entity: Entity, tag: str, names: dict[str, str]) -> Entity:
     return made
 
 
+_WARNINGS: list[Entity] = []  # what the translation of one file warns about (translate)
+
+
 def _known(entity: Entity, allowed: set[str]) -> None:
-    for name, attribute in entity.attributes.items():
-        if name not in allowed | {"if", "unless", *ENTRY_CONDITIONS}:
-            raise ParseError(f"roslaunch's <{entity.tag}> has no attribute '{name}'; it takes "
-                             f"{', '.join(sorted(allowed))}", attribute.name_location)
+    """An attribute roslaunch does not know is warned about and left out, as roslaunch's
+    loader does (_check_attrs: a configuration error it prints, and goes on)."""
+    for name, attribute in list(entity.attributes.items()):
+        if name not in allowed | {"if", "unless", *ENTRY_CONDITIONS, "#text"}:
+            hint = did_you_mean(name, allowed)
+            _WARNINGS.append(_warning(
+                f"{attribute.name_location}: roslaunch's <{entity.tag}> has no attribute "
+                f"'{name}'{hint}; it is ignored, as roslaunch ignores it (it takes "
+                f"{', '.join(sorted(allowed))})", attribute.name_location))
+            del entity.attributes[name]
 
 
 def _text(value: str, where: Location) -> Attribute:
@@ -255,6 +267,11 @@ def _entity(entity: Entity) -> list[Entity]:
     tag = entity.tag
     if tag == "arg":
         _known(entity, {"name", "default", "value", "doc"})
+        if "value" in entity.attributes and "default" in entity.attributes:
+            raise ParseError(f"<arg name='{_literal(entity, 'name')}'> has both value= and "
+                             "default=: roslaunch takes one (value= fixes it, default= lets "
+                             "the command line or an include set it)",
+                             entity.attributes["default"].location)
         if "value" in entity.attributes:  # a constant: overriding it is roslaunch's error
             fixed = _copy(entity, "let", {"name": "name", "value": "value"})
             fixed.attributes["fixed"] = _text("true", entity.location)
@@ -274,6 +291,7 @@ def _entity(entity: Entity) -> list[Entity]:
         return _global_rosparam(entity)
     if tag == "group":
         _known(entity, {"ns", "clear_params"})
+        _ns_given(entity)
         group = _copy(entity, "group", {})
         if "ns" in entity.attributes:
             push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
@@ -285,6 +303,7 @@ def _entity(entity: Entity) -> list[Entity]:
         return [_include(entity)]
     if tag == "remap":
         _known(entity, {"from", "to"})
+        _remap_names(entity)
         return [_copy(entity, "set_remap", {"from": "from", "to": "to"})]
     if tag == "env":
         _known(entity, {"name", "value"})
@@ -294,6 +313,43 @@ def _entity(entity: Entity) -> list[Entity]:
     return [_warning(f"{entity.location}: roslaunch has no tag <{tag}>; it is ignored, as "
                      "roslaunch ignores it (ROS 1's tags: arg, node, param, rosparam, group, "
                      "include, remap, env, machine, test)", entity.location)]
+
+
+def _ns_given(entity: Entity) -> None:
+    """xmlloader._ns_clear_params_attr: an ns= that is there is not empty."""
+    ns = entity.attributes.get("ns")
+    if ns is not None and not str(ns.value).strip():
+        raise ParseError(f"<{entity.tag}> tag has an empty 'ns' attribute (leave it out for "
+                         "the enclosing namespace)", ns.location)
+
+
+_LEGAL_NAME = re.compile(r"[~/A-Za-z][\w/]*")
+
+
+def _remap_names(entity: Entity) -> None:
+    """roslaunch's loader.add_remap: from= and to= are given and are legal ROS names."""
+    for key in ("from", "to"):
+        attribute = entity.attributes.get(key)
+        text = str(attribute.value).strip() if attribute is not None else ""
+        if attribute is None or not text:
+            raise ParseError(f"<remap> needs a non-empty {key}=", (attribute or entity).location)
+        if "$(" not in text and (not _LEGAL_NAME.fullmatch(text) or "//" in text):
+            raise ParseError(f"remap {key} [{text}] is not a valid ROS name (letters, digits, "
+                             "'_' and '/', starting with a letter, '/' or '~')",
+                             attribute.location)
+
+
+def _bool_word(entity: Entity, name: str) -> bool:
+    """A literal boolean attribute as roslaunch's _bool_attr reads it: true or false (any
+    case), nothing else; one made by a substitution is read when it runs."""
+    attribute = entity.attributes.get(name)
+    if attribute is None or "$(" in str(attribute.value):
+        return False
+    word = str(attribute.value).lower()
+    if word not in ("true", "false"):
+        raise ParseError(f"{name}='{attribute.value}': roslaunch's {name} is true or false",
+                         attribute.location)
+    return word == "true"
 
 
 def _warning(text: str, where: Location) -> Entity:
@@ -309,11 +365,22 @@ NODE_ATTRS = {"pkg": "pkg", "type": "exec", "name": "name", "ns": "namespace", "
 
 
 def _node(entity: Entity) -> Entity:
-    _known(entity, {*NODE_ATTRS, "required", "clear_params", "machine", "time-limit",
-                    "retry", "test-name"})
-    if "type" not in entity.attributes:
-        raise ParseError(f"roslaunch's <{entity.tag}> needs 'type' (the executable in the "
-                         "package)", entity.location)
+    test = entity.tag == "test"
+    _known(entity, {*NODE_ATTRS, "required", "clear_params", "machine",
+                    *(("time-limit", "retry", "test-name") if test else ())})
+    for needed in ("pkg", "type", "test-name" if test else "name"):
+        if needed not in entity.attributes:
+            raise ParseError(f"roslaunch's <{entity.tag}> needs '{needed}'", entity.location)
+    for refused in ("respawn", "respawn_delay", "output") if test else ():
+        if refused in entity.attributes:  # (xmlloader._test_attrs)
+            raise ParseError(f"<test> tags cannot have '{refused}' attribute (rostest runs a "
+                             "test once, and shows its output)",
+                             entity.attributes[refused].name_location)
+    _ns_given(entity)
+    flags = {name: _bool_word(entity, name) for name in ("respawn", "required")}
+    if flags["respawn"] and flags["required"]:
+        raise ParseError("respawn and required cannot both be set to true (a required node "
+                         "ends the launch when it exits)", entity.attributes["required"].location)
     node = _copy(entity, "node", NODE_ATTRS)
     node.attributes["unique"] = _text("true", entity.location)
     node.attributes["server"] = _text("true", entity.location)
@@ -346,6 +413,7 @@ def _node(entity: Entity) -> Entity:
             node.children += _rosparam_entries(child)
         elif child.tag == "remap":
             _known(child, {"from", "to"})
+            _remap_names(child)
             node.children.append(_copy(child, "remap", {"from": "from", "to": "to"}))
         elif child.tag == "env":
             _known(child, {"name", "value"})
@@ -356,9 +424,6 @@ def _node(entity: Entity) -> Entity:
     return node
 
 
-PARAM_TYPES = {"str": "str", "string": "str", "int": "int", "double": "float",
-               "float": "float", "bool": "bool", "boolean": "bool", "yaml": "yaml",
-               "auto": "auto"}
 
 
 def _param_attrs(entity: Entity, made: Entity) -> None:
@@ -377,16 +442,18 @@ def _param_attrs(entity: Entity, made: Entity) -> None:
     if len(given) != 1:
         raise ParseError("<param> needs exactly one of value=, command= and textfile=",
                          entity.location)
+    # roslaunch's types, as its loader converts (ros1:auto: an untyped value, a file's text
+    # and a command's output too, as loader.param_value has it)
     kind = entity.attributes.get("type")
     if kind is not None:
-        word = str(kind.value).strip()
-        if word not in PARAM_TYPES:
-            raise ParseError(f"<param type='{word}'>: expected str, int, double, bool, yaml "
-                             "or auto",
+        word = str(kind.value).lower().strip()
+        if "$(" not in word and word not in ROS1_TYPES:
+            raise ParseError(f"<param type='{word}'>: roslaunch's types are "
+                             f"{', '.join(ROS1_TYPES)}{did_you_mean(word, ROS1_TYPES)}",
                              kind.location)
-        made.attributes["type"] = Attribute(PARAM_TYPES[word], kind.location)
-    else:  # roslaunch types an untyped value itself, a file's text and a command's output
-        made.attributes["type"] = _text("auto", entity.location)  # too (loader.param_value)
+        made.attributes["type"] = Attribute(f"ros1:{word}", kind.location)
+    else:
+        made.attributes["type"] = _text("ros1:auto", entity.location)
 
 
 def _param_entry(entity: Entity) -> Entity:
@@ -443,9 +510,12 @@ def _loads(entity: Entity) -> bool:
     if command != "load":
         raise ParseError(f"<rosparam command='{command}'>: expected load, dump or delete",
                          entity.attributes["command"].location)
-    if "file" not in entity.attributes and "#text" not in entity.attributes:
-        raise ParseError("<rosparam> needs file= or YAML inside the tag", entity.location)
     return True
+
+
+def _empty(entity: Entity) -> bool:
+    """A `<rosparam>` with no file and no YAML: it loads nothing (roslaunch: an empty map)."""
+    return "file" not in entity.attributes and "#text" not in entity.attributes
 
 
 def _rosparam_into(entity: Entity, made: Entity) -> Entity:
@@ -465,7 +535,7 @@ def _rosparam_into(entity: Entity, made: Entity) -> Entity:
 
 def _rosparam_entries(entity: Entity) -> list[Entity]:
     """A node's `<rosparam>`: parameters from ROS 1 YAML (a plain map)."""
-    if not _loads(entity):
+    if not _loads(entity) or _empty(entity):
         return []  # a node's own dump or delete: nothing to act on
     made = _rosparam_into(entity, Entity("param", entity.location, nested_in_children=True))
     _carry_conditions(entity, made)
@@ -473,12 +543,22 @@ def _rosparam_entries(entity: Entity) -> list[Entity]:
 
 
 def _global_rosparam(entity: Entity) -> list[Entity]:
-    made = Entity("set_parameter", entity.location, nested_in_children=True)
+    made = _copy(entity, "set_parameter", {})
     made.attributes["server"] = _text("true", entity.location)
+    if _loads(entity) and _empty(entity):
+        return []
     if not _loads(entity):
-        # dump and delete: the parameters this launch has set so far (for the nodes after)
+        # (roslaunch runs `rosparam delete|dump` before it uploads the launch's parameters)
         made.attributes["rosparam_command"] = entity.attributes["command"]
-    return [_rosparam_into(entity, made)]
+    made = _rosparam_into(entity, made)
+    name = made.attributes.get("name")
+    if name is not None and str(name.value).startswith("~"):
+        # a private name outside a node is the launcher's own: roslaunch sets it on the
+        # server as itself (/roslaunch), and no node gets it
+        made.attributes["name"] = Attribute("/roslaunch/" + str(name.value)[1:].strip("/"),
+                                            name.location)
+        made.attributes["server_only"] = _text("true", entity.location)
+    return [made]
 
 
 def _clearing(entity: Entity, name: str) -> list[Entity]:
@@ -498,32 +578,40 @@ def _clearing(entity: Entity, name: str) -> list[Entity]:
     made = Entity("set_parameter", entity.location, nested_in_children=True)
     made.attributes.update(name=_text(name, flag.location),
                            rosparam_command=_text("delete", flag.location),
-                           server=_text("true", flag.location),
-                           server_only=_text("true", flag.location))
+                           server=_text("true", flag.location))
     return [made]
 
 
 def _include(entity: Entity) -> Entity:
     _known(entity, {"file", "ns", "clear_params", "pass_all_args"})
+    _ns_given(entity)
     include = _copy(entity, "include", {"file": "file"})
     include.attributes["scoped"] = _text("true", entity.location)
     include.attributes["pass_all_args"] = entity.attributes.get("pass_all_args") or \
         _text("false", entity.location)  # roslaunch: the file gets only what is passed
+    envs = []  # roslaunch's <env> in an <include>: for the included file's nodes
     for child in entity.children:
+        if child.tag == "env":
+            _known(child, {"name", "value"})
+            envs.append(_copy(child, "set_env", {"name": "name", "value": "value"}))
+            continue
         if child.tag != "arg":
-            raise ParseError(f"roslaunch's <include> takes <arg> children, not <{child.tag}>",
-                             child.location)
+            raise ParseError(f"roslaunch's <include> takes <arg> and <env> children, not "
+                             f"<{child.tag}>", child.location)
         _known(child, {"name", "value", "default", "doc"})
         arg = _copy(child, "arg", {"name": "name", "value": "value"})
         if "value" not in child.attributes and "default" in child.attributes:
             arg.attributes["value"] = child.attributes["default"]
         include.children.append(arg)
-    if "ns" not in entity.attributes:
+    if "ns" not in entity.attributes and not envs:
+        _clearing(entity, "")  # (refused without ns)
         return include
-    group = _copy(entity, "group", {})
+    group = _copy(entity, "group", {})  # (the namespace and the variables end with it)
     include.attributes.pop("if", None)
     include.attributes.pop("unless", None)
-    push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
-    push.attributes["namespace"] = entity.attributes["ns"]
-    group.children = [push, *_clearing(entity, ""), include]
+    if "ns" in entity.attributes:
+        push = Entity("push_ros_namespace", entity.location, nested_in_children=True)
+        push.attributes["namespace"] = entity.attributes["ns"]
+        group.children.append(push)
+    group.children += [*envs, *_clearing(entity, ""), include]
     return group

@@ -59,7 +59,7 @@ def load_xml(data: bytes, file: str) -> Entity:
     root = roots[0]
     if root.tag != "launch":
         raise ParseError(f"the root element is <{root.tag}>; expected <launch>", root.location)
-    unexpected = sorted(root.attributes)
-    if unexpected and unexpected != ["version"]:
+    unexpected = sorted(set(root.attributes) - {"version", "deprecated"})  # (roslaunch's)
+    if unexpected:
         raise ParseError(f"<launch> takes no attribute '{unexpected[0]}'", root.location)
     return root

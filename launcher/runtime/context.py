@@ -43,7 +43,10 @@ class Runtime(Protocol):
 
     def next_label(self, base: str) -> str: ...
 
-    def start_process(self, spec: Any) -> None: ...
+    def start_process(self, spec: Any, started: Callable[[Any], None] | None = None) -> None:
+        ...
+
+    def hold_graph(self) -> None: ...
 
     def register_handler(self, handler: Any) -> None: ...
 
@@ -70,7 +73,8 @@ class LaunchContext:
     only inspected (`--show-args`, `--print`), and actions that need it must check.
     `load_description` turns a launch file path into a description (the frontend's loader);
     `packages` is the package index node actions and `$(find-pkg-…)` look in;
-    `parse_text` reads the substitutions in a file's text (a params file with allow_substs).
+    `parse_text(text, file, roslaunch=False)` reads the substitutions in a file's text (a
+    params file with allow_substs; roslaunch's rosparam with subst_value).
     """
 
     def __init__(
@@ -81,7 +85,7 @@ class LaunchContext:
         log_dir: Path | None = None,
         load_description: Callable[[Path], Any] | None = None,
         packages: Any = None,
-        parse_text: Callable[[str, str], Any] | None = None,
+        parse_text: Callable[..., Any] | None = None,
     ) -> None:
         env = dict(os.environ if environment is None else environment)
         self.initial_environment = dict(env)
@@ -100,7 +104,8 @@ class LaunchContext:
         # ROS 1 parameters for the graph's parameter server (full names), and whether its
         # start is queued (it comes once everything queued now has been visited)
         self.graph_parameters: dict[str, Any] = {}
-        self.graph_deletions: list[str] = []  # names whose trees the server is to forget
+        # roslaunch's `rosparam delete|dump` ([command, name(, file)]), run before they are set
+        self.graph_commands: list[list[str]] = []
         self.graph_parameters_file: Path | None = None  # where they will be written
 
     # --- scopes -------------------------------------------------------------------------

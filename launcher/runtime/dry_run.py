@@ -51,8 +51,11 @@ class DryRun:
         self._count += 1
         return f"{base}-{self._count}"
 
-    def start_process(self, spec: Any) -> None:
+    def start_process(self, spec: Any, started: Any = None) -> None:
         self.specs.append(spec)
+
+    def hold_graph(self) -> None:
+        pass
 
     def register_handler(self, handler: Any) -> None:
         pass

@@ -67,9 +67,11 @@ class ProcessSpec:
     respawn_max_retries: int = -1
     origin: Any = None  # the action that asked for this process (for event handlers)
     joins_graph: bool = False  # it may be a ROS node (the launch then starts the router)
-    # A helper of the launch (one that holds the launch's parameters on the graph): once it
-    # prints a line holding this text, its work is done; it no longer keeps the launch
-    # running, and is stopped when it is all that is left.
+    # A helper of the launch (one that puts the launch's parameters on the graph and holds
+    # them there): once it prints a line holding this text, its work is done; it no longer
+    # keeps the launch running, and is stopped when it is all that is left. Until then the
+    # processes that may join the graph wait (LaunchService.hold_graph); one that ends before
+    # it is done fails the launch.
     helper_done_line: str = ""
 
 

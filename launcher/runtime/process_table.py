@@ -20,14 +20,16 @@ class ProcessTable:
     def __init__(self, loop: EventLoop, system: Processes, custody: Custody, printer: Printer,
                  run_log: RunLog | None, log: Callable[[str, str, str], None],
                  emit: Callable[[events.Event], None], listened: Callable[[], bool],
-                 changed: Callable[[], None], on_graph: Callable[[], None] | None) -> None:
+                 changed: Callable[[], None], on_graph: Callable[[], None] | None,
+                 helper_over: Callable[[bool], None] = lambda done: None) -> None:
         """`emit` hands events to the handlers (`listened`: whether any would hear a line);
         `changed` is called when a process exits or a helper is done; `on_graph` once, when
-        the first process that may join the graph is spawned."""
+        the first process that may join the graph is spawned; `helper_over(done)` when a
+        helper says its work is done, or ends before it has (see ProcessSpec)."""
         self.loop, self.system, self.custody = loop, system, custody
         self.printer, self.run_log, self.log = printer, run_log, log
         self.emit, self.listened, self.changed = emit, listened, changed
-        self.on_graph = on_graph
+        self.on_graph, self.helper_over = on_graph, helper_over
         self.processes: list[ManagedProcess] = []
         self._count = 0
         self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
@@ -80,6 +82,7 @@ class ProcessTable:
         done = process.spec.helper_done_line
         if done and not process.helper_done and done in record.text:
             process.helper_done = True
+            self.loop.call_soon(self.helper_over, True)
             self.loop.call_soon(self.changed)
         if "screen" in targets:
             self.printer.emit(record)
@@ -97,6 +100,9 @@ class ProcessTable:
         self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
 
     def _on_exited(self, process: ManagedProcess, _respawn_pending: bool) -> None:
+        if process.spec.helper_done_line and not process.helper_done:
+            process.helper_done = True  # (over: it cannot be done later)
+            self.helper_over(False)
         self.emit(events.ProcessExited(process.spec.origin, process.label, process.pid,
                                        process.returncode))
         self.changed()

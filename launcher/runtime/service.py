@@ -46,7 +46,7 @@ class LaunchService:
         debug: bool = False,
         loop: EventLoop | None = None,
         load_description: Callable[[Path], Any] | None = None,
-        parse_text: Callable[[str, str], Any] | None = None,
+        parse_text: Callable[..., Any] | None = None,
         packages: Any = None,
         system: Processes | None = None,
         custody: Custody | None = None,
@@ -72,9 +72,12 @@ class LaunchService:
         self._given = set(configurations or {})  # the command line's name:=value names
         self._handlers: list[events.EventHandler] = []
         self._timers: dict[Timer, bool] = {}  # timer -> cancel on shutdown
+        self._holds = 0  # helpers to come or at work that graph processes wait for
+        self._held: list[tuple[ProcessSpec, Callable[[Any], None] | None]] = []
         self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
                                   self.run_log, self.log, self.emit, lambda: bool(self._handlers),
-                                  self._check_idle, on_graph and self._graph_hook(on_graph))
+                                  self._check_idle, on_graph and self._graph_hook(on_graph),
+                                  self._helper_over)
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
         self.lifecycles = LifecycleRequests(self.loop, lifecycle, self.emit, self.log,
                                             self.report, self._check_idle)
@@ -197,12 +200,51 @@ class LaunchService:
     def next_label(self, base: str) -> str:
         return self.table.next_label(base)
 
-    def start_process(self, spec: ProcessSpec) -> ManagedProcess | None:
-        """Spawn now; OSError (not found, not executable, bad cwd) goes to the caller."""
+    def start_process(self, spec: ProcessSpec,
+                      started: Callable[[ManagedProcess], None] | None = None) -> None:
+        """Spawn now, and call `started` with it; OSError (not found, not executable, bad
+        cwd) goes to the caller. A process that may join the graph waits while the graph is
+        held (hold_graph), and is spawned once it is not (an OSError then is reported)."""
         if self.ending.shutting_down:
             self.log("DEBUG", spec.label, "not started: the launch is shutting down")
-            return None
-        return self.table.start(spec)
+            return
+        if self._holds and spec.joins_graph and not spec.helper_done_line:
+            self.log("DEBUG", spec.label, "waits for the graph's parameters")
+            self._held.append((spec, started))
+            return
+        process = self.table.start(spec)
+        if started is not None:
+            started(process)
+
+    def hold_graph(self) -> None:
+        """A helper is coming that puts the launch's parameters on the graph (ROS 1's): the
+        processes that may join the graph wait until it is done, as roslaunch sets every
+        parameter before it starts a node. A helper that ends before it is done fails the
+        launch, and they never start."""
+        self._holds += 1
+
+    def _helper_over(self, done: bool) -> None:
+        self._holds = max(0, self._holds - 1)
+        if self.ending.shutting_down:
+            self._held.clear()
+            return
+        if not done:
+            self._held.clear()
+            self.fail(ExecutionError("the launch's parameters could not be set on the "
+                                     "parameter server (the error is above); no node was "
+                                     "started"))
+            return
+        if self._holds:
+            return
+        held, self._held = self._held, []
+        for spec, started in held:
+            if self.ending.shutting_down:
+                return
+            try:
+                self.start_process(spec, started)
+            except OSError as exc:
+                self.report(ExecutionError(f"cannot start '{spec.argv[0]}': "
+                                           f"{exc.strerror or exc}"))
 
     def load_components(self, container: str, requests: list[LoadRequest],
                         alive: Callable[[], bool] | None) -> None:
@@ -255,7 +297,7 @@ class LaunchService:
     # --- what the ending asks ---------------------------------------------------------------
     def _pending(self) -> bool:
         return bool(self._queue or self._draining or self._timers or self.loads.out or
-                    self.lifecycles.out)
+                    self.lifecycles.out or (self._held and not self.ending.shutting_down))
 
     def _cancel(self) -> None:
         for timer, cancel in list(self._timers.items()):

@@ -312,8 +312,11 @@ def nodes() -> Iterator[dict[str, Any]]:
     yield launch("node/respawn", node(attrs=' respawn="true"'), stop_after=3.0)
     yield launch("node/respawn-delay", node(attrs=' respawn="true" respawn_delay="10"'),
                  stop_after=3.0)
-    yield launch("node/required-ends-launch", node("a", attrs=' required="true"') +
-                 node("b", attrs=' respawn="true" respawn_delay="1"'), stop_after=5.0)
+    # (a ends a second after it starts, b waits longer than that to respawn: nothing races)
+    yield launch("node/required-ends-launch",
+                 node("a", attrs=' required="true"',
+                      body='<env name="PROBE_SLEEP" value="1"/>') +
+                 node("b", attrs=' respawn="true" respawn_delay="5"'), stop_after=8.0)
     yield launch("node/two-same-name", node() + node())
     yield launch("node/same-name-other-ns", node() + node(attrs=' ns="g"'))
     yield launch("node/exits-nonzero", node(attrs=' respawn="false"'), env={"PROBE_EXIT": "3"})

@@ -19,7 +19,8 @@ from tests.fidelity.runner import launcher_tool
 
 
 def compare(case: Case, scratch: Path) -> tuple[bool, float, str]:
-    """Whether launcher agrees on `case`, the seconds its run took, and its output."""
+    """Whether launcher agrees on `case`, the seconds its run took, and its output (with,
+    where it differs, both outcomes)."""
     folder = scratch / case.name.replace("/", "__")
     started = time.monotonic()
     run = launcher_tool(case.flavour, folder / "run").run(case, folder)
@@ -27,14 +28,18 @@ def compare(case: Case, scratch: Path) -> tuple[bool, float, str]:
     expected = json.loads((EXPECTED / f"{case.name}.json").read_text())["outcome"]
     if case.name in CHOICES:
         expected = CHOICES[case.name].apply(expected)
-    return outcome(run, folder, case.flavour) == expected, took, run.output
+    got = outcome(run, folder, case.flavour)
+    if got == expected:
+        return True, took, run.output
+    both = json.dumps({"expected": expected, "launcher": got}, indent=1, sort_keys=True)
+    return False, took, f"{run.output}\n{both}"
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--only", default="")
     parser.add_argument("--jobs", type=int, default=3)
-    parser.add_argument("--output", action="store_true", help="print what launcher printed")
+    parser.add_argument("--output", action="store_true", help="print what launcher printed and both outcomes")
     options = parser.parse_args()
     chosen = [case for case in cases() if options.only in case.name]
     scratch = Path(tempfile.mkdtemp(prefix="fidelity-compare-"))

@@ -17,7 +17,7 @@ import yaml
 
 from tests.fidelity.runner import WORKSPACE, Outcome
 
-# roslaunch's $(anon n): n_<host>_<pid>_<random>; launch's: n_<random>
+# $(anon n), roslaunch's and launch's: n_<host>_<pid>_<random>
 _ANON = re.compile(r"\b([A-Za-z][A-Za-z0-9]*?)_(?:[A-Za-z0-9]+_)*\d{5,}\b")
 _LOG_ARG = re.compile(r"^__log:=(.*/)?([^/]*?)(?:-\d+)?\.log$")
 _SERVER_VALUES = {"/run_id": "<run_id>", "/rosversion": "<rosversion>",
@@ -64,7 +64,7 @@ def _start(record: dict[str, Any], paths: Paths, flavour: str) -> dict[str, Any]
     argv, files = _argv(record["argv"], record.get("parameter_files", {}), paths)
     env = {key: paths.text(value) for key, value in record["env"].items()
            if (key.startswith("PROBE_") and key not in SHELL_ONLY_ENV) or key in KEPT_ENV}
-    start: dict[str, Any] = {"name": _name(record["argv"], flavour), "argv": argv,
+    start: dict[str, Any] = {"name": paths.text(_name(record["argv"], flavour)), "argv": argv,
                              "env": env, "cwd": paths.text(record["cwd"])}
     if files:
         start["parameter_files"] = files

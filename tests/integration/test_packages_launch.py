@@ -253,7 +253,7 @@ def test_duplicate_node_names_warn(workspace):
     ("node: {pkg: robot_application, exec: echo_node, param: [{from: "
      "$(find-pkg-share robot_bringup)/config/broken.yaml}]}",
      "broken.yaml:2:1: parameters file is not valid YAML"),
-    ("log: {message: \"$(command 'xacro $(find robot_description)/urdf/broken.xacro')\"}",
+    ("log: {message: \"$(command 'xacro $(find-pkg-share robot_description)/urdf/broken.xacro')\"}",
      "xacro failed: unknown macro name: xacro:nosuch"),
     ("node: {pkg: robot_application, exec: echo_node, name: bad-name}",
      "bad.launch.yaml:2:5: node name 'bad-name' is not valid in ROS 2: it holds '-'; expected "

@@ -172,23 +172,27 @@ def test_nodes_params_and_scopes_as_roslaunch_has_them(ros1):
     assert plain["params"]["later"] == 9 and "later" not in driver["params"]
 
 
-def test_rosparam_dump_and_delete(ros1):
-    """roslaunch: `rosparam command="dump"` writes the parameters (under `param`) to a file,
-    `command="delete"` removes them; here, of what the launch has set for its nodes."""
+def test_rosparam_dump_and_delete_run_before_the_launch_sets_its_parameters(ros1):
+    """roslaunch runs `rosparam dump|delete` before it uploads the launch's parameters (as
+    the real roslaunch 1.15 does): on a fresh graph, a dump of what the launch sets finds
+    nothing (said, and the launch goes on); a delete does not remove what the launch sets;
+    a dump of / writes what the server held then."""
     ros1.write("dump.launch", """<launch>
   <rosparam command="load" file="$(find tools)/config/gains.yaml" ns="gains"/>
   <param name="rate" value="50"/>
   <rosparam command="dump" file="$(dirname)/gains_dump.yaml" param="gains"/>
-  <rosparam command="dump" file="$(dirname)/rate_dump.yaml" param="rate"/>
   <rosparam command="delete" param="gains"/>
   <node name="after" pkg="tools" type="report" output="screen"/>
 </launch>
 """)
-    after = reports(ros1, "dump.launch")["/after"]
-    assert after["params"] == {"rate": 50}  # the gains were deleted before it
-    dumped = (ros1.root / "gains_dump.yaml").read_text()
-    assert yaml.safe_load(dumped) == {"p": 1.5, "i": 0.1, "limits": {"max": 2}}
-    assert yaml.safe_load((ros1.root / "rate_dump.yaml").read_text()) == 50
+    result = ros1.run("launch", "dump.launch", timeout=60)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "rosparam dump: nothing to write" in result.stdout + result.stderr
+    assert not (ros1.root / "gains_dump.yaml").exists()
+    report = next(eval(line.split("REPORT ", 1)[1])  # noqa: S307 - our own node's repr
+                  for line in result.stdout.splitlines() if "REPORT " in line)
+    assert report["params"] == {"rate": 50, "gains.p": 1.5, "gains.i": 0.1,
+                                "gains.limits.max": 2}
 
 
 def test_include_passes_only_its_args_and_substitutions(ros1):
@@ -206,7 +210,7 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
         args="$(optenv NO_SUCH_VARIABLE fallback) $(dirname)"/>
   <node name="doubled" pkg="tools" type="report" output="screen"
         args="$(eval arg('radius') * 2)"/>
-  <node name="measured" pkg="tools" type="report" output="screen" args="$(eval radius + 'cm')"/>
+  <node name="measured" pkg="tools" type="report" output="screen" args="$(eval str(radius) + 'cm')"/>
   <node name="$(anon worker)" pkg="tools" type="report" output="screen"/>
 </launch>
 """)
@@ -219,8 +223,9 @@ def test_include_passes_only_its_args_and_substitutions(ros1):
     assert got["/subst"]["params"].get("set_inside") is None  # (all three had ns=)
     assert got["/subst"]["args"] == ["fallback", str(ros1.root)]
     # $(eval) only as a whole attribute (roslaunch/substitution_args.py resolve_args: the
-    # value must start with '$(eval ' and end with ')'; elsewhere it is no substitution)
-    assert got["/doubled"]["args"] == ["0.50.5"] and got["/measured"]["args"] == ["0.5cm"]
+    # value must start with '$(eval ' and end with ')'); args in it are typed as roslaunch
+    # types an untyped value (0.5 is a float)
+    assert got["/doubled"]["args"] == ["1.0"] and got["/measured"]["args"] == ["0.5cm"]
     anonymous = [name for name in got if name.startswith("/worker_")]
     assert len(anonymous) == 1
 
@@ -474,10 +479,34 @@ def test_ros2_xml_named_launch_stays_ros2(ros1):
      'type="report"/>', "roslaunch file contains multiple nodes named [/twin]"),
     ('<param name="p" binfile="x.bin"/><node name="n" pkg="tools" type="report"/>',
      "<param binfile=> is not supported"),
-    ('<group nss="x"/><node name="n" pkg="tools" type="report"/>',
-     "roslaunch's <group> has no attribute 'nss'"),
+    ('<node pkg="tools" type="report"/>', "bad.launch:2:1: roslaunch's <node> needs 'name'"),
+    ('<node name="n" pkg="tools" type="report" required="sometimes"/>',
+     "bad.launch:2:1: required='sometimes': roslaunch's required is true or false"),
+    ('<node name="n" pkg="tools" type="report" respawn="true" required="true"/>',
+     "respawn and required cannot both be set to true"),
+    ('<test test-name="t" pkg="tools" type="report" respawn="true"/>',
+     "<test> tags cannot have 'respawn' attribute"),
+    ('<group ns=""><node name="n" pkg="tools" type="report"/></group>',
+     "bad.launch:2:1: <group> tag has an empty 'ns' attribute"),
+    ('<node name="n" pkg="tools" type="report"><remap from="a b" to="c"/></node>',
+     "remap from [a b] is not a valid ROS name"),
+    ('<arg name="a" default="1" value="2"/>', "<arg name='a'> has both value= and default="),
+    ('<machine name="m" address="localhost"><env name="X" value="1"/></machine>',
+     "<machine> takes no <env>"),
+    ('<arg name="a" default="1"/><node name="n" pkg="tools" type="report" args="$(arg a b)"/>',
+     "$(arg) takes exactly one word in roslaunch, got 2: '$(arg a b)'"),
+    ('<param name="p" value="12345678901234"/>',
+     "parameter [/p]: 12345678901234 does not fit ROS 1's int"),
+    ('<rosparam>p: null</rosparam>', "parameter [/p] is null"),
+    ('<param name="p" type="bool" value="no"/>', "roslaunch's bool is true, false, 1 or 0"),
+    ('<param name="p" type="float" value="1"/>',
+     "<param type='float'>: roslaunch's types are str, string, int, double, bool, boolean, "
+     "yaml, auto"),
 ], ids=["mixed", "no-type", "undefined-arg", "rosparam-yaml", "command-fails",
-        "required-missing", "duplicate-names", "binfile", "unknown-attribute"])
+        "required-missing", "duplicate-names", "binfile", "no-name", "required-bad",
+        "respawn-and-required", "test-respawn", "ns-empty", "remap-bad-name",
+        "arg-default-and-value", "machine-env", "arg-two-words", "int-too-big", "null",
+        "bool-no", "type-float"])
 def test_bad_roslaunch_files(ros1, text, expected):
     ros1.write("bad.launch", f"<launch>\n{text}\n</launch>\n")
     result = ros1.run("launch", "bad.launch", timeout=60)
@@ -485,6 +514,20 @@ def test_bad_roslaunch_files(ros1, text, expected):
     assert result.returncode == 1, said
     assert expected in said, said
     assert "Traceback" not in said
+
+
+def test_an_unknown_attribute_is_a_warning_and_the_launch_goes_on(ros1):
+    """roslaunch's loader prints a configuration error for an attribute it does not know,
+    and goes on (the real roslaunch 1.15 starts the node); launcher says where, with the
+    attribute it may have meant."""
+    ros1.write("typo.launch", '<launch><group nss="x"><node name="n" pkg="tools" '
+                              'type="report" output="screen"/></group></launch>\n')
+    result = ros1.run("launch", "typo.launch", timeout=60)
+    said = result.stdout + result.stderr
+    assert result.returncode == 0, said
+    assert "typo.launch:1:9: roslaunch's <group> has no attribute 'nss' (did you mean " \
+           "'ns'?)" in said
+    assert "REPORT" in said
 
 
 def test_a_launched_scripts_rosparam_is_a_real_ros1_one_when_the_user_has_it(ros1):

@@ -27,10 +27,10 @@ def xml_description(text: str, file: str = "test.launch.xml") -> LaunchDescripti
     return build_description(load_xml(textwrap.dedent(text).strip().encode(), file), Path(file))
 
 
-def evaluate(text: str, context: LaunchContext | None = None) -> str:
-    """Perform substitution text as a launch file would."""
+def evaluate(text: str, context: LaunchContext | None = None, roslaunch: bool = False) -> str:
+    """Perform substitution text as a launch file would (a roslaunch file: `roslaunch`)."""
     context = context or LaunchContext({}, {})
-    attribute = Attribute(text, Location("inline", 1, 1), 0)
+    attribute = Attribute(text, Location("inline", 1, 1), 0, roslaunch=roslaunch)
     return perform_text(context, parse_substitutions(attribute, default_registry()))
 
 
@@ -50,8 +50,11 @@ class FakeService:
         self.count += 1
         return f"{base}-{self.count}"
 
-    def start_process(self, spec: Any) -> None:
+    def start_process(self, spec: Any, started: Any = None) -> None:
         self.specs.append(spec)
+
+    def hold_graph(self) -> None:
+        pass
 
     def register_handler(self, handler: Any) -> None:
         self.handlers.append(handler)

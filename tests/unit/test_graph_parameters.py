@@ -80,16 +80,20 @@ def test_a_ros1_launch_hands_every_parameter_to_the_server_once_at_the_end(tmp_p
     assert len(loads) == 1 and service.specs[-1] is loads[0]  # after everything else
     path = loads[0].argv[-1]
     written = json.loads(Path(path).read_text())
-    assert written["delete"] == ["/fleet/spare"]  # on the server too, before the values
+    # roslaunch runs `rosparam delete` before it uploads: what the server held goes, what
+    # the launch sets (spare, here) stays
+    assert written["before"] == [["delete", "/fleet/spare"]]
     assert "/for_later_nodes" not in written["set"]  # a ~name is the later nodes' alone
     assert written["set"] == {
         "/robot_description": "urdf", "/gains/p": 1.5, "/gains/i": 0, "/fleet/rate": 50,
+        "/fleet/spare": 1,
         "/absolute": "yes", "/inner": 7,
         # roslaunch's own typing of an untyped value (roslaunch/loader.py convert_value, on
-        # Python 3 as Debian's roslaunch runs): float() with a dot, else int() (so 1_000 is
-        # a number and 1e3 text), then true/false, else text; param_value strips value=
+        # Python 3 as Debian's roslaunch runs): float() with a dot, else int() but not with
+        # an underscore (so 1_000 and 1e3 are text), then true/false, else text;
+        # param_value strips value=
         # (not a file's text or a command's output) and types all three the same way
-        "/typed/flag": True, "/typed/listed": "[1, 2]", "/typed/under": 1000,
+        "/typed/flag": True, "/typed/listed": "[1, 2]", "/typed/under": "1_000",
         "/typed/real": 3.0, "/typed/exponent": "1e3", "/typed/spaced": True,
         "/typed/spaced_text": "two words", "/typed/file": 42, "/typed/file_bool": "true\n",
         "/typed/output": 2.5, "/typed/output_text": "2.5",

@@ -12,9 +12,49 @@ def ctx(configurations=None, environment=None):
     return LaunchContext(environment or {"PATH": os.environ["PATH"]}, configurations or {})
 
 
-def test_var_and_its_ros1_alias():
+def test_var_and_its_roslaunch_spelling():
     context = ctx({"robot": "r2"})
-    assert evaluate("$(var robot)-$(arg robot)", context) == "r2-r2"
+    assert evaluate("$(var robot)-", context) + evaluate("$(arg robot)", context,
+                                                         roslaunch=True) == "r2-r2"
+
+
+@pytest.mark.parametrize("text, spelling", [("$(arg robot)", "$(var"),
+                                            ("$(find pkg)", "$(find-pkg-share"),
+                                            ("$(optenv X d)", "$(env")])
+def test_a_ros2_file_refuses_roslaunch_spellings_and_names_its_own(text, spelling):
+    with pytest.raises(ParseError, match="that is roslaunch's") as info:
+        evaluate(text, ctx({"robot": "r2"}))
+    assert spelling in str(info.value)
+
+
+def test_roslaunch_optenv_default_is_every_word_after_the_name():
+    assert evaluate("$(optenv NOPE a default  with spaces)", ctx(), roslaunch=True) == \
+        "a default with spaces"
+    assert evaluate("$(optenv NOPE)", ctx(), roslaunch=True) == ""
+
+
+@pytest.mark.parametrize("text, message", [
+    ("$(arg a b)", "takes exactly one word in roslaunch, got 2"),
+    ("$(env)", "takes exactly one word in roslaunch, got 0"),
+    ("$(var a)", "unknown roslaunch substitution '$(var)'"),
+    ("$(arg $(arg a))", "no '$' inside a substitution"),
+    ("$(arg a", "unclosed '$(arg a': expected ')'"),
+    ("x $(eval 1) y", "only as the whole attribute"),
+])
+def test_roslaunch_substitution_errors(text, message):
+    with pytest.raises(ParseError) as info:
+        evaluate(text, ctx({"a": "1"}), roslaunch=True)
+    assert message in str(info.value)
+
+
+def test_roslaunch_eval_is_the_whole_expression_with_its_names():
+    context = ctx({"count": "3", "name": "bot"}, {"HOME_X": "/h", "PATH": os.environ["PATH"]})
+    assert evaluate("$(eval 'x' * count)", context, roslaunch=True) == "xxx"  # typed arg
+    assert evaluate("$(eval arg('name') + env('HOME_X'))", context, roslaunch=True) == "bot/h"
+    assert evaluate("$(eval optenv('NOPE', 'd d') if true else 0)", context,
+                    roslaunch=True) == "d d"
+    with pytest.raises(SubstitutionError, match="may not hold '__'"):
+        evaluate("$(eval count.__class__)", context, roslaunch=True)
 
 
 def test_var_default_and_missing_with_suggestion():
@@ -28,7 +68,6 @@ def test_env_optenv_and_missing():
     context = ctx(environment={"HOME_X": "/h"})
     assert evaluate("$(env HOME_X)", context) == "/h"
     assert evaluate("$(env NOPE default)", context) == "default"
-    assert evaluate("$(optenv NOPE)", context) == ""
     with pytest.raises(SubstitutionError, match="environment variable 'NOPE' is not set"):
         evaluate("$(env NOPE)", context)
 

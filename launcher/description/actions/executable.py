@@ -92,9 +92,13 @@ class ExecuteProcess(Action):
 
     def launch_prefix(self, context: LaunchContext) -> list[str]:
         """`--launch-prefix` of the run, then this action's own `launch-prefix`."""
+        return self.run_prefix(context) + self._words(context, self.prefix)
+
+    @staticmethod
+    def run_prefix(context: LaunchContext) -> list[str]:
+        """`--launch-prefix` of the run, as words."""
         run_prefix = getattr(context.service, "launch_prefix", "") or ""
-        words = split_command(context, to_text(run_prefix)) if run_prefix else []
-        return words + self._words(context, self.prefix)
+        return split_command(context, to_text(run_prefix)) if run_prefix else []
 
     def command_line(self, context: LaunchContext) -> list[str]:
         prefix = self.launch_prefix(context)
@@ -152,15 +156,14 @@ class ExecuteProcess(Action):
         spec = self.spec(context)
         self._register_reactions(context, spec.label)
         try:
-            process = context.service.start_process(spec)
+            context.service.start_process(spec, lambda process: self.started(context, process))
         except OSError as exc:
             raise ExecutionError(f"cannot start '{spec.argv[0]}': {exc.strerror or exc}") from None
-        if process is not None:
-            self.started(context, process)
         return None
 
     def started(self, context: LaunchContext, process: Any) -> None:
-        """Called once the process is spawned (a container then loads its nodes)."""
+        """Called once the process is spawned (a container then loads its nodes): at once, or
+        when the graph's parameters are set (LaunchService.hold_graph)."""
 
     def _register_reactions(self, context: LaunchContext, label: str) -> None:
         for handler_type, reaction in ((OnProcessExit, self.on_exit),

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import os
+import shlex
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -33,7 +34,7 @@ from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
-from launcher.lineage import GRAPH_PARAMETERS, NODE_PARAMETERS
+from launcher.lineage import NODE_PARAMETERS
 from launcher.packages.executables import find_executable
 from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
@@ -133,8 +134,13 @@ class Node(ExecuteProcess):
                 remaps = [r for r in remaps if r[0] != source] + [(source, target)]
         else:  # launch_ros's Node: its scope's (SetRemap), then its own; rcl takes the
             remaps = [*params.remaps(context), *own]  # first match, so the scope's win
-        argv = [*self.launch_prefix(context), *found.argv,
-                *self._words(context, self.arguments)]
+        if ros1:  # roslaunch splits args= and launch-prefix= once substituted
+            argv = [*self.run_prefix(context), *self._ros1_words(context, self.prefix),
+                    *found.argv,
+                    *self._ros1_words(context, self.arguments)]
+        else:
+            argv = [*self.launch_prefix(context), *found.argv,
+                    *self._words(context, self.arguments)]
         if ros1:  # as roslaunch's node_args.create_local_process_args builds it
             argv += [f"{source}:={target}" for source, target in remaps]
             argv += [f"__name:={node}"] if node else []  # the namespace: ROS_NAMESPACE alone
@@ -149,11 +155,11 @@ class Node(ExecuteProcess):
         label = self.exec_name if self.exec_name is not None else self.node_name
         base = perform_text(context, label) if label is not None else found.name
         env = found.environment(self.environment(context))
-        if context.graph_parameters_file is not None:  # being loaded: rospy waits for them
-            env[GRAPH_PARAMETERS] = str(context.graph_parameters_file)
         if ros1:
-            if space:  # node_args: the namespace without its trailing slash
-                env["ROS_NAMESPACE"] = space.rstrip("/") or "/"
+            own = {perform_text(context, e.name) for e in self.additional_env
+                   if entry_applies(context, e)}
+            if space and "ROS_NAMESPACE" not in own:  # nodeprocess.setup_env: the namespace
+                env["ROS_NAMESPACE"] = space.rstrip("/") or "/"  # unslashed, under own env
             if words:  # its parameters, for launcher's own nodes (rospy reads the server)
                 env[NODE_PARAMETERS] = json.dumps(words)
         cwd = self._ros1_cwd(context, argv[0], env) if ros1 else None
@@ -164,6 +170,17 @@ class Node(ExecuteProcess):
             spec.argv = [*spec.argv, f"__log:={log}"]
         spec.joins_graph = True
         return spec
+
+    def _ros1_words(self, context: LaunchContext, value: Any) -> list[str]:
+        """roslaunch's node args and launch-prefix: the text, substituted, then split as a
+        shell would (shlex)."""
+        if value is None:
+            return []
+        text = perform_text(context, to_text(value))
+        try:
+            return shlex.split(text)
+        except ValueError as exc:
+            raise ExecutionError(f"cannot split '{text}' into words: {exc}") from None
 
     def _ros1_cwd(self, context: LaunchContext, program: str, env: dict[str, str]) -> str:
         """nodeprocess.LocalProcess.start: the node's folder for cwd="node", else ROS home
@@ -216,8 +233,10 @@ class Node(ExecuteProcess):
     def _check_unique(self, context: LaunchContext, node: str, space: str) -> None:
         fqn = f"{space.rstrip('/')}/{node}" if space else f"/{node}"
         other = context.node_names.get(fqn)
-        if other is not None and other is not self.where:
-            if resolve(context, self.unique, Kind.BOOL, "unique"):
+        unique = resolve(context, self.unique, Kind.BOOL, "unique")
+        # (roslaunch: any two, the same file included twice too; else: two places)
+        if other is not None and (unique or other is not self.where):
+            if unique:
                 raise ExecutionError(
                     f"roslaunch file contains multiple nodes named [{fqn}]. Please check all "
                     "<node> 'name' attributes to make sure they are unique. Also check that "

@@ -143,9 +143,10 @@ def _collect(context: LaunchContext, entry: ParamEntry, outer: str, out: dict[st
         raise ExecutionError(f"param '{name}' needs a 'value' (or nested 'param' entries)",
                              where)
     try:
-        out[name] = params.value_of(context, entry.value, kind, name, entry.separator)
+        value = params.value_of(context, entry.value, kind, name, entry.separator)
     except ExecutionError as exc:
         raise exc if exc.location else exc.at(where) from None
+    out.update(params.unrolled(name, value))  # (roslaunch's yaml maps: their parameters)
 
 
 def rosparam_entry(context: LaunchContext, entry: Any, outer: str,

@@ -71,8 +71,15 @@ class SetParameter(Action):
             return
         server = resolve(context, self.server, Kind.BOOL, "server")
         if self.rosparam_file is not None or self.rosparam is not None:
+            # (under a global ns=, the names are global, whatever the namespace)
+            root = "/" if self.name is not None and \
+                perform_text(context, self.name).startswith("/") else ""
+            alone = resolve(context, self.server_only, Kind.BOOL, "server_only")
             for name, value in rosparam_entry(context, self, "", self.where).items():
-                self._set(context, name, value, server)
+                if alone:
+                    to_graph(context, graph_name(context, root + name), value)
+                else:
+                    self._set(context, root + name, value, server)
             return
         name = perform_text(context, self.name)
         kind = resolve(context, self.type, Kind.TEXT, "type") if self.type else None
@@ -80,13 +87,13 @@ class SetParameter(Action):
             value = params.value_of(context, self.value, kind, name)
         except ExecutionError as exc:
             raise exc if exc.location else exc.at(self.where) from None
-        if resolve(context, self.server_only, Kind.BOOL, "server_only"):
-            to_graph(context, graph_name(context, name), value)
-            return
-        if resolve(context, self.private, Kind.BOOL, "private"):
-            params.add_private_parameter(context, name, value)
-            return
-        self._set(context, name, value, server)
+        for leaf, item in params.unrolled(name, value).items():  # (roslaunch's yaml maps)
+            if resolve(context, self.server_only, Kind.BOOL, "server_only"):
+                to_graph(context, graph_name(context, leaf), item)
+            elif resolve(context, self.private, Kind.BOOL, "private"):
+                params.add_private_parameter(context, leaf, item)
+            else:
+                self._set(context, leaf, item, server)
 
     @staticmethod
     def _set(context: LaunchContext, name: str, value: Any, server: bool) -> None:
@@ -96,45 +103,18 @@ class SetParameter(Action):
         params.add_global_parameter(context, name, value)
 
     def _dump_or_delete(self, context: LaunchContext, command: str) -> None:
-        """roslaunch's `<rosparam command="dump|delete">`, over what this launch has set."""
-        prefix = perform_text(context, self.name).strip("/").replace("/", ".") \
-            if self.name is not None else ""
-
-        def under(name: str) -> bool:
-            return not prefix or name == prefix or name.startswith(prefix + ".")
-
+        """roslaunch's `<rosparam command="dump|delete">` (and clear_params): run on the
+        server before the launch's parameters are set (params.graph_command)."""
+        name = graph_name(context, perform_text(context, self.name)
+                          if self.name is not None else "/")
         if command == "delete":
-            if resolve(context, self.server, Kind.BOOL, "server"):
-                params.delete_graph_parameters(
-                    context, graph_name(context, perform_text(context, self.name)
-                                        if self.name is not None else "/"),
-                    loader, params_folder(context))
-            if resolve(context, self.server_only, Kind.BOOL, "server_only"):
-                return  # (clear_params: what the server held, not what this launch sets)
-            kept = tuple(item for item in params.global_settings(context)
-                         if item[0] == params.FILE or not under(item[0]))
-            context.configurations[params.GLOBAL_PARAMETERS] = kept  # type: ignore[assignment]
+            params.graph_command(context, ["delete", name], loader, params_folder(context))
             return
         if self.rosparam_file is None:
             raise ExecutionError("<rosparam command=\"dump\"> needs file=", self.where)
-        found = {n: v for n, v in params.global_parameters(context).items() if under(n)}
-        document: Any = {}
-        if list(found) == [prefix]:  # one parameter: its value, as rosparam dump writes it
-            document = found[prefix]
-        for name, value in found.items() if list(found) != [prefix] else ():
-            *outer, last = (name[len(prefix) + 1:] if prefix else name).split(".")
-            level = document
-            for part in outer:
-                level = level.setdefault(part, {})
-            level[last] = value
-        path = Path(perform_text(context, self.rosparam_file))
-        import yaml
-
-        try:
-            path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
-        except OSError as exc:
-            raise ExecutionError(f"<rosparam command=\"dump\">: cannot write '{path}': "
-                                 f"{exc.strerror}", self.where) from None
+        path = Path(perform_text(context, self.rosparam_file)).absolute()
+        params.graph_command(context, ["dump", name, str(path)], loader,
+                             params_folder(context))
 
 
 @action("set_parameters_from_file")

@@ -10,7 +10,7 @@ from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 
-@substitution("var", "arg")
+@substitution("var")
 @dataclass(frozen=True)
 class LaunchConfiguration(Substitution):
     """The value of a launch argument or `let`; `arg` is the ROS 1 spelling."""
@@ -75,13 +75,19 @@ class ForLoopIndex(Substitution):
 @substitution("anon")
 @dataclass(frozen=True)
 class AnonName(Substitution):
-    """A name unique to this run and stable for the same NAME within it."""
+    """A name unique to this run and stable for the same NAME within it, made as roslaunch
+    and launch make it: NAME_<host>_<pid>_<random>, '.', '-' and ':' made '_'."""
 
     name: Text_
 
     def perform(self, context: LaunchContext) -> str:
         name = perform_text(context, self.name)
         if name not in context.anonymous_names:
-            suffix = f"{os.getpid()}_{int.from_bytes(os.urandom(5), 'big')}"
-            context.anonymous_names[name] = f"{name}_{suffix}"
+            import random
+            import socket
+            import sys
+
+            made = f"{name}_{socket.gethostname()}_{os.getpid()}_{random.randint(0, sys.maxsize)}"
+            context.anonymous_names[name] = made.replace(".", "_").replace("-", "_") \
+                .replace(":", "_")
         return context.anonymous_names[name]

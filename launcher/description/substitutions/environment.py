@@ -1,4 +1,5 @@
-"""Environment variables: `$(env NAME [default])` and ROS 1's `$(optenv NAME [default])`."""
+"""Environment variables: `$(env NAME [default])` (roslaunch's `$(env)` and `$(optenv)`
+too)."""
 
 from __future__ import annotations
 
@@ -26,17 +27,3 @@ class EnvironmentVariable(Substitution):
             f"environment variable '{name}' is not set{did_you_mean(name, context.environment)}"
             f"; give a default with $(env {name} DEFAULT)"
         )
-
-
-@substitution("optenv")
-@dataclass(frozen=True)
-class OptionalEnvironmentVariable(Substitution):
-    """Like `env`, but an unset variable gives the default or an empty string."""
-
-    name: Text_
-    default: Text_ | None = None
-
-    def perform(self, context: LaunchContext) -> str:
-        name = perform_text(context, self.name)
-        fallback = "" if self.default is None else perform_text(context, self.default)
-        return context.environment.get(name, fallback)

@@ -32,3 +32,54 @@ class PythonExpression(Substitution):
             return str(evaluate(text, {**arguments, "arg": arg}))
         except ExpressionError as exc:
             raise self.fail(f"$(eval '{text}'): {exc}") from None
+
+
+@substitution("roslaunch_eval")
+@dataclass(frozen=True)
+class RoslaunchExpression(Substitution):
+    """roslaunch's `$(eval EXPRESSION)` (a ROS 1 file's; the frontend names it so): the
+    names roslaunch's eval gives are there, the launch's arguments typed as roslaunch types
+    an untyped value (by bare name, or `arg('x')`), `anon()`, `dirname()`, `env()`,
+    `optenv()`, `find()`, true/false and math's names, in the same restricted expression."""
+
+    expression: Text_
+
+    def perform(self, context: LaunchContext) -> str:
+        from launcher.description.parameters import roslaunch_value
+        from launcher.description.substitution import Text
+        from launcher.description.substitutions.configuration import AnonName
+        from launcher.description.substitutions.environment import EnvironmentVariable
+        from launcher.description.substitutions.files import ThisLaunchFileDir
+        from launcher.description.substitutions.packages import FindPackageShare
+
+        text = perform_text(context, self.expression)
+        if "__" in text:  # as roslaunch refuses it
+            raise self.fail(f"$(eval {text}): an expression may not hold '__'")
+
+        def typed(value: str) -> object:
+            return roslaunch_value(value, "auto", "")
+
+        def arg(name: str) -> object:
+            if name not in context.configurations:
+                raise ExpressionError(f"arg('{name}'): no launch argument '{name}'")
+            return typed(context.configurations[name])
+
+        def run(substitution: Substitution) -> str:
+            return substitution.perform(context)
+
+        names: dict[str, object] = {
+            **{k: typed(v) for k, v in context.configurations.items()
+               if isinstance(v, str) and k.isidentifier()},
+            "true": True, "false": False, "True": True, "False": False,
+            "arg": arg,
+            "anon": lambda name: run(AnonName((Text(name),))),
+            "dirname": lambda: run(ThisLaunchFileDir()),
+            "env": lambda name: run(EnvironmentVariable((Text(name),))),
+            "optenv": lambda name, default="": run(EnvironmentVariable((Text(name),),
+                                                                       (Text(default),))),
+            "find": lambda package: run(FindPackageShare((Text(package),))),
+        }
+        try:
+            return str(evaluate(text, names))
+        except (ExpressionError, TypeError) as exc:  # (TypeError: a call's arguments)
+            raise self.fail(f"$(eval {text}): {exc}") from None

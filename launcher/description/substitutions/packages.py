@@ -1,5 +1,6 @@
-"""Packages: `$(find-pkg-share PKG)`, `$(find-pkg-prefix PKG)`, `$(exec-in-pkg EXE PKG)`,
-ROS 1's `$(find PKG)`, and `$(param NAME [default])` (a parameter set with set_parameter)."""
+"""Packages: `$(find-pkg-share PKG)` (roslaunch's `$(find PKG)` too), `$(find-pkg-prefix
+PKG)`, `$(exec-in-pkg EXE PKG)`, and `$(param NAME [default])` (a parameter set with
+set_parameter)."""
 
 from __future__ import annotations
 
@@ -27,10 +28,10 @@ def _lookup(sub: Substitution, context: LaunchContext, what: str, package: Text_
         raise exc.at(sub.where) from None
 
 
-@substitution("find-pkg-share", "find")
+@substitution("find-pkg-share")
 @dataclass(frozen=True)
 class FindPackageShare(Substitution):
-    """The package's folder (packages are used in place); `find` is the ROS 1 spelling."""
+    """The package's folder (packages are used in place)."""
 
     package: Text_
 

@@ -331,11 +331,8 @@ def _server() -> Any:
     """The graph's parameter server's client, or None when the graph has none (then
     parameters stay on this node)."""
     if _state.graph is None:
-        from launcher.bus import discovery
-        from launcher.bus.graph_parameters import GraphParameters, wait_for_launch
+        from launcher.bus.graph_parameters import GraphParameters
 
-        # as roslaunch sets them before its nodes start: the launch's, once they are there
-        wait_for_launch(os.environ, discovery.timeout())
         _state.graph = GraphParameters(_state.node)
     return _state.graph if _state.graph.available() else None
 
