@@ -242,7 +242,8 @@ def test_processes_are_group_leaders(ws):
 
 
 # A launch whose actions start processes as given: a helper (see ProcessSpec.helper_done_line)
-# and the others, each `label=argv…` on the command line (a label starting "helper" is one).
+# and the others, each `label=argv…` on the command line (a label starting "helper" is one;
+# one starting "node" may join the graph; the word "hold" holds the graph for a helper).
 HELPERS = """
 import sys, time
 from launcher.description.action import Action, LaunchDescription
@@ -258,14 +259,21 @@ class Start(Action):
     def execute(self, context):
         context.service.start_process(self.spec)
 
+class Hold(Action):
+    def execute(self, context):
+        context.service.hold_graph()
+
 actions = []
 for word in sys.argv[1:]:
+    if word == "hold":
+        actions.append(Hold())
+        continue
     label, _, command = word.partition("=")
     actions.append(Start(ProcessSpec(label=label, argv=["sh", "-c", command],
                                      env=default_environment(), sigterm_timeout=1,
                                      stdout_to=frozenset({"screen"}),
                                      helper_done_line="work done" if label.startswith("helper")
-                                     else "")))
+                                     else "", joins_graph=label.startswith("node"))))
 begin = time.monotonic()
 code = LaunchService(printer=Printer(color=False)).run(LaunchDescription(actions))
 print(f"ENDED {code} after {time.monotonic() - begin:.1f}")
@@ -290,3 +298,28 @@ def test_a_helper_keeps_the_launch_only_until_its_work_is_done(ws, processes, co
     ended = re.search(r"ENDED (\d+) after ([\d.]+)", done.stdout)
     assert ended and least <= float(ended.group(2)) <= most, done.stdout
     assert "Traceback" not in done.stdout + done.stderr
+
+
+def test_nodes_wait_for_the_graphs_parameters_and_start_once_they_are_set(ws):
+    """roslaunch sets every parameter before it starts a node: a node started while the
+    graph is held (its parameters' helper to come) starts once the helper is done."""
+    ws.write("helpers.py", HELPERS)
+    done = subprocess.run([sys.executable, str(ws.root / "helpers.py"), "hold",
+                           "node-1=echo node at $(date +%s.%N)",
+                           "helper-2=sleep 1; echo work done at $(date +%s.%N); exec sleep 60"],
+                          env=ws.env, cwd=ws.root, capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stdout + done.stderr
+    node = float(re.search(r"node at ([\d.]+)", done.stdout).group(1))
+    helper = float(re.search(r"work done at ([\d.]+)", done.stdout).group(1))
+    assert node >= helper, done.stdout
+
+
+def test_a_failed_parameter_load_starts_no_node_and_fails_the_launch(ws):
+    ws.write("helpers.py", HELPERS)
+    done = subprocess.run([sys.executable, str(ws.root / "helpers.py"), "hold",
+                           "node-1=echo NODE STARTED", "helper-2=echo refused >&2; exit 1"],
+                          env=ws.env, cwd=ws.root, capture_output=True, text=True, timeout=60)
+    said = done.stdout + done.stderr
+    assert done.returncode == 1, said
+    assert "NODE STARTED" not in said
+    assert "the launch's parameters could not be set on the parameter server" in said
