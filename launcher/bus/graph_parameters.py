@@ -16,8 +16,9 @@ from __future__ import annotations
 
 import threading
 import time
+import uuid
 from collections.abc import Callable, Mapping
-from typing import Any
+from typing import Any, NamedTuple
 
 from launcher.bus import parameters as params
 from launcher.bus.messages import build
@@ -68,12 +69,37 @@ def dump_text(value: Any) -> str:
     return text[:-5] if text.endswith("\n...\n") else text.rstrip("\n")
 
 
-def host(session: Any) -> Callable[[], None]:
+ROS1_DISTRO, ROS1_VERSION = "noetic", "1.16.0"  # the ROS 1 that launcher's stands for
+
+
+def master_parameters(run_id: str) -> dict[str, str]:
+    """What a ROS 1 master holds from its start (roscore.xml's, and roslaunch's run id):
+    /run_id, /rosdistro and /rosversion (the last two end in a newline there)."""
+    return {"/run_id": run_id, "/rosdistro": f"{ROS1_DISTRO}\n",
+            "/rosversion": f"{ROS1_VERSION}\n"}
+
+
+class Hosted(NamedTuple):
+    stop: Callable[[], None]  # the server goes
+    reset: Callable[[], None]  # it holds what a fresh master holds, and nothing else
+
+
+def host(session: Any) -> Hosted:
     """Serve the parameter server on `session` (the router's), its callbacks on a thread of
-    their own; returns what stops it."""
+    their own, holding what a fresh ROS 1 master holds."""
     from launcher.bus.node import Node
 
     node = Node(NAME, argv=[], session=session)
+    lock = threading.Lock()
+
+    def reset() -> None:
+        with lock:
+            for name in list(node.parameters):
+                node.request_parameter(name, None)
+            for name, value in master_parameters(str(uuid.uuid1())).items():
+                node.set_parameter_value(key(name), value)
+
+    reset()
     thread = threading.Thread(target=node.spin, name="parameter_server", daemon=True)
     thread.start()
 
@@ -82,7 +108,7 @@ def host(session: Any) -> Callable[[], None]:
         thread.join(1.0)
         node.destroy_node()
 
-    return stop
+    return Hosted(stop, reset)
 
 
 def _related(one: str, other: str) -> bool:

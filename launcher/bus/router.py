@@ -7,7 +7,11 @@ and stops once nothing has been connected for `--linger` seconds. Run by `launch
 local one, listening there and admitting only those who present the user's credentials.
 It runs until SIGINT or SIGTERM. Both sweep the socket files of peers that died.
 The router that serves the domain's socket also hosts the graph's parameter server
-(graph_parameters.py), as roscore's master does.
+(graph_parameters.py), as roscore's master does. A started router's server forgets what it
+was given once nothing is connected (the launch, or the roscore, that used it has ended), as
+a ROS 1 master ends with the roslaunch or roscore that started it: whatever comes next finds
+a fresh master's parameters, however soon it comes. A standing router is the user's roscore:
+its parameters stay until it stops.
 """
 
 from __future__ import annotations
@@ -21,6 +25,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable
+from typing import Any
 
 import zenoh
 
@@ -44,11 +49,11 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
     private_folder(sock.parent)
     discovery.sweep_peer_sockets(sock.parent)
     sessions: list[zenoh.Session] = []
-    stop_parameters = None
+    hosted = None
     try:
         hosting = lock_fd is not None or not discovery.answers(sock)
         if hosting:
-            session, stop_parameters = _local_router(sock, lock_fd)
+            session, hosted = _local_router(sock, lock_fd)
             sessions.append(session)
         if remote:  # checks credentials, which the local router cannot ask of its peers
             try:
@@ -67,21 +72,21 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
             while not stop.wait(SWEEP):
                 discovery.sweep_peer_sockets(sock.parent)
         else:
-            _until_idle(sessions[0], linger, stop)
+            _until_idle(sessions[0], linger, stop,
+                        hosted.reset if hosted is not None else lambda: None)
     finally:
-        if stop_parameters is not None:
-            stop_parameters()
+        if hosted is not None:
+            hosted.stop()
         for session in sessions:
             with contextlib.suppress(zenoh.ZError):
                 session.close()
     return 0
 
 
-def _local_router(sock: os.PathLike,
-                  lock_fd: int | None) -> tuple[zenoh.Session, Callable[[], None]]:
+def _local_router(sock: os.PathLike, lock_fd: int | None) -> tuple[zenoh.Session, Any]:
     """The router on the domain's socket, hosting the graph's parameter server (as roscore's
-    master holds it), and what stops that; the start lock is held until both are there, so
-    whoever finds the router finds the server."""
+    master holds it; graph_parameters.Hosted); the start lock is held until both are there,
+    so whoever finds the router finds the server."""
     from launcher.bus import graph_parameters
 
     with contextlib.ExitStack() as held:
@@ -91,18 +96,21 @@ def _local_router(sock: os.PathLike,
             with contextlib.suppress(FileNotFoundError):
                 os.unlink(sock)
         session = zenoh.open(config("router", [f"unixsock-stream/{sock}"], []))
-        stop_parameters = graph_parameters.host(session)
+        hosted = graph_parameters.host(session)
     if lock_fd is not None:
         os.close(lock_fd)  # listening: whoever waits to connect may go on
-    return session, stop_parameters
+    return session, hosted
 
 
 class Connections:
     """What is connected, from Zenoh's transport events (asking for the list of transports
     now and then, instead, upset the router's routing)."""
 
-    def __init__(self, session: zenoh.Session) -> None:
+    def __init__(self, session: zenoh.Session, idle: Callable[[], None] = lambda: None) -> None:
+        """`idle()` is called as the last connection goes (on Zenoh's thread, before any
+        later connection is seen)."""
         self._open: set[str] = set()
+        self._idle = idle
         self._lock = threading.Lock()
         self._listener = session.info.declare_transport_events_listener(self._on_event,
                                                                         history=True)
@@ -111,18 +119,24 @@ class Connections:
         with self._lock:
             if event.kind == zenoh.SampleKind.PUT:
                 self._open.add(str(event.transport.zid))
-            else:
-                self._open.discard(str(event.transport.zid))
+                return
+            last = bool(self._open)
+            self._open.discard(str(event.transport.zid))
+            last = last and not self._open
+        if last:
+            self._idle()
 
     def any(self) -> bool:
         with self._lock:
             return bool(self._open)
 
 
-def _until_idle(session: zenoh.Session, linger: float, stop: threading.Event) -> None:
+def _until_idle(session: zenoh.Session, linger: float, stop: threading.Event,
+                idle: Callable[[], None]) -> None:
     """Return once nothing has been connected for `linger` seconds, holding the start lock
-    exclusively so that nobody is halfway through connecting."""
-    connections = Connections(session)
+    exclusively so that nobody is halfway through connecting; `idle()` each time the last
+    connection goes."""
+    connections = Connections(session, idle)
     idle_since = time.monotonic()
     while not stop.wait(POLL):
         if connections.any():

@@ -44,8 +44,9 @@ def UnlessCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python AP
 
 
 def entry_applies(context: LaunchContext, entry: object) -> bool:
-    """Whether a node's entry (env, remap, param) holds: roslaunch takes if= and unless= on
-    a node's children too (`only_if`, `only_unless`; launch_ros's entries take neither)."""
+    """Whether a node's entry (env, remap, param; a composable node) holds: roslaunch takes
+    if= and unless= on a node's children too, launch_ros on a composable node (`only_if`,
+    `only_unless`)."""
     for field, negate in (("only_if", False), ("only_unless", True)):
         text = getattr(entry, field, None)
         if text is not None and not Condition(text, negate).evaluate(context):

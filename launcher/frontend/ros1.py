@@ -23,7 +23,6 @@ ROS 1 → launcher:
 from __future__ import annotations
 
 import re
-import uuid
 
 from launcher.description.parameters import ROS1_TYPES
 from launcher.errors import Location, ParseError, did_you_mean
@@ -85,22 +84,9 @@ def _signs(entity: Entity) -> tuple[tuple[str, Location] | None, tuple[str, Loca
     return one, two
 
 
-DISTRO, VERSION = "noetic", "1.16.0"  # the ROS 1 that launcher's ROS 1 side stands for
-
-
-def roslaunch_parameters(run_id: str) -> dict[str, str]:
-    """What roslaunch (and roscore) put on the parameter server (rosdistro and rosversion end
-    in a newline there)."""
-    return {"/run_id": run_id, "/rosdistro": f"{DISTRO}\n", "/rosversion": f"{VERSION}\n"}
-
-
-ROSLAUNCH_PARAMETERS = roslaunch_parameters(str(uuid.uuid1()))  # one run id per launch
-
-
 def translate(root: Entity) -> Entity:
-    """The ROS 2 entity tree that does what this roslaunch tree does. Like roslaunch, it puts
-    /run_id, /rosdistro and /rosversion on the parameter server, so the server holds them
-    while the launch runs, whatever else it sets."""
+    """The ROS 2 entity tree that does what this roslaunch tree does. (/run_id, /rosdistro
+    and /rosversion: the parameter server holds them from its start, as a master does.)"""
     _unique_names(root.children, "", {})
     _args_once(root.children, {})
     _one_condition(root)
@@ -112,8 +98,7 @@ def translate(root: Entity) -> Entity:
         _WARNINGS.append(_warning(f"{root.location}: DEPRECATED: {deprecated.value}",
                                   deprecated.location))
     body = _body(root.children)
-    out.children = [*(_server_parameter(name, value, root.location)
-                      for name, value in ROSLAUNCH_PARAMETERS.items()), *_WARNINGS, *body]
+    out.children = [*_WARNINGS, *body]
     _WARNINGS.clear()
     for entity in _walk(out):  # their text is read by roslaunch's rules
         for attribute in entity.attributes.values():
@@ -174,13 +159,6 @@ def _local_machines(root: Entity) -> None:
                              "launcher runs every node on this host (remote machines are "
                              "not supported); leave machine= out, or point the <machine> at "
                              "localhost", entity.attributes["machine"].location)
-
-
-def _server_parameter(name: str, value: str, where: Location) -> Entity:
-    made = Entity("set_parameter", where, nested_in_children=True)
-    made.attributes.update(name=_text(name, where), value=_text(value, where),
-                           type=_text("str", where), server_only=_text("true", where))
-    return made
 
 
 def _literal(entity: Entity, name: str) -> str | None:

@@ -110,7 +110,10 @@ def _entity(file: str, node: yaml.Node) -> Entity:
 def _attribute(file: str, name: str, node: yaml.Node) -> Attribute:
     where = _where(file, node)
     if isinstance(node, yaml.ScalarNode):
-        text = "" if node.tag == "tag:yaml.org,2002:null" else str(node.value)
+        if node.tag == "tag:yaml.org,2002:null":  # (launch_yaml refuses one too)
+            raise ParseError(f"'{name}' has no value (YAML's null: nothing after the colon, "
+                             "'~' or 'null'); give one, or write '' for empty text", where)
+        text = str(node.value)
         offset = None
         if "\n" not in text and node.style in (None, "'", '"'):
             offset = 0 if node.style is None else 1

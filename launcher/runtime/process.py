@@ -67,6 +67,9 @@ class ProcessSpec:
     respawn_max_retries: int = -1
     origin: Any = None  # the action that asked for this process (for event handlers)
     joins_graph: bool = False  # it may be a ROS node (the launch then starts the router)
+    # roslaunch's order: it starts once the launch files being read are read and the
+    # parameters they set are on the graph's server (LaunchService.hold_graph)
+    after_loading: bool = False
     # A helper of the launch (one that puts the launch's parameters on the graph and holds
     # them there): once it prints a line holding this text, its work is done; it no longer
     # keeps the launch running, and is stopped when it is all that is left. Until then the

@@ -153,6 +153,7 @@ class LaunchService:
                     self._queue.extendleft(reversed(list(more)))
         finally:
             self._draining = False
+        self._release()
         self._check_given()
         self._check_idle()
 
@@ -204,12 +205,14 @@ class LaunchService:
                       started: Callable[[ManagedProcess], None] | None = None) -> None:
         """Spawn now, and call `started` with it; OSError (not found, not executable, bad
         cwd) goes to the caller. A process that may join the graph waits while the graph is
-        held (hold_graph), and is spawned once it is not (an OSError then is reported)."""
+        held (hold_graph), one `after_loading` also until the actions queued now are visited
+        (the launch files read); it is spawned after (an OSError then is reported)."""
         if self.ending.shutting_down:
             self.log("DEBUG", spec.label, "not started: the launch is shutting down")
             return
-        if self._holds and spec.joins_graph and not spec.helper_done_line:
-            self.log("DEBUG", spec.label, "waits for the graph's parameters")
+        if (self._holds and spec.joins_graph and not spec.helper_done_line) or \
+                (spec.after_loading and self._draining):
+            self.log("DEBUG", spec.label, "waits for the launch files and their parameters")
             self._held.append((spec, started))
             return
         process = self.table.start(spec)
@@ -234,7 +237,11 @@ class LaunchService:
                                      "parameter server (the error is above); no node was "
                                      "started"))
             return
-        if self._holds:
+        self._release()
+
+    def _release(self) -> None:
+        """Start what waited, once nothing is held (see start_process)."""
+        if self._holds or self._draining:
             return
         held, self._held = self._held, []
         for spec, started in held:

@@ -8,14 +8,4 @@ from __future__ import annotations
 
 KNOWN_DIFFERENCES = frozenset({
     "ros1/node/machine-missing",
-    "ros2/xml/composition/switched-off",
-    "ros2/xml/composition/unless-true",
-    "ros2/xml/node/no-pkg",
-    "ros2/xml/node/ros-args",
-    "ros2/xml/param/from-missing-file",
-    "ros2/xml/param/set-use-sim-time",
-    "ros2/yaml/composition/switched-off",
-    "ros2/yaml/node/respawn-bool",
-    "ros2/yaml/node/ros-args",
-    "ros2/yaml/param/value-null",
 })

@@ -314,7 +314,7 @@ def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
         assert listing.stdout.split() == [
             "/absolute", "/fleet/r1/driver/gain", "/fleet/rate", "/fleet/tuning/kp",
             "/gains/i", "/gains/limits/max", "/gains/p", "/robot_description", "/rosdistro",
-            "/rosversion", "/run_id"], listing.stderr  # the last three: roslaunch's own
+            "/rosversion", "/run_id"], listing.stderr  # the last three: the master's own
         assert ros1.run("rosparam", "list", "/fleet/r1").stdout.split() == \
             ["/fleet/r1/driver/gain"]
         gains = ros1.run("rosparam", "get", "/gains")
@@ -347,8 +347,8 @@ def test_the_graph_parameter_server_holds_every_parameter_as_roscore_does(ros1):
 </launch>
 """)
         forget = ros1.run("launch", "forget.launch", timeout=60)
-        assert "4 parameters set on the graph's parameter server (/_parameter_server), " \
-            "1 deleted" in forget.stdout, forget.stdout + forget.stderr  # (3: roslaunch's own)
+        assert "1 parameter set on the graph's parameter server (/_parameter_server), " \
+            "1 deleted" in forget.stdout, forget.stdout + forget.stderr
         assert ros1.run("rosparam", "list", "/loaded").stdout.split() == ["/loaded/again"]
         # roslaunch deletes before it sets: /loaded's old tree is gone, what the launch set
         # after the delete stays; a launched script's `rosparam` (launcher's) sees just that
@@ -669,3 +669,41 @@ def test_roslaunch_runs_several_files_as_one_launch(ros1):
     missing = ros1.run("roslaunch", "one.launch", "three.launch")
     assert missing.returncode == 1 and "Traceback" not in missing.stderr
     assert "RLException: [three.launch] is not a launch file name" in missing.stderr
+
+
+def test_a_fresh_graph_holds_what_a_fresh_master_holds(ros1):
+    """A ROS 1 master holds /run_id, /rosdistro and /rosversion from its start: `rosparam
+    get /` prints them on a graph nothing has used yet."""
+    got = ros1.run("rosparam", "get", "/", timeout=60)
+    assert got.returncode == 0, got.stderr
+    tree = yaml.safe_load(got.stdout)
+    assert set(tree) == {"run_id", "rosdistro", "rosversion"}, got.stdout
+    assert tree["rosdistro"] == "noetic\n"
+
+
+SETS = '<launch><param name="left_behind" value="1"/></launch>\n'
+
+
+def test_a_launchs_parameters_end_with_the_graph_it_started(ros1):
+    """roslaunch's own master ends with it, and its parameters go: whatever asks right
+    after finds none of them (the graph's router lingers, its parameters do not)."""
+    ros1.write("sets.launch", SETS)
+    for _ in range(3):
+        assert ros1.run("launch", "sets.launch", timeout=60).returncode == 0
+        got = ros1.run("rosparam", "get", "/left_behind", timeout=60)
+        assert got.returncode == 1 and "Parameter [/left_behind] is not set" in got.stderr, \
+            got.stdout + got.stderr
+
+
+def test_a_roscores_parameters_stay_for_the_next_launch(ros1):
+    """A master the user started with roscore keeps what a launch set, for the next one."""
+    core = ros1.start("roscore", output="core.out")
+    try:
+        ros1.wait_for_output("setting /run_id", 30, "core.out")
+        ros1.write("sets.launch", SETS)
+        assert ros1.run("launch", "sets.launch", timeout=60).returncode == 0
+        got = ros1.run("rosparam", "get", "/left_behind", timeout=60)
+        assert got.stdout.strip() == "1", got.stdout + got.stderr
+    finally:
+        core.send_signal(signal.SIGINT)
+        assert core.wait(30) == 0

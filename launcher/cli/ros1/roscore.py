@@ -1,16 +1,14 @@
 """`roscore`: the graph and its parameter server, started (or joined, when a launch or another
-roscore already runs them), with `/run_id`, `/rosdistro` and `/rosversion` set as roscore
-sets them; it prints roscore's summary and stays until Ctrl-C. The graph's router lives on
-while other nodes use it, and stops a few seconds after the last one, as launcher's routers
-do; nothing of roscore's stays."""
+roscore already runs them; the server holds `/run_id`, `/rosdistro` and `/rosversion` from
+its start, as roscore's master does); it prints roscore's summary and stays until Ctrl-C.
+The graph's router lives on while other nodes use it, and stops a few seconds after the last
+one, as launcher's routers do; its parameters go with the last of them (bus/router.py)."""
 
 from __future__ import annotations
 
 import argparse
-import uuid
 
 from launcher.arguments import Parser
-from launcher.frontend.ros1 import DISTRO, VERSION, roslaunch_parameters
 
 
 def main(argv: list[str], prog: str = "roscore") -> int:
@@ -34,11 +32,7 @@ def main(argv: list[str], prog: str = "roscore") -> int:
         server = graph.GraphParameters(node, 10.0)
         if not server.available(10.0):
             raise LaunchError("the graph's parameter server did not answer within 10 s")
-        run_id = str(uuid.uuid1())
-        if "/run_id" in server.names("/"):
-            run_id = str(server.get("/run_id"))
-        server.set_many(roslaunch_parameters(run_id))
-        print(_summary(run_id, joined), flush=True)
+        print(_summary(str(server.get("/run_id")), joined), flush=True)
         node.spin()
     except KeyboardInterrupt:
         pass
@@ -49,15 +43,16 @@ def main(argv: list[str], prog: str = "roscore") -> int:
 
 def _summary(run_id: str, joined: bool) -> str:
     from launcher.bus import discovery
+    from launcher.bus.graph_parameters import ROS1_DISTRO, ROS1_VERSION
 
     where = discovery.socket_path()
     started = (f"joined the running graph at {where}" if joined
                else f"auto-starting new master (the graph's router at {where})")
     return "\n".join([
         "... logging to the graph's router log", "",
-        f"ros_comm version {VERSION}", "", "",
+        f"ros_comm version {ROS1_VERSION}", "", "",
         "SUMMARY", "========", "",
-        "PARAMETERS", f" * /rosdistro: {DISTRO}", f" * /rosversion: {VERSION}", "",
+        "PARAMETERS", f" * /rosdistro: {ROS1_DISTRO}", f" * /rosversion: {ROS1_VERSION}", "",
         "NODES", "", started,
         f"setting /run_id to {run_id}",
         "started core service [/rosout]", ""])

@@ -112,8 +112,11 @@ def _command_line(spec: Any, environment: dict[str, str]) -> list[str]:
 
 def _server_parameters(specs: list[Any]) -> dict[str, Any]:
     """What the launch's helper would set on the graph's server (its file, argv's last word),
-    as roslaunch's config.params has them: all but /run_id, which a run makes."""
-    found: dict[str, Any] = {}
+    as roslaunch's config.params has them, roscore.xml's /rosdistro and /rosversion among
+    them (not /run_id, which a run makes)."""
+    from launcher.bus.graph_parameters import master_parameters
+
+    found: dict[str, Any] = master_parameters("")
     for spec in specs:
         if "launcher.nodes.load_parameters" in spec.argv:
             document = json.loads(Path(spec.argv[-1]).read_text())

@@ -32,6 +32,7 @@ from launcher.description.actions.param_entry import (
     gather_parameters,
     python_parameters,
 )
+from launcher.description.condition import entry_applies
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
@@ -62,6 +63,9 @@ class ComposableNode:
                                  doc="Topic and service remappings.")
     extra_arguments: list[Any] = attr(Kind.ENTRIES, name="extra_arg", entry=ExtraArgument,
                                       doc="Arguments for the container about this node.")
+    only_if: Any = attr(Kind.TEXT, name="if", doc="Loaded only when true (launch_ros's "
+                                                  "condition on a composable node).")
+    only_unless: Any = attr(Kind.TEXT, name="unless", doc="Loaded only when false.")
     where: Any = None
 
     def __post_init__(self) -> None:
@@ -116,6 +120,8 @@ def _requests(context: LaunchContext, nodes: list[ComposableNode],
     others are loaded (as a container's refusal is)."""
     made = []
     for node in nodes:
+        if not entry_applies(context, node):  # (switched off: the container starts all
+            continue  # the same, as launch_ros's does)
         try:
             made.append(node.request(context))
         except LaunchError as exc:

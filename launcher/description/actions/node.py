@@ -35,7 +35,7 @@ from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
 from launcher.lineage import NODE_PARAMETERS
-from launcher.packages.executables import find_executable
+from launcher.packages.executables import Executable, find_executable
 from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
@@ -68,8 +68,9 @@ class RemapEntry:
 @dataclass(kw_only=True, eq=False)
 class Node(ExecuteProcess):
     cmd: Any = None  # made from package and executable
-    package: Any = attr(Kind.TEXT, name="pkg", aliases=("package",), required=True,
-                        doc="The package holding the executable.")
+    package: Any = attr(Kind.TEXT, name="pkg", aliases=("package",),
+                        doc="The package holding the executable (without it, the executable "
+                            "is a command on PATH, as in launch_ros).")
     executable: Any = attr(Kind.TEXT, name="exec", aliases=("executable",), required=True,
                            doc="The executable's name in the package.")
     node_name: Any = attr(Kind.TEXT, name="name", doc="The node's name (-r __node:=).")
@@ -117,8 +118,12 @@ class Node(ExecuteProcess):
     def spec(self, context: LaunchContext):  # type: ignore[override]
         if context.packages is None:
             raise ExecutionError("node needs the package index, which this run lacks")
-        package = context.packages.get(perform_text(context, self.package))
-        found = find_executable(package, perform_text(context, self.executable))
+        if self.package is None:  # launch_ros: the executable is run as a command
+            command = perform_text(context, self.executable)
+            found = Executable(os.path.basename(command), (command,))
+        else:
+            package = context.packages.get(perform_text(context, self.package))
+            found = find_executable(package, perform_text(context, self.executable))
         node = self._node_name(context)
         space = self._namespace(context)
         if self.node_name is not None:
@@ -145,7 +150,9 @@ class Node(ExecuteProcess):
             argv += [f"{source}:={target}" for source, target in remaps]
             argv += [f"__name:={node}"] if node else []  # the namespace: ROS_NAMESPACE alone
         else:
-            argv += ["--ros-args", *self._words(context, self.ros_arguments)]
+            if self.ros_arguments is not None:  # launch_ros: these, then its own, each
+                argv += ["--ros-args", *self._words(context, self.ros_arguments)]  # flagged
+            argv += ["--ros-args"]
             argv += ["-r", f"__node:={node}"] if node else []
             argv += ["-r", f"__ns:={space}"] if space else []
             argv += words
@@ -169,6 +176,7 @@ class Node(ExecuteProcess):
             log = (context.log_dir or Path(tempfile.gettempdir())) / f"{stem}.log"
             spec.argv = [*spec.argv, f"__log:={log}"]
         spec.joins_graph = True
+        spec.after_loading = ros1  # roslaunch: once every file is read and its parameters set
         return spec
 
     def _ros1_words(self, context: LaunchContext, value: Any) -> list[str]:
