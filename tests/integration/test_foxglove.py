@@ -9,6 +9,7 @@ import json
 import os
 import re
 import shutil
+import socket
 import subprocess
 import sys
 import time
@@ -26,11 +27,14 @@ TWIST = "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n" + "=" * 
     "\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n"
 
 
-def client(url: str, *steps: dict, timeout: float = 120) -> list[dict]:
-    """Foxglove's client, run by node, through `steps`: its JSON lines."""
+def client(url: str, *steps: dict, timeout: float = 120,
+           protocols: tuple[str, ...] = ()) -> list[dict]:
+    """Foxglove's client, run by node, through `steps` (offering `protocols`, when given, as
+    its WebSocket subprotocols): its JSON lines."""
     node = shutil.which("node")
     assert node, "the set-up installs Node.js (nodejs) for these tests"
-    done = subprocess.run([node, str(CLIENT), url, json.dumps(list(steps))],
+    done = subprocess.run([node, str(CLIENT), url, json.dumps(list(steps)),
+                           *([",".join(protocols)] if protocols else [])],
                           capture_output=True, text=True, timeout=timeout,
                           cwd=CLIENT.parent)
     lines = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
@@ -114,6 +118,17 @@ def test_foxglove_client_sees_decodes_drives_and_calls_through_the_token(served)
     graph = found(lines, "graph")["graph"]
     published = {t["name"]: t["publisherIds"] for t in graph["publishedTopics"]}
     assert "/odom" in published and published["/odom"]
+
+
+def test_a_client_offering_only_the_protocols_old_name_is_served(served):
+    """@foxglove/ws-protocol's own client offers only `foxglove.websocket.v1` (as older
+    Foxglove and Lichtblick apps do); the SDK takes only `foxglove.sdk.v1`. Through the
+    front, it connects, is answered with the name it offered, and receives /odom."""
+    _, url, _ = served
+    lines = client(url, {"do": "echo", "topic": "/odom", "count": 2},
+                   protocols=("foxglove.websocket.v1",))
+    assert found(lines, "connected")["protocol"] == "foxglove.websocket.v1", lines
+    assert len(found(lines, "echo")["messages"]) == 2, lines
 
 
 def test_without_the_token_every_connection_is_refused(served):
@@ -310,6 +325,53 @@ def test_the_private_network_works_for_a_user_other_than_root():
         shutil.rmtree(copy, ignore_errors=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["PRIVATE", "INSIDE", "OK", "HOST", "OK"], done.stdout
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="needs root to act as another user")
+def test_where_user_namespaces_are_restricted_the_bridge_says_what_to_do():
+    """As the user nobody, where user namespaces cannot be made (as Ubuntu 24.04 restricts
+    them; here: a namespace whose limit is 0): no way keeps the SDK's server from the other
+    users, so the bridge does not start, says why and what to do, leaves nothing listening,
+    and shows no traceback. (launcher's Python files are copied where nobody can read them.)"""
+    import tempfile
+
+    copy = Path(tempfile.mkdtemp(prefix="launcher-nobody-"))
+    port = free_port()
+    try:
+        shutil.copytree(REPO / "launcher", copy / "launcher",
+                        ignore=shutil.ignore_patterns("__pycache__", "builtin", "*.so"))
+        for path in [copy, *copy.rglob("*")]:
+            path.chmod(0o755 if path.is_dir() else 0o644)
+        done = subprocess.run(
+            [sys.executable, str(REPO / "tests/integration/clients/without_user_namespaces.py"),
+             "/usr/bin/python3", "-c", "import sys; from launcher.nodes.foxglove import main; "
+             "sys.exit(main())", "--ros-args", "-p", f"port:={port}"],
+            cwd=copy, env={"PATH": "/usr/bin:/bin", "PYTHONPATH": str(copy), "HOME": "/"},
+            capture_output=True, text=True, timeout=60)
+    finally:
+        shutil.rmtree(copy, ignore_errors=True)
+    said = done.stdout + done.stderr
+    assert done.returncode == 1, said
+    assert "cannot start behind the graph's token" in said, said
+    assert "user.max_user_namespaces=0" in said and "sudo sysctl -w" in said, said
+    assert "token:=false" in said and "every local user can watch and command" in said, said
+    assert "Traceback" not in said, said
+    with pytest.raises(OSError):  # nothing listens on the port
+        socket.create_connection(("127.0.0.1", port), timeout=1).close()
+
+
+def test_ubuntus_apparmor_restriction_gets_the_profile_that_lifts_it(tmp_path):
+    """Where AppArmor restricts user namespaces (Ubuntu 24.04's default), the advice is the
+    AppArmor profile for launcher's Python, which keeps the token."""
+    from launcher.nodes.foxglove.isolation import advice
+
+    (tmp_path / "kernel").mkdir()
+    (tmp_path / "kernel" / "apparmor_restrict_unprivileged_userns").write_text("1\n")
+    said = advice("a network namespace", "Operation not permitted", str(tmp_path))
+    assert "kernel.apparmor_restrict_unprivileged_userns=1" in said
+    assert f"profile launcher-foxglove {os.path.realpath(sys.executable)} " \
+           "flags=(unconfined) {\\n  userns,\\n}" in said, said
+    assert "sudo apparmor_parser -r /etc/apparmor.d/launcher-foxglove" in said
 
 
 def test_a_subscribed_parameter_sends_its_changes(served):

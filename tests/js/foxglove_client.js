@@ -1,7 +1,8 @@
 // A third-party Foxglove client for the test suite: Foxglove's own @foxglove/ws-protocol
 // client, @foxglove/rosmsg to read the advertised schemas, @foxglove/rosmsg2-serialization
 // to decode and encode CDR. It connects to argv[2] and runs the steps given as JSON in
-// argv[3], printing one JSON line per result.
+// argv[3], printing one JSON line per result; argv[4], when given, is the subprotocols it
+// offers, comma-separated (by default the SDK's name and the protocol's old one, as the app).
 //   {"do": "channels"}                                     the advertised channels
 //   {"do": "echo", "topic": T, "count": N}                 N decoded messages of T
 //   {"do": "rate", "topic": T, "seconds": S}               messages of T received in S seconds
@@ -27,7 +28,8 @@ const say = (what) => console.log(JSON.stringify(what, (k, v) => (typeof v === "
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
 // the Foxglove SDK speaks the protocol as "foxglove.sdk.v1" (the app offers both names)
-const ws = new WebSocket(url, ["foxglove.sdk.v1", FoxgloveClient.SUPPORTED_SUBPROTOCOL], { maxPayload: 1 << 30 });
+const protocols = process.argv[4] ? process.argv[4].split(",") : ["foxglove.sdk.v1", FoxgloveClient.SUPPORTED_SUBPROTOCOL];
+const ws = new WebSocket(url, protocols, { maxPayload: 1 << 30 });
 ws.on("unexpected-response", (req, res) => {
   say({ refused: res.statusCode });
   process.exit(3);
@@ -65,7 +67,7 @@ const once = (name, test, seconds) => new Promise((resolve) => {
 
 async function run() {
   await until(() => info, 10);
-  say({ connected: info && info.name, capabilities: info && info.capabilities });
+  say({ connected: info && info.name, capabilities: info && info.capabilities, protocol: ws.protocol });
   for (const step of steps) {
     if (step.do === "wait") await sleep(step.seconds * 1000);
     else if (step.do === "channels") {

@@ -1,5 +1,6 @@
 """foxglove_bridge: the graph served to Foxglove over its WebSocket protocol (bridge.py),
-behind the graph's token (isolation.py)."""
+through launcher's front (front.py), which asks for the graph's token; the SDK's server in a
+private network that the front alone reaches (isolation.py)."""
 
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ def main() -> int:
 
 
 def _run() -> int:
-    from launcher.nodes.foxglove import isolation
+    from launcher.nodes.foxglove import front, isolation
 
     token_wanted = _token_wanted()
     if token_wanted:  # (while this process has one thread: before the graph's session)
@@ -44,21 +45,26 @@ def _run() -> int:
         bridge = Bridge(node, settings)
         options = _server_options(bridge, settings, Assets(settings.asset_allowlist,
                                                            _packages()))
-        front = None
+        public = front.listen(settings.address, settings.port)
         if token_wanted:
-            token = listen_token.load()
-            public = isolation.listen(settings.address, settings.port)
+            token: str | None = listen_token.load()
             network = isolation.PrivateNetwork()
             bridge.server = network.call(lambda: foxglove.start_server(
                 host="127.0.0.1", port=0, **options))
             inner = bridge.server.port
-            front = isolation.Front(public, token, lambda: network.call(
-                lambda: socket.create_connection(("127.0.0.1", inner), timeout=5)),
-                node.get_logger().warning)
-        else:
+
+            def connect() -> socket.socket:
+                return network.call(lambda: socket.create_connection(("127.0.0.1", inner),
+                                                                     timeout=5))
+        else:  # (the SDK's server on the host's loopback: anyone may reach it anyway)
             token = None
             node.get_logger().warning(f"foxglove_bridge: {listen_token.OFF_WARNING}")
-            bridge.server = _start_open(settings, options)
+            bridge.server = foxglove.start_server(host="127.0.0.1", port=0, **options)
+            inner = bridge.server.port
+
+            def connect() -> socket.socket:
+                return socket.create_connection(("127.0.0.1", inner), timeout=5)
+        door = front.Front(public, token, connect, node.get_logger().warning)
         if settings.use_sim_time:
             node.create_subscription("rosgraph_msgs/msg/Clock", "/clock", bridge.on_clock)
         bridge.sync()
@@ -68,8 +74,7 @@ def _run() -> int:
         node.get_logger().info(f"Server listening on port {settings.port}")
         print(f"[{NAME}] Foxglove connects to {url}", file=sys.stderr, flush=True)
         node.spin()
-        if front is not None:
-            front.close()
+        door.close()
         bridge.server.stop()
     finally:
         node.destroy_node()
@@ -103,16 +108,6 @@ def _server_options(bridge: Bridge, settings: Settings, assets: Assets) -> dict[
             "supported_encodings": ["cdr"],
             "asset_handler": assets.fetch if "assets" in wanted else None,
             "message_backlog_size": settings.backlog}
-
-
-def _start_open(settings: Settings, options: dict[str, Any]) -> Any:
-    import foxglove
-
-    try:
-        return foxglove.start_server(host=settings.address, port=settings.port, **options)
-    except Exception as exc:  # noqa: BLE001 - the SDK's (a taken port)
-        raise LaunchError(f"foxglove_bridge cannot listen on {settings.address} port "
-                          f"{settings.port}: {exc}") from None
 
 
 def _packages() -> Any:
