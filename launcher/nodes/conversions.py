@@ -140,6 +140,29 @@ def _tf(m: Any) -> dict[str, Any]:
         for name, parent, pose in zip(m.name, m.parent, m.pose, strict=False)]}
 
 
+def _scan_to_ros(s: Any) -> dict[str, Any]:
+    """ros_gz_bridge's: of several rows, the middle one (the point cloud keeps them all);
+    no time_increment or scan_time (gz.msgs.LaserScan has neither)."""
+    count = s.count or len(s.ranges)
+    start = (s.vertical_count // 2) * count
+    return {"header": _header(s.header), "angle_min": s.angle_min, "angle_max": s.angle_max,
+            "angle_increment": s.angle_increment, "time_increment": 0.0, "scan_time": 0.0,
+            "range_min": s.range_min, "range_max": s.range_max,
+            "ranges": s.ranges[start:start + count],
+            "intensities": s.intensities[start:start + count]}
+
+
+def _scan_to_sim(s: Any) -> dict[str, Any]:
+    """A ROS scan for the sim: one row of all its ranges (ros_gz_bridge counts the rays from
+    the angles, and drops the last: here every ray is kept)."""
+    return {"header": _header(s.header), "angle_min": s.angle_min, "angle_max": s.angle_max,
+            "angle_increment": s.angle_increment, "time_increment": s.time_increment,
+            "scan_time": s.scan_time, "range_min": s.range_min, "range_max": s.range_max,
+            "ranges": s.ranges, "intensities": s.intensities, "count": len(s.ranges),
+            "vertical_angle_min": 0.0, "vertical_angle_max": 0.0, "vertical_angle_step": 0.0,
+            "vertical_count": 0}
+
+
 def _joint_state(m: Any) -> dict[str, Any]:
     return {"header": _header(m.header), "name": list(m.joint_name), "position": m.position,
             "velocity": m.velocity, "effort": m.effort}
@@ -223,7 +246,9 @@ def conversions() -> dict[tuple[str, str], Conversion]:
         ("sensor_msgs/msg/FluidPressure", f"{m}/FluidPressure"): same,
         ("sensor_msgs/msg/BatteryState", f"{m}/BatteryState"): same,
         ("trajectory_msgs/msg/JointTrajectory", f"{m}/JointTrajectory"): same,
-        ("sensor_msgs/msg/LaserScan", f"{m}/LaserScan"): same,
+        ("sensor_msgs/msg/LaserScan", f"{m}/LaserScan"): Conversion(
+            _via(f"{m}/LaserScan", "sensor_msgs/msg/LaserScan", _scan_to_ros),
+            _via("sensor_msgs/msg/LaserScan", f"{m}/LaserScan", _scan_to_sim)),
         ("sensor_msgs/msg/PointCloud2", f"{m}/PointCloudPacked"): same,
         ("sensor_msgs/msg/Image", f"{m}/Image"): same,
         ("sensor_msgs/msg/CameraInfo", f"{m}/CameraInfo"): same,

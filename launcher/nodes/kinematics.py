@@ -29,8 +29,9 @@ from launcher.sim.urdf_tree import parse_robot, root_link
 
 MOVING = ("revolute", "continuous", "prismatic")
 _PROLOGUE = re.compile(r"^\s*(?:<\?.*?\?>|<!--.*?-->|\s)*", re.S)  # <?xml?>, comments
+# SDF's joints as sdformat_urdf converts them (ball and universal: floating, since 1.0.0)
 _SDF_KINDS = {"revolute": "revolute", "continuous": "continuous", "prismatic": "prismatic",
-              "fixed": "fixed"}
+              "fixed": "fixed", "ball": "floating", "universal": "floating"}
 
 
 def _unlimited(limit: ET.Element, unlimited: float) -> bool:
@@ -105,7 +106,8 @@ class Tree:
             if kind is None:
                 raise LaunchError(f"{label}: joint '{joint.name}' is a {joint.kind} joint, which "
                                   f"robot_state_publisher cannot follow (as sdformat_urdf: "
-                                  f"revolute, continuous, prismatic and fixed joints)")
+                                  f"revolute, continuous, prismatic and fixed joints; ball "
+                                  f"and universal ones as floating)")
             limit = joint.element.find("axis")
             limit = limit.find("limit") if limit is not None else None
             if kind == "revolute" and (limit is None or _unlimited(limit, UNLIMITED)):

@@ -49,6 +49,8 @@ def build_parser() -> Parser:
                         help="stop when this process (the sim that started it) is gone")
     return parser
 
+COLOUR_ENCODINGS = ("rgb8", "bgr8", "mono8", "mono16")  # what a picture may be written as
+
 
 class Renderer:
     def __init__(self, node: Node, world: str) -> None:
@@ -177,9 +179,9 @@ class Renderer:
         """A gazebo_ros_camera stream, in the plugin's frame."""
         header = self.header(camera, stamp, output["frame_id"])
         stream = output["stream"]
-        if stream == "image":
-            return self.image(header, colour, camera["encoding"] if camera["kind"] == "camera"
-                              else "rgb8")
+        if stream == "image":  # gazebo_ros: the <format> decides, a depth camera's too
+            return self.image(header, colour, camera["encoding"] if camera["encoding"] in
+                              COLOUR_ENCODINGS else "rgb8")
         if stream == "depth_image":
             return self.image(header, depth, "32FC1")
         if stream == "points":

@@ -59,14 +59,16 @@ def _model_to_gz(data: Data) -> Data:
 
 
 def _laser_scan_to_gz(d: Data) -> Data:
-    """A scan as gz.msgs.LaserScan: its frame, angle step and count where ROS has an increment
-    (several vertical rows are one scan of `count` × `vertical_count` ranges)."""
+    """A scan as gz.msgs.LaserScan: its frame, angle step where ROS has an increment, `count`
+    rays a row and the vertical rows' count and angles (a sensor_msgs one: a single row)."""
     header = d.get("header") or {}
     ranges = d.get("ranges") or []
     return {"header": _header_to_gz(header), "frame": header.get("frame_id", ""),
             "angle_min": d.get("angle_min", 0.0), "angle_max": d.get("angle_max", 0.0),
             "angle_step": d.get("angle_increment", 0.0), "range_min": d.get("range_min", 0.0),
-            "range_max": d.get("range_max", 0.0), "count": len(ranges),
+            "range_max": d.get("range_max", 0.0), "count": d.get("count") or len(ranges),
+            **{k: d.get(k, 0) for k in ("vertical_angle_min", "vertical_angle_max",
+                                        "vertical_angle_step", "vertical_count")},
             "ranges": list(ranges), "intensities": list(d.get("intensities") or [])}
 
 

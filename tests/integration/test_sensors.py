@@ -85,7 +85,18 @@ def test_ros_gz_sim_demos_gpu_lidar_bridge_gives_laser_scans_and_point_clouds(se
                              "--no-arr", "--timeout", "30", timeout=60)
         assert scan.returncode == 0, scan.stderr
         assert "frame_id: model_with_lidar::link::gpu_lidar" in scan.stdout
-        assert "length: 10240" in scan.stdout  # 640 × 16 rays
+        # of 16 rows, the middle one: ros_gz_bridge's (a ROS LaserScan is one row)
+        assert "length: 640" in scan.stdout and "scan_time: 0.0" in scan.stdout, scan.stdout
+        # Gazebo's own: every ray, `count` of a row, and the rows' count and angles
+        gz = sensor_ws.run("gz", "topic", "-e", "-t", "/lidar", "-n", "1", timeout=60)
+        assert gz.returncode == 0, gz.stderr
+        fields = dict(re.findall(r"^(count|vertical_count|vertical_angle_\w+): (\S+)$",
+                                 gz.stdout, re.M))
+        assert fields["count"] == "640" and fields["vertical_count"] == "16", gz.stdout
+        assert float(fields["vertical_angle_min"]) == pytest.approx(-0.261799, abs=1e-5)
+        assert float(fields["vertical_angle_max"]) == pytest.approx(0.261799, abs=1e-5)
+        assert float(fields["vertical_angle_step"]) == pytest.approx(0.523598 / 15, abs=1e-5)
+        assert gz.stdout.count("ranges: ") == 10240
         cloud = sensor_ws.run("topic", "echo", "/lidar/points", "sensor_msgs/msg/PointCloud2",
                               "--once", "--no-arr", "--timeout", "30", timeout=60)
         assert cloud.returncode == 0, cloud.stderr
@@ -376,6 +387,39 @@ def test_gazebo_plugins_camera_demo_publishes_images_onto_the_ros_graph(sensor_w
                              "--field", "k", "--timeout", "60", timeout=90)
         # fx = 640 / (2 tan(1.3962634 / 2))
         assert f"{640 / (2 * math.tan(1.3962634 / 2)):.3f}"[:6] in info.stdout, info.stdout
+    finally:
+        assert stop(proc) == 0
+
+
+DEPTH_BGR_WORLD = """<?xml version="1.0"?>
+<sdf version="1.6"><world name="depth_bgr">
+<model name="cam"><static>true</static><pose>0 0 0.5 0 0 0</pose><link name="camera_link">
+<sensor type="depth" name="depth1"><update_rate>10</update_rate>
+<camera name="head"><horizontal_fov>1.0</horizontal_fov>
+<image><width>64</width><height>48</height><format>B8G8R8</format></image>
+<clip><near>0.05</near><far>20</far></clip></camera>
+<plugin name="depth_controller" filename="libgazebo_ros_camera.so">
+<ros><namespace>bgr</namespace></ros><camera_name>depth1</camera_name>
+<frame_name>camera_link</frame_name></plugin></sensor></link></model>
+</world></sdf>
+"""
+
+
+def test_gazebo_ros_depth_cameras_colour_image_is_written_in_its_format(sensor_ws):
+    """gazebo_ros's camera plugin on a depth camera: the colour image's encoding is the one
+    <image><format> names (B8G8R8: bgr8), as for a plain camera."""
+    sensor_ws.write("depth_bgr.world", DEPTH_BGR_WORLD)
+    proc = sensor_ws.start("gz", "sim", "-s", "-r", "-v", "3", "depth_bgr.world",
+                           output="sim.out")
+    try:
+        sensor_ws.wait_for_output("running", 60, "sim.out")
+        image = sensor_ws.run("topic", "echo", "/bgr/depth1/image_raw", "--once", "--no-arr",
+                              "--timeout", "60", timeout=90)
+        assert image.returncode == 0, image.stderr
+        assert "encoding: bgr8" in image.stdout and "width: 64" in image.stdout, image.stdout
+        depth = sensor_ws.run("topic", "echo", "/bgr/depth1/depth/image_raw", "--once",
+                              "--no-arr", "--timeout", "60", timeout=90)
+        assert "encoding: 32FC1" in depth.stdout, depth.stdout + depth.stderr
     finally:
         assert stop(proc) == 0
 

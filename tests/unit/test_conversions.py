@@ -155,13 +155,39 @@ print('numpy' in sys.modules, out.hex())
         expected, "sensor_msgs/msg/JointState"))
 
 
+def test_a_scan_of_several_rows_reaches_ros_as_its_middle_row():
+    """ros_gz_bridge's: a gz LaserScan of `vertical_count` rows of `count` becomes a ROS
+    LaserScan of the middle row (no scan_time); a ROS scan reaches the sim as one row."""
+    from launcher.bus.types import registry
+
+    reg = registry()
+    cls = reg.message_class
+    header = cls("std_msgs/msg/Header")(stamp=cls("builtin_interfaces/msg/Time")(
+        sec=1, nanosec=2), frame_id="m::l::lidar")
+    rows = [float(i) for i in range(12)]  # 3 rows of 4
+    scan = cls("mujoco_sim/msg/LaserScan")(
+        header=header, angle_min=-1.0, angle_max=1.0, angle_increment=2 / 3,
+        time_increment=0.0, scan_time=0.1, range_min=0.1, range_max=10.0,
+        ranges=np.array(rows, dtype=np.float32), intensities=np.zeros(12, dtype=np.float32),
+        count=4, vertical_angle_min=-0.2, vertical_angle_max=0.2, vertical_angle_step=0.2,
+        vertical_count=3)
+    conversion = conversions.find("sensor_msgs/msg/LaserScan", "mujoco_sim/msg/LaserScan")
+    ros = reg.reader("sensor_msgs/msg/LaserScan")(conversion.to_ros(
+        reg.writer("mujoco_sim/msg/LaserScan")(scan)))
+    assert list(ros.ranges) == [4.0, 5.0, 6.0, 7.0] and ros.scan_time == 0.0
+    assert ros.header.frame_id == "m::l::lidar"
+    back = reg.reader("mujoco_sim/msg/LaserScan")(conversion.to_sim(
+        reg.writer("sensor_msgs/msg/LaserScan")(ros)))
+    assert (back.count, back.vertical_count, list(back.ranges)) == (4, 0, [4.0, 5.0, 6.0, 7.0])
+
+
 def test_the_sensors_types_pass_through_the_bridge_as_ros_lays_them_out():
     """The sim's sensor messages are laid out as sensor_msgs' (their bytes go across as they
     are); NavSat becomes a NavSatFix from GPS."""
     from launcher.bus.types import registry
 
     reg = registry()
-    for ros, sim in (("sensor_msgs/msg/Imu", "IMU"), ("sensor_msgs/msg/LaserScan", "LaserScan"),
+    for ros, sim in (("sensor_msgs/msg/Imu", "IMU"),
                      ("sensor_msgs/msg/PointCloud2", "PointCloudPacked"),
                      ("sensor_msgs/msg/MagneticField", "Magnetometer"),
                      ("sensor_msgs/msg/FluidPressure", "FluidPressure"),

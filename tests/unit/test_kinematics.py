@@ -167,5 +167,15 @@ def test_an_sdf_robot_description_is_read_as_sdformat_urdf_reads_it():
 
 
 def test_an_sdf_joint_robot_state_publisher_cannot_follow_is_named():
-    with pytest.raises(LaunchError, match="joint 'hinge' is a ball joint"):
-        Tree.parse(SDF_ROBOT.replace('name="hinge" type="revolute"', 'name="hinge" type="ball"'))
+    with pytest.raises(LaunchError, match="joint 'hinge' is a screw joint"):
+        Tree.parse(SDF_ROBOT.replace('name="hinge" type="revolute"', 'name="hinge" type="screw"'))
+
+
+@pytest.mark.parametrize("kind", ["ball", "universal"])
+def test_an_sdf_ball_or_universal_joint_is_floating_as_sdformat_urdf_makes_it(kind):
+    """sdformat_urdf (since 1.0.0) converts them into floating joints: the description is
+    taken, the joint neither moves nor is fixed, the others are followed."""
+    tree = Tree.parse(SDF_ROBOT.replace('name="hinge" type="revolute"',
+                                        f'name="hinge" type="{kind}"'))
+    assert [j.name for j in tree.moving] == ["spin"]
+    assert [(j.name, j.kind) for j in tree.joints if j.name == "hinge"] == [("hinge", "floating")]

@@ -172,7 +172,7 @@ def _laserscan(lidar: Any, output: RosOutput, ranges: Any, header: Any) -> Any:
     count = lidar.horizontal.samples
     start = (lidar.vertical.samples // 2) * count
     row = ranges[start:start + count]
-    scan = lidar.scan_message_of(row)
+    scan = lidar.scan_message_of(row, ros=True)
     scan.header = header
     return scan
 

@@ -1,8 +1,9 @@
 """The lidar (`gpu_lidar`, `lidar`, classic `ray` and `gpu_ray`): one `mj_multiRay` call per scan
 from the sensor's site, the rays' directions worked out once in the sensor frame, the sensor's
 own body left out. Published as Gazebo does: a LaserScan on `…/scan` (every ray, row after
-row, when there are several vertical ones) and the points as a PointCloudPacked on
-`…/scan/points`, each only while someone listens."""
+row, when there are several vertical ones: `count` a row, `vertical_count` rows, as
+gz-sensors fills gz.msgs.LaserScan) and the points as a PointCloudPacked on `…/scan/points`,
+each only while someone listens."""
 
 from __future__ import annotations
 
@@ -145,14 +146,20 @@ class Lidar(Sensor):
         scan.header = self.header(data)
         return scan
 
-    def scan_message_of(self, ranges: Any) -> Any:
-        """A scan of `ranges` (all the rows, or one), its header to be set."""
-        h = self.horizontal
+    def scan_message_of(self, ranges: Any, ros: bool = False) -> Any:
+        """A scan of `ranges`, its header to be set: the sim's (all the rows, with gz's row
+        fields), or, `ros`, a sensor_msgs/LaserScan (one row)."""
+        h, v = self.horizontal, self.vertical
+        fields = dict(header=None, angle_min=h.min_angle, angle_max=h.max_angle,
+                      angle_increment=h.increment, time_increment=0.0, scan_time=self.period,
+                      range_min=self.range_min, range_max=self.max_range_written,
+                      ranges=ranges, intensities=np.zeros(len(ranges), dtype=np.float32))
+        if ros:
+            return self.sim.transport.message("sensor_msgs/msg/LaserScan", **fields)
         return self.sim.transport.message(
-            self.message_type, header=None, angle_min=h.min_angle,
-            angle_max=h.max_angle, angle_increment=h.increment, time_increment=0.0,
-            scan_time=self.period, range_min=self.range_min, range_max=self.max_range_written,
-            ranges=ranges, intensities=np.zeros(len(ranges), dtype=np.float32))
+            self.message_type, **fields, count=h.samples, vertical_angle_min=v.min_angle,
+            vertical_angle_max=v.max_angle, vertical_angle_step=v.increment,
+            vertical_count=v.samples)
 
     @property
     def max_range_written(self) -> float:
