@@ -258,6 +258,11 @@ def test_service_introspection_and_service_echo(ws):
         said = ws.wait_for_output("event_type: 2", 20, "echo.txt")
         assert "event_type: 1" in said and "request:\n- a: 2\n  b: 3" in said, said
         assert "response:\n- sum: 5" in said, said
+        # the events are a topic of their own (hidden, as ROS 2 lists it)
+        listed = ws.run("topic", "list", "-t", "--include-hidden-topics")
+        topics = listed.stdout + listed.stderr
+        assert "/add_two_ints/_service_event [example_interfaces/srv/AddTwoInts_Event]" \
+            in topics, topics
     finally:
         for proc in (echo, adder):
             proc.send_signal(signal.SIGINT)
@@ -327,7 +332,8 @@ except KeyboardInterrupt:
     loud = ws.start("run", "loud", "loud.py", output="loud.txt")
     try:
         ws.wait_for_output("up", 30, "loud.txt")
-        assert ws.run("logger", "get", "/loud").stdout == "loud: INFO\n"
+        # its own level, unset (0) until set, as rclpy answers (it then follows the default)
+        assert ws.run("logger", "get", "/loud").stdout == "loud: UNSET\n"
         assert ws.run("logger", "set", "/loud", "debug").stdout == "loud: DEBUG\n"
         ws.wait_for_output("whisper", 10, "loud.txt")  # debug messages now come out
         bad = ws.run("logger", "set", "/loud", "chatty")
@@ -338,3 +344,121 @@ except KeyboardInterrupt:
     finally:
         loud.send_signal(signal.SIGINT)
         loud.wait(20)
+
+
+THROTTLED = """
+import time
+import rclpy
+from rclpy.callback_groups import CallbackGroup
+from rclpy.node import Node
+
+
+class Tokens(CallbackGroup):
+    # a bucket of three tokens, never refilled: three callbacks, then none
+    def __init__(self):
+        super().__init__()
+        self.tokens, self.calls = 3, []
+
+    def can_execute(self, entity):
+        return self.tokens > 0
+
+    def beginning_execution(self, entity):
+        self.calls.append(("begin", type(entity).__name__))
+        if self.tokens > 0:
+            self.tokens -= 1
+            return True
+        return False
+
+    def ending_execution(self, entity):
+        self.calls.append(("end", type(entity).__name__))
+
+
+rclpy.init()
+node = Node("throttled")
+fired = []
+group = Tokens()
+node.create_timer(0.02, lambda: fired.append(time.monotonic()), callback_group=group)
+end = time.monotonic() + 1.5
+while time.monotonic() < end:
+    rclpy.spin_once(node, timeout_sec=0.1)
+print("fired", len(fired), group.calls[:2], flush=True)
+"""
+
+
+def test_a_callback_group_of_the_programs_own_decides_when_its_callbacks_run(ws):
+    """rclpy asks a custom CallbackGroup (ros2/examples' ThrottledCallbackGroup) whether a
+    callback may run (can_execute, beginning_execution) and tells it when it ended: a group
+    with three tokens lets its 50 Hz timer run three times, not 75."""
+    node_package(ws, "throttle", {"throttled.py": THROTTLED})
+    ws.own_bus()
+    done = ws.run("run", "throttle", "throttled.py", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "fired 3 [('begin', 'Timer'), ('end', 'Timer')]" in done.stdout, done.stdout
+
+
+LOGGER_SERVICE = """
+import threading, time
+import rclpy
+from example_interfaces.msg import String
+from rcl_interfaces.msg import LoggerLevel
+from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.impl.logging_severity import LoggingSeverity
+from rclpy.node import Node
+
+with rclpy.init():
+    served = Node("served", enable_logger_service=True)
+    child = served.get_logger().get_child("child")
+    def said(msg):
+        for logger, tag in ((served.get_logger(), "parent"), (child, "child")):
+            logger.debug(f"{tag} {msg.data} debug")
+            logger.info(f"{tag} {msg.data} info")
+            logger.error(f"{tag} {msg.data} error")
+    served.create_subscription(String, "output", said, 10)
+    asker = Node("asker")
+    pub = asker.create_publisher(String, "output", 10)
+    setter = asker.create_client(SetLoggerLevels, "served/set_logger_levels")
+    getter = asker.create_client(GetLoggerLevels, "served/get_logger_levels")
+    executor = SingleThreadedExecutor()
+    executor.add_node(served)
+    thread = threading.Thread(target=executor.spin)
+    thread.start()
+    setter.wait_for_service(10)
+    def levels():
+        f = getter.call_async(GetLoggerLevels.Request(names=["served", "served.child"]))
+        rclpy.spin_until_future_complete(asker, f)
+        return [l.level for l in f.result().levels]
+    def set_(parent, kid):
+        f = setter.call_async(SetLoggerLevels.Request(levels=[LoggerLevel(name="served", level=parent), LoggerLevel(name="served.child", level=kid)]))
+        rclpy.spin_until_future_complete(asker, f)
+        return [r.successful for r in f.result().results]
+    time.sleep(0.5)
+    print("levels", levels(), flush=True)
+    pub.publish(String(data="one")); time.sleep(0.5)
+    print("set", set_(int(LoggingSeverity.DEBUG), int(LoggingSeverity.ERROR)), levels(), flush=True)
+    pub.publish(String(data="two")); time.sleep(0.5)
+    print("set", set_(int(LoggingSeverity.WARN), int(LoggingSeverity.DEBUG)), levels(), flush=True)
+    pub.publish(String(data="three")); time.sleep(0.5)
+    executor.shutdown()
+    thread.join()
+print("done", flush=True)
+"""
+
+
+def test_the_logger_service_sets_a_child_logger_apart_from_its_parent(ws):
+    """demo_nodes_py's use_logger_service, as rclpy has it: a child logger's level is its own
+    once set (unset: 0, and it follows its parent), both got and set through the node's
+    logger services, and each logger shows what its own effective level lets through."""
+    node_package(ws, "logsvc", {"logsvc.py": LOGGER_SERVICE})
+    ws.own_bus()
+    done = ws.run("run", "logsvc", "logsvc.py", timeout=60)
+    assert done.returncode == 0, done.stdout + done.stderr
+    # as real rclpy (Kilted) prints it, every level on stderr (rcutils' stream)
+    printed = done.stdout.splitlines()
+    assert printed == ["levels [0, 0]", "set [True, True] [10, 40]",
+                       "set [True, True] [30, 10]", "done"], done.stdout
+    shown = [line.split("]: ", 1)[1] for line in done.stderr.splitlines() if "]: " in line]
+    assert shown == [
+        "parent one info", "parent one error", "child one info", "child one error",
+        "parent two debug", "parent two info", "parent two error", "child two error",
+        "parent three error", "child three debug", "child three info", "child three error"]

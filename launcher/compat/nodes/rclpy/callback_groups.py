@@ -62,3 +62,9 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
     def run(self, callback: Any, *args: Any) -> Any:
         with self._lock:
             return callback(*args)
+
+
+def _is_custom(group: Any) -> bool:
+    """A group of the program's own: neither of rclpy's two."""
+    return group is not None and \
+        not isinstance(group, ReentrantCallbackGroup | MutuallyExclusiveCallbackGroup)

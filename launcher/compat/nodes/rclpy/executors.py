@@ -15,10 +15,12 @@ from collections import deque
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
+from rclpy.callback_groups import _is_custom
 from rclpy.task import Future, Task
 from rclpy.utilities import get_default_context
 
 BELL_LOST = 0.1  # s: the longest an executor waits without looking (see _next_work)
+HELD_BACK = 0.01  # s: how soon a timer its group held back is offered again
 
 
 class ExternalShutdownException(Exception):
@@ -116,6 +118,12 @@ class Executor:
             for node in nodes:  # due timers first (a flood must not starve them)
                 for timer in node._timers:
                     if timer.is_canceled():
+                        continue
+                    if timer._next <= now and _is_custom(timer.callback_group) and \
+                            not timer.callback_group.can_execute(timer):
+                        # (held back by its group, as rclpy's executor does: asked again soon)
+                        soonest = now + HELD_BACK if soonest is None else \
+                            min(soonest, now + HELD_BACK)
                         continue
                     if timer._next <= now:
                         timer._next = max(timer._next + timer._period, now)

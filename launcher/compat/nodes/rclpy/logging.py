@@ -1,8 +1,11 @@
 """rclpy.logging: named loggers with ROS 2's levels and line layout
-(`[INFO] [1700000000.123456789] [name]: text`), warnings and errors on stderr."""
+(`[INFO] [1700000000.123456789] [name]: text`), on stderr as rcutils writes them (stdout
+with RCUTILS_LOGGING_USE_STDOUT=1). A logger's level is its own once set; unset (0), it
+follows its parent's (`a.b` follows `a`), then the default."""
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from enum import IntEnum
@@ -71,7 +74,8 @@ class RcutilsLogger:
         condition = kwargs.get("condition")  # rclpy's `condition=` (a bool)
         if condition is not None and not condition:
             return False
-        stream = sys.stderr if severity >= LoggingSeverity.WARN else sys.stdout
+        stream = sys.stdout if os.environ.get("RCUTILS_LOGGING_USE_STDOUT") == "1" else \
+            sys.stderr
         stamp = time.time_ns()
         print(f"[{severity.name}] [{stamp // 1_000_000_000}.{stamp % 1_000_000_000:09d}] "
               f"[{self.name}]: {message}", file=stream, flush=True)
@@ -103,6 +107,11 @@ def get_logger(name: str) -> RcutilsLogger:
 
 def set_logger_level(name: str, level: Any) -> None:
     _levels[name] = LoggingSeverity(level)
+
+
+def get_logger_level(name: str) -> LoggingSeverity:
+    """The level set for this logger itself (UNSET, 0, when none was)."""
+    return _levels.get(name, LoggingSeverity.UNSET)
 
 
 def get_logger_effective_level(name: str) -> LoggingSeverity:

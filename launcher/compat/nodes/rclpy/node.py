@@ -17,7 +17,7 @@ from launcher.bus import components, graph, keys
 from launcher.bus.node import Node as BusNode
 from launcher.compat import rosidl
 from launcher.errors import LaunchError
-from rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
+from rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup, _is_custom
 from rclpy.client import Client
 from rclpy.clock import ROSClock
 from rclpy.exceptions import (
@@ -118,11 +118,11 @@ class Node:
         from rcl_interfaces.msg import LoggerLevel, SetLoggerLevelsResult
         from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
 
-        from rclpy.logging import LoggingSeverity, get_logger
+        from rclpy.logging import LoggingSeverity, get_logger, get_logger_level
 
-        def get_levels(request: Any, response: Any) -> Any:
-            response.levels = [LoggerLevel(name=name, level=int(
-                get_logger(name).get_effective_level())) for name in request.names]
+        def get_levels(request: Any, response: Any) -> Any:  # (its own: 0 when unset)
+            response.levels = [LoggerLevel(name=name, level=int(get_logger_level(name)))
+                               for name in request.names]
             return response
 
         def set_levels(request: Any, response: Any) -> Any:
@@ -186,9 +186,13 @@ class Node:
 
             raise InvalidHandle("cannot use Destroyable because destruction was requested")
 
-    def _grouped(self, group: CallbackGroup | None, callback: Callable[..., Any]
-                 ) -> Callable[..., Any]:
-        """The callback as its group runs it: under the group's lock if mutually exclusive."""
+    def _grouped(self, group: CallbackGroup | None, callback: Callable[..., Any],
+                 entity: Callable[[], Any] = lambda: None) -> Callable[..., Any]:
+        """The callback as its group runs it: under the group's lock if mutually exclusive;
+        a group of the program's own (rclpy's CallbackGroup subclassed) is asked, as rclpy's
+        executor asks it, beginning_execution(entity) before (False: it does not run) and
+        told ending_execution(entity) after; its can_execute holds a timer back
+        (Executor._next_work)."""
         group = group or self.default_callback_group
         if group not in self._callback_groups:
             self._callback_groups.append(group)
@@ -199,6 +203,16 @@ class Node:
                 with lock:
                     return callback(*args)
             return run
+        if _is_custom(group):
+            def asked(*args: Any) -> Any:
+                who = entity()
+                if not group.beginning_execution(who):
+                    return None
+                try:
+                    return callback(*args)
+                finally:
+                    group.ending_execution(who)
+            return asked
         return callback
 
     # --- endpoints --------------------------------------------------------------------------
@@ -244,13 +258,15 @@ class Node:
                             ) -> Subscription:
         self._check_alive()
         type_name = rosidl.type_name_of(msg_type)
-        run = self._grouped(callback_group, callback)
+        made: list[Any] = []
+        run = self._grouped(callback_group, callback, lambda: made[0] if made else None)
         if not raw:
             rosidl.message_class(type_name)  # made now, not on the first message
         bus = self._bus.create_subscription(type_name, topic, run, to_launcher(qos_profile),
                                             raw=raw, make=rosidl.make)
         subscription = Subscription(bus, msg_type, topic, callback, callback_group,
                                     qos_profile, raw, event_callbacks)
+        made.append(subscription)
         self._entities.append(subscription)
         self._watch_matches(event_callbacks, bus.topic, keys.PUBLISHER, callback_group,
                             subscription)
@@ -301,7 +317,7 @@ class Node:
             raise ValueError(f"timer period must be > 0, got {timer_period_sec}")
         timer = Timer(callback, callback_group, int(timer_period_sec * 1e9), clock or
                       self._clock, context=self._context, autostart=autostart)
-        timer._fire = self._grouped(callback_group, callback)
+        timer._fire = self._grouped(callback_group, callback, lambda: timer)
         self._timers.append(timer)
         if self.executor is not None:
             self.executor.wake()
