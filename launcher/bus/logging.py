@@ -1,9 +1,9 @@
-"""A node's logger: ROS 2's levels and line layout, on stderr as rcutils writes them (stdout
-with RCUTILS_LOGGING_USE_STDOUT=1); `once=True` says a message one time only."""
+"""A node's logger (launcher's own nodes and sim): ROS 2's levels and line layout, warnings
+and errors on stderr, the rest on stdout, as Gazebo's console writes them; `once=True` says
+a message one time only. (A user's rclpy node logs as rcutils does: rclpy/logging.py.)"""
 
 from __future__ import annotations
 
-import os
 import sys
 import time
 
@@ -19,8 +19,7 @@ class Logger:
         if self.LEVELS[level] < self.threshold or (once and message in self._once):
             return
         self._once.add(message)
-        stream = sys.stdout if os.environ.get("RCUTILS_LOGGING_USE_STDOUT") == "1" else \
-            sys.stderr
+        stream = sys.stderr if self.LEVELS[level] >= 30 else sys.stdout
         stamp = time.time_ns()
         print(f"[{level}] [{stamp // 1_000_000_000}.{stamp % 1_000_000_000:09d}] "
               f"[{self.name}]: {message}", file=stream, flush=True)

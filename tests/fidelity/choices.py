@@ -80,7 +80,7 @@ CHOICES: dict[str, Choice] = {
         "launcher says it cannot start the command, at the node's place, and exits 1.",
         exits(1)),
     "ros2/xml/param/set-use-sim-time": Choice(
-        "launch_ros 0.28 exposes <set_use_sim_time> to XML and YAML, but its parser fails "
+        "launch_ros 0.28 exposes `<set_use_sim_time>` to XML and YAML, but its parser fails "
         "on every value (\"Type '1' and value … do not agree\", its own bug); launcher reads "
         "the value as the tag documents it, as launch_ros's Python action does.",
         becomes({"exit": "ok", "restarted": [], "starts": [_probe(

@@ -4,6 +4,7 @@ door whose links lead somewhere."""
 
 from __future__ import annotations
 
+import html
 import json
 import os
 import re
@@ -17,6 +18,7 @@ from launcher.cli.main import COMMANDS
 from launcher.description.registry import Registry
 from launcher.nodes.conversions import conversions
 from tests.conftest import REPO
+from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import cases
 from tests.fidelity.known import KNOWN_DIFFERENCES
 
@@ -33,8 +35,8 @@ def site(tmp_path_factory) -> Path:
 
 
 def text(page: Path) -> str:
-    """A built page's text, tags dropped."""
-    return re.sub(r"<[^>]+>", "", page.read_text())
+    """A built page's text, tags dropped and entities read (as a browser shows it)."""
+    return html.unescape(re.sub(r"<[^>]+>", "", page.read_text()))
 
 
 def test_the_cli_reference_has_every_command_and_option(site):
@@ -51,10 +53,14 @@ def test_the_fidelity_page_gives_the_corpus_counts_and_every_open_difference(sit
     corpus = cases()
     ros1 = sum(case.flavour == "ros1" for case in corpus)
     assert re.search(rf"ROS 1 \(roslaunch XML\)\s*{ros1}\b", page), page[:2000]
-    agree = len(corpus) - len(KNOWN_DIFFERENCES)
+    chosen = [case.name for case in corpus if case.name in CHOICES]
+    agree = len(corpus) - len(chosen) - len(KNOWN_DIFFERENCES)
     assert re.search(rf"agree with the real tool\s*{agree}\b", page), page[:2000]
-    for name in KNOWN_DIFFERENCES:
+    assert re.search(rf"differ on purpose \(below\)\s*{len(chosen)}\b", page), page[:2000]
+    for name in [*KNOWN_DIFFERENCES, *chosen]:
         assert name in page, name
+    for name in chosen:  # with its reason (as text: its `code` marks gone)
+        assert " ".join(CHOICES[name].reason.replace("`", "").split()[:6]) in page, name
 
 
 def test_the_launch_file_reference_has_every_tag_substitution_and_field_doc(site):

@@ -76,7 +76,8 @@ def test_each_example_client_gets_the_sum_from_a_service(examples, client):
     try:
         done = examples.run("run", "examples_rclpy_minimal_client", client, timeout=60)
         assert done.returncode == 0, done.stderr
-        assert "Result of add_two_ints: for 41 + 1 = 42" in done.stdout, done.stdout
+        # (its logger writes on stderr, as rcutils does)
+        assert "Result of add_two_ints: for 41 + 1 = 42" in done.stderr, done.stderr
         assert "Incoming request\na: 41 b: 1" in examples.wait_for_output(
             "Incoming request", 10, "service.txt")
     finally:
@@ -404,7 +405,7 @@ def test_run_of_a_package_whose_setup_py_cannot_be_read(examples):
 def test_a_node_started_by_launcher_run_leaves_nothing_after_sigkill_of_its_parent(examples):
     """`launcher run` becomes the node (exec): killing it leaves no launcher process."""
     proc = examples.start("run", "examples_rclpy_minimal_publisher", "publisher_member_function")
-    examples.wait_for_output("Publishing", 30)
+    examples.wait_for_output("Publishing", 30, "stderr.txt")  # (rclpy logs on stderr)
     assert "launcher.packages.entry" in " ".join(__import__("psutil").Process(proc.pid)
                                                  .cmdline())
     proc.kill()

@@ -158,10 +158,11 @@ def test_hooks_find_pkg_share_and_node_command_line(workspace):
     assert f"RESOURCE={workspace.root / 'src/robot_sim/worlds'}" in out
     (argv_line,) = [line for line in out.splitlines() if "ARGV" in line]
     argv = eval(argv_line.split("ARGV ", 1)[1])  # noqa: S307 - our own test node's repr
-    # launch_ros's layout: set_parameter as -p ahead of the node's files, one params file per
+    # launch_ros's layout: the node's ros_args after their own --ros-args, then launch_ros's
+    # (another --ros-args), set_parameter as -p ahead of the node's files, one params file per
     # param entry (keyed by the node's full name: name and namespace are known), in order
     head = argv[:argv.index("--params-file")]
-    assert head == ["--speed", "3", "--ros-args", "--log-level", "debug",
+    assert head == ["--speed", "3", "--ros-args", "--log-level", "debug", "--ros-args",
                     "-r", "__node:=driver", "-r", "__ns:=/fleet/r1", "-p", "use_sim_time:=true"]
     files = [argv[i + 1] for i, w in enumerate(argv) if w == "--params-file"]
     assert len(files) == 6 and files[5].endswith("robot_bringup/config/params.yaml")

@@ -87,9 +87,17 @@ def test_logging_layout_and_levels(capsys):
     for _ in range(2):
         logger.warning("once", once=True)
     out, err = capsys.readouterr()
-    assert out.startswith("[INFO] [") and out.splitlines()[0].endswith("] [talker]: hello")
-    assert "hidden" not in out and "[talker.part]: shown" in out
-    assert err.count("once") == 1 and err.startswith("[WARN]")
+    assert out == ""  # every level on stderr, as rcutils writes them
+    assert err.startswith("[INFO] [") and err.splitlines()[0].endswith("] [talker]: hello")
+    assert "hidden" not in err and "[talker.part]: shown" in err
+    assert err.count("once") == 1 and "[WARN]" in err
+
+
+def test_logging_goes_to_stdout_when_rcutils_is_told_so(capsys, monkeypatch):
+    monkeypatch.setenv("RCUTILS_LOGGING_USE_STDOUT", "1")
+    rclpy.logging.get_logger("talker").error("loud")
+    out, err = capsys.readouterr()
+    assert "[talker]: loud" in out and err == ""
 
 
 def test_rclpys_named_profiles_are_the_bus_vocabularys():
