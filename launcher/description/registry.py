@@ -34,7 +34,8 @@ BUILTINS: dict[str, dict[str, str]] = {
         "lifecycle_node": _ACTIONS + "lifecycle",
         **dict.fromkeys(("node_container", "load_composable_node"), _ACTIONS + "composition"),
         **dict.fromkeys(("push_ros_namespace", "push-ros-namespace", "set_parameter",
-                         "set_parameters_from_file", "set_remap", "set_use_sim_time"),
+                         "set_parameters_from_file", "set_remap", "set_use_sim_time",
+                         "roslaunch_machine"),
                         _ACTIONS + "ros"),
     },
     "substitution": {

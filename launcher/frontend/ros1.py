@@ -287,7 +287,9 @@ def _entity(entity: Entity) -> list[Entity]:
         _known(entity, {"name", "value"})
         return [_copy(entity, "set_env", {"name": "name", "value": "value"})]
     if tag == "machine":  # this host's (a remote one is refused at its nodes)
-        return []
+        _known(entity, {"name", "address", "env-loader", "ssh-port", "user", "password",
+                        "default", "timeout"})
+        return [_copy(entity, "roslaunch_machine", {"name": "name"})]
     return [_warning(f"{entity.location}: roslaunch has no tag <{tag}>; it is ignored, as "
                      "roslaunch ignores it (ROS 1's tags: arg, node, param, rosparam, group, "
                      "include, remap, env, machine, test)", entity.location)]
@@ -379,8 +381,8 @@ def _node(entity: Entity) -> Entity:
     if entity.tag == "test" or (required is not None and
                                 str(required.value).strip().lower() == "true"):
         node.attributes["on_exit"] = _text("shutdown", entity.location)
-    if "machine" in entity.attributes:
-        node.attributes.pop("machine", None)
+    if "machine" in entity.attributes:  # checked against the launch's <machine>s
+        node.attributes["machine"] = entity.attributes["machine"]
     for child in entity.children:
         for condition, field in (("if", "only_if"), ("unless", "only_unless")):
             if condition in child.attributes:  # roslaunch takes them on a node's children too

@@ -106,6 +106,10 @@ class LaunchContext:
         self.graph_parameters: dict[str, Any] = {}
         # roslaunch's `rosparam delete|dump` ([command, name(, file)]), run before they are set
         self.graph_commands: list[list[str]] = []
+        self.machines: set[str] = set()  # roslaunch's <machine> names
+        # what is checked once the launch files being read are read (each may raise a
+        # LaunchError: the launch fails before the processes waiting for that start)
+        self.loaded_checks: list[Callable[[], None]] = []
         self.graph_parameters_file: Path | None = None  # where they will be written
 
     # --- scopes -------------------------------------------------------------------------

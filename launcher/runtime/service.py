@@ -153,6 +153,9 @@ class LaunchService:
                     self._queue.extendleft(reversed(list(more)))
         finally:
             self._draining = False
+        checks, self.context.loaded_checks = self.context.loaded_checks, []
+        for check in checks:
+            self._guarded(check, None)
         self._release()
         self._check_given()
         self._check_idle()

@@ -326,6 +326,12 @@ def nodes() -> Iterator[dict[str, Any]]:
                  'default="true"/>' + node())
     yield launch("node/machine-env", '<machine name="here" address="localhost">'
                  '<env name="PROBE_M" value="1"/></machine>' + node(attrs=' machine="here"'))
+    yield launch("node/machine-declared-after", node(attrs=' machine="here"') +
+                 '<machine name="here" address="localhost"/>')
+    yield launch("node/machine-in-include", '<include file="$(dirname)/machines.launch"/>' +
+                 node(attrs=' machine="here"'),
+                 files={"machines.launch": '<launch><machine name="here" '
+                                           'address="localhost"/></launch>\n'})
     yield launch("node/anon-name", '<node name="$(anon n)" pkg="probe" type="probe.py"/>')
     yield launch("node/test-tag", node() + '<test test-name="t" pkg="probe" type="probe.py"/>')
     yield launch("node/test-tag-only", '<test test-name="t" pkg="probe" type="probe.py"/>')

@@ -6,6 +6,4 @@ reason. `python -m tests.fidelity.compare` prints the cases that differ now."""
 
 from __future__ import annotations
 
-KNOWN_DIFFERENCES = frozenset({
-    "ros1/node/machine-missing",
-})
+KNOWN_DIFFERENCES: frozenset[str] = frozenset()

@@ -33,7 +33,7 @@ from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
-from launcher.errors import ExecutionError
+from launcher.errors import ExecutionError, did_you_mean
 from launcher.lineage import NODE_PARAMETERS
 from launcher.packages.executables import Executable, find_executable
 from launcher.packages.index import PackageNotFound
@@ -91,6 +91,8 @@ class Node(ExecuteProcess):
     ros1: Any = attr(Kind.BOOL, False, doc="roslaunch's command line: ARGS, then FROM:=TO, "
                                            "__name:=, __ns:= and __log:=, the namespace also "
                                            "in ROS_NAMESPACE (no --ros-args).")
+    machine: Any = attr(Kind.TEXT, doc="roslaunch's machine=: one a <machine> of the launch "
+                                       "declares (roslaunch_machine).")
     home: Any = attr(Kind.TEXT, doc="roslaunch's cwd word: ROS_HOME (the default: the node "
                                     "runs in $ROS_HOME, else ~/.ros) or node (its "
                                     "executable's folder).")
@@ -177,7 +179,21 @@ class Node(ExecuteProcess):
             spec.argv = [*spec.argv, f"__log:={log}"]
         spec.joins_graph = True
         spec.after_loading = ros1  # roslaunch: once every file is read and its parameters set
+        if self.machine is not None:
+            self._check_machine(context, perform_text(context, self.machine))
         return spec
+
+    def _check_machine(self, context: LaunchContext, machine: str) -> None:
+        """roslaunch's assign_machines: a machine= no <machine> declares is an error."""
+        where = self.where
+
+        def declared() -> None:
+            if machine not in context.machines:
+                raise ExecutionError(f"unknown machine '{machine}'"
+                                     f"{did_you_mean(machine, context.machines)}: declare it "
+                                     "with <machine name=… address=\"localhost\"/> (launcher "
+                                     "runs every node on this host)", where)
+        context.loaded_checks.append(declared)
 
     def _ros1_words(self, context: LaunchContext, value: Any) -> list[str]:
         """roslaunch's node args and launch-prefix: the text, substituted, then split as a
