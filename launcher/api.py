@@ -32,6 +32,7 @@ from launcher.description.actions.event_handlers import (
 from launcher.description.actions.executable import ExecuteProcess
 from launcher.description.actions.include import IncludeLaunchDescription
 from launcher.description.actions.opaque import OpaqueFunction
+from launcher.description.condition import Condition as _Condition
 from launcher.description.condition import IfCondition, UnlessCondition
 from launcher.description.substitution import Substitution, Text, to_text
 from launcher.description.substitutions import command as _command
@@ -246,12 +247,20 @@ def LoadComposableNodes(*, composable_node_descriptions: Sequence[Any],  # noqa:
 
 def ComposableNode(*, package: Any, plugin: Any, name: Any = None,  # noqa: N802
                    namespace: Any = None, parameters: Sequence[Any] = (),
-                   remappings: Sequence[Any] = (), extra_arguments: Sequence[Any] = ()) -> Any:
-    """launch_ros.descriptions.ComposableNode."""
+                   remappings: Sequence[Any] = (), extra_arguments: Sequence[Any] = (),
+                   condition: Any = None) -> Any:
+    """launch_ros.descriptions.ComposableNode (`condition`: IfCondition or UnlessCondition,
+    as launch_ros takes it: loaded only when it holds)."""
+    switch: dict[str, Any] = {}
+    if condition is not None:
+        if not isinstance(condition, _Condition):
+            raise TypeError(f"ComposableNode(condition=...): expected IfCondition(...) or "
+                            f"UnlessCondition(...), got {type(condition).__name__}")
+        switch["only_unless" if condition.negate else "only_if"] = condition.text
     return _composition.ComposableNode(package=package, plugin=plugin, node_name=name,
                                        namespace=namespace, parameters=_parameters(parameters),
                                        remappings=list(remappings),
-                                       extra_arguments=list(extra_arguments))
+                                       extra_arguments=list(extra_arguments), **switch)
 
 
 def _parameters(parameters: Sequence[Any]) -> list[Any]:

@@ -200,3 +200,19 @@ def test_composition_errors(text, expected):
     with pytest.raises(ParseError, match=expected.replace("(", "\\(").replace(")", "\\)")
                        .replace("?", "\\?")):
         yaml_description(text)
+
+
+def test_a_composable_nodes_condition_in_python_as_launch_ros_takes_it():
+    from launcher.api import ComposableNode, IfCondition, LaunchConfiguration, UnlessCondition
+    from launcher.description.actions.composition import _requests
+    from launcher.runtime.context import LaunchContext
+
+    context = LaunchContext({}, {"on": "true"})
+    nodes = [ComposableNode(package="p", plugin="p::A", name="a",
+                            condition=IfCondition(LaunchConfiguration("on"))),
+             ComposableNode(package="p", plugin="p::B", name="b",
+                            condition=UnlessCondition(LaunchConfiguration("on"))),
+             ComposableNode(package="p", plugin="p::C", name="c")]
+    assert [r.node_name for r in _requests(context, nodes, None)] == ["a", "c"]
+    with pytest.raises(TypeError, match="expected IfCondition"):
+        ComposableNode(package="p", plugin="p::A", condition=True)
