@@ -367,7 +367,8 @@ def errors() -> Iterator[dict[str, Any]]:
            "main": "main.launch.yaml"}
     yield yaml("error/unknown-tag", "- nodes:\n    pkg: probe\n")
     yield yaml("error/bad-yaml", "- node: [\n")
-    yield xml("error/shutdown", node() + '<shutdown reason="done"/>')
+    # (the shutdown first: the node after it is never started, so nothing races)
+    yield xml("error/shutdown", '<shutdown reason="done"/>' + node())
     yield xml("error/log", '<log message="hello"/>' + node())
 
 
