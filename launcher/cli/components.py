@@ -27,6 +27,7 @@ SUFFIX = "/_container/load_node"
 WAIT = 30.0  # s for a container not started by this launch to appear
 WAIT_VARIABLE = "LAUNCHER_LOAD_TIMEOUT"
 ANSWER_WAIT = 75.0  # s for one load's answer (the container gives a constructor 60 s)
+CLOSE_WAIT = 3.0  # s the launch's end waits for the workers to leave the bus
 
 
 class BusLoader:
@@ -34,6 +35,7 @@ class BusLoader:
         self._node: Any = None
         self._lock = threading.Lock()
         self._workers: dict[str, queue.SimpleQueue[Any]] = {}
+        self._threads: list[threading.Thread] = []
         self._cancelled = threading.Event()
 
     def load(self, container: str, requests: list[LoadRequest], environment: dict[str, str],
@@ -42,15 +44,26 @@ class BusLoader:
             work = self._workers.get(container)
             if work is None:
                 work = self._workers[container] = queue.SimpleQueue()
-                threading.Thread(target=self._serve, args=(container, work),
-                                 name=f"load-{container}", daemon=True).start()
+                thread = threading.Thread(target=self._serve, args=(container, work),
+                                          name=f"load-{container}", daemon=True)
+                self._threads.append(thread)
+                thread.start()
         work.put((requests, environment, alive, done))
 
     def cancel(self) -> None:
         self._cancelled.set()
 
     def close(self) -> None:
+        """The workers are stopped (each within a wait's step) before the node goes: one
+        still inside a Zenoh call as the interpreter ends would abort the process."""
         self._cancelled.set()
+        with self._lock:
+            for work in self._workers.values():
+                work.put(None)
+            threads = list(self._threads)
+        deadline = time.monotonic() + CLOSE_WAIT
+        for thread in threads:
+            thread.join(max(0.0, deadline - time.monotonic()))
         with self._lock:
             node, self._node = self._node, None
         if node is not None:
@@ -60,7 +73,10 @@ class BusLoader:
     def _serve(self, container: str, work: queue.SimpleQueue[Any]) -> None:
         client = None
         while not self._cancelled.is_set():
-            requests, environment, alive, done = work.get()
+            item = work.get()
+            if item is None:  # (close)
+                return
+            requests, environment, alive, done = item
             try:
                 if client is None:
                     client = self._bus(environment).create_client(LOAD, container + SUFFIX)
