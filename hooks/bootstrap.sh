@@ -103,8 +103,10 @@ if [ ! -f .venv/tools/.installed ] || [ pyproject.toml -nt .venv/tools/.installe
         "CMake and Python extensions, CMake, Ninja): a few seconds"
     .venv/bin/python -c 'import tomllib; print("\n".join(tomllib.load(open("pyproject.toml",
 "rb"))["project"]["optional-dependencies"]["tools"]))' > .venv/tools-requirements.txt
-    .venv/bin/python -m pip install --quiet --disable-pip-version-check --prefix .venv/tools \
-        -r .venv/tools-requirements.txt
+    # (--use-pep517: EmPy, which colcon-ros needs, is an sdist alone; without a wheel in
+    # pip's cache a legacy `setup.py install` under --prefix leaves its module out)
+    .venv/bin/python -m pip install --quiet --disable-pip-version-check --use-pep517 \
+        --prefix .venv/tools -r .venv/tools-requirements.txt
     touch .venv/tools/.installed
 fi
 # The test clients from npm (tests/js/package-lock.json), in tests/js/node_modules.
