@@ -1,6 +1,8 @@
 """Reading the user's files (launch files, parameters, hooks, worlds, configs) so that no file
 can hang or flood the launcher: only regular files are read (a FIFO, `/dev/zero`, a socket or
-a folder named as one is refused, before anything blocks on it), up to a size limit.
+a folder named as one is refused, before anything blocks on it), up to a size limit; YAML
+nested past any real file's depth is refused where it gets there (check_yaml_depth), before
+a parser would recurse past Python's limit.
 """
 
 from __future__ import annotations
@@ -57,3 +59,32 @@ def check_readable(path: str | os.PathLike[str], limit: int = MAX_BYTES) -> None
     if info.st_size > limit:
         raise LaunchError(f"larger than {limit >> 20} MiB ({info.st_size >> 20} MiB): not a "
                           f"file launcher reads", Location(str(Path(path))))
+
+
+MAX_YAML_DEPTH = 100  # collections within collections: far past any launch file or config
+
+
+def check_yaml_depth(text: str, file: str, limit: int = MAX_YAML_DEPTH) -> None:
+    """Refuse a YAML document nested deeper than `limit`, at the place it gets there (a parser
+    would recurse past Python's limit first). The cheap look at indentation and brackets
+    comes first; only a deep-looking text is scanned event by event."""
+    if max((len(line) - len(line.lstrip(" ")) for line in text.splitlines()), default=0) \
+            < limit and text.count("[") + text.count("{") < limit:
+        return
+    import yaml
+
+    try:
+        loader: type = yaml.CSafeLoader
+    except AttributeError:  # PyYAML without libyaml
+        loader = yaml.SafeLoader
+    depth = 0
+    for event in yaml.parse(text, Loader=loader):
+        if isinstance(event, yaml.CollectionStartEvent):
+            depth += 1
+            if depth > limit:
+                mark = event.start_mark
+                raise LaunchError(f"nested {depth} levels deep; launcher reads YAML nested up "
+                                  f"to {limit} levels",
+                                  Location(file, mark.line + 1, mark.column + 1))
+        elif isinstance(event, yaml.CollectionEndEvent):
+            depth -= 1

@@ -7,8 +7,9 @@ from __future__ import annotations
 
 import yaml
 
-from launcher.errors import Location, ParseError
+from launcher.errors import LaunchError, Location, ParseError
 from launcher.frontend.entity import Attribute, Entity
+from launcher.user_files import check_yaml_depth
 
 try:  # libyaml is much faster and keeps the same marks
     from yaml import CSafeLoader as _Loader
@@ -20,31 +21,13 @@ def _where(file: str, node: yaml.Node) -> Location:
     return Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
 
 
-MAX_DEPTH = 100  # collections within collections: far past any launch file
-
-
-def _check_depth(text: str, file: str) -> None:
-    """Refuse a document nested deeper than MAX_DEPTH, at the place it gets there (composing
-    it would recurse past Python's limit first). The cheap look at indentation and brackets
-    comes first; only a deep-looking file is scanned event by event."""
-    if max((len(line) - len(line.lstrip(" ")) for line in text.splitlines()), default=0) \
-            < MAX_DEPTH and text.count("[") + text.count("{") < MAX_DEPTH:
-        return
-    depth = 0
-    for event in yaml.parse(text, Loader=_Loader):
-        if isinstance(event, yaml.CollectionStartEvent):
-            depth += 1
-            if depth > MAX_DEPTH:
-                raise ParseError(f"nested {depth} levels deep; launcher reads YAML nested up "
-                                 f"to {MAX_DEPTH} levels", _where(file, event))
-        elif isinstance(event, yaml.CollectionEndEvent):
-            depth -= 1
-
-
 def load_yaml(text: str, file: str) -> Entity:
     """Parse a YAML launch file into its root `launch` entity."""
     try:
-        _check_depth(text, file)
+        try:
+            check_yaml_depth(text, file)
+        except LaunchError as exc:
+            raise ParseError(exc.message, exc.location) from None
         root = yaml.compose(text, Loader=_Loader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark

@@ -114,3 +114,22 @@ def test_rviz2_layout_writes_the_file_and_says_where_a_config_is_wrong(tmp_path)
                           capture_output=True, text=True, timeout=60)
     assert f"{other}:1:1: not an rviz config: expected a map with 'Visualization Manager'" \
         in done.stderr
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Visualization Manager:\n  Displays:\n" +
+     "".join("  " * (i + 2) + "- a:\n" for i in range(3000)),
+     ":52:103: nested 101 levels deep; launcher reads YAML nested up to 100 levels"),
+    ("a: " + "[" * 5000 + "]" * 5000,
+     ":1:1003: not an rviz config: the YAML does not parse (exceeded maximum nesting depth)"),
+], ids=["block", "flow"])
+def test_an_rviz_config_nested_thousands_deep_is_refused_at_its_place(tmp_path, text, expected):
+    """(It was `internal error: RecursionError`.)"""
+    deep = tmp_path / "deep.rviz"
+    deep.write_text(text)
+    done = subprocess.run([*launcher_argv(), "rviz2-layout", str(deep), "-o",
+                           str(tmp_path / "out.json")], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 1
+    assert f"{deep}{expected}" in done.stderr, done.stderr
+    assert "internal error" not in done.stderr and "Traceback" not in done.stderr

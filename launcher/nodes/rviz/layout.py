@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.errors import LaunchError, Location
+from launcher.user_files import check_yaml_depth, read_text
 
 POINTS = {"LaserScan", "PointCloud2", "PointCloud"}
 TOPICS_3D = {"Marker", "MarkerArray", "Odometry", "Path", "Pose", "PoseArray",
@@ -42,11 +43,15 @@ def read(path: Path) -> dict[str, Any]:
     import yaml
 
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_text(path)
     except OSError as exc:
         raise RvizError(f"cannot read the rviz config: {exc.strerror}",
                         Location(str(path))) from None
+    except UnicodeDecodeError as exc:
+        raise RvizError(f"not an rviz config: not UTF-8 text ({exc.reason} at byte "
+                        f"{exc.start})", Location(str(path))) from None
     try:
+        check_yaml_depth(text, str(path))
         document = yaml.safe_load(text)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark
