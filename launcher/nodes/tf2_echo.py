@@ -8,9 +8,9 @@ import sys
 from typing import Any
 
 from launcher.bus.node import Node
-from launcher.bus.qos import QoS
 from launcher.bus.tf_tree import BufferCore, TransformException
 from launcher.errors import UsageError, reported
+from launcher.nodes.tf_feed import feed
 
 USAGE = "usage: tf2_echo source_frame target_frame [echo_rate]"
 
@@ -58,22 +58,7 @@ def run(argv: list[str]) -> int:
             raise UsageError(f"the echo rate must be above 0, got {words[2]}\n{USAGE}")
         tree = BufferCore()
 
-        def take(static: bool) -> Any:
-            def on_message(message: Any) -> None:
-                for t in message.transforms:
-                    v, r = t.transform.translation, t.transform.rotation
-                    try:
-                        tree.set_transform(t.child_frame_id, t.header.frame_id,
-                                           t.header.stamp.sec * 1_000_000_000 +
-                                           t.header.stamp.nanosec,
-                                           ((v.x, v.y, v.z), (r.x, r.y, r.z, r.w)),
-                                           "tf2_echo", static)
-                    except TransformException:
-                        continue
-            return on_message
-        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf", take(False), QoS(depth=100))
-        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf_static", take(True),
-                                 QoS(depth=100, transient_local=True))
+        feed(node, tree, "tf2_echo")
         logger = node.get_logger()
         while not node.interrupted:
             node.spin(1.0 / rate)

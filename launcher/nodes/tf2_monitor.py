@@ -10,9 +10,9 @@ from collections import defaultdict, deque
 from typing import Any
 
 from launcher.bus.node import Node
-from launcher.bus.qos import QoS
 from launcher.bus.tf_tree import BufferCore, TransformException
 from launcher.errors import UsageError, reported
+from launcher.nodes.tf_feed import feed
 
 WINDOW = 200  # arrivals kept per frame
 
@@ -27,25 +27,11 @@ def run(argv: list[str]) -> int:
             lambda: deque(maxlen=WINDOW))
         tree = BufferCore()
 
-        def take(static: bool) -> Any:
-            def on_message(message: Any) -> None:
-                now = _seconds(node)
-                for t in message.transforms:
-                    stamp = t.header.stamp.sec + t.header.stamp.nanosec / 1e9
-                    arrivals[t.child_frame_id].append((time.monotonic(),
-                                                       0.0 if static else now - stamp))
-                    v, r = t.transform.translation, t.transform.rotation
-                    try:
-                        tree.set_transform(t.child_frame_id, t.header.frame_id,
-                                           int(stamp * 1e9),
-                                           ((v.x, v.y, v.z), (r.x, r.y, r.z, r.w)),
-                                           "tf2_monitor", static)
-                    except TransformException:
-                        continue
-            return on_message
-        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf", take(False), QoS(depth=100))
-        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf_static", take(True),
-                                 QoS(depth=100, transient_local=True))
+        def arrived(t: Any, static: bool) -> None:
+            stamp = t.header.stamp.sec + t.header.stamp.nanosec / 1e9
+            arrivals[t.child_frame_id].append((time.monotonic(),
+                                               0.0 if static else _seconds(node) - stamp))
+        feed(node, tree, "tf2_monitor", arrived)
         print("Gathering data on all frames for 10 seconds...", flush=True) if not words \
             else print(f"Waiting for transform chain to become available between "
                        f"{words[0]} and {words[1]}", flush=True)

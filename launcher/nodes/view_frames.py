@@ -11,12 +11,11 @@ import subprocess
 import sys
 import time
 from pathlib import Path
-from typing import Any
 
 from launcher.bus.node import Node
-from launcher.bus.qos import QoS
-from launcher.bus.tf_tree import BufferCore, TransformException
+from launcher.bus.tf_tree import BufferCore
 from launcher.errors import LaunchError, reported
+from launcher.nodes.tf_feed import feed
 
 
 def graph(tree: BufferCore, recorded: float) -> str:
@@ -57,22 +56,7 @@ def run(argv: list[str]) -> int:
         args = parser.parse_args(list(node.args))
         tree = BufferCore()
 
-        def take(static: bool) -> Any:
-            def on_message(message: Any) -> None:
-                for t in message.transforms:
-                    v, r = t.transform.translation, t.transform.rotation
-                    try:
-                        tree.set_transform(t.child_frame_id, t.header.frame_id,
-                                           t.header.stamp.sec * 1_000_000_000 +
-                                           t.header.stamp.nanosec,
-                                           ((v.x, v.y, v.z), (r.x, r.y, r.z, r.w)),
-                                           "default_authority", static)
-                    except TransformException:
-                        continue
-            return on_message
-        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf", take(False), QoS(depth=100))
-        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf_static", take(True),
-                                 QoS(depth=100, transient_local=True))
+        feed(node, tree, "default_authority")
         logger = node.get_logger()
         logger.info(f"Listening to tf data for {args.wait_time} seconds...")
         node.spin(args.wait_time)
