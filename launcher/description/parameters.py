@@ -120,16 +120,17 @@ def _literal(value: Any) -> str:
     return str(value).lower() if isinstance(value, bool) else str(value)
 
 
-def _convert(text: str, kind: str, name: str) -> Any:
-    """`text` as `type:` says."""
+def _convert(text: str, kind: str, name: str, written: str = "") -> Any:
+    """`text` as `type:` says (`written`: the type as the file spells it, for the error)."""
     if kind == "str":
         return text
     if kind in ("int", "float"):
         try:
             return int(text.strip()) if kind == "int" else float(text)
         except ValueError:
+            said = written or kind
             raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
-                                 f" {kind}") from None
+                                 f" {said}") from None
     if kind == "bool":
         low = text.strip().lower()
         if low not in _TRUE + _FALSE:
@@ -153,14 +154,8 @@ def roslaunch_value(text: str, kind: str, name: str) -> Any:
         except ValueError:
             pass
         return text.lower() == "true" if text.lower() in ("true", "false") else text
-    if kind in ("str", "string"):
-        return text
-    if kind in ("int", "double"):
-        try:
-            return int(text) if kind == "int" else float(text)
-        except ValueError:
-            raise ExecutionError(f"param '{name}': '{text}' is not {'an' if kind == 'int' else 'a'}"
-                                 f" {kind}") from None
+    if kind in ("str", "string", "int", "double"):
+        return _convert(text, {"string": "str", "double": "float"}.get(kind, kind), name, kind)
     if kind in ("bool", "boolean"):
         low = text.lower().strip()
         if low not in ("true", "1", "false", "0"):

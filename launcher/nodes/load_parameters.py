@@ -1,7 +1,8 @@
 """Put a launch's ROS 1 parameters on the graph's parameter server (bus/graph_parameters.py),
 as roslaunch sets them on the master: `python -m launcher.nodes.load_parameters FILE`, FILE
-JSON the launch wrote privately: `{"delete": [names whose trees go], "set": {full ROS 1 name:
-value}}`, applied in that order. Waits for the server
+JSON the launch wrote privately: `{"before": [roslaunch's `rosparam delete|dump`, as
+["delete", name] or ["dump", name, file]], "set": {full ROS 1 name: value}}`, applied in that
+order. Waits for the server
 (the graph's router, maybe still starting) as long as a node waits for the router; says
 so once they are set (the launch then starts its nodes: a failure is this process's error,
 and the launch's, and no node starts), and stays on the graph until the launch ends (a

@@ -87,10 +87,12 @@ class SetParameter(Action):
             value = params.value_of(context, self.value, kind, name)
         except ExecutionError as exc:
             raise exc if exc.location else exc.at(self.where) from None
+        alone = resolve(context, self.server_only, Kind.BOOL, "server_only")
+        private = resolve(context, self.private, Kind.BOOL, "private")
         for leaf, item in params.unrolled(name, value).items():  # (roslaunch's yaml maps)
-            if resolve(context, self.server_only, Kind.BOOL, "server_only"):
+            if alone:
                 to_graph(context, graph_name(context, leaf), item)
-            elif resolve(context, self.private, Kind.BOOL, "private"):
+            elif private:
                 params.add_private_parameter(context, leaf, item)
             else:
                 self._set(context, leaf, item, server)

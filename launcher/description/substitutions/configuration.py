@@ -13,7 +13,7 @@ from launcher.runtime.context import LaunchContext
 @substitution("var")
 @dataclass(frozen=True)
 class LaunchConfiguration(Substitution):
-    """The value of a launch argument or `let`; `arg` is the ROS 1 spelling."""
+    """The value of a launch argument or `let` (roslaunch's `$(arg)` is read as it)."""
 
     name: Text_
     default: Text_ | None = None

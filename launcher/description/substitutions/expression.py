@@ -5,6 +5,8 @@ when no other name is spelled so (their values are text, as roslaunch gives them
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from launcher.description.safe_expression import ExpressionError, evaluate
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
 from launcher.records import dataclass
@@ -20,18 +22,22 @@ class PythonExpression(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         text = perform_text(context, self.expression)
-        arguments = {k: v for k, v in context.configurations.items()
-                     if isinstance(v, str) and k.isidentifier()}
-
-        def arg(name: str) -> str:
-            if name not in context.configurations:
-                raise ExpressionError(f"arg('{name}'): no launch argument '{name}'")
-            return context.configurations[name]
-
         try:
-            return str(evaluate(text, {**arguments, "arg": arg}))
+            return str(evaluate(text, _arguments(context, str)))
         except ExpressionError as exc:
             raise self.fail(f"$(eval '{text}'): {exc}") from None
+
+
+def _arguments(context: LaunchContext, typed: Callable[[str], object]) -> dict[str, object]:
+    """The launch's arguments for an expression, each `typed`: by bare name (those spelled
+    as names), and as `arg('x')`."""
+    def arg(name: str) -> object:
+        if name not in context.configurations:
+            raise ExpressionError(f"arg('{name}'): no launch argument '{name}'")
+        return typed(context.configurations[name])
+
+    return {**{k: typed(v) for k, v in context.configurations.items()
+               if isinstance(v, str) and k.isidentifier()}, "arg": arg}
 
 
 @substitution("roslaunch_eval")
@@ -56,22 +62,12 @@ class RoslaunchExpression(Substitution):
         if "__" in text:  # as roslaunch refuses it
             raise self.fail(f"$(eval {text}): an expression may not hold '__'")
 
-        def typed(value: str) -> object:
-            return roslaunch_value(value, "auto", "")
-
-        def arg(name: str) -> object:
-            if name not in context.configurations:
-                raise ExpressionError(f"arg('{name}'): no launch argument '{name}'")
-            return typed(context.configurations[name])
-
         def run(substitution: Substitution) -> str:
             return substitution.perform(context)
 
         names: dict[str, object] = {
-            **{k: typed(v) for k, v in context.configurations.items()
-               if isinstance(v, str) and k.isidentifier()},
+            **_arguments(context, lambda value: roslaunch_value(value, "auto", "")),
             "true": True, "false": False, "True": True, "False": False,
-            "arg": arg,
             "anon": lambda name: run(AnonName((Text(name),))),
             "dirname": lambda: run(ThisLaunchFileDir()),
             "env": lambda name: run(EnvironmentVariable((Text(name),))),
