@@ -23,7 +23,7 @@ import mujoco
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
-from launcher.sim.plugins.diff_drive import _approach, publish_odometry
+from launcher.sim.plugins.diff_drive import approach, publish_odometry
 
 CONTROL_PERIOD = 0.005  # s of sim time between updates of the wheel and steering commands
 SERVO_TIME = 0.005  # s: the joint velocity servos' settling time (gain from the inertia)
@@ -123,7 +123,7 @@ class AckermannSteering(Plugin):
 
     def _control(self, data: Any, dt: float) -> None:
         p = self.params
-        speed = _approach(self.speed, min(max(self.target[0], p.min_velocity), p.max_velocity),
+        speed = approach(self.speed, min(max(self.target[0], p.min_velocity), p.max_velocity),
                           dt, p.min_acceleration, p.max_acceleration)
         self.speed = speed
         turn = self.target[1]

@@ -21,7 +21,7 @@ from typing import Any
 
 from launcher.records import dataclass, replace
 from launcher.schema import Kind, attr
-from launcher.sim.plugins.diff_drive import DiffDrive, _yaw_quat
+from launcher.sim.plugins.diff_drive import DiffDrive, yaw_quat
 from launcher.sim.plugins.joint_state import JointStatePublisher
 
 # the gz name each classic parameter feeds: (ROS 1, ROS 2) -> gz
@@ -145,7 +145,7 @@ class ClassicDiffDrive(DiffDrive):
             return
         t = self.sim.transport
         header = t.header(now, self.frame_id)
-        pose = t.pose(self.x, self.y, 0.0, _yaw_quat(self.theta))
+        pose = t.pose(self.x, self.y, 0.0, yaw_quat(self.theta))
         if odom_wanted:
             twist = t.message("geometry_msgs/msg/Twist",
                               linear=t.vector(self.linear, 0.0, 0.0),

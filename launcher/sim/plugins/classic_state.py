@@ -20,6 +20,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 from launcher.sim.plugins.gazebo_ros import ros_node
 from launcher.sim.sensors.noise import generator
@@ -78,9 +79,10 @@ class _GroundTruth(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if now + 1e-9 < self.next_update:
+        if not schedule.is_due(now, self.next_update):
             return
-        self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
+        self.next_update = schedule.following(self.next_update, now,
+                                              schedule.period(self.rate))
         if self.publisher.get_subscription_count():
             self.publisher.publish(self.measure(model, data))
 

@@ -23,6 +23,7 @@ import mujoco
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 CONTROL_PERIOD = 0.01  # s of sim time between acceleration-limited control updates
@@ -159,9 +160,9 @@ class DiffDrive(Plugin):
         if (self.v, self.w) == self.target:
             return  # the wheels already have this command
         lim = self.limits
-        self.v = _approach(self.v, self.target[0], dt, lim["min_linear_acceleration"],
+        self.v = approach(self.v, self.target[0], dt, lim["min_linear_acceleration"],
                            lim["max_linear_acceleration"])
-        self.w = _approach(self.w, self.target[1], dt, lim["min_angular_acceleration"],
+        self.w = approach(self.w, self.target[1], dt, lim["min_angular_acceleration"],
                            lim["max_angular_acceleration"])
         self._apply()
 
@@ -179,8 +180,9 @@ class DiffDrive(Plugin):
         now = data.time
         self._control(now)
         self._integrate(data)
-        if self.frequency > 0 and now + 1e-9 >= self.next_odom:
-            self.next_odom = now + 1.0 / self.frequency
+        if self.frequency > 0 and schedule.is_due(now, self.next_odom):
+            self.next_odom = schedule.following(self.next_odom, now,
+                                                schedule.period(self.frequency))
             self._publish(now)
         following = [self.next_odom if self.frequency > 0 else math.inf]
         if (self.v, self.w) != self.target:
@@ -230,7 +232,7 @@ def publish_odometry(plugin: Any, now: float, x: float, y: float, heading: float
         return
     transport = plugin.sim.transport
     header = transport.header(now, plugin.frame_id)
-    pose = transport.pose(x, y, 0.0, _yaw_quat(heading))
+    pose = transport.pose(x, y, 0.0, yaw_quat(heading))
     if odom_wanted:
         plugin.odom_pub.publish(transport.message(
             "mujoco_sim/msg/Odometry", header=header, child_frame_id=plugin.child_frame_id,
@@ -243,7 +245,7 @@ def publish_odometry(plugin: Any, now: float, x: float, y: float, heading: float
             parent=[plugin.frame_id], pose=[pose]))
 
 
-def _approach(current: float, target: float, dt: float, low: float, high: float) -> float:
+def approach(current: float, target: float, dt: float, low: float, high: float) -> float:
     if math.isinf(low) and math.isinf(high):
         return target
     if dt <= 0:
@@ -252,6 +254,6 @@ def _approach(current: float, target: float, dt: float, low: float, high: float)
     return current + change
 
 
-def _yaw_quat(theta: float) -> tuple[float, float, float, float]:
+def yaw_quat(theta: float) -> tuple[float, float, float, float]:
     """(x, y, z, w), ROS order."""
     return 0.0, 0.0, math.sin(theta / 2), math.cos(theta / 2)

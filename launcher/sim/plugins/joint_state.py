@@ -14,6 +14,7 @@ import mujoco
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
@@ -58,9 +59,10 @@ class JointStatePublisher(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if now + 1e-9 < self.next_update:
+        if not schedule.is_due(now, self.next_update):
             return
-        self.next_update = now + (1.0 / self.rate if self.rate > 0 else 0.0)
+        self.next_update = schedule.following(self.next_update, now,
+                                              schedule.period(self.rate))
         if self.publisher.get_subscription_count():
             self.publisher.publish(self.state(self.sim.transport, now, data))
 

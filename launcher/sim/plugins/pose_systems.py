@@ -27,6 +27,7 @@ from typing import Any
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 from launcher.sim.transform import IDENTITY, Pose, from_rpy
 
@@ -94,7 +95,8 @@ class OdometryPublisher(Plugin):
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
         rate = self.params.odom_publish_frequency
-        self.next_update = now + (1.0 / rate if rate > 0 else math.inf)
+        self.next_update = schedule.following(self.next_update, now,
+                                              schedule.period(rate) or math.inf)
         pose = model_pose(self.sim, self.entity) * self.offset
         if self.params.dimensions == 2:  # on the plane: x, y and yaw only
             yaw = _yaw(pose.quat)
@@ -230,16 +232,18 @@ class PosePublisher(Plugin):
         rate = self.params.update_frequency
         if self.pose_pub.get_subscription_count():
             self._publish(self.pose_pub, self._poses(True), now)
-            self.next_update = now + (1.0 / rate if rate > 0 else 0.0)
+            self.next_update = schedule.following(self.next_update, now, schedule.period(rate))
         else:
-            self.next_update = now + 0.05  # look for a subscriber 20 times a second
+            self.next_update = now + schedule.LAZY_LOOK
         static = self.static_pub
         if static is not None and now >= self.next_static and static.get_subscription_count():
             self._publish(static, self._poses(False), now)
             rate = self.params.static_update_frequency
-            self.next_static = now + (1.0 / rate if rate > 0 else 0.0)
+            self.next_static = schedule.following(self.next_static, now,
+                                                  schedule.period(rate))
         if static is not None:
-            self.next_update = min(self.next_update, max(self.next_static, now + 0.05))
+            self.next_update = min(self.next_update,
+                                   max(self.next_static, now + schedule.LAZY_LOOK))
 
     def close(self) -> None:
         self.pose_pub.destroy()

@@ -38,6 +38,7 @@ from launcher.control.hardware import make as make_mock
 from launcher.control.manager import ControllerManager
 from launcher.control.resources import Component
 from launcher.errors import LaunchError
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 SERVO_TIME = 0.005  # s: how fast a joint's velocity servo settles
@@ -309,10 +310,11 @@ class GzRos2Control(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if now + 1e-9 < self.next_update:
+        if not schedule.is_due(now, self.next_update):
             return
         self.manager.update(now)
-        self.next_update = now + 1.0 / self.update_rate
+        self.next_update = schedule.following(self.next_update, now,
+                                              schedule.period(self.update_rate))
 
     def reset(self) -> None:
         self.next_update = 0.0

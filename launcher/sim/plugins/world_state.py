@@ -11,6 +11,7 @@ from typing import Any
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin
 
 
@@ -35,9 +36,9 @@ class WorldState(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if now + 1e-9 < self.next_update or self.rate <= 0:
+        if not schedule.is_due(now, self.next_update) or self.rate <= 0:
             return
-        self.next_update = now + 1.0 / self.rate
+        self.next_update = schedule.following(self.next_update, now, schedule.period(self.rate))
         want_poses = self.poses.get_subscription_count() > 0
         want_states = self.states.get_subscription_count() > 0
         if self.links.get_subscription_count() > 0:

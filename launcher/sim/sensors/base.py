@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors import ALSO_RUN_BY, SYSTEM_CLASSES, SYSTEMS
@@ -16,8 +17,6 @@ from launcher.sim.sensors.config import SensorConfig
 from launcher.sim.sensors.metrics import MESSAGE, SUFFIX, Metrics, enabled
 from launcher.sim.sensors.noise import generator
 from launcher.sim.sensors.topics import TopicClaims
-
-LAZY_LOOK = 0.05  # s of sim time between looks for a subscriber, while there is none
 
 
 class Sensor(Plugin):
@@ -141,9 +140,9 @@ class Sensor(Plugin):
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
         if not self.watched():
-            self.next_update = now + max(self.period, LAZY_LOOK)
+            self.next_update = schedule.idle(now, self.period)
             return
-        self.next_update = self._next(now)
+        self.next_update = schedule.following(self.next_update, now, self.period)
         message = self.measure(model, data)
         if message is None:
             return
@@ -171,14 +170,6 @@ class Sensor(Plugin):
         for output, publisher in self.ros_publishers:
             if self.config.always_on or publisher.get_subscription_count() > 0:
                 publisher.publish(convert(self, output, reading, data))
-
-    def _next(self, now: float) -> float:
-        if self.period <= 0:
-            return now
-        due = max(self.next_update, now - self.period)
-        while due <= now + 1e-9:
-            due += self.period
-        return due
 
     def measure(self, model: Any, data: Any) -> Any:
         """The message to publish now, or None for none."""

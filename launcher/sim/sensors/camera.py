@@ -13,6 +13,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from launcher.sim import schedule
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors.base import Sensor
 from launcher.sim.sensors.metrics import SUFFIX, enabled
@@ -207,9 +208,9 @@ class Camera(Sensor):
                 self.rendering.request([self.camera_name], data)
             return
         if not wanted:
-            self.next_update = now + max(self.period, 0.05)
+            self.next_update = schedule.idle(now, self.period)
             return
-        self.next_update = self._next(now)
+        self.next_update = schedule.following(self.next_update, now, self.period)
         self.rendering.request([self.camera_name], data)
 
     def trigger(self, _message: Any) -> None:

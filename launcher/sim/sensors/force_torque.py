@@ -12,14 +12,14 @@ import mujoco
 import numpy as np
 
 from launcher.errors import did_you_mean
-from launcher.sim.sensors.inertial import AXES, _MuJoCoSensors
+from launcher.sim.sensors.inertial import AXES, MuJoCoSensors
 from launcher.sim.sensors.noise import noise_of
 
 FRAMES = ("child", "parent", "sensor")
 DIRECTIONS = ("child_to_parent", "parent_to_child")
 
 
-class ForceTorque(_MuJoCoSensors):
+class ForceTorque(MuJoCoSensors):
     message_type = "mujoco_sim/msg/Wrench"
     suffix = "forcetorque"
     readings = (("force", mujoco.mjtSensor.mjSENS_FORCE),

@@ -18,7 +18,7 @@ from launcher.sim.transform import from_rpy
 AXES = ("x", "y", "z")
 
 
-class _MuJoCoSensors(Sensor):
+class MuJoCoSensors(Sensor):
     """A sensor made of MuJoCo sensors at its site, one 3-vector each."""
 
     readings: tuple[tuple[str, Any], ...] = ()  # (suffix, mjtSensor)
@@ -52,7 +52,7 @@ class _MuJoCoSensors(Sensor):
 ZERO9 = [0.0] * 9  # covariances: Gazebo's messages carry none
 
 
-class Imu(_MuJoCoSensors):
+class Imu(MuJoCoSensors):
     message_type = "mujoco_sim/msg/IMU"
     suffix = "imu"
     orientation = True  # <enable_orientation>
@@ -99,7 +99,7 @@ class Imu(_MuJoCoSensors):
             linear_acceleration_covariance=ZERO9)
 
 
-class Magnetometer(_MuJoCoSensors):
+class Magnetometer(MuJoCoSensors):
     message_type = "mujoco_sim/msg/Magnetometer"
     suffix = "magnetometer"
     readings = (("magnetometer", mujoco.mjtSensor.mjSENS_MAGNETOMETER),)

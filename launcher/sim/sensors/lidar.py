@@ -14,6 +14,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from launcher.sim import schedule
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors.base import Sensor
 from launcher.sim.sensors.noise import NONE, Noise, noise_of
@@ -115,9 +116,9 @@ class Lidar(Sensor):
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
         if not self.watched():
-            self.next_update = now + max(self.period, 0.05)
+            self.next_update = schedule.idle(now, self.period)
             return
-        self.next_update = self._next(now)
+        self.next_update = schedule.following(self.next_update, now, self.period)
         ranges = self.cast(model, data)
         if self.config.always_on or self.publisher.get_subscription_count() > 0:
             self.publisher.publish(self.scan_message(data, ranges))
