@@ -28,7 +28,7 @@ from launcher.control.resources import (
     Component,
     Resources,
 )
-from launcher.control.yaml_places import block_place, key_place, params_files
+from launcher.control.yaml_places import block_place, key_place, params_files, value_place
 from launcher.errors import did_you_mean
 
 SRV = "controller_manager_msgs/srv/"
@@ -90,7 +90,7 @@ class ControllerManager:
                           f"controller manager"
         parameters = self.node.parameters
         type_name = parameters.get(f"{name}.type")
-        files = [*self.files, *params_files(parameters.get(f"{name}.params_file"))]
+        files = self._files_of(name)
         where = block_place(files, name, self.node.namespace or "/")
         if not type_name:
             at = f"{where}: " if where else ""
@@ -224,6 +224,18 @@ class ControllerManager:
         ok = bool(starting or stopping) or not (activate or deactivate)
         return ok, "\n".join(messages)
 
+    def _files_of(self, name: str) -> list[str]:
+        """The parameter files that may hold controller `name`'s settings."""
+        return [*self.files, *params_files(self.node.parameters.get(f"{name}.params_file"))]
+
+    def _place_of(self, controller: Controller, interface: str) -> str:
+        """`file:line:column: ` of the setting that asked for `interface` (its joint, else its
+        interface name) in the controller's parameters, or ""."""
+        joint, _, kind = interface.rpartition("/")
+        place = value_place(self._files_of(controller.name), controller.name,
+                            [interface, joint, kind], self.node.namespace or "/")
+        return f"{place}: " if place else ""
+
     def _cannot_activate(self, controller: Controller, stopping: list[Controller],
                          freed: set[str], taken: set[str]) -> str:
         name = controller.name
@@ -236,7 +248,8 @@ class ControllerManager:
         resources = self.resources
         for interface in controller.command_interfaces():
             if not resources.available(interface, command=True):
-                return (f"Unable to activate controller '{name}' since the command interface "
+                return (f"{self._place_of(controller, interface)}Unable to activate "
+                        f"controller '{name}' since the command interface "
                         f"'{interface}' is not available (the hardware exports: "
                         f"{', '.join(sorted(resources.commands)) or 'none'})"
                         f"{did_you_mean(interface, resources.commands)}")
@@ -250,7 +263,8 @@ class ControllerManager:
                         f"activated.")
         for interface in controller.state_interfaces() or []:
             if not resources.available(interface, command=False):
-                return (f"Unable to activate controller '{name}' since the state interface "
+                return (f"{self._place_of(controller, interface)}Unable to activate "
+                        f"controller '{name}' since the state interface "
                         f"'{interface}' is not available (the hardware exports: "
                         f"{', '.join(sorted(resources.states)) or 'none'})"
                         f"{did_you_mean(interface, resources.states)}")

@@ -27,6 +27,47 @@ def block_place(files: list[str], node: str, namespace: str = "/") -> str:
     return ""
 
 
+def value_place(files: list[str], node: str, wanted: list[str], namespace: str = "/") -> str:
+    """`file:line:column` of the first of `wanted` (tried in order) written as a value in
+    node `node`'s block of the files: a joint in `joints:`, an interface in
+    `interface_name:`; or ""."""
+    import yaml
+
+    full = f"{namespace.rstrip('/')}/{node}"
+    keys = {node, full, f"/**/{node}", f"/**{full}"}
+    blocks = []
+    for path, root in _composed(files):
+        if not isinstance(root, yaml.MappingNode):
+            continue
+        for key, value in root.value:
+            if key.value in keys:
+                blocks.append((path, value))
+            elif key.value == "/**" and isinstance(value, yaml.MappingNode):
+                blocks += [(path, inner_value) for inner, inner_value in value.value
+                           if inner.value in keys]
+    for text in wanted:
+        for path, block in blocks:
+            found = _scalar(block, text)
+            if found is not None:
+                return f"{path}:{found.start_mark.line + 1}:{found.start_mark.column + 1}"
+    return ""
+
+
+def _scalar(node: Any, text: str) -> Any:
+    """The first scalar value (not a key) of the tree equal to `text`, or None."""
+    import yaml
+
+    if isinstance(node, yaml.ScalarNode):
+        return node if node.value == text else None
+    children = [value for _, value in node.value] if isinstance(node, yaml.MappingNode) else \
+        node.value if isinstance(node, yaml.SequenceNode) else []
+    for child in children:
+        found = _scalar(child, text)
+        if found is not None:
+            return found
+    return None
+
+
 def key_place(files: list[str], node: str, dotted: str) -> str:
     """`file:line` of `node: ros__parameters: a: b:` for dotted name `a.b`, or ""."""
     parts = dotted.split(".")

@@ -379,6 +379,10 @@ def test_bad_controller_configurations_are_refused_with_where_and_why(arm):
     text = elbow.stdout + elbow.stderr
     assert "command interface 'elbow/position' is not available" in text, text
     assert "j1/position" in text  # what the hardware exports
+    lines = (arm.root / "arm_controllers.yaml").read_text().splitlines()
+    row = lines.index("    joints: [elbow]") + 1  # the joint the hardware lacks, where it is named
+    column = lines[row - 1].index("elbow") + 1
+    assert f"{yaml}:{row}:{column}: Unable to activate controller 'no_such_joint'" in text, text
     # nothing above left a controller active
     assert not re.search(r"\sactive", controllers(arm))
 

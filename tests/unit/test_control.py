@@ -15,7 +15,7 @@ from launcher.control.description import parse
 from launcher.control.hardware import GenericSystem
 from launcher.control.manager import BEST_EFFORT, STRICT, ControllerManager
 from launcher.control.resources import ACTIVE, INACTIVE
-from launcher.control.yaml_places import block_place, params_files
+from launcher.control.yaml_places import block_place, params_files, value_place
 from launcher.errors import LaunchError
 
 URDF = """<robot name="r">
@@ -175,3 +175,13 @@ def test_joint_states_packed_directly_are_the_serializers_bytes(names):
     assert list(message.name) == names and list(message.velocity) == [2.0] * count
     assert (message.header.stamp.sec, message.header.stamp.nanosec) == (5, 7)
     assert registry().serialize(message, "sensor_msgs/msg/JointState") == packed
+
+
+def test_a_missing_interface_is_placed_at_the_joint_that_asked_for_it(tmp_path):
+    params = tmp_path / "controllers.yaml"
+    params.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+                      "jtc:\n  ros__parameters:\n    joints:\n      - j1\n      - nope\n"
+                      "    interface_name: position\n")
+    assert value_place([str(params)], "jtc", ["nope/position", "nope", "position"]) == \
+        f"{params}:8:9"
+    assert value_place([str(params)], "jtc", ["j9/effort", "j9", "effort"]) == ""
