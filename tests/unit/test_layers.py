@@ -1,6 +1,8 @@
-"""Imports point one way (ARCHITECTURE.md): each layer may import only the ones listed."""
+"""Imports point one way (docs/reference/layout.md, "Layers"): each layer may import only the
+ones listed; and the layout page names every package and top-level module."""
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -170,3 +172,22 @@ def test_the_cycle_check_sees_imports_inside_functions_and_type_checking(tmp_pat
     (package / "d.py").write_text("import pkg.c\n")
     (package / "e.py").write_text("import pkg.a\n")
     assert cycles(import_graph(package)) == [["pkg.a", "pkg.b"], ["pkg.c", "pkg.d"]]
+
+
+LAYOUT = ROOT.parent / "docs" / "reference" / "layout.md"
+
+
+def test_the_layout_page_names_every_package_and_top_level_module():
+    """A newcomer finds every folder of launcher/ (two levels down; the built-in packages and
+    the compat shims are named by their parent) and every top-level module on the page."""
+    page = LAYOUT.read_text()
+    parts = [f"{path.relative_to(ROOT).as_posix()}/" for path in sorted(ROOT.glob("*/"))
+             if path.is_dir() and path.name != "__pycache__"]
+    parts += [f"{path.relative_to(ROOT).as_posix()}/" for path in sorted(ROOT.glob("*/*/"))
+              if path.is_dir() and path.name != "__pycache__" and
+              path.parent.name not in ("builtin", "compat")]
+    parts += [path.name for path in sorted(ROOT.glob("*.py"))
+              if path.name not in ("__init__.py", "__main__.py")]
+    missing = [part for part in parts
+               if not re.search(rf"(launcher/|[\s(]){re.escape(part)}", page)]
+    assert not missing, f"{LAYOUT} does not name: {missing}"
