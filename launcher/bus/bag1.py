@@ -10,6 +10,7 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from launcher.bus.interfaces import ros1_spelling
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
@@ -84,10 +85,10 @@ def info(path: Path) -> str:
                  f"size:        {_size(path.stat().st_size)}",
                  f"messages:    {reader.message_count}", "compression: none"]
         for number, (kind, digest) in enumerate(types):
-            lines.append(f"{'types:' if number == 0 else '':<13}{_short(kind)} [{digest}]")
+            lines.append(f"{'types:' if number == 0 else '':<13}{ros1_spelling(kind)} [{digest}]")
         for number, (topic, (count, kind)) in enumerate(sorted(counts.items())):
             lines.append(f"{'topics:' if number == 0 else '':<13}{topic:<{width}}   "
-                         f"{count} msg{'' if count == 1 else 's'}    : {_short(kind)}")
+                         f"{count} msg{'' if count == 1 else 's'}    : {ros1_spelling(kind)}")
     finally:
         reader.close()
     return "\n".join(lines)
@@ -145,11 +146,6 @@ def _opened(path: Path, reader: Any) -> Any:
     except ReaderError as exc:
         raise LaunchError(f"'{path}' is not a ROS 1 bag: {exc}") from None
     return opened
-
-
-def _short(kind: str) -> str:
-    parts = kind.split("/")
-    return f"{parts[0]}/{parts[-1]}" if len(parts) == 3 else kind
 
 
 def _size(count: float) -> str:

@@ -72,6 +72,11 @@ class Host:
         (the nodes a process runs on one thread, as the sim runs its controllers')."""
         self._queue, self._bell = other._queue, other._bell
 
+    def ring_with(self, bell: threading.Lock) -> None:
+        """Ring `bell` (held, released at each put) instead of the host's own: the executor of
+        a client library that waits for the work of several nodes at once."""
+        self._bell = bell
+
     def enqueue(self, callback: Callable[..., Any], *args: Any) -> None:
         """Work for the node's executor (spin), from any thread."""
         self._queue.put((callback, args))

@@ -143,6 +143,12 @@ ROS1_ACTION_SUFFIXES = ("ActionGoal", "ActionResult", "ActionFeedback", "Action"
                         "Result", "Feedback")
 
 
+def ros1_spelling(name: str) -> str:
+    """`pkg/msg/Name` as ROS 1 writes a type, `pkg/Name`; any other name as it is."""
+    parts = name.split("/")
+    return f"{parts[0]}/{parts[-1]}" if len(parts) == 3 else name
+
+
 def ros1_action_base(name: str) -> tuple[str, str] | None:
     """(package, action) when `pkg/msg/<X><suffix>` names one of the messages ROS 1's
     genaction makes of `action/<X>.action`; None otherwise."""

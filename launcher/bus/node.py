@@ -51,6 +51,9 @@ def _hear_ctrl_c() -> None:
         signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
+_MISSING = object()
+
+
 class Parameter:
     def __init__(self, name: str, value: Any) -> None:
         self.name, self.value = name, value
@@ -77,13 +80,13 @@ class Node:
             self._parameters.update(within.parameters)
             within.nodes.append(self)
         self.owner: Any = None  # the rclpy node wrapping this one, if any
-        self._host = Host(session or open_session("peer"), self.namespace,
+        self.host = Host(session or open_session("peer"), self.namespace,
                           self.name, logger, space)
-        self.session = self._host.session
+        self.session = self.host.session
         self._timers: list[Timer] = []
-        self._token = self._host.announce(keys.NODE)
+        self._token = self.host.announce(keys.NODE)
         self._shutdown = self.session.declare_queryable(
-            keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self._host.node_id),
+            keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self.host.node_id),
             self._asked_to_shut_down) if space == keys.ROS and within is None else None
         self._stopped = threading.Event()
         self.interrupted = False  # Ctrl-C arrived during spin()
@@ -117,14 +120,14 @@ class Node:
         """The full name; remaps apply on the ROS graph only (a bridge's `-r` renames its
         ROS side, never the simulator's topic it reads, as ros_gz's does)."""
         full = names.expand(name, self.name, self.namespace, what)
-        if (space or self._host.space) != keys.ROS:
+        if (space or self.host.space) != keys.ROS:
             return full
         return names.remap(full, self.remaps, self.name, self.namespace)
 
     # --- endpoints --------------------------------------------------------------------------
     def create_publisher(self, type_name: str, topic: str, qos: QoS | int = 10,
                          space: keys.Space | None = None) -> Publisher:
-        return self._host.adopt(Publisher(self._host, type_name, self.resolve(topic, space=space),
+        return self.host.adopt(Publisher(self.host, type_name, self.resolve(topic, space=space),
                                           qos_of(qos), space))
 
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
@@ -138,7 +141,7 @@ class Node:
         thread-safe against the node's other callbacks and must not block. `remote_only=True`
         ignores what this node publishes (a two-way bridge must not hear itself). `make`
         builds messages of other classes from field values (see TypeRegistry.deserialize)."""
-        return self._host.adopt(Subscription(self._host, type_name,
+        return self.host.adopt(Subscription(self.host, type_name,
                                              self.resolve(topic, space=space), callback,
                                              qos_of(qos), raw, inline, remote_only, space, make))
 
@@ -148,7 +151,7 @@ class Node:
                        make: Callable[[str, list[Any]], Any] | None = None,
                        new_response: Callable[[], Any] | None = None,
                        type_hash: str | None = None) -> Service:
-        return self._host.adopt(Service(self._host, type_name,
+        return self.host.adopt(Service(self.host, type_name,
                                         self.resolve(name, "service name", space), callback,
                                         space,
                                         make, new_response, type_hash))
@@ -156,13 +159,13 @@ class Node:
     def create_client(self, type_name: str, name: str,
                       space: keys.Space | None = None,
                       make: Callable[[str, list[Any]], Any] | None = None) -> Client:
-        return self._host.adopt(Client(self._host, type_name,
+        return self.host.adopt(Client(self.host, type_name,
                                        self.resolve(name, "service name", space), space, make))
 
     def spin_with(self, other: Node) -> None:
         """This node's callbacks run when `other` spins (one thread for both); call it before
         anything arrives."""
-        self._host.share_queue(other._host)
+        self.host.share_queue(other.host)
 
     def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
         if period <= 0:
@@ -235,8 +238,21 @@ class Node:
     def parameters(self) -> dict[str, Any]:
         return dict(self._parameters)
 
+    def keep_parameter(self, name: str, value: Any) -> None:
+        """Hold a value as the node's own without telling the listeners: a client library
+        (rclpy's node) that has checked and announced the change itself."""
+        self._parameters[name] = value
+
+    def drop_parameter(self, name: str) -> bool:
+        """Forget one parameter (undeclared, deleted); False if it was not set."""
+        return self._parameters.pop(name, _MISSING) is not _MISSING
+
+    def drop_parameters(self) -> None:
+        """Forget them all: a client library that lists only what its node declares."""
+        self._parameters.clear()
+
     def get_logger(self) -> Logger:
-        return self._host.logger
+        return self.host.logger
 
     def get_clock(self) -> Clock:
         return self._clock
@@ -250,12 +266,12 @@ class Node:
             first = min(due, key=lambda t: t.next)
             if first.next <= now:
                 first.next = max(first.next + first.period, now)
-                first._callback()
+                first.callback()
                 return True
             wait = first.next - now if timeout is None else min(timeout, first.next - now)
         else:
             wait = timeout
-        work = self._host.next_work(wait)
+        work = self.host.next_work(wait)
         if work is None:
             return False
         callback, args = work
@@ -287,15 +303,15 @@ class Node:
 
     def graph_session(self) -> zenoh.Session:
         """The session to ask who is on the bus (see Host.graph_session)."""
-        return self._host.graph_session()
+        return self.host.graph_session()
 
     def destroy_node(self) -> None:
         """Undeclare everything and close the session; safe to call more than once."""
         if self._destroyed:
             return
         self._destroyed = True
-        self._host.close_graph_session()
-        for entity in list(self._host.entities):
+        self.host.close_graph_session()
+        for entity in list(self.host.entities):
             # the session must close whatever happened to one entity
             with contextlib.suppress(zenoh.ZError, RuntimeError):
                 entity.destroy()

@@ -14,7 +14,7 @@ from __future__ import annotations
 import bisect
 import math
 import threading
-from typing import Any
+from typing import Any, NamedTuple
 
 Vector = tuple[float, float, float]
 Quat = tuple[float, float, float, float]  # x, y, z, w (ROS's order)
@@ -82,6 +82,18 @@ def _interpolate(a: tuple[Vector, Quat], b: tuple[Vector, Quat], ratio: float
     norm = math.sqrt(sum(v * v for v in q))
     return ((ax + (bx - ax) * ratio, ay + (by - ay) * ratio, az + (bz - az) * ratio),
             tuple(v / norm for v in q))  # type: ignore[return-value]
+
+
+class Edge(NamedTuple):
+    """A frame and its newest parent; the times (ns) of its oldest and newest transforms and
+    how many it keeps (a static frame keeps none)."""
+    name: str
+    parent: str
+    authority: str
+    static: bool
+    oldest: int
+    newest: int
+    count: int
 
 
 class _Frame:
@@ -187,6 +199,14 @@ class BufferCore:
                 names.update(parent for parent, _ in frame.entries)
         return sorted(names)
 
+    def edges(self) -> list[Edge]:
+        """Each frame that has a parent, by name, with what tf2_tools tells of it."""
+        with self._lock:
+            return [Edge(name, frame.entries[-1][0], frame.authority, frame.static,
+                         frame.times[0] if frame.times else 0,
+                         frame.times[-1] if frame.times else 0, len(frame.times))
+                    for name, frame in sorted(self._frames.items()) if frame.entries]
+
     def _exists(self, name: str) -> bool:
         return name in self._frames or any(p == name for f in self._frames.values()
                                            for p, _ in f.entries[-1:])
@@ -219,7 +239,7 @@ class BufferCore:
         if target == source:
             return IDENTITY, stamp or self._latest(source)
         if stamp == 0:
-            stamp = self._common_time(target, source)
+            stamp = self.common_time(target, source)
         up_source = self._chain(source, stamp, target, source)
         if up_source[-1][0] == target:
             return _compose(up_source), stamp
@@ -257,7 +277,7 @@ class BufferCore:
         frame = self._frames.get(name)
         return frame.times[-1] if frame is not None and frame.times and not frame.static else 0
 
-    def _common_time(self, target: str, source: str) -> int:
+    def common_time(self, target: str, source: str) -> int:
         """tf2's latest common time: the oldest of the newest data on both chains (0: all
         static)."""
         newest: list[int] = []

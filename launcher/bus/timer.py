@@ -9,7 +9,7 @@ from collections.abc import Callable
 
 class Timer:
     def __init__(self, period: float, callback: Callable[[], None]) -> None:
-        self.period, self._callback = period, callback
+        self.period, self.callback = period, callback
         self.next = time.monotonic() + period
         self.cancelled = False
 

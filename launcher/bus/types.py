@@ -153,10 +153,10 @@ class TypeRegistry:
             for part in interfaces.ACTION_SUFFIXES:
                 if name.endswith(part):
                     return self._from_package(name.removesuffix(part))
-        index = self._package_index()
+        index = self.package_index()
         if parts[0] not in index:  # a package made since the index was built?
             self._index = None
-            index = self._package_index()
+            index = self.package_index()
         if parts[0] not in index:
             return False
         found = interfaces.find_definition(name, index.share(parts[0]))
@@ -202,7 +202,7 @@ class TypeRegistry:
             self.service(f"{name}{service}")
         return name
 
-    def _package_index(self) -> Any:
+    def package_index(self) -> Any:
         """The package index, built once and rebuilt when a package is not found in it."""
         if self._index is None:
             from launcher.packages.index import PackageIndex  # only for non-distro types

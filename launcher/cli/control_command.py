@@ -22,7 +22,7 @@ from typing import Any
 
 from launcher.bus.node import Node
 from launcher.errors import LaunchError
-from launcher.nodes.spawner import Manager, _type_from
+from launcher.nodes.spawner import Manager, type_from
 
 CM_WAIT = 5.0
 STATES = {1: "unconfigured", 2: "inactive", 3: "active", 4: "finalized"}
@@ -221,7 +221,7 @@ def run_load(args: argparse.Namespace) -> int:
                     print(f"Controller parameter file : {args.param_file} does not exist, "
                           f"Aborting!", file=sys.stderr)
                     return 1
-                type_name, found = _type_from([path], name, "/")
+                type_name, found = type_from([path], name, "/")
                 if found:
                     manager.set_parameter(f"{name}.params_file", str([path]))
                     if type_name:

@@ -141,29 +141,26 @@ def _lines(name: str, indent: str) -> list[str]:
     constants, fields = registry().fielddefs[name]
     lines = [f"{indent}{kind} {constant}={value}" for constant, kind, value in constants]
     for field, (kind, detail) in fields:
-        type_text, nested = _type_text(kind, detail)
-        lines.append(f"{indent}{type_text} {field}")
+        text, nested = type_text(kind, detail)
+        lines.append(f"{indent}{text} {field}")
         if nested is not None:
             lines += _lines(nested, indent + "\t")
     return lines
 
 
-def _type_text(kind: int, detail: Any) -> tuple[str, str | None]:
+def type_text(kind: int, detail: Any) -> tuple[str, str | None]:
     """('geometry_msgs/Vector3[]', 'geometry_msgs/msg/Vector3') for a field's kind."""
     from launcher.bus import kinds
+    from launcher.bus.interfaces import ros1_spelling
 
     if kind == kinds.BASE:
         base, bound = detail
         return (f"{base}<={bound}" if bound else base), None
     if kind == kinds.NAME:
-        return _short(detail), detail
+        return ros1_spelling(detail), detail
     inner, size = detail
-    text, nested = _type_text(*inner)
+    text, nested = type_text(*inner)
     if kind == kinds.ARRAY:
         return f"{text}[{size}]", nested
     return (f"{text}[<={size}]" if size else f"{text}[]"), nested
 
-
-def _short(name: str) -> str:
-    package, _, base = name.split("/")
-    return f"{package}/{base}"

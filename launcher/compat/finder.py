@@ -170,7 +170,7 @@ def _workspace_interface_package(name: str) -> bool:
 def _package_folder(name: str) -> str | None:
     from launcher.bus.types import registry
 
-    index = registry()._package_index()
+    index = registry().package_index()
     if name not in index:
         return None
     return str(index.share(name))

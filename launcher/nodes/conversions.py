@@ -34,7 +34,7 @@ SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
 Convert = Callable[[bytes], bytes]
 
 
-def _short(name: str) -> str:
+def gz_short_name(name: str) -> str:
     name = name.strip()
     for prefix in ("gz.msgs.", "ignition.msgs.", f"{SIM}/msg/", f"{SIM}/"):
         if name.startswith(prefix):
@@ -48,7 +48,7 @@ def _short(name: str) -> str:
 def sim_type(name: str) -> str:
     """The sim's type for a `gz.msgs.*` name; `REQ|REP` names a service."""
     if "|" in name:
-        request, response = (_short(part) for part in name.split("|", 1))
+        request, response = (gz_short_name(part) for part in name.split("|", 1))
         if not response:  # the command-line form names the request only
             response = "Boolean"
         found = SIM_SERVICES.get((request, response))
@@ -58,7 +58,7 @@ def sim_type(name: str) -> str:
                               f"answering '{name.split('|')[1] or 'gz.msgs.Boolean'}' "
                               f"(services: {known})")
         return found
-    short = _short(name)
+    short = gz_short_name(name)
     if short not in SIM_MESSAGES:
         raise LaunchError(f"unknown sim type '{name}'"
                           f"{did_you_mean(name, [f'gz.msgs.{m}' for m in SIM_MESSAGES])}"

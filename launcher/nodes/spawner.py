@@ -109,7 +109,7 @@ class Manager:
                              "builtin_interfaces/msg/Duration", sec=sec, nanosec=nanosec))
 
 
-def _type_from(files: list[str], controller: str, namespace: str) -> tuple[str, str]:
+def type_from(files: list[str], controller: str, namespace: str) -> tuple[str, str]:
     """(type, file) of the controller in the parameter files, as spawner reads them."""
     import yaml
 
@@ -158,7 +158,7 @@ def spawn(argv: list[str]) -> int:
             else:
                 files = args.param_file or []
                 if files:
-                    type_name, found_in = _type_from(files, controller, namespace)
+                    type_name, found_in = type_from(files, controller, namespace)
                     if found_in:
                         if not manager.set_parameter(f"{controller}.params_file", str(files)):
                             log.fatal(f'Could not set controller param "params_file" for '

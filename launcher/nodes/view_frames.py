@@ -23,20 +23,19 @@ def graph(tree: BufferCore, recorded: float) -> str:
     rate, buffer length and newest and oldest transforms."""
     lines = ["digraph G {"]
     roots = set()
-    for name in sorted(tree._frames):
-        frame = tree._frames[name]
-        if not frame.entries:
-            continue
-        parent = frame.entries[-1][0]
-        newest = 0.0 if frame.static else frame.times[-1] / 1e9
-        oldest = 0.0 if frame.static else frame.times[0] / 1e9
+    edges = tree.edges()
+    children = {edge.name for edge in edges}
+    for edge in edges:
+        name, parent = edge.name, edge.parent
+        newest = 0.0 if edge.static else edge.newest / 1e9
+        oldest = 0.0 if edge.static else edge.oldest / 1e9
         span = newest - oldest
-        rate = (len(frame.times) - 1) / span if span > 0 else 10000.0
-        lines.append(f'"{parent}" -> "{name}"[label=" Broadcaster: {frame.authority}\\n'
+        rate = (edge.count - 1) / span if span > 0 else 10000.0
+        lines.append(f'"{parent}" -> "{name}"[label=" Broadcaster: {edge.authority}\\n'
                      f"Average rate: {rate:.3f}\\nBuffer length: {span:.3f}\\n"
                      f"Most recent transform: {newest:.3f}\\nOldest transform: {oldest:.3f}\\n"
                      '"];')
-        if parent not in tree._frames:
+        if parent not in children:
             roots.add(parent)
     lines.append("edge [style=invis];")
     lines.append(' subgraph cluster_legend { style=bold; color=black; label ="view_frames '

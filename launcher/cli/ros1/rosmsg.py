@@ -92,13 +92,13 @@ def definition(name: str) -> list[str]:
 
 def _lines(name: str, indent: str) -> list[str]:
     from launcher.bus.types import registry
-    from launcher.cli.interface_command import _type_text
+    from launcher.cli.interface_command import type_text
 
     registry().ensure(name)
     constants, fields = registry().fielddefs[name]
     lines = [f"{indent}{kind} {constant}={value}" for constant, kind, value in constants]
     for field, (kind, detail) in fields:
-        text, nested = _type_text(kind, detail)
+        text, nested = type_text(kind, detail)
         if nested in BUILTIN:
             text, nested = text.replace(ros1_type(nested), BUILTIN[nested]), None
         lines.append(f"{indent}{text} {field}")

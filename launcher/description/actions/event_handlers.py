@@ -19,7 +19,7 @@ Reaction = Sequence[Action] | Callable[..., Sequence[Action] | Action | None]
 
 
 @dataclass
-class _Handler:
+class Handler:
     event_type: type = field(init=False, default=object)
     target_action: Any = None
     snapshot: Snapshot | None = field(default=None, repr=False)
@@ -46,7 +46,7 @@ class _Handler:
 
 
 @dataclass
-class OnProcessStart(_Handler):
+class OnProcessStart(Handler):
     on_start: Reaction | None = None
 
     def __post_init__(self) -> None:
@@ -57,7 +57,7 @@ class OnProcessStart(_Handler):
 
 
 @dataclass
-class OnProcessExit(_Handler):
+class OnProcessExit(Handler):
     on_exit: Reaction | None = None
 
     def __post_init__(self) -> None:
@@ -68,7 +68,7 @@ class OnProcessExit(_Handler):
 
 
 @dataclass
-class OnProcessIO(_Handler):
+class OnProcessIO(Handler):
     on_stdout: Callable[..., Any] | None = None
     on_stderr: Callable[..., Any] | None = None
 
@@ -80,7 +80,7 @@ class OnProcessIO(_Handler):
 
 
 @dataclass
-class OnShutdown(_Handler):
+class OnShutdown(Handler):
     on_shutdown: Reaction | None = None
 
     def __post_init__(self) -> None:
@@ -92,9 +92,9 @@ class OnShutdown(_Handler):
 
 @dataclass(kw_only=True, eq=False)
 class RegisterEventHandler(Action):
-    event_handler: _Handler
+    event_handler: Handler
 
-    def __init__(self, event_handler: _Handler, **kwargs: Any) -> None:
+    def __init__(self, event_handler: Handler, **kwargs: Any) -> None:
         self.event_handler = event_handler
         self.condition = kwargs.get("condition")
         self.where = kwargs.get("where")

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from typing import Any
 
 from launcher.description.action import Action
-from launcher.description.actions.event_handlers import Reaction, _Handler
+from launcher.description.actions.event_handlers import Handler, Reaction
 from launcher.description.actions.node import Node
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
@@ -89,7 +89,7 @@ class EmitEvent(Action):
 
 
 @dataclass
-class OnStateTransition(_Handler):
+class OnStateTransition(Handler):
     """launch_ros.event_handlers.OnStateTransition: `entities` when the node (all lifecycle
     nodes without `target_lifecycle_node`) goes from `start_state` to `goal_state` (either
     may be left out)."""

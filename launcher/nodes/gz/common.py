@@ -6,7 +6,7 @@ from typing import Any
 
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError, did_you_mean
-from launcher.nodes.conversions import SIM_MESSAGES, _short, sim_type
+from launcher.nodes.conversions import SIM_MESSAGES, gz_short_name, sim_type
 
 
 def gz_name(type_name: str) -> str:
@@ -28,7 +28,7 @@ def print_names(collect: Any) -> int:
 
 def message_type(gz_type: str) -> tuple[str, str]:
     """(the sim's type, Gazebo's short name) for `gz.msgs.NAME`."""
-    short = _short(gz_type)
+    short = gz_short_name(gz_type)
     if not short:
         raise UsageError(f"unknown message type '{gz_type}': expected gz.msgs.NAME"
                          f"{did_you_mean(gz_type, [f'gz.msgs.{m}' for m in SIM_MESSAGES])}")

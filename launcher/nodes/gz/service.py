@@ -10,7 +10,7 @@ from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
 from launcher.bus.session import open_session
 from launcher.errors import LaunchError, UsageError
-from launcher.nodes.conversions import _short, sim_type
+from launcher.nodes.conversions import gz_short_name, sim_type
 from launcher.nodes.gz.common import print_names
 from launcher.sim import gz_msgs, prototext
 
@@ -71,7 +71,7 @@ def _call(name: str, reqtype: str, reptype: str, text: str, timeout: float) -> i
         service_type = sim_type(f"{reqtype}|{reptype}")
     except LaunchError as exc:
         raise UsageError(exc.message) from None
-    request_short = _short(reqtype)
+    request_short = gz_short_name(reqtype)
     data = gz_msgs.to_sim(request_short, prototext.parse(text, "--req"))
     node = Node("_launcher_gz_service", argv=[], parameter_services=False, space=keys.SIM)
     try:
@@ -88,7 +88,7 @@ def _call(name: str, reqtype: str, reptype: str, text: str, timeout: float) -> i
     finally:
         node.destroy_node()
     reply = to_data(response)
-    print(prototext.format(gz_msgs.reply_to_gz(_short(reptype), reply)) or "data: false\n")
+    print(prototext.format(gz_msgs.reply_to_gz(gz_short_name(reptype), reply)) or "data: false\n")
     if not reply.get("success", True):
         raise LaunchError(f"the sim refused: {reply.get('message', '')}")
     return 0

@@ -92,16 +92,20 @@ def create_node(node_name: str, **kwargs: Any) -> Any:
 
 
 def _executor_for(node: Any, executor: Any) -> Any:
+    from rclpy.node import check_alive
+
     executor = executor or get_global_executor()
-    node._check_alive()
+    check_alive(node)
     executor.add_node(node)
     return executor
 
 
 def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
+    from rclpy.node import check_alive
+
     executor = executor or get_global_executor()
     if type(executor).spin_once is _plain_spin_once():  # (not a subclass's own spin_once)
-        node._check_alive()
+        check_alive(node)
         executor.spin_once_lent(node, timeout_sec)
         return
     executor = _executor_for(node, executor)

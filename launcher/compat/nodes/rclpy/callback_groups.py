@@ -64,7 +64,7 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
             return callback(*args)
 
 
-def _is_custom(group: Any) -> bool:
+def is_custom(group: Any) -> bool:
     """A group of the program's own: neither of rclpy's two."""
     return group is not None and \
         not isinstance(group, ReentrantCallbackGroup | MutuallyExclusiveCallbackGroup)

@@ -66,7 +66,9 @@ class Client:
         payload = self._check(request)
         future = Future(executor=self._node.executor)
         self._pending.add(future)
-        host = self._node._host_or_none()
+        from rclpy.node import live_host
+
+        host = live_host(self._node)
 
         def finish(method: Any, value: Any) -> None:
             self._pending.discard(future)

@@ -8,15 +8,16 @@ MultiThreadedExecutor hands them to a pool, one at a time per mutually exclusive
 
 from __future__ import annotations
 
-import queue
 import threading
 import time
 from collections import deque
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
-from rclpy.callback_groups import _is_custom
+import rclpy.node
+from rclpy.callback_groups import is_custom
 from rclpy.task import Future, Task
+from rclpy.timer import due, take
 from rclpy.utilities import get_default_context
 
 BELL_LOST = 0.1  # s: the longest an executor waits without looking (see _next_work)
@@ -57,7 +58,7 @@ class Executor:
 
     # --- nodes ------------------------------------------------------------------------------
     def add_node(self, node: Any) -> bool:
-        node._check_alive()
+        rclpy.node.check_alive(node)
         with self._lock:
             if node in self._nodes:
                 return False
@@ -80,10 +81,11 @@ class Executor:
 
     def create_task(self, callback: Any, *args: Any, **kwargs: Any) -> Task:
         task = Task(callback, args, kwargs, executor=self)
-        self._add_ready(task)
+        self.add_ready(task)
         return task
 
-    def _add_ready(self, task: Task) -> None:
+    def add_ready(self, task: Task) -> None:
+        """Run `task` (new, or resumed: what it awaited is done) at the next spin."""
         self._ready.append(task)
         self.wake()
 
@@ -116,28 +118,24 @@ class Executor:
             now = time.monotonic()
             soonest = None
             for node in nodes:  # due timers first (a flood must not starve them)
-                for timer in node._timers:
+                for timer in node.timers:
                     if timer.is_canceled():
                         continue
-                    if timer._next <= now and _is_custom(timer.callback_group) and \
+                    next_at = due(timer)
+                    if next_at <= now and is_custom(timer.callback_group) and \
                             not timer.callback_group.can_execute(timer):
                         # (held back by its group, as rclpy's executor does: asked again soon)
                         soonest = now + HELD_BACK if soonest is None else \
                             min(soonest, now + HELD_BACK)
                         continue
-                    if timer._next <= now:
-                        timer._next = max(timer._next + timer._period, now)
-                        timer._last = now
-                        return node, timer._fire, ()
-                    soonest = timer._next if soonest is None else min(soonest, timer._next)
+                    if next_at <= now:
+                        return node, take(timer, now), ()
+                    soonest = next_at if soonest is None else min(soonest, next_at)
             for node in nodes:  # then waiting work
-                host = node._host_or_none()
-                if host is not None:
-                    try:
-                        callback, args = host._queue.get_nowait()
-                    except queue.Empty:
-                        continue
-                    return node, callback, args
+                host = rclpy.node.live_host(node)
+                work = host.next_work(0) if host is not None else None
+                if work is not None:
+                    return node, work[0], work[1]
             ends = [t for t in (deadline, soonest) if t is not None]
             wait = min(ends) - now if ends else None
             if deadline is not None and now >= deadline:

@@ -6,9 +6,10 @@ from typing import Any
 
 
 class GuardCondition:
-    def __init__(self, callback: Any, callback_group: Any, host: Any) -> None:
+    def __init__(self, callback: Any, callback_group: Any, host: Any, run: Any = None) -> None:
+        """`host` queues its work; `run` is the callback as its group runs it (the node's)."""
         self.callback, self.callback_group, self._host = callback, callback_group, host
-        self._run = None  # set by the node: the callback run in its group
+        self._run = run
 
     def trigger(self) -> None:
         if self._host is not None and self._run is not None:

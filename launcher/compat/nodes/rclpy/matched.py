@@ -42,7 +42,7 @@ class MatchWatcher:
         self._lock = threading.Lock()
         key = (f"{keys.ROS.liveliness}/{keys.DOMAIN}/*/*/*/{kind}/*/*/*/"
                f"{keys.mangle(topic)}/**")
-        self._subscriber = node._host.session.liveliness().declare_subscriber(
+        self._subscriber = node.handle.session.liveliness().declare_subscriber(
             key, zenoh.handlers.Callback(self._on_token, indirect=False), history=True)
 
     def _on_token(self, sample: Any) -> None:
@@ -63,7 +63,9 @@ class MatchWatcher:
                               current_count=current,
                               current_count_change=current - self._reported_current)
             self._reported_total, self._reported_current = self._total, current
-        host = self._node._host_or_none()
+        from rclpy.node import live_host
+
+        host = live_host(self._node)
         if host is not None:
             host.enqueue(self._callback, info)
 

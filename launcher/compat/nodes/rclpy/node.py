@@ -9,6 +9,7 @@ defaults, `add_on_set_parameters_callback` may refuse a change.
 
 from __future__ import annotations
 
+import functools
 import time
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -17,7 +18,7 @@ from launcher.bus import components, graph, keys
 from launcher.bus.node import Node as BusNode
 from launcher.compat import rosidl
 from launcher.errors import LaunchError
-from rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup, _is_custom
+from rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup, is_custom
 from rclpy.client import Client
 from rclpy.clock import ROSClock
 from rclpy.exceptions import (
@@ -41,6 +42,7 @@ from rclpy.service_introspection import (
 )
 from rclpy.subscription import Subscription
 from rclpy.timer import Rate, Timer
+from rclpy.timer import bind as bind_timer
 from rclpy.utilities import get_default_context
 
 EMPTY_AFTER_PRE_SET = ("parameter list cannot be empty, this might be due to "
@@ -78,8 +80,8 @@ class Node:
                 raise InvalidNamespaceException(text) from None
             raise InvalidNodeNameException(text) from None
         self._bus.owner = self
-        self._host = self._bus._host
-        self._host._bell = self._context.bell  # its work wakes whichever executor spins it
+        self._host = self._bus.host
+        self._host.ring_with(self._context.bell)  # its work wakes whichever executor spins it
         self._destroyed = False
         self.executor: Any = None
         self._timers: list[Timer] = []
@@ -90,7 +92,7 @@ class Node:
             f"{self._bus.namespace.strip('/').replace('/', '.')}.{self._bus.name}"
             if self._bus.namespace.strip("/") else self._bus.name)
         self._allow_undeclared = allow_undeclared_parameters
-        self._overrides: dict[str, Any] = dict(self._bus._parameters)
+        self._overrides: dict[str, Any] = self._bus.parameters
         for parameter in parameter_overrides or []:
             self._overrides[parameter.name] = parameter.value
         self._declared: dict[str, Parameter] = {}
@@ -99,7 +101,7 @@ class Node:
         self._pre_set_callbacks: list[Callable[[list[Parameter]], Any]] = []
         self._post_set_callbacks: list[Callable[[list[Parameter]], None]] = []
         self._pending_post: list[Parameter] | None = None
-        self._bus._parameters.clear()  # what is declared, as rclpy lists it
+        self._bus.drop_parameters()  # what is declared, as rclpy lists it
         self._declare_now("use_sim_time", self._overrides.get("use_sim_time", False))
         if automatically_declare_parameters_from_overrides:
             for name, value in self._overrides.items():
@@ -197,13 +199,8 @@ class Node:
         if group not in self._callback_groups:
             self._callback_groups.append(group)
         if isinstance(group, MutuallyExclusiveCallbackGroup):
-            lock = group._lock  # (group.run, one call less per message)
-
-            def run(*args: Any) -> Any:
-                with lock:
-                    return callback(*args)
-            return run
-        if _is_custom(group):
+            return functools.partial(group.run, callback)
+        if is_custom(group):
             def asked(*args: Any) -> Any:
                 who = entity()
                 if not group.beginning_execution(who):
@@ -317,7 +314,7 @@ class Node:
             raise ValueError(f"timer period must be > 0, got {timer_period_sec}")
         timer = Timer(callback, callback_group, int(timer_period_sec * 1e9), clock or
                       self._clock, context=self._context, autostart=autostart)
-        timer._fire = self._grouped(callback_group, callback, lambda: timer)
+        bind_timer(timer, self._grouped(callback_group, callback, lambda: timer))
         self._timers.append(timer)
         if self.executor is not None:
             self.executor.wake()
@@ -328,8 +325,8 @@ class Node:
 
     def create_guard_condition(self, callback: Callable[[], Any],
                                callback_group: Any = None) -> GuardCondition:
-        guard = GuardCondition(callback, callback_group, self._host)
-        guard._run = self._grouped(callback_group, callback)
+        guard = GuardCondition(callback, callback_group, self._host,
+                               self._grouped(callback_group, callback))
         self._entities.append(guard)
         return guard
 
@@ -457,7 +454,7 @@ class Node:
     def _declare_now(self, name: str, value: Any) -> Parameter:
         parameter = Parameter(name, value=_plain(value))
         self._declared[name] = parameter
-        self._bus._parameters[name] = parameter.value
+        self._bus.keep_parameter(name, parameter.value)
         return parameter
 
     def declare_parameter(self, name: str, value: Any = None, descriptor: Any = None,
@@ -495,7 +492,7 @@ class Node:
         if name not in self._declared:
             raise ParameterNotDeclaredException(name)
         del self._declared[name]
-        self._bus._parameters.pop(name, None)
+        self._bus.drop_parameter(name)
 
     def has_parameter(self, name: str) -> bool:
         return name in self._declared
@@ -559,7 +556,7 @@ class Node:
                 return result
         for parameter in parameter_list:
             self._declared[parameter.name] = parameter
-            self._bus._parameters[parameter.name] = parameter.value
+            self._bus.keep_parameter(parameter.name, parameter.value)
         self._post_set(parameter_list)
         return SetParametersResult(successful=True)
 
@@ -625,7 +622,7 @@ class Node:
         for parameter in parameters:
             self._declared[parameter.name] = parameter
             if parameter.name != name:  # one a pre-set callback added: set here
-                self._bus._parameters[parameter.name] = parameter.value
+                self._bus.keep_parameter(parameter.name, parameter.value)
         self._pending_post = parameters
         return None
 
@@ -673,3 +670,33 @@ def _kind(value: Any) -> Any:
         return Parameter.Type.from_parameter_value(_plain(value))
     except TypeError:
         return None
+
+
+# --- what the rest of this rclpy (its executors, clients, action servers and clients) asks
+# of a node, in one place: the Node class keeps rclpy's own surface ------------------------
+def check_alive(node: Node) -> None:
+    """rclpy's InvalidHandle once the node is destroyed."""
+    node._check_alive()
+
+
+def live_host(node: Node) -> Any:
+    """The bus host that queues the node's work; None once the node is destroyed."""
+    return node._host_or_none()
+
+
+def grouped(node: Node, group: CallbackGroup | None, callback: Callable[..., Any],
+            entity: Callable[[], Any] = lambda: None) -> Callable[..., Any]:
+    """`callback` as `group` (None: the node's default) runs it; see Node._grouped."""
+    return node._grouped(group, callback, entity)
+
+
+def adopt(node: Node, entity: Any) -> None:
+    """An entity made outside the node (an action server or client) that it destroys with
+    itself."""
+    node._entities.append(entity)
+
+
+def forget(node: Node, entity: Any) -> None:
+    """The entity, destroyed by itself, is no longer the node's."""
+    if entity in node._entities:
+        node._entities.remove(entity)

@@ -45,7 +45,7 @@ class Introspection:
                 return
             if self._publisher is None:
                 event = registry().service_event(rosidl.type_name_of(self._srv_type))
-                self._publisher = self._node._bus.create_publisher(
+                self._publisher = self._node.handle.create_publisher(
                     event, f"{self._name}/_service_event", to_launcher(qos))
             self._state, self._clock = state, clock
 

@@ -142,9 +142,19 @@ class Task(Future):
 
     def _resume(self) -> None:
         if self._executor is not None:
-            self._executor._add_ready(self)
+            self._executor.add_ready(self)
         else:
             self()
 
     def executing(self) -> bool:
         return self._running.locked()
+
+
+def wake_on_done(future: Future, event: threading.Event) -> None:
+    """Set `event` when the future is done (a blocking wait on another thread)."""
+    future._wake_on_done(event)
+
+
+def has_executor(future: Future) -> bool:
+    """Whether an executor runs the future's done callbacks."""
+    return future._executor is not None

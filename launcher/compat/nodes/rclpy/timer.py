@@ -61,6 +61,24 @@ class Timer:
         self.destroy()
 
 
+def bind(timer: Timer, run: Any) -> None:
+    """The node's part: the callback as run in its group (what `take` hands the executor)."""
+    timer._fire = run
+
+
+def due(timer: Timer) -> float:
+    """When the timer is due next, on the monotonic clock."""
+    return timer._next
+
+
+def take(timer: Timer, now: float) -> Any:
+    """The executor's part, at a due timer: its grid moves one period on (never behind
+    `now`), and the callback to run comes back."""
+    timer._next = max(timer._next + timer._period, now)
+    timer._last = now
+    return timer._fire
+
+
 class Rate:
     """Sleeps so that a loop runs at `frequency`; needs no executor spinning elsewhere."""
 

@@ -22,7 +22,7 @@ def wait_for_message(msg_type: Any, node: Any, topic: str, *, qos_profile: Any =
             got.append(message)
             arrived.set()
     type_name = rosidl.type_name_of(msg_type)
-    subscription = node._bus.create_subscription(type_name, topic, take,
+    subscription = node.handle.create_subscription(type_name, topic, take,
                                                  to_launcher(qos_profile), inline=True,
                                                  make=rosidl.make)
     try:

@@ -420,9 +420,9 @@ def delete_param(param_name: str) -> None:
             return True
 
         deleted = _on_server(delete) is True
-    found = _given(key, node._parameters)
+    found = _given(key, node.parameters)
     if found is not None:
-        del node._parameters[found]
+        node.drop_parameter(found)
     elif not deleted:
         raise KeyError(param_name)
 

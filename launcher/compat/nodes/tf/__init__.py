@@ -62,7 +62,7 @@ class TransformListener:
     def getLatestCommonTime(self, source_frame: str, target_frame: str) -> Any:  # noqa: N802
         import rospy
 
-        stamp = self._buffer.core._common_time(target_frame, source_frame)
+        stamp = self._buffer.core.common_time(target_frame, source_frame)
         return rospy.Time(stamp // 1_000_000_000, stamp % 1_000_000_000)
 
     def frameExists(self, frame_id: str) -> bool:  # noqa: N802

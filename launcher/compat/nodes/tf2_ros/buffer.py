@@ -152,9 +152,8 @@ class Buffer:
         return self.core.as_yaml()
 
     def all_frames_as_string(self) -> str:
-        return "".join(f"Frame {name} exists with parent "
-                       f"{self.core._frames[name].entries[-1][0]}.\n"
-                       for name in sorted(self.core._frames) if self.core._frames[name].entries)
+        return "".join(f"Frame {edge.name} exists with parent {edge.parent}.\n"
+                       for edge in self.core.edges())
 
     def _wait(self, attempt: Any, timeout: Any) -> Any:
         """Try now; with a timeout, try again as transforms come until it passes (the data

@@ -18,7 +18,8 @@ from typing import Any
 from launcher.bus.qos import QoS
 from launcher.compat import rosidl
 from rclpy.action import names as N
-from rclpy.task import Future
+from rclpy.node import adopt, check_alive, forget, grouped, live_host
+from rclpy.task import Future, has_executor, wake_on_done
 
 CALL_TIMEOUT = 10.0  # s: a goal or cancel request's answer
 RESULT_TIMEOUT = 365 * 24 * 3600.0  # s: a result comes when the goal ends, however long
@@ -77,12 +78,12 @@ class ActionClient:
                  result_service_qos_profile: Any = None,
                  cancel_service_qos_profile: Any = None, feedback_sub_qos_profile: Any = None,
                  status_sub_qos_profile: Any = None) -> None:
-        node._check_alive()
+        check_alive(node)
         self._node, self._action_name = node, action_name
         self._type_name = N.action_type_name(action_type)
         self._action_type = rosidl.action_class(self._type_name)
         self.callback_group = callback_group or node.default_callback_group
-        bus = node._bus
+        bus = node.handle
         self._goal_client = bus.create_client(f"{self._type_name}_SendGoal",
                                             N.endpoint(action_name, N.SEND_GOAL),
                                             make=rosidl.make)
@@ -95,16 +96,15 @@ class ActionClient:
         self._feedback_callbacks: dict[bytes, Any] = {}
         self._handles: dict[bytes, ClientGoalHandle] = {}
         self._lock = threading.Lock()
-        grouped = node._grouped
         self._feedback = bus.create_subscription(
             f"{self._type_name}_FeedbackMessage", N.endpoint(action_name, N.FEEDBACK),
-            grouped(self.callback_group, self._on_feedback), QoS(depth=10), make=rosidl.make)
+            grouped(node, self.callback_group, self._on_feedback), QoS(depth=10), make=rosidl.make)
         # the status array names every goal the server keeps (hundreds, on a busy one): read
         # as bytes, for the few goals of this client, not made into messages each time
         self._status = bus.create_subscription(
             N.STATUS_TYPE, N.endpoint(action_name, N.STATUS), self._on_status,
             QoS(depth=1, transient_local=True), raw=True, inline=True)
-        node._entities.append(self)
+        adopt(node, self)
 
     # --- the server -----------------------------------------------------------------------------
     def server_is_ready(self) -> bool:
@@ -209,7 +209,7 @@ class ActionClient:
         """A Future completed on the node's executor with `shape(response)` (the answer
         comes on Zenoh's thread and is handed to the executor: no thread per call)."""
         future = Future(executor=self._node.executor)
-        host = self._node._host_or_none()
+        host = live_host(self._node)
 
         def finish(response: Any, error: Any) -> None:
             if error is None:
@@ -223,7 +223,7 @@ class ActionClient:
         def done(response: Any, error: Any) -> None:
             # A future with an executor runs its done callbacks there whoever completes it:
             # completed here, on Zenoh's thread, it wakes a blocking wait a hand-over sooner
-            if future._executor is not None or host is None:
+            if has_executor(future) or host is None:
                 finish(response, error)
             else:
                 host.enqueue(finish, response, error)
@@ -234,31 +234,28 @@ class ActionClient:
         """The future's result, waited for on this thread (the executor completes it: it
         must be spinning elsewhere, as rclpy requires for its blocking calls)."""
         event = threading.Event()
-        future._wake_on_done(event)
+        wake_on_done(future, event)
         if self._node.executor is None:  # nobody spins: complete it here
             while not event.wait(0.01):
-                self._node._host_or_none() and self._drain()
+                live_host(self._node) and self._drain()
         else:
             event.wait()
         return future.result()
 
     def _drain(self) -> None:
-        import queue
-
-        host = self._node._host_or_none()
+        host = live_host(self._node)
         while host is not None:
-            try:
-                callback, args = host._queue.get_nowait()
-            except queue.Empty:
+            work = host.next_work(0)
+            if work is None:
                 return
+            callback, args = work
             callback(*args)
 
     def destroy(self) -> None:
         for entity in (self._goal_client, self._cancel_client, self._result_client,
                        self._feedback, self._status):
             entity.destroy()
-        if self in self._node._entities:
-            self._node._entities.remove(self)
+        forget(self._node, self)
 
 
 def _statuses(payload: bytes) -> list[tuple[bytes, int]]:

@@ -22,6 +22,7 @@ from typing import Any
 from launcher.bus.qos import QoS
 from launcher.compat import rosidl
 from rclpy.action import names as N
+from rclpy.node import adopt, check_alive, forget, grouped
 from rclpy.task import Future
 
 
@@ -163,7 +164,7 @@ class ActionServer:
                  goal_service_qos_profile: Any = None, result_service_qos_profile: Any = None,
                  cancel_service_qos_profile: Any = None, feedback_pub_qos_profile: Any = None,
                  status_pub_qos_profile: Any = None, result_timeout: float = 900) -> None:
-        node._check_alive()
+        check_alive(node)
         self._node, self._action_name = node, action_name
         self._type_name = N.action_type_name(action_type)
         self._action_type = rosidl.action_class(self._type_name)
@@ -176,16 +177,15 @@ class ActionServer:
         self._waiting: dict[bytes, list[Any]] = {}  # result requests of goals not ended
         self._lock = threading.RLock()
         self.callback_group = callback_group or node.default_callback_group
-        bus, impl = node._bus, self._action_type.Impl
-        grouped = node._grouped
+        bus, impl = node.handle, self._action_type.Impl
         self._send_goal = bus.create_service(
             f"{self._type_name}_SendGoal", N.endpoint(action_name, N.SEND_GOAL),
-            grouped(self.callback_group, self._on_goal), make=rosidl.make,
+            grouped(node, self.callback_group, self._on_goal), make=rosidl.make,
             new_response=impl.SendGoalService.Response)
         self._send_goal.deferred = True
         self._cancel = bus.create_service(
             N.CANCEL_TYPE, N.endpoint(action_name, N.CANCEL_GOAL),
-            grouped(self.callback_group, self._on_cancel), make=rosidl.make,
+            grouped(node, self.callback_group, self._on_cancel), make=rosidl.make,
             new_response=impl.CancelGoalService.Response)
         self._get_result = bus.create_service(
             f"{self._type_name}_GetResult", N.endpoint(action_name, N.GET_RESULT),
@@ -198,7 +198,7 @@ class ActionServer:
                                               N.endpoint(action_name, N.FEEDBACK), QoS(depth=10))
         self._status = bus.create_publisher(N.STATUS_TYPE, N.endpoint(action_name, N.STATUS),
                                             QoS(depth=1, transient_local=True))
-        node._entities.append(self)
+        adopt(node, self)
         from action_msgs.msg import GoalInfo
 
         self._goal_info = GoalInfo
@@ -364,8 +364,7 @@ class ActionServer:
         for entity in (self._send_goal, self._cancel, self._get_result, self._feedback,
                        self._status):
             entity.destroy()
-        if self in self._node._entities:
-            self._node._entities.remove(self)
+        forget(self._node, self)
 
 
 _COUNT = struct.Struct("<I")
