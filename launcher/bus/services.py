@@ -65,6 +65,10 @@ class Service:
     def response_type(self) -> str:
         return self._types()[1]
 
+    def new_response(self) -> Any:
+        """An empty response of the service's type, to fill."""
+        return self._new_response()
+
     def _on_query(self, query: zenoh.Query) -> None:
         if self.inline:
             self._answer(query)
@@ -106,7 +110,7 @@ class Reply:
         self._lock = threading.Lock()
 
     def new_response(self) -> Any:
-        return self._service._new_response()
+        return self._service.new_response()
 
     def send(self, response: Any) -> bool:
         """Answer the caller; False if it was answered already."""

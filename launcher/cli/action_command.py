@@ -15,6 +15,7 @@ import threading
 
 import yaml
 
+from launcher.bus import actions as protocol
 from launcher.bus import graph, keys
 from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
@@ -22,9 +23,7 @@ from launcher.bus.session import open_session
 from launcher.bus.types import UnknownType, registry
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
-SEND_GOAL = "/_action/send_goal"
-STATUS_NAMES = {0: "UNKNOWN", 1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: "SUCCEEDED",
-                5: "CANCELED", 6: "ABORTED"}
+SEND_GOAL = protocol.endpoint("", protocol.SEND_GOAL)  # how an action's send_goal name ends
 FOREVER = 365 * 24 * 3600.0
 
 
@@ -147,8 +146,10 @@ def run_send_goal(args: argparse.Namespace) -> int:
 
 
 def _send(node: Node, name: str, action: str, goal: object, args: argparse.Namespace) -> int:
-    send = node.create_client(f"{action}_SendGoal", f"{name}/_action/send_goal")
-    results = node.create_client(f"{action}_GetResult", f"{name}/_action/get_result")
+    send = node.create_client(protocol.send_goal_type(action),
+                              protocol.endpoint(name, protocol.SEND_GOAL))
+    results = node.create_client(protocol.get_result_type(action),
+                                 protocol.endpoint(name, protocol.GET_RESULT))
     goal_id = {"uuid": list(os.urandom(16))}
     early: list[str] | None = []  # feedback that came before the goal's answer, held till it
     lock = threading.Lock()
@@ -163,7 +164,8 @@ def _send(node: Node, name: str, action: str, goal: object, args: argparse.Names
         def on_feedback(message: object) -> None:
             if list(message.goal_id.uuid) == goal_id["uuid"]:  # type: ignore[attr-defined]
                 say_feedback(f"Feedback:\n    {_yaml(message.feedback)}")  # type: ignore
-        node.create_subscription(f"{action}_FeedbackMessage", f"{name}/_action/feedback",
+        node.create_subscription(protocol.feedback_type(action),
+                                 protocol.endpoint(name, protocol.FEEDBACK),
                                  on_feedback, inline=True)
     print("Waiting for an action server to become available...", flush=True)
     if not send.wait_for_service(args.timeout):
@@ -203,14 +205,15 @@ def _send(node: Node, name: str, action: str, goal: object, args: argparse.Names
     result = outcome["result"]
     print(f"Result:\n    {_yaml(result.result)}")  # type: ignore[attr-defined]
     print(f"Goal finished with status: "
-          f"{STATUS_NAMES.get(result.status, result.status)}")  # type: ignore[attr-defined]
+          f"{protocol.STATE_NAMES.get(result.status, result.status)}")  # type: ignore[attr-defined]
     return 0
 
 
 def _cancel(node: Node, name: str, goal_id: dict[str, list[int]]) -> None:
     """Ctrl-C while the goal runs: cancel it, as ros2 action send_goal does."""
     print("Canceling goal...", flush=True)
-    cancel = node.create_client("action_msgs/srv/CancelGoal", f"{name}/_action/cancel_goal")
+    cancel = node.create_client(protocol.CANCEL_TYPE,
+                                protocol.endpoint(name, protocol.CANCEL_GOAL))
     response = cancel.call(build("action_msgs/srv/CancelGoal_Request",
                                  {"goal_info": {"goal_id": goal_id}}), 5.0)
     canceling = list(response.goals_canceling)

@@ -10,8 +10,9 @@ finder.install()
 
 from action_msgs.msg import GoalInfo, GoalStatus, GoalStatusArray  # noqa: E402
 from builtin_interfaces.msg import Time  # noqa: E402
-from rclpy.action.server import status_array_cdr  # noqa: E402
 from unique_identifier_msgs.msg import UUID  # noqa: E402
+
+from launcher.bus.actions import status_array_cdr, statuses  # noqa: E402
 
 
 def test_the_status_array_written_directly_is_the_type_stores():
@@ -27,11 +28,9 @@ def test_the_status_array_written_directly_is_the_type_stores():
 
 
 def test_the_client_reads_goal_statuses_from_the_bytes():
-    from rclpy.action.client import _statuses
-
     entries = [(bytes(range(16)), 5, 7, 2), (bytes(range(16, 32)), 6, 8, 4)]
-    assert _statuses(status_array_cdr(entries)) == [(bytes(range(16)), 2),
-                                                     (bytes(range(16, 32)), 4)]
+    assert statuses(status_array_cdr(entries)) == [(bytes(range(16)), 2),
+                                                    (bytes(range(16, 32)), 4)]
 
 
 def test_the_standard_action_types_are_there_with_their_fields():
@@ -52,3 +51,88 @@ def test_the_standard_action_types_are_there_with_their_fields():
     assert NavigateToPose.Impl.SendGoalService.Request(goal=pose).goal.pose.header.frame_id \
         == "map"
     assert "partial_sequence" in Fibonacci.Feedback.get_fields_and_field_types()
+
+
+class _Reply:
+    def __init__(self):
+        self.sent = []
+
+    def send(self, response):
+        self.sent.append(response)
+
+
+def _goal(number, sec):
+    from types import SimpleNamespace
+
+    from launcher.bus import actions
+
+    return actions.Goal(SimpleNamespace(uuid=[number] * 16), SimpleNamespace(sec=sec, nanosec=0))
+
+
+def _table():
+    from launcher.bus import actions
+
+    said = []
+    return actions.GoalTable(said.append), said
+
+
+def test_a_goal_moves_only_as_rcl_action_lets_it():
+    from launcher.bus import actions
+
+    table, said = _table()
+    goal = _goal(1, 1)
+    table.add(goal)
+    table.move(goal, actions.GoalEvent.EXECUTE)
+    assert actions.statuses(said[-1]) == [(bytes([1] * 16), actions.EXECUTING)]
+    try:
+        table.move(goal, actions.GoalEvent.CANCELED)
+    except actions.InvalidTransition as exc:
+        assert "from state EXECUTING with event CANCELED" in str(exc)
+    else:
+        raise AssertionError("EXECUTING -> CANCELED was allowed")
+
+
+def test_a_result_request_waits_for_the_goals_end_and_an_unknown_one_is_answered_at_once():
+    from launcher.bus import actions
+
+    table, _ = _table()
+    goal = _goal(1, 1)
+    table.add(goal)
+    waiting, unknown = _Reply(), _Reply()
+    assert table.result_request(goal.key, waiting, lambda: "unknown")
+    assert not table.result_request(bytes([9] * 16), unknown, lambda: "unknown")
+    assert waiting.sent == [] and unknown.sent == ["unknown"]
+    table.move(goal, actions.GoalEvent.EXECUTE)
+    table.move(goal, actions.GoalEvent.SUCCEED)
+    table.finish(goal, "result")
+    assert waiting.sent == ["result"]
+
+
+def test_a_cancel_request_names_goals_as_rcl_action_reads_it():
+    from launcher.bus import actions
+
+    table, _ = _table()
+    early, late = _goal(1, 1), _goal(2, 5)
+    for goal in (early, late):
+        table.add(goal)
+    everything = bytes(16)
+    assert table.cancel_candidates(everything, 0) == (actions.ERROR_NONE, [early, late])
+    assert table.cancel_candidates(everything, 2 * 10**9) == (actions.ERROR_NONE, [early])
+    assert table.cancel_candidates(late.key, 0) == (actions.ERROR_NONE, [late])
+    assert table.cancel_candidates(bytes([7] * 16), 0) == (actions.ERROR_UNKNOWN_GOAL_ID, [])
+    table.move(early, actions.GoalEvent.EXECUTE)
+    table.move(early, actions.GoalEvent.ABORT)
+    assert table.cancel_candidates(early.key, 0) == (actions.ERROR_GOAL_TERMINATED, [])
+
+
+def test_an_ended_goal_is_forgotten_once_its_result_has_been_kept_long_enough():
+    from launcher.bus import actions
+
+    table, said = _table()
+    table.keep = 0.0
+    goal = _goal(1, 1)
+    table.add(goal)
+    table.move(goal, actions.GoalEvent.EXECUTE)
+    table.move(goal, actions.GoalEvent.SUCCEED)
+    table.expire()
+    assert goal.key not in table and actions.statuses(said[-1]) == []

@@ -15,9 +15,10 @@ import threading
 import uuid
 from typing import Any
 
+from launcher.bus import actions
 from launcher.bus.qos import QoS
 from launcher.compat import rosidl
-from rclpy.action import names as N
+from rclpy.action import names
 from rclpy.node import adopt, check_alive, forget, grouped, live_host
 from rclpy.task import Future, has_executor, wake_on_done
 
@@ -30,14 +31,14 @@ class ClientGoalHandle:
         self._action_client = action_client
         self._goal_id = goal_id
         self._goal_response = goal_response
-        self._status = N.UNKNOWN if not goal_response.accepted else N.ACCEPTED
+        self._status = actions.UNKNOWN if not goal_response.accepted else actions.ACCEPTED
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, ClientGoalHandle) and \
-            N.uuid_key(self._goal_id) == N.uuid_key(other._goal_id)
+            actions.uuid_key(self._goal_id) == actions.uuid_key(other._goal_id)
 
     def __hash__(self) -> int:
-        return hash(N.uuid_key(self._goal_id))
+        return hash(actions.uuid_key(self._goal_id))
 
     def __repr__(self) -> str:
         return f"ClientGoalHandle <id={self.goal_id.uuid}, accepted={self.accepted}, " \
@@ -80,29 +81,30 @@ class ActionClient:
                  status_sub_qos_profile: Any = None) -> None:
         check_alive(node)
         self._node, self._action_name = node, action_name
-        self._type_name = N.action_type_name(action_type)
+        self._type_name = names.action_type_name(action_type)
         self._action_type = rosidl.action_class(self._type_name)
         self.callback_group = callback_group or node.default_callback_group
-        bus = node.handle
-        self._goal_client = bus.create_client(f"{self._type_name}_SendGoal",
-                                            N.endpoint(action_name, N.SEND_GOAL),
-                                            make=rosidl.make)
-        self._cancel_client = bus.create_client(N.CANCEL_TYPE,
-                                                N.endpoint(action_name, N.CANCEL_GOAL),
+        bus, name, kind = node.handle, action_name, self._type_name
+        self._goal_client = bus.create_client(actions.send_goal_type(kind),
+                                              actions.endpoint(name, actions.SEND_GOAL),
+                                              make=rosidl.make)
+        self._cancel_client = bus.create_client(actions.CANCEL_TYPE,
+                                                actions.endpoint(name, actions.CANCEL_GOAL),
                                                 make=rosidl.make)
-        self._result_client = bus.create_client(f"{self._type_name}_GetResult",
-                                                N.endpoint(action_name, N.GET_RESULT),
+        self._result_client = bus.create_client(actions.get_result_type(kind),
+                                                actions.endpoint(name, actions.GET_RESULT),
                                                 make=rosidl.make)
         self._feedback_callbacks: dict[bytes, Any] = {}
         self._handles: dict[bytes, ClientGoalHandle] = {}
         self._lock = threading.Lock()
         self._feedback = bus.create_subscription(
-            f"{self._type_name}_FeedbackMessage", N.endpoint(action_name, N.FEEDBACK),
-            grouped(node, self.callback_group, self._on_feedback), QoS(depth=10), make=rosidl.make)
+            actions.feedback_type(kind), actions.endpoint(name, actions.FEEDBACK),
+            grouped(node, self.callback_group, self._on_feedback), QoS(depth=10),
+            make=rosidl.make)
         # the status array names every goal the server keeps (hundreds, on a busy one): read
         # as bytes, for the few goals of this client, not made into messages each time
         self._status = bus.create_subscription(
-            N.STATUS_TYPE, N.endpoint(action_name, N.STATUS), self._on_status,
+            actions.STATUS_TYPE, actions.endpoint(name, actions.STATUS), self._on_status,
             QoS(depth=1, transient_local=True), raw=True, inline=True)
         adopt(node, self)
 
@@ -136,7 +138,7 @@ class ActionClient:
         from unique_identifier_msgs.msg import UUID
 
         goal_id = goal_uuid if goal_uuid is not None else UUID(uuid=list(uuid.uuid4().bytes))
-        key = N.uuid_key(goal_id)
+        key = actions.uuid_key(goal_id)
         if feedback_callback is not None:
             with self._lock:
                 self._feedback_callbacks[key] = feedback_callback
@@ -167,7 +169,7 @@ class ActionClient:
         def done(response: Any) -> Any:
             goal_handle._status = response.status
             with self._lock:
-                key = N.uuid_key(goal_handle.goal_id)
+                key = actions.uuid_key(goal_handle.goal_id)
                 self._feedback_callbacks.pop(key, None)
                 self._handles.pop(key, None)
             return response
@@ -191,7 +193,7 @@ class ActionClient:
     # --- topics ---------------------------------------------------------------------------------
     def _on_feedback(self, message: Any) -> None:
         with self._lock:
-            callback = self._feedback_callbacks.get(N.uuid_key(message.goal_id))
+            callback = self._feedback_callbacks.get(actions.uuid_key(message.goal_id))
         if callback is not None:
             callback(message)
 
@@ -199,7 +201,7 @@ class ActionClient:
         with self._lock:
             if not self._handles:
                 return
-            for uuid, status in _statuses(payload):
+            for uuid, status in actions.statuses(payload):
                 handle = self._handles.get(uuid)
                 if handle is not None:
                     handle._status = status
@@ -257,17 +259,3 @@ class ActionClient:
             entity.destroy()
         forget(self._node, self)
 
-
-def _statuses(payload: bytes) -> list[tuple[bytes, int]]:
-    """(goal uuid, status) of each entry of a GoalStatusArray's CDR (little or big endian):
-    uuid[16], stamp (int32, uint32, aligned to 4), status int8."""
-    big = payload[1] == 0
-    count = int.from_bytes(payload[4:8], "big" if big else "little")
-    found, at = [], 8
-    for _ in range(count):
-        uuid = payload[at:at + 16]
-        at += 16
-        at += -(at - 4) % 4
-        found.append((bytes(uuid), payload[at + 8]))
-        at += 9
-    return found

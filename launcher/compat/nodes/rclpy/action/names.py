@@ -1,24 +1,9 @@
-"""The names and types of an action's services and topics (rcl_action's), and goal status."""
+"""What rclpy's action modules add to the protocol (launcher/bus/actions.py): an action
+class's type name, and a goal id as rclpy prints it."""
 
 from __future__ import annotations
 
 from typing import Any
-
-SEND_GOAL, CANCEL_GOAL, GET_RESULT = "send_goal", "cancel_goal", "get_result"
-FEEDBACK, STATUS = "feedback", "status"
-CANCEL_TYPE = "action_msgs/srv/CancelGoal"
-STATUS_TYPE = "action_msgs/msg/GoalStatusArray"
-
-# action_msgs/msg/GoalStatus
-UNKNOWN, ACCEPTED, EXECUTING, CANCELING, SUCCEEDED, CANCELED, ABORTED = range(7)
-STATE_NAMES = {UNKNOWN: "UNKNOWN", ACCEPTED: "ACCEPTED", EXECUTING: "EXECUTING",
-               CANCELING: "CANCELING", SUCCEEDED: "SUCCEEDED", CANCELED: "CANCELED",
-               ABORTED: "ABORTED"}
-TERMINAL = (SUCCEEDED, CANCELED, ABORTED)
-
-
-def endpoint(action_name: str, part: str) -> str:
-    return f"{action_name}/_action/{part}"
 
 
 def action_type_name(action_type: Any) -> str:
@@ -30,11 +15,6 @@ def action_type_name(action_type: Any) -> str:
         raise TypeError(f"expected an action type, got {name}")
     rosidl.action_class(name)
     return name
-
-
-def uuid_key(goal_id: Any) -> bytes:
-    """A goal id (unique_identifier_msgs/UUID) as a dict key."""
-    return bytes(goal_id.uuid)
 
 
 def uuid_text(goal_id: Any) -> str:
