@@ -145,38 +145,60 @@ class Node:
     # --- identity ---------------------------------------------------------------------------
     @property
     def context(self) -> Any:
+        """The context the node belongs to (rclpy.init's, unless one was given)."""
         return self._context
 
     @property
     def handle(self) -> Any:
+        """The launcher bus node under this node: its graph tokens, entities and services."""
         return self._bus
 
     def get_name(self) -> str:
+        """The node's name, after any `__node:=` remap."""
         return self._bus.name
 
     def get_namespace(self) -> str:
+        """The node's namespace (`/` for none), after any `__ns:=` remap."""
         return self._bus.namespace or "/"
 
     def get_fully_qualified_name(self) -> str:
+        """The namespace and name together: `/ns/name`."""
         return self._bus.fully_qualified_name
 
     def get_logger(self) -> RcutilsLogger:
+        """The node's logger, named as rclpy names it (`ns.name`)."""
         return self._logger
 
     def get_clock(self) -> ROSClock:
+        """The node's clock: ROS time, which follows `/clock` when use_sim_time is true."""
         return self._clock
 
     def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
+        """A topic name as the node resolves it: relative names joined to the namespace,
+        `~` to the node's name, and the command line's remaps applied.
+
+        :param topic: the name to resolve.
+        :param only_expand: accepted for rclpy's signature; remaps are always applied.
+        :return: the fully qualified topic name.
+        """
         return self._bus.resolve(topic)
 
     def resolve_service_name(self, service: str, *, only_expand: bool = False) -> str:
+        """A service name as the node resolves it (see resolve_topic_name).
+
+        :param service: the name to resolve.
+        :param only_expand: accepted for rclpy's signature.
+        :return: the fully qualified service name.
+        """
         return self._bus.resolve(service, "service name")
 
     @property
     def callback_groups(self) -> list[CallbackGroup]:
+        """The callback groups the node's entities run in, the default one first."""
         return list(self._callback_groups)
 
     def add_waitable(self, waitable: Any) -> None:
+        """Waitables are not supported: raises NotImplementedError."""
         raise NotImplementedError("waitables are not supported by launcher's rclpy")
 
     def _host_or_none(self) -> Any:
@@ -217,6 +239,16 @@ class Node:
                          *, callback_group: Any = None, event_callbacks: Any = None,
                          qos_overriding_options: Any = None,
                          publisher_class: Any = Publisher) -> Publisher:
+        """A publisher of `msg_type` on `topic`.
+
+        :param msg_type: the message class.
+        :param topic: the topic's name, resolved as resolve_topic_name does.
+        :param qos_profile: a QoSProfile, or a history depth.
+        :param callback_group: the group its event callbacks run in.
+        :param event_callbacks: PublisherEventCallbacks (`matched` is called as subscriptions
+            come and go).
+        :return: the Publisher.
+        """
         self._check_alive()
         qos = to_launcher(qos_profile)
         bus = self._bus.create_publisher(rosidl.type_name_of(msg_type), topic, qos)
@@ -253,6 +285,17 @@ class Node:
                             event_callbacks: Any = None, qos_overriding_options: Any = None,
                             raw: bool = False, content_filter_options: Any = None,
                             ) -> Subscription:
+        """A subscription: `callback(message)` runs on the node's executor for each message.
+
+        :param msg_type: the message class.
+        :param topic: the topic's name.
+        :param callback: called with each message (or its serialized bytes with `raw=True`).
+        :param qos_profile: a QoSProfile, or a history depth.
+        :param callback_group: the group the callback runs in (default: the node's).
+        :param event_callbacks: SubscriptionEventCallbacks.
+        :param raw: hand the callback the serialized message.
+        :return: the Subscription.
+        """
         self._check_alive()
         type_name = rosidl.type_name_of(msg_type)
         made: list[Any] = []
@@ -273,6 +316,15 @@ class Node:
                        callback: Callable[[Any, Any], Any], *,
                        qos_profile: QoSProfile = qos_profile_services_default,
                        callback_group: Any = None) -> Service:
+        """A service: `callback(request, response)` fills and returns the response.
+
+        :param srv_type: the service class.
+        :param srv_name: the service's name.
+        :param callback: called on the node's executor for each request.
+        :param qos_profile: accepted for rclpy's signature.
+        :param callback_group: the group the callback runs in.
+        :return: the Service.
+        """
         self._check_alive()
         type_name = rosidl.type_name_of(srv_type)
 
@@ -298,6 +350,14 @@ class Node:
     def create_client(self, srv_type: Any, srv_name: str, *,
                       qos_profile: QoSProfile = qos_profile_services_default,
                       callback_group: Any = None) -> Client:
+        """A client of `srv_name`: `call_async(request)` returns a Future of the response.
+
+        :param srv_type: the service class.
+        :param srv_name: the service's name.
+        :param qos_profile: accepted for rclpy's signature.
+        :param callback_group: the group its done callbacks run in.
+        :return: the Client.
+        """
         self._check_alive()
         bus = self._bus.create_client(rosidl.type_name_of(srv_type), srv_name,
                                       make=rosidl.make)
@@ -309,6 +369,15 @@ class Node:
     def create_timer(self, timer_period_sec: float, callback: Callable[[], Any],
                      callback_group: Any = None, clock: Any = None,
                      autostart: bool = True) -> Timer:
+        """A timer that calls `callback` every `timer_period_sec` seconds on the executor.
+
+        :param timer_period_sec: the period, in seconds.
+        :param callback: called with no arguments each period.
+        :param callback_group: the group it runs in.
+        :param clock: accepted for rclpy's signature; periods are on the monotonic clock.
+        :param autostart: start it now (false: it waits for reset()).
+        :return: the Timer.
+        """
         self._check_alive()
         if timer_period_sec <= 0:
             raise ValueError(f"timer period must be > 0, got {timer_period_sec}")
@@ -321,10 +390,22 @@ class Node:
         return timer
 
     def create_rate(self, frequency: float, clock: Any = None) -> Rate:
+        """A Rate that sleeps so that a loop runs `frequency` times a second.
+
+        :param frequency: loops a second.
+        :param clock: accepted for rclpy's signature.
+        :return: the Rate.
+        """
         return Rate(frequency, context=self._context)
 
     def create_guard_condition(self, callback: Callable[[], Any],
                                callback_group: Any = None) -> GuardCondition:
+        """A guard condition: each `trigger()` runs `callback` once on the executor.
+
+        :param callback: called with no arguments.
+        :param callback_group: the group it runs in.
+        :return: the GuardCondition.
+        """
         guard = GuardCondition(callback, callback_group, self._host,
                                self._grouped(callback_group, callback))
         self._entities.append(guard)
@@ -339,21 +420,27 @@ class Node:
         return False
 
     def destroy_publisher(self, publisher: Publisher) -> bool:
+        """Destroy a publisher of this node; False if it was not one of its own."""
         return self._destroy_entity(publisher)
 
     def destroy_subscription(self, subscription: Subscription) -> bool:
+        """Destroy a subscription of this node; False if it was not one of its own."""
         return self._destroy_entity(subscription)
 
     def destroy_service(self, service: Service) -> bool:
+        """Destroy a service of this node; False if it was not one of its own."""
         return self._destroy_entity(service)
 
     def destroy_client(self, client: Client) -> bool:
+        """Destroy a client of this node; False if it was not one of its own."""
         return self._destroy_entity(client)
 
     def destroy_guard_condition(self, guard: GuardCondition) -> bool:
+        """Destroy a guard condition of this node; False if it was not its own."""
         return self._destroy_entity(guard)
 
     def destroy_timer(self, timer: Timer) -> bool:
+        """Destroy a timer of this node; False if it was not one of its own."""
         if timer in self._timers:
             self._timers.remove(timer)
             timer.destroy()
@@ -361,9 +448,13 @@ class Node:
         return False
 
     def destroy_rate(self, rate: Rate) -> bool:
+        """Destroy a rate made by create_rate (nothing to release)."""
         return True
 
     def destroy_node(self) -> None:
+        """Destroy the node and all its entities; it leaves the graph. A second call does
+        nothing.
+        """
         if self._destroyed:
             return
         self._destroyed = True
@@ -377,22 +468,27 @@ class Node:
 
     @property
     def publishers(self) -> list[Publisher]:
+        """The node's publishers."""
         return [e for e in self._entities if isinstance(e, Publisher)]
 
     @property
     def subscriptions(self) -> list[Subscription]:
+        """The node's subscriptions."""
         return [e for e in self._entities if isinstance(e, Subscription)]
 
     @property
     def timers(self) -> list[Timer]:
+        """The node's timers."""
         return list(self._timers)
 
     @property
     def clients(self) -> list[Client]:
+        """The node's service clients."""
         return [e for e in self._entities if isinstance(e, Client)]
 
     @property
     def services(self) -> list[Service]:
+        """The node's services."""
         return [e for e in self._entities if isinstance(e, Service)]
 
     # --- the graph --------------------------------------------------------------------------
@@ -401,21 +497,25 @@ class Node:
         return graph.entities(self._bus.graph_session(), 0.5)
 
     def count_publishers(self, topic_name: str) -> int:
+        """How many publishers the graph has on `topic_name` (resolved)."""
         topic = self._bus.resolve(topic_name)
         return sum(1 for e in self._entities_on_graph()
                    if e.kind == keys.PUBLISHER and e.topic == topic)
 
     def count_subscribers(self, topic_name: str) -> int:
+        """How many subscriptions the graph has on `topic_name` (resolved)."""
         topic = self._bus.resolve(topic_name)
         return sum(1 for e in self._entities_on_graph()
                    if e.kind == keys.SUBSCRIPTION and e.topic == topic)
 
     def count_services(self, service_name: str) -> int:
+        """How many servers the graph has for `service_name` (resolved)."""
         name = self._bus.resolve(service_name, "service name")
         return sum(1 for e in self._entities_on_graph()
                    if e.kind == keys.SERVICE and e.topic == name)
 
     def count_clients(self, service_name: str) -> int:
+        """How many clients the graph has of `service_name` (resolved)."""
         name = self._bus.resolve(service_name, "service name")
         return sum(1 for e in self._entities_on_graph()
                    if e.kind == keys.CLIENT and e.topic == name)
@@ -429,19 +529,29 @@ class Node:
 
     def get_topic_names_and_types(self, no_demangle: bool = False
                                   ) -> list[tuple[str, list[str]]]:
+        """Every topic of the graph with its types: [(name, [type, …])]."""
         return self._names_and_types((keys.PUBLISHER, keys.SUBSCRIPTION))
 
     def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
+        """Every service of the graph with its types: [(name, [type, …])]."""
         return self._names_and_types((keys.SERVICE,))
 
     def get_node_names(self) -> list[str]:
+        """The names of the graph's nodes."""
         return [e.node for e in self._entities_on_graph() if e.kind == keys.NODE]
 
     def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
+        """(name, namespace) of each node of the graph."""
         return [(e.node, e.namespace or "/") for e in self._entities_on_graph()
                 if e.kind == keys.NODE]
 
     def wait_for_node(self, fully_qualified_node_name: str, timeout: float) -> bool:
+        """Wait until a node of that fully qualified name is on the graph.
+
+        :param fully_qualified_node_name: `/ns/name`.
+        :param timeout: seconds to wait.
+        :return: whether it came.
+        """
         end = time.monotonic() + timeout
         while time.monotonic() < end:
             if any(f"{ns.rstrip('/')}/{n}" == fully_qualified_node_name
@@ -459,6 +569,15 @@ class Node:
 
     def declare_parameter(self, name: str, value: Any = None, descriptor: Any = None,
                           ignore_override: bool = False) -> Parameter:
+        """Declare a parameter: an override from the command line or a params file wins
+        over `value`.
+
+        :param name: the parameter's name.
+        :param value: its default (or a Parameter.Type, for a parameter with no default).
+        :param descriptor: a ParameterDescriptor (its type, read_only, ranges, description).
+        :param ignore_override: take `value` even when an override was given.
+        :return: the declared Parameter.
+        """
         if isinstance(value, Parameter.Type):  # declare_parameter(name, Parameter.Type.X)
             value = None
         if name in self._declared:
@@ -480,6 +599,10 @@ class Node:
 
     def declare_parameters(self, namespace: str, parameters: Sequence[Any],
                            ignore_override: bool = False) -> list[Parameter]:
+        """Declare several parameters under `namespace` (each (name, value[, descriptor])).
+
+        :return: the declared Parameters, in order.
+        """
         declared = []
         for entry in parameters:
             name, *rest = entry if isinstance(entry, tuple) else (entry,)
@@ -489,15 +612,20 @@ class Node:
         return declared
 
     def undeclare_parameter(self, name: str) -> None:
+        """Undeclare a parameter (ParameterNotDeclaredException if it was not declared)."""
         if name not in self._declared:
             raise ParameterNotDeclaredException(name)
         del self._declared[name]
         self._bus.drop_parameter(name)
 
     def has_parameter(self, name: str) -> bool:
+        """Whether the parameter is declared."""
         return name in self._declared
 
     def get_parameter(self, name: str) -> Parameter:
+        """The declared parameter (ParameterNotDeclaredException if it is not, unless the
+        node allows undeclared parameters).
+        """
         if name in self._declared:
             return self._declared[name]
         if self._allow_undeclared:
@@ -506,23 +634,28 @@ class Node:
 
     def get_parameter_or(self, name: str, alternative_value: Parameter | None = None
                          ) -> Parameter:
+        """The parameter, or `alternative_value` when it is not declared."""
         if alternative_value is None:
             alternative_value = Parameter(name, Parameter.Type.NOT_SET)
         return self._declared.get(name, alternative_value)
 
     def get_parameters(self, names: list[str]) -> list[Parameter]:
+        """The parameters of `names`, in order (see get_parameter)."""
         return [self.get_parameter(name) for name in names]
 
     def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
+        """The parameters under `prefix.`, by their names after it."""
         start = f"{prefix}." if prefix else ""
         return {name[len(start):]: p for name, p in self._declared.items()
                 if name.startswith(start)}
 
     @property
     def parameters(self) -> dict[str, Parameter]:
+        """The declared parameters by name."""
         return dict(self._declared)
 
     def describe_parameter(self, name: str) -> Any:
+        """The parameter's ParameterDescriptor (its declared one, else its name and type)."""
         from rcl_interfaces.msg import ParameterDescriptor
 
         if name not in self._declared:
@@ -532,16 +665,24 @@ class Node:
 
     def add_on_set_parameters_callback(self, callback: Callable[[list[Parameter]], Any]
                                        ) -> Callable[[list[Parameter]], Any]:
+        """Add a callback asked before parameters are set: it returns a
+        SetParametersResult, and `successful=False` refuses the change.
+
+        :return: the callback (to remove it later).
+        """
         self._set_callbacks.insert(0, callback)
         return callback
 
     def remove_on_set_parameters_callback(self, callback: Any) -> None:
+        """Remove a callback added by add_on_set_parameters_callback."""
         self._set_callbacks.remove(callback)
 
     def set_parameters(self, parameter_list: list[Parameter]) -> list[Any]:
+        """Set parameters one at a time: a SetParametersResult for each."""
         return [self.set_parameters_atomically([p]) for p in parameter_list]
 
     def set_parameters_atomically(self, parameter_list: list[Parameter]) -> Any:
+        """Set parameters all together or none: one SetParametersResult."""
         from rcl_interfaces.msg import SetParametersResult
 
         parameter_list = self._pre_set(list(parameter_list))
@@ -563,18 +704,29 @@ class Node:
     # --- rclpy's pre-set (may change the list) and post-set (told what was set) callbacks ---
     def add_pre_set_parameters_callback(self, callback: Callable[[list[Parameter]], Any]
                                         ) -> Callable[[list[Parameter]], Any]:
+        """Add a callback that may change the list of parameters about to
+        be set (it returns the list to set).
+
+        :return: the callback.
+        """
         self._pre_set_callbacks.insert(0, callback)
         return callback
 
     def remove_pre_set_parameters_callback(self, callback: Any) -> None:
+        """Remove a callback added by add_pre_set_parameters_callback."""
         self._pre_set_callbacks.remove(callback)
 
     def add_post_set_parameters_callback(self, callback: Callable[[list[Parameter]], None]
                                          ) -> Callable[[list[Parameter]], None]:
+        """Add a callback told of the parameters once they are set.
+
+        :return: the callback.
+        """
         self._post_set_callbacks.insert(0, callback)
         return callback
 
     def remove_post_set_parameters_callback(self, callback: Any) -> None:
+        """Remove a callback added by add_post_set_parameters_callback."""
         self._post_set_callbacks.remove(callback)
 
     def _pre_set(self, parameters: list[Parameter]) -> list[Parameter]:

@@ -62,14 +62,17 @@ class Duration(_Arithmetic, _DurationMessage):
 
     @property
     def secs(self) -> int:
+        """Whole seconds."""
         return self.sec
 
     @property
     def nsecs(self) -> int:
+        """Nanoseconds past the whole seconds."""
         return self.nanosec
 
     @classmethod
     def from_sec(cls, seconds: float) -> Duration:
+        """A Duration of `float_secs` seconds."""
         return cls(float(seconds))
 
     def __add__(self, other: Any) -> Any:
@@ -112,10 +115,12 @@ class Time(_Arithmetic, _TimeMessage):
 
     @classmethod
     def from_sec(cls, seconds: float) -> Time:
+        """A Time of `float_secs` seconds."""
         return cls(float(seconds))
 
     @classmethod
     def now(cls) -> Time:
+        """The node's current time (sim time when use_sim_time is set)."""
         from rospy import get_rostime
 
         return get_rostime()
@@ -136,3 +141,16 @@ class Time(_Arithmetic, _TimeMessage):
 
     def __repr__(self) -> str:
         return f"rospy.Time[{self.to_nsec()}]"
+
+
+def get_rostime() -> Time:
+    """The node's current time as a Time."""
+    from rospy.core import need_node
+
+    node = need_node("time is not initialized")
+    return Time(0, node.get_clock().now().nanoseconds)
+
+
+def get_time() -> float:
+    """The node's current time in seconds."""
+    return get_rostime().to_sec()
