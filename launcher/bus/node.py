@@ -21,7 +21,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import zenoh
 
@@ -36,6 +36,9 @@ from launcher.bus.session import open_session
 from launcher.bus.subscription import Subscription
 from launcher.bus.timer import Rate, Timer
 from launcher.errors import LaunchError
+
+if TYPE_CHECKING:
+    from launcher.bus.declarations import Param
 
 __all__ = ["Logger", "Node", "Parameter", "Publisher", "Rate", "Subscription", "Timer"]
 
@@ -227,9 +230,29 @@ class Node:
         self.set_parameter_value(name, value)
         return None
 
+    def declare(self, declared: tuple[Param, ...], only: tuple[str, ...] = ()) -> dict[str, Any]:
+        """Parameters declared as data (bus/declarations.py; those named in `only`, else
+        all): checked against their declarations, their defaults kept as the node's values
+        (listed, as a ROS node lists what it declares) and described by describe_parameter.
+        ParameterError for the first bad one."""
+        from launcher.bus import declarations
+
+        self._declared = declared
+        found = declarations.read(declared, self._parameters, only)
+        for name, value in found.items():
+            self._parameters.setdefault(name, value)
+        return found
+
+    _declared: tuple[Param, ...] = ()
+
     def describe_parameter(self, name: str) -> dict[str, Any]:
         if self.describer is not None:
             return self.describer(name)
+        from launcher.bus import declarations
+
+        for full, param in declarations.expand(self._declared, self._parameters):
+            if full == name:
+                return declarations.descriptor(full, param)
         from launcher.bus.parameters import type_of
 
         return {"name": name, "type": type_of(self._parameters.get(name))}

@@ -11,13 +11,13 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.bus.declarations import Param, ParameterError
 from launcher.bus.types import registry
 from launcher.bus.wire import split_time
 from launcher.control.resources import ACTIVE, INACTIVE, UNCONFIGURED, Handle
 from launcher.errors import LaunchError
 
 CONTROLLER_BASE = "controller_interface::ControllerInterface"
-_MISSING = object()
 _CLASSES: dict[str, type] = {}
 
 
@@ -28,6 +28,7 @@ class ControllerError(LaunchError):
 class Controller:
     type_name = ""
     base_class = CONTROLLER_BASE
+    PARAMETERS: tuple[Param, ...] = ()  # what it reads, declared (bus/declarations.py)
 
     def __init__(self, name: str, node: Any, where: str = "") -> None:
         self.name, self.node = name, node
@@ -37,6 +38,7 @@ class Controller:
         self.commands: list[Handle] = []  # claimed, in command_interfaces() order
         self.states: dict[str, Handle] = {}
         self.last_update: float | None = None
+        self.place_of: Any = lambda name: ""  # file:line:column of a parameter (the manager's)
 
     # --- what a controller declares --------------------------------------------------------
     def on_init(self) -> None:
@@ -65,42 +67,19 @@ class Controller:
         pass
 
     # --- parameters --------------------------------------------------------------------------
-    def param(self, name: str, default: Any = _MISSING, kind: type | tuple[type, ...] | None = None,
-              required: bool = False) -> Any:
-        """A parameter of the controller's node (from its YAML), checked against `kind`."""
-        values = self.node.parameters
-        if name not in values or values[name] is None:
-            if required or default is _MISSING:
-                raise ControllerError(self._at(f"controller '{self.name}': parameter '{name}' "
-                                               f"is required and not set"))
-            return default
-        value = values[name]
-        want = kind if kind is not None else (type(default) if default is not _MISSING and
-                                              default is not None else None)
-        if want is float and isinstance(value, int) and not isinstance(value, bool):
-            return float(value)
-        if want is list and isinstance(value, list | tuple):
-            return list(value)
-        if want is not None and not isinstance(value, want):
-            expected = " or ".join(t.__name__ for t in (want if isinstance(want, tuple)
-                                                       else (want,)))
-            raise ControllerError(self._at(f"controller '{self.name}': parameter '{name}' is "
-                                           f"{value!r}; expected {expected}"))
-        return value
+    def read_parameters(self, *only: str) -> dict[str, Any]:
+        """The declared parameters (those named, else all) from the controller's node, checked,
+        with their defaults; a bad one is refused at its line in the parameter file."""
+        try:
+            return self.node.declare(self.PARAMETERS, only)
+        except ParameterError as exc:
+            name = exc.name
+            place = self.place_of(name) if name in self.node.parameters else ""
+            raise ControllerError(self._at(f"controller '{self.name}': {exc}", place)) from None
 
-    def names(self, name: str, required: bool = True) -> list[str]:
-        """A list-of-strings parameter (joints, interfaces)."""
-        value = self.param(name, [] if not required else _MISSING, list, required=required)
-        if not all(isinstance(v, str) for v in value):
-            raise ControllerError(self._at(f"controller '{self.name}': parameter '{name}' "
-                                           f"must be a list of names, got {value!r}"))
-        if required and not value:
-            raise ControllerError(self._at(f"controller '{self.name}': parameter '{name}' "
-                                           f"is empty"))
-        return list(value)
-
-    def _at(self, message: str) -> str:
-        return f"{self.where}: {message}" if self.where else message
+    def _at(self, message: str, place: str = "") -> str:
+        place = place or self.where
+        return f"{place}: {message}" if place else message
 
     # --- helpers ---------------------------------------------------------------------------
     @property

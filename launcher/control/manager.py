@@ -108,6 +108,7 @@ class ControllerManager:
         controller_node = self._node_for(name, files)
         controller = cls(name, controller_node, where)
         controller.type_name = str(type_name)
+        controller.place_of = lambda key: key_place(files, name, key)
         try:
             controller.on_init()
         except ControllerError as exc:

@@ -15,8 +15,10 @@ from pathlib import Path
 import pytest
 
 from launcher.cli.main import COMMANDS
+from launcher.control.controllers import TYPES, controller_class
 from launcher.description.registry import Registry
 from launcher.nodes.conversions import conversions
+from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
 from tests.conftest import REPO
 from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import cases
@@ -79,6 +81,16 @@ def test_every_substitution_says_what_it_gives():
     registry.load_all()
     undocumented = sorted(n for n, cls in registry.substitutions.items() if not cls.__doc__)
     assert not undocumented
+
+
+def test_the_parameters_page_gives_every_controller_and_node_that_declares_them(site):
+    page = text(site / "reference" / "parameters" / "index.html")
+    declared = {**{t: controller_class(t).PARAMETERS for t in TYPES},
+                "foxglove_bridge/foxglove_bridge": foxglove_parameters()}
+    for name, parameters in declared.items():
+        assert name in page, name
+        for parameter in parameters:
+            assert parameter.name in page and parameter.description in page, parameter
 
 
 def test_the_type_tables_come_from_the_bridges_own(site):

@@ -19,7 +19,7 @@ import pytest
 
 from launcher.bus.types import registry
 from tests.conftest import REPO, tagged_processes
-from tests.integration.test_viewer import free_port, wait_for
+from tests.support.waiting import free_port, wait_for
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 CLIENT = REPO / "tests" / "js" / "foxglove_client.js"
@@ -387,6 +387,15 @@ def test_a_subscribed_parameter_sends_its_changes(served):
     updates = next(json.loads(line) for line in out.splitlines() if "parameterUpdates" in line)
     values = [p["value"] for p in updates["parameterUpdates"] if p["name"] == name]
     assert values[0] == 25 and values[-1] == 30, values  # the value, then its change
+
+
+def test_the_bridges_parameters_are_described_from_their_declarations(served):
+    ws, _, _ = served
+    described = ws.run("param", "describe", "/foxglove_bridge", "port")
+    assert described.returncode == 0, described.stderr
+    text = described.stdout
+    assert "Type: integer" in text and "Description: the WebSocket port" in text, text
+    assert "Min value: 1" in text and "Max value: 65535" in text, text
 
 
 def test_token_false_serves_without_the_token_and_warns(ws):

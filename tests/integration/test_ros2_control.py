@@ -193,6 +193,13 @@ controller_manager:
     few_states: {type: joint_state_broadcaster/JointStateBroadcaster}
     no_such_joint: {type: position_controllers/JointGroupPositionController}
     typo_type: {type: joint_trajectory_controler/JointTrajectoryController}
+    bad_rate: {type: joint_trajectory_controller/JointTrajectoryController}
+bad_rate:
+  ros__parameters:
+    joints: [j1, j2]
+    command_interfaces: [position]
+    state_interfaces: [position]
+    action_monitor_rate: fast
 arm_controller:
   ros__parameters:
     joints: [j1, j2]
@@ -385,6 +392,25 @@ def test_bad_controller_configurations_are_refused_with_where_and_why(arm):
     assert f"{yaml}:{row}:{column}: Unable to activate controller 'no_such_joint'" in text, text
     # nothing above left a controller active
     assert not re.search(r"\sactive", controllers(arm))
+
+
+def test_a_controller_parameter_of_the_wrong_type_is_refused_at_its_line(arm):
+    yaml = str(arm.root / "arm_controllers.yaml")
+    assert spawner(arm, "bad_rate").returncode == 1
+    out = arm.wait_for_output("parameter 'action_monitor_rate' is 'fast'", 10, "sim.out")
+    lines = (arm.root / "arm_controllers.yaml").read_text().splitlines()
+    row = lines.index("    action_monitor_rate: fast") + 1
+    assert f"{yaml}:{row}: controller 'bad_rate': parameter 'action_monitor_rate' is 'fast'; " \
+           f"expected a number" in out, out
+
+
+def test_a_controllers_parameters_are_listed_with_defaults_and_described(arm):
+    assert spawner(arm, "arm_controller").returncode == 0
+    listed = arm.run("param", "list", "/arm_controller").stdout
+    assert "allow_partial_joints_goal" in listed and "gains.j2.ff_velocity_scale" in listed
+    described = arm.run("param", "describe", "/arm_controller", "action_monitor_rate").stdout
+    assert "Type: double" in described and "Description: goal checks a second" in described
+    assert "Min value: 0.001" in described, described
 
 
 def test_an_unknown_hardware_plugin_is_refused_at_its_line(ws):

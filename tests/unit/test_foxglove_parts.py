@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import pytest
 
+from launcher.bus.declarations import read
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 from launcher.nodes.foxglove.assets import DEFAULT_ALLOWLIST, Assets
-from launcher.nodes.foxglove.bridge import Settings
+from launcher.nodes.foxglove.settings import Settings
 
 VIEWED = ["visualization_msgs/msg/Marker", "visualization_msgs/msg/MarkerArray",
           "nav_msgs/msg/Path", "nav_msgs/msg/OccupancyGrid", "nav_msgs/msg/Odometry",
@@ -76,19 +77,20 @@ def test_assets_stay_inside_their_package_and_the_allowlist(tmp_path):
 
 
 class FakeNode:
+    """A node's parameters, read as the bus node reads declared ones."""
+
     def __init__(self, values):
         self.values = values
 
-    def declare_parameter(self, name, default):
-        class Parameter:
-            value = self.values.get(name, default)
-        return Parameter()
+    def declare(self, declared, only=()):
+        return read(declared, self.values, only)
 
 
 @pytest.mark.parametrize("values, expected", [
     ({"topic_whitelist": ["(unclosed"]}, "topic_whitelist: '(unclosed' is not a regular"),
     ({"capabilities": ["clientPublish", "teleport"]}, "unknown capabilities ['teleport']"),
-    ({"port": 70000}, "port 70000: expected 1 to 65535"),
+    ({"port": 70000}, "parameter 'port' is 70000; expected at most 65535"),
+    ({"max_qos_depth": "deep"}, "parameter 'max_qos_depth' is 'deep'; expected an integer"),
 ])
 def test_bad_settings_are_said(values, expected):
     with pytest.raises(LaunchError, match=expected.replace("(", r"\(").replace("[", r"\[")):

@@ -20,24 +20,38 @@ import math
 from collections import deque
 from typing import Any
 
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.controller import Controller, ControllerError
 from launcher.control.controllers import odometry
 
 
+def limit_parameters(axis: str, what: str) -> tuple[Param, ...]:
+    """The limits of one axis, as ros2_controllers' speed limiter reads them."""
+    return (
+        Param(f"{axis}.has_velocity_limits", "bool", False, f"limit the {what} velocity"),
+        Param(f"{axis}.has_acceleration_limits", "bool", False,
+              f"limit the {what} acceleration"),
+        Param(f"{axis}.has_jerk_limits", "bool", False, "accepted; jerk is not limited"),
+        Param(f"{axis}.max_velocity", "double", math.inf, f"the largest {what} velocity"),
+        Param(f"{axis}.min_velocity", "double", math.nan,
+              f"the smallest {what} velocity (NaN: -max_velocity)"),
+        Param(f"{axis}.max_acceleration", "double", math.inf,
+              f"the largest {what} acceleration"),
+        Param(f"{axis}.min_acceleration", "double", math.nan,
+              f"the smallest {what} acceleration (NaN: -max_acceleration)"),
+        Param(f"{axis}.max_jerk", "double", math.inf, "accepted; jerk is not limited"),
+        Param(f"{axis}.min_jerk", "double", math.nan, "accepted; jerk is not limited"),
+    )
+
+
 class Limit:
-    def __init__(self, controller: Controller, axis: str) -> None:
-        p = controller.param
-
-        def number(name: str, default: float) -> float:
-            value = p(f"{axis}.{name}", default, (int, float))
-            return float(value) if value is not None else default
-
-        self.velocity = bool(p(f"{axis}.has_velocity_limits", False, bool))
-        self.acceleration = bool(p(f"{axis}.has_acceleration_limits", False, bool))
-        self.max_v = number("max_velocity", math.inf)
-        self.min_v = number("min_velocity", math.nan)
-        self.max_a = number("max_acceleration", math.inf)
-        self.min_a = number("min_acceleration", math.nan)
+    def __init__(self, values: dict[str, Any], axis: str) -> None:
+        self.velocity = values[f"{axis}.has_velocity_limits"]
+        self.acceleration = values[f"{axis}.has_acceleration_limits"]
+        self.max_v = values[f"{axis}.max_velocity"]
+        self.min_v = values[f"{axis}.min_velocity"]
+        self.max_a = values[f"{axis}.max_acceleration"]
+        self.min_a = values[f"{axis}.min_acceleration"]
         if math.isnan(self.min_v):
             self.min_v = -self.max_v
         if math.isnan(self.min_a):
@@ -53,10 +67,47 @@ class Limit:
 
 
 class DiffDriveController(Controller):
+    PARAMETERS = (
+        Param("left_wheel_names", "string_array", REQUIRED, "the left wheels' joints",
+              non_empty=True),
+        Param("right_wheel_names", "string_array", REQUIRED, "the right wheels' joints",
+              non_empty=True),
+        Param("position_feedback", "bool", True,
+              "odometry from the wheels' positions (false: their velocities)"),
+        Param("wheel_separation", "double", REQUIRED,
+              "the distance between the left and right wheels, m", minimum=0.0),
+        Param("wheel_radius", "double", REQUIRED, "the wheels' radius, m", minimum=0.0),
+        Param("wheels_per_side", "int", 0, "accepted: every named wheel is driven"),
+        Param("wheel_separation_multiplier", "double", 1.0, "corrects wheel_separation"),
+        Param("left_wheel_radius_multiplier", "double", 1.0, "corrects the left radius"),
+        Param("right_wheel_radius_multiplier", "double", 1.0, "corrects the right radius"),
+        Param("open_loop", "bool", False, "odometry from the commands, not the wheels"),
+        Param("enable_odom_tf", "bool", True, "publish odom -> base on /tf"),
+        Param("cmd_vel_timeout", "double", 0.5,
+              "s without a command before the robot stops", minimum=0.0),
+        Param("publish_rate", "double", 50.0, "odometry messages a second (0: every update)",
+              minimum=0.0),
+        Param("tf_frame_prefix_enable", "bool", True, "prefix the frames"),
+        Param("tf_frame_prefix", "string", "", "the prefix (empty: the node's namespace)"),
+        Param("odom_frame_id", "string", "odom", "the odometry's frame"),
+        Param("base_frame_id", "string", "base_link", "the robot's frame"),
+        Param("pose_covariance_diagonal", "double_array", [0.0] * 6,
+              "the pose covariance's diagonal (x, y, z, roll, pitch, yaw)"),
+        Param("twist_covariance_diagonal", "double_array", [0.0] * 6,
+              "the twist covariance's diagonal"),
+        Param("velocity_rolling_window_size", "int", 10,
+              "wheel velocities averaged over this many updates", minimum=1),
+        Param("use_stamped_vel", "bool", True,
+              "~/cmd_vel is a TwistStamped (false: a Twist)"),
+        *limit_parameters("linear.x", "linear"),
+        *limit_parameters("angular.z", "angular"),
+    )
+
     def on_init(self) -> None:
-        self.left = self.names("left_wheel_names")
-        self.right = self.names("right_wheel_names")
-        self.position_feedback = bool(self.param("position_feedback", True, bool))
+        values = self.read_parameters("left_wheel_names", "right_wheel_names",
+                                      "position_feedback")
+        self.left, self.right = values["left_wheel_names"], values["right_wheel_names"]
+        self.position_feedback = values["position_feedback"]
 
     def command_interfaces(self) -> list[str]:
         return [f"{w}/velocity" for w in self.left + self.right]
@@ -66,34 +117,30 @@ class DiffDriveController(Controller):
         return [f"{w}/{kind}" for w in self.left + self.right]
 
     def on_configure(self) -> None:
-        p = self.param
-        separation = float(p("wheel_separation", kind=(int, float), required=True))
-        radius = float(p("wheel_radius", kind=(int, float), required=True))
+        p = self.read_parameters()
+        separation, radius = p["wheel_separation"], p["wheel_radius"]
         if separation <= 0 or radius <= 0:
             raise ControllerError(self._at(f"controller '{self.name}': wheel_separation and "
                                            f"wheel_radius must be positive"))
-        self.separation = separation * float(p("wheel_separation_multiplier", 1.0, (int, float)))
-        self.left_radius = radius * float(p("left_wheel_radius_multiplier", 1.0, (int, float)))
-        self.right_radius = radius * float(p("right_wheel_radius_multiplier", 1.0,
-                                             (int, float)))
-        self.open_loop = bool(p("open_loop", False, bool))
-        self.tf_enabled = bool(p("enable_odom_tf", True, bool))
-        self.timeout = float(p("cmd_vel_timeout", 0.5, (int, float)))
-        rate = float(p("publish_rate", 50.0, (int, float)))
+        self.separation = separation * p["wheel_separation_multiplier"]
+        self.left_radius = radius * p["left_wheel_radius_multiplier"]
+        self.right_radius = radius * p["right_wheel_radius_multiplier"]
+        self.open_loop, self.tf_enabled = p["open_loop"], p["enable_odom_tf"]
+        self.timeout = p["cmd_vel_timeout"]
+        rate = p["publish_rate"]
         self.publish_period = 1.0 / rate if rate > 0 else 0.0
         prefix = ""
-        if bool(p("tf_frame_prefix_enable", True, bool)):
-            prefix = str(p("tf_frame_prefix", "", str)) or self.node.namespace.strip("/")
+        if p["tf_frame_prefix_enable"]:
+            prefix = p["tf_frame_prefix"] or self.node.namespace.strip("/")
             prefix = f"{prefix.strip('/')}/" if prefix.strip("/") else ""
-        self.odom_frame = prefix + str(p("odom_frame_id", "odom", str))
-        self.base_frame = prefix + str(p("base_frame_id", "base_link", str))
-        self.pose_covariance = [float(v) for v in p("pose_covariance_diagonal", [0.0] * 6, list)]
-        self.twist_covariance = [float(v) for v in p("twist_covariance_diagonal", [0.0] * 6,
-                                                     list)]
-        self.window = max(int(p("velocity_rolling_window_size", 10, int)), 1)
-        self.linear_limit = Limit(self, "linear.x")
-        self.angular_limit = Limit(self, "angular.z")
-        stamped = bool(p("use_stamped_vel", True, bool))
+        self.odom_frame = prefix + p["odom_frame_id"]
+        self.base_frame = prefix + p["base_frame_id"]
+        self.pose_covariance = p["pose_covariance_diagonal"]
+        self.twist_covariance = p["twist_covariance_diagonal"]
+        self.window = p["velocity_rolling_window_size"]
+        self.linear_limit = Limit(p, "linear.x")
+        self.angular_limit = Limit(p, "angular.z")
+        stamped = p["use_stamped_vel"]
         node = self.node
         self.cmd_sub = node.create_subscription(
             "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist",

@@ -10,16 +10,23 @@ from __future__ import annotations
 
 from typing import Any
 
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.controller import Controller
 
 
 class ForwardCommandController(Controller):
     interface = ""  # fixed by the JointGroup types
+    PARAMETERS = (
+        Param("joints", "string_array", REQUIRED, "the commanded joints, in the commands' order",
+              non_empty=True),
+        Param("interface_name", "string", REQUIRED,
+              "their command interface (the JointGroup types fix it)"),
+    )
 
     def on_init(self) -> None:
-        self.joints = self.names("joints")
-        self.interface_name = self.interface or str(self.param("interface_name", kind=str,
-                                                               required=True))
+        p = self.read_parameters("joints", *(() if self.interface else ("interface_name",)))
+        self.joints = p["joints"]
+        self.interface_name = self.interface or p["interface_name"]
 
     def command_interfaces(self) -> list[str]:
         return [f"{j}/{self.interface_name}" for j in self.joints]

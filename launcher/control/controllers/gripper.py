@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.action_server import ActionServer, Goal
 from launcher.control.controller import Controller
 
@@ -25,9 +26,23 @@ from launcher.control.controller import Controller
 class GripperActionController(Controller):
     action_type = "control_msgs/action/GripperCommand"
     command_kind = "position"
+    PARAMETERS = (
+        Param("joint", "string", REQUIRED, "the commanded joint"),
+        Param("action_monitor_rate", "double", 20.0, "goal checks a second", minimum=1e-3),
+        Param("goal_tolerance", "double", 0.01, "how near the command a goal succeeds",
+              minimum=0.0),
+        Param("allow_stalling", "bool", False, "a stalled gripper succeeds (false: aborts)"),
+        Param("stall_velocity_threshold", "double", 0.001,
+              "below this speed the gripper is stopped", minimum=0.0),
+        Param("stall_timeout", "double", 1.0, "s stopped short before it is stalled",
+              minimum=0.0),
+        Param("gains.{joint}.p", "double", 0.0, "the effort type's PID: proportional"),
+        Param("gains.{joint}.i", "double", 0.0, "integral"),
+        Param("gains.{joint}.d", "double", 0.0, "derivative"),
+    )
 
     def on_init(self) -> None:
-        self.joint = str(self.param("joint", kind=str, required=True))
+        self.joint = self.read_parameters("joint")["joint"]
 
     def command_interfaces(self) -> list[str]:
         return [f"{self.joint}/{self.command_kind}"]
@@ -36,15 +51,12 @@ class GripperActionController(Controller):
         return [f"{self.joint}/position", f"{self.joint}/velocity"]
 
     def on_configure(self) -> None:
-        p = self.param
-        self.monitor_period = 1.0 / max(float(p("action_monitor_rate", 20.0, (int, float))),
-                                        1e-3)
-        self.tolerance = float(p("goal_tolerance", 0.01, (int, float)))
-        self.allow_stalling = bool(p("allow_stalling", False, bool))
-        self.stall_speed = float(p("stall_velocity_threshold", 0.001, (int, float)))
-        self.stall_timeout = float(p("stall_timeout", 1.0, (int, float)))
-        self.gains = tuple(float(p(f"gains.{self.joint}.{k}", 0.0, (int, float)))
-                           for k in "pid")
+        p = self.read_parameters()
+        self.monitor_period = 1.0 / p["action_monitor_rate"]
+        self.tolerance, self.allow_stalling = p["goal_tolerance"], p["allow_stalling"]
+        self.stall_speed = p["stall_velocity_threshold"]
+        self.stall_timeout = p["stall_timeout"]
+        self.gains = tuple(p[f"gains.{self.joint}.{k}"] for k in "pid")
         self.now = 0.0
         self.action = ActionServer(self.node, self.action_type, "~/gripper_cmd", self.accept,
                                    self.on_goal, self.on_cancel, lambda: self.stamp(self.now))
@@ -95,12 +107,11 @@ class GripperActionController(Controller):
         self.max_effort = effort if effort > 0 else math.inf
         self.goal, self.moving_since = goal, self.now
 
-    def on_cancel(self, goal: Goal) -> bool:
+    def on_cancel(self, goal: Goal) -> None:
         if goal is self.goal:
             self.target = self.position.value
             goal.canceled(self._result(False, False))
             self.goal = None
-        return True
 
     def _result(self, stalled: bool, reached: bool) -> Any:
         if self.action_type.endswith("ParallelGripperCommand"):

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from launcher.bus.declarations import Param
 from launcher.bus.wire import JointStateLayout, split_time
 from launcher.control.controller import Controller, ControllerError
 
@@ -21,9 +22,18 @@ NAN = float("nan")
 
 
 class JointStateBroadcaster(Controller):
+    PARAMETERS = (
+        Param("joints", "string_array", [], "only these joints (with interfaces)"),
+        Param("interfaces", "string_array", [], "only these interfaces (with joints)"),
+        Param("use_local_topics", "bool", False, "publish under ~/ (the controller's name)"),
+        *(Param(f"map_interface_to_joint_state.{kind}", "string", kind,
+                f"the interface published as the JointState's {kind}") for kind in KINDS),
+        Param("extra_joints", "string_array", [], "joints published at 0 besides"),
+    )
+
     def on_init(self) -> None:
-        self.joints = self.names("joints", required=False)
-        self.interfaces = self.names("interfaces", required=False)
+        p = self.read_parameters("joints", "interfaces")
+        self.joints, self.interfaces = p["joints"], p["interfaces"]
         if bool(self.joints) != bool(self.interfaces):
             raise ControllerError(self._at(
                 f"controller '{self.name}': 'joints' and 'interfaces' must be given together "
@@ -35,11 +45,10 @@ class JointStateBroadcaster(Controller):
         return None
 
     def on_configure(self) -> None:
-        local = bool(self.param("use_local_topics", False, bool))
-        prefix = "~/" if local else ""
-        self.mapping = {k: str(self.param(f"map_interface_to_joint_state.{k}", k, str))
-                        for k in KINDS}
-        self.extra = self.names("extra_joints", required=False)
+        p = self.read_parameters()
+        prefix = "~/" if p["use_local_topics"] else ""
+        self.mapping = {k: p[f"map_interface_to_joint_state.{k}"] for k in KINDS}
+        self.extra = p["extra_joints"]
         self.joint_pub = self.node.create_publisher("sensor_msgs/msg/JointState",
                                                     f"{prefix}joint_states", 10)
         self.dynamic_pub = self.node.create_publisher("control_msgs/msg/DynamicJointState",

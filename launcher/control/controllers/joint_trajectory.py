@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.action_server import ActionServer, Goal
 from launcher.control.controller import Controller, ControllerError
 from launcher.control.controllers.trajectory import Point, Trajectory, validate
@@ -31,11 +32,41 @@ ALLOWED = {"position", "velocity", "acceleration", "effort"}
 
 
 class JointTrajectoryController(Controller):
+    PARAMETERS = (
+        Param("joints", "string_array", REQUIRED, "the joints the trajectories name",
+              non_empty=True),
+        Param("command_joints", "string_array", [],
+              "the joints commanded, in the order of 'joints' (empty: the same)"),
+        Param("command_interfaces", "string_array", REQUIRED,
+              "what is commanded: position, velocity, acceleration, effort", non_empty=True),
+        Param("state_interfaces", "string_array", REQUIRED,
+              "what is read: position, and velocity, acceleration", non_empty=True),
+        Param("allow_partial_joints_goal", "bool", False, "a goal may name some joints"),
+        Param("interpolation_method", "string", "splines", "splines, or none"),
+        Param("open_loop_control", "bool", False, "follow the plan, not the state"),
+        Param("action_monitor_rate", "double", 20.0, "goal checks a second", minimum=1e-3),
+        Param("constraints.stopped_velocity_tolerance", "double", 0.01,
+              "below this speed the goal's joints have stopped", minimum=0.0),
+        Param("constraints.goal_time", "double", 0.0,
+              "s after the end a goal may take to be reached (0: any)", minimum=0.0),
+        Param("constraints.{joints}.trajectory", "double", 0.0,
+              "the largest error on the way (0: any)", minimum=0.0),
+        Param("constraints.{joints}.goal", "double", 0.0,
+              "the largest error at the end (0: any)", minimum=0.0),
+        Param("gains.{joints}.p", "double", 0.0, "velocity or effort commands' PID: "
+                                                 "proportional"),
+        Param("gains.{joints}.i", "double", 0.0, "integral"),
+        Param("gains.{joints}.d", "double", 0.0, "derivative"),
+        Param("gains.{joints}.ff_velocity_scale", "double", 1.0,
+              "the planned velocity's share of the command"),
+    )
+
     def on_init(self) -> None:
-        self.joints = self.names("joints")
-        self.command_joints = self.names("command_joints", required=False) or self.joints
-        self.command_kinds = self.names("command_interfaces")
-        self.state_kinds = self.names("state_interfaces")
+        p = self.read_parameters("joints", "command_joints", "command_interfaces",
+                                 "state_interfaces")
+        self.joints = p["joints"]
+        self.command_joints = p["command_joints"] or self.joints
+        self.command_kinds, self.state_kinds = p["command_interfaces"], p["state_interfaces"]
         for kinds, what in ((self.command_kinds, "command_interfaces"),
                             (self.state_kinds, "state_interfaces")):
             wrong = [k for k in kinds if k not in ALLOWED]
@@ -57,22 +88,16 @@ class JointTrajectoryController(Controller):
         return [f"{j}/{k}" for k in self.state_kinds for j in self.joints]
 
     def on_configure(self) -> None:
-        p = self.param
-        self.partial = bool(p("allow_partial_joints_goal", False, bool))
-        self.interpolate = str(p("interpolation_method", "splines", str)) != "none"
-        self.open_loop = bool(p("open_loop_control", False, bool))
-        self.monitor_period = 1.0 / max(float(p("action_monitor_rate", 20.0, (int, float))), 1e-3)
-        self.stopped_tolerance = float(p("constraints.stopped_velocity_tolerance", 0.01,
-                                         (int, float)))
-        self.goal_time = float(p("constraints.goal_time", 0.0, (int, float)))
-        self.path_tol = [float(p(f"constraints.{j}.trajectory", 0.0, (int, float)))
-                         for j in self.joints]
-        self.goal_tol = [float(p(f"constraints.{j}.goal", 0.0, (int, float)))
-                         for j in self.joints]
-        self.gains = [(float(p(f"gains.{j}.p", 0.0, (int, float))),
-                       float(p(f"gains.{j}.i", 0.0, (int, float))),
-                       float(p(f"gains.{j}.d", 0.0, (int, float))),
-                       float(p(f"gains.{j}.ff_velocity_scale", 1.0, (int, float))))
+        p = self.read_parameters()
+        self.partial = p["allow_partial_joints_goal"]
+        self.interpolate = p["interpolation_method"] != "none"
+        self.open_loop = p["open_loop_control"]
+        self.monitor_period = 1.0 / p["action_monitor_rate"]
+        self.stopped_tolerance = p["constraints.stopped_velocity_tolerance"]
+        self.goal_time = p["constraints.goal_time"]
+        self.path_tol = [p[f"constraints.{j}.trajectory"] for j in self.joints]
+        self.goal_tol = [p[f"constraints.{j}.goal"] for j in self.joints]
+        self.gains = [tuple(p[f"gains.{j}.{k}"] for k in ("p", "i", "d", "ff_velocity_scale"))
                       for j in self.joints]
         node = self.node
         self.subscription = node.create_subscription("trajectory_msgs/msg/JointTrajectory",
@@ -184,13 +209,12 @@ class JointTrajectoryController(Controller):
         self.goal_overrides = self._tolerances(request)
         self._start(request.trajectory, names, points)
 
-    def on_cancel(self, goal: Goal) -> bool:
+    def on_cancel(self, goal: Goal) -> None:
         if goal is self.goal:
             self.trajectory = None
             self.hold = [h.value for h in self.position]
             goal.canceled(self._result(SUCCESSFUL, "canceled"))
             self.goal = None
-        return True
 
     def _tolerances(self, request: Any) -> tuple[list[float], list[float], float]:
         path, goal = list(self.path_tol), list(self.goal_tol)

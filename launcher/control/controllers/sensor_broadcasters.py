@@ -8,6 +8,7 @@ a sensor name (a missing one reads 0)."""
 
 from __future__ import annotations
 
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.controller import Controller, ControllerError
 
 IMU_INTERFACES = ("orientation.x", "orientation.y", "orientation.z", "orientation.w",
@@ -17,16 +18,24 @@ FT_INTERFACES = ("force.x", "force.y", "force.z", "torque.x", "torque.y", "torqu
 
 
 class IMUSensorBroadcaster(Controller):
+    PARAMETERS = (
+        Param("sensor_name", "string", REQUIRED, "the <sensor> of the ros2_control block"),
+        Param("frame_id", "string", REQUIRED, "the messages' frame"),
+        *(Param(f"static_covariance_{part}", "double_array", [0.0] * 9,
+                f"the {part.replace('_', ' ')} covariance (9 numbers)")
+          for part in ("orientation", "angular_velocity", "linear_acceleration")),
+    )
+
     def on_init(self) -> None:
-        self.sensor = str(self.param("sensor_name", kind=str, required=True))
-        self.frame_id = str(self.param("frame_id", kind=str, required=True))
+        p = self.read_parameters("sensor_name", "frame_id")
+        self.sensor, self.frame_id = p["sensor_name"], p["frame_id"]
 
     def state_interfaces(self) -> list[str]:
         return [f"{self.sensor}/{i}" for i in IMU_INTERFACES]
 
     def on_configure(self) -> None:
-        self.covariances = [[float(v) for v in self.param(f"static_covariance_{part}",
-                                                          [0.0] * 9, list)]
+        p = self.read_parameters()
+        self.covariances = [p[f"static_covariance_{part}"]
                             for part in ("orientation", "angular_velocity",
                                          "linear_acceleration")]
         self.publisher = self.node.create_publisher("sensor_msgs/msg/Imu", "~/imu", 10)
@@ -53,10 +62,18 @@ class IMUSensorBroadcaster(Controller):
 
 
 class ForceTorqueSensorBroadcaster(Controller):
+    PARAMETERS = (
+        Param("sensor_name", "string", "", "the <sensor> of the ros2_control block"),
+        Param("frame_id", "string", REQUIRED, "the messages' frame"),
+        *(Param(f"interface_names.{i}", "string", "",
+                f"the state interface read as {i}, without a sensor_name")
+          for i in FT_INTERFACES),
+    )
+
     def on_init(self) -> None:
-        self.sensor = str(self.param("sensor_name", "", str))
-        self.frame_id = str(self.param("frame_id", kind=str, required=True))
-        named = {i: str(self.param(f"interface_names.{i}", "", str)) for i in FT_INTERFACES}
+        p = self.read_parameters()
+        self.sensor, self.frame_id = p["sensor_name"], p["frame_id"]
+        named = {i: p[f"interface_names.{i}"] for i in FT_INTERFACES}
         if self.sensor:
             self.names = [f"{self.sensor}/{i}" for i in FT_INTERFACES]
         elif any(named.values()):

@@ -22,8 +22,17 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.controller import Controller, ControllerError
 from launcher.control.controllers import odometry
+
+# what both read
+COMMON = (
+    Param("odom_frame_id", "string", "odom", "the odometry's frame"),
+    Param("base_frame_id", "string", "base_link", "the robot's frame"),
+    Param("enable_odom_tf", "bool", True, "publish odom -> base"),
+    Param("use_stamped_vel", "bool", True, "the command is a TwistStamped (false: a Twist)"),
+)
 
 
 class _Steered(Controller):
@@ -32,13 +41,11 @@ class _Steered(Controller):
     command_topic = "~/cmd_vel"
     odom_topic, tf_topic = "~/odom", "/tf"
 
-    def _common(self, timeout: float) -> None:
-        p = self.param
-        self.odom_frame = str(p("odom_frame_id", "odom", str))
-        self.base_frame = str(p("base_frame_id", "base_link", str))
-        self.tf_enabled = bool(p("enable_odom_tf", True, bool))
+    def _common(self, p: dict[str, Any], timeout: float) -> None:
+        self.odom_frame, self.base_frame = p["odom_frame_id"], p["base_frame_id"]
+        self.tf_enabled = p["enable_odom_tf"]
         self.timeout = timeout
-        stamped = bool(p("use_stamped_vel", True, bool))
+        stamped = p["use_stamped_vel"]
         self.cmd_sub = self.node.create_subscription(
             "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist",
             self.command_topic, (lambda m: self._take(m.twist)) if stamped else self._take, 10)
@@ -81,9 +88,22 @@ class _Steered(Controller):
 
 
 class TricycleController(_Steered):
+    PARAMETERS = (
+        Param("traction_joint_name", "string", REQUIRED, "the driven wheel's joint (velocity)"),
+        Param("steering_joint_name", "string", REQUIRED, "the steering joint (position)"),
+        Param("wheel_radius", "double", REQUIRED, "the driven wheel's radius, m"),
+        Param("wheelbase", "double", REQUIRED, "from the steered wheel to the rear axle, m"),
+        Param("traction.max_velocity", "double", math.inf, "the wheel's largest speed, rad/s"),
+        Param("steering.max_position", "double", math.pi / 2,
+              "the largest steering angle, rad"),
+        Param("cmd_vel_timeout", "double", 500.0,
+              "ms without a command before the robot stops", minimum=0.0),
+        *COMMON,
+    )
+
     def on_init(self) -> None:
-        self.traction = str(self.param("traction_joint_name", kind=str, required=True))
-        self.steering = str(self.param("steering_joint_name", kind=str, required=True))
+        p = self.read_parameters("traction_joint_name", "steering_joint_name")
+        self.traction, self.steering = p["traction_joint_name"], p["steering_joint_name"]
 
     def command_interfaces(self) -> list[str]:
         return [f"{self.traction}/velocity", f"{self.steering}/position"]
@@ -92,15 +112,14 @@ class TricycleController(_Steered):
         return [f"{self.traction}/velocity", f"{self.steering}/position"]
 
     def on_configure(self) -> None:
-        p = self.param
-        self.radius = float(p("wheel_radius", kind=(int, float), required=True))
-        self.wheelbase = float(p("wheelbase", kind=(int, float), required=True))
+        p = self.read_parameters()
+        self.radius, self.wheelbase = p["wheel_radius"], p["wheelbase"]
         if self.radius <= 0 or self.wheelbase <= 0:
             raise ControllerError(self._at(f"controller '{self.name}': wheel_radius and "
                                            f"wheelbase must be positive"))
-        self.max_speed = float(p("traction.max_velocity", math.inf, (int, float)))
-        self.max_angle = float(p("steering.max_position", math.pi / 2, (int, float)))
-        self._common(float(p("cmd_vel_timeout", 500, (int, float))) / 1000.0)
+        self.max_speed = p["traction.max_velocity"]
+        self.max_angle = p["steering.max_position"]
+        self._common(p, p["cmd_vel_timeout"] / 1000.0)
 
     def on_activate(self) -> None:
         self._reset()
@@ -130,13 +149,32 @@ class AckermannSteeringController(_Steered):
     command_topic = "~/reference"
     odom_topic, tf_topic = "~/odometry", "~/tf_odometry"
 
+    PARAMETERS = (
+        Param("rear_wheels_names", "string_array", REQUIRED,
+              "the rear wheels' joints, left then right (velocity)", non_empty=True),
+        Param("front_wheels_names", "string_array", REQUIRED,
+              "the front wheels' joints, left then right (position)", non_empty=True),
+        Param("position_feedback", "bool", False,
+              "odometry from the rear wheels' positions (false: their velocities)"),
+        Param("wheelbase", "double", REQUIRED, "from the front to the rear axle, m"),
+        Param("front_wheel_track", "double", REQUIRED, "between the front wheels, m"),
+        Param("rear_wheel_track", "double", REQUIRED, "between the rear wheels, m"),
+        Param("front_wheels_radius", "double", 0.0, "accepted: the front wheels are steered"),
+        Param("rear_wheels_radius", "double", REQUIRED, "the rear wheels' radius, m"),
+        Param("open_loop", "bool", False, "odometry from the commands, not the wheels"),
+        Param("reference_timeout", "double", 1.0,
+              "s without a command before the robot stops", minimum=0.0),
+        *COMMON,
+    )
+
     def on_init(self) -> None:
-        self.rear = self.names("rear_wheels_names")
-        self.front = self.names("front_wheels_names")
+        p = self.read_parameters("rear_wheels_names", "front_wheels_names",
+                                 "position_feedback")
+        self.rear, self.front = p["rear_wheels_names"], p["front_wheels_names"]
         if len(self.rear) != 2 or len(self.front) != 2:
             raise ControllerError(self._at(f"controller '{self.name}': an Ackermann base has "
                                            f"two rear and two front wheels (left, right)"))
-        self.position_feedback = bool(self.param("position_feedback", False, bool))
+        self.position_feedback = p["position_feedback"]
 
     def command_interfaces(self) -> list[str]:
         return [f"{w}/velocity" for w in self.rear] + [f"{w}/position" for w in self.front]
@@ -146,13 +184,11 @@ class AckermannSteeringController(_Steered):
         return [f"{w}/{kind}" for w in self.rear] + [f"{w}/position" for w in self.front]
 
     def on_configure(self) -> None:
-        p = self.param
-        self.wheelbase = float(p("wheelbase", kind=(int, float), required=True))
-        self.front_track = float(p("front_wheel_track", kind=(int, float), required=True))
-        self.rear_track = float(p("rear_wheel_track", kind=(int, float), required=True))
-        self.rear_radius = float(p("rear_wheels_radius", kind=(int, float), required=True))
-        self.open_loop = bool(p("open_loop", False, bool))
-        self._common(float(p("reference_timeout", 1.0, (int, float))))
+        p = self.read_parameters()
+        self.wheelbase, self.rear_radius = p["wheelbase"], p["rear_wheels_radius"]
+        self.front_track, self.rear_track = p["front_wheel_track"], p["rear_wheel_track"]
+        self.open_loop = p["open_loop"]
+        self._common(p, p["reference_timeout"])
 
     def on_activate(self) -> None:
         self._reset()

@@ -15,7 +15,8 @@ from launcher.errors import LaunchError, reported
 
 if TYPE_CHECKING:
     from launcher.nodes.foxglove.assets import Assets
-    from launcher.nodes.foxglove.bridge import Bridge, Settings
+    from launcher.nodes.foxglove.bridge import Bridge
+    from launcher.nodes.foxglove.settings import Settings
 
 NAME = "foxglove_bridge"
 
@@ -37,7 +38,8 @@ def _run() -> int:
 
     from launcher.bus.node import Node
     from launcher.nodes.foxglove.assets import Assets
-    from launcher.nodes.foxglove.bridge import SYNC_PERIOD, Bridge, Settings
+    from launcher.nodes.foxglove.bridge import SYNC_PERIOD, Bridge
+    from launcher.nodes.foxglove.settings import Settings
 
     node = Node(NAME)
     try:
@@ -95,7 +97,7 @@ def _token_wanted() -> bool:
 def _server_options(bridge: Bridge, settings: Settings, assets: Assets) -> dict[str, Any]:
     from foxglove.websocket import Capability
 
-    from launcher.nodes.foxglove.bridge import listener
+    from launcher.nodes.foxglove.listener import Listener
 
     wanted = settings.capabilities
     capabilities = [capability for name, capability in (
@@ -104,7 +106,7 @@ def _server_options(bridge: Bridge, settings: Settings, assets: Assets) -> dict[
         if name in wanted]
     if settings.use_sim_time:
         capabilities.append(Capability.Time)
-    return {"name": NAME, "capabilities": capabilities, "server_listener": listener(bridge),
+    return {"name": NAME, "capabilities": capabilities, "server_listener": Listener(bridge),
             "supported_encodings": ["cdr"],
             "asset_handler": assets.fetch if "assets" in wanted else None,
             "message_backlog_size": settings.backlog}

@@ -9,9 +9,9 @@ serves it: a node like any other, never in the sim.
 - clientPublish: a client's advertised channel (cdr) becomes a publisher; each message must
   decode as its type, else it is dropped with a warning;
 - services (`service_whitelist`) are the SDK's services, their CDR passed both ways;
-- parameters of every node (`param_whitelist`), `node.name` as foxglove_bridge names them,
-  got, set, and subscribed to (a change is sent at the next look at the graph, each second);
+- parameters of every node (`param_whitelist`): parameters.py;
 - time from /clock under use_sim_time; the connection graph; assets (assets.py).
+Its own parameters are settings.py's; the SDK's events reach it through listener.py.
 Each client's queue is the SDK's (bounded: a slow client loses frames, never slows the bus).
 """
 
@@ -20,7 +20,6 @@ from __future__ import annotations
 import re
 import threading
 import time
-from collections.abc import Callable
 from typing import Any
 
 from launcher.bus import graph, keys, names
@@ -28,64 +27,10 @@ from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.types import normalize, registry
 from launcher.errors import LaunchError
+from launcher.nodes.foxglove.parameters import SERVICE_WAIT, NodeParameters
+from launcher.nodes.foxglove.settings import Settings, allowed
 
 SYNC_PERIOD = 1.0  # s between looks at the graph's topics and services
-SERVICE_WAIT = 5.0  # s a service call waits for its server
-PARAMETER_WAIT = 1.0  # s a node's parameter services are waited for
-CAPABILITIES = ("clientPublish", "parameters", "parametersSubscribe", "services",
-                "connectionGraph", "assets")
-
-
-class Settings:
-    """foxglove_bridge's parameters, as a ROS user sets them."""
-
-    def __init__(self, node: Node) -> None:
-        def value(name: str, default: Any) -> Any:
-            return node.declare_parameter(name, default).value
-
-        self.port = int(value("port", 8765))
-        self.address = str(value("address", "127.0.0.1"))
-        self.topics = _patterns(value("topic_whitelist", [".*"]), "topic_whitelist")
-        self.services = _patterns(value("service_whitelist", [".*"]), "service_whitelist")
-        self.params = _patterns(value("param_whitelist", [".*"]), "param_whitelist")
-        self.client_topics = _patterns(value("client_topic_whitelist", [".*"]),
-                                       "client_topic_whitelist")
-        self.send_buffer_limit = int(value("send_buffer_limit", 10_000_000))
-        self.use_sim_time = bool(value("use_sim_time", False))
-        self.capabilities = [str(c) for c in value("capabilities", list(CAPABILITIES))]
-        self.include_hidden = bool(value("include_hidden", False))
-        self.max_qos_depth = int(value("max_qos_depth", 25))
-        from launcher.nodes.foxglove.assets import DEFAULT_ALLOWLIST
-
-        self.asset_allowlist = [str(p) for p in value("asset_uri_allowlist",
-                                                      list(DEFAULT_ALLOWLIST))]
-        self.token = bool(value("token", True))
-        unknown = sorted(set(self.capabilities) - set(CAPABILITIES))
-        if unknown:
-            raise LaunchError(f"foxglove_bridge: unknown capabilities {unknown}; expected "
-                              f"some of {list(CAPABILITIES)}")
-        if not 0 < self.port < 65536:
-            raise LaunchError(f"foxglove_bridge: port {self.port}: expected 1 to 65535")
-
-    @property
-    def backlog(self) -> int:
-        """The SDK bounds each client's queue in messages, not bytes: send_buffer_limit read
-        as that many 512 KiB messages (10 MB: 19, about 10 MB of camera images), from 8 to
-        1024."""
-        return max(8, min(1024, self.send_buffer_limit // (512 * 1024)))
-
-
-def _patterns(values: Any, name: str) -> list[re.Pattern[str]]:
-    items = [values] if isinstance(values, str) else list(values)
-    try:
-        return [re.compile(str(item)) for item in items]
-    except re.error as exc:
-        raise LaunchError(f"foxglove_bridge: {name}: '{exc.pattern}' is not a regular "
-                          f"expression: {exc}") from None
-
-
-def _allowed(name: str, patterns: list[re.Pattern[str]]) -> bool:
-    return any(p.fullmatch(name) for p in patterns)
 
 
 class Bridge:
@@ -97,7 +42,7 @@ class Bridge:
 
         self._foxglove = foxglove
         self.node, self.settings = node, settings
-        self.server: Any = None
+        self._server: Any = None
         self._lock = threading.RLock()
         self._channels: dict[str, tuple[Any, str]] = {}  # topic -> (channel, type)
         self._watched: dict[str, tuple[Any, int]] = {}  # topic -> (bus subscription, count)
@@ -107,8 +52,16 @@ class Bridge:
         self._warned: set[str] = set()
         self._graph_watched = False
         self._clock_time = 0
-        self._watched_parameters: dict[str, Any] = {}  # name -> last value sent
-        self._parameters_busy = threading.Lock()
+        self.parameters = NodeParameters(node, settings.params, foxglove, self._warn_once)
+
+    @property
+    def server(self) -> Any:
+        """The SDK's server, once started (its parameters' too)."""
+        return self._server
+
+    @server.setter
+    def server(self, server: Any) -> None:
+        self._server = self.parameters.server = server
 
     # --- the graph --------------------------------------------------------------------
     def sync(self) -> None:
@@ -132,15 +85,14 @@ class Bridge:
                 self._sync_services(services)
         if self._graph_watched and self.server is not None:
             self.server.publish_connection_graph(self._connection_graph(entities))
-        if self._watched_parameters and self.server is not None and \
-                not self._parameters_busy.locked():
+        if self.parameters.wanted:
             # (apart from the node's executor: the bridge's own parameters are read through
             # its services, which that executor answers)
-            threading.Thread(target=self._send_changed_parameters, daemon=True).start()
+            threading.Thread(target=self.parameters.send_changed, daemon=True).start()
 
     def _shown(self, name: str, patterns: list[re.Pattern[str]]) -> bool:
         return (self.settings.include_hidden or not names.hidden(name)) and \
-            _allowed(name, patterns)
+            allowed(name, patterns)
 
     def _schema(self, type_name: str) -> Any:
         try:
@@ -261,7 +213,7 @@ class Bridge:
             self._warn_once(f"encoding {channel.encoding}", f"a client advertised "
                             f"{channel.topic} in '{channel.encoding}': only cdr is taken")
             return
-        if not _allowed(channel.topic, self.settings.client_topics):
+        if not allowed(channel.topic, self.settings.client_topics):
             self._warn_once(f"client topic {channel.topic}", f"a client may not publish "
                             f"{channel.topic} (client_topic_whitelist)")
             return
@@ -307,100 +259,6 @@ class Bridge:
             client = self._clients[name] = self.node.create_client(type_name, name)
         return client.call_raw(bytes(request.payload), SERVICE_WAIT)
 
-    # --- parameters ---------------------------------------------------------------------
-    def get_parameters(self, wanted: list[str]) -> list[Any]:
-        """`node.name` parameters; all of every node when `wanted` is empty."""
-        from launcher.bus import parameters
-
-        found = []
-        for node_name, values in self._node_parameters(wanted).items():
-            for name, value in values.items():
-                full = f"{node_name}.{name}"
-                if _allowed(full, self.settings.params):
-                    found.append(self._foxglove.Parameter(
-                        full, value=parameters.from_message(value)))
-        return found
-
-    def _node_parameters(self, wanted: list[str]) -> dict[str, dict[str, Any]]:
-        by_node: dict[str, list[str] | None] = {}
-        if wanted:
-            for full in wanted:
-                node_name, _, name = full.partition(".")
-                listed = by_node.setdefault(node_name, [])
-                if listed is not None and name:
-                    listed.append(name)
-        else:
-            for entity in graph.nodes(self.node.graph_session()):
-                if not entity.node.startswith("_"):
-                    by_node[entity.node_fqn] = None
-        out: dict[str, dict[str, Any]] = {}
-        for node_name, listed in by_node.items():
-            try:
-                out[node_name] = self._read_node(node_name, listed)
-            except LaunchError:
-                continue  # a node gone, or one that does not answer: left out
-        return out
-
-    def _read_node(self, node_name: str, listed: list[str] | None) -> dict[str, Any]:
-        client = self.node.create_client("rcl_interfaces/srv/ListParameters",
-                                         f"{node_name}/list_parameters")
-        getter = self.node.create_client("rcl_interfaces/srv/GetParameters",
-                                         f"{node_name}/get_parameters")
-        try:
-            if listed is None:
-                answer = client.call(self.node.message(
-                    "rcl_interfaces/srv/ListParameters_Request"), PARAMETER_WAIT)
-                listed = list(answer.result.names)
-            answer = getter.call(self.node.message(
-                "rcl_interfaces/srv/GetParameters_Request", names=listed), PARAMETER_WAIT)
-            return dict(zip(listed, answer.values, strict=False))
-        finally:
-            client.destroy()
-            getter.destroy()
-
-    def set_parameters(self, given: list[Any]) -> list[Any]:
-        from launcher.bus import parameters
-
-        by_node: dict[str, list[Any]] = {}
-        for parameter in given:
-            node_name, _, name = parameter.name.partition(".")
-            if not _allowed(parameter.name, self.settings.params):
-                continue
-            by_node.setdefault(node_name, []).append(self.node.message(
-                "rcl_interfaces/msg/Parameter", name=name,
-                value=parameters.to_message(parameter.get_value())))
-        for node_name, items in by_node.items():
-            setter = self.node.create_client("rcl_interfaces/srv/SetParameters",
-                                             f"{node_name}/set_parameters")
-            try:
-                setter.call(self.node.message("rcl_interfaces/srv/SetParameters_Request",
-                                              parameters=items), SERVICE_WAIT)
-            except LaunchError as exc:
-                self._warn_once(f"set {node_name}", f"parameters of {node_name}: {exc}")
-            finally:
-                setter.destroy()
-        return self.get_parameters([p.name for p in given])
-
-    def watch_parameters(self, names: list[str], on: bool) -> None:
-        """Clients subscribed to these parameters (or left them): their changes are sent
-        at each look at the graph."""
-        for name in names:
-            if on:
-                self._watched_parameters.setdefault(name, None)
-            else:
-                self._watched_parameters.pop(name, None)
-
-    def _send_changed_parameters(self) -> None:
-        with self._parameters_busy:
-            changed = []
-            for parameter in self.get_parameters(list(self._watched_parameters)):
-                value = parameter.get_value()
-                if self._watched_parameters.get(parameter.name) != value:
-                    self._watched_parameters[parameter.name] = value
-                    changed.append(parameter)
-            if changed:
-                self.server.publish_parameter_values(changed)
-
     # --- the rest -----------------------------------------------------------------------
     def watch_graph(self, on: bool) -> None:
         self._graph_watched = on
@@ -409,45 +267,3 @@ class Bridge:
         if key not in self._warned:
             self._warned.add(key)
             self.node.get_logger().warning(text)
-
-
-def listener(bridge: Bridge) -> Any:
-    """The SDK's ServerListener, handing each event to the bridge; an error in one is said
-    and never reaches the SDK (the other clients go on)."""
-    from foxglove.websocket import ServerListener
-
-    def guarded(work: Callable[..., Any], fallback: Any = None) -> Callable[..., Any]:
-        def run(*args: Any) -> Any:
-            try:
-                return work(*args)
-            except Exception as exc:  # noqa: BLE001 - a client's doing: said, not raised
-                bridge.node.get_logger().warning(f"foxglove client: {exc}")
-                return fallback
-        return run
-
-    class Listener(ServerListener):
-        on_subscribe = staticmethod(guarded(lambda client, channel:
-                                            bridge.subscribe(channel.topic)))
-        on_unsubscribe = staticmethod(guarded(lambda client, channel:
-                                              bridge.unsubscribe(channel.topic)))
-        on_client_advertise = staticmethod(guarded(lambda client, channel:
-                                                   bridge.advertise(client.id, channel)))
-        on_client_unadvertise = staticmethod(guarded(lambda client, channel_id:
-                                                     bridge.unadvertise(client.id,
-                                                                        channel_id)))
-        on_message_data = staticmethod(guarded(lambda client, channel_id, data:
-                                               bridge.publish(client.id, channel_id, data)))
-        on_get_parameters = staticmethod(guarded(
-            lambda client, names, request_id=None: bridge.get_parameters(list(names)), []))
-        on_set_parameters = staticmethod(guarded(
-            lambda client, parameters, request_id=None: bridge.set_parameters(
-                list(parameters)), []))
-        on_parameters_subscribe = staticmethod(guarded(
-            lambda names: bridge.watch_parameters(list(names), True)))
-        on_parameters_unsubscribe = staticmethod(guarded(
-            lambda names: bridge.watch_parameters(list(names), False)))
-        on_connection_graph_subscribe = staticmethod(guarded(lambda: bridge.watch_graph(True)))
-        on_connection_graph_unsubscribe = staticmethod(guarded(
-            lambda: bridge.watch_graph(False)))
-
-    return Listener()

@@ -1,0 +1,69 @@
+"""The parameters reference: each controller type launcher provides and each built-in node that
+declares its parameters as data (bus/declarations.py), as `ros2 param describe` tells them."""
+
+from __future__ import annotations
+
+import math
+
+from md_tables import code, table
+
+from launcher.bus.declarations import REQUIRED
+from launcher.control.controllers import TYPES, controller_class
+from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
+
+TITLE = """# Parameters of controllers and nodes
+
+Generated from the declared parameters at each build. A controller reads them
+when it is loaded (its joints and interfaces) and configured (the rest); a value of the wrong
+type or out of its bounds is refused at its line in the parameter file, a missing required one
+at the controller's block. Every parameter is listed by `ros2 param list` with its default, and
+`ros2 param describe` gives its type, description and bounds; a value set on a running
+controller takes effect when it is configured again, as with ros2_controllers. A built-in node
+reads its parameters when it starts. `{joints}` in a
+name stands for each name of the `joints` parameter (`{joint}`: the one joint).
+"""
+
+
+# the built-in nodes that declare theirs: (package/executable, its declarations)
+NODES = {"foxglove_bridge/foxglove_bridge": foxglove_parameters}
+
+
+def page() -> str:
+    parts = [TITLE, "## Controllers\n"]
+    for type_name in sorted(TYPES):
+        parts += [f"### {code(type_name)}\n", _table(controller_class(type_name).PARAMETERS)]
+    parts.append("## Nodes\n")
+    for name, declared in NODES.items():
+        parts += [f"### {code(name)}\n", _table(declared())]
+    return "\n".join(parts)
+
+
+def _table(declared: tuple) -> str:
+    rows = [(code(p.name), p.type, _default(p.default), _bounds(p.minimum, p.maximum),
+             p.description) for p in declared]
+    return table(("parameter", "type", "default", "bounds", "what it is"), rows)
+
+
+def _default(value: object) -> str:
+    if value is REQUIRED:
+        return "required"
+    return code(_yaml(value))
+
+
+def _yaml(value: object) -> str:
+    """As a parameter file writes it."""
+    if isinstance(value, bool):
+        return str(value).lower()
+    if isinstance(value, float) and not math.isfinite(value):
+        return ".nan" if math.isnan(value) else ("-.inf" if value < 0 else ".inf")
+    if isinstance(value, str):
+        return f'"{value}"'
+    if isinstance(value, list):
+        return "[" + ", ".join(_yaml(v) for v in value) + "]"
+    return repr(value)
+
+
+def _bounds(low: float | None, high: float | None) -> str:
+    if low is None and high is None:
+        return ""
+    return f"{'' if low is None else f'{low:g} ≤ '}value{'' if high is None else f' ≤ {high:g}'}"

@@ -1,0 +1,131 @@
+"""A node's parameters declared as data, as ros2_controllers declare theirs with
+generate_parameter_library: name, type, default, description, bounds, read-only. The
+controllers and the built-in nodes declare theirs so (Node.declare reads them).
+
+One reader checks what the parameter files gave against the declaration (one message shape,
+which the node places at the file's line), fills in the defaults (so `ros2 param list` shows
+every one, as a ROS node does) and the node describes each from it (`ros2 param describe`). A name
+may hold a placeholder, `gains.{joints}.p`: one parameter for each name of the list (or text)
+parameter `joints` declared before it, as generate_parameter_library's `__map_joints` keys."""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable
+from typing import Any, NamedTuple
+
+REQUIRED: Any = object()
+PLACEHOLDER = re.compile(r"\{(\w+)\}")
+
+# rcl_interfaces/msg/ParameterType, by the declaration's type names
+TYPES = {"bool": 1, "int": 2, "double": 3, "string": 4, "bool_array": 6, "int_array": 7,
+         "double_array": 8, "string_array": 9}
+_CHECKS: dict[str, Callable[[Any], bool]] = {
+    "bool": lambda v: isinstance(v, bool),
+    "int": lambda v: isinstance(v, int) and not isinstance(v, bool),
+    "double": lambda v: isinstance(v, int | float) and not isinstance(v, bool),
+    "string": lambda v: isinstance(v, str),
+    "string_array": lambda v: isinstance(v, list | tuple) and all(isinstance(x, str) for x in v),
+    "double_array": lambda v: isinstance(v, list | tuple) and
+    all(isinstance(x, int | float) and not isinstance(x, bool) for x in v),
+}
+_EXPECTED = {"bool": "true or false", "int": "an integer", "double": "a number",
+             "string": "text", "string_array": "a list of names",
+             "double_array": "a list of numbers"}
+
+
+class Param(NamedTuple):
+    name: str
+    type: str  # a key of TYPES
+    default: Any = REQUIRED
+    description: str = ""
+    minimum: float | None = None
+    maximum: float | None = None
+    read_only: bool = False  # a set is refused (none is: a set takes effect at configure)
+    non_empty: bool = False  # an array that must name something
+
+    def value_text(self) -> str:
+        """The default as the reference page shows it."""
+        return "required" if self.default is REQUIRED else repr(self.default)
+
+
+class ParameterError(ValueError):
+    """What is wrong with parameter `name`'s value (its node places it and names itself)."""
+
+    def __init__(self, name: str, text: str) -> None:
+        super().__init__(f"parameter '{name}' {text}")
+        self.name = name
+
+
+def expand(declared: tuple[Param, ...], known: dict[str, Any]) -> list[tuple[str, Param]]:
+    """(full name, declaration) of each parameter, placeholders filled from `known` (the
+    values of the parameters they name; a placeholder not known yet is left as it is)."""
+    names = []
+    for param in declared:
+        keys = PLACEHOLDER.findall(param.name)
+        if not keys:
+            names.append((param.name, param))
+            continue
+        filled = [param.name]
+        for key in keys:
+            value = known.get(key)
+            if value is None:
+                break
+            items = [value] if isinstance(value, str) else list(value)
+            filled = [name.replace(f"{{{key}}}", str(item)) for name in filled for item in items]
+        else:
+            names += [(name, param) for name in filled]
+    return names
+
+
+def read(declared: tuple[Param, ...], values: dict[str, Any],
+         only: tuple[str, ...] = ()) -> dict[str, Any]:
+    """The declared parameters' values (those named in `only`, else all), from `values` (the
+    node's), checked and with defaults filled in; ParameterError for the first bad one."""
+    found: dict[str, Any] = {}
+    chosen = tuple(p for p in declared if not only or p.name in only)
+    for param in chosen:
+        for name, _ in expand((param,), {**values, **found}):
+            found[name] = _one(name, param, values.get(name))
+    return found
+
+
+def _one(name: str, param: Param, value: Any) -> Any:
+    if value is None:
+        if param.default is REQUIRED:
+            raise ParameterError(name, "is required and not set")
+        return list(param.default) if isinstance(param.default, list) else param.default
+    if not _CHECKS[param.type](value):
+        raise ParameterError(name, f"is {value!r}; expected {_EXPECTED[param.type]}")
+    if param.type == "double":
+        value = float(value)
+    elif param.type.endswith("_array"):
+        value = [float(v) for v in value] if param.type == "double_array" else list(value)
+        if param.non_empty and not value:
+            raise ParameterError(name, "is empty")
+    if param.type in ("int", "double") and math.isfinite(value):
+        if param.minimum is not None and value < param.minimum:
+            raise ParameterError(name, f"is {value}; expected at least {param.minimum:g}")
+        if param.maximum is not None and value > param.maximum:
+            raise ParameterError(name, f"is {value}; expected at most {param.maximum:g}")
+    return value
+
+
+def descriptor(name: str, param: Param) -> dict[str, Any]:
+    """rcl_interfaces/msg/ParameterDescriptor's fields for a declared parameter."""
+    fields: dict[str, Any] = {"name": name, "type": TYPES[param.type],
+                              "description": param.description, "read_only": param.read_only}
+    if param.minimum is None and param.maximum is None:
+        return fields
+    if param.type == "int":
+        fields["integer_range"] = [{
+            "from_value": int(param.minimum) if param.minimum is not None else -2**63,
+            "to_value": int(param.maximum) if param.maximum is not None else 2**63 - 1,
+            "step": 0}]
+    else:
+        fields["floating_point_range"] = [{
+            "from_value": param.minimum if param.minimum is not None else -math.inf,
+            "to_value": param.maximum if param.maximum is not None else math.inf,
+            "step": 0.0}]
+    return fields

@@ -1,0 +1,68 @@
+"""Parameters declared as data (bus/declarations.py), as the controllers and built-in nodes
+declare theirs: read, checked and described from the declaration alone."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from launcher.bus.declarations import REQUIRED, Param, ParameterError, descriptor, read
+from launcher.control.controllers import TYPES, controller_class
+
+DECLARED = (
+    Param("joints", "string_array", REQUIRED, "the joints", non_empty=True),
+    Param("rate", "double", 20.0, "checks a second", minimum=1e-3),
+    Param("window", "int", 10, "updates", minimum=1, maximum=100),
+    Param("gains.{joints}.p", "double", 0.0, "proportional"),
+)
+
+
+def test_defaults_fill_what_the_file_leaves_out_and_placeholders_expand_per_joint():
+    values = read(DECLARED, {"joints": ["a", "b"], "gains.b.p": 2})
+    assert values == {"joints": ["a", "b"], "rate": 20.0, "window": 10, "gains.a.p": 0.0,
+                      "gains.b.p": 2.0}
+
+
+def test_an_integer_is_taken_for_a_double_and_made_one():
+    assert isinstance(read(DECLARED, {"joints": ["a"], "rate": 5})["rate"], float)
+
+
+def test_a_missing_required_parameter_is_refused_by_name():
+    with pytest.raises(ParameterError, match="parameter 'joints' is required and not set"):
+        read(DECLARED, {})
+
+
+def test_a_value_of_the_wrong_type_is_refused_with_what_was_expected():
+    with pytest.raises(ParameterError, match=r"parameter 'window' is 'ten'; expected an "
+                                             r"integer"):
+        read(DECLARED, {"joints": ["a"], "window": "ten"})
+
+
+def test_a_value_out_of_its_bounds_is_refused_with_the_bound():
+    with pytest.raises(ParameterError, match="parameter 'window' is 500; expected at most 100"):
+        read(DECLARED, {"joints": ["a"], "window": 500})
+
+
+def test_an_empty_list_that_must_name_something_is_refused():
+    with pytest.raises(ParameterError, match="parameter 'joints' is empty"):
+        read(DECLARED, {"joints": []})
+
+
+def test_only_the_named_parameters_are_read():
+    assert read(DECLARED, {"joints": ["a"], "window": "bad"}, ("joints",)) == {"joints": ["a"]}
+
+
+def test_the_descriptor_carries_type_description_bounds_and_read_only():
+    fields = descriptor("window", DECLARED[2])
+    assert fields["type"] == 2 and fields["description"] == "updates"
+    assert fields["integer_range"] == [{"from_value": 1, "to_value": 100, "step": 0}]
+    open_above = descriptor("rate", DECLARED[1])["floating_point_range"][0]
+    assert open_above["from_value"] == 1e-3 and open_above["to_value"] == math.inf
+
+
+@pytest.mark.parametrize("type_name", sorted(TYPES))
+def test_every_controller_declares_its_parameters(type_name):
+    declared = controller_class(type_name).PARAMETERS
+    assert declared and all(p.description for p in declared)
+    assert len({p.name for p in declared}) == len(declared)
