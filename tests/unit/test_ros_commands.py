@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from launcher.cli.ros1 import ros1_type
+from launcher.bus.interfaces import ros1_spelling
 from launcher.cli.ros1.rostopic import message_values, split_field
 from launcher.cli.ros2_command import translate
 from launcher.errors import LaunchError, UsageError
@@ -69,9 +69,9 @@ def test_hidden_names_are_ros2s():
     assert not hidden("/cmd_vel") and not hidden("/robot_1/odom")
 
 
-def test_ros1_type_names():
-    assert ros1_type("std_msgs/msg/String") == "std_msgs/String"
-    assert ros1_type("std_msgs/String") == "std_msgs/String"
+def test_ros1_spelling_of_type_names():
+    assert ros1_spelling("std_msgs/msg/String") == "std_msgs/String"
+    assert ros1_spelling("std_msgs/String") == "std_msgs/String"
 
 
 def test_launchers_own_nodes_read_a_roslaunch_command_line_in_ros2s_layout():

@@ -23,8 +23,3 @@ TOOLS = {  # the tool's name → its module
     "rosbag": "launcher.cli.ros1.rosbag",
 }
 
-
-def ros1_type(name: str) -> str:
-    """`std_msgs/String`, as ROS 1 writes `std_msgs/msg/String`."""
-    parts = name.split("/")
-    return f"{parts[0]}/{parts[-1]}" if len(parts) == 3 else name

@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 
 from launcher.arguments import Parser
-from launcher.cli.ros1 import ros1_type
+from launcher.bus.interfaces import ros1_spelling
 from launcher.errors import LaunchError, did_you_mean
 
 BUILTIN = {"builtin_interfaces/msg/Time": "time", "builtin_interfaces/msg/Duration": "duration"}
@@ -43,13 +43,13 @@ def _types(kind: str) -> list[str]:
 
 
 def run_list(args: argparse.Namespace) -> int:
-    for name in sorted({ros1_type(t) for t in _types(args.kind)}):
+    for name in sorted({ros1_spelling(t) for t in _types(args.kind)}):
         print(name)
     return 0
 
 
 def run_package(args: argparse.Namespace) -> int:
-    found = sorted({ros1_type(t) for t in _types(args.kind)
+    found = sorted({ros1_spelling(t) for t in _types(args.kind)
                     if t.split("/")[0] == args.package})
     if not found:
         raise LaunchError(f"Unknown package [{args.package}] or it has no {args.kind}s")
@@ -66,7 +66,7 @@ def run_show(args: argparse.Namespace) -> int:
         matches = [f"{package}/{args.kind}/{base}"]
         if matches[0] not in known:
             raise LaunchError(f"Unable to load msg [{wanted}]"
-                              f"{did_you_mean(wanted, [ros1_type(t) for t in known])}")
+                              f"{did_you_mean(wanted, [ros1_spelling(t) for t in known])}")
     else:
         matches = sorted(t for t in known if t.split("/")[-1] == wanted)
         if not matches:
@@ -74,7 +74,7 @@ def run_show(args: argparse.Namespace) -> int:
                               f"{did_you_mean(wanted, {t.split('/')[-1] for t in known})}")
     for number, name in enumerate(matches):
         if len(matches) > 1 or "/" not in wanted:
-            print(f"[{ros1_type(name)}]:")
+            print(f"[{ros1_spelling(name)}]:")
         print("\n".join(definition(name)))
         if number < len(matches) - 1:
             print()
@@ -100,7 +100,7 @@ def _lines(name: str, indent: str) -> list[str]:
     for field, (kind, detail) in fields:
         text, nested = type_text(kind, detail)
         if nested in BUILTIN:
-            text, nested = text.replace(ros1_type(nested), BUILTIN[nested]), None
+            text, nested = text.replace(ros1_spelling(nested), BUILTIN[nested]), None
         lines.append(f"{indent}{text} {field}")
         if nested is not None:
             lines += _lines(nested, indent + "  ")

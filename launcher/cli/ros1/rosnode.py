@@ -10,9 +10,9 @@ import time
 
 from launcher.arguments import Parser
 from launcher.bus import graph, keys
+from launcher.bus.interfaces import ros1_spelling
 from launcher.bus.names import expand
 from launcher.bus.session import open_session
-from launcher.cli.ros1 import ros1_type
 from launcher.errors import LaunchError, did_you_mean
 
 RULE = "-" * 80
@@ -91,7 +91,7 @@ def run_info(args: argparse.Namespace) -> int:
             print(f"{title}: ")
             for topic, type_name in found:
                 print(f" * {topic}" if kind == keys.SERVICE else
-                      f" * {topic} [{ros1_type(type_name)}]")
+                      f" * {topic} [{ros1_spelling(type_name)}]")
             print()
         print()
     return 0

@@ -8,9 +8,9 @@ import argparse
 
 from launcher.arguments import Parser
 from launcher.bus import graph, keys
+from launcher.bus.interfaces import ros1_spelling
 from launcher.bus.names import expand
 from launcher.bus.session import open_session
-from launcher.cli.ros1 import ros1_type
 from launcher.errors import LaunchError, did_you_mean
 
 
@@ -69,7 +69,7 @@ def run_list(args: argparse.Namespace) -> int:
 
 def run_type(args: argparse.Namespace) -> int:
     for name in sorted({e.type_name for e in _providers(expand(args.service), _servers())}):
-        print(ros1_type(name))
+        print(ros1_spelling(name))
     return 0
 
 
@@ -81,7 +81,7 @@ def run_info(args: argparse.Namespace) -> int:
     type_name = mine[0].type_name
     request, _ = registry().service(type_name)
     print(f"Node: {mine[0].node_fqn}")
-    print(f"Type: {ros1_type(type_name)}")
+    print(f"Type: {ros1_spelling(type_name)}")
     print(f"Args: {' '.join(to_data(build(request, {})))}")
     return 0
 

@@ -11,10 +11,10 @@ from typing import Any
 
 from launcher.arguments import Parser
 from launcher.bus import graph
+from launcher.bus.interfaces import ros1_spelling
 from launcher.bus.names import expand
 from launcher.bus.session import open_session
 from launcher.cli import positive_number
-from launcher.cli.ros1 import ros1_type
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 LATCH_SECONDS = 3.0  # `pub -1` keeps its latched message up this long, as rostopic does
@@ -102,7 +102,7 @@ def run_list(args: argparse.Namespace) -> int:
         for name, info in topics.items():
             count = len(getattr(info, side))
             if count:
-                kinds = ", ".join(ros1_type(t) for t in sorted(info.types))
+                kinds = ", ".join(ros1_spelling(t) for t in sorted(info.types))
                 print(f" * {name} [{kinds}] {count} {noun}{'' if count == 1 else 's'}")
         print()
     return 0
@@ -226,7 +226,7 @@ def run_rate(args: argparse.Namespace) -> int:
 def run_info(args: argparse.Namespace) -> int:
     topic = expand(args.topic)
     info = _published(topic, _topics())
-    print(f"Type: {', '.join(ros1_type(t) for t in sorted(info.types))}\n")
+    print(f"Type: {', '.join(ros1_spelling(t) for t in sorted(info.types))}\n")
     for title, endpoints in (("Publishers", info.publishers),
                              ("Subscribers", info.subscribers)):
         print(f"{title}: ")
@@ -245,5 +245,5 @@ def run_type(args: argparse.Namespace) -> int:
     topic, _field = split_field(wanted, topics)
     info = _published(topic, topics)
     for name in sorted(info.types):
-        print(ros1_type(name))
+        print(ros1_spelling(name))
     return 0
