@@ -10,6 +10,7 @@ in a burst. Work that waits for a subscriber looks again every LAZY_LOOK seconds
 from __future__ import annotations
 
 import math
+from typing import Any
 
 LAZY_LOOK = 0.05  # s of sim time between looks for a subscriber, while there is none
 SLACK = 1e-9  # s: a step's time within this of a due time is on it (float sums of the step)
@@ -35,6 +36,25 @@ def following(next_update: float, now: float, every: float) -> float:
     while due <= now + SLACK:
         due += every
     return due
+
+
+def tick(owner: Any, now: float, rate: float) -> bool:
+    """Whether `owner`'s work of `rate` per second is due at `now`; when it is, its
+    `next_update` moves on to the next time."""
+    if not is_due(now, owner.next_update):
+        return False
+    owner.next_update = following(owner.next_update, now, period(rate))
+    return True
+
+
+def serve(owner: Any, now: float, every: float, wanted: bool) -> bool:
+    """A sensor's turn: with someone to work for (`wanted`), its next time on the grid of
+    `every` and True; with none, a look again after LAZY_LOOK at least, and False."""
+    if not wanted:
+        owner.next_update = idle(now, every)
+        return False
+    owner.next_update = following(owner.next_update, now, every)
+    return True
 
 
 def idle(now: float, every: float) -> float:

@@ -1,6 +1,7 @@
 """The one grid on which the sim's periodic systems and sensors run (sim/schedule.py)."""
 
 import math
+from types import SimpleNamespace
 
 from launcher.sim import schedule
 
@@ -10,12 +11,11 @@ STEP = 0.001
 def runs(rate: float, seconds: float, stall_at: float | None = None) -> list[float]:
     """The sim times at which work of `rate` runs, stepping as the sim does (its post_step when
     due); `stall_at`: one step there lasts 0.5 s (a slow step of a loaded machine)."""
-    times, now, next_update = [], 0.0, 0.0
+    times, now, work = [], 0.0, SimpleNamespace(next_update=0.0)
     while now < seconds - 1e-12:
         now += 0.5 if stall_at is not None and abs(now - stall_at) < STEP / 2 else STEP
-        if schedule.is_due(now, next_update):
+        if schedule.tick(work, now, rate):
             times.append(now)
-            next_update = schedule.following(next_update, now, schedule.period(rate))
     return times
 
 
@@ -41,3 +41,11 @@ def test_an_infinite_period_never_comes():
 def test_idle_work_looks_again_after_the_lazy_look_at_least():
     assert schedule.idle(2.0, 0.001) == 2.0 + schedule.LAZY_LOOK
     assert schedule.idle(2.0, 1.0) == 3.0
+
+
+def test_a_sensor_with_nobody_to_serve_looks_again_later_and_keeps_no_grid():
+    sensor = SimpleNamespace(next_update=0.0)
+    assert not schedule.serve(sensor, 1.0, 0.01, wanted=False)
+    assert sensor.next_update == 1.0 + schedule.LAZY_LOOK
+    assert schedule.serve(sensor, 1.05, 0.01, wanted=True)
+    assert abs(sensor.next_update - 1.06) < 1e-9

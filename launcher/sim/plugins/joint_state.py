@@ -59,10 +59,8 @@ class JointStatePublisher(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if not schedule.is_due(now, self.next_update):
+        if not schedule.tick(self, now, self.rate):
             return
-        self.next_update = schedule.following(self.next_update, now,
-                                              schedule.period(self.rate))
         if self.publisher.get_subscription_count():
             self.publisher.publish(self.state(self.sim.transport, now, data))
 

@@ -310,11 +310,8 @@ class GzRos2Control(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if not schedule.is_due(now, self.next_update):
-            return
-        self.manager.update(now)
-        self.next_update = schedule.following(self.next_update, now,
-                                              schedule.period(self.update_rate))
+        if schedule.tick(self, now, self.update_rate):
+            self.manager.update(now)
 
     def reset(self) -> None:
         self.next_update = 0.0

@@ -36,9 +36,8 @@ class WorldState(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if not schedule.is_due(now, self.next_update) or self.rate <= 0:
+        if self.rate <= 0 or not schedule.tick(self, now, self.rate):
             return
-        self.next_update = schedule.following(self.next_update, now, schedule.period(self.rate))
         want_poses = self.poses.get_subscription_count() > 0
         want_states = self.states.get_subscription_count() > 0
         if self.links.get_subscription_count() > 0:

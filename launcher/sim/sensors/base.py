@@ -139,10 +139,8 @@ class Sensor(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if not self.watched():
-            self.next_update = schedule.idle(now, self.period)
+        if not schedule.serve(self, now, self.period, self.watched()):
             return
-        self.next_update = schedule.following(self.next_update, now, self.period)
         message = self.measure(model, data)
         if message is None:
             return

@@ -207,10 +207,8 @@ class Camera(Sensor):
                 self.pending_trigger = False
                 self.rendering.request([self.camera_name], data)
             return
-        if not wanted:
-            self.next_update = schedule.idle(now, self.period)
+        if not schedule.serve(self, now, self.period, wanted):
             return
-        self.next_update = schedule.following(self.next_update, now, self.period)
         self.rendering.request([self.camera_name], data)
 
     def trigger(self, _message: Any) -> None:

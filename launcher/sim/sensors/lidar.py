@@ -115,10 +115,8 @@ class Lidar(Sensor):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        if not self.watched():
-            self.next_update = schedule.idle(now, self.period)
+        if not schedule.serve(self, now, self.period, self.watched()):
             return
-        self.next_update = schedule.following(self.next_update, now, self.period)
         ranges = self.cast(model, data)
         if self.config.always_on or self.publisher.get_subscription_count() > 0:
             self.publisher.publish(self.scan_message(data, ranges))
