@@ -12,22 +12,14 @@ import time
 
 import pytest
 
-from tests.conftest import REPO, shared
+from tests.conftest import REPO
+from tests.support.course import course_publisher, course_text
 
-COURSE = ("seeds", "000_a847380181b3b659.txt")  # the course, in ../shared
 LAUNCH = REPO / "launch_files" / "robot.launch.yaml"
 
 
-def course_text() -> str:
-    return shared(*COURSE).read_text(encoding="utf-8")
 
 
-def course_publisher() -> str:
-    """publisher.py as the course prints it, from its #! line to the end of its code."""
-    text = course_text()
-    start = text.index("#!/usr/bin/env python")
-    end = text.index("It was shown the commonly used plugins")
-    return text[start:end].rstrip() + "\n"
 
 
 def course_set_model_state() -> str:

@@ -16,8 +16,8 @@ import time
 
 import pytest
 
-from tests.e2e.test_course import course_publisher
-from tests.unit.test_sdf import CLASSIC_ROBOT, WHEEL
+from tests.support.course import course_publisher
+from tests.support.robots import CLASSIC_ROBOT, WHEEL
 
 DIFF_DRIVE = ("<leftJoint>left_wheel_joint</leftJoint><rightJoint>right_wheel_joint</rightJoint>"
               "<wheelSeparation>0.3</wheelSeparation><wheelDiameter>0.1</wheelDiameter>"
@@ -116,7 +116,7 @@ def test_the_course_roslaunch_files_spawn_and_drive(catkin):
 
 def course_world_plugin_cmake() -> str:
     """world_plugin's CMakeLists.txt as the course prints it (on one line, as its text has)."""
-    from tests.e2e.test_course import course_text
+    from tests.support.course import course_text
 
     text = course_text()
     start = text.index("cmake_minimum_required(VERSION 3.0.2) project(world_plugin)")

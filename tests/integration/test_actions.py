@@ -12,7 +12,7 @@ import time
 import pytest
 
 from tests.conftest import shared
-from tests.integration.test_node_apis import node_package
+from tests.support.nodes import node_package
 
 SERVER, CLIENT = "examples_rclpy_minimal_action_server", "examples_rclpy_minimal_action_client"
 SEQUENCE = "array('i', [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55])"

@@ -11,7 +11,7 @@ import yaml
 from rosbags.rosbag2 import Reader
 
 from tests.conftest import launcher_argv
-from tests.integration.test_bus import TALKER, script_launched
+from tests.support.nodes import TALKER, script_launched
 
 
 @pytest.fixture

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
 import signal
 import subprocess
 import sys
@@ -11,24 +10,10 @@ import time
 import pytest
 
 from launcher.bus.discovery import answers
-from tests.conftest import Workspace, launcher_argv
+from tests.conftest import launcher_argv
+from tests.support.nodes import TALKER, launch, stop, wait_text
 
 PY = sys.executable
-TALKER = """
-import sys
-from launcher.bus.node import Node
-from launcher.bus.qos import LATCHED
-node = Node("talker")
-value = float(node.args[0]) if node.args else 1.0
-pub = node.create_publisher("geometry_msgs/msg/Twist", "cmd_vel")
-node.create_publisher("std_msgs/msg/String", "robot_description", LATCHED).publish(
-    node.message("std_msgs/msg/String", data="<robot name='r'/>"))
-node.create_timer(0.05, lambda: pub.publish(
-    node.message("geometry_msgs/msg/Twist", linear={"x": value})))
-node.get_logger().info(f"talking on {pub.topic}")
-node.spin()
-node.destroy_node()
-"""
 LISTENER = """
 from launcher.bus.node import Node
 node = Node("listener")
@@ -53,11 +38,6 @@ def graph_socket(ws, domain: int = 0):
     return ws.root / "run" / f"domain-{domain}.sock"
 
 
-def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
-    """Start a launch of `body` in the background; its output goes to NAME.out."""
-    ws.write(name, body)
-    proc = ws.start("launch", name, *extra, output=f"{name}.out", env=env)
-    return proc, ws.root / f"{name}.out"
 
 
 # A launch that hosts the graph: a Python program may be a node, so the launch starts the
@@ -65,19 +45,6 @@ def launch(ws, name: str, body: str, *extra: str, env: dict | None = None):
 IDLE = "launch:\n  - executable: {{cmd: {py} -c 'import time; time.sleep({seconds})'}}\n"
 
 
-@contextlib.contextmanager
-def script_launched(ws, script: str, text: str, ready: str, args: str = ""):
-    """The node program `text`, written to `script` and run by a launch of its own once it
-    says `ready`; stopped (as Ctrl-C stops a launch) when the block ends."""
-    ws.write(script, text)
-    proc, out = launch(ws, f"{script}.launch.yaml", "launch:\n  - executable: "
-                       f"{{cmd: {PY} {script} {args}, output: screen}}\n")
-    try:
-        wait_text(out, ready)
-        yield ws
-    finally:
-        code = stop(proc)
-    assert code == 130
 
 
 def wait_for_router(ws, timeout: float = 20, domain: int = 0) -> str:
@@ -96,14 +63,8 @@ def wait_router_gone(ws, timeout: float = 20) -> None:
         time.sleep(0.1)
 
 
-def wait_text(path, needle: str, timeout: float = 30) -> str:
-    """The launch output at `path` once it holds `needle`."""
-    return Workspace(path.parent, "").wait_for_output(needle, timeout, path.name)
 
 
-def stop(proc) -> int:
-    proc.send_signal(signal.SIGINT)
-    return proc.wait(30)
 
 
 def test_topic_cli_against_a_live_node_and_latched_delivery(bus):

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.integration.test_bus import script_launched
+from tests.support.nodes import script_launched
 
 REPO = Path(__file__).resolve().parents[2]
 PY = sys.executable

@@ -17,7 +17,7 @@ import psutil
 import pytest
 
 from tests.conftest import Workspace, tagged_processes
-from tests.unit.test_packages import make_tree, manifest
+from tests.support.packages import make_tree, manifest
 
 PY = sys.executable
 

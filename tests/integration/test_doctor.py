@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.unit.test_packages import make_tree, manifest
+from tests.support.packages import make_tree, manifest
 
 
 def test_doctor_on_a_good_install(ws):

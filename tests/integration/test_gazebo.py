@@ -7,11 +7,11 @@ from __future__ import annotations
 import re
 import signal
 import time
-from pathlib import Path
 
 import pytest
 
 from tests.conftest import REPO, shared
+from tests.support.gazebo import demos_workspace
 
 WORLDS = ("external", "gz-sim", "worlds")  # in ../shared
 MODELS = REPO / "packages" / "robot_gazebo" / "models"
@@ -151,18 +151,6 @@ def test_the_courses_cpp_world_plugin_is_one_warning_and_the_world_runs(gz_ws):
     assert "world 'default'" in text
 
 
-def demos_workspace(ws) -> Path:
-    """ros_gz_sim_demos as a package whose launch folder is the external one, in place."""
-    package = ws.root / "pkgs" / "ros_gz_sim_demos"
-    package.mkdir(parents=True)
-    (package / "package.xml").write_text(
-        '<?xml version="1.0"?><package format="3"><name>ros_gz_sim_demos</name>'
-        "<version>0.0.0</version><description>demos</description>"
-        '<maintainer email="m@example.com">m</maintainer><license>Apache-2.0</license>'
-        "</package>")
-    (package / "launch").symlink_to(shared("external", "ros_gz_sim_demos", "launch"))
-    ws.env["LAUNCHER_PACKAGE_PATH"] = str(ws.root / "pkgs")
-    return package
 
 
 def test_ros_gz_sim_demos_diff_drive_launch_runs_unchanged_and_its_bridge_drives(gz_worlds):

@@ -8,10 +8,13 @@ import json
 import os
 import signal
 import subprocess
+import sys
 
 import pytest
 
-from tests.integration.test_sim import PY, ROBOT, SIM_LAUNCH
+from tests.support.sim import ROBOT, SIM_LAUNCH
+
+PY = sys.executable
 
 # The sim's own side, as a gz-transport client: requests that would freeze or brick it.
 PROBE = """

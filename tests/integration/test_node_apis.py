@@ -11,12 +11,12 @@ import signal
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 import pytest
 
 from launcher.compat import SITE
 from tests.conftest import shared
+from tests.support.nodes import node_package
 
 PUBLISHERS = ["publisher_old_school", "publisher_local_function", "publisher_member_function"]
 SUBSCRIBERS = ["subscriber_old_school", "subscriber_lambda", "subscriber_member_function"]
@@ -35,19 +35,6 @@ def stop(proc, sig: int = signal.SIGINT) -> int:
     return proc.wait(20)
 
 
-def node_package(ws, name: str, scripts: dict[str, str]) -> Path:
-    """A package of Python scripts in the workspace's `ws/` folder (on the package path)."""
-    for file, text in scripts.items():
-        path = ws.write(f"ws/{name}/scripts/{file}", text)
-        path.chmod(0o755)
-    ws.write(f"ws/{name}/package.xml", f"""
-    <?xml version="1.0"?>
-    <package format="3"><name>{name}</name><version>0.1.0</version><description>nodes
-    </description><maintainer email="a@b.c">a</maintainer><license>MIT</license></package>
-    """)
-    paths = [p for p in ws.env.get("LAUNCHER_PACKAGE_PATH", "").split(os.pathsep) if p]
-    ws.env["LAUNCHER_PACKAGE_PATH"] = os.pathsep.join([*paths, str(ws.root / "ws")])
-    return ws.root / "ws" / name
 
 
 @pytest.mark.parametrize("publisher, subscriber", list(zip(PUBLISHERS, SUBSCRIBERS,

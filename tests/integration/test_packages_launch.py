@@ -10,7 +10,7 @@ import pytest
 import yaml
 
 from launcher import compat
-from tests.unit.test_packages import make_tree, manifest
+from tests.support.packages import make_tree, manifest
 
 ROBOT_XACRO = """<?xml version="1.0"?>
 <robot name="bot" xmlns:xacro="http://www.ros.org/wiki/xacro">

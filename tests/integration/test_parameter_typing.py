@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.unit.test_packages import make_tree, manifest
+from tests.support.packages import make_tree, manifest
 
 # A real rclpy node (launcher's) that lists the parameters it was given: name, type, value.
 LIST_NODE = """

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import signal
 
-from tests.integration.test_node_apis import node_package
+from tests.support.nodes import node_package
 
 PARAMS = """
 import threading, time

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from tests.unit.test_kinematics import CHAIN
+from tests.support.robots import CHAIN
 
 PY = sys.executable
 LAUNCH = """
@@ -126,7 +126,7 @@ launch:
 def test_an_sdf_model_with_a_ball_joint_is_taken_as_sdformat_urdf_takes_it(rsp_ws):
     """ros_gz_sim_demos' sdf_parser feeds a vehicle whose caster is a ball joint: sdformat_urdf
     makes it a floating joint, and robot_state_publisher runs with the others."""
-    from tests.unit.test_kinematics import SDF_ROBOT
+    from tests.support.robots import SDF_ROBOT
 
     rsp_ws.write("pendulum.sdf", SDF_ROBOT.replace('name="hinge" type="revolute"',
                                                    'name="hinge" type="ball"'))
@@ -142,7 +142,7 @@ def test_an_sdf_model_with_a_ball_joint_is_taken_as_sdformat_urdf_takes_it(rsp_w
 
 def test_an_sdf_robot_description_drives_robot_state_publisher(rsp_ws):
     """As ros_gz's demos feed it (sdformat_urdf in ROS 2): the SDF model's links and joints."""
-    from tests.unit.test_kinematics import SDF_ROBOT
+    from tests.support.robots import SDF_ROBOT
 
     rsp_ws.write("pendulum.sdf", SDF_ROBOT)
     rsp_ws.write("rsp.launch.yaml", SDF_LAUNCH)

@@ -10,7 +10,7 @@ import signal
 import pytest
 import yaml
 
-from tests.unit.test_packages import make_tree, manifest
+from tests.support.packages import make_tree, manifest
 
 # Reports its argv, its environment's GREETING, and the parameters it was given (its params
 # files, any key, and -p values). A roslaunch file's node gets roslaunch's command line

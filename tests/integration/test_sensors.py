@@ -12,7 +12,7 @@ import time
 import pytest
 
 from tests.conftest import shared
-from tests.integration.test_gazebo import demos_workspace
+from tests.support.gazebo import demos_workspace
 
 WORLDS = ("external", "gz-sim", "worlds")  # in ../shared
 

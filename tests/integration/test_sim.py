@@ -10,15 +10,10 @@ from pathlib import Path
 
 import pytest
 
-PY = sys.executable
-ROBOT = str(Path(__file__).resolve().parent.parent / "data" / "diffbot.urdf")
+from tests.support.sim import ROBOT, SIM_LAUNCH
 
-SIM_LAUNCH = f"""
-launch:
-  - node: {{pkg: mujoco_sim, exec: sim, args: "-v 3 -r", output: screen}}
-  - node: {{pkg: mujoco_sim, exec: create, output: screen,
-           args: "-name bot -file {ROBOT} -z 0.06"}}
-"""
+PY = sys.executable
+
 
 # Talks to the running sim over the bus, as any node would, and prints what it saw as JSON.
 PROBE = """

@@ -8,7 +8,7 @@ import sys
 import pytest
 import yaml
 
-from tests.integration.test_bus import script_launched
+from tests.support.nodes import script_launched
 
 PY = sys.executable
 # Joint states stamped with the wall clock, 20 a second, and a latched string.

@@ -18,6 +18,7 @@ import psutil
 import pytest
 
 from tests.conftest import REPO, shared
+from tests.support.waiting import free_port, wait_for
 
 ARTEFACTS = REPO / "test-artefacts" / "viewer"  # a failing browser test's screenshots
 
@@ -27,20 +28,8 @@ def view_ws(ws):
     return ws.own_bus()
 
 
-def wait_for(predicate, timeout: float = 30.0):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        value = predicate()
-        if value:
-            return value
-        time.sleep(0.05)
-    raise AssertionError("timed out")
 
 
-def free_port() -> int:
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        return probe.getsockname()[1]
 
 
 def listening(pid: int, port: int) -> list[str]:

@@ -10,7 +10,7 @@ from types import SimpleNamespace
 import pytest
 
 from launcher.sim.entity import SpawnError
-from tests.unit.test_sim import IDENTITY, make_world
+from tests.support.sim import IDENTITY, make_world
 
 VEHICLE = """<?xml version="1.0"?><sdf version="1.9"><model name="vehicle">
   <link name="chassis"><inertial><mass>10</mass><inertia><ixx>1</ixx><iyy>1</iyy><izz>1</izz>

@@ -9,7 +9,7 @@ import pytest
 from launcher.errors import LaunchError, ParseError
 from launcher.packages.dsv import HookEnvironment, apply_dsv
 from launcher.packages.hooks import apply_hooks, ordered
-from tests.unit.test_packages import index_for, make_tree, manifest
+from tests.support.packages import index_for, make_tree, manifest
 
 PREFIX = Path("/opt/pfx")
 

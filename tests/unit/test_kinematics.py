@@ -10,23 +10,7 @@ import pytest
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 from launcher.nodes.kinematics import Tree
-
-CHAIN = """<robot name="arm">
-  <link name="base"/><link name="l1"/><link name="l2"/><link name="l3"/><link name="tool"/>
-  <link name="finger_a"/><link name="finger_b"/>
-  <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/>
-    <origin xyz="0 0 1" rpy="0 0 0"/><axis xyz="0 0 1"/></joint>
-  <joint name="j2" type="continuous"><parent link="l1"/><child link="l2"/>
-    <origin xyz="0.5 0 0" rpy="0 0 1.5707963267948966"/><axis xyz="0 1 0"/></joint>
-  <joint name="j3" type="prismatic"><parent link="l2"/><child link="l3"/>
-    <origin xyz="0.2 0.1 0" rpy="0.7853981633974483 0 0"/><axis xyz="1 0 0"/></joint>
-  <joint name="tool_mount" type="fixed"><parent link="l3"/><child link="tool"/>
-    <origin xyz="0 0 0.05" rpy="0 0 0"/></joint>
-  <joint name="fa" type="prismatic"><parent link="tool"/><child link="finger_a"/>
-    <axis xyz="0 1 0"/></joint>
-  <joint name="fb" type="prismatic"><parent link="tool"/><child link="finger_b"/>
-    <axis xyz="0 1 0"/><mimic joint="fa" multiplier="-1" offset="0.01"/></joint>
-</robot>"""
+from tests.support.robots import CHAIN, SDF_ROBOT
 
 
 def rot_x(a):
@@ -136,18 +120,6 @@ def test_the_rate_limiter_and_time_going_backwards():
     assert len(recorded.payloads) == 5
 
 
-SDF_ROBOT = """<?xml version="1.0"?>
-<sdf version="1.9"><model name="pendulum">
-  <!-- an SDF 1.4 file would give axes in the model frame -->
-  <link name="base"><pose>0 0 1 0 0 0</pose></link>
-  <link name="arm"><pose>0 0.2 1 0 0 1.5707963</pose></link>
-  <link name="tip"><pose>0 0.2 0.5 0 0 1.5707963</pose></link>
-  <joint name="to_world" type="fixed"><parent>world</parent><child>base</child></joint>
-  <joint name="hinge" type="revolute"><parent>base</parent><child>arm</child>
-    <axis><xyz>1 0 0</xyz><limit><lower>-1</lower><upper>1</upper></limit></axis></joint>
-  <joint name="spin" type="revolute"><parent>arm</parent><child>tip</child>
-    <axis><xyz>0 0 1</xyz></axis></joint>
-</model></sdf>"""
 
 
 def test_an_sdf_robot_description_is_read_as_sdformat_urdf_reads_it():

@@ -191,3 +191,24 @@ def test_the_layout_page_names_every_package_and_top_level_module():
     missing = [part for part in parts
                if not re.search(rf"(launcher/|[\s(]){re.escape(part)}", page)]
     assert not missing, f"{LAYOUT} does not name: {missing}"
+
+
+def test_no_test_module_imports_another():
+    """What several test modules share lives in tests/support/, not in one of them."""
+    tests = ROOT.parent / "tests"
+    found = [f"{path.relative_to(tests)}: {name}"
+             for path in sorted(tests.rglob("test_*.py"))
+             for name in sorted(n for n in imports_from_tests(path)
+                                if n.split(".")[-1].startswith("test_"))]
+    assert not found, "test modules importing test modules:\n" + "\n".join(found)
+
+
+def imports_from_tests(path: Path) -> set[str]:
+    """Every module `path` imports from the tests package."""
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("tests"):
+            found.add(node.module)
+        elif isinstance(node, ast.Import):
+            found.update(a.name for a in node.names if a.name.startswith("tests"))
+    return found

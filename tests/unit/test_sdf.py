@@ -19,7 +19,8 @@ from launcher.sim.resources import model_file
 from launcher.sim.templates import Templates
 from launcher.sim.world import World
 from tests.conftest import REPO, shared
-from tests.unit.test_sim import Recorder
+from tests.support.robots import CLASSIC_ROBOT, WHEEL
+from tests.support.sim import Recorder
 
 WORLDS = ("external", "gz-sim", "worlds")  # gz-sim's, in ../shared
 LIDAR = REPO / "packages" / "robot_description" / "meshes" / "lidar.stl"
@@ -383,26 +384,6 @@ def test_gazebo_system_spellings_infrastructure_and_cpp_plugins(tmp_path):
     assert [type(p).__name__ for p in world.entities["bot"].plugins] == ["JointStatePublisher"]
 
 
-CLASSIC_ROBOT = """<robot name="bot">
-  <link name="base_link"><inertial><mass value="2"/><inertia ixx="0.02" iyy="0.02" izz="0.02"
-    ixy="0" ixz="0" iyz="0"/></inertial><collision><origin xyz="0 0 0.09"/><geometry>
-    <box size="0.3 0.2 0.06"/></geometry></collision></link>
-  <link name="caster"><inertial><mass value="0.05"/><inertia ixx="1e-5" iyy="1e-5" izz="1e-5"
-    ixy="0" ixz="0" iyz="0"/></inertial><collision><geometry><sphere radius="0.025"/></geometry>
-    </collision></link>
-  <joint name="caster_joint" type="fixed"><parent link="base_link"/><child link="caster"/>
-    <origin xyz="-0.12 0 0.025"/></joint>
-  {wheels}
-  <gazebo reference="caster"><mu1>0.0</mu1></gazebo>
-  <gazebo><plugin filename="libgazebo_ros_diff_drive.so" name="diff_drive">{params}</plugin>
-  </gazebo>
-</robot>"""
-WHEEL = """<link name="{side}_wheel"><inertial><mass value="0.2"/><inertia ixx="2e-4" iyy="2e-4"
-  izz="3e-4" ixy="0" ixz="0" iyz="0"/></inertial><collision><geometry>
-  <cylinder radius="0.05" length="0.02"/></geometry></collision></link>
-  <joint name="{side}_wheel_joint" type="continuous"><parent link="base_link"/>
-  <child link="{side}_wheel"/><origin xyz="0 {y} 0.05" rpy="-1.5707963 0 0"/>
-  <axis xyz="0 0 1"/></joint>"""
 
 
 @pytest.mark.parametrize("params, cmd_topic, odom_topic", [

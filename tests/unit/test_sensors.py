@@ -16,7 +16,7 @@ from launcher.errors import LaunchError
 from launcher.sim.sensors.atmosphere import pressure_at
 from launcher.sim.sensors.geodesy import SphericalCoordinates
 from launcher.sim.world import World
-from tests.unit.test_sim import Recorder
+from tests.support.sim import Recorder
 
 SYSTEMS = """
 <plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors"/>

@@ -1,0 +1,1 @@
+"""What more than one test module uses (a test module imports no other test module)."""
