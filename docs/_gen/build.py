@@ -15,11 +15,13 @@ import reference_cli  # noqa: E402
 import reference_fidelity  # noqa: E402
 import reference_launch  # noqa: E402
 import reference_parameters  # noqa: E402
+import reference_python  # noqa: E402
 import reference_types  # noqa: E402
 
 for name, module in (("cli", reference_cli), ("launch-files", reference_launch),
                      ("types", reference_types), ("fidelity", reference_fidelity),
-                     ("parameters", reference_parameters)):
+                     ("parameters", reference_parameters),
+                     ("python-apis", reference_python)):
     with mkdocs_gen_files.open(f"reference/{name}.md", "w") as page:
         page.write(module.page())
 

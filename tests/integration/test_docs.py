@@ -93,6 +93,13 @@ def test_the_parameters_page_gives_every_controller_and_node_that_declares_them(
             assert parameter.name in page and parameter.description in page, parameter
 
 
+def test_the_python_api_page_shows_the_documented_node_libraries(site):
+    page = text(site / "reference" / "python-apis" / "index.html")
+    for module in ("rclpy.node", "rclpy.action.server", "rospy.client", "tf2_ros.buffer"):
+        assert module in page, module
+    assert "create_subscription(msg_type" in page and "A publisher of msg_type on topic" in page
+
+
 def test_the_type_tables_come_from_the_bridges_own(site):
     page = text(site / "reference" / "types" / "index.html")
     for ros, _ in conversions():

@@ -21,6 +21,9 @@ _CONVERTERS: dict[type, Any] = {}  # message class → do_transform(message, tra
 
 
 def register_transform(cls: type, function: Any) -> None:
+    """Register a conversion for `Buffer.transform` of another message type
+    (tf2_geometry_msgs registers its own).
+    """
     _CONVERTERS[cls] = function
 
 
@@ -47,9 +50,11 @@ class Buffer:
 
     # --- setting -----------------------------------------------------------------------------
     def set_transform(self, transform: Any, authority: str) -> bool:
+        """Add a transform (TransformStamped) from `authority`."""
         return self._set(transform, authority, False)
 
     def set_transform_static(self, transform: Any, authority: str) -> bool:
+        """Add a transform that holds at every time."""
         return self._set(transform, authority, True)
 
     def _set(self, transform: Any, authority: str, static: bool) -> bool:
@@ -67,11 +72,16 @@ class Buffer:
         return True
 
     def clear(self) -> None:
+        """Forget every transform."""
         self.core.clear()
 
     # --- looking up ----------------------------------------------------------------------
     def lookup_transform(self, target_frame: str, source_frame: str, time: Any,
                          timeout: Any = None) -> Any:
+        """The transform from `source_frame` to `target_frame` at `time` (0: the
+        latest both have), waiting up to `timeout` for it; LookupException,
+        ConnectivityException or ExtrapolationException when there is none.
+        """
         stamp = _ns(time)
         pose, at = self._wait(lambda: self.core.lookup(target_frame, source_frame, stamp),
                               timeout)
@@ -79,6 +89,9 @@ class Buffer:
 
     def lookup_transform_full(self, target_frame: str, target_time: Any, source_frame: str,
                               source_time: Any, fixed_frame: str, timeout: Any = None) -> Any:
+        """The transform from `source_frame` at `source_time` to `target_frame`
+        at `target_time`, through `fixed_frame`.
+        """
         from tf2_ros.buffer_core import multiply
 
         def both() -> Any:
@@ -90,6 +103,7 @@ class Buffer:
 
     def can_transform(self, target_frame: str, source_frame: str, time: Any,
                       timeout: Any = None, return_debug_tuple: bool = False) -> Any:
+        """Whether lookup_transform would succeed, waiting up to `timeout`."""
         try:
             self.lookup_transform(target_frame, source_frame, time, timeout)
         except TransformException as exc:
@@ -99,6 +113,7 @@ class Buffer:
     def can_transform_full(self, target_frame: str, target_time: Any, source_frame: str,
                            source_time: Any, fixed_frame: str, timeout: Any = None,
                            return_debug_tuple: bool = False) -> Any:
+        """Whether lookup_transform_full would succeed, waiting up to `timeout`."""
         try:
             self.lookup_transform_full(target_frame, target_time, source_frame, source_time,
                                        fixed_frame, timeout)
@@ -108,6 +123,7 @@ class Buffer:
 
     def transform(self, object_stamped: Any, target_frame: str, timeout: Any = None,
                   new_type: Any = None) -> Any:
+        """A stamped message (a point, pose, vector …) expressed in `target_frame`."""
         do = _CONVERTERS.get(type(object_stamped))
         if do is None:
             import tf2_geometry_msgs  # noqa: F401  (registers geometry_msgs' stamped types)
@@ -121,6 +137,7 @@ class Buffer:
         return do(object_stamped, transform)
 
     def wait_for_transform_async(self, target_frame: str, source_frame: str, time: Any) -> Any:
+        """A Future completed when the transform can be looked up."""
         from rclpy.task import Future
 
         future = Future()
@@ -135,6 +152,7 @@ class Buffer:
         return future
 
     def lookup_transform_async(self, target_frame: str, source_frame: str, time: Any) -> Any:
+        """A Future of the transform, completed when it can be looked up."""
         from rclpy.task import Future
 
         future = Future()
@@ -149,9 +167,11 @@ class Buffer:
         return future
 
     def all_frames_as_yaml(self) -> str:
+        """Every frame with its parent and times, as tf2's YAML."""
         return self.core.as_yaml()
 
     def all_frames_as_string(self) -> str:
+        """One line a frame naming its parent, as tf2 prints it."""
         return "".join(f"Frame {edge.name} exists with parent {edge.parent}.\n"
                        for edge in self.core.edges())
 

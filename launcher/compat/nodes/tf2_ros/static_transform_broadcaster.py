@@ -26,6 +26,9 @@ class StaticTransformBroadcaster:
         self._child_frames: dict[str, Any] = {}
 
     def sendTransform(self, transform: Any) -> None:  # noqa: N802 (tf2_ros's name)
+        """Publish transforms on /tf_static (latched), with those sent before: each
+        child frame keeps its latest.
+        """
         for one in list(transform) if isinstance(transform, list | tuple) else [transform]:
             self._child_frames[one.child_frame_id] = one
         self.net_message = self._message(transforms=list(self._child_frames.values()))

@@ -18,5 +18,6 @@ class TransformBroadcaster:
         self.pub_tf = node.create_publisher(TFMessage, "/tf", qos or 100)
 
     def sendTransform(self, transform: Any) -> None:  # noqa: N802 (tf2_ros's name)
+        """Publish one TransformStamped, or a list of them, on /tf."""
         transforms = list(transform) if isinstance(transform, list | tuple) else [transform]
         self.pub_tf.publish(self._message(transforms=transforms))

@@ -45,14 +45,17 @@ class TransformListener:
         return self.node.get_fully_qualified_name()
 
     def callback(self, message: Any) -> None:
+        """Take the transforms of a /tf message into the buffer."""
         for transform in message.transforms:
             self.buffer.set_transform(transform, "default_authority")
 
     def static_callback(self, message: Any) -> None:
+        """Take the transforms of a /tf_static message into the buffer."""
         for transform in message.transforms:
             self.buffer.set_transform_static(transform, "default_authority")
 
     def unregister(self) -> None:
+        """Stop listening: its /tf and /tf_static subscriptions leave the graph."""
         if self.node is None:
             self.tf_sub.unregister()
             self.tf_static_sub.unregister()

@@ -46,30 +46,40 @@ class ClientGoalHandle:
 
     @property
     def goal_id(self) -> Any:
+        """The goal's id (unique_identifier_msgs/UUID)."""
         return self._goal_id
 
     @property
     def stamp(self) -> Any:
+        """When the server accepted the goal."""
         return self._goal_response.stamp
 
     @property
     def accepted(self) -> bool:
+        """Whether the server accepted the goal."""
         return bool(self._goal_response.accepted)
 
     @property
     def status(self) -> int:
+        """The goal's state as the server's status topic last said it."""
         return self._status
 
     def cancel_goal(self) -> Any:
+        """Ask the server to cancel the goal, waiting for its answer
+        (a CancelGoal response).
+        """
         return self._action_client._cancel_goal(self)
 
     def cancel_goal_async(self) -> Future:
+        """Ask the server to cancel the goal: a Future of its answer."""
         return self._action_client._cancel_goal_async(self)
 
     def get_result(self) -> Any:
+        """Wait for the goal's result (a GetResult response: status, result)."""
         return self._action_client._get_result(self)
 
     def get_result_async(self) -> Future:
+        """A Future of the goal's result, completed when the goal ends."""
         return self._action_client._get_result_async(self)
 
 
@@ -110,6 +120,7 @@ class ActionClient:
 
     # --- the server -----------------------------------------------------------------------------
     def server_is_ready(self) -> bool:
+        """Whether the server's three services are on the graph now."""
         return all(client.wait_for_service(0.05)
                    for client in (self._goal_client, self._cancel_client, self._result_client))
 
@@ -133,6 +144,12 @@ class ActionClient:
     # --- goals --------------------------------------------------------------------------------
     def send_goal_async(self, goal: Any, feedback_callback: Any = None,
                         goal_uuid: Any = None) -> Future:
+        """Send a goal: a Future of its ClientGoalHandle (accepted or not).
+
+        :param goal: the action's Goal.
+        :param feedback_callback: called with each FeedbackMessage for this goal.
+        :param goal_uuid: the goal's id (default: a new random one).
+        """
         if not isinstance(goal, self._action_type.Goal):
             raise TypeError(f"Expected type {self._action_type.Goal}, got {type(goal)}")
         from unique_identifier_msgs.msg import UUID
@@ -254,6 +271,7 @@ class ActionClient:
             callback(*args)
 
     def destroy(self) -> None:
+        """Take the client's services and subscriptions off the graph."""
         for entity in (self._goal_client, self._cancel_client, self._result_client,
                        self._feedback, self._status):
             entity.destroy()

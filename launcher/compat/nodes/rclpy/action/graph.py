@@ -9,6 +9,9 @@ SUFFIX = "/_action/send_goal"
 
 
 def get_action_names_and_types(node: Any) -> list[tuple[str, list[str]]]:
+    """Every action of the graph with its types: [(name, [type, …])], found by
+    their send_goal services.
+    """
     found: dict[str, set[str]] = {}
     for name, types in node.get_service_names_and_types():
         if name.endswith(SUFFIX):

@@ -40,14 +40,17 @@ RCLError = actions.InvalidTransition  # rclpy's error for what rcl refuses (a go
 
 
 def default_goal_callback(goal_request: Any) -> GoalResponse:
+    """Accept every goal (rclpy's default)."""
     return GoalResponse.ACCEPT
 
 
 def default_handle_accepted_callback(goal_handle: ServerGoalHandle) -> None:
+    """Execute an accepted goal at once (rclpy's default)."""
     goal_handle.execute()
 
 
 def default_cancel_callback(cancel_request: Any) -> CancelResponse:
+    """Refuse every cancel request (rclpy's default)."""
     return CancelResponse.REJECT
 
 
@@ -67,44 +70,57 @@ class ServerGoalHandle:
 
     @property
     def request(self) -> Any:
+        """The goal as the client sent it."""
         return self._goal_request
 
     @property
     def goal_id(self) -> Any:
+        """The goal's id (unique_identifier_msgs/UUID)."""
         return self._goal.goal_id
 
     @property
     def is_active(self) -> bool:
+        """Whether the goal has not ended (accepted, executing or canceling)."""
         return self._goal.active
 
     @property
     def is_cancel_requested(self) -> bool:
+        """Whether a cancel was accepted: the goal is canceling."""
         return self._goal.state == actions.CANCELING
 
     @property
     def status(self) -> int:
+        """The goal's state (action_msgs/msg/GoalStatus's numbers)."""
         return self._goal.state
 
     def execute(self, execute_callback: Any = None) -> None:
         # An accepted goal starts executing; one canceled before it started only runs its
         # callback (which then sees is_cancel_requested), as rclpy has it
+        """Run the execute callback for this goal (`execute_callback`, else the
+        server's) as a task of the node's executor; an accepted goal starts executing.
+        """
         if self._goal.state == actions.ACCEPTED:
             self._action_server.move(self, GoalEvent.EXECUTE)
         self._action_server.run(self, execute_callback)
 
     def publish_feedback(self, feedback: Any) -> None:
+        """Send feedback (the action's Feedback) to the goal's client."""
         self._action_server.publish_feedback(self, feedback)
 
     def succeed(self) -> None:
+        """End the goal as succeeded (the execute callback returns its result)."""
         self._action_server.move(self, GoalEvent.SUCCEED)
 
     def abort(self) -> None:
+        """End the goal as aborted."""
         self._action_server.move(self, GoalEvent.ABORT)
 
     def canceled(self) -> None:
+        """End a canceling goal as canceled."""
         self._action_server.move(self, GoalEvent.CANCELED)
 
     def destroy(self) -> None:
+        """Nothing to release: the server keeps the goal until its result expires."""
         pass
 
 
@@ -156,16 +172,28 @@ class ActionServer:
 
     # --- callbacks the user gives -------------------------------------------------------------
     def register_goal_callback(self, goal_callback: Any) -> None:
+        """Set the callback that accepts or rejects each goal
+        (returns a GoalResponse; None: accept all).
+        """
         self._goal_callback = goal_callback or default_goal_callback
 
     def register_handle_accepted_callback(self, handle_accepted_callback: Any) -> None:
+        """Set the callback handed each accepted goal's
+        handle (None: execute it at once).
+        """
         self._handle_accepted_callback = handle_accepted_callback or \
             default_handle_accepted_callback
 
     def register_cancel_callback(self, cancel_callback: Any) -> None:
+        """Set the callback that accepts or refuses each cancel
+        request (returns a CancelResponse; None: refuse all).
+        """
         self._cancel_callback = cancel_callback or default_cancel_callback
 
     def register_execute_callback(self, execute_callback: Any) -> None:
+        """Set the callback that executes a goal: it ends the goal
+        and returns its result.
+        """
         if not callable(execute_callback):
             raise TypeError("Failed to register execute callback: not callable")
         self._execute_callback = execute_callback
@@ -199,6 +227,7 @@ class ActionServer:
         self._goals.move(handle._goal, event)
 
     def publish_feedback(self, handle: ServerGoalHandle, feedback: Any) -> None:
+        """Send feedback for a goal (ServerGoalHandle.publish_feedback)."""
         if not isinstance(feedback, self._action_type.Feedback):
             raise TypeError(f"Expected type {self._action_type.Feedback}, got "
                             f"{type(feedback)}")
@@ -206,6 +235,7 @@ class ActionServer:
             goal_id=handle.goal_id, feedback=feedback))
 
     def run(self, handle: ServerGoalHandle, execute_callback: Any) -> None:
+        """Run a goal's execute callback as a task of the node's executor."""
         executor = self._node.executor
         if executor is None:
             raise RuntimeError("the action server's node is not spinning: add it to an "
@@ -265,6 +295,7 @@ class ActionServer:
         return response
 
     def destroy(self) -> None:
+        """Take the action's services and topics off the graph."""
         for entity in (self._send_goal, self._cancel, self._get_result, self._feedback,
                        self._status):
             entity.destroy()

@@ -1,0 +1,59 @@
+"""The Python APIs launcher provides for nodes (rclpy, rospy, tf2_ros), from their docstrings:
+read from the source (nothing is imported), so the page shows what the code says."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from md_tables import code
+
+NODES = Path(__file__).resolve().parents[2] / "launcher" / "compat" / "nodes"
+# the modules whose public surface is documented (tests/unit/test_compat_docs.py keeps it so)
+MODULES = ["rclpy/node.py", "rclpy/action/server.py", "rclpy/action/client.py",
+           "rclpy/action/graph.py", "rospy/client.py", "rospy/core.py", "rospy/rostime.py",
+           "rospy/service.py", "rospy/timer.py", "rospy/topics.py", "tf2_ros/buffer.py",
+           "tf2_ros/transform_listener.py", "tf2_ros/transform_broadcaster.py",
+           "tf2_ros/static_transform_broadcaster.py"]
+
+TITLE = """# Python APIs for nodes
+
+What a node written for ROS imports runs on launcher's graph: rclpy (ROS 2), rospy (ROS 1) and
+tf2_ros, with the names, arguments and defaults of the real libraries (a real one installed
+in the user's shell wins). Generated from the source's docstrings at each build.
+"""
+
+
+def page() -> str:
+    parts = [TITLE]
+    for module in MODULES:
+        tree = ast.parse((NODES / module).read_text())
+        name = module.removesuffix(".py").replace("/", ".")
+        parts.append(f"## {code(name)}\n")
+        doc = ast.get_docstring(tree)
+        if doc:
+            parts.append(doc + "\n")
+        for node in tree.body:
+            if isinstance(node, ast.FunctionDef) and public(node.name):
+                parts.append(entry(node, "###"))
+            elif isinstance(node, ast.ClassDef) and public(node.name):
+                parts.append(f"### {code(node.name)}\n")
+                if ast.get_docstring(node):
+                    parts.append(ast.get_docstring(node) + "\n")
+                parts += [entry(f, "####") for f in node.body
+                          if isinstance(f, ast.FunctionDef | ast.AsyncFunctionDef) and
+                          public(f.name)]
+    return "\n".join(parts)
+
+
+def public(name: str) -> bool:
+    return not name.startswith("_")
+
+
+def entry(function: ast.FunctionDef | ast.AsyncFunctionDef, level: str) -> str:
+    args = ast.unparse(function.args).replace("self, ", "").removeprefix("self")
+    doc = (ast.get_docstring(function) or "").replace(":param ", "- `").replace(":return:",
+                                                                                "- returns:")
+    lines = [line if not line.startswith("- `") else line.replace(":", "`:", 1)
+             for line in doc.splitlines()]
+    return f"{level} {code(f'{function.name}({args})')}\n\n" + "\n".join(lines) + "\n"
