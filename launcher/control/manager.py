@@ -2,6 +2,7 @@
 the hardware each cycle, with controller_manager_msgs' services, as ros2_control's does.
 
     manager = ControllerManager(node, components, parameter_files)
+    ManagerServices(manager)      # its services on the node (manager_services.py)
     manager.update(time)          # at update_rate: read hardware, update controllers, write
 
 Every callback runs on the thread that calls `update` (the sim's loop, or ros2_control_node's
@@ -13,8 +14,6 @@ interface is never claimed twice, and a refused switch leaves the running contro
 """
 
 from __future__ import annotations
-
-from typing import Any
 
 from launcher.bus.node import Node
 from launcher.control.controller import Controller, ControllerError
@@ -31,7 +30,6 @@ from launcher.control.resources import (
 from launcher.control.yaml_places import block_place, key_place, params_files, value_place
 from launcher.errors import did_you_mean
 
-SRV = "controller_manager_msgs/srv/"
 BEST_EFFORT, STRICT, AUTO, FORCE_AUTO = 1, 2, 3, 4
 
 
@@ -48,20 +46,6 @@ class ControllerManager:
         self.period = 1.0 / self.update_rate
         self.time = 0.0
         self._last: float | None = None
-        for name, callback in (("list_controllers", self.on_list_controllers),
-                               ("list_controller_types", self.on_list_types),
-                               ("list_hardware_components", self.on_list_components),
-                               ("list_hardware_interfaces", self.on_list_interfaces),
-                               ("load_controller", self.on_load),
-                               ("configure_controller", self.on_configure),
-                               ("cleanup_controller", self.on_cleanup),
-                               ("switch_controller", self.on_switch),
-                               ("unload_controller", self.on_unload),
-                               ("reload_controller_libraries", self.on_reload),
-                               ("set_hardware_component_state", self.on_component_state)):
-            type_name = SRV + "".join(p.capitalize() for p in name.split("_"))
-            node.create_service(type_name, f"~/{name}", callback)
-
     # --- the cycle -------------------------------------------------------------------------
     def update(self, time: float) -> None:
         period = time - self._last if self._last is not None else self.period
@@ -301,99 +285,17 @@ class ControllerManager:
             if controller in self.active:
                 self.active.remove(controller)
 
-    def shutdown(self) -> None:
-        for controller in list(self.active):
-            self._deactivate(controller)
-        for controller in list(self.controllers.values()):
-            controller.node.destroy_node()
-        self.controllers.clear()
-
-    # --- services --------------------------------------------------------------------------
-    def _answer(self, response: Any, result: tuple[bool, str], what: str, name: str) -> Any:
-        ok, message = result
-        if not ok and message:
-            self.log.error(message)
-        response.ok = ok
-        return response
-
-    def on_load(self, request: Any, response: Any) -> Any:
-        return self._answer(response, self.load(request.name), "load", request.name)
-
-    def on_configure(self, request: Any, response: Any) -> Any:
-        return self._answer(response, self.configure(request.name), "configure", request.name)
-
-    def on_cleanup(self, request: Any, response: Any) -> Any:
-        return self._answer(response, self.cleanup(request.name), "cleanup", request.name)
-
-    def on_unload(self, request: Any, response: Any) -> Any:
-        return self._answer(response, self.unload(request.name), "unload", request.name)
-
-    def on_reload(self, request: Any, response: Any) -> Any:
-        response.ok = True  # the controllers are Python classes: nothing to reload
-        return response
-
-    def on_switch(self, request: Any, response: Any) -> Any:
-        ok, message = self.switch(list(request.activate_controllers),
-                                  list(request.deactivate_controllers), request.strictness)
-        response.ok = ok
-        if hasattr(response, "message"):
-            response.message = message
-        return response
-
-    def on_list_controllers(self, request: Any, response: Any) -> Any:
-        message = self.node.message
-        response.controller = [message(
-            "controller_manager_msgs/msg/ControllerState", name=c.name,
-            state=STATE_LABELS[c.state], type=c.type_name, is_async=False,
-            update_rate=c.update_rate or self.update_rate,
-            claimed_interfaces=[i for i, o in self.resources.claimed.items() if o == c.name],
-            required_command_interfaces=c.command_interfaces() if c.state != UNCONFIGURED
-            else [],
-            required_state_interfaces=(c.state_interfaces() or []) if c.state != UNCONFIGURED
-            else []) for c in self.controllers.values()]
-        return response
-
-    def on_list_types(self, request: Any, response: Any) -> Any:
-        response.types = sorted(TYPES)
-        response.base_classes = [controller_class(t).base_class for t in response.types]
-        return response
-
-    def _interfaces(self, names: list[str], command: bool) -> list[Any]:
-        make = self.node.message
-        return [make("controller_manager_msgs/msg/HardwareInterface", name=n, data_type="double",
-                     is_available=self.resources.available(n, command),
-                     is_claimed=command and n in self.resources.claimed) for n in names]
-
-    def on_list_interfaces(self, request: Any, response: Any) -> Any:
-        commands, states = self.resources.describe()
-        response.command_interfaces = self._interfaces(commands, True)
-        response.state_interfaces = self._interfaces(states, False)
-        return response
-
-    def on_list_components(self, request: Any, response: Any) -> Any:
-        make = self.node.message
-        response.component = [make(
-            "controller_manager_msgs/msg/HardwareComponentState", name=c.info.name,
-            type=c.info.type, is_async=False, rw_rate=self.update_rate,
-            plugin_name=c.info.plugin,
-            state=make("lifecycle_msgs/msg/State", id=c.state, label=STATE_LABELS[c.state]),
-            command_interfaces=self._interfaces(list(c.commands), True),
-            state_interfaces=self._interfaces(list(c.states), False))
-            for c in self.resources.components]
-        return response
-
-    def on_component_state(self, request: Any, response: Any) -> Any:
-        found = [c for c in self.resources.components if c.info.name == request.name]
-        target = request.target_state.id or {v: k for k, v in STATE_LABELS.items()}.get(
-            request.target_state.label, 0)
-        make = self.node.message
+    def set_component_state(self, name: str, target: int) -> bool:
+        """Move a hardware component to `target` (unconfigured, inactive, active); the
+        controllers using its command interfaces stop when it leaves active. False (and
+        logged) for an unknown component or state."""
+        found = [c for c in self.resources.components if c.info.name == name]
         if not found or target not in (UNCONFIGURED, INACTIVE, ACTIVE):
-            response.ok = False
             if not found:
                 known = [c.info.name for c in self.resources.components]
-                self.log.error(f"Hardware component '{request.name}' is unknown"
-                               f"{did_you_mean(request.name, known)}")
-            return response
+                self.log.error(f"Hardware component '{name}' is unknown"
+                               f"{did_you_mean(name, known)}")
+            return False
         component = found[0]
         if target != ACTIVE:  # its command interfaces go: the controllers using them stop
             for controller in list(self.active):
@@ -401,7 +303,11 @@ class ControllerManager:
                        for i in controller.command_interfaces()):
                     self._deactivate(controller)
         component.state = target
-        response.ok = True
-        response.state = make("lifecycle_msgs/msg/State", id=target, label=STATE_LABELS[target])
-        return response
+        return True
 
+    def shutdown(self) -> None:
+        for controller in list(self.active):
+            self._deactivate(controller)
+        for controller in list(self.controllers.values()):
+            controller.node.destroy_node()
+        self.controllers.clear()

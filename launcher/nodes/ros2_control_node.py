@@ -15,6 +15,7 @@ from launcher.bus.qos import LATCHED
 from launcher.control.description import parse
 from launcher.control.hardware import make
 from launcher.control.manager import ControllerManager
+from launcher.control.manager_services import ManagerServices
 from launcher.errors import LaunchError, reported
 
 DESCRIPTION_WAIT = 30.0  # s to wait for /robot_description
@@ -50,6 +51,7 @@ def run(argv: list[str]) -> int:
                                        f"mock_components/GenericSystem outside the sim")
         files = [s for kind, s in ros_args.parse(argv).parameter_sources if kind == "file"]
         manager = ControllerManager(node, [make(b) for b in blocks], files)
+        ManagerServices(manager)
         period = 1.0 / manager.update_rate
         start = time.monotonic()
         node.create_timer(period, lambda: manager.update(time.monotonic() - start))

@@ -36,6 +36,7 @@ from launcher.bus.node import Node
 from launcher.control.description import Hardware, parse
 from launcher.control.hardware import make as make_mock
 from launcher.control.manager import ControllerManager
+from launcher.control.manager_services import ManagerServices
 from launcher.control.resources import Component
 from launcher.errors import LaunchError
 from launcher.sim import schedule
@@ -287,6 +288,7 @@ class GzRos2Control(Plugin):
         self.components = [SimSystem(b, self) if b.is_sim else make_mock(b) for b in self.blocks]
         try:
             self.manager = ControllerManager(self.node, self.components, self.files, self.remaps)
+            ManagerServices(self.manager)
         except LaunchError:
             self.node.destroy_node()
             raise
