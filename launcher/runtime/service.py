@@ -31,6 +31,7 @@ from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Printer, Record
 from launcher.runtime.process import ManagedProcess, ProcessSpec
 from launcher.runtime.process_table import ProcessTable
+from launcher.runtime.start_gate import StartGate
 from launcher.runtime.system import Processes, System
 
 
@@ -72,15 +73,15 @@ class LaunchService:
         self._given = set(configurations or {})  # the command line's name:=value names
         self._handlers: list[events.EventHandler] = []
         self._timers: dict[Timer, bool] = {}  # timer -> cancel on shutdown
-        self._holds = 0  # helpers to come or at work that graph processes wait for
-        self._held: list[tuple[ProcessSpec, Callable[[Any], None] | None]] = []
         self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
                                   self.run_log, self.log, self.emit, lambda: bool(self._handlers),
                                   self._check_idle, on_graph and self._graph_hook(on_graph),
-                                  self._helper_over)
+                                  lambda done: self.gate.helper_over(done))
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
         self.lifecycles = LifecycleRequests(self.loop, lifecycle, self.emit, self.log,
                                             self.report, self._check_idle)
+        self.gate = StartGate(self.start_process, self.fail, self.report,
+                              lambda: self.ending.shutting_down, lambda: self._draining)
         self.ending = Ending(self.loop, self.table, self.custody, self.log, self.emit,
                              self._pending, self._queue.clear, self._cancel)
 
@@ -156,7 +157,7 @@ class LaunchService:
         checks, self.context.loaded_checks = self.context.loaded_checks, []
         for check in checks:
             self._guarded(check, None)
-        self._release()
+        self.gate.release()
         self._check_given()
         self._check_idle()
 
@@ -213,10 +214,8 @@ class LaunchService:
         if self.ending.shutting_down:
             self.log("DEBUG", spec.label, "not started: the launch is shutting down")
             return
-        if (self._holds and spec.joins_graph and not spec.helper_done_line) or \
-                (spec.after_loading and self._draining):
+        if self.gate.keeps(spec, started):
             self.log("DEBUG", spec.label, "waits for the launch files and their parameters")
-            self._held.append((spec, started))
             return
         process = self.table.start(spec)
         if started is not None:
@@ -226,35 +225,8 @@ class LaunchService:
         """A helper is coming that puts the launch's parameters on the graph (ROS 1's): the
         processes that may join the graph wait until it is done, as roslaunch sets every
         parameter before it starts a node. A helper that ends before it is done fails the
-        launch, and they never start."""
-        self._holds += 1
-
-    def _helper_over(self, done: bool) -> None:
-        self._holds = max(0, self._holds - 1)
-        if self.ending.shutting_down:
-            self._held.clear()
-            return
-        if not done:
-            self._held.clear()
-            self.fail(ExecutionError("the launch's parameters could not be set on the "
-                                     "parameter server (the error is above); no node was "
-                                     "started"))
-            return
-        self._release()
-
-    def _release(self) -> None:
-        """Start what waited, once nothing is held (see start_process)."""
-        if self._holds or self._draining:
-            return
-        held, self._held = self._held, []
-        for spec, started in held:
-            if self.ending.shutting_down:
-                return
-            try:
-                self.start_process(spec, started)
-            except OSError as exc:
-                self.report(ExecutionError(f"cannot start '{spec.argv[0]}': "
-                                           f"{exc.strerror or exc}"))
+        launch, and they never start (start_gate.py)."""
+        self.gate.hold()
 
     def load_components(self, container: str, requests: list[LoadRequest],
                         alive: Callable[[], bool] | None) -> None:
@@ -307,7 +279,7 @@ class LaunchService:
     # --- what the ending asks ---------------------------------------------------------------
     def _pending(self) -> bool:
         return bool(self._queue or self._draining or self._timers or self.loads.out or
-                    self.lifecycles.out or (self._held and not self.ending.shutting_down))
+                    self.lifecycles.out or self.gate.waiting)
 
     def _cancel(self) -> None:
         for timer, cancel in list(self._timers.items()):
