@@ -95,9 +95,9 @@ def host(session: Any) -> Hosted:
     def reset() -> None:
         with lock:
             for name in list(node.parameters):
-                node.request_parameter(name, None)
+                node.params.request(name, None)
             for name, value in master_parameters(str(uuid.uuid1())).items():
-                node.set_parameter_value(key(name), value)
+                node.params.set(key(name), value)
 
     reset()
     thread = threading.Thread(target=node.spin, name="parameter_server", daemon=True)

@@ -21,7 +21,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import zenoh
 
@@ -29,6 +29,7 @@ from launcher.bus import components, keys, names, ros_args
 from launcher.bus.clock import Clock
 from launcher.bus.host import Host
 from launcher.bus.logging import Logger
+from launcher.bus.node_parameters import NodeParameters
 from launcher.bus.publisher import Publisher
 from launcher.bus.qos import QoS, qos_of
 from launcher.bus.services import Client, Service
@@ -36,9 +37,6 @@ from launcher.bus.session import open_session
 from launcher.bus.subscription import Subscription
 from launcher.bus.timer import Rate, Timer
 from launcher.errors import LaunchError
-
-if TYPE_CHECKING:
-    from launcher.bus.declarations import Param
 
 __all__ = ["Logger", "Node", "Parameter", "Publisher", "Rate", "Subscription", "Timer"]
 
@@ -52,9 +50,6 @@ def _hear_ctrl_c() -> None:
     if threading.current_thread() is threading.main_thread() and \
             signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
         signal.signal(signal.SIGINT, signal.default_int_handler)
-
-
-_MISSING = object()
 
 
 class Parameter:
@@ -78,10 +73,11 @@ class Node:
         self.remaps = parsed.remaps
         self.args = parsed.user_args
         logger = Logger(self.fully_qualified_name, parsed.log_level or "INFO")
-        self._parameters = ros_args.node_parameters(parsed, self.name, self.namespace)
+        given = ros_args.node_parameters(parsed, self.name, self.namespace)
         if within is not None:
-            self._parameters.update(within.parameters)
+            given.update(within.parameters)
             within.nodes.append(self)
+        self.params = NodeParameters(given, self.fully_qualified_name)
         self.owner: Any = None  # the rclpy node wrapping this one, if any
         self.host = Host(session or open_session("peer"), self.namespace,
                           self.name, logger, space)
@@ -100,12 +96,11 @@ class Node:
         register = getattr(threading, "_register_atexit", atexit.register)
         register(self.destroy_node)
         _hear_ctrl_c()
-        self._on_set: list[Callable[[str, Any], None]] = []
         if parameter_services:
             from launcher.bus.parameters import serve  # rcl_interfaces types: only here
 
             serve(self)
-        self._clock = Clock(self, bool(self._parameters.get("use_sim_time", False)))
+        self._clock = Clock(self, bool(self.params.values.get("use_sim_time", False)))
 
     def _asked_to_shut_down(self, query: Any) -> None:
         """`rosnode kill`: the process ends as on Ctrl-C (rospy's and rclpy's shutdown, the
@@ -183,96 +178,26 @@ class Node:
 
         return build(type_name, fields)
 
-    # --- parameters -------------------------------------------------------------------------
+    # --- parameters (bus/node_parameters.py: `params`) -----------------------------------
     def declare_parameter(self, name: str, default: Any = None) -> Parameter:
-        self._parameters.setdefault(name, default)
-        return Parameter(name, self._parameters[name])
+        return Parameter(name, self.params.default(name, default))
 
     def get_parameter(self, name: str) -> Parameter:
-        if name not in self._parameters:
-            raise LaunchError(f"parameter '{name}' is not declared on {self.fully_qualified_name}")
-        return Parameter(name, self._parameters[name])
+        return Parameter(name, self.params.get(name))
 
     def has_parameter(self, name: str) -> bool:
-        return name in self._parameters
+        return self.params.has(name)
 
     def set_parameters(self, parameters: list[Parameter]) -> None:
         for parameter in parameters:
-            self.set_parameter_value(parameter.name, parameter.value)
-
-    def set_parameter_value(self, name: str, value: Any) -> None:
-        """Set one parameter (also from `launcher param set`) and tell the listeners."""
-        self._parameters[name] = value
-        for listener in self._on_set:
-            listener(name, value)
+            self.params.set(parameter.name, parameter.value)
 
     def add_on_set_parameters_callback(self, callback: Callable[[str, Any], None]) -> None:
-        self._on_set.append(callback)
-
-    # A request from outside (`param set`/`delete`, ros2 param): `gate` (rclpy's node, with its
-    # declared types, read-only flags and set callbacks) may refuse it with a reason; `describer`
-    # gives a parameter's descriptor fields.
-    gate: Callable[[str, Any], str | None] | None = None
-    describer: Callable[[str], dict[str, Any]] | None = None
-
-    def request_parameter(self, name: str, value: Any) -> str | None:
-        """Set (or, with None, delete) a parameter as asked from outside; the reason it was
-        refused, or None."""
-        if self.gate is not None:
-            refused = self.gate(name, value)
-            if refused:
-                return refused
-        if value is None:
-            if name not in self._parameters:
-                return f"parameter '{name}' is not set"
-            del self._parameters[name]
-            return None
-        self.set_parameter_value(name, value)
-        return None
-
-    def declare(self, declared: tuple[Param, ...], only: tuple[str, ...] = ()) -> dict[str, Any]:
-        """Parameters declared as data (bus/declarations.py; those named in `only`, else
-        all): checked against their declarations, their defaults kept as the node's values
-        (listed, as a ROS node lists what it declares) and described by describe_parameter.
-        ParameterError for the first bad one."""
-        from launcher.bus import declarations
-
-        self._declared = declared
-        found = declarations.read(declared, self._parameters, only)
-        for name, value in found.items():
-            self._parameters.setdefault(name, value)
-        return found
-
-    _declared: tuple[Param, ...] = ()
-
-    def describe_parameter(self, name: str) -> dict[str, Any]:
-        if self.describer is not None:
-            return self.describer(name)
-        from launcher.bus import declarations
-
-        for full, param in declarations.expand(self._declared, self._parameters):
-            if full == name:
-                return declarations.descriptor(full, param)
-        from launcher.bus.parameters import type_of
-
-        return {"name": name, "type": type_of(self._parameters.get(name))}
+        self.params.on_set(callback)
 
     @property
     def parameters(self) -> dict[str, Any]:
-        return dict(self._parameters)
-
-    def keep_parameter(self, name: str, value: Any) -> None:
-        """Hold a value as the node's own without telling the listeners: a client library
-        (rclpy's node) that has checked and announced the change itself."""
-        self._parameters[name] = value
-
-    def drop_parameter(self, name: str) -> bool:
-        """Forget one parameter (undeclared, deleted); False if it was not set."""
-        return self._parameters.pop(name, _MISSING) is not _MISSING
-
-    def drop_parameters(self) -> None:
-        """Forget them all: a client library that lists only what its node declares."""
-        self._parameters.clear()
+        return self.params.values
 
     def get_logger(self) -> Logger:
         return self.host.logger

@@ -83,7 +83,7 @@ def serve(node: Any) -> None:
     def set_parameters(request: Any, response: Any) -> Any:
         results = []
         for parameter in request.parameters:
-            refused = node.request_parameter(parameter.name, from_message(parameter.value))
+            refused = node.params.request(parameter.name, from_message(parameter.value))
             results.append(build("rcl_interfaces/msg/SetParametersResult",
                                  {"successful": refused is None, "reason": refused or ""}))
         response.results = results
@@ -91,7 +91,7 @@ def serve(node: Any) -> None:
 
     def describe_parameters(request: Any, response: Any) -> Any:
         response.descriptors = [build("rcl_interfaces/msg/ParameterDescriptor",
-                                      node.describe_parameter(name)) for name in request.names]
+                                      node.params.describe(name)) for name in request.names]
         return response
 
     node.create_service(LIST, "~/list_parameters", list_parameters, type_hash=HASHES[LIST])

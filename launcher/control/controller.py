@@ -71,7 +71,7 @@ class Controller:
         """The declared parameters (those named, else all) from the controller's node, checked,
         with their defaults; a bad one is refused at its line in the parameter file."""
         try:
-            return self.node.declare(self.PARAMETERS, only)
+            return self.node.params.declare(self.PARAMETERS, only)
         except ParameterError as exc:
             name = exc.name
             place = self.place_of(name) if name in self.node.parameters else ""

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from launcher.bus.declarations import read
+from launcher.bus.node_parameters import NodeParameters
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
 from launcher.nodes.foxglove.assets import DEFAULT_ALLOWLIST, Assets
@@ -77,13 +77,10 @@ def test_assets_stay_inside_their_package_and_the_allowlist(tmp_path):
 
 
 class FakeNode:
-    """A node's parameters, read as the bus node reads declared ones."""
+    """A node with its real parameters and nothing else."""
 
     def __init__(self, values):
-        self.values = values
-
-    def declare(self, declared, only=()):
-        return read(declared, self.values, only)
+        self.params = NodeParameters(dict(values), "/foxglove_bridge")
 
 
 @pytest.mark.parametrize("values, expected", [

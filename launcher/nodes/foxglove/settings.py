@@ -49,7 +49,7 @@ class Settings:
 
     def __init__(self, node: Node) -> None:
         try:
-            value = node.declare(parameters())
+            value = node.params.declare(parameters())
         except ParameterError as exc:
             raise LaunchError(f"foxglove_bridge: {exc}") from None
         self.port, self.address = value["port"], value["address"]

@@ -101,14 +101,14 @@ class Node:
         self._pre_set_callbacks: list[Callable[[list[Parameter]], Any]] = []
         self._post_set_callbacks: list[Callable[[list[Parameter]], None]] = []
         self._pending_post: list[Parameter] | None = None
-        self._bus.drop_parameters()  # what is declared, as rclpy lists it
+        self._bus.params.drop_all()  # what is declared, as rclpy lists it
         self._declare_now("use_sim_time", self._overrides.get("use_sim_time", False))
         if automatically_declare_parameters_from_overrides:
             for name, value in self._overrides.items():
                 if name not in self._declared:
                     self._declare_now(name, value)
         self._bus.add_on_set_parameters_callback(self._on_bus_set)
-        self._bus.gate, self._bus.describer = self._gate, self._describe_for_bus
+        self._bus.params.gate, self._bus.params.describer = self._gate, self._describe_for_bus
         self._clock = ROSClock(self._bus.get_clock())
         self._context.track_node(self)
         if enable_logger_service:
@@ -564,7 +564,7 @@ class Node:
     def _declare_now(self, name: str, value: Any) -> Parameter:
         parameter = Parameter(name, value=_plain(value))
         self._declared[name] = parameter
-        self._bus.keep_parameter(name, parameter.value)
+        self._bus.params.keep(name, parameter.value)
         return parameter
 
     def declare_parameter(self, name: str, value: Any = None, descriptor: Any = None,
@@ -616,7 +616,7 @@ class Node:
         if name not in self._declared:
             raise ParameterNotDeclaredException(name)
         del self._declared[name]
-        self._bus.drop_parameter(name)
+        self._bus.params.drop(name)
 
     def has_parameter(self, name: str) -> bool:
         """Whether the parameter is declared."""
@@ -697,7 +697,7 @@ class Node:
                 return result
         for parameter in parameter_list:
             self._declared[parameter.name] = parameter
-            self._bus.keep_parameter(parameter.name, parameter.value)
+            self._bus.params.keep(parameter.name, parameter.value)
         self._post_set(parameter_list)
         return SetParametersResult(successful=True)
 
@@ -774,7 +774,7 @@ class Node:
         for parameter in parameters:
             self._declared[parameter.name] = parameter
             if parameter.name != name:  # one a pre-set callback added: set here
-                self._bus.keep_parameter(parameter.name, parameter.value)
+                self._bus.params.keep(parameter.name, parameter.value)
         self._pending_post = parameters
         return None
 

@@ -207,7 +207,7 @@ def set_param(param_name: str, param_value: Any) -> None:
     key = _parameter_key(param_name)
     if param_name.startswith("~") or \
             _on_server(lambda server: server.set(key, param_value)) is _unspecified:
-        node.set_parameter_value(key, param_value)
+        node.params.set(key, param_value)
 
 
 def has_param(param_name: str) -> bool:
@@ -237,7 +237,7 @@ def delete_param(param_name: str) -> None:
         deleted = _on_server(delete) is True
     found = _given(key, node.parameters)
     if found is not None:
-        node.drop_parameter(found)
+        node.params.drop(found)
     elif not deleted:
         raise KeyError(param_name)
 

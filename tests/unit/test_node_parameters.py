@@ -1,0 +1,33 @@
+"""A node's parameter values and who may change them (bus/node_parameters.py)."""
+
+from __future__ import annotations
+
+import pytest
+
+from launcher.bus.node_parameters import NodeParameters
+from launcher.errors import LaunchError
+
+
+def test_a_set_is_heard_by_the_listeners_and_a_kept_value_is_not():
+    params, heard = NodeParameters({}, "/n"), []
+    params.on_set(lambda name, value: heard.append((name, value)))
+    params.set("gain", 2.0)
+    params.keep("quiet", 1)
+    assert heard == [("gain", 2.0)] and params.values == {"gain": 2.0, "quiet": 1}
+
+
+def test_a_request_from_outside_may_be_refused_by_the_gate():
+    params = NodeParameters({"gain": 1.0}, "/n")
+    params.gate = lambda name, value: "read-only" if name == "gain" else None
+    assert params.request("gain", 3.0) == "read-only" and params.get("gain") == 1.0
+    assert params.request("other", 3.0) is None and params.get("other") == 3.0
+
+
+def test_deleting_a_parameter_that_is_not_set_says_so():
+    params = NodeParameters({}, "/n")
+    assert params.request("missing", None) == "parameter 'missing' is not set"
+
+
+def test_an_unknown_parameter_is_refused_naming_the_node():
+    with pytest.raises(LaunchError, match="parameter 'x' is not declared on /robot/driver"):
+        NodeParameters({}, "/robot/driver").get("x")
