@@ -108,3 +108,21 @@ class Subscription:
             return
         self._subscriber.undeclare()
         self._token.undeclare()
+
+
+class FirstMessage:
+    """A subscription's callback that keeps the first message it is given (the waits for
+    one message that rclpy's and rospy's wait_for_message are)."""
+
+    def __init__(self) -> None:
+        self.message: Any = None
+        self._arrived = threading.Event()
+
+    def __call__(self, message: Any) -> None:
+        if not self._arrived.is_set():
+            self.message = message
+            self._arrived.set()
+
+    def wait(self, timeout: float) -> bool:
+        """Whether the message has come, waiting up to `timeout` seconds for it."""
+        return self._arrived.wait(timeout)

@@ -20,15 +20,15 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from launcher.sim import schedule
-from launcher.sim.plugins import Plugin, PluginError
+from launcher.sim.plugins import PluginError
 from launcher.sim.plugins.gazebo_ros import ros_node
+from launcher.sim.plugins.periodic import PeriodicPublisher
 from launcher.sim.sensors.noise import generator
 
 WORLD_FRAMES = ("world", "/world", "map", "/map")
 
 
-class _GroundTruth(Plugin):
+class _GroundTruth(PeriodicPublisher):
     """A gazebo_ros model plugin that publishes one ROS message at its update rate."""
 
     unknown_parameters = "ignore"
@@ -73,16 +73,6 @@ class _GroundTruth(Plugin):
                                                       ros=True)
         self.rng = generator(getattr(self.sim, "seed", 0), f"{self.entity.name}::{self.label}")
         self.reset()
-
-    def reset(self) -> None:
-        self.next_update = 0.0
-
-    def post_step(self, model: Any, data: Any) -> None:
-        now = data.time
-        if not schedule.tick(self, now, self.rate):
-            return
-        if self.publisher.get_subscription_count():
-            self.publisher.publish(self.measure(model, data))
 
     def noisy(self, values: Any) -> Any:
         values = np.asarray(values, dtype=float)

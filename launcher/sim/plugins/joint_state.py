@@ -14,8 +14,8 @@ import mujoco
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
-from launcher.sim import schedule
-from launcher.sim.plugins import Plugin, PluginError
+from launcher.sim.plugins import PluginError
+from launcher.sim.plugins.periodic import PeriodicPublisher
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
 
@@ -29,7 +29,7 @@ class Parameters:
     update_rate: float = attr(Kind.FLOAT, 50.0, minimum=0.0)
 
 
-class JointStatePublisher(Plugin):
+class JointStatePublisher(PeriodicPublisher):
     declared = Parameters
 
     def prepare(self, spec: Any) -> None:
@@ -54,15 +54,8 @@ class JointStatePublisher(Plugin):
         self.qpos = [int(model.jnt_qposadr[i]) for i in ids]
         self.dofs = [int(model.jnt_dofadr[i]) for i in ids]
 
-    def reset(self) -> None:
-        self.next_update = 0.0
-
-    def post_step(self, model: Any, data: Any) -> None:
-        now = data.time
-        if not schedule.tick(self, now, self.rate):
-            return
-        if self.publisher.get_subscription_count():
-            self.publisher.publish(self.state(self.sim.transport, now, data))
+    def measure(self, model: Any, data: Any) -> Any:
+        return self.state(self.sim.transport, data.time, data)
 
     def state(self, transport: Any, now: float, data: Any) -> Any:
         """The message of the joints' state now."""

@@ -3,8 +3,9 @@ node (a subscription of its own that lives for the wait)."""
 
 from __future__ import annotations
 
-import threading
 from typing import Any
+
+from launcher.bus.subscription import FirstMessage
 
 
 def wait_for_message(msg_type: Any, node: Any, topic: str, *, qos_profile: Any = 1,
@@ -14,24 +15,18 @@ def wait_for_message(msg_type: Any, node: Any, topic: str, *, qos_profile: Any =
     from launcher.compat import rosidl
     from rclpy.qos import to_launcher
 
-    got: list[Any] = []
-    arrived = threading.Event()
-
-    def take(message: Any) -> None:
-        if not got:
-            got.append(message)
-            arrived.set()
+    first = FirstMessage()
     type_name = rosidl.type_name_of(msg_type)
-    subscription = node.handle.create_subscription(type_name, topic, take,
+    subscription = node.handle.create_subscription(type_name, topic, first,
                                                  to_launcher(qos_profile), inline=True,
                                                  make=rosidl.make)
     try:
         if time_to_wait is None or time_to_wait < 0:
-            while not arrived.wait(0.1):
+            while not first.wait(0.1):
                 if not node.context.ok():
                     return False, None
-        elif not arrived.wait(time_to_wait):
+        elif not first.wait(time_to_wait):
             return False, None
-        return True, got[0]
+        return True, first.message
     finally:
         subscription.destroy()

@@ -11,6 +11,7 @@ import time as _time
 from collections.abc import Callable
 from typing import Any
 
+from launcher.bus.subscription import FirstMessage
 from rospy.core import logerr, need_node, shut_down, signal_shutdown, state
 from rospy.exceptions import ROSException, ROSInitException, ROSInterruptException
 from rospy.topics import Subscriber, attach_pending
@@ -261,23 +262,17 @@ def wait_for_message(topic: str, topic_type: Any, timeout: float | None = None) 
     ROSInterruptException at shutdown.
     """
     need_node("wait_for_message")
-    got: list[Any] = []
-    arrived = threading.Event()
-
-    def take(message: Any) -> None:
-        if not got:
-            got.append(message)
-            arrived.set()
-    subscriber = Subscriber(topic, topic_type, take)
+    first = FirstMessage()
+    subscriber = Subscriber(topic, topic_type, first)
     try:
         end = None if timeout is None else _time.monotonic() + timeout
-        while not arrived.wait(0.1):
+        while not first.wait(0.1):
             if state.shutdown.is_set():
                 raise ROSInterruptException("rospy shutdown")
             if end is not None and _time.monotonic() >= end:
                 raise ROSException(f"timeout exceeded while waiting for message on topic "
                                    f"{subscriber.name}")
-        return got[0]
+        return first.message
     finally:
         subscriber.unregister()
 
