@@ -12,7 +12,7 @@ from launcher.sim import schedule
 from launcher.sim.plugins import Plugin
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors import ALSO_RUN_BY, SYSTEM_CLASSES, SYSTEMS
-from launcher.sim.sensors.classic import RosOutput, classic_outputs, convert
+from launcher.sim.sensors.classic import ClassicOutputs, classic_outputs
 from launcher.sim.sensors.config import SensorConfig
 from launcher.sim.sensors.metrics import MESSAGE, SUFFIX, Metrics, enabled
 from launcher.sim.sensors.noise import generator
@@ -24,11 +24,16 @@ class Sensor(Plugin):
 
     message_type = ""  # the sim's type
     suffix = ""  # Gazebo's topic suffix
+    missing = ""  # the world system it needs and the world lacks
+    publisher: Any = None  # on the sim's topic
+    metrics_publisher: Any = None
+    metrics: Metrics | None = None
 
     def __init__(self, sim: Any, entity: Any, config: SensorConfig) -> None:
         super().__init__(sim, entity, config)
         self.config = config
         self.label = f"sensor '{config.name}' ({config.element.get('type', config.kind)})"
+        self.ros = ClassicOutputs([])  # its gazebo_ros plugins' topics (classic.py)
 
     # --- names, as gz-sim gives them ------------------------------------------------------
     @property
@@ -77,8 +82,9 @@ class Sensor(Plugin):
             if exc.message.startswith(self.label):
                 raise
             raise SdfError(f"{self.label}: {exc.message}", exc.location) from None
-        self.outputs = classic_outputs(self.config.element, self.config.kind,
-                                       self.config.scope_link, self.label, self._warn)
+        self.ros = ClassicOutputs(classic_outputs(self.config.element, self.config.kind,
+                                                  self.config.scope_link, self.label,
+                                                  self._warn))
 
     def _warn(self, where: Any, message: str) -> None:
         self.sim.transport.logger.warning(f"{where.location.file}:{where.location.line}: "
@@ -90,7 +96,7 @@ class Sensor(Plugin):
     def load(self) -> None:
         self.setup()
         # a gazebo_ros plugin's sensor runs as in Gazebo classic, which has no systems
-        self.missing = "" if self.outputs else self._missing_system()
+        self.missing = "" if self.ros.outputs else self._missing_system()
         if self.missing:
             self.sim.transport.logger.warning(
                 f"{self.config.where}: {self.label} publishes nothing: the world does not "
@@ -118,9 +124,7 @@ class Sensor(Plugin):
     def make_publishers(self) -> None:
         transport = self.sim.transport
         self.publisher = transport.publisher(self.message_type, self.topic_name())
-        self.ros_publishers = [(output, transport.publisher(output.type_name, output.topic,
-                                                            ros=True))
-                               for output in self.outputs]
+        self.ros.open(transport)
         if enabled(self.config.element):
             self.metrics = Metrics(self.scoped_name, self.config.update_rate)
             self.metrics_publisher = transport.publisher(MESSAGE,
@@ -131,8 +135,6 @@ class Sensor(Plugin):
 
     def bind(self, model: Any, data: Any) -> None:
         self.site = model.site(f"{self.entity.name}/{self.config.site}").id
-
-    missing = ""  # the world system it needs and the world lacks
 
     def reset(self) -> None:
         self.next_update = math.inf if self.missing else 0.0
@@ -146,7 +148,7 @@ class Sensor(Plugin):
             return
         if self.reports(message):
             self.publisher.publish(message)
-        self.publish_ros(message, data)
+        self.ros.publish(self, message, data, self.config.always_on)
         if self.metrics_publisher is not None and \
                 self.metrics_publisher.get_subscription_count() > 0:
             self.metrics_publisher.publish(self.sim.transport.message(
@@ -155,7 +157,7 @@ class Sensor(Plugin):
     def watched(self) -> bool:
         """Whether the sensor has work: `<always_on>`, or someone listens to any of it."""
         return self.config.always_on or self.publisher.get_subscription_count() > 0 or \
-            any(p.get_subscription_count() > 0 for _, p in self.ros_publishers) or \
+            self.ros.wanted() or \
             (self.metrics_publisher is not None and
              self.metrics_publisher.get_subscription_count() > 0)
 
@@ -163,29 +165,16 @@ class Sensor(Plugin):
         """Whether the sim's topic gets this reading (a contact sensor's only when touching)."""
         return True
 
-    def publish_ros(self, reading: Any, data: Any) -> None:
-        """The reading on its gazebo_ros plugins' topics, for those someone listens to."""
-        for output, publisher in self.ros_publishers:
-            if self.config.always_on or publisher.get_subscription_count() > 0:
-                publisher.publish(convert(self, output, reading, data))
-
     def measure(self, model: Any, data: Any) -> Any:
         """The message to publish now, or None for none."""
         raise NotImplementedError
-
-    publisher: Any = None
-    metrics_publisher: Any = None
-    metrics: Metrics | None = None
-    ros_publishers: list[tuple[RosOutput, Any]] = []
-    outputs: list[RosOutput] = []
 
     def close(self) -> None:
         self.claims.release(self)
         for publisher in (self.publisher, self.metrics_publisher):
             if publisher is not None:
                 publisher.destroy()
-        for _, publisher in self.ros_publishers:
-            publisher.destroy()
+        self.ros.close()
 
     # --- helpers ------------------------------------------------------------------------------
     def header(self, data: Any) -> Any:

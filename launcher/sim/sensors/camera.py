@@ -193,7 +193,7 @@ class Camera(Sensor):
                 "distortion": self.distortion,
                 "update_rate": self.config.update_rate,
                 "ros": [{"stream": o.stream, "type": o.type_name, "topic": o.topic,
-                         "frame_id": o.frame_id} for o in self.outputs
+                         "frame_id": o.frame_id} for o in self.ros.outputs
                         if self.config.kind != "camera" or o.stream in COLOUR_STREAMS]}
 
     # --- scheduling: the sim decides when, the renderer draws -------------------------------

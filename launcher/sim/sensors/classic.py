@@ -159,6 +159,33 @@ _FAMILIES = {"ray": _ray, "laser": _laser, "camera": _camera, "imu": _imu, "gps"
              "bumper": _bumper}
 
 
+class ClassicOutputs:
+    """A sensor's gazebo_ros plugins: the ROS topics they publish, and each reading as they
+    publish it (to those someone listens to, or all with `<always_on>`)."""
+
+    def __init__(self, outputs: list[RosOutput]) -> None:
+        self.outputs = outputs
+        self.publishers: list[tuple[RosOutput, Any]] = []
+
+    def open(self, transport: Any) -> None:
+        self.publishers = [(output, transport.publisher(output.type_name, output.topic,
+                                                         ros=True))
+                           for output in self.outputs]
+
+    def wanted(self) -> bool:
+        return any(p.get_subscription_count() > 0 for _, p in self.publishers)
+
+    def publish(self, sensor: Any, reading: Any, data: Any, always: bool) -> None:
+        for output, publisher in self.publishers:
+            if always or publisher.get_subscription_count() > 0:
+                publisher.publish(convert(sensor, output, reading, data))
+
+    def close(self) -> None:
+        for _, publisher in self.publishers:
+            publisher.destroy()
+        self.publishers = []
+
+
 # --- a reading as each output's message -------------------------------------------------------
 def convert(sensor: Any, output: RosOutput, reading: Any, data: Any) -> Any:
     """The message `output` publishes for the sensor's `reading` (a lidar's ranges, the

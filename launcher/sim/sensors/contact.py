@@ -112,7 +112,7 @@ class Contact(Sensor):
     def _empty(self, data: Any) -> Any:
         """No touch: nothing on the sim's topic, and an empty reading for a gazebo_ros bumper
         (which reports every update)."""
-        if not self.outputs:
+        if not self.ros.outputs:
             return None
         return self.sim.transport.message(self.message_type, header=self.header(data),
                                           contacts=[])

@@ -122,7 +122,7 @@ class Lidar(Sensor):
             self.publisher.publish(self.scan_message(data, ranges))
         if self.points_publisher.get_subscription_count() > 0:
             self.points_publisher.publish(self.points_message(data, ranges))
-        self.publish_ros(ranges, data)
+        self.ros.publish(self, ranges, data, self.config.always_on)
 
     def cast(self, model: Any, data: Any) -> Any:
         """The range of each ray (inf past range_max or with nothing there), noise added."""
