@@ -24,10 +24,12 @@ class Client:
 
     @property
     def service_name(self) -> str:
+        """The service's fully qualified name."""
         return self._bus.name
 
     @property
     def srv_name(self) -> str:
+        """The service's fully qualified name (rclpy's older spelling)."""
         return self._bus.name
 
     def _check(self, request: Any) -> Any:
@@ -53,6 +55,9 @@ class Client:
         self._introspection.configure(clock, service_event_qos_profile, introspection_state)
 
     def call(self, request: Any, timeout_sec: float | None = None) -> Any:
+        """Call the service and wait for its response (the executor need not spin);
+        LaunchError after `timeout_sec` seconds.
+        """
         from rclpy.service_introspection import REQUEST_SENT, RESPONSE_RECEIVED
 
         sequence = self._introspection.next_sequence()
@@ -63,6 +68,9 @@ class Client:
         return response
 
     def call_async(self, request: Any) -> Future:
+        """Call the service: a Future of its response, completed on the node's
+        executor.
+        """
         payload = self._check(request)
         future = Future(executor=self._node.executor)
         self._pending.add(future)
@@ -94,12 +102,17 @@ class Client:
         return future
 
     def remove_pending_request(self, future: Future) -> None:
+        """Forget a call's Future (its response, if it comes, is dropped)."""
         self._pending.discard(future)
 
     def service_is_ready(self) -> bool:
+        """Whether a server of the service is on the graph now."""
         return self._bus.wait_for_service(0.05)
 
     def wait_for_service(self, timeout_sec: float | None = None) -> bool:
+        """Wait until a server is on the graph: True, or False after
+        `timeout_sec` seconds (None: as long as it takes).
+        """
         if timeout_sec is None:
             while not self._bus.wait_for_service(1.0):
                 if not self._node.context.ok():
@@ -108,8 +121,10 @@ class Client:
         return self._bus.wait_for_service(max(timeout_sec, 0.0))
 
     def destroy(self) -> None:
+        """Take the client off the graph."""
         self._bus.destroy()
 
     @property
     def handle(self) -> Any:
+        """The launcher bus client under this one."""
         return self._bus

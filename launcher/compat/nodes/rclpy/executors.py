@@ -54,10 +54,12 @@ class Executor:
 
     @property
     def context(self) -> Any:
+        """The context the executor runs in."""
         return self._context
 
     # --- nodes ------------------------------------------------------------------------------
     def add_node(self, node: Any) -> bool:
+        """Spin `node` too; False if it was added already."""
         rclpy.node.check_alive(node)
         with self._lock:
             if node in self._nodes:
@@ -68,18 +70,24 @@ class Executor:
         return True
 
     def remove_node(self, node: Any) -> None:
+        """Stop spinning `node`."""
         with self._lock:
             if node in self._nodes:
                 self._nodes = tuple(n for n in self._nodes if n is not node)
 
     def get_nodes(self) -> list[Any]:
+        """The nodes the executor spins."""
         with self._lock:
             return list(self._nodes)
 
     def wake(self) -> None:
+        """Wake a spin that waits, to look at its work again."""
         self._context.ring()
 
     def create_task(self, callback: Any, *args: Any, **kwargs: Any) -> Task:
+        """Run `callback(*args, **kwargs)` (a coroutine function may await) as a task
+        of the executor: a Future of its result.
+        """
         task = Task(callback, args, kwargs, executor=self)
         self.add_ready(task)
         return task
@@ -90,6 +98,7 @@ class Executor:
         self.wake()
 
     def shutdown(self, timeout_sec: float | None = None) -> bool:
+        """Stop spinning and drop the nodes; True once done."""
         self._is_shutdown = True
         with self._lock:
             for node in self._nodes:
@@ -176,6 +185,9 @@ class Executor:
 
     # --- spinning ---------------------------------------------------------------------------
     def spin_once(self, timeout_sec: float | None = None) -> None:
+        """Run one ready callback (a due timer first), waiting up to `timeout_sec`
+        (None: until one comes).
+        """
         try:
             work = self._next_work(timeout_sec)
         except ShutdownException:  # (rclpy's spin_once lets an executor's shutdown pass)
@@ -184,6 +196,7 @@ class Executor:
             self._run(*work)
 
     def spin(self) -> None:
+        """Run callbacks until the context shuts down or the executor does."""
         while self._context.ok() and not self._is_shutdown:
             self.spin_once()
 
@@ -199,6 +212,9 @@ class Executor:
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None
                                    ) -> None:
+        """Run callbacks until `future` is done, or `timeout_sec` has
+        passed (None or negative: no limit).
+        """
         future.add_done_callback(lambda _f: self.wake())
         if timeout_sec is None or timeout_sec < 0:
             while self._context.ok() and not future.done() and not self._is_shutdown:
@@ -213,6 +229,7 @@ class Executor:
 
     def spin_once_until_future_complete(self, future: Future,
                                         timeout_sec: float | None = None) -> None:
+        """Run one callback, unless `future` is done already."""
         if future.done():
             return
         self.spin_once(timeout_sec)
@@ -244,11 +261,15 @@ class MultiThreadedExecutor(Executor):
         self._pool.submit(work)
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
+        """Hand one ready callback to the thread pool, waiting up to
+        `timeout_sec` for one.
+        """
         if self._errors:
             raise self._errors.popleft()
         super().spin_once(timeout_sec)
 
     def shutdown(self, timeout_sec: float | None = None) -> bool:
+        """Stop spinning, and the pool's threads once their callbacks end."""
         super().shutdown(timeout_sec)
         self._pool.shutdown(wait=timeout_sec is None or timeout_sec > 0)
         return True

@@ -75,14 +75,17 @@ class Parameter:
 
     @property
     def name(self) -> str:
+        """The parameter's name."""
         return self._name
 
     @property
     def type_(self) -> _Type:
+        """The parameter's Parameter.Type."""
         return self._type_
 
     @property
     def value(self) -> Any:
+        """The parameter's value."""
         return self._value
 
     def __repr__(self) -> str:
@@ -93,6 +96,7 @@ class Parameter:
             other._name, other._type_, other._value)
 
     def get_parameter_value(self) -> Any:
+        """The value as an rcl_interfaces/ParameterValue message."""
         from rcl_interfaces.msg import ParameterValue
 
         value = ParameterValue(type=self._type_.value)
@@ -108,16 +112,19 @@ class Parameter:
         return value
 
     def to_parameter_msg(self) -> Any:
+        """The parameter as an rcl_interfaces/Parameter message."""
         from rcl_interfaces.msg import Parameter as Message
 
         return Message(name=self._name, value=self.get_parameter_value())
 
     @classmethod
     def from_parameter_msg(cls, message: Any) -> Parameter:
+        """A Parameter from an rcl_interfaces/Parameter message."""
         return cls(message.name, value=parameter_value_to_python(message.value))
 
 
 def parameter_value_to_python(value: Any) -> Any:
+    """The Python value of an rcl_interfaces/ParameterValue message."""
     kind = _Type(value.type)
     field = {_Type.BOOL: "bool_value", _Type.INTEGER: "integer_value",
              _Type.DOUBLE: "double_value", _Type.STRING: "string_value",

@@ -13,10 +13,12 @@ class Service:
 
     @property
     def service_name(self) -> str:
+        """The service's fully qualified name."""
         return self._bus.name
 
     @property
     def srv_name(self) -> str:
+        """The service's fully qualified name (rclpy's older spelling)."""
         return self._bus.name
 
     _introspection: Any = None
@@ -28,9 +30,11 @@ class Service:
         self._introspection.configure(clock, service_event_qos_profile, introspection_state)
 
     def destroy(self) -> None:
+        """Take the service off the graph."""
         self._introspection.configure(None, None, 0)
         self._bus.destroy()
 
     @property
     def handle(self) -> Any:
+        """The launcher bus service under this one."""
         return self._bus

@@ -15,15 +15,19 @@ class Subscription:
 
     @property
     def topic_name(self) -> str:
+        """The topic's fully qualified name."""
         return self._bus.topic
 
     @property
     def qos_profile(self) -> Any:
+        """The subscription's QoSProfile."""
         return self._qos_profile
 
     def destroy(self) -> None:
+        """Take the subscription off the graph."""
         self._bus.destroy()
 
     @property
     def handle(self) -> Any:
+        """The launcher bus subscription under this one."""
         return self._bus

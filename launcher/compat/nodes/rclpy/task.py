@@ -28,27 +28,34 @@ class Future:
         return self.result()
 
     def cancel(self) -> None:
+        """Cancel the future: it is done, and has no result."""
         self._finish("cancelled")
 
     def cancelled(self) -> bool:
+        """Whether the future was canceled."""
         return self._state == "cancelled"
 
     def done(self) -> bool:
+        """Whether the future has a result, an exception, or was canceled."""
         return self._state != "pending"
 
     def result(self) -> Any:
+        """The result (None until done); the exception, raised, if it failed."""
         if self._exception is not None:
             raise self._exception
         return self._result
 
     def exception(self) -> BaseException | None:
+        """The exception the future failed with, or None."""
         return self._exception
 
     def set_result(self, result: Any) -> None:
+        """Complete the future with `result`; its done callbacks run."""
         self._result = result
         self._finish("finished")
 
     def set_exception(self, exception: BaseException) -> None:
+        """Complete the future with an exception; its done callbacks run."""
         self._exception = exception
         self._finish("finished")
 
@@ -80,6 +87,9 @@ class Future:
         event.set()
 
     def add_done_callback(self, callback: Callable[[Future], None]) -> None:
+        """Call `callback(future)` when it is done (on its executor, if it
+        has one; at once if it is done already).
+        """
         with self._lock:
             if self._state == "pending":
                 self._callbacks.append(callback)
@@ -87,6 +97,7 @@ class Future:
         self._schedule(callback)
 
     def remove_done_callback(self, callback: Callable[[Future], None]) -> bool:
+        """Remove a done callback; False if it was not there."""
         with self._lock:
             if callback in self._callbacks:
                 self._callbacks.remove(callback)
@@ -147,6 +158,7 @@ class Task(Future):
             self()
 
     def executing(self) -> bool:
+        """Whether the task's coroutine is running now."""
         return self._running.locked()
 
 

@@ -19,39 +19,49 @@ class Timer:
 
     @property
     def timer_period_ns(self) -> int:
+        """The period, in nanoseconds (setting it resets the timer)."""
         return self._period_ns
 
     @timer_period_ns.setter
     def timer_period_ns(self, value: int) -> None:
+        """The period, in nanoseconds (setting it resets the timer)."""
         self._period_ns, self._period = value, value / 1e9
         self.reset()
 
     @property
     def clock(self) -> Any:
+        """The clock given at creation."""
         return self._clock
 
     def cancel(self) -> None:
+        """Stop calling back until reset()."""
         self._canceled = True
 
     def is_canceled(self) -> bool:
+        """Whether the timer is canceled."""
         return self._canceled
 
     def reset(self) -> None:
+        """Start again: the next call one period from now."""
         self._canceled = False
         self._next = time.monotonic() + self._period
 
     def is_ready(self) -> bool:
+        """Whether a call is due now."""
         return not self._canceled and time.monotonic() >= self._next
 
     def time_since_last_call(self) -> int:
+        """Nanoseconds since the last call (or the start)."""
         return int((time.monotonic() - self._last) * 1e9)
 
     def time_until_next_call(self) -> int | None:
+        """Nanoseconds until the next call (None when canceled)."""
         if self._canceled:
             return None
         return int((self._next - time.monotonic()) * 1e9)
 
     def destroy(self) -> None:
+        """Stop the timer for good."""
         self._canceled = True
 
     def __enter__(self) -> Timer:
@@ -90,6 +100,7 @@ class Rate:
         self._context = context
 
     def sleep(self) -> None:
+        """Sleep out the rest of the period (ExternalShutdownException at shutdown)."""
         from rclpy.executors import ExternalShutdownException
 
         while True:
@@ -102,4 +113,5 @@ class Rate:
         self._next = max(self._next + self._period, time.monotonic())
 
     def destroy(self) -> None:
+        """Nothing to release."""
         pass
