@@ -10,9 +10,10 @@ from launcher.bus.node import Node
 from launcher.errors import reported
 
 
-def run_node(name: str, setup: Callable[[Node], object]) -> int:
-    """Make the node, `setup(node)`, spin."""
-    return reported(lambda: _spin(name, setup), name)
+def run_node(name: str, setup: Callable[[Node], object], node_name: str = "") -> int:
+    """Make the node (named `node_name`, else `name`), `setup(node)`, spin; errors are said
+    as `name`'s."""
+    return reported(lambda: _spin(node_name or name, setup), name)
 
 
 def _spin(name: str, setup: Callable[[Node], object]) -> int:

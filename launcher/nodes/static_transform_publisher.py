@@ -16,7 +16,8 @@ from typing import Any
 
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED
-from launcher.errors import UsageError, reported
+from launcher.errors import UsageError
+from launcher.nodes import running
 
 USAGE = ("usage: static_transform_publisher [--x X] [--y Y] [--z Z] [--qx QX] [--qy QY] "
          "[--qz QZ] [--qw QW] [--roll ROLL] [--pitch PITCH] [--yaw YAW] --frame-id FRAME_ID "
@@ -121,16 +122,8 @@ def main() -> int:
     if "-h" in sys.argv[1:] or "--help" in sys.argv[1:]:
         print(USAGE)
         return 0
-
-    def run() -> int:
-        node = Node(f"static_transform_publisher_{os.urandom(8).hex()}")
-        try:
-            setup(node)
-            node.spin()
-        finally:
-            node.destroy_node()
-        return 0
-    return reported(run, "static_transform_publisher")
+    return running.run_node("static_transform_publisher", setup,
+                            f"static_transform_publisher_{os.urandom(8).hex()}")
 
 
 if __name__ == "__main__":
