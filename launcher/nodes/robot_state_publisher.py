@@ -20,36 +20,35 @@ from collections.abc import Sequence
 from types import SimpleNamespace
 from typing import Any
 
+from launcher.bus.declarations import Param, ParameterError
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
 from launcher.bus.wire import JointStateReader, TfLayout, pack_tf
 from launcher.errors import LaunchError
 from launcher.nodes import running
 from launcher.nodes.kinematics import Tree
-from launcher.records import dataclass
-from launcher.schema import Kind, attr, build
 
-
-@dataclass
-class Parameters:
-    """robot_state_publisher's parameters, ROS 2's names and ranges."""
-
-    robot_description: str = attr(Kind.TEXT, "", doc="The URDF (required).")
-    publish_frequency: float = attr(Kind.FLOAT, 20.0, minimum=0.0, maximum=1000.0,
-                                    doc="The most /tf messages per second, Hz.")
-    ignore_timestamp: bool = attr(Kind.BOOL, False)
-    frame_prefix: str = attr(Kind.TEXT, "")
+# robot_state_publisher's parameters, ROS 2's names, types and ranges
+PARAMETERS = (
+    Param("robot_description", "string", "", "the URDF (or an SDF model) to publish"),
+    Param("publish_frequency", "double", 20.0, "the most /tf messages a second, Hz",
+          minimum=0.0, maximum=1000.0),
+    Param("ignore_timestamp", "bool", False, "publish joint states whatever their stamps"),
+    Param("frame_prefix", "string", "", "put before every frame's name"),
+)
 
 
 class RobotStatePublisher:
     def __init__(self, node: Node) -> None:
         self.node = node
         self.log = node.get_logger()
-        # other parameters (use_sim_time, …) are the node's, not this publisher's
-        params = build(Parameters, node.parameters, unknown="ignore")
-        self.frequency, self.ignore_timestamp = params.publish_frequency, params.ignore_timestamp
-        self.prefix = params.frame_prefix
-        description = params.robot_description
+        try:
+            params = node.params.declare(PARAMETERS)
+        except ParameterError as exc:
+            raise LaunchError(str(exc)) from None
+        self.frequency = params["publish_frequency"]
+        self.ignore_timestamp, self.prefix = params["ignore_timestamp"], params["frame_prefix"]
+        description = params["robot_description"]
         if not description:
             raise LaunchError("parameter robot_description is missing or empty: give the URDF "
                               "(-p robot_description:=… or, in a launch file, "
