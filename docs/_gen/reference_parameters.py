@@ -10,6 +10,7 @@ from md_tables import code, table
 from launcher.bus.declarations import REQUIRED
 from launcher.control.controllers import TYPES, controller_class
 from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
+from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
 
 TITLE = """# Parameters of controllers and nodes
@@ -27,7 +28,8 @@ name stands for each name of the `joints` parameter (`{joint}`: the one joint).
 
 # the built-in nodes that declare theirs: (package/executable, its declarations)
 NODES = {"foxglove_bridge/foxglove_bridge": foxglove_parameters,
-         "robot_state_publisher/robot_state_publisher": lambda: rsp_parameters}
+         "robot_state_publisher/robot_state_publisher": lambda: rsp_parameters,
+         "joint_state_publisher/joint_state_publisher": lambda: jsp_parameters}
 
 
 def page() -> str:

@@ -17,23 +17,32 @@ import threading
 import xml.etree.ElementTree as ET
 from typing import Any
 
+from launcher.bus.declarations import Param, ParameterError
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
 from launcher.errors import LaunchError
 from launcher.nodes import running
 from launcher.nodes.kinematics import MOVING, Tree
 
+# joint_state_publisher's parameters (`zeros.<joint>` too: a joint's starting position)
+PARAMETERS = (
+    Param("robot_description", "string", "", "the URDF (else the robot_description topic's)"),
+    Param("rate", "double", 10.0, "joint_states messages a second, Hz", minimum=1e-3),
+    Param("use_mimic_tags", "bool", True, "a mimic joint follows its master"),
+    Param("source_list", "string_array", [], "JointState topics whose positions win"),
+)
+
 
 class JointStatePublisher:
     def __init__(self, node: Node, gui: bool = False) -> None:
         self.node, self.gui = node, gui
         self.log = node.get_logger()
-        parameters = node.parameters
-        self.rate = float(parameters.get("rate", 10.0))
-        if not self.rate > 0:
-            raise LaunchError(f"parameter rate must be above 0 Hz, got {self.rate}")
-        self.use_mimic = bool(parameters.get("use_mimic_tags", True))
-        self.defaults = {k[len("zeros."):]: float(v) for k, v in parameters.items()
+        try:
+            parameters = node.params.declare(PARAMETERS)
+        except ParameterError as exc:
+            raise LaunchError(str(exc)) from None
+        self.rate, self.use_mimic = parameters["rate"], parameters["use_mimic_tags"]
+        self.defaults = {k[len("zeros."):]: float(v) for k, v in node.parameters.items()
                          if k.startswith("zeros.")}
         self.lock = threading.Lock()
         self.positions: dict[str, float] = {}
@@ -43,9 +52,9 @@ class JointStatePublisher:
         self.mimics: dict[str, tuple[str, float, float]] = {}
         self.publisher = node.create_publisher("sensor_msgs/msg/JointState", "joint_states",
                                                QoS(depth=10))
-        for topic in parameters.get("source_list", []) or []:
+        for topic in parameters["source_list"]:
             node.create_subscription("sensor_msgs/msg/JointState", topic, self.on_source)
-        description = parameters.get("robot_description", "")
+        description = parameters["robot_description"]
         if description:
             self.load(str(description))
         else:

@@ -44,6 +44,15 @@ def test_joint_state_publisher_publishes_the_moving_joints_at_their_zeros(ws):
         assert publisher.wait(20) in (0, 130)
 
 
+def test_joint_state_publisher_refuses_a_rate_of_zero_by_name(ws):
+    ws.own_bus()
+    done = ws.run("run", "joint_state_publisher", "joint_state_publisher", "--ros-args",
+                  "-p", "rate:=0", timeout=60)
+    assert done.returncode == 1, done.stderr
+    assert "parameter 'rate' is 0.0; expected at least 0.001" in done.stderr, done.stderr
+    assert "Traceback" not in done.stderr
+
+
 def test_joint_state_publisher_gui_needs_no_desktop_and_says_how_to_move_joints(ws):
     ws.own_bus()
     description = ws.start("topic", "pub", "--latched",
