@@ -11,18 +11,25 @@ class CallbackGroup:
         self.entities: list[Any] = []
 
     def add_entity(self, entity: Any) -> None:
+        """Make `entity` (a subscription, timer, …) one of the group's."""
         self.entities.append(entity)
 
     def has_entity(self, entity: Any) -> bool:
+        """Whether `entity` is one of the group's."""
         return entity in self.entities
 
     def can_execute(self, entity: Any) -> bool:
+        """Whether `entity`'s callback may start now."""
         raise NotImplementedError
 
     def beginning_execution(self, entity: Any) -> bool:
+        """Take the group for `entity`'s callback; False if it may
+        not run now.
+        """
         raise NotImplementedError
 
     def ending_execution(self, entity: Any) -> None:
+        """Give the group back after `entity`'s callback."""
         raise NotImplementedError
 
 
@@ -30,12 +37,15 @@ class ReentrantCallbackGroup(CallbackGroup):
     """Its callbacks may run in parallel."""
 
     def can_execute(self, entity: Any) -> bool:
+        """True: any number run at once."""
         return True
 
     def beginning_execution(self, entity: Any) -> bool:
+        """True: any number run at once."""
         return True
 
     def ending_execution(self, entity: Any) -> None:
+        """Nothing to give back."""
         pass
 
 
@@ -48,18 +58,24 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
         self._lock = threading.RLock()
 
     def can_execute(self, entity: Any) -> bool:
+        """Whether none of the group's callbacks runs now."""
         if self._lock.acquire(blocking=False):
             self._lock.release()
             return True
         return False
 
     def beginning_execution(self, entity: Any) -> bool:
+        """Take the group; False while another of
+        its callbacks runs.
+        """
         return self._lock.acquire(blocking=False)
 
     def ending_execution(self, entity: Any) -> None:
+        """Give the group back."""
         self._lock.release()
 
     def run(self, callback: Any, *args: Any) -> Any:
+        """Run `callback(*args)` holding the group."""
         with self._lock:
             return callback(*args)
 

@@ -20,6 +20,7 @@ class Clock:
 
     @property
     def clock_type(self) -> ClockType:
+        """The clock's ClockType."""
         return self._clock_type
 
     def _now_ns(self) -> int:
@@ -28,12 +29,15 @@ class Clock:
         return _time.time_ns()
 
     def now(self) -> Time:
+        """The clock's current Time."""
         return Time(nanoseconds=self._now_ns(), clock_type=self._clock_type)
 
     def sleep_for(self, rel_time: Duration, context: Any = None) -> bool:
+        """Sleep `rel_time` on this clock; False if the context shut down first."""
         return self.sleep_until(self.now() + rel_time, context)
 
     def sleep_until(self, until: Time, context: Any = None) -> bool:
+        """Sleep until `until` on this clock; False if the context shut down first."""
         from rclpy.utilities import get_default_context
 
         context = context or get_default_context()
@@ -57,6 +61,7 @@ class ROSClock(Clock):
 
     @property
     def ros_time_is_active(self) -> bool:
+        """Whether the time comes from /clock (use_sim_time)."""
         return bool(self._source is not None and self._source.use_sim_time)
 
     def _now_ns(self) -> int:

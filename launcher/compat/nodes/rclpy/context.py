@@ -24,6 +24,7 @@ class Context:
 
     def init(self, args: list[str] | None = None, *, initialize_logging: bool = True,
              domain_id: int | None = None) -> None:
+        """Initialize the context with the command line `args` (default sys.argv)."""
         with self._lock:
             if self._ok:
                 raise RuntimeError("Context.init() must only be called once")
@@ -32,15 +33,20 @@ class Context:
                 self.domain_id = domain_id
 
     def ok(self) -> bool:
+        """Whether the context is initialized and not shut down."""
         return self._ok
 
     def shutdown(self) -> None:
+        """Shut the context down: its nodes are destroyed, spins end (RuntimeError if it
+        is not initialized).
+        """
         with self._lock:
             if self._cleaned:
                 raise RuntimeError("Context must be initialized before it can be shutdown")
         self.try_shutdown()
 
     def try_shutdown(self) -> None:
+        """Shut the context down if it is not already."""
         with self._lock:
             self._ok = False
             if self._cleaned:
@@ -60,21 +66,26 @@ class Context:
         self.ring()
 
     def ring(self) -> None:
+        """Wake whichever executor waits on this context's work."""
         with contextlib.suppress(RuntimeError):
             if self.bell.locked():
                 self.bell.release()
 
     def on_shutdown(self, callback: Callable[[], None]) -> None:
+        """Call `callback()` when the context shuts down."""
         self._callbacks.append(callback)
 
     def track_node(self, node: Any) -> None:
+        """Destroy `node` when the context shuts down."""
         self._nodes.add(node)
 
     def get_domain_id(self) -> int:
+        """The domain id given to init (0 when none was)."""
         return self.domain_id
 
     @property
     def args(self) -> list[str] | None:
+        """The command line given to init."""
         return self._args
 
     def __enter__(self) -> Context:

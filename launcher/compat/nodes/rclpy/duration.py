@@ -18,6 +18,7 @@ class Duration:
 
     @property
     def nanoseconds(self) -> int:
+        """The duration in nanoseconds."""
         return self._nanoseconds
 
     def __repr__(self) -> str:
@@ -62,6 +63,7 @@ class Duration:
     __rmul__ = __mul__
 
     def to_msg(self) -> Any:
+        """The duration as a builtin_interfaces/Duration message."""
         from builtin_interfaces.msg import Duration as Message
 
         sec, nanosec = divmod(self._nanoseconds, _S)
@@ -69,9 +71,11 @@ class Duration:
 
     @classmethod
     def from_msg(cls, message: Any) -> Duration:
+        """A Duration from a builtin_interfaces/Duration message."""
         return cls(seconds=message.sec, nanoseconds=message.nanosec)
 
     def get_c_duration(self) -> Duration:
+        """The duration itself (rclpy hands its C object here)."""
         return self
 
 

@@ -12,8 +12,10 @@ class GuardCondition:
         self._run = run
 
     def trigger(self) -> None:
+        """Run the callback once, on the node's executor."""
         if self._host is not None and self._run is not None:
             self._host.enqueue(self._run)
 
     def destroy(self) -> None:
+        """Stop: a later trigger runs nothing."""
         self._host = None

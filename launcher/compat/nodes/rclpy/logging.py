@@ -33,14 +33,17 @@ class RcutilsLogger:
         self._skipped: set[Any] = set()
 
     def get_child(self, name: str) -> RcutilsLogger:
+        """The logger `<name>.<child>`."""
         if not name:
             raise ValueError("Child logger name must not be empty.")
         return RcutilsLogger(f"{self.name}.{name}" if self.name else name)
 
     def set_level(self, level: Any) -> None:
+        """Log `level` and above from now on."""
         _levels[self.name] = LoggingSeverity(level)
 
     def get_effective_level(self) -> LoggingSeverity:
+        """The level this logger logs at (its own, else its parents')."""
         name = self.name
         while True:
             if name in _levels and _levels[name] != LoggingSeverity.UNSET:
@@ -50,9 +53,13 @@ class RcutilsLogger:
             name = name.rsplit(".", 1)[0]
 
     def is_enabled_for(self, severity: Any) -> bool:
+        """Whether a message of `severity` would be logged."""
         return LoggingSeverity(severity) >= self.get_effective_level()
 
     def log(self, message: Any, severity: Any, **kwargs: Any) -> bool:
+        """Log `message` at `severity` (`once`, `throttle_duration_sec`, `skip_first`
+        as rclpy takes them); whether it was.
+        """
         severity = LoggingSeverity(severity)
         if not self.is_enabled_for(severity):
             return False
@@ -82,30 +89,37 @@ class RcutilsLogger:
         return True
 
     def debug(self, message: Any, **kwargs: Any) -> bool:
+        """Log at DEBUG."""
         return self.log(message, LoggingSeverity.DEBUG, **kwargs)
 
     def info(self, message: Any, **kwargs: Any) -> bool:
+        """Log at INFO."""
         return self.log(message, LoggingSeverity.INFO, **kwargs)
 
     def warning(self, message: Any, **kwargs: Any) -> bool:
+        """Log at WARN."""
         return self.log(message, LoggingSeverity.WARN, **kwargs)
 
     warn = warning
 
     def error(self, message: Any, **kwargs: Any) -> bool:
+        """Log at ERROR."""
         return self.log(message, LoggingSeverity.ERROR, **kwargs)
 
     def fatal(self, message: Any, **kwargs: Any) -> bool:
+        """Log at FATAL."""
         return self.log(message, LoggingSeverity.FATAL, **kwargs)
 
 
 def get_logger(name: str) -> RcutilsLogger:
+    """The logger of that name."""
     if not name:
         raise ValueError("Logger name must not be empty.")
     return RcutilsLogger(name)
 
 
 def set_logger_level(name: str, level: Any) -> None:
+    """Set a logger's level by its name."""
     _levels[name] = LoggingSeverity(level)
 
 
@@ -115,13 +129,16 @@ def get_logger_level(name: str) -> LoggingSeverity:
 
 
 def get_logger_effective_level(name: str) -> LoggingSeverity:
+    """The level a logger logs at, by its name."""
     return RcutilsLogger(name).get_effective_level()
 
 
 def get_logging_severity_from_string(text: str) -> LoggingSeverity:
+    """The LoggingSeverity of its name (`info`, `WARN`, …)."""
     return LoggingSeverity[text.upper().replace("WARNING", "WARN")]
 
 
 def set_default_level(level: Any) -> None:
+    """The level loggers without one of their own log at."""
     global _default
     _default = LoggingSeverity(level)

@@ -88,6 +88,7 @@ class QoSProfile:
                 f"reliability={self.reliability.name}, durability={self.durability.name})")
 
     def to_launcher(self) -> QoS:
+        """The profile in launcher's bus terms."""
         depth = KEEP_ALL_DEPTH if self.history == HistoryPolicy.KEEP_ALL else max(self.depth, 1)
         return QoS(depth=depth, reliable=self.reliability != ReliabilityPolicy.BEST_EFFORT,
                    transient_local=self.durability == DurabilityPolicy.TRANSIENT_LOCAL)
@@ -133,10 +134,12 @@ class QoSPresetProfiles(IntEnum):
 
     @property
     def value(self) -> QoSProfile:  # type: ignore[override]
+        """The preset's QoSProfile."""
         return _PRESETS[self.name]
 
     @classmethod
     def get_from_short_key(cls, name: str) -> QoSProfile:
+        """The preset profile of a short name (`sensor_data`, …)."""
         return _PRESETS[name.upper()]
 
 

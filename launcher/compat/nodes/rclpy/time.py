@@ -28,13 +28,16 @@ class Time:
 
     @property
     def nanoseconds(self) -> int:
+        """The time in nanoseconds."""
         return self._nanoseconds
 
     @property
     def clock_type(self) -> ClockType:
+        """The ClockType the time is of."""
         return self._clock_type
 
     def seconds_nanoseconds(self) -> tuple[int, int]:
+        """(seconds, nanoseconds past them)."""
         return divmod(self._nanoseconds, _S)
 
     def __repr__(self) -> str:
@@ -89,6 +92,7 @@ class Time:
         return hash((self._nanoseconds, self._clock_type))
 
     def to_msg(self) -> Any:
+        """The time as a builtin_interfaces/Time message."""
         from builtin_interfaces.msg import Time as Message
 
         sec, nanosec = self.seconds_nanoseconds()
@@ -96,4 +100,5 @@ class Time:
 
     @classmethod
     def from_msg(cls, message: Any, clock_type: ClockType = ClockType.ROS_TIME) -> Time:
+        """A Time from a builtin_interfaces/Time message."""
         return cls(seconds=message.sec, nanoseconds=message.nanosec, clock_type=clock_type)

@@ -11,19 +11,23 @@ _default_context = Context()
 
 
 def get_default_context(*, shutting_down: bool = False) -> Context:
+    """The process' context, made at first use."""
     return _default_context
 
 
 def ok(*, context: Context | None = None) -> bool:
+    """Whether the default (or the given) context is initialized and not shut down."""
     return (context or _default_context).ok()
 
 
 def shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
+    """Shut the default (or the given) context down."""
     (context or _default_context).shutdown()
 
 
 def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None
                  ) -> None:
+    """Shut the default (or the given) context down if it is not already."""
     (context or _default_context).try_shutdown()
 
 
@@ -38,20 +42,28 @@ def remove_ros_args(args: list[str] | None = None) -> list[str]:
 
 
 def get_rmw_implementation_identifier() -> str:
+    """The middleware's name: rmw_zenoh_cpp, whose layout
+    launcher's graph keeps.
+    """
     return "rmw_zenoh_cpp"
 
 
 def timeout_sec_to_nsec(timeout_sec: float | None) -> int:
+    """A timeout in seconds as nanoseconds (None or negative: -1, forever)."""
     if timeout_sec is None or timeout_sec < 0:
         return -1
     return int(float(timeout_sec) * 1e9)
 
 
 def get_available_rmw_implementations() -> set[str]:
+    """The middlewares there are: rmw_zenoh_cpp."""
     return {"rmw_zenoh_cpp"}
 
 
 def check_for_type_support(message_type: Any) -> None:
+    """NoTypeSupportImportedException unless `message_type` is a message
+    class.
+    """
     if not hasattr(message_type, "_TYPE"):
         from rclpy.exceptions import NoTypeSupportImportedException
 
