@@ -67,6 +67,30 @@ class InvalidTransition(RuntimeError):
     """A move the state machine does not have (rclpy raises it as its RCLError)."""
 
 
+class StateMachine:
+    """A goal's states and the events that move it: rcl_action's (`GOAL_STATES`) and ROS 1
+    actionlib's (compat/nodes/actionlib/status.py) are both tables of this one kind."""
+
+    def __init__(self, transitions: dict[tuple[int, Any], int], names: dict[int, str]) -> None:
+        self.transitions, self.names = transitions, names
+
+    def move(self, state: int, event: Any) -> int:
+        """The state after `event`; InvalidTransition (with rcl_action's message) if the
+        machine has no such move."""
+        new = self.transitions.get((state, event))
+        if new is None:
+            raise InvalidTransition(
+                f"Failed to update goal state: goal_handle attempted invalid transition from "
+                f"state {self.names[state]} with event {event.name}")
+        return new
+
+    def allows(self, state: int, event: Any) -> bool:
+        return (state, event) in self.transitions
+
+
+GOAL_STATES = StateMachine(TRANSITIONS, STATE_NAMES)  # rcl_action's
+
+
 def uuid_key(goal_id: Any) -> bytes:
     """A goal id (unique_identifier_msgs/UUID) as a dict key."""
     return bytes(goal_id.uuid)
@@ -128,12 +152,7 @@ class GoalTable:
         """The goal's state after `event`; InvalidTransition (with rcl_action's message) if
         the state machine has no such move."""
         with self.lock:
-            new = TRANSITIONS.get((goal.state, event))
-            if new is None:
-                raise InvalidTransition(
-                    f"Failed to update goal state: goal_handle attempted invalid transition "
-                    f"from state {STATE_NAMES[goal.state]} with event {event.name}")
-            goal.state = new
+            new = goal.state = GOAL_STATES.move(goal.state, event)
             if new in TERMINAL:
                 goal.ended_at = time.monotonic()
         self.announce()

@@ -136,3 +136,19 @@ def test_an_ended_goal_is_forgotten_once_its_result_has_been_kept_long_enough():
     table.move(goal, actions.GoalEvent.SUCCEED)
     table.expire()
     assert goal.key not in table and actions.statuses(said[-1]) == []
+
+
+def test_actionlibs_goals_move_by_the_same_kind_of_table():
+    from actionlib import status as S
+
+    from launcher.bus import actions
+
+    assert S.MACHINE.move(S.PENDING, S.Event.CANCEL) == S.RECALLED
+    assert S.MACHINE.move(S.ACTIVE, S.Event.CANCEL_REQUEST) == S.PREEMPTING
+    assert S.MACHINE.move(S.PREEMPTING, S.Event.SUCCEED) == S.SUCCEEDED
+    try:
+        S.MACHINE.move(S.SUCCEEDED, S.Event.ABORT)
+    except actions.InvalidTransition as exc:
+        assert "from state SUCCEEDED with event ABORT" in str(exc)
+    else:
+        raise AssertionError("SUCCEEDED -> ABORT was allowed")

@@ -52,7 +52,7 @@ class SimpleActionServer:
             status = GoalStatus(goal_id=action_goal.goal_id, status=S.PENDING)
             self.statuses[action_goal.goal_id.id] = status
             if self.next is not None:  # the waiting one is replaced: recalled
-                self._end(self.next, S.RECALLED, self.types["Result"](), "a newer goal came")
+                self._end(self.next, S.Event.CANCEL, self.types["Result"](), "a newer goal came")
             self.next = action_goal
             if self.current is not None:
                 self.preempt_request = True
@@ -66,11 +66,13 @@ class SimpleActionServer:
         with self.lock:
             if self.current is not None and goal_id.id in ("", self.current[0].goal_id.id):
                 self.preempt_request = True
-                self.statuses[self.current[0].goal_id.id].status = S.PREEMPTING
+                status = self.statuses[self.current[0].goal_id.id]
+                if S.MACHINE.allows(status.status, S.Event.CANCEL_REQUEST):  # (once)
+                    status.status = S.MACHINE.move(status.status, S.Event.CANCEL_REQUEST)
                 if self.preempt_callback:
                     self.preempt_callback()
             if self.next is not None and goal_id.id in ("", self.next.goal_id.id):
-                self._end(self.next, S.RECALLED, self.types["Result"](), "canceled")
+                self._end(self.next, S.Event.CANCEL, self.types["Result"](), "canceled")
                 self.next = None
 
     def accept_new_goal(self) -> Any:
@@ -80,10 +82,11 @@ class SimpleActionServer:
                              "available")
                 return None
             if self.current is not None:
-                self._end(self.current[0], S.PREEMPTED, self.types["Result"](),
+                self._end(self.current[0], S.Event.CANCEL, self.types["Result"](),
                           "a new goal was accepted")
             action_goal, self.next = self.next, None
-            self.statuses[action_goal.goal_id.id].status = S.ACTIVE
+            status = self.statuses[action_goal.goal_id.id]
+            status.status = S.MACHINE.move(status.status, S.Event.ACCEPT)
             self.current = (action_goal, self.statuses[action_goal.goal_id.id])
             self.preempt_request = False
             self._publish_status()
@@ -123,26 +126,27 @@ class SimpleActionServer:
 
     # --- ending -------------------------------------------------------------------------------
     def set_succeeded(self, result: Any = None, text: str = "") -> None:
-        self._finish(S.SUCCEEDED, result, text)
+        self._finish(S.Event.SUCCEED, result, text)
 
     def set_aborted(self, result: Any = None, text: str = "") -> None:
-        self._finish(S.ABORTED, result, text)
+        self._finish(S.Event.ABORT, result, text)
 
     def set_preempted(self, result: Any = None, text: str = "") -> None:
-        self._finish(S.PREEMPTED, result, text)
+        self._finish(S.Event.CANCEL, result, text)
 
-    def _finish(self, state: int, result: Any, text: str) -> None:
+    def _finish(self, event: S.Event, result: Any, text: str) -> None:
         with self.lock:
             if self.current is None:
                 return
             action_goal, _ = self.current
             self.current = None
-            self._end(action_goal, state, result if result is not None
+            self._end(action_goal, event, result if result is not None
                       else self.types["Result"](), text)
 
-    def _end(self, action_goal: Any, state: int, result: Any, text: str) -> None:
+    def _end(self, action_goal: Any, event: S.Event, result: Any, text: str) -> None:
+        """The goal ends as `event` moves it (actionlib's state machine)."""
         status = self.statuses[action_goal.goal_id.id]
-        status.status, status.text = state, text
+        status.status, status.text = S.MACHINE.move(status.status, event), text
         message = self.types["ActionResult"](status=status, result=result)
         message.header.stamp = rospy.Time.now()
         self.result_pub.publish(message)
