@@ -10,15 +10,20 @@ from md_tables import code
 
 NODES = Path(__file__).resolve().parents[2] / "launcher" / "compat" / "nodes"
 # the modules whose public surface is documented (tests/unit/test_compat_docs.py keeps it so)
-MODULES = ["rclpy/node.py", "rclpy/executors.py", "rclpy/publisher.py", "rclpy/subscription.py",
-           "rclpy/client.py", "rclpy/service.py", "rclpy/timer.py", "rclpy/task.py",
-           "rclpy/parameter.py", "rclpy/context.py", "rclpy/utilities.py", "rclpy/clock.py",
-           "rclpy/time.py", "rclpy/duration.py", "rclpy/callback_groups.py", "rclpy/qos.py",
-           "rclpy/logging.py", "rclpy/guard_condition.py", "rclpy/action/server.py",
-           "rclpy/action/client.py", "rclpy/action/graph.py", "rospy/client.py", "rospy/core.py",
-           "rospy/rostime.py", "rospy/service.py", "rospy/timer.py", "rospy/topics.py",
-           "tf2_ros/buffer.py", "tf2_ros/transform_listener.py",
-           "tf2_ros/transform_broadcaster.py", "tf2_ros/static_transform_broadcaster.py"]
+MODULES = ["rclpy/__init__.py", "rclpy/node.py", "rclpy/executors.py", "rclpy/publisher.py",
+           "rclpy/subscription.py", "rclpy/client.py", "rclpy/service.py", "rclpy/timer.py",
+           "rclpy/task.py", "rclpy/parameter.py", "rclpy/context.py", "rclpy/utilities.py",
+           "rclpy/clock.py", "rclpy/time.py", "rclpy/duration.py", "rclpy/callback_groups.py",
+           "rclpy/qos.py", "rclpy/logging.py", "rclpy/guard_condition.py",
+           "rclpy/parameter_client.py", "rclpy/lifecycle/node.py",
+           "rclpy/lifecycle/managed_entity.py", "rclpy/lifecycle/publisher.py",
+           "rclpy/action/server.py", "rclpy/action/client.py", "rclpy/action/graph.py",
+           "rospy/client.py", "rospy/core.py", "rospy/rostime.py", "rospy/service.py",
+           "rospy/timer.py", "rospy/topics.py", "tf2_ros/buffer.py",
+           "tf2_ros/transform_listener.py", "tf2_ros/transform_broadcaster.py",
+           "tf2_ros/static_transform_broadcaster.py", "tf2_geometry_msgs/__init__.py",
+           "tf/__init__.py", "actionlib/simple_action_client.py",
+           "actionlib/simple_action_server.py"]
 
 TITLE = """# Python APIs for nodes
 
@@ -32,7 +37,7 @@ def page() -> str:
     parts = [TITLE]
     for module in MODULES:
         tree = ast.parse((NODES / module).read_text())
-        name = module.removesuffix(".py").replace("/", ".")
+        name = module.removesuffix(".py").removesuffix("/__init__").replace("/", ".")
         parts.append(f"## {code(name)}\n")
         doc = ast.get_docstring(tree)
         if doc:

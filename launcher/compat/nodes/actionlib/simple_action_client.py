@@ -41,6 +41,9 @@ class SimpleActionClient:
         rospy.Subscriber(f"{self.ns}/result", self.types["ActionResult"], self._on_result)
 
     def wait_for_server(self, timeout: Any = None) -> bool:
+        """Wait for the server's status up to `timeout` (None: as long
+        as it takes); whether it came.
+        """
         seconds = _seconds(timeout)
         deadline = None if not seconds else time.monotonic() + seconds
         while not rospy.is_shutdown():
@@ -53,6 +56,9 @@ class SimpleActionClient:
 
     def send_goal(self, goal: Any, done_cb: Any = None, active_cb: Any = None,
                   feedback_cb: Any = None) -> None:
+        """Send a goal (the previous one is no longer tracked), with
+        callbacks for its end, its start and its feedback.
+        """
         now = rospy.Time.now()
         goal_id = f"{rospy.get_name()}-{next(self._ids)}-{now.to_sec():.3f}"
         with self.lock:
@@ -66,6 +72,9 @@ class SimpleActionClient:
 
     def send_goal_and_wait(self, goal: Any, execute_timeout: Any = None,
                            preempt_timeout: Any = None) -> int:
+        """Send a goal and wait for its end (canceled after
+        `execute_timeout`); its final state.
+        """
         self.send_goal(goal)
         if not self.wait_for_result(execute_timeout):
             self.cancel_goal()
@@ -73,6 +82,7 @@ class SimpleActionClient:
         return self.get_state()
 
     def wait_for_result(self, timeout: Any = None) -> bool:
+        """Wait for the goal's end up to `timeout`; whether it ended."""
         seconds = _seconds(timeout)
         while not rospy.is_shutdown():
             if self.done.wait(min(seconds, 0.1) if seconds else 0.1):
@@ -84,21 +94,27 @@ class SimpleActionClient:
         return self.done.is_set()
 
     def get_result(self) -> Any:
+        """The goal's result, once it ended."""
         return self.result
 
     def get_state(self) -> int:
+        """The goal's state (actionlib_msgs/GoalStatus's numbers)."""
         return self.state
 
     def get_goal_status_text(self) -> str:
+        """The text the server gave with the goal's state."""
         return getattr(self, "status_text", "")
 
     def cancel_goal(self) -> None:
+        """Ask the server to cancel the goal."""
         self.cancel_pub.publish(GoalID(id=self.goal_id))
 
     def cancel_all_goals(self) -> None:
+        """Ask the server to cancel every goal."""
         self.cancel_pub.publish(GoalID())
 
     def stop_tracking_goal(self) -> None:
+        """Forget the goal (its later states are not followed)."""
         self.goal_id = ""
 
     # --- what the server says -----------------------------------------------------------------

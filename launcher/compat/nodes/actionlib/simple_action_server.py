@@ -37,6 +37,7 @@ class SimpleActionServer:
             self.start()
 
     def start(self) -> None:
+        """Start taking goals (at construction unless auto_start is false)."""
         if self.started:
             return
         self.started = True
@@ -76,6 +77,9 @@ class SimpleActionServer:
                 self.next = None
 
     def accept_new_goal(self) -> Any:
+        """Take the waiting goal (the active one is preempted); the
+        goal.
+        """
         with self.lock:
             if self.next is None:
                 rospy.logerr("Attempting to accept the next goal when a new goal is not "
@@ -93,12 +97,15 @@ class SimpleActionServer:
             return action_goal.goal
 
     def is_new_goal_available(self) -> bool:
+        """Whether a goal waits to be taken."""
         return self.next is not None
 
     def is_preempt_requested(self) -> bool:
+        """Whether the active goal is asked to stop."""
         return self.preempt_request
 
     def is_active(self) -> bool:
+        """Whether a goal is being executed."""
         return self.current is not None
 
     def _execute_loop(self) -> None:
@@ -126,12 +133,15 @@ class SimpleActionServer:
 
     # --- ending -------------------------------------------------------------------------------
     def set_succeeded(self, result: Any = None, text: str = "") -> None:
+        """End the active goal as succeeded, with its result."""
         self._finish(S.Event.SUCCEED, result, text)
 
     def set_aborted(self, result: Any = None, text: str = "") -> None:
+        """End the active goal as aborted."""
         self._finish(S.Event.ABORT, result, text)
 
     def set_preempted(self, result: Any = None, text: str = "") -> None:
+        """End the active goal as preempted."""
         self._finish(S.Event.CANCEL, result, text)
 
     def _finish(self, event: S.Event, result: Any, text: str) -> None:
@@ -153,6 +163,7 @@ class SimpleActionServer:
         self._publish_status()
 
     def publish_feedback(self, feedback: Any) -> None:
+        """Send feedback for the active goal."""
         with self.lock:
             if self.current is None:
                 return
@@ -161,9 +172,15 @@ class SimpleActionServer:
         self.feedback_pub.publish(message)
 
     def register_goal_callback(self, cb: Any) -> None:
+        """Call `cb()` when a new goal comes (no execute
+        callback: the user takes it with accept_new_goal).
+        """
         self.goal_callback = cb
 
     def register_preempt_callback(self, cb: Any) -> None:
+        """Call `cb()` when the active goal is asked
+        to stop.
+        """
         self.preempt_callback = cb
 
     def _status_loop(self) -> None:

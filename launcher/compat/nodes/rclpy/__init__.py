@@ -51,6 +51,7 @@ class InitContextManager:
 
 def init(*, args: list[str] | None = None, context: Any = None, domain_id: int | None = None,
          signal_handler_options: int | None = None) -> InitContextManager:
+    """Initialize the default (or the given) context with the command line `args`."""
     context = context or get_default_context()
     context.init(args, domain_id=domain_id)
     options = SignalHandlerOptions.ALL if signal_handler_options is None else \
@@ -77,6 +78,7 @@ def _on_sigterm(context: Any) -> None:
 
 
 def get_global_executor() -> Any:
+    """The executor spin() and spin_once() use when given none."""
     global _global_executor
     if _global_executor is None:
         from rclpy.executors import SingleThreadedExecutor
@@ -86,6 +88,7 @@ def get_global_executor() -> Any:
 
 
 def create_node(node_name: str, **kwargs: Any) -> Any:
+    """A Node (the Node constructor's keyword arguments)."""
     from rclpy.node import Node
 
     return Node(node_name, **kwargs)
@@ -101,6 +104,7 @@ def _executor_for(node: Any, executor: Any) -> Any:
 
 
 def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
+    """Run one ready callback of `node`, waiting up to `timeout_sec`."""
     from rclpy.node import check_alive
 
     executor = executor or get_global_executor()
@@ -123,6 +127,7 @@ def _plain_spin_once() -> Any:
 
 
 def spin(node: Any, executor: Any = None) -> None:
+    """Run `node`'s callbacks until the context shuts down."""
     executor = _executor_for(node, executor)
     try:
         while executor.context.ok():
@@ -133,6 +138,9 @@ def spin(node: Any, executor: Any = None) -> None:
 
 def spin_until_future_complete(node: Any, future: Any, executor: Any = None,
                                timeout_sec: float | None = None) -> None:
+    """Run `node`'s callbacks until `future` is done or `timeout_sec`
+    has passed.
+    """
     executor = _executor_for(node, executor)
     try:
         executor.spin_until_future_complete(future, timeout_sec)

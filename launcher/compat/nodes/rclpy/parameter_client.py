@@ -35,31 +35,38 @@ class AsyncParameterClient:
         self._clients = [self._list, self._get, self._set, self._describe]
 
     def services_are_ready(self) -> bool:
+        """Whether the remote node's parameter services are there."""
         return all(c.service_is_ready() for c in self._clients)
 
     def wait_for_services(self, timeout_sec: float | None = None) -> bool:
+        """Wait for them up to `timeout_sec`; whether they came."""
         return all(c.wait_for_service(timeout_sec) for c in self._clients)
 
     def list_parameters(self, prefixes: list[str] | None = None, depth: int | None = None,
                         callback: Any = None) -> Any:
+        """A Future of the remote node's ListParameters response."""
         request = self._list.srv_type.Request(prefixes=list(prefixes or []),
                                               depth=depth or 0)
         return self._call(self._list, request, callback)
 
     def get_parameters(self, names: list[str], callback: Any = None) -> Any:
+        """A Future of the values of `names`."""
         return self._call(self._get, self._get.srv_type.Request(names=list(names)), callback)
 
     def set_parameters(self, parameters: list[Parameter], callback: Any = None) -> Any:
+        """A Future of setting `parameters` (one result each)."""
         request = self._set.srv_type.Request(
             parameters=[p.to_parameter_msg() if isinstance(p, Parameter) else p
                         for p in parameters])
         return self._call(self._set, request, callback)
 
     def describe_parameters(self, names: list[str], callback: Any = None) -> Any:
+        """A Future of the descriptors of `names`."""
         return self._call(self._describe,
                           self._describe.srv_type.Request(names=list(names)), callback)
 
     def get_parameter_types(self, names: list[str], callback: Any = None) -> Any:
+        """A Future of the types of `names`."""
         from rclpy.task import Future
 
         described = self.describe_parameters(names)
@@ -87,6 +94,9 @@ class AsyncParameterClient:
 
     def load_parameter_file(self, parameter_file: str, use_wildcard: bool = False,
                             callback: Any = None) -> Any:
+        """A Future of setting the values a params file gives
+        the remote node.
+        """
         values = parameter_dict_from_yaml_file(parameter_file, use_wildcard)  # (as rclpy)
         request = self._set.srv_type.Request(parameters=list(values.values()))
         return self._call(self._set, request, callback)

@@ -45,10 +45,16 @@ class TransformListener:
 
     def canTransform(self, target_frame: str, source_frame: str,  # noqa: N802
                      time: Any) -> bool:
+        """Whether the transform from `source_frame` to `target_frame` at
+        `time` can be looked up now.
+        """
         return self._buffer.core.can_transform(target_frame, source_frame, _ns(time))[0]
 
     def waitForTransform(self, target_frame: str, source_frame: str, time: Any,  # noqa: N802
                          timeout: Any, polling_sleep_duration: Any = None) -> None:
+        """Wait until it can be looked up; tf.Exception after
+        `timeout`.
+        """
         seconds = timeout.to_sec() if hasattr(timeout, "to_sec") else float(timeout)
         deadline = _time.monotonic() + seconds
         while True:
@@ -60,15 +66,18 @@ class TransformListener:
             _time.sleep(0.01)
 
     def getLatestCommonTime(self, source_frame: str, target_frame: str) -> Any:  # noqa: N802
+        """The latest time both frames' chains have data for."""
         import rospy
 
         stamp = self._buffer.core.common_time(target_frame, source_frame)
         return rospy.Time(stamp // 1_000_000_000, stamp % 1_000_000_000)
 
     def frameExists(self, frame_id: str) -> bool:  # noqa: N802
+        """Whether the tree knows `frame_id`."""
         return frame_id.lstrip("/") in self._buffer.core.frames()
 
     def getFrameStrings(self) -> list[str]:  # noqa: N802
+        """Every frame the tree knows."""
         return self._buffer.core.frames()
 
 
@@ -82,6 +91,7 @@ class TransformBroadcaster:
 
     def sendTransform(self, translation: Any, rotation: Any, time: Any, child: str,  # noqa: N802
                       parent: str) -> None:
+        """Publish one transform from a translation and a quaternion."""
         from geometry_msgs.msg import TransformStamped
 
         t = TransformStamped()
@@ -95,4 +105,5 @@ class TransformBroadcaster:
         self.pub_tf.publish(self._message(transforms=[t]))
 
     def sendTransformMessage(self, transform: Any) -> None:  # noqa: N802
+        """Publish one TransformStamped."""
         self.pub_tf.publish(self._message(transforms=[transform]))

@@ -21,6 +21,7 @@ def _header(stamped: Any, transform: Any) -> Any:
 
 
 def do_transform_point(point: Any, transform: Any) -> Any:
+    """A PointStamped moved by a TransformStamped."""
     from geometry_msgs.msg import Point, PointStamped
 
     (x, y, z), _ = multiply(_pose_of(transform),
@@ -29,6 +30,7 @@ def do_transform_point(point: Any, transform: Any) -> Any:
 
 
 def do_transform_vector3(vector3: Any, transform: Any) -> Any:
+    """A Vector3Stamped turned by a TransformStamped (no translation)."""
     from geometry_msgs.msg import Vector3, Vector3Stamped
 
     _, rotation = _pose_of(transform)
@@ -38,6 +40,7 @@ def do_transform_vector3(vector3: Any, transform: Any) -> Any:
 
 
 def do_transform_pose(pose: Any, transform: Any) -> Any:
+    """A Pose moved by a TransformStamped."""
     from geometry_msgs.msg import Point, Pose, Quaternion
 
     p, q = pose.position, pose.orientation
@@ -47,6 +50,7 @@ def do_transform_pose(pose: Any, transform: Any) -> Any:
 
 
 def do_transform_pose_stamped(pose: Any, transform: Any) -> Any:
+    """A PoseStamped moved by a TransformStamped."""
     from geometry_msgs.msg import PoseStamped
 
     return PoseStamped(header=_header(pose, transform),

@@ -7,23 +7,29 @@ from typing import Any
 
 class ManagedEntity:
     def on_configure(self, state: Any) -> Any:
+        """Told of the node's `configure` transition; SUCCESS by default."""
         from rclpy.lifecycle.node import TransitionCallbackReturn
 
         return TransitionCallbackReturn.SUCCESS
 
     def on_cleanup(self, state: Any) -> Any:
+        """Told of the node's `cleanup` transition; SUCCESS by default."""
         return self.on_configure(state)
 
     def on_shutdown(self, state: Any) -> Any:
+        """Told of the node's `shutdown` transition; SUCCESS by default."""
         return self.on_configure(state)
 
     def on_activate(self, state: Any) -> Any:
+        """Told of the node's `activate` transition; SUCCESS by default."""
         return self.on_configure(state)
 
     def on_deactivate(self, state: Any) -> Any:
+        """Told of the node's `deactivate` transition; SUCCESS by default."""
         return self.on_configure(state)
 
     def on_error(self, state: Any) -> Any:
+        """Told of the node's `error` transition; SUCCESS by default."""
         return self.on_configure(state)
 
 
@@ -34,13 +40,16 @@ class SimpleManagedEntity(ManagedEntity):
         self._enabled = False
 
     def on_activate(self, state: Any) -> Any:
+        """Active from now on; SUCCESS."""
         self._enabled = True
         return super().on_activate(state)
 
     def on_deactivate(self, state: Any) -> Any:
+        """Inactive from now on; SUCCESS."""
         self._enabled = False
         return super().on_deactivate(state)
 
     @property
     def is_activated(self) -> bool:
+        """Whether the node is active."""
         return self._enabled

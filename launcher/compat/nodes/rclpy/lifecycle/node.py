@@ -100,21 +100,45 @@ class LifecycleNodeMixin:
 
     # --- the callbacks users override ------------------------------------------------------
     def on_configure(self, state: LifecycleState) -> TransitionCallbackReturn:
+        """The `configure` transition's work (subclasses): returns
+        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
+        configure and SUCCESS.
+        """
         return self._entities_call("on_configure", state)
 
     def on_cleanup(self, state: LifecycleState) -> TransitionCallbackReturn:
+        """The `cleanup` transition's work (subclasses): returns
+        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
+        cleanup and SUCCESS.
+        """
         return self._entities_call("on_cleanup", state)
 
     def on_shutdown(self, state: LifecycleState) -> TransitionCallbackReturn:
+        """The `shutdown` transition's work (subclasses): returns
+        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
+        shutdown and SUCCESS.
+        """
         return self._entities_call("on_shutdown", state)
 
     def on_activate(self, state: LifecycleState) -> TransitionCallbackReturn:
+        """The `activate` transition's work (subclasses): returns
+        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
+        activate and SUCCESS.
+        """
         return self._entities_call("on_activate", state)
 
     def on_deactivate(self, state: LifecycleState) -> TransitionCallbackReturn:
+        """The `deactivate` transition's work (subclasses): returns
+        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
+        deactivate and SUCCESS.
+        """
         return self._entities_call("on_deactivate", state)
 
     def on_error(self, state: LifecycleState) -> TransitionCallbackReturn:
+        """The `error` transition's work (subclasses): returns
+        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
+        error and SUCCESS.
+        """
         return self._entities_call("on_error", state)
 
     def _entities_call(self, method: str, state: LifecycleState) -> TransitionCallbackReturn:
@@ -125,9 +149,13 @@ class LifecycleNodeMixin:
         return TransitionCallbackReturn.SUCCESS
 
     def add_managed_entity(self, entity: ManagedEntity) -> None:
+        """An entity (a lifecycle publisher, …) told of every transition."""
         self._managed_entities.add(entity)
 
     def create_lifecycle_publisher(self, *args: Any, **kwargs: Any) -> LifecyclePublisher:
+        """A publisher that publishes only while the node is active
+        (create_publisher's arguments).
+        """
         kwargs["publisher_class"] = LifecyclePublisher
         publisher = self.create_publisher(*args, **kwargs)  # type: ignore[attr-defined]
         self._managed_entities.add(publisher)
@@ -135,18 +163,23 @@ class LifecycleNodeMixin:
 
     # --- transitions -----------------------------------------------------------------------
     def trigger_configure(self) -> TransitionCallbackReturn:
+        """Run the configure transition now; its callback's return."""
         return self._trigger(1)
 
     def trigger_cleanup(self) -> TransitionCallbackReturn:
+        """Run the cleanup transition now; its callback's return."""
         return self._trigger(2)
 
     def trigger_activate(self) -> TransitionCallbackReturn:
+        """Run the activate transition now; its callback's return."""
         return self._trigger(3)
 
     def trigger_deactivate(self) -> TransitionCallbackReturn:
+        """Run the deactivate transition now; its callback's return."""
         return self._trigger(4)
 
     def trigger_shutdown(self) -> TransitionCallbackReturn:
+        """Run the shutdown transition now; its callback's return."""
         return self._trigger({UNCONFIGURED: 5, INACTIVE: 6, ACTIVE: 7}.get(self._state_id, 5))
 
     def _allowed(self) -> list[int]:

@@ -16,6 +16,9 @@ class LifecyclePublisher(SimpleManagedEntity, Publisher):
         self._warned = False
 
     def publish(self, msg: Any) -> None:
+        """Publish while the node is active; otherwise drop the message (with one
+        warning).
+        """
         if not self.is_activated:
             if not self._warned:  # (once, where rclpy says it at every call)
                 from rclpy.logging import get_logger
