@@ -49,9 +49,9 @@ def page() -> str:
                 parts.append(f"### {code(node.name)}\n")
                 if ast.get_docstring(node):
                     parts.append(ast.get_docstring(node) + "\n")
-                parts += [entry(f, "####") for f in node.body
+                parts += [text for f in node.body
                           if isinstance(f, ast.FunctionDef | ast.AsyncFunctionDef) and
-                          public(f.name)]
+                          public(f.name) and (text := entry(f, "####"))]
     return "\n".join(parts)
 
 
@@ -61,8 +61,12 @@ def public(name: str) -> bool:
 
 def entry(function: ast.FunctionDef | ast.AsyncFunctionDef, level: str) -> str:
     args = ast.unparse(function.args).replace("self, ", "").removeprefix("self")
+    decorators = {ast.unparse(d) for d in function.decorator_list}
+    title = function.name if "property" in decorators else f"{function.name}({args})"
+    if any(d.endswith(".setter") for d in decorators):
+        return ""  # (the property's own entry says it)
     doc = (ast.get_docstring(function) or "").replace(":param ", "- `").replace(":return:",
                                                                                 "- returns:")
     lines = [line if not line.startswith("- `") else line.replace(":", "`:", 1)
              for line in doc.splitlines()]
-    return f"{level} {code(f'{function.name}({args})')}\n\n" + "\n".join(lines) + "\n"
+    return f"{level} {code(title)}\n\n" + "\n".join(lines) + "\n"
