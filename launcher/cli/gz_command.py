@@ -30,3 +30,8 @@ def run_gz(argv: list[str]) -> int:
     from launcher.nodes.gz import main
 
     return main(argv)
+
+
+def main(argv: list[str], prog: str = "") -> int:
+    """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
+    return run_gz(argv)

@@ -10,6 +10,7 @@ import argparse
 import importlib
 import os
 import sys
+from typing import NamedTuple
 
 from launcher import __version__
 from launcher.arguments import Parser
@@ -51,6 +52,28 @@ COMMANDS = {
 }
 
 
+class Tool(NamedTuple):
+    """A word that is a tool of its own: its module's `main(argv, prog)` takes the words after
+    it as they are. `debug`: where --debug asks for tracebacks (any word, none: the tool's own
+    flags, lead: the two words after it); `strip`: --debug is taken out of its words."""
+    module: str
+    name: str = ""  # the reporter's name for its errors
+    debug: str = "any"
+    strip: bool = False
+
+
+# ROS 2's `ros2` and colcon (compat/bin), ROS 1's tools (cli/ros1), and launcher's commands
+# whose words after them are another program's (gz sim's flags, -h included; run's executable)
+TOOLS = {
+    "ros2": Tool("launcher.cli.ros2_command"),
+    "colcon": Tool("launcher.cli.colcon_command"),
+    **{name: Tool(module, strip=True) for name, module in ROS1_TOOLS.items()},
+    "sim": Tool("launcher.cli.sim_command", "sim", debug="none"),
+    "run": Tool("launcher.cli.run_command", "run", debug="lead"),
+    "gz": Tool("launcher.cli.gz_command", strip=True),
+}
+
+
 def build_parser(selected: str | None, prog: str = "launcher") -> tuple[
         argparse.ArgumentParser, argparse._SubParsersAction]:
     """The parser, and its subcommands (only the selected one's module is imported)."""
@@ -72,38 +95,18 @@ def main(argv: list[str] | None = None, prog: str = "launcher") -> int:
 
         return complete(build_parser, COMMANDS)
     argv = sys.argv[1:] if argv is None else argv
-    if argv[:1] == ["ros2"]:  # ROS 2's `ros2` (compat/bin): its verbs are launcher's commands
-        from launcher.cli.ros2_command import translate
-
-        debug = "--debug" in argv
-        return reported(lambda: _ros2(translate(argv[1:])), "", debug)
-    if argv[:1] == ["colcon"]:  # colcon (compat/bin): the real one, from the build tools
-        from launcher.cli.colcon_command import main as colcon
-
-        return reported(lambda: colcon(argv[1:]), "", "--debug" in argv)
-    if argv[:1] and argv[0] in ROS1_TOOLS:  # ROS 1's rostopic, roslaunch, … (compat/bin)
-        tool = importlib.import_module(ROS1_TOOLS[argv[0]])
-        debug = "--debug" in argv
-        rest = [a for a in argv[1:] if a != "--debug"]
-        return reported(lambda: tool.main(rest, argv[0]), "", debug)
-    if argv[:1] == ["sim"]:  # every flag after it is the sim's own (gz sim's), -h included
-        from launcher.cli.sim_command import run_sim
-
-        return reported(lambda: run_sim(argv[1:]), "sim")
-    if argv[:1] == ["run"]:  # every word after PACKAGE EXECUTABLE is the executable's own
-        from launcher.cli.run_command import run_run
-
-        return reported(lambda: run_run(argv[1:]), "run", "--debug" in argv[1:3])
-    if argv[:1] == ["gz"]:  # Gazebo's own flags, -h included
-        from launcher.cli.gz_command import run_gz
-
-        return reported(lambda: run_gz([a for a in argv[1:] if a != "--debug"]), "",
-                        "--debug" in argv)
+    if argv and argv[0] in TOOLS:
+        return run_tool(argv[0], argv[1:])
     return reported(lambda: _parse_and_run(argv, prog), "", "--debug" in argv)
 
 
-def _ros2(argv: list[str] | None) -> int:
-    return 0 if argv is None else main(argv, "ros2")
+def run_tool(word: str, words: list[str]) -> int:
+    """The tool `word` on the words after it (see TOOLS), its errors through the reporter."""
+    tool = TOOLS[word]
+    debug = {"any": "--debug" in words, "none": False, "lead": "--debug" in words[:2]}[tool.debug]
+    given = [w for w in words if w != "--debug"] if tool.strip else words
+    module = importlib.import_module(tool.module)
+    return reported(lambda: module.main(given, word), tool.name, debug)
 
 
 def _parse_and_run(argv: list[str], prog: str = "launcher") -> int | None:

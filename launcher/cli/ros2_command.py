@@ -126,3 +126,13 @@ def _daemon(rest: list[str]) -> None:
                          f"{did_you_mean(rest[0], DAEMON)}; the commands: start, status, stop")
     print(DAEMON[rest[0]])
     return None
+
+
+def main(argv: list[str], prog: str = "ros2") -> int:
+    """`ros2 argv…`: launcher's command of the verb, or what ros2 prints by itself."""
+    translated = translate(argv)
+    if translated is None:
+        return 0
+    from launcher.cli.main import main as launcher_main
+
+    return launcher_main(translated, "ros2")

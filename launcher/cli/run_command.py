@@ -77,3 +77,8 @@ def run_run(argv: list[str]) -> int:
         raise LaunchError(f"cannot run {' '.join(map(shlex.quote, command))}: "
                           f"{exc.strerror}") from None
     return 0  # not reached
+
+
+def main(argv: list[str], prog: str = "") -> int:
+    """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
+    return run_run(argv)

@@ -34,3 +34,8 @@ def run_sim(argv: list[str], gz: bool = False) -> int:
     from launcher.nodes.sim import main
 
     return main(argv, gz=gz)
+
+
+def main(argv: list[str], prog: str = "") -> int:
+    """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
+    return run_sim(argv)
