@@ -111,7 +111,7 @@ def raw_frames_per_second(world: Path, depth: bool, seconds: float = 4.0) -> flo
     import mujoco
 
     from launcher.sim.world import World
-    from tests.unit.test_sim import Recorder
+    from tests.support.sim import Recorder
 
     os.environ["LAUNCHER_RENDERER"] = "none"
     try:

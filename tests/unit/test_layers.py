@@ -194,10 +194,11 @@ def test_the_layout_page_names_every_package_and_top_level_module():
 
 
 def test_no_test_module_imports_another():
-    """What several test modules share lives in tests/support/, not in one of them."""
+    """What several test modules (and benchmarks) share lives in tests/support/, not in one
+    of the test modules."""
     tests = ROOT.parent / "tests"
-    found = [f"{path.relative_to(tests)}: {name}"
-             for path in sorted(tests.rglob("test_*.py"))
+    found = [f"{path.relative_to(ROOT.parent)}: {name}"
+             for path in sorted([*tests.rglob("test_*.py"), *(ROOT.parent / "bench").glob("*.py")])
              for name in sorted(n for n in imports_from_tests(path)
                                 if n.split(".")[-1].startswith("test_"))]
     assert not found, "test modules importing test modules:\n" + "\n".join(found)
