@@ -11,6 +11,7 @@ from launcher.bus.declarations import REQUIRED
 from launcher.control.controllers import TYPES, controller_class
 from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
 from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
+from launcher.nodes.parameter_bridge import PARAMETERS as bridge_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
 
 TITLE = """# Parameters of controllers and nodes
@@ -29,7 +30,8 @@ name stands for each name of the `joints` parameter (`{joint}`: the one joint).
 # the built-in nodes that declare theirs: (package/executable, its declarations)
 NODES = {"foxglove_bridge/foxglove_bridge": foxglove_parameters,
          "robot_state_publisher/robot_state_publisher": lambda: rsp_parameters,
-         "joint_state_publisher/joint_state_publisher": lambda: jsp_parameters}
+         "joint_state_publisher/joint_state_publisher": lambda: jsp_parameters,
+         "ros_gz_bridge/parameter_bridge": lambda: bridge_parameters}
 
 
 def page() -> str:

@@ -15,6 +15,7 @@ import sys
 from typing import Any
 
 from launcher.bus import keys
+from launcher.bus.declarations import Param, ParameterError
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.errors import LaunchError
@@ -111,12 +112,22 @@ class Bridge:
         publisher.watch_subscribers(on_subscribers)
 
 
+# ros_gz_bridge's parameter (the config file is a template of all the node's parameters)
+PARAMETERS = (
+    Param("config_file", "string", "", "the bridge's YAML (a Jinja template of the node's "
+                                       "parameters)"),
+)
+
+
 def setup(node: Node) -> Bridge:
+    try:
+        config = node.params.declare(PARAMETERS)["config_file"]
+    except ParameterError as exc:
+        raise LaunchError(str(exc)) from None
     bridge = Bridge(node)
     types = bridge_config.Types(conversions.sim_type, conversions.known_ros_type)
     entries = [bridge_config.parse_argument(arg, types) for arg in node.args]
     total = len(entries)
-    config = node.parameters.get("config_file")
     if config:
         loaded, given = bridge_config.load_file(str(config), node.parameters, types,
                                                 node.get_logger().error)

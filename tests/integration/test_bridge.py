@@ -221,6 +221,15 @@ def test_bad_config_entries_are_reported_with_file_line_and_number(bridge_ws, te
     assert "Traceback" not in done.stderr
 
 
+def test_a_config_file_that_is_no_path_is_refused_by_name(bridge_ws):
+    done = subprocess.run([PY, "-m", "launcher.nodes.parameter_bridge", "--ros-args", "-p",
+                           "config_file:=5"], cwd=bridge_ws.root, env=bridge_ws.env,
+                          capture_output=True, text=True, timeout=30, input="")
+    assert done.returncode == 1, done.stderr
+    assert "parameter 'config_file' is 5; expected text" in done.stderr, done.stderr
+    assert "Traceback" not in done.stderr
+
+
 def test_a_bad_type_skips_its_entry_and_the_rest_is_bridged(bridge_ws):
     bridge_ws.write("bad.yaml", """- topic_name: /a
   ros_type_name: std_msgs/msg/Bool

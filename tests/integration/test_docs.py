@@ -20,6 +20,7 @@ from launcher.description.registry import Registry
 from launcher.nodes.conversions import conversions
 from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
 from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
+from launcher.nodes.parameter_bridge import PARAMETERS as bridge_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
 from tests.conftest import REPO
 from tests.fidelity.choices import CHOICES
@@ -90,7 +91,8 @@ def test_the_parameters_page_gives_every_controller_and_node_that_declares_them(
     declared = {**{t: controller_class(t).PARAMETERS for t in TYPES},
                 "foxglove_bridge/foxglove_bridge": foxglove_parameters(),
                 "robot_state_publisher/robot_state_publisher": rsp_parameters,
-                "joint_state_publisher/joint_state_publisher": jsp_parameters}
+                "joint_state_publisher/joint_state_publisher": jsp_parameters,
+                "ros_gz_bridge/parameter_bridge": bridge_parameters}
     for name, parameters in declared.items():
         assert name in page, name
         for parameter in parameters:
