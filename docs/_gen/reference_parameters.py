@@ -28,10 +28,10 @@ name stands for each name of the `joints` parameter (`{joint}`: the one joint).
 
 
 # the built-in nodes that declare theirs: (package/executable, its declarations)
-NODES = {"foxglove_bridge/foxglove_bridge": foxglove_parameters,
-         "robot_state_publisher/robot_state_publisher": lambda: rsp_parameters,
-         "joint_state_publisher/joint_state_publisher": lambda: jsp_parameters,
-         "ros_gz_bridge/parameter_bridge": lambda: bridge_parameters}
+NODES = {"foxglove_bridge/foxglove_bridge": foxglove_parameters(),
+         "robot_state_publisher/robot_state_publisher": rsp_parameters,
+         "joint_state_publisher/joint_state_publisher": jsp_parameters,
+         "ros_gz_bridge/parameter_bridge": bridge_parameters}
 
 
 def page() -> str:
@@ -40,7 +40,7 @@ def page() -> str:
         parts += [f"### {code(type_name)}\n", _table(controller_class(type_name).PARAMETERS)]
     parts.append("## Nodes\n")
     for name, declared in NODES.items():
-        parts += [f"### {code(name)}\n", _table(declared())]
+        parts += [f"### {code(name)}\n", _table(declared)]
     return "\n".join(parts)
 
 

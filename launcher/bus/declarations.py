@@ -1,6 +1,6 @@
 """A node's parameters declared as data, as ros2_controllers declare theirs with
 generate_parameter_library: name, type, default, description, bounds, read-only. The
-controllers and the built-in nodes declare theirs so (Node.declare reads them).
+controllers and the built-in nodes declare theirs so (node.params.declare reads them).
 
 One reader checks what the parameter files gave against the declaration (one message shape,
 which the node places at the file's line), fills in the defaults (so `ros2 param list` shows
@@ -19,8 +19,7 @@ REQUIRED: Any = object()
 PLACEHOLDER = re.compile(r"\{(\w+)\}")
 
 # rcl_interfaces/msg/ParameterType, by the declaration's type names
-TYPES = {"bool": 1, "int": 2, "double": 3, "string": 4, "bool_array": 6, "int_array": 7,
-         "double_array": 8, "string_array": 9}
+TYPES = {"bool": 1, "int": 2, "double": 3, "string": 4, "double_array": 8, "string_array": 9}
 _CHECKS: dict[str, Callable[[Any], bool]] = {
     "bool": lambda v: isinstance(v, bool),
     "int": lambda v: isinstance(v, int) and not isinstance(v, bool),
@@ -42,12 +41,8 @@ class Param(NamedTuple):
     description: str = ""
     minimum: float | None = None
     maximum: float | None = None
-    read_only: bool = False  # a set is refused (none is: a set takes effect at configure)
+    read_only: bool = False  # a set from outside is refused, as rclcpp refuses it
     non_empty: bool = False  # an array that must name something
-
-    def value_text(self) -> str:
-        """The default as the reference page shows it."""
-        return "required" if self.default is REQUIRED else repr(self.default)
 
 
 class ParameterError(ValueError):

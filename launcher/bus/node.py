@@ -80,7 +80,7 @@ class Node:
         self.params = NodeParameters(given, self.fully_qualified_name)
         self.owner: Any = None  # the rclpy node wrapping this one, if any
         self.host = Host(session or open_session("peer"), self.namespace,
-                          self.name, logger, space)
+                         self.name, logger, space)
         self.session = self.host.session
         self._timers: list[Timer] = []
         self._token = self.host.announce(keys.NODE)
@@ -126,7 +126,7 @@ class Node:
     def create_publisher(self, type_name: str, topic: str, qos: QoS | int = 10,
                          space: keys.Space | None = None) -> Publisher:
         return self.host.adopt(Publisher(self.host, type_name, self.resolve(topic, space=space),
-                                          qos_of(qos), space))
+                                         qos_of(qos), space))
 
     def create_subscription(self, type_name: str, topic: str, callback: Callable[[Any], None],
                             qos: QoS | int = 10, raw: bool = False,
@@ -140,8 +140,8 @@ class Node:
         ignores what this node publishes (a two-way bridge must not hear itself). `make`
         builds messages of other classes from field values (see TypeRegistry.deserialize)."""
         return self.host.adopt(Subscription(self.host, type_name,
-                                             self.resolve(topic, space=space), callback,
-                                             qos_of(qos), raw, inline, remote_only, space, make))
+                                            self.resolve(topic, space=space), callback,
+                                            qos_of(qos), raw, inline, remote_only, space, make))
 
     def create_service(self, type_name: str, name: str,
                        callback: Callable[[Any, Any], Any],
@@ -150,15 +150,14 @@ class Node:
                        new_response: Callable[[], Any] | None = None,
                        type_hash: str | None = None) -> Service:
         return self.host.adopt(Service(self.host, type_name,
-                                        self.resolve(name, "service name", space), callback,
-                                        space,
-                                        make, new_response, type_hash))
+                                       self.resolve(name, "service name", space), callback,
+                                       space, make, new_response, type_hash))
 
     def create_client(self, type_name: str, name: str,
                       space: keys.Space | None = None,
                       make: Callable[[str, list[Any]], Any] | None = None) -> Client:
         return self.host.adopt(Client(self.host, type_name,
-                                       self.resolve(name, "service name", space), space, make))
+                                      self.resolve(name, "service name", space), space, make))
 
     def spin_with(self, other: Node) -> None:
         """This node's callbacks run when `other` spins (one thread for both); call it before

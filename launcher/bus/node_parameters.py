@@ -59,6 +59,9 @@ class NodeParameters:
             refused = self.gate(name, value)
             if refused:
                 return refused
+        param = self._declaration(name)
+        if param is not None and param.read_only:
+            return f"parameter '{name}' cannot be set because it is read-only"
         if value is None:
             if name not in self._values:
                 return f"parameter '{name}' is not set"
@@ -81,12 +84,16 @@ class NodeParameters:
         """rcl_interfaces/ParameterDescriptor's fields for a parameter."""
         if self.describer is not None:
             return self.describer(name)
-        for full, param in declarations.expand(self._declared, self._values):
-            if full == name:
-                return declarations.descriptor(full, param)
+        param = self._declaration(name)
+        if param is not None:
+            return declarations.descriptor(name, param)
         from launcher.bus.parameters import type_of
 
         return {"name": name, "type": type_of(self._values.get(name))}
+
+    def _declaration(self, name: str) -> Param | None:
+        return next((param for full, param in declarations.expand(self._declared, self._values)
+                     if full == name), None)
 
     def keep(self, name: str, value: Any) -> None:
         """Hold a value without telling the listeners: a client library (rclpy's node) that

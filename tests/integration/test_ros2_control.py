@@ -410,7 +410,15 @@ def test_a_controllers_parameters_are_listed_with_defaults_and_described(arm):
     assert "allow_partial_joints_goal" in listed and "gains.j2.ff_velocity_scale" in listed
     described = arm.run("param", "describe", "/arm_controller", "action_monitor_rate").stdout
     assert "Type: double" in described and "Description: goal checks a second" in described
-    assert "Min value: 0.001" in described, described
+    assert "Min value: 0.1" in described and "Read only: true" in described, described
+
+
+def test_a_read_only_controller_parameter_is_refused_as_rclcpp_refuses_it(arm):
+    assert spawner(arm, "arm_controller").returncode == 0
+    refused = arm.run("param", "set", "/arm_controller", "joints", "[j1]").stdout
+    assert "Setting parameter failed: parameter 'joints' cannot be set because it is " \
+           "read-only" in refused, refused
+    assert "j2" in arm.run("param", "get", "/arm_controller", "joints").stdout
 
 
 def test_an_unknown_hardware_plugin_is_refused_at_its_line(ws):

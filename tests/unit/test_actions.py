@@ -33,7 +33,7 @@ def test_the_status_array_written_directly_is_the_type_stores():
 def test_the_client_reads_goal_statuses_from_the_bytes():
     entries = [(bytes(range(16)), 5, 7, 2), (bytes(range(16, 32)), 6, 8, 4)]
     assert statuses(status_array_cdr(entries)) == [(bytes(range(16)), 2),
-                                                    (bytes(range(16, 32)), 4)]
+                                                   (bytes(range(16, 32)), 4)]
 
 
 def test_the_standard_action_types_are_there_with_their_fields():

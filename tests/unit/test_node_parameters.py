@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from launcher.bus.declarations import Param
 from launcher.bus.node_parameters import NodeParameters
 from launcher.errors import LaunchError
 
@@ -31,3 +32,13 @@ def test_deleting_a_parameter_that_is_not_set_says_so():
 def test_an_unknown_parameter_is_refused_naming_the_node():
     with pytest.raises(LaunchError, match="parameter 'x' is not declared on /robot/driver"):
         NodeParameters({}, "/robot/driver").get("x")
+
+
+def test_a_read_only_declared_parameter_is_refused_from_outside_and_described_so():
+    params = NodeParameters({"joints": ["a"]}, "/n")
+    params.declare((Param("joints", "string_array", [], "the joints", read_only=True),
+                    Param("rate", "double", 1.0, "a rate")))
+    assert params.request("joints", ["b"]) == \
+        "parameter 'joints' cannot be set because it is read-only"
+    assert params.get("joints") == ["a"] and params.describe("joints")["read_only"]
+    assert params.request("rate", 2.0) is None and params.get("rate") == 2.0

@@ -75,8 +75,8 @@ class DiffDriveController(Controller):
         Param("position_feedback", "bool", True,
               "odometry from the wheels' positions (false: their velocities)"),
         Param("wheel_separation", "double", REQUIRED,
-              "the distance between the left and right wheels, m", minimum=0.0),
-        Param("wheel_radius", "double", REQUIRED, "the wheels' radius, m", minimum=0.0),
+              "the distance between the left and right wheels, m"),
+        Param("wheel_radius", "double", REQUIRED, "the wheels' radius, m"),
         Param("wheels_per_side", "int", 0, "accepted: every named wheel is driven"),
         Param("wheel_separation_multiplier", "double", 1.0, "corrects wheel_separation"),
         Param("left_wheel_radius_multiplier", "double", 1.0, "corrects the left radius"),
@@ -84,9 +84,9 @@ class DiffDriveController(Controller):
         Param("open_loop", "bool", False, "odometry from the commands, not the wheels"),
         Param("enable_odom_tf", "bool", True, "publish odom -> base on /tf"),
         Param("cmd_vel_timeout", "double", 0.5,
-              "s without a command before the robot stops", minimum=0.0),
-        Param("publish_rate", "double", 50.0, "odometry messages a second (0: every update)",
-              minimum=0.0),
+              "s without a command before the robot stops (0 or less: never)"),
+        Param("publish_rate", "double", 50.0,
+              "odometry messages a second (0 or less: every update)"),
         Param("tf_frame_prefix_enable", "bool", True, "prefix the frames"),
         Param("tf_frame_prefix", "string", "", "the prefix (empty: the node's namespace)"),
         Param("odom_frame_id", "string", "odom", "the odometry's frame"),
@@ -96,7 +96,7 @@ class DiffDriveController(Controller):
         Param("twist_covariance_diagonal", "double_array", [0.0] * 6,
               "the twist covariance's diagonal"),
         Param("velocity_rolling_window_size", "int", 10,
-              "wheel velocities averaged over this many updates", minimum=1),
+              "wheel velocities averaged over this many updates (at least 1)"),
         Param("use_stamped_vel", "bool", True,
               "~/cmd_vel is a TwistStamped (false: a Twist)"),
         *limit_parameters("linear.x", "linear"),
@@ -137,7 +137,7 @@ class DiffDriveController(Controller):
         self.base_frame = prefix + p["base_frame_id"]
         self.pose_covariance = p["pose_covariance_diagonal"]
         self.twist_covariance = p["twist_covariance_diagonal"]
-        self.window = p["velocity_rolling_window_size"]
+        self.window = max(p["velocity_rolling_window_size"], 1)
         self.linear_limit = Limit(p, "linear.x")
         self.angular_limit = Limit(p, "angular.z")
         stamped = p["use_stamped_vel"]

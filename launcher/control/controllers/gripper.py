@@ -28,14 +28,13 @@ class GripperActionController(Controller):
     command_kind = "position"
     PARAMETERS = (
         Param("joint", "string", REQUIRED, "the commanded joint"),
-        Param("action_monitor_rate", "double", 20.0, "goal checks a second", minimum=1e-3),
+        Param("action_monitor_rate", "double", 20.0, "goal checks a second", minimum=0.1),
         Param("goal_tolerance", "double", 0.01, "how near the command a goal succeeds",
               minimum=0.0),
         Param("allow_stalling", "bool", False, "a stalled gripper succeeds (false: aborts)"),
         Param("stall_velocity_threshold", "double", 0.001,
-              "below this speed the gripper is stopped", minimum=0.0),
-        Param("stall_timeout", "double", 1.0, "s stopped short before it is stalled",
-              minimum=0.0),
+              "below this speed the gripper is stopped"),
+        Param("stall_timeout", "double", 1.0, "s stopped short before it is stalled"),
         Param("gains.{joint}.p", "double", 0.0, "the effort type's PID: proportional"),
         Param("gains.{joint}.i", "double", 0.0, "integral"),
         Param("gains.{joint}.d", "double", 0.0, "derivative"),

@@ -97,7 +97,7 @@ class TricycleController(_Steered):
         Param("steering.max_position", "double", math.pi / 2,
               "the largest steering angle, rad"),
         Param("cmd_vel_timeout", "double", 500.0,
-              "ms without a command before the robot stops", minimum=0.0),
+              "ms without a command before the robot stops"),
         *COMMON,
     )
 
@@ -163,7 +163,7 @@ class AckermannSteeringController(_Steered):
         Param("rear_wheels_radius", "double", REQUIRED, "the rear wheels' radius, m"),
         Param("open_loop", "bool", False, "odometry from the commands, not the wheels"),
         Param("reference_timeout", "double", 1.0,
-              "s without a command before the robot stops", minimum=0.0),
+              "s without a command before the robot stops"),
         *COMMON,
     )
 

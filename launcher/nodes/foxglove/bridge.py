@@ -42,7 +42,7 @@ class Bridge:
 
         self._foxglove = foxglove
         self.node, self.settings = node, settings
-        self._server: Any = None
+        self.server: Any = None  # the SDK's, once started
         self._lock = threading.RLock()
         self._channels: dict[str, tuple[Any, str]] = {}  # topic -> (channel, type)
         self._watched: dict[str, tuple[Any, int]] = {}  # topic -> (bus subscription, count)
@@ -53,15 +53,6 @@ class Bridge:
         self._graph_watched = False
         self._clock_time = 0
         self.parameters = NodeParameters(node, settings.params, foxglove, self._warn_once)
-
-    @property
-    def server(self) -> Any:
-        """The SDK's server, once started (its parameters' too)."""
-        return self._server
-
-    @server.setter
-    def server(self, server: Any) -> None:
-        self._server = self.parameters.server = server
 
     # --- the graph --------------------------------------------------------------------
     def sync(self) -> None:
@@ -85,10 +76,11 @@ class Bridge:
                 self._sync_services(services)
         if self._graph_watched and self.server is not None:
             self.server.publish_connection_graph(self._connection_graph(entities))
-        if self.parameters.wanted:
+        if self.server is not None and self.parameters.wanted:
             # (apart from the node's executor: the bridge's own parameters are read through
             # its services, which that executor answers)
-            threading.Thread(target=self.parameters.send_changed, daemon=True).start()
+            threading.Thread(target=self.parameters.send_changed, args=(self.server,),
+                             daemon=True).start()
 
     def _shown(self, name: str, patterns: list[re.Pattern[str]]) -> bool:
         return (self.settings.include_hidden or not names.hidden(name)) and \

@@ -23,14 +23,13 @@ class NodeParameters:
                  warn_once: Callable[[str, str], None]) -> None:
         self.node, self.whitelist, self._foxglove, self.warn_once = \
             node, whitelist, foxglove, warn_once
-        self.server: Any = None
         self._watched: dict[str, Any] = {}  # name -> last value sent
         self._busy = threading.Lock()
 
     @property
     def wanted(self) -> bool:
         """Whether a client waits for changes and none is being looked for now."""
-        return bool(self._watched) and self.server is not None and not self._busy.locked()
+        return bool(self._watched) and not self._busy.locked()
 
     def get(self, wanted: list[str]) -> list[Any]:
         """`node.name` parameters; all of every node when `wanted` is empty."""
@@ -114,7 +113,8 @@ class NodeParameters:
             else:
                 self._watched.pop(name, None)
 
-    def send_changed(self) -> None:
+    def send_changed(self, server: Any) -> None:
+        """Send the server the watched parameters that changed since they were last sent."""
         with self._busy:
             changed = []
             for parameter in self.get(list(self._watched)):
@@ -123,4 +123,4 @@ class NodeParameters:
                     self._watched[parameter.name] = value
                     changed.append(parameter)
             if changed:
-                self.server.publish_parameter_values(changed)
+                server.publish_parameter_values(changed)

@@ -31,7 +31,7 @@ def parameters() -> tuple[Param, ...]:
         Param("client_topic_whitelist", "string_array", [".*"],
               "regular expressions of the topics clients may publish"),
         Param("send_buffer_limit", "int", 10_000_000,
-              "bytes queued for a client before it loses frames", minimum=0),
+              "bytes queued for a client before it loses frames"),
         Param("use_sim_time", "bool", False, "the clients' time from /clock"),
         Param("capabilities", "string_array", list(CAPABILITIES),
               "what clients may do: " + ", ".join(CAPABILITIES)),
@@ -57,7 +57,7 @@ class Settings:
         self.services = patterns(value["service_whitelist"], "service_whitelist")
         self.params = patterns(value["param_whitelist"], "param_whitelist")
         self.client_topics = patterns(value["client_topic_whitelist"],
-                                       "client_topic_whitelist")
+                                      "client_topic_whitelist")
         self.send_buffer_limit = value["send_buffer_limit"]
         self.use_sim_time = value["use_sim_time"]
         self.capabilities = value["capabilities"]

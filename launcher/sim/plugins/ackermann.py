@@ -124,7 +124,7 @@ class AckermannSteering(Plugin):
     def _control(self, data: Any, dt: float) -> None:
         p = self.params
         speed = approach(self.speed, min(max(self.target[0], p.min_velocity), p.max_velocity),
-                          dt, p.min_acceleration, p.max_acceleration)
+                         dt, p.min_acceleration, p.max_acceleration)
         self.speed = speed
         turn = self.target[1]
         limit_radius = p.wheel_base / math.sin(p.steering_limit)

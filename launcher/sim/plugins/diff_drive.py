@@ -161,9 +161,9 @@ class DiffDrive(Plugin):
             return  # the wheels already have this command
         lim = self.limits
         self.v = approach(self.v, self.target[0], dt, lim["min_linear_acceleration"],
-                           lim["max_linear_acceleration"])
+                          lim["max_linear_acceleration"])
         self.w = approach(self.w, self.target[1], dt, lim["min_angular_acceleration"],
-                           lim["max_angular_acceleration"])
+                          lim["max_angular_acceleration"])
         self._apply()
 
     def _apply(self) -> None:

@@ -169,7 +169,7 @@ class ClassicOutputs:
 
     def open(self, transport: Any) -> None:
         self.publishers = [(output, transport.publisher(output.type_name, output.topic,
-                                                         ros=True))
+                                                        ros=True))
                            for output in self.outputs]
 
     def wanted(self) -> bool:

@@ -18,8 +18,8 @@ def wait_for_message(msg_type: Any, node: Any, topic: str, *, qos_profile: Any =
     first = FirstMessage()
     type_name = rosidl.type_name_of(msg_type)
     subscription = node.handle.create_subscription(type_name, topic, first,
-                                                 to_launcher(qos_profile), inline=True,
-                                                 make=rosidl.make)
+                                                   to_launcher(qos_profile), inline=True,
+                                                   make=rosidl.make)
     try:
         if time_to_wait is None or time_to_wait < 0:
             while not first.wait(0.1):
