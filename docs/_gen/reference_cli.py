@@ -7,17 +7,21 @@ from collections.abc import Iterator
 
 from md_tables import code, table
 
+from launcher.cli.commands import ROS1
 from launcher.cli.main import COMMANDS, build_parser
+from launcher.cli.verbs import EVERY, group_parser
 
 TITLE = "# Command line\n\nGenerated from the commands' own parsers at each build.\n"
 
 
 def parsers() -> Iterator[tuple[str, argparse.ArgumentParser]]:
-    """Each command's parser; `sim` and `gz` pass their words on to the sim's own parsers."""
+    """Each command's parser (`sim` and `gz` pass their words on to the sim's own parsers),
+    then ROS 1's tools that have verbs."""
     import importlib
 
     from launcher.nodes import sim, snapshot
 
+    _, commands = build_parser(EVERY)
     for name in COMMANDS:
         if name == "sim":
             yield "launcher sim", sim.build_parser()
@@ -27,8 +31,9 @@ def parsers() -> Iterator[tuple[str, argparse.ArgumentParser]]:
                 parser = importlib.import_module(f"launcher.nodes.gz.{verb}").build_parser()
                 yield f"launcher {parser.prog}", parser
         else:
-            _, commands = build_parser(name)
             yield f"launcher {name}", commands.choices[name]
+    for name, group in ROS1.items():
+        yield name, group_parser(group, name, EVERY)
 
 
 def page() -> str:

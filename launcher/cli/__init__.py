@@ -35,3 +35,4 @@ def _argument_error(text: str) -> Exception:
     import argparse
 
     return argparse.ArgumentTypeError(text)
+

@@ -14,16 +14,16 @@ from collections.abc import Callable
 from typing import Any
 
 
-def complete(build_parser: Callable[[str | None], Any], commands: dict[str, Any]) -> int:
-    """Answer the shell's completion request (argcomplete exits the process)."""
+def complete(build_parser: Callable[[list[str]], Any]) -> int:
+    """Answer the shell's completion request (argcomplete exits the process); the parser is
+    built for the words finished so far, so that only the verb being typed is imported."""
     import argcomplete
 
     line = os.environ.get("COMP_LINE", "")
     line = line[:int(os.environ.get("COMP_POINT", len(line)))]
     words = line.split()[1:]
     finished = words if line.endswith(" ") else words[:-1]
-    selected = next((w for w in finished if not w.startswith("-")), None)
-    parser, _ = build_parser(selected if selected in commands else None)
+    parser, _ = build_parser(finished)
     argcomplete.autocomplete(parser, always_complete_options="long")
     return 0
 

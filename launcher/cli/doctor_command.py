@@ -17,10 +17,8 @@ OK, NOTE, FAIL = "ok", "note", "FAIL"
 Check = tuple[str, str, str]  # (status, what, detail or fix)
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("doctor", help="check the install and the workspace; say what "
-                                           "to fix")
-    p.set_defaults(run=run)
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """(no arguments: the checks are the report)"""
 
 
 def python() -> Check:

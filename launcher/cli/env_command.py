@@ -11,17 +11,14 @@ from launcher import compat
 from launcher.cli.workspace import hooked_environment, load_index
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser(
-        "env", help="print the environment the workspace's hooks make",
-        description="Print the changes that every package's environment hooks make, as "
-                    "commands for a shell (eval \"$(launcher env)\") or as JSON.")
-    p.add_argument("--shell", choices=("sh", "bash", "zsh", "json"), default="sh",
-                   help="the form to print: shell commands (default sh) or JSON")
-    p.add_argument("--zenoh", action="store_true",
-                   help="instead, the settings that put another Zenoh program on the graph "
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.description = ("Print the changes that every package's environment hooks make, as "
+                          "commands for a shell (eval \"$(launcher env)\") or as JSON.")
+    parser.add_argument("--shell", choices=("sh", "bash", "zsh", "json"), default="sh",
+                        help="the form to print: shell commands (default sh) or JSON")
+    parser.add_argument("--zenoh", action="store_true",
+                        help="instead, the settings that put another Zenoh program on the graph "
                         "(rmw_zenoh's ZENOH_SESSION_CONFIG_URI)")
-    p.set_defaults(run=run)
 
 
 def changes(before: dict[str, str], after: dict[str, str]) -> dict[str, str | None]:

@@ -13,21 +13,19 @@ from pathlib import Path
 
 from launcher.bus import graph, keys
 from launcher.bus.session import open_session
+from launcher.cli.space import add_sim_option
 from launcher.errors import LaunchError, UsageError
 
 FORMATS = ("png", "svg", "pdf", "gv")
 HIDDEN_TOPICS = ("/rosout", "/parameter_events")
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("graph", help="draw the graph's nodes and topics (as rqt_graph)")
-    p.add_argument("-o", "--output", default="graph.png",
-                   help="the picture to write: .png (default graph.png), .svg, .pdf or .gv")
-    p.add_argument("--all", action="store_true",
-                   help="also launcher's own tools, hidden topics and /rosout")
-    p.add_argument("--sim", action="store_true",
-                   help="the simulator's own topics (Gazebo's side), not the ROS graph's")
-    p.set_defaults(run=run)
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-o", "--output", default="graph.png",
+                        help="the picture to write: .png (default graph.png), .svg, .pdf or .gv")
+    parser.add_argument("--all", action="store_true",
+                        help="also launcher's own tools, hidden topics and /rosout")
+    add_sim_option(parser, "topics")
 
 
 def dot_text(entities: list[keys.Entity], everything: bool) -> str:

@@ -10,12 +10,9 @@ from __future__ import annotations
 import argparse
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser(
-        "gz", help="Gazebo's commands (sim, topic, service, model) over launcher's sim",
-        add_help=False, description="Gazebo's commands over launcher's sim (see `launcher gz -h`).")
-    p.add_argument("arguments", nargs=argparse.REMAINDER)
-    p.set_defaults(run=run)
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.description = ("Gazebo's commands over launcher's sim (see `launcher gz -h`).")
+    parser.add_argument("arguments", nargs=argparse.REMAINDER)
 
 
 def run(args: argparse.Namespace) -> int:

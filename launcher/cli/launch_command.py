@@ -31,31 +31,28 @@ from launcher.runtime.service import LaunchService, default_environment
 _ASSIGNMENT = re.compile(r"^([A-Za-z_][A-Za-z0-9_\-./]*):=(.*)$", re.S)
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser(
-        "launch", help="run a launch file",
-        description="Run a launch file (.yaml, .xml or .py). Exit status: 0 when everything "
-                    "ended cleanly; 1 for an invalid launch file, a failed action or a "
-                    "process that exited with a non-zero code on its own; 130 after SIGINT "
-                    "(Ctrl-C); 143 after SIGTERM.")
-    p.add_argument("file", metavar="[PKG] FILE",
-                   help="the launch file; or a package and a launch file in it"
-                   ).completer = completion.launch_targets  # type: ignore[attr-defined]
-    p.add_argument("arguments", nargs="*", metavar="name:=value", help="launch arguments"
-                   ).completer = completion.launch_files  # type: ignore[attr-defined]
-    p.add_argument("-s", "--show-args", "--show-arguments", action="store_true",
-                   help="list the launch arguments (also of included files) and exit")
-    p.add_argument("-p", "--print", "--print-description", action="store_true",
-                   help="print the launch description as a tree and exit")
-    p.add_argument("-d", "--debug", action="store_true",
-                   help="debug messages, and tracebacks with errors")
-    p.add_argument("--launch-prefix", default="",
-                   help="put this command before every executable (e.g. 'valgrind')")
-    p.add_argument("-n", "--noninteractive", action="store_true",
-                   help="run without a terminal: no colours")
-    p.add_argument("--duration", type=float, default=None, metavar="SECONDS",
-                   help="shut the launch down cleanly after this many seconds")
-    p.set_defaults(run=run)
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.description = ("Run a launch file (.yaml, .xml or .py). Exit status: 0 when everything "
+                          "ended cleanly; 1 for an invalid launch file, a failed action or a "
+                          "process that exited with a non-zero code on its own; 130 after SIGINT "
+                          "(Ctrl-C); 143 after SIGTERM.")
+    parser.add_argument("file", metavar="[PKG] FILE",
+                        help="the launch file; or a package and a launch file in it"
+                        ).completer = completion.launch_targets  # type: ignore[attr-defined]
+    parser.add_argument("arguments", nargs="*", metavar="name:=value", help="launch arguments"
+                        ).completer = completion.launch_files  # type: ignore[attr-defined]
+    parser.add_argument("-s", "--show-args", "--show-arguments", action="store_true",
+                        help="list the launch arguments (also of included files) and exit")
+    parser.add_argument("-p", "--print", "--print-description", action="store_true",
+                        help="print the launch description as a tree and exit")
+    parser.add_argument("-d", "--debug", action="store_true",
+                        help="debug messages, and tracebacks with errors")
+    parser.add_argument("--launch-prefix", default="",
+                        help="put this command before every executable (e.g. 'valgrind')")
+    parser.add_argument("-n", "--noninteractive", action="store_true",
+                        help="run without a terminal: no colours")
+    parser.add_argument("--duration", type=float, default=None, metavar="SECONDS",
+                        help="shut the launch down cleanly after this many seconds")
 
 
 def parse_assignments(words: list[str]) -> dict[str, str]:

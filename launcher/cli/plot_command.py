@@ -16,16 +16,14 @@ from launcher.bus import graph
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("plot", help="draw fields of messages over time (as rqt_plot)")
-    p.add_argument("fields", nargs="+", help="/topic/path/to/field (…/position/0 for an item)")
-    p.add_argument("-o", "--output", default=None,
-                   help="the picture to write (.png, .svg, .pdf); default: a window when "
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("fields", nargs="+", help="/topic/path/to/field (…/position/0 for an item)")
+    parser.add_argument("-o", "--output", default=None,
+                        help="the picture to write (.png, .svg, .pdf); default: a window when "
                         "there is a display, else plot.png")
-    p.add_argument("-d", "--duration", type=float, default=10.0,
-                   help="seconds to listen, from the first message (live; default 10)")
-    p.add_argument("--bag", default=None, help="read a recorded bag instead")
-    p.set_defaults(run=run)
+    parser.add_argument("-d", "--duration", type=float, default=10.0,
+                        help="seconds to listen, from the first message (live; default 10)")
+    parser.add_argument("--bag", default=None, help="read a recorded bag instead")
 
 
 def _split(field: str, topics: list[str]) -> tuple[str, list[str]]:

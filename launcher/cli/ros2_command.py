@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import sys
 
+from launcher.cli.commands import LAUNCHER
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 # ros2cli's verbs and their descriptions, as `ros2 -h` lists them
@@ -35,8 +36,7 @@ VERBS = {
     "topic": "Various topic related sub-commands",
     "wtf": "Use `wtf` as alias to `doctor`",
 }
-SAME = {"action", "bag", "control", "doctor", "interface", "launch", "lifecycle", "node",
-        "param", "pkg", "run", "service", "topic"}
+SAME = {verb for verb in VERBS if verb in LAUNCHER}  # ros2's verbs that are launcher's commands
 ALIASES = {"wtf": "doctor"}
 MISSING = {  # ROS 2 verbs with no capability in launcher, and why
     "component": "composable node containers are not available in launcher yet; run the "

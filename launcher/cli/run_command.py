@@ -20,18 +20,17 @@ from launcher.errors import LaunchError, UsageError
 USAGE = "usage: launcher run [--prefix PREFIX] [--debug] PACKAGE EXECUTABLE [ARGS…]"
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The command's arguments for tab completion (a run itself is parsed by run_run, which
     leaves every word after EXECUTABLE to it)."""
     from launcher.cli import completion
 
-    p = commands.add_parser("run", help="run an executable of a package (as ros2 run / rosrun)")
-    p.add_argument("--prefix", metavar="PREFIX",
-                   help="run it under PREFIX (e.g. 'gdb -ex run --args')")
-    p.add_argument("--debug", action="store_true", help="tracebacks with errors")
-    p.add_argument("package", help="the package").completer = completion.packages  # type: ignore[attr-defined]
-    p.add_argument("executable", help="its executable").completer = completion.executables  # type: ignore
-    p.add_argument("arguments", nargs=argparse.REMAINDER, help="the executable's own")
+    parser.add_argument("--prefix", metavar="PREFIX",
+                        help="run it under PREFIX (e.g. 'gdb -ex run --args')")
+    parser.add_argument("--debug", action="store_true", help="tracebacks with errors")
+    parser.add_argument("package", help="the package").completer = completion.packages  # type: ignore[attr-defined]
+    parser.add_argument("executable", help="its executable").completer = completion.executables  # type: ignore
+    parser.add_argument("arguments", nargs=argparse.REMAINDER, help="the executable's own")
 
 
 def run_run(argv: list[str]) -> int:
@@ -82,3 +81,10 @@ def run_run(argv: list[str]) -> int:
 def main(argv: list[str], prog: str = "") -> int:
     """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
     return run_run(argv)
+
+
+def run(args: argparse.Namespace) -> int:
+    """The parsed words (completion builds this parser; a run itself goes through main)."""
+    return run_run([*(["--prefix", args.prefix] if args.prefix else []),
+                    *(["--debug"] if args.debug else []),
+                    args.package, args.executable, *args.arguments])

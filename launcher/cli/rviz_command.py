@@ -9,13 +9,10 @@ import sys
 from pathlib import Path
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser("rviz2-layout", help="convert an rviz config into a Foxglove "
-                                                 "layout")
-    p.add_argument("config", help="the .rviz file (rviz2's, or ROS 1 rviz's)")
-    p.add_argument("-o", "--output", default=None,
-                   help="the layout to write (default: the config's name, .json, here)")
-    p.set_defaults(run=run)
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("config", help="the .rviz file (rviz2's, or ROS 1 rviz's)")
+    parser.add_argument("-o", "--output", default=None,
+                        help="the layout to write (default: the config's name, .json, here)")
 
 
 def run(args: argparse.Namespace) -> int:

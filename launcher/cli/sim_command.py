@@ -10,12 +10,9 @@ import argparse
 import os
 
 
-def add_parser(commands: argparse._SubParsersAction) -> None:
-    p = commands.add_parser(
-        "sim", help="run the MuJoCo world server", add_help=False,
-        description="Run the MuJoCo world server (see `launcher sim -h`).")
-    p.add_argument("arguments", nargs=argparse.REMAINDER)
-    p.set_defaults(run=run)
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.description = ("Run the MuJoCo world server (see `launcher sim -h`).")
+    parser.add_argument("arguments", nargs=argparse.REMAINDER)
 
 
 def run(args: argparse.Namespace) -> int:

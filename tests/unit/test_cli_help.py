@@ -5,7 +5,9 @@ import argparse
 import pytest
 
 from launcher.cli import positive_number
+from launcher.cli.commands import ROS1
 from launcher.cli.main import COMMANDS, build_parser
+from launcher.cli.verbs import EVERY, group_parser
 
 UNITS = ("SECONDS", "seconds", " s)", " s ", "HZ", "Hz", "FACTOR", "times", "per second",
          "BYTES", "bytes", "PORT", "metres", "m/s", "messages", "N")
@@ -21,10 +23,15 @@ def options(parser: argparse.ArgumentParser, path: list[str]):
             yield " ".join(path), action
 
 
-@pytest.mark.parametrize("command", sorted(COMMANDS))
+def parser_of(command: str) -> argparse.ArgumentParser:
+    if command in ROS1:
+        return group_parser(ROS1[command], command, EVERY)
+    return build_parser(EVERY)[1].choices[command]
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS) + sorted(ROS1))
 def test_every_option_has_help_and_numbers_their_unit(command):
-    parser, commands = build_parser(command)
-    for where, action in options(commands.choices[command], [command]):
+    for where, action in options(parser_of(command), [command]):
         name = "/".join(action.option_strings) or action.dest
         assert action.help, f"{where} {name} has no help text"
         if action.type in (float, positive_number):

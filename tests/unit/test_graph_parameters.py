@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from launcher.bus import graph_parameters as graph
-from launcher.cli.rosparam_command import resolve
+from launcher.cli.rosparam.server import resolve
 from launcher.errors import UsageError
 from launcher.frontend.loader import load_file
 from tests.unit.helpers import run

@@ -6,7 +6,8 @@ from __future__ import annotations
 import pytest
 
 from launcher.bus.interfaces import ros1_spelling
-from launcher.cli.ros1.rostopic import message_values, split_field
+from launcher.cli.ros1.rostopic.lookup import split_field
+from launcher.cli.ros1.values import message_values
 from launcher.cli.ros2_command import translate
 from launcher.errors import LaunchError, UsageError
 

@@ -5,7 +5,7 @@ import argparse
 import pytest
 
 from launcher.cli import positive_count
-from launcher.cli.topic_command import rate_lines
+from launcher.cli.topic.hz import rate_lines
 
 
 def test_the_rate_over_the_kept_messages_with_the_shortest_and_longest_gap():
@@ -53,7 +53,7 @@ def test_filter_expressions_read_a_message_and_nothing_else():
 
 
 def test_bandwidth_lines_as_ros2_prints_them():
-    from launcher.cli.topic_command import bandwidth_lines
+    from launcher.cli.topic.bw import bandwidth_lines
 
     samples = [(0.0, 100), (0.5, 300), (1.0, 200)]
     first, second = bandwidth_lines(samples, 2.0).split("\n")
@@ -102,7 +102,7 @@ def test_qos_options_start_from_a_profile_and_override_it():
 
 def test_a_topic_only_subscribed_to_is_not_its_own_suggestion(monkeypatch):
     from launcher.bus import graph
-    from launcher.cli import topic_command
+    from launcher.cli.topic import lookup
     from launcher.errors import LaunchError
 
     clock = graph.TopicInfo("/clock")
@@ -111,10 +111,10 @@ def test_a_topic_only_subscribed_to_is_not_its_own_suggestion(monkeypatch):
     chatter.publishers.append(object())
     monkeypatch.setattr(graph, "topics", lambda session, space: {"/clock": clock,
                                                                  "/chatter": chatter})
-    monkeypatch.setattr(topic_command.time, "monotonic", iter(range(0, 100, 10)).__next__)
+    monkeypatch.setattr(lookup.time, "monotonic", iter(range(0, 100, 10)).__next__)
     with pytest.raises(LaunchError) as caught:
-        topic_command._type_of(None, "/clock", None)
+        lookup.type_of(None, "/clock", None)
     assert "nobody publishes '/clock' (it has 1 subscriber(s))" in str(caught.value)
     with pytest.raises(LaunchError) as caught:
-        topic_command._type_of(None, "/chattr", None)
+        lookup.type_of(None, "/chattr", None)
     assert "did you mean '/chatter'" in str(caught.value)

@@ -1,0 +1,1 @@
+"""`launcher node list | info`, as `ros2 node` has them."""

@@ -1,0 +1,1 @@
+"""`launcher pkg list | prefix | share | executables | xml | create`."""
