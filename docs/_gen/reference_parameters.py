@@ -9,10 +9,12 @@ from md_tables import code, table
 
 from launcher.bus.declarations import REQUIRED
 from launcher.control.controllers import TYPES, controller_class
+from launcher.control.manager import PARAMETERS as manager_parameters
 from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
 from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
 from launcher.nodes.parameter_bridge import PARAMETERS as bridge_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
+from launcher.nodes.teleop_twist_keyboard import PARAMETERS as teleop_parameters
 
 TITLE = """# Parameters of controllers and nodes
 
@@ -31,7 +33,9 @@ name stands for each name of the `joints` parameter (`{joint}`: the one joint).
 NODES = {"foxglove_bridge/foxglove_bridge": foxglove_parameters(),
          "robot_state_publisher/robot_state_publisher": rsp_parameters,
          "joint_state_publisher/joint_state_publisher": jsp_parameters,
-         "ros_gz_bridge/parameter_bridge": bridge_parameters}
+         "ros_gz_bridge/parameter_bridge": bridge_parameters,
+         "controller_manager/ros2_control_node": manager_parameters,
+         "teleop_twist_keyboard/teleop_twist_keyboard": teleop_parameters}
 
 
 def page() -> str:

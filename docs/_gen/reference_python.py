@@ -23,13 +23,15 @@ MODULES = ["rclpy/__init__.py", "rclpy/node.py", "rclpy/executors.py", "rclpy/pu
            "tf2_ros/transform_listener.py", "tf2_ros/transform_broadcaster.py",
            "tf2_ros/static_transform_broadcaster.py", "tf2_geometry_msgs/__init__.py",
            "tf/__init__.py", "actionlib/simple_action_client.py",
-           "actionlib/simple_action_server.py"]
+           "actionlib/simple_action_server.py", "message_filters/__init__.py",
+           "cv_bridge/__init__.py", "sensor_msgs_py/point_cloud2.py"]
 
 TITLE = """# Python APIs for nodes
 
-What a node written for ROS imports runs on launcher's graph: rclpy (ROS 2), rospy (ROS 1) and
-tf2_ros, with the names, arguments and defaults of the real libraries (a real one installed
-in the user's shell wins). Generated from the source's docstrings at each build.
+What a node written for ROS imports runs on launcher's graph: rclpy (ROS 2), rospy (ROS 1),
+tf2_ros, message_filters, cv_bridge and sensor_msgs_py, with the names, arguments and
+defaults of the real libraries (a real one installed in the user's shell wins). Generated from
+the source's docstrings at each build.
 """
 
 

@@ -15,6 +15,8 @@ import re
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
+from launcher.errors import did_you_mean
+
 REQUIRED: Any = object()
 PLACEHOLDER = re.compile(r"\{(\w+)\}")
 
@@ -29,6 +31,9 @@ _CHECKS: dict[str, Callable[[Any], bool]] = {
     "double_array": lambda v: isinstance(v, list | tuple) and
     all(isinstance(x, int | float) and not isinstance(x, bool) for x in v),
 }
+RCLCPP_NAMES = {0: "not set", 1: "bool", 2: "integer", 3: "double", 4: "string",
+                5: "byte_array", 6: "bool_array", 7: "integer_array", 8: "double_array",
+                9: "string_array"}  # ParameterValue's types, as rclcpp names them
 _EXPECTED = {"bool": "true or false", "int": "an integer", "double": "a number",
              "string": "text", "string_array": "a list of names",
              "double_array": "a list of numbers"}
@@ -43,6 +48,7 @@ class Param(NamedTuple):
     maximum: float | None = None
     read_only: bool = False  # a set from outside is refused, as rclcpp refuses it
     non_empty: bool = False  # an array that must name something
+    choices: tuple[str, ...] = ()  # the texts a string may be (generate_parameter_library's one_of)
 
 
 class ParameterError(ValueError):
@@ -93,6 +99,9 @@ def _one(name: str, param: Param, value: Any) -> Any:
         return list(param.default) if isinstance(param.default, list) else param.default
     if not _CHECKS[param.type](value):
         raise ParameterError(name, f"is {value!r}; expected {_EXPECTED[param.type]}")
+    if param.choices and value not in param.choices:
+        raise ParameterError(name, f"is {value!r}; expected one of {', '.join(param.choices)}"
+                                   f"{did_you_mean(value, param.choices)}")
     if param.type == "double":
         value = float(value)
     elif param.type.endswith("_array"):
@@ -107,10 +116,31 @@ def _one(name: str, param: Param, value: Any) -> Any:
     return value
 
 
+def refusal(name: str, param: Param, value: Any) -> str | None:
+    """Why a set from outside of a declared parameter is refused, in rclcpp's words (a value
+    of another type, or out of its range), or None."""
+    if not _CHECKS[param.type](value):
+        from launcher.bus.parameters import type_of
+
+        return (f"Wrong parameter type, parameter {{{name}}} is of type "
+                f"{{{RCLCPP_NAMES[TYPES[param.type]]}}}, setting it to "
+                f"{{{RCLCPP_NAMES[type_of(value)]}}} is not allowed.")
+    try:
+        _one(name, param, value)
+    except ParameterError as exc:
+        if param.type in ("int", "double") and not param.choices:
+            kind = "integer" if param.type == "int" else "floating point"
+            return f"Parameter {{{name}}} doesn't comply with {kind} range."
+        return str(exc)
+    return None
+
+
 def descriptor(name: str, param: Param) -> dict[str, Any]:
     """rcl_interfaces/msg/ParameterDescriptor's fields for a declared parameter."""
     fields: dict[str, Any] = {"name": name, "type": TYPES[param.type],
                               "description": param.description, "read_only": param.read_only}
+    if param.choices:
+        fields["additional_constraints"] = f"one of: {', '.join(param.choices)}"
     if param.minimum is None and param.maximum is None:
         return fields
     if param.type == "int":

@@ -62,6 +62,10 @@ class NodeParameters:
         param = self._declaration(name)
         if param is not None and param.read_only:
             return f"parameter '{name}' cannot be set because it is read-only"
+        if param is not None and value is not None:
+            refused = declarations.refusal(name, param, value)
+            if refused:
+                return refused
         if value is None:
             if name not in self._values:
                 return f"parameter '{name}' is not set"

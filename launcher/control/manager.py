@@ -15,6 +15,9 @@ interface is never claimed twice, and a refused switch leaves the running contro
 
 from __future__ import annotations
 
+from typing import Any
+
+from launcher.bus.declarations import Param, ParameterError
 from launcher.bus.node import Node
 from launcher.control.controller import Controller, ControllerError
 from launcher.control.controllers import TYPES, controller_class
@@ -28,9 +31,19 @@ from launcher.control.resources import (
     Resources,
 )
 from launcher.control.yaml_places import block_place, key_place, params_files, value_place
-from launcher.errors import did_you_mean
+from launcher.errors import LaunchError, did_you_mean
 
 BEST_EFFORT, STRICT, AUTO, FORCE_AUTO = 1, 2, 3, 4
+PARAMETERS = (  # controller_manager's own (a controller's <name>.type and .params_file too)
+    Param("update_rate", "int", 100, "control cycles a second: read the hardware, update "
+          "the active controllers, write (Hz)", minimum=1),
+)
+
+
+def missing(name: str, doing: str) -> str:
+    """controller_manager's words for a controller it does not have."""
+    return (f"Could not {doing} controller with name '{name}' because no controller with "
+            "this name exists")
 
 
 class ControllerManager:
@@ -42,10 +55,19 @@ class ControllerManager:
         self.remaps = list(remaps or [])
         self.controllers: dict[str, Controller] = {}
         self.active: list[Controller] = []  # in activation order: their update order
-        self.update_rate = int(node.parameters.get("update_rate", 100) or 100)
+        self.update_rate = self._declared(node)["update_rate"]
         self.period = 1.0 / self.update_rate
         self.time = 0.0
         self._last: float | None = None
+    def _declared(self, node: Node) -> dict[str, Any]:
+        """The manager's own parameters, checked; a bad one refused at its line."""
+        try:
+            return node.params.declare(PARAMETERS)
+        except ParameterError as exc:
+            place = key_place(self.files, node.name, exc.name)
+            raise LaunchError(f"{place + ': ' if place else ''}controller_manager: {exc}") \
+                from None
+
     # --- the cycle -------------------------------------------------------------------------
     def update(self, time: float) -> None:
         period = time - self._last if self._last is not None else self.period
@@ -115,8 +137,7 @@ class ControllerManager:
     def configure(self, name: str) -> tuple[bool, str]:
         controller = self.controllers.get(name)
         if controller is None:
-            return False, f"Could not configure controller with name '{name}' because no " \
-                          f"controller with this name exists"
+            return False, missing(name, "configure")
         if controller.state == ACTIVE:
             return False, f"Controller '{name}' can not be configured from 'active' state."
         if controller.state == INACTIVE:
@@ -134,8 +155,7 @@ class ControllerManager:
     def cleanup(self, name: str) -> tuple[bool, str]:
         controller = self.controllers.get(name)
         if controller is None:
-            return False, f"Could not cleanup controller with name '{name}' because no " \
-                          f"controller with this name exists"
+            return False, missing(name, "cleanup")
         if controller.state != INACTIVE:
             return False, f"Controller '{name}' can not be cleaned-up from " \
                           f"'{STATE_LABELS[controller.state]}' state."
@@ -146,8 +166,7 @@ class ControllerManager:
     def unload(self, name: str) -> tuple[bool, str]:
         controller = self.controllers.get(name)
         if controller is None:
-            return False, f"Could not unload controller with name '{name}' because no " \
-                          f"controller with this name exists"
+            return False, missing(name, "unload")
         if controller.state == ACTIVE:
             return False, f"Could not unload controller with name '{name}' because it is " \
                           f"still active"
@@ -169,8 +188,7 @@ class ControllerManager:
                 if name in self.controllers:
                     into.append(self.controllers[name])
                     continue
-                message = f"Could not {action} controller with name '{name}' because no " \
-                          f"controller with this name exists{did_you_mean(name, self.controllers)}"
+                message = missing(name, action) + did_you_mean(name, self.controllers)
                 if strict:
                     self.log.error(f"{message}; aborting, no controller is switched "
                                    f"('STRICT' switch)")

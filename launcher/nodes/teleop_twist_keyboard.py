@@ -14,8 +14,14 @@ import signal
 import sys
 from typing import Any
 
+from launcher.bus.declarations import Param, ParameterError
 from launcher.bus.node import Node
 from launcher.errors import LaunchError, reported
+
+PARAMETERS = (
+    Param("stamped", "bool", False, "publish TwistStamped instead of Twist"),
+    Param("frame_id", "string", "", "the TwistStamped's header.frame_id"),
+)
 
 BANNER = """
 This node takes keypresses from the keyboard and publishes them
@@ -103,9 +109,11 @@ def _interrupt(signum: int, frame: Any) -> None:
 
 
 def _loop(node: Node, terminal: Terminal) -> int:
-    parameters = node.parameters
-    stamped = bool(parameters.get("stamped", False))
-    frame_id = str(parameters.get("frame_id", ""))
+    try:
+        parameters = node.params.declare(PARAMETERS)
+    except ParameterError as exc:
+        raise LaunchError(str(exc)) from None
+    stamped, frame_id = parameters["stamped"], parameters["frame_id"]
     type_name = "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist"
     publisher = node.create_publisher(type_name, "cmd_vel")
     speed, turn = 0.5, 1.0

@@ -16,12 +16,14 @@ import pytest
 
 from launcher.cli.main import COMMANDS
 from launcher.control.controllers import TYPES, controller_class
+from launcher.control.manager import PARAMETERS as manager_parameters
 from launcher.description.registry import Registry
 from launcher.nodes.conversions import conversions
 from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
 from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
 from launcher.nodes.parameter_bridge import PARAMETERS as bridge_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
+from launcher.nodes.teleop_twist_keyboard import PARAMETERS as teleop_parameters
 from tests.conftest import REPO
 from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import cases
@@ -92,7 +94,9 @@ def test_the_parameters_page_gives_every_controller_and_node_that_declares_them(
                 "foxglove_bridge/foxglove_bridge": foxglove_parameters(),
                 "robot_state_publisher/robot_state_publisher": rsp_parameters,
                 "joint_state_publisher/joint_state_publisher": jsp_parameters,
-                "ros_gz_bridge/parameter_bridge": bridge_parameters}
+                "ros_gz_bridge/parameter_bridge": bridge_parameters,
+                "controller_manager/ros2_control_node": manager_parameters,
+                "teleop_twist_keyboard/teleop_twist_keyboard": teleop_parameters}
     for name, parameters in declared.items():
         assert name in page, name
         for parameter in parameters:
@@ -101,7 +105,8 @@ def test_the_parameters_page_gives_every_controller_and_node_that_declares_them(
 
 def test_the_python_api_page_shows_the_documented_node_libraries(site):
     page = text(site / "reference" / "python-apis" / "index.html")
-    for module in ("rclpy.node", "rclpy.action.server", "rospy.client", "tf2_ros.buffer"):
+    for module in ("rclpy.node", "rclpy.action.server", "rospy.client", "tf2_ros.buffer",
+                   "message_filters", "cv_bridge", "sensor_msgs_py.point_cloud2"):
         assert module in page, module
     assert "create_subscription(msg_type" in page and "A publisher of msg_type on topic" in page
 

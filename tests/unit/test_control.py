@@ -9,6 +9,7 @@ from types import SimpleNamespace
 
 import pytest
 
+from launcher.bus.node_parameters import NodeParameters
 from launcher.control.controller import Controller
 from launcher.control.controllers.trajectory import Point, Trajectory, validate
 from launcher.control.description import parse
@@ -105,6 +106,7 @@ class StandIn:
 
     def __init__(self, parameters: dict) -> None:
         self.parameters, self.name, self.namespace = parameters, "controller_manager", ""
+        self.params = NodeParameters(parameters, self.name)
         self.logged: list[str] = []
         log = SimpleNamespace(info=self.logged.append, error=self.logged.append,
                               warning=self.logged.append)
@@ -130,6 +132,18 @@ def _manager() -> ControllerManager:
                              ("c", ["j1/velocity"]), ("d", ["j7/position"])):
         manager.controllers[name] = Servo(name, interfaces)
     return manager
+
+
+def test_the_managers_update_rate_is_refused_at_its_line_when_it_is_not_a_whole_number(
+        tmp_path):
+    (hardware,) = parse(URDF.format(plugin="mock_components/GenericSystem"), "r.urdf")
+    params = tmp_path / "controllers.yaml"
+    params.write_text("controller_manager:\n  ros__parameters:\n    update_rate: fast\n")
+    with pytest.raises(LaunchError) as caught:
+        ControllerManager(StandIn({"update_rate": "fast"}), [GenericSystem(hardware)],
+                          [str(params)])
+    assert str(caught.value) == (f"{params}:3: controller_manager: parameter 'update_rate' is "
+                                 "'fast'; expected an integer")
 
 
 def test_a_claimed_interface_is_never_claimed_twice_and_the_running_one_keeps_running():

@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from launcher.bus.declarations import REQUIRED, Param, ParameterError, descriptor, read
+from launcher.bus.declarations import REQUIRED, Param, ParameterError, descriptor, read, refusal
 from launcher.control.controllers import TYPES, controller_class
 
 DECLARED = (
@@ -66,3 +66,44 @@ def test_every_controller_declares_its_parameters(type_name):
     declared = controller_class(type_name).PARAMETERS
     assert declared and all(p.description for p in declared)
     assert len({p.name for p in declared}) == len(declared)
+
+
+CHOSEN = (Param("interpolation_method", "string", "splines", "how",
+                choices=("splines", "none")),)
+
+
+def test_a_text_outside_its_choices_is_refused_with_them_and_a_suggestion():
+    with pytest.raises(ParameterError, match=r"parameter 'interpolation_method' is 'spline'; "
+                                             r"expected one of splines, none \(did you mean "
+                                             r"'splines'\?\)"):
+        read(CHOSEN, {"interpolation_method": "spline"})
+
+
+def test_a_set_from_outside_of_another_type_is_refused_in_rclcpps_words():
+    assert refusal("rate", DECLARED[1], "fast") == (
+        "Wrong parameter type, parameter {rate} is of type {double}, setting it to {string} "
+        "is not allowed.")
+
+
+def test_a_set_from_outside_beyond_the_range_is_refused_in_rclcpps_words():
+    assert refusal("window", DECLARED[2], 500) == \
+        "Parameter {window} doesn't comply with integer range."
+
+
+def test_a_set_from_outside_that_fits_the_declaration_is_taken():
+    assert refusal("rate", DECLARED[1], 5) is None
+
+
+def test_a_node_refuses_a_set_that_does_not_fit_what_it_declared():
+    from launcher.bus.node_parameters import NodeParameters
+
+    params = NodeParameters({"joints": ["a"]}, "/n")
+    params.declare(DECLARED)
+    assert "Wrong parameter type" in params.request("rate", "fast")
+    assert params.get("rate") == 20.0
+
+
+def test_the_trajectory_controllers_feed_forward_is_off_unless_set_as_in_ros():
+    declared = controller_class("joint_trajectory_controller/JointTrajectoryController")
+    scale = next(p for p in declared.PARAMETERS if p.name.endswith("ff_velocity_scale"))
+    assert scale.default == 0.0

@@ -45,7 +45,8 @@ class JointTrajectoryController(Controller):
               "what is read: position, and velocity, acceleration", non_empty=True,
               read_only=True),
         Param("allow_partial_joints_goal", "bool", False, "a goal may name some joints"),
-        Param("interpolation_method", "string", "splines", "splines, or none", read_only=True),
+        Param("interpolation_method", "string", "splines", "splines, or none", read_only=True,
+              choices=("splines", "none")),
         Param("open_loop_control", "bool", False, "follow the plan, not the state"),
         Param("action_monitor_rate", "double", 20.0, "goal checks a second", minimum=0.1,
               read_only=True),
@@ -61,7 +62,7 @@ class JointTrajectoryController(Controller):
                                                  "proportional"),
         Param("gains.{joints}.i", "double", 0.0, "integral"),
         Param("gains.{joints}.d", "double", 0.0, "derivative"),
-        Param("gains.{joints}.ff_velocity_scale", "double", 1.0,
+        Param("gains.{joints}.ff_velocity_scale", "double", 0.0,
               "the planned velocity's share of the command"),
     )
 
@@ -309,7 +310,7 @@ class JointTrajectoryController(Controller):
 
     def _point(self, positions: list[float], velocities: list[float] | None = None) -> Any:
         return self.make("trajectory_msgs/msg/JointTrajectoryPoint",
-                                 positions=positions, velocities=velocities or [])
+                         positions=positions, velocities=velocities or [])
 
     def _feedback(self, time: float, desired: Any, actual: list[float], errors: list[float]) \
             -> Any:

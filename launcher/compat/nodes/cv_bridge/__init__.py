@@ -54,11 +54,16 @@ def _opencv() -> Any:
 
 
 class CvBridge:
+    """Converts between sensor_msgs images and numpy arrays (OpenCV's images)."""
+
     def __init__(self) -> None:
         pass
 
     # --- Image ----------------------------------------------------------------------------------
     def imgmsg_to_cv2(self, img_msg: Any, desired_encoding: str = "passthrough") -> np.ndarray:
+        """An Image's pixels as an array (height × width, × channels when more than one), in
+        its own encoding (`passthrough`) or converted to `desired_encoding`; a view on the
+        message's bytes when no conversion is needed."""
         dtype, channels = _layout(img_msg.encoding)
         dtype = dtype.newbyteorder(">" if img_msg.is_bigendian else "<")
         height, width, step = int(img_msg.height), int(img_msg.width), int(img_msg.step)
@@ -83,6 +88,8 @@ class CvBridge:
 
     def cv2_to_imgmsg(self, cvim: np.ndarray, encoding: str = "passthrough",
                       header: Any = None) -> Any:
+        """An Image of the array `cvim`: its encoding named, or made from its dtype and
+        channels (`passthrough`: 8UC3, 32FC1, …); `header` set when given."""
         from sensor_msgs.msg import Image
 
         if not isinstance(cvim, np.ndarray):
@@ -112,6 +119,8 @@ class CvBridge:
     # --- CompressedImage --------------------------------------------------------------------
     def compressed_imgmsg_to_cv2(self, cmprs_img_msg: Any,
                                  desired_encoding: str = "passthrough") -> np.ndarray:
+        """A CompressedImage decoded (OpenCV needed) to an array, converted to
+        `desired_encoding` unless `passthrough`."""
         cv2 = _opencv()
         buffer = np.frombuffer(bytes(cmprs_img_msg.data), dtype=np.uint8)
         image = cv2.imdecode(buffer, cv2.IMREAD_UNCHANGED)
@@ -125,6 +134,8 @@ class CvBridge:
         return self._convert(image, source, desired_encoding)
 
     def cv2_to_compressed_imgmsg(self, cvim: np.ndarray, dst_format: str = "jpg") -> Any:
+        """A CompressedImage of the array, encoded as `dst_format` (jpg, png; OpenCV
+        needed)."""
         from sensor_msgs.msg import CompressedImage
 
         cv2 = _opencv()
@@ -174,4 +185,5 @@ class CvBridge:
 
 
 def get_cv_types() -> list[str]:
+    """The encodings cv_bridge names (rgb8, mono16, …)."""
     return sorted(_NAMED)

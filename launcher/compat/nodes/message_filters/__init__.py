@@ -13,15 +13,20 @@ from rclpy.time import Time
 
 
 class SimpleFilter:
+    """A stage of a filter chain: callbacks registered on it get what it passes on."""
+
     def __init__(self) -> None:
         self.callbacks: dict[int, tuple[Callable[..., Any], tuple]] = {}
 
     def registerCallback(self, cb: Callable[..., Any], *args: Any) -> int:  # noqa: N802
+        """Call `cb(message…, *args)` for each message this filter passes on; returns the
+        connection's key."""
         key = len(self.callbacks)
         self.callbacks[key] = (cb, args)
         return key
 
     def signalMessage(self, *msg: Any) -> None:  # noqa: N802
+        """Pass `msg` (one message, or one of each input) on to every registered callback."""
         for cb, args in list(self.callbacks.values()):
             cb(*(msg + args))
 
@@ -37,9 +42,11 @@ class Subscriber(SimpleFilter):
                                             **kwargs)
 
     def callback(self, msg: Any) -> None:
+        """The subscription's callback: the message goes on to the connected filters."""
         self.signalMessage(msg)
 
     def getTopic(self) -> str:  # noqa: N802
+        """The subscribed topic's full name."""
         return self.sub.topic_name
 
     def __getattr__(self, key: str) -> Any:
@@ -71,9 +78,11 @@ class Cache(SimpleFilter):
         self.lock = threading.Lock()
 
     def connectInput(self, f: SimpleFilter) -> None:  # noqa: N802
+        """Take messages from filter `f`."""
         self.incoming_connection = f.registerCallback(self.add)
 
     def add(self, msg: Any) -> None:
+        """Keep `msg` in stamp order (the oldest dropped past `cache_size`) and pass it on."""
         stamp = _stamp(msg, self.allow_headerless)
         with self.lock:
             index = len(self.cache_times)
@@ -88,34 +97,41 @@ class Cache(SimpleFilter):
     # (compared by nanoseconds: a stamp's clock type is ROS time, a Time the user makes
     # is the system's, and rclpy refuses to compare those)
     def getInterval(self, from_stamp: Time, to_stamp: Time) -> list[Any]:  # noqa: N802
+        """The cached messages stamped from `from_stamp` to `to_stamp`, both included."""
         low, high = from_stamp.nanoseconds, to_stamp.nanoseconds
         with self.lock:
             return [m for m, t in zip(self.cache_msgs, self.cache_times, strict=True)
                     if low <= t.nanoseconds <= high]
 
     def getElemAfterTime(self, stamp: Time) -> Any:  # noqa: N802
+        """The first cached message stamped at or after `stamp`, or None."""
         with self.lock:
             return next((m for m, t in zip(self.cache_msgs, self.cache_times, strict=True)
                          if t.nanoseconds >= stamp.nanoseconds), None)
 
     def getElemBeforeTime(self, stamp: Time) -> Any:  # noqa: N802
+        """The last cached message stamped at or before `stamp`, or None."""
         with self.lock:
             found = [m for m, t in zip(self.cache_msgs, self.cache_times, strict=True)
                      if t.nanoseconds <= stamp.nanoseconds]
         return found[-1] if found else None
 
     def getLastestTime(self) -> Time | None:  # noqa: N802 (ROS's spelling)
+        """The newest cached stamp, or None (ROS's spelling)."""
         with self.lock:
             return self.cache_times[-1] if self.cache_times else None
 
     def getLatestTime(self) -> Time | None:  # noqa: N802
+        """The newest cached stamp, or None."""
         return self.getLastestTime()
 
     def getOldestTime(self) -> Time | None:  # noqa: N802
+        """The oldest cached stamp, or None."""
         with self.lock:
             return self.cache_times[0] if self.cache_times else None
 
     def getLast(self) -> Any:  # noqa: N802
+        """The newest cached message, or None."""
         with self.lock:
             return self.cache_msgs[-1] if self.cache_msgs else None
 
@@ -130,12 +146,15 @@ class TimeSynchronizer(SimpleFilter):
         self.connectInput(fs)
 
     def connectInput(self, fs: list[SimpleFilter]) -> None:  # noqa: N802
+        """Take messages from the filters `fs`, one queue each."""
         self.queues: list[dict[int, Any]] = [{} for _ in fs]
         self.input_connections = [f.registerCallback(self.add, q, i)
                                   for i, (f, q) in enumerate(zip(fs, self.queues, strict=True))]
 
     def add(self, msg: Any, my_queue: dict[int, Any], my_queue_index: int | None = None
             ) -> None:
+        """Queue `msg` from one input; when every input has one with its stamp, pass them on
+        together (older ones are dropped)."""
         stamp = _stamp(msg, False).nanoseconds
         with self.lock:
             my_queue[stamp] = msg
@@ -163,6 +182,8 @@ class ApproximateTimeSynchronizer(TimeSynchronizer):
 
     def add(self, msg: Any, my_queue: dict[int, Any], my_queue_index: int | None = None
             ) -> None:
+        """Queue `msg` from one input; when every other input has one within `slop` of it,
+        pass the nearest of each on together (older ones are dropped)."""
         stamp = _stamp(msg, self.allow_headerless).nanoseconds
         with self.lock:
             my_queue[stamp] = msg

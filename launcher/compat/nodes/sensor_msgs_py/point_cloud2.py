@@ -30,6 +30,8 @@ class PointCloudError(ValueError):
 
 
 def dtype_from_fields(fields: Iterable[Any], point_step: int | None = None) -> np.dtype:
+    """The numpy structured dtype of a cloud's PointFields (unnamed fields get
+    DUMMY_FIELD_PREFIX names), `point_step` bytes a point when given."""
     names, formats, offsets = [], [], []
     for i, field in enumerate(fields):
         if field.datatype not in _DATATYPES:
@@ -73,6 +75,9 @@ def _points(cloud: Any) -> np.ndarray:
 def read_points(cloud: Any, field_names: Sequence[str] | None = None, skip_nans: bool = False,
                 uvs: Iterable[Any] | None = None,
                 reshape_organized_cloud: bool = False) -> np.ndarray:
+    """The cloud's points as a structured array: only `field_names` when given, the
+    points at `uvs` (column, row) when given, those with a NaN dropped with `skip_nans`, and
+    rows × columns with `reshape_organized_cloud`."""
     points = _points(cloud)
     if field_names is not None:
         missing = [n for n in field_names if n not in points.dtype.names]
@@ -100,6 +105,8 @@ def read_points(cloud: Any, field_names: Sequence[str] | None = None, skip_nans:
 def read_points_numpy(cloud: Any, field_names: Sequence[str] | None = None,
                       skip_nans: bool = False, uvs: Iterable[Any] | None = None,
                       reshape_organized_cloud: bool = False) -> np.ndarray:
+    """The cloud's points as a plain array, one column per field (the fields must be of
+    one type)."""
     chosen = [f for f in cloud.fields if field_names is None or f.name in field_names]
     kinds = {f.datatype for f in chosen}
     if len(kinds) > 1:
@@ -116,12 +123,15 @@ def read_points_numpy(cloud: Any, field_names: Sequence[str] | None = None,
 
 def read_points_list(cloud: Any, field_names: Sequence[str] | None = None,
                      skip_nans: bool = False, uvs: Iterable[Any] | None = None) -> list[Any]:
+    """The cloud's points as a list of namedtuples `Point(x=…, y=…, …)`."""
     points = read_points(cloud, field_names, skip_nans, uvs)
     Point = namedtuple("Point", points.dtype.names or ())  # noqa: PYI024 (rclpy's own)
     return [Point._make(p) for p in points.tolist()]
 
 
 def create_cloud(header: Any, fields: Sequence[Any], points: Any) -> Any:
+    """A PointCloud2 of `points` (a structured array, or rows of values) laid out by
+    `fields`, one row high."""
     from sensor_msgs.msg import PointCloud2
 
     dtype = dtype_from_fields(fields)
@@ -139,6 +149,7 @@ def create_cloud(header: Any, fields: Sequence[Any], points: Any) -> Any:
 
 
 def create_cloud_xyz32(header: Any, points: Any) -> Any:
+    """A PointCloud2 of (x, y, z) rows as three float32 fields."""
     from sensor_msgs.msg import PointField
 
     fields = [PointField(name=n, offset=4 * i, datatype=PointField.FLOAT32, count=1)
