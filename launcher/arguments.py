@@ -8,6 +8,7 @@ import argparse
 import os
 import re
 import sys
+from collections.abc import Iterator
 from typing import NoReturn
 
 from launcher.errors import UsageError, did_you_mean
@@ -75,3 +76,15 @@ def _chosen(parser: argparse.ArgumentParser, args: argparse.Namespace
         if commands is None or chosen not in commands.choices:
             return parser
         parser = commands.choices[chosen]
+
+
+def flag_words(argv: list[str], doc: str | None) -> Iterator[tuple[str, list[str]]]:
+    """Gazebo's single-dash flags (`-name robot -x 1`): each word, with the words after it
+    (a flag takes its values from them); `-h` prints `doc` and exits."""
+    words = list(argv)
+    while words:
+        word = words.pop(0)
+        if word in ("-h", "--help"):
+            print(doc)
+            raise SystemExit(0)
+        yield word, words

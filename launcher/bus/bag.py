@@ -262,7 +262,7 @@ def describe(path: Path) -> str:
     with Reader(path) as reader:
         files = metadata.get("relative_file_paths") or []
         lines = [f"Files:             {', '.join(files)}",
-                 f"Bag size:          {_size(sum(f.stat().st_size for f in path.iterdir()))}",
+                 f"Bag size:          {size_text(sum(f.stat().st_size for f in path.iterdir()))}",
                  f"Storage id:        {metadata.get('storage_identifier', '')}",
                  f"ROS Distro:        {metadata.get('ros_distro', '')}",
                  f"Duration:          {reader.duration / 1e9:.3f} s",
@@ -283,12 +283,13 @@ def _metadata(path: Path) -> dict[str, Any]:
         return {}
 
 
-def _size(count: float) -> str:
-    for unit in ("B", "KiB", "MiB", "GiB"):
-        if count < 1024 or unit == "GiB":
+def size_text(count: float, units: tuple[str, ...] = ("B", "KiB", "MiB", "GiB")) -> str:
+    """A number of bytes as `ros2 bag info` says it (rosbag's `info` names them KB, MB, GB)."""
+    for unit in units[:-1]:
+        if count < 1024:
             return f"{count:.1f} {unit}"
         count /= 1024
-    return f"{count:.1f} GiB"
+    return f"{count:.1f} {units[-1]}"
 
 
 class Pause:

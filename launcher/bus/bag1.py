@@ -10,10 +10,13 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from launcher.bus.bag import size_text
 from launcher.bus.interfaces import ros1_spelling
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
+
+ROSBAG_UNITS = ("B", "KB", "MB", "GB")  # as `rosbag info` names them
 
 
 def check_writable(path: Path) -> None:
@@ -82,7 +85,7 @@ def info(path: Path) -> str:
                  else "start:       -",
                  f"end:         {reader.end_time / 1e9:.2f}" if reader.message_count
                  else "end:         -",
-                 f"size:        {_size(path.stat().st_size)}",
+                 f"size:        {size_text(path.stat().st_size, ROSBAG_UNITS)}",
                  f"messages:    {reader.message_count}", "compression: none"]
         for number, (kind, digest) in enumerate(types):
             lines.append(f"{'types:' if number == 0 else '':<13}{ros1_spelling(kind)} [{digest}]")
@@ -146,11 +149,3 @@ def _opened(path: Path, reader: Any) -> Any:
     except ReaderError as exc:
         raise LaunchError(f"'{path}' is not a ROS 1 bag: {exc}") from None
     return opened
-
-
-def _size(count: float) -> str:
-    for unit in ("B", "KB", "MB", "GB"):
-        if count < 1024 or unit == "GB":
-            return f"{count:.1f} {unit}"
-        count /= 1024
-    return f"{count:.1f} GB"

@@ -111,6 +111,12 @@ class Host:
             return True
         return False
 
+    def drop(self, entity: Any, *declared: Any) -> None:
+        """Forget an entity being destroyed and undeclare what it declared (once)."""
+        if self.forget(entity):
+            for item in declared:
+                item.undeclare()
+
     def graph_session(self) -> zenoh.Session:
         """The session to ask who is on the bus. A peer's liveliness query reaches only the
         peers it has links to, and with dozens of nodes starting at once some links come late

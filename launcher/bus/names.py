@@ -62,6 +62,11 @@ def expand(name: str, node: str = "", namespace: str = "", what: str = "topic na
     return full
 
 
+def below(namespace: str | None) -> str:
+    """What the names in `namespace` begin with (every name begins with "/")."""
+    return expand(namespace).rstrip("/") + "/" if namespace else "/"
+
+
 def remap(full: str, rules: list[tuple[str, str]], node: str = "", namespace: str = "") -> str:
     """The first rule whose `from` expands to `full` gives the new name (expanded)."""
     for source, target in rules:

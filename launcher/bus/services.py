@@ -95,10 +95,7 @@ class Service:
     deferred = False  # callback(request, Reply): the response is sent later (an action's result)
 
     def destroy(self) -> None:
-        if not self._host.forget(self):
-            return
-        self._queryable.undeclare()
-        self._token.undeclare()
+        self._host.drop(self, self._queryable, self._token)
 
 
 class Reply:
@@ -229,9 +226,7 @@ class Client:
         return False
 
     def destroy(self) -> None:
-        if not self._host.forget(self):
-            return
-        self._token.undeclare()
+        self._host.drop(self, self._token)
 
 
 class Future:

@@ -104,10 +104,7 @@ class Subscription:
         self._callback(message)
 
     def destroy(self) -> None:
-        if not self._host.forget(self):
-            return
-        self._subscriber.undeclare()
-        self._token.undeclare()
+        self._host.drop(self, self._subscriber, self._token)
 
 
 class FirstMessage:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from launcher.bus import graph, keys
 from launcher.bus.session import open_session
-from launcher.cli.space import add_sim_option
+from launcher.cli.graph_options import add_sim_option
 from launcher.errors import LaunchError, UsageError
 
 FORMATS = ("png", "svg", "pdf", "gv")

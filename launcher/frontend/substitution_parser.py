@@ -58,14 +58,19 @@ class _Parser:
             if ch == "\\" and text.startswith("$", self.pos + 1):
                 buf.append("$")
                 self.pos += 2
-            elif ch == "$" and text.startswith("(", self.pos + 1):
-                _flush(buf, out)
-                out.append(self.call())
             else:
-                buf.append(ch)
-                self.pos += 1
+                self.take(buf, out)
         _flush(buf, out)
         return out
+
+    def take(self, buf: list[str], out: list[Part]) -> None:
+        """The character at pos: a `$(…)` call's start, or text."""
+        if self.text.startswith("$(", self.pos):
+            _flush(buf, out)
+            out.append(self.call())
+        else:
+            buf.append(self.text[self.pos])
+            self.pos += 1
 
     def call(self) -> Call:
         start = self.pos
@@ -139,12 +144,8 @@ class _Parser:
             elif ch in "'\"":
                 _flush(buf, out)
                 out.extend(self.quoted(ch))
-            elif ch == "$" and text.startswith("(", self.pos + 1):
-                _flush(buf, out)
-                out.append(self.call())
             else:
-                buf.append(ch)
-                self.pos += 1
+                self.take(buf, out)
         _flush(buf, out)
         return tuple(out)
 
@@ -163,12 +164,8 @@ class _Parser:
             if ch == "\\" and self.pos + 1 < len(text) and text[self.pos + 1] in (quote, "\\"):
                 buf.append(text[self.pos + 1])
                 self.pos += 2
-            elif ch == "$" and text.startswith("(", self.pos + 1):
-                _flush(buf, out)
-                out.append(self.call())
             else:
-                buf.append(ch)
-                self.pos += 1
+                self.take(buf, out)
         raise SubstitutionSyntaxError(f"unclosed quote {quote}", start)
 
 

@@ -17,6 +17,7 @@ import time
 from collections.abc import Sequence
 from typing import Any
 
+from launcher.arguments import flag_words
 from launcher.errors import LaunchError, ParseError, UsageError, did_you_mean, reported
 from launcher.records import asdict, dataclass
 from launcher.schema import Kind, attr, build, declared_fields, frontend_name
@@ -56,12 +57,7 @@ class SimNotFound(LaunchError):
 def parse(argv: list[str], parameters: dict[str, Any]) -> dict[str, Any]:
     """The options from `-p` parameters, then the command line's flags over them."""
     values: dict[str, Any] = {k: v for k, v in parameters.items() if k in NAMES}
-    words = list(argv)
-    while words:
-        word = words.pop(0)
-        if word in ("-h", "--help"):
-            print(__doc__)
-            raise SystemExit(0)
+    for word, words in flag_words(argv, __doc__):
         key = word[1:] if word.startswith("-") else ""
         if key not in NAMES:
             flags = sorted(f"-{name}" for name in NAMES)

@@ -48,11 +48,11 @@ class GazeboApi:
         self.remove = sim_client("remove", "Remove")
         self.set_pose = sim_client("set_pose", "SetPose")
         self.state = sim_client("state", "State")
-        for name, callback in (("pause_physics", self.on_pause),
-                               ("unpause_physics", self.on_unpause),
-                               ("reset_simulation", self.on_reset_simulation),
-                               ("reset_world", self.on_reset_world)):
-            node.create_service(EMPTY, f"~/{name}", callback)
+        for name, control in (("pause_physics", {"pause": True}),
+                              ("unpause_physics", {"pause": False}),
+                              ("reset_simulation", {"reset_all": True}),
+                              ("reset_world", {"reset_model_only": True})):
+            node.create_service(EMPTY, f"~/{name}", self.controlling(control))
         for name, type_name, callback in (
                 ("get_model_state", "GetModelState", self.on_get_model_state),
                 ("set_model_state", "SetModelState", self.on_set_model_state),
@@ -96,21 +96,12 @@ class GazeboApi:
     def _control(self, **fields: Any) -> Any:
         return self.control.call(self.node.message(f"{SIM}/srv/Control_Request", **fields))
 
-    def on_pause(self, request: Any, response: Any) -> Any:
-        self._control(pause=True)
-        return response
-
-    def on_unpause(self, request: Any, response: Any) -> Any:
-        self._control(pause=False)
-        return response
-
-    def on_reset_simulation(self, request: Any, response: Any) -> Any:
-        self._control(reset_all=True)
-        return response
-
-    def on_reset_world(self, request: Any, response: Any) -> Any:
-        self._control(reset_model_only=True)
-        return response
+    def controlling(self, fields: dict[str, bool]) -> Any:
+        """An Empty service's callback that sends the sim's Control with `fields`."""
+        def callback(request: Any, response: Any) -> Any:
+            self._control(**fields)
+            return response
+        return callback
 
     def _state(self) -> Any:
         return self.state.call(self.node.message(f"{SIM}/srv/State_Request"))

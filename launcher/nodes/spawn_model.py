@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import sys
 
+from launcher.arguments import flag_words
 from launcher.errors import UsageError, reported
 
 FLAGS = {"-param": "-param", "-file": "-file", "-model": "-name", "-x": "-x", "-y": "-y",
@@ -27,12 +28,7 @@ def create_argv(argv: list[str]) -> tuple[list[str], bool, list[tuple[str, float
     out: list[str] = []
     unpause = False
     joints: list[tuple[str, float]] = []
-    words = list(argv)
-    while words:
-        word = words.pop(0)
-        if word in ("-h", "--help"):
-            print(__doc__)
-            raise SystemExit(0)
+    for word, words in flag_words(argv, __doc__):
         if word in ("-urdf", "-sdf", "-trimesh"):  # the format: the sim tells by the text
             continue
         if word == "-unpause":

@@ -80,4 +80,22 @@ def test_a_lenient_group_takes_words_no_verb_knows(tmp_path):
 def test_ros2_runs_the_verbs_the_table_has():
     from launcher.cli.ros2_command import SAME, VERBS
 
-    assert SAME == {verb for verb in VERBS if verb in LAUNCHER} and "topic" in SAME
+    assert {verb for verb in VERBS if verb in LAUNCHER} == SAME and "topic" in SAME
+
+
+@pytest.mark.parametrize("words", [
+    ["topic", "echo", "/chatter", "--full-length", "--sim", "--qos-profile", "sensor_data"],
+    ["control", "switch_controllers", "--strict", "--activate-asap", "-c", "/cm"],
+    ["interface", "list", "--only-msgs"],
+], ids=["topic echo", "control switch_controllers", "interface list"])
+def test_options_beside_a_verbs_exclusive_group_combine_with_it(words):
+    from launcher.cli.main import build_parser
+
+    parser, _ = build_parser(words)
+    assert parser.parse_args(words).run is not None
+
+
+def test_rostopic_pubs_latch_option_combines_with_its_rate():
+    args = group_parser(ROS1["rostopic"], "rostopic", ["pub"]).parse_args(
+        ["pub", "-r", "10", "-l", "/c", "std_msgs/String", "hi"])
+    assert args.latch and args.rate == 10.0

@@ -13,6 +13,7 @@ from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.node import Node
 from launcher.bus.types import UnknownType, registry
 from launcher.cli.action.lookup import actions_served, listing_text, send_goal_endpoints
+from launcher.cli.message_text import message_from
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
@@ -38,11 +39,7 @@ def run(args: argparse.Namespace) -> int:
     except UnknownType as exc:
         raise UsageError(str(exc)) from None
     try:
-        values = yaml.safe_load(args.goal)
-    except yaml.YAMLError as exc:
-        raise UsageError(f"the goal is not valid YAML: {exc}") from None
-    try:
-        goal = build(f"{action}_Goal", values)
+        goal = message_from(f"{action}_Goal", args.goal, "goal")
     except MessageError as exc:
         raise UsageError(f"the goal for {action}: {exc}") from None
     name = args.name if args.name.startswith("/") else f"/{args.name}"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.control.manager import add_manager_option, with_manager
+from launcher.cli.control.manager import add_manager_option, on_manager
 from launcher.nodes.spawner import Manager
 
 
@@ -23,34 +23,33 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_manager_option(parser)
 
 
-def run(args: argparse.Namespace) -> int:
-    def work(manager: Manager) -> int:
-        controllers = manager.call("list_controllers").controller
-        if not controllers:
-            print("No controllers are currently loaded!")
-            return 0
-        name_w = max(len(c.name) for c in controllers)
-        type_w = max(len(c.type) for c in controllers)
-        state_w = max(len(c.state) for c in controllers)
-        for c in controllers:
-            print(f"{c.name:<{name_w}} {c.type:<{type_w}}  {c.state:<{state_w}}")
-            if args.verbose:
-                print(f"\tupdate_rate: {c.update_rate} Hz")
-                print(f"\tis_async: {c.is_async}")
-            for flag, title, values in (
-                    (args.claimed_interfaces, "claimed interfaces", c.claimed_interfaces),
-                    (args.required_command_interfaces, "required command interfaces",
-                     c.required_command_interfaces),
-                    (args.required_state_interfaces, "required state interfaces",
-                     c.required_state_interfaces),
-                    (args.chained_interfaces, "chained to interfaces", []),
-                    (args.reference_interfaces or args.exported_interfaces,
-                     "exported reference interfaces", c.reference_interfaces),
-                    (args.reference_interfaces or args.exported_interfaces,
-                     "exported state interfaces", c.exported_state_interfaces)):
-                if flag or args.verbose:
-                    print(f"\t{title}:")
-                    for value in values:
-                        print(f"\t\t{value}")
+@on_manager
+def run(manager: Manager, args: argparse.Namespace) -> int:
+    controllers = manager.call("list_controllers").controller
+    if not controllers:
+        print("No controllers are currently loaded!")
         return 0
-    return with_manager(args, work)
+    name_w = max(len(c.name) for c in controllers)
+    type_w = max(len(c.type) for c in controllers)
+    state_w = max(len(c.state) for c in controllers)
+    for c in controllers:
+        print(f"{c.name:<{name_w}} {c.type:<{type_w}}  {c.state:<{state_w}}")
+        if args.verbose:
+            print(f"\tupdate_rate: {c.update_rate} Hz")
+            print(f"\tis_async: {c.is_async}")
+        for flag, title, values in (
+                (args.claimed_interfaces, "claimed interfaces", c.claimed_interfaces),
+                (args.required_command_interfaces, "required command interfaces",
+                 c.required_command_interfaces),
+                (args.required_state_interfaces, "required state interfaces",
+                 c.required_state_interfaces),
+                (args.chained_interfaces, "chained to interfaces", []),
+                (args.reference_interfaces or args.exported_interfaces,
+                 "exported reference interfaces", c.reference_interfaces),
+                (args.reference_interfaces or args.exported_interfaces,
+                 "exported state interfaces", c.exported_state_interfaces)):
+            if flag or args.verbose:
+                print(f"\t{title}:")
+                for value in values:
+                    print(f"\t\t{value}")
+    return 0

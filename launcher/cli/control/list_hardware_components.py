@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.control.manager import add_manager_option, with_manager
+from launcher.cli.control.manager import add_manager_option, on_manager
 from launcher.nodes.spawner import Manager
 
 
@@ -14,24 +14,23 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_manager_option(parser)
 
 
-def run(args: argparse.Namespace) -> int:
-    def work(manager: Manager) -> int:
-        for index, c in enumerate(manager.call("list_hardware_components").component):
-            print(f"Hardware Component {index + 1}\n\tname: {c.name}\n\ttype: {c.type}")
-            print(f"\tplugin name: {c.plugin_name}\n"
-                  f"\tstate: id={c.state.id} label={c.state.label}\n"
-                  f"\tread/write rate: {c.rw_rate} Hz\n"
-                  f"\tis_async: {c.is_async}\n"
-                  f"\tcommand interfaces")
-            for item in c.command_interfaces:
-                kind = f" [{item.data_type}]" if args.verbose else ""
-                print(f"\t\t{item.name}{kind} "
-                      f"{'[available]' if item.is_available else '[unavailable]'} "
-                      f"{'[claimed]' if item.is_claimed else '[unclaimed]'}")
-            if args.verbose:
-                print("\tstate interfaces")
-                for item in c.state_interfaces:
-                    print(f"\t\t{item.name} [{item.data_type}] "
-                          f"{'[available]' if item.is_available else '[unavailable]'}")
-        return 0
-    return with_manager(args, work)
+@on_manager
+def run(manager: Manager, args: argparse.Namespace) -> int:
+    for index, c in enumerate(manager.call("list_hardware_components").component):
+        print(f"Hardware Component {index + 1}\n\tname: {c.name}\n\ttype: {c.type}")
+        print(f"\tplugin name: {c.plugin_name}\n"
+              f"\tstate: id={c.state.id} label={c.state.label}\n"
+              f"\tread/write rate: {c.rw_rate} Hz\n"
+              f"\tis_async: {c.is_async}\n"
+              f"\tcommand interfaces")
+        for item in c.command_interfaces:
+            kind = f" [{item.data_type}]" if args.verbose else ""
+            print(f"\t\t{item.name}{kind} "
+                  f"{'[available]' if item.is_available else '[unavailable]'} "
+                  f"{'[claimed]' if item.is_claimed else '[unclaimed]'}")
+        if args.verbose:
+            print("\tstate interfaces")
+            for item in c.state_interfaces:
+                print(f"\t\t{item.name} [{item.data_type}] "
+                      f"{'[available]' if item.is_available else '[unavailable]'}")
+    return 0

@@ -4,7 +4,7 @@ calls that only say whether they worked."""
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from collections.abc import Callable
 
 from launcher.bus.node import Node
 from launcher.errors import LaunchError
@@ -26,12 +26,16 @@ def manager_of(args: argparse.Namespace) -> tuple[Node, Manager]:
                           f"plugin, or ros2_control_node? Another name: -c NAME") from None
 
 
-def with_manager(args: argparse.Namespace, work: Any) -> int:
-    node, manager = manager_of(args)
-    try:
-        return work(manager)
-    finally:
-        node.destroy_node()
+def on_manager(work: Callable[[Manager, argparse.Namespace], int]
+               ) -> Callable[[argparse.Namespace], int]:
+    """A verb's run: `work` on the manager -c names, its client node gone after."""
+    def run(args: argparse.Namespace) -> int:
+        node, manager = manager_of(args)
+        try:
+            return work(manager, args)
+        finally:
+            node.destroy_node()
+    return run
 
 
 def state_of(manager: Manager, name: str) -> str:
@@ -41,14 +45,15 @@ def state_of(manager: Manager, name: str) -> str:
     return ""
 
 
-def simple_call(service: str, field: str, done: str, failed: str) -> Any:
-    def run(args: argparse.Namespace) -> int:
-        def work(manager: Manager) -> int:
-            if not manager.call(service, name=getattr(args, field)).ok:
-                raise LaunchError(failed.format(getattr(args, field)))
-            print(done.format(getattr(args, field)))
-            return 0
-        return with_manager(args, work)
+def simple_call(service: str, field: str, done: str, failed: str
+                ) -> Callable[[argparse.Namespace], int]:
+    """A verb's run that calls `service` on the name given as `field`, and says how it went."""
+    @on_manager
+    def run(manager: Manager, args: argparse.Namespace) -> int:
+        if not manager.call(service, name=getattr(args, field)).ok:
+            raise LaunchError(failed.format(getattr(args, field)))
+        print(done.format(getattr(args, field)))
+        return 0
     return run
 
 
@@ -57,3 +62,11 @@ def add_manager_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-c", "--controller-manager", default="/controller_manager",
                         help="name of the controller manager ROS node (default "
                              "/controller_manager)")
+
+
+def add_state_arguments(parser: argparse.ArgumentParser, name: str, what: str) -> None:
+    """NAME STATE [-c MANAGER]: what to take to which lifecycle state."""
+    parser.add_argument(name, help=what)
+    parser.add_argument("state", choices=("unconfigured", "inactive", "active"),
+                        help="the state to take it to")
+    add_manager_option(parser)

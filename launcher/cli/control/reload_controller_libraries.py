@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.control.manager import add_manager_option, with_manager
+from launcher.cli.control.manager import add_manager_option, on_manager
 from launcher.nodes.spawner import Manager
 
 
@@ -14,9 +14,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_manager_option(parser)
 
 
-def run(args: argparse.Namespace) -> int:
-    def work(manager: Manager) -> int:
-        manager.call("reload_controller_libraries", force_kill=args.force_kill)
-        print("Reload successful")
-        return 0
-    return with_manager(args, work)
+@on_manager
+def run(manager: Manager, args: argparse.Namespace) -> int:
+    manager.call("reload_controller_libraries", force_kill=args.force_kill)
+    print("Reload successful")
+    return 0

@@ -4,29 +4,25 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.control.manager import add_manager_option, with_manager
+from launcher.cli.control.manager import add_state_arguments, on_manager
 from launcher.errors import LaunchError
 from launcher.nodes.spawner import Manager
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("hardware_component_name", help="the hardware component")
-    parser.add_argument("state", choices=("unconfigured", "inactive", "active"),
-                        help="the state to take it to")
-    add_manager_option(parser)
+    add_state_arguments(parser, "hardware_component_name", "the hardware component")
 
 
-def run(args: argparse.Namespace) -> int:
-    def work(manager: Manager) -> int:
-        ids = {"unconfigured": 1, "inactive": 2, "active": 3}
-        make = manager.node.message
-        response = manager.call("set_hardware_component_state",
-                                name=args.hardware_component_name,
-                                target_state=make("lifecycle_msgs/msg/State",
-                                                  id=ids[args.state], label=args.state))
-        if not response.ok:
-            raise LaunchError(f"Error setting {args.hardware_component_name} to {args.state}, "
-                              f"check controller_manager logs")
-        print(f"Successfully set {args.hardware_component_name} to state {args.state}")
-        return 0
-    return with_manager(args, work)
+@on_manager
+def run(manager: Manager, args: argparse.Namespace) -> int:
+    ids = {"unconfigured": 1, "inactive": 2, "active": 3}
+    make = manager.node.message
+    response = manager.call("set_hardware_component_state",
+                            name=args.hardware_component_name,
+                            target_state=make("lifecycle_msgs/msg/State",
+                                              id=ids[args.state], label=args.state))
+    if not response.ok:
+        raise LaunchError(f"Error setting {args.hardware_component_name} to {args.state}, "
+                          f"check controller_manager logs")
+    print(f"Successfully set {args.hardware_component_name} to state {args.state}")
+    return 0

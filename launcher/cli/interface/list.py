@@ -8,9 +8,9 @@ from launcher.cli.interface.types import all_types
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser = parser.add_mutually_exclusive_group()
-    parser.add_argument("-m", "--only-msgs", action="store_true", help="messages only")
-    parser.add_argument("-s", "--only-srvs", action="store_true", help="services only")
+    only = parser.add_mutually_exclusive_group()
+    only.add_argument("-m", "--only-msgs", action="store_true", help="messages only")
+    only.add_argument("-s", "--only-srvs", action="store_true", help="services only")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -6,20 +6,17 @@ import argparse
 from typing import Any
 
 from launcher.bus import parameters as params
-from launcher.cli import completion, positive_number
-from launcher.cli.param.client import call_parameters
+from launcher.cli.param import client
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
-    parser.add_argument("names", nargs="+", metavar="name", help="the parameters")
-    parser.add_argument("--timeout", type=positive_number, default=5.0, metavar="SECONDS",
-                        help="how long to wait for the node's answer (default 5 s)")
+    client.add_names_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
     """As `ros2 param describe NODE NAME…`."""
-    response = call_parameters(args, params.DESCRIBE, "describe_parameters", {"names": args.names})
+    response = client.call_parameters(args, params.DESCRIBE, "describe_parameters",
+                                      {"names": args.names})
     for descriptor in response.descriptors:
         print(describe_lines(descriptor))
     return 0

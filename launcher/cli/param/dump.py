@@ -5,14 +5,12 @@ from __future__ import annotations
 import argparse
 
 from launcher.bus import parameters as params
-from launcher.cli import completion, positive_number
-from launcher.cli.param.client import call_parameters
+from launcher.cli.param import client
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
-    parser.add_argument("--timeout", type=positive_number, default=5.0, metavar="SECONDS",
-                        help="how long to wait for the node's answer (default 5 s)")
+    client.add_node_argument(parser)
+    client.add_timeout_option(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -20,8 +18,8 @@ def run(args: argparse.Namespace) -> int:
     nested."""
     import yaml
 
-    names = list(call_parameters(args, params.LIST, "list_parameters", {}).result.names)
-    values = call_parameters(args, params.GET, "get_parameters", {"names": names}).values
+    names = list(client.call_parameters(args, params.LIST, "list_parameters", {}).result.names)
+    values = client.call_parameters(args, params.GET, "get_parameters", {"names": names}).values
     tree = params.nested((name, params.from_message(value))
                          for name, value in zip(names, values, strict=True))
     print(yaml.safe_dump({args.node: {"ros__parameters": tree}}, sort_keys=True), end="")

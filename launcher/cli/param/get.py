@@ -5,18 +5,16 @@ from __future__ import annotations
 import argparse
 
 from launcher.bus import parameters as params
-from launcher.cli import completion, positive_number
-from launcher.cli.param.client import call_parameters
+from launcher.cli.param import client
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
+    client.add_node_argument(parser)
     parser.add_argument("name", help="the parameter")
-    parser.add_argument("--timeout", type=positive_number, default=5.0, metavar="SECONDS",
-                        help="how long to wait for the node's answer (default 5 s)")
+    client.add_timeout_option(parser)
 
 
 def run(args: argparse.Namespace) -> int:
-    response = call_parameters(args, params.GET, "get_parameters", {"names": [args.name]})
+    response = client.call_parameters(args, params.GET, "get_parameters", {"names": [args.name]})
     print(params.describe(params.from_message(response.values[0])))
     return 0

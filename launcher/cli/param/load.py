@@ -6,16 +6,14 @@ import argparse
 from typing import Any
 
 from launcher.bus import parameters as params
-from launcher.cli import completion, positive_number
-from launcher.cli.param.client import call_parameters, parameter_message
+from launcher.cli.param import client
 from launcher.errors import LaunchError
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("node", help="the node's full name").completer = completion.nodes  # type: ignore[attr-defined]
+    client.add_node_argument(parser)
     parser.add_argument("file", help="a params YAML file (its /NODE or /** section)")
-    parser.add_argument("--timeout", type=positive_number, default=5.0, metavar="SECONDS",
-                        help="how long to wait for the node's answer (default 5 s)")
+    client.add_timeout_option(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -40,8 +38,9 @@ def run(args: argparse.Namespace) -> int:
     flat: dict[str, Any] = {}
     for section in sections:
         flat.update(_flatten(section))
-    response = call_parameters(args, params.SET, "set_parameters",
-                               {"parameters": [parameter_message(n, v) for n, v in flat.items()]})
+    messages = [client.parameter_message(n, v) for n, v in flat.items()]
+    response = client.call_parameters(args, params.SET, "set_parameters",
+                                      {"parameters": messages})
     for name, result in zip(flat, response.results, strict=True):
         print(f"Set parameter {name} successful" if result.successful else
               f"Set parameter {name} failed: {result.reason}")

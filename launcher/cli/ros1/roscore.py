@@ -7,6 +7,7 @@ one, as launcher's routers do; its parameters go with the last of them (bus/rout
 from __future__ import annotations
 
 import argparse
+import contextlib
 
 from launcher.arguments import Parser
 
@@ -33,9 +34,8 @@ def main(argv: list[str], prog: str = "roscore") -> int:
         if not server.available(10.0):
             raise LaunchError("the graph's parameter server did not answer within 10 s")
         print(_summary(str(server.get("/run_id")), joined), flush=True)
-        node.spin()
-    except KeyboardInterrupt:
-        pass
+        with contextlib.suppress(KeyboardInterrupt):  # Ctrl-C ends it cleanly, as roscore's
+            node.spin()
     finally:
         node.destroy_node()
     return 0

@@ -7,12 +7,12 @@ import time
 
 import yaml
 
-from launcher.bus.messages import build, to_data
+from launcher.bus.messages import to_data
 from launcher.bus.node import Node
 from launcher.bus.types import registry
 from launcher.cli import completion, positive_number
-from launcher.cli.space import add_sim_option, space_of
-from launcher.errors import UsageError
+from launcher.cli.graph_options import add_sim_option, space_of
+from launcher.cli.message_text import message_from
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -27,12 +27,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    try:
-        values = yaml.safe_load(args.values)
-    except yaml.YAMLError as exc:
-        raise UsageError(f"the request is not valid YAML: {exc}") from None
     request_type, _ = registry().service(args.type)
-    request = build(request_type, values)
+    request = message_from(request_type, args.values, "request")
     node = Node("_launcher_service_call", argv=[], parameter_services=False,
                 space=space_of(args))
     try:

@@ -12,8 +12,8 @@ from launcher.bus.messages import to_data
 from launcher.bus.node import Node
 from launcher.bus.types import registry
 from launcher.cli import completion
+from launcher.cli.graph_options import add_sim_option, space_of
 from launcher.cli.service.lookup import named_service
-from launcher.cli.space import add_sim_option, space_of
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 
 from launcher.bus import keys
+from launcher.cli.graph_options import add_sim_option
 from launcher.cli.service.lookup import graph_services
-from launcher.cli.space import add_sim_option
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -6,16 +6,13 @@ import argparse
 
 from launcher.bus import keys
 from launcher.bus.names import hidden
+from launcher.cli.graph_options import add_hidden_option, add_sim_option, add_types_option
 from launcher.cli.service.lookup import graph_services
-from launcher.cli.space import add_sim_option
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--include-hidden-services", action="store_true",
-                        help="also the hidden ones (a name part that begins with '_', as "
-                             "actions' /_action/ services), which ros2 leaves out")
-    parser.add_argument("-t", "--show-types", action="store_true",
-                        help="each service's type too")
+    add_hidden_option(parser, "services")
+    add_types_option(parser, "service's")
     add_sim_option(parser, "services")
 
 

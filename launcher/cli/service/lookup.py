@@ -6,7 +6,7 @@ import argparse
 
 from launcher.bus import graph, keys
 from launcher.bus.session import open_session
-from launcher.cli.space import space_of
+from launcher.cli.graph_options import space_of
 from launcher.errors import LaunchError, did_you_mean
 
 

@@ -6,8 +6,8 @@ import argparse
 
 from launcher.bus import keys
 from launcher.cli import completion
+from launcher.cli.graph_options import add_sim_option
 from launcher.cli.service.lookup import named_service
-from launcher.cli.space import add_sim_option
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

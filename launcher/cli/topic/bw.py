@@ -8,7 +8,7 @@ from collections import deque
 
 from launcher.bus.session import open_session
 from launcher.cli import completion, positive_count
-from launcher.cli.space import add_sim_option, space_of
+from launcher.cli.graph_options import add_sim_option, space_of
 from launcher.cli.topic.lookup import topic_name, type_of
 
 

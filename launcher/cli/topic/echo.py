@@ -9,7 +9,7 @@ from typing import Any
 
 from launcher.bus.session import open_session
 from launcher.cli import completion, positive_count, positive_number, qos_options
-from launcher.cli.space import add_sim_option, space_of
+from launcher.cli.graph_options import add_sim_option, space_of
 from launcher.cli.topic.lookup import topic_name, type_of
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
@@ -33,10 +33,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "expressions as $(eval)")
     parser.add_argument("--raw", action="store_true",
                         help="the serialized message (CDR bytes) instead of its fields")
-    parser = parser.add_mutually_exclusive_group()
-    parser.add_argument("-l", "--truncate-length", type=positive_count, default=128,
+    length = parser.add_mutually_exclusive_group()
+    length.add_argument("-l", "--truncate-length", type=positive_count, default=128,
                         metavar="N", help="cut strings and arrays to N items (default 128)")
-    parser.add_argument("-f", "--full-length", action="store_true",
+    length.add_argument("-f", "--full-length", action="store_true",
                         help="print strings and arrays whole")
     qos_options.add(parser, default="best_available")
     add_sim_option(parser, "topics")

@@ -6,7 +6,7 @@ import argparse
 
 from launcher.bus import graph
 from launcher.bus.session import open_session
-from launcher.cli.space import add_sim_option, space_of
+from launcher.cli.graph_options import add_sim_option, space_of
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -7,17 +7,19 @@ import argparse
 from launcher.bus import graph
 from launcher.bus.names import hidden
 from launcher.bus.session import open_session
-from launcher.cli.space import add_sim_option, space_of
+from launcher.cli.graph_options import (
+    add_hidden_option,
+    add_sim_option,
+    add_types_option,
+    space_of,
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("-t", "--show-types", action="store_true",
-                        help="each topic's message type too")
+    add_types_option(parser, "topic's message")
     parser.add_argument("-v", "--verbose", action="store_true",
                         help="published and subscribed topics, with their types and counts")
-    parser.add_argument("--include-hidden-topics", action="store_true",
-                        help="also the hidden ones (a name part that begins with '_', as "
-                             "actions' /_action/ topics), which ros2 leaves out")
+    add_hidden_option(parser, "topics")
     parser.add_argument("-c", "--count-topics", action="store_true",
                         help="how many topics there are")
     add_sim_option(parser, "topics")

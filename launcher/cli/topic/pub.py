@@ -8,12 +8,13 @@ from typing import TYPE_CHECKING, Any
 
 from launcher.bus.qos import QoS
 from launcher.cli import completion, positive_number
-from launcher.errors import LaunchError, UsageError
+from launcher.cli.graph_options import add_sim_option, space_of
+from launcher.cli.message_text import message_from
+from launcher.cli.topic.lookup import topic_name
+from launcher.errors import LaunchError
 
 if TYPE_CHECKING:
     from launcher.bus.node import Node
-from launcher.cli.space import add_sim_option, space_of
-from launcher.cli.topic.lookup import topic_name
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -41,16 +42,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """As `ros2 topic pub`, its messages printed as rclpy prints them."""
-    import yaml
 
-    from launcher.bus.messages import build, ros_repr
+    from launcher.bus.messages import ros_repr
     from launcher.bus.node import Node, Rate
 
-    try:
-        values = yaml.safe_load(args.values)
-    except yaml.YAMLError as exc:
-        raise UsageError(f"the message is not valid YAML: {exc}") from None
-    message = build(args.type, values)
+    message = message_from(args.type, args.values, "message")
     node = Node("_launcher_topic_pub", argv=[], parameter_services=False, space=space_of(args))
     qos = QoS(depth=1, transient_local=True) if args.latched else QoS()
     topic = topic_name(args.topic)

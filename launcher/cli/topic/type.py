@@ -7,7 +7,7 @@ import argparse
 from launcher.bus import graph
 from launcher.bus.session import open_session
 from launcher.cli import completion
-from launcher.cli.space import add_sim_option, space_of
+from launcher.cli.graph_options import add_sim_option, space_of
 from launcher.cli.topic.lookup import topic_name
 from launcher.errors import LaunchError, did_you_mean
 

@@ -25,6 +25,18 @@ class KeepEntry:
     value: Text_ | None = attr(Kind.TEXT, doc="Its value (default: its current value).")
 
 
+def kept_configurations(context: LaunchContext, entries: list[KeepEntry]) -> dict[str, str]:
+    """The configurations that `keep` entries name: each given value, or the current one."""
+    kept = {}
+    for entry in entries:
+        name = perform_text(context, entry.name)
+        if entry.value is not None:
+            kept[name] = perform_text(context, entry.value)
+        elif name in context.configurations:
+            kept[name] = context.configurations[name]
+    return kept
+
+
 @action("arg")
 @dataclass(kw_only=True, eq=False)
 class DeclareLaunchArgument(Action):
@@ -144,12 +156,6 @@ class ResetLaunchConfigurations(Action):
                                  doc="Configurations that survive the reset.")
 
     def execute(self, context: LaunchContext) -> None:
-        kept = {}
-        for entry in self.keep:
-            name = perform_text(context, entry.name)
-            if entry.value is not None:
-                kept[name] = perform_text(context, entry.value)
-            elif name in context.configurations:
-                kept[name] = context.configurations[name]
+        kept = kept_configurations(context, self.keep)
         context.configurations.clear()
         context.configurations.update(kept)

@@ -6,10 +6,10 @@ from collections.abc import Sequence
 from typing import Any
 
 from launcher.description.action import Action, PopScope, PushScope
-from launcher.description.actions.arguments import KeepEntry
+from launcher.description.actions.arguments import KeepEntry, kept_configurations
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
-from launcher.description.substitution import perform_text, to_text
+from launcher.description.substitution import to_text
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
@@ -32,13 +32,7 @@ class GroupAction(Action):
     def execute(self, context: LaunchContext) -> Sequence[Action]:
         if not resolve(context, self.scoped, Kind.BOOL, "scoped"):
             return list(self.actions)
-        keep = {}
-        for entry in self.keep:
-            name = perform_text(context, entry.name)
-            if entry.value is not None:
-                keep[name] = perform_text(context, entry.value)
-            elif name in context.configurations:
-                keep[name] = context.configurations[name]
+        keep = kept_configurations(context, self.keep)
         forwarding = resolve(context, self.forwarding, Kind.BOOL, "forwarding")
         return [PushScope(forwarding=forwarding, keep=keep), *self.actions, PopScope()]
 

@@ -128,6 +128,7 @@ class Plugin:
     def __init__(self, sim: Any, entity: Any, config: PluginConfig) -> None:
         self.sim, self.entity, self.config = sim, entity, config
         self.label = config.name or config.filename
+        self.warned: set[str] = set()  # (warn_once's keys)
 
     # --- hooks -----------------------------------------------------------------------------
     def prepare(self, spec: Any) -> None:
@@ -186,6 +187,17 @@ class Plugin:
             raise PluginError(f"{self.config.where}: plugin {self.label}: {exc.message}") \
                 from None
 
+    def three_numbers(self, tag: str, text: str) -> list[float]:
+        """`<tag>`'s three numbers (a vector or angles), refused by name unless finite."""
+        try:
+            values = [float(v) for v in text.split()]
+        except ValueError:
+            values = []
+        if len(values) != 3 or not all(math.isfinite(v) for v in values):
+            raise PluginError(f"{self.config.where}: plugin {self.label}: <{tag}> expects "
+                              f"three numbers, got '{text}'")
+        return values
+
     def parameters(self, cls: type[R]) -> R:
         """The configuration's elements as a record of `cls`'s declared fields (a repeated
         element is a list); unknown elements are warned about (`unknown_parameters`)."""
@@ -204,6 +216,13 @@ class Plugin:
                          warn=self.sim.transport.logger.warning)
         except ParseError as exc:
             raise PluginError(exc.message) from None
+
+    def warn_once(self, key: str, text: str) -> None:
+        """Warn with `text` the first time `key` comes up only: a bad command sent every step
+        would flood the log."""
+        if key not in self.warned:
+            self.warned.add(key)
+            self.sim.transport.logger.warning(text)
 
     def topic(self, name: str | None, default: str) -> str:
         """Relative names live under the entity (`/model/<name>/…`), absolute ones as given."""

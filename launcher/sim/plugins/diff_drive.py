@@ -132,17 +132,13 @@ class DiffDrive(Plugin):
         self.previous: tuple[float, float] | None = None
         self.linear = self.angular = 0.0  # measured speeds, from the wheels
         self._control_time: float | None = None
-        self._warned_nan = False
 
     # --- commands --------------------------------------------------------------------------
     def on_cmd_vel(self, message: Any) -> None:
         v, w = message.linear.x, message.angular.z
         if not (math.isfinite(v) and math.isfinite(w)):
-            if not self._warned_nan:
-                self._warned_nan = True
-                self.sim.transport.logger.warning(
-                    f"entity '{self.entity.name}': ignoring cmd_vel with a NaN or infinite "
-                    f"value (linear.x={v}, angular.z={w}); warned once")
+            self.warn_once("nan", f"entity '{self.entity.name}': ignoring cmd_vel with a NaN "
+                           f"or infinite value (linear.x={v}, angular.z={w}); warned once")
             return
         lim = self.limits
         self.target = (min(max(v, lim["min_linear_velocity"]), lim["max_linear_velocity"]),

@@ -75,7 +75,6 @@ class _JointServo(Plugin):
             actuator.forcerange = [low if math.isfinite(low) else -1e9,
                                    high if math.isfinite(high) else 1e9]
         self.command = self.initial()
-        self._warned = False
 
     def configure(self, actuator: Any) -> None:
         raise NotImplementedError
@@ -114,11 +113,9 @@ class _JointServo(Plugin):
 
     def on_command(self, message: Any) -> None:
         if not math.isfinite(message.data):
-            if not self._warned:
-                self._warned = True
-                self.sim.transport.logger.warning(
-                    f"entity '{self.entity.name}': ignoring a {self.kind} command for "
-                    f"'{self.joint}' that is not finite ({message.data}); warned once")
+            self.warn_once("nan", f"entity '{self.entity.name}': ignoring a {self.kind} command "
+                           f"for '{self.joint}' that is not finite ({message.data}); warned "
+                           "once")
             return
         self.command = message.data
         self.data.ctrl[self.index] = message.data

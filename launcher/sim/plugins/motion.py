@@ -79,19 +79,9 @@ class VelocityParameters:
 class VelocityControl(Plugin):
     def prepare(self, spec: Any) -> None:
         p = self.params = self.parameters(VelocityParameters)
-        self.initial = (self._vector("initial_linear", p.initial_linear),
-                        self._vector("initial_angular", p.initial_angular))
+        self.initial = (self.three_numbers("initial_linear", p.initial_linear),
+                        self.three_numbers("initial_angular", p.initial_angular))
         self.reset()
-
-    def _vector(self, tag: str, text: str) -> list[float]:
-        try:
-            values = [float(v) for v in text.split()]
-        except ValueError:
-            values = []
-        if len(values) != 3 or not all(math.isfinite(v) for v in values):
-            raise PluginError(f"{self.config.where}: plugin {self.label}: <{tag}> expects three "
-                              f"numbers (x y z), got '{text}'")
-        return values
 
     def reset(self) -> None:
         self.target = (list(self.initial[0]), list(self.initial[1]))

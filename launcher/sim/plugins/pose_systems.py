@@ -28,7 +28,7 @@ from typing import Any
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim import schedule
-from launcher.sim.plugins import Plugin, PluginError
+from launcher.sim.plugins import Plugin
 from launcher.sim.transform import IDENTITY, Pose, from_rpy
 
 
@@ -46,17 +46,6 @@ class OdometryParameters:
     gaussian_noise: float = attr(Kind.FLOAT, 0.0, minimum=0.0)
 
 
-def _three(plugin: Plugin, tag: str, text: str) -> list[float]:
-    try:
-        values = [float(v) for v in text.split()]
-    except ValueError:
-        values = []
-    if len(values) != 3 or not all(math.isfinite(v) for v in values):
-        raise PluginError(f"{plugin.config.where}: plugin {plugin.label}: <{tag}> expects "
-                          f"three numbers, got '{text}'")
-    return values
-
-
 def model_pose(sim: Any, entity: Any) -> Pose:
     """The entity's model frame in the world now."""
     body = sim.placement.body_pose(entity.body)
@@ -72,8 +61,8 @@ def _yaw(quat: tuple[float, ...]) -> float:
 class OdometryPublisher(Plugin):
     def prepare(self, spec: Any) -> None:
         p = self.params = self.parameters(OdometryParameters)
-        self.offset = from_rpy(*_three(self, "xyz_offset", p.xyz_offset),
-                               *_three(self, "rpy_offset", p.rpy_offset))
+        self.offset = from_rpy(*self.three_numbers("xyz_offset", p.xyz_offset),
+                               *self.three_numbers("rpy_offset", p.rpy_offset))
         self.rng = random.Random(0)
         self.reset()
 

@@ -140,12 +140,11 @@ class SimSystem(Component):
             if plugin is None:
                 plugin = self._sensor_plugin(sensor.name)
                 if plugin is None:
-                    if not getattr(self, "_warned_sensor", False):
-                        self._warned_sensor = True
-                        self.plugin.sim.transport.logger.warning(
-                            f"{self.info.where}: ros2_control sensor '{sensor.name}' has no sim "
-                            f"sensor of that name on the robot (a <gazebo reference=…><sensor "
-                            f"name=\"{sensor.name}\">); its state interfaces stay 0")
+                    self.plugin.warn_once(
+                        f"sensor {sensor.name}",
+                        f"{self.info.where}: ros2_control sensor '{sensor.name}' has no sim "
+                        f"sensor of that name on the robot (a <gazebo reference=…><sensor "
+                        f"name=\"{sensor.name}\">); its state interfaces stay 0")
                     continue
                 self.sensors[index] = (sensor, plugin)
             message = plugin.measure(self.model, self.data)

@@ -12,10 +12,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import mujoco
-
 from launcher.sim.sdf.context import Context, top_element
-from launcher.sim.sdf.model import BuiltModel, build
+from launcher.sim.sdf.model import BuiltModel, build, new_spec
 from launcher.sim.sdf.pose import IDENTITY, Pose, parse_pose
 from launcher.sim.sdf.world import SdfWorld, load_world
 from launcher.sim.sdf.xmltree import SdfError
@@ -34,9 +32,7 @@ def load_model(text: str, path: Path | None, environ: Mapping[str, str] | None =
     element, origin = top_element(text, path, "model", " to spawn (a <world> file is run "
                                                        "with `gz sim`)")
     context = Context(environ, packages)
-    spec = mujoco.MjSpec()
-    spec.modelname = element.get("name", "model")
-    spec.compiler.degree = False  # SDF's angles (joint limits) are radians, as in a world
+    spec = new_spec(element.get("name", "model"))
     built = build(spec, element, origin, context, "", IDENTITY)
     return SdfModel(spec, built, parse_pose(element.find("pose")), context.warnings)
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+import mujoco
+
 from launcher.sim.sdf.bodies import Builder
 from launcher.sim.sdf.context import Context, Origin
 from launcher.sim.sdf.parts import Joint, Parts, canonical_link, collect, flag, tree
@@ -27,6 +29,15 @@ class BuiltModel:
     static: bool
     plugins: list[Any]
     pose: Pose  # the model frame in the world
+
+
+def new_spec(name: str) -> Any:
+    """An empty MuJoCo spec for an SDF world or model: its name, and angles in radians as SDF
+    gives them (joint limits)."""
+    spec = mujoco.MjSpec()
+    spec.modelname = name
+    spec.compiler.degree = False
+    return spec
 
 
 def build(spec: Any, model: Element, origin: Origin, context: Context, prefix: str,

@@ -24,6 +24,14 @@ def number(element: Element, what: str = "a number") -> float:
     return value
 
 
+def child_number(element: Element, tag: str, default: float = 0.0) -> float:
+    """The one finite number of `element`'s child `tag`; `default` where it has none."""
+    child = element.find(tag)
+    if child is None or not child.stripped:
+        return default
+    return number(child)
+
+
 def numbers(element: Element, count: int | tuple[int, ...], what: str) -> list[float]:
     """The whitespace-separated numbers of an element, exactly `count` of them."""
     counts = (count,) if isinstance(count, int) else count

@@ -19,7 +19,7 @@ import mujoco
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.sdf.context import Context, Origin, top_element
 from launcher.sim.sdf.elements import check_children, plugin_configs
-from launcher.sim.sdf.model import BuiltModel, build
+from launcher.sim.sdf.model import BuiltModel, build, new_spec
 from launcher.sim.sdf.pose import IDENTITY, Pose, number, numbers, parse_pose, rotate
 from launcher.sim.sdf.xmltree import Element
 from launcher.sim.sensors.geodesy import SphericalCoordinates
@@ -47,9 +47,7 @@ def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None =
     world, origin = top_element(text, path, "world", " (a model file is spawned with "
                                 "`create -file`, or included in a world)")
     context = Context(environ, packages)
-    spec = mujoco.MjSpec()
-    spec.modelname = world.get("name", "default")
-    spec.compiler.degree = False
+    spec = new_spec(world.get("name", "default"))
     # stable with the velocity actuators of wheels and joint servos (as for MJCF worlds)
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     check_children(world, context)
@@ -185,7 +183,7 @@ def _models(spec: Any, world: Element, origin: Origin, context: Context) -> list
             raise child.error(f"two models named '{name}' in world '{world.get('name')}' "
                               f"(the first at {first.file}:{first.line})")
         model = build(spec, element, where, context, f"{name}/", placement, static,
-                                name)
+                      name)
         if child.tag == "include":
             model.plugins += plugin_configs(child)
         built[name] = (model, child)

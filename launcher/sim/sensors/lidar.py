@@ -15,6 +15,7 @@ import mujoco
 import numpy as np
 
 from launcher.sim import schedule
+from launcher.sim.sdf.pose import child_number
 from launcher.sim.sdf.xmltree import SdfError
 from launcher.sim.sensors.base import Sensor
 from launcher.sim.sensors.noise import NONE, Noise, noise_of
@@ -44,24 +45,14 @@ def _axis(scan: Any, tag: str, label: str) -> Axis:
     if element is None:
         return Axis()
 
-    def number(name: str, default: float) -> float:
-        text = element.value(name)
-        try:
-            value = float(text) if text not in (None, "") else default
-        except ValueError:
-            value = math.nan
-        if not math.isfinite(value):
-            raise SdfError(f"{label}: <{tag}><{name}> must be a number, got '{text}'",
-                           element.find(name).location)
-        return value
-
-    samples, resolution = number("samples", 1), number("resolution", 1)
+    samples = child_number(element, "samples", 1)
+    resolution = child_number(element, "resolution", 1)
     if samples < 1 or samples != int(samples):
         raise SdfError(f"{label}: <{tag}><samples> must be a whole number ≥ 1, got "
                        f"{element.value('samples')}", element.find("samples").location)
     if resolution <= 0:
         raise SdfError(f"{label}: <{tag}><resolution> must be > 0", element.location)
-    low, high = number("min_angle", 0.0), number("max_angle", 0.0)
+    low, high = child_number(element, "min_angle", 0.0), child_number(element, "max_angle", 0.0)
     if low > high:
         raise SdfError(f"{label}: <{tag}><min_angle> {low:g} is above <max_angle> {high:g}",
                        element.location)

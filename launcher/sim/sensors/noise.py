@@ -3,13 +3,13 @@ seeded generator per sensor (the same seed gives the same readings)."""
 
 from __future__ import annotations
 
-import math
 import zlib
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from launcher.sim.sdf.pose import child_number
 from launcher.sim.sdf.xmltree import SdfError
 
 TYPES = ("none", "gaussian", "gaussian_quantized")
@@ -53,8 +53,8 @@ def noise_of(element: Any, rng: np.random.Generator) -> Noise:
                        found.location)
     if kind == "none":
         return NONE
-    values = {tag: _value(found, tag) for tag in ("mean", "stddev", "bias_mean",
-                                                   "bias_stddev", "precision")}
+    values = {tag: child_number(found, tag)
+              for tag in ("mean", "stddev", "bias_mean", "bias_stddev", "precision")}
     for tag in ("stddev", "bias_stddev", "precision"):
         if values[tag] < 0:
             raise SdfError(f"<noise><{tag}> must be ≥ 0, got {values[tag]:g}", found.location)
@@ -65,17 +65,3 @@ def noise_of(element: Any, rng: np.random.Generator) -> Noise:
         bias *= 1.0 if rng.random() < 0.5 else -1.0
     return Noise(values["mean"], values["stddev"], bias,
                  values["precision"] if kind == "gaussian_quantized" else 0.0)
-
-
-def _value(element: Any, tag: str) -> float:
-    text = element.value(tag)
-    if text in (None, ""):
-        return 0.0
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value):
-        raise SdfError(f"<noise><{tag}>: expected a number, got '{text}'",
-                       element.find(tag).location)
-    return value

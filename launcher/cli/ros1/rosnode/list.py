@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.bus.names import expand
+from launcher.bus.names import below
 from launcher.cli.ros1.rosnode.lookup import graph_entities, node_names
 
 
@@ -14,8 +14,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    below = expand(args.namespace).rstrip("/") + "/" if args.namespace else "/"
+    prefix = below(args.namespace)
     for name in node_names(graph_entities(), args.all):
-        if name.startswith(below):
+        if name.startswith(prefix):
             print(name)
     return 0

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.bus.names import expand
+from launcher.bus.names import below
 from launcher.cli.ros1.rosservice.lookup import service_servers
 
 
@@ -15,8 +15,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    below = expand(args.namespace).rstrip("/") + "/" if args.namespace else "/"
-    found = sorted({(e.topic, e.node_fqn) for e in service_servers() if e.topic.startswith(below)
+    prefix = below(args.namespace)
+    found = sorted({(e.topic, e.node_fqn) for e in service_servers() if e.topic.startswith(prefix)
                     and "/_action/" not in e.topic})
     for name, node in found if args.nodes else sorted({(n, "") for n, _ in found}):
         print(f"{name} {node}" if args.nodes else name)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from launcher.bus.interfaces import ros1_spelling
-from launcher.bus.names import expand
+from launcher.bus.names import below
 from launcher.cli.ros1.rostopic.lookup import topic_table
 
 
@@ -16,8 +16,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    below = expand(args.namespace).rstrip("/") + "/" if args.namespace else "/"
-    topics = {n: i for n, i in sorted(topic_table().items()) if n.startswith(below)}
+    prefix = below(args.namespace)
+    topics = {n: i for n, i in sorted(topic_table().items()) if n.startswith(prefix)}
     if not args.verbose:
         for name in topics:
             print(name)

@@ -13,11 +13,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic", help="the topic")
     parser.add_argument("type", help="its type, e.g. std_msgs/String")
     parser.add_argument("values", nargs="*", help="the message: YAML, or its fields in order")
-    parser = parser.add_mutually_exclusive_group()
-    parser.add_argument("-1", "--once", action="store_true",
-                        help="publish one message and exit")
-    parser.add_argument("-r", "--rate", type=positive_number, metavar="RATE",
-                        help="publishing rate (Hz)")
+    once = parser.add_mutually_exclusive_group()
+    once.add_argument("-1", "--once", action="store_true",
+                      help="publish one message and exit")
+    once.add_argument("-r", "--rate", type=positive_number, metavar="RATE",
+                      help="publishing rate (Hz)")
     parser.add_argument("-l", "--latch", action="store_true",
                         help="enable latching for -r (-1 and the default latch already)")
 

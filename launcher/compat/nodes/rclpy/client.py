@@ -10,27 +10,18 @@ from __future__ import annotations
 import threading
 from typing import Any
 
+from rclpy.service import ServiceNames
 from rclpy.task import Future
 
 CALL_TIMEOUT = 3600.0  # s, the longest a call waits for its answer unless told
 
 
-class Client:
+class Client(ServiceNames):
     def __init__(self, node: Any, bus: Any, srv_type: Any, srv_name: str,
                  callback_group: Any, qos_profile: Any) -> None:
         self._node, self._bus, self.srv_type = node, bus, srv_type
         self.callback_group, self.qos_profile = callback_group, qos_profile
         self._pending: set[Future] = set()
-
-    @property
-    def service_name(self) -> str:
-        """The service's fully qualified name."""
-        return self._bus.name
-
-    @property
-    def srv_name(self) -> str:
-        """The service's fully qualified name (rclpy's older spelling)."""
-        return self._bus.name
 
     def _check(self, request: Any) -> Any:
         if type(request) is not self.srv_type.Request:

@@ -16,19 +16,20 @@ from launcher.bus import keys
 
 
 @dataclass
-class QoSPublisherMatchedInfo:
+class MatchedCounts:
+    """How many endpoints match, in all and now, and the change since the last event."""
     total_count: int = 0
     total_count_change: int = 0
     current_count: int = 0
     current_count_change: int = 0
 
 
-@dataclass
-class QoSSubscriptionMatchedInfo:
-    total_count: int = 0
-    total_count_change: int = 0
-    current_count: int = 0
-    current_count_change: int = 0
+class QoSPublisherMatchedInfo(MatchedCounts):
+    """A publisher's matched subscriptions."""
+
+
+class QoSSubscriptionMatchedInfo(MatchedCounts):
+    """A subscription's matched publishers."""
 
 
 class MatchWatcher:

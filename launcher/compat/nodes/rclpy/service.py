@@ -5,11 +5,9 @@ from __future__ import annotations
 from typing import Any
 
 
-class Service:
-    def __init__(self, bus: Any, srv_type: Any, srv_name: str, callback: Any,
-                 callback_group: Any, qos_profile: Any) -> None:
-        self._bus, self.srv_type, self.callback = bus, srv_type, callback
-        self.callback_group, self.qos_profile = callback_group, qos_profile
+class ServiceNames:
+    """The names a service and its clients answer to, as rclpy's."""
+    _bus: Any
 
     @property
     def service_name(self) -> str:
@@ -20,6 +18,13 @@ class Service:
     def srv_name(self) -> str:
         """The service's fully qualified name (rclpy's older spelling)."""
         return self._bus.name
+
+
+class Service(ServiceNames):
+    def __init__(self, bus: Any, srv_type: Any, srv_name: str, callback: Any,
+                 callback_group: Any, qos_profile: Any) -> None:
+        self._bus, self.srv_type, self.callback = bus, srv_type, callback
+        self.callback_group, self.qos_profile = callback_group, qos_profile
 
     _introspection: Any = None
 
