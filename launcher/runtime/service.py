@@ -1,5 +1,5 @@
-"""The launch service: visits actions, hands events to their handlers, runs timers, and
-exits.
+"""The launch service: visits actions, answers what they ask of the runtime, and exits.
+Events go to their handlers (handlers.py), timers run on the loop (timers.py).
 
 Actions are visited depth first on the event loop. The processes they start are kept by the
 process table (process_table.py), each supervised by `ManagedProcess`; `Custody` (custody.py)
@@ -25,6 +25,7 @@ from launcher.runtime.composition import Loader, LoadRequest
 from launcher.runtime.context import LaunchContext
 from launcher.runtime.custody import TICK, Custody
 from launcher.runtime.ending import Ending
+from launcher.runtime.handlers import Handlers
 from launcher.runtime.lifecycle import Lifecycle, LifecycleRequests
 from launcher.runtime.logs import RunLog
 from launcher.runtime.loop import EventLoop, Timer
@@ -33,6 +34,7 @@ from launcher.runtime.process import ManagedProcess, ProcessSpec
 from launcher.runtime.process_table import ProcessTable
 from launcher.runtime.start_gate import StartGate
 from launcher.runtime.system import Processes, System
+from launcher.runtime.timers import LaunchTimers
 
 
 class LaunchService:
@@ -71,10 +73,11 @@ class LaunchService:
         self._queue: deque[Any] = deque()
         self._draining = False
         self._given = set(configurations or {})  # the command line's name:=value names
-        self._handlers: list[events.EventHandler] = []
-        self._timers: dict[Timer, bool] = {}  # timer -> cancel on shutdown
+        self.handlers = Handlers(self.context, self._guarded, self.schedule)
+        self.timers = LaunchTimers(self.loop, self._check_idle)
         self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
-                                  self.run_log, self.log, self.emit, lambda: bool(self._handlers),
+                                  self.run_log, self.log, self.emit,
+                                  lambda: bool(self.handlers.registered),
                                   self._check_idle, on_graph and self._graph_hook(on_graph),
                                   lambda done: self.gate.helper_over(done))
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
@@ -239,25 +242,14 @@ class LaunchService:
         self.lifecycles.change_states(node, transitions, where)
 
     def register_handler(self, handler: events.EventHandler) -> None:
-        self._handlers.append(handler)
+        self.handlers.register(handler)
 
     def emit(self, event: events.Event) -> None:
-        for handler in list(self._handlers):
-            if handler.matches(event):
-                actions = self._guarded(lambda h=handler: h.handle(event, self.context), None)
-                if actions:
-                    self.schedule(actions)
+        self.handlers.emit(event)
 
     def add_timer(self, period: float, callback: Callable[[], None],
                   cancel_on_shutdown: bool = True) -> Timer:
-        def fire() -> None:
-            self._timers.pop(timer, None)
-            callback()
-            self._check_idle()
-
-        timer = self.loop.call_later(period, fire)
-        self._timers[timer] = cancel_on_shutdown
-        return timer
+        return self.timers.add(period, callback, cancel_on_shutdown)
 
     @property
     def shutting_down(self) -> bool:
@@ -278,14 +270,11 @@ class LaunchService:
 
     # --- what the ending asks ---------------------------------------------------------------
     def _pending(self) -> bool:
-        return bool(self._queue or self._draining or self._timers or self.loads.out or
+        return bool(self._queue or self._draining or self.timers.live or self.loads.out or
                     self.lifecycles.out or self.gate.waiting)
 
     def _cancel(self) -> None:
-        for timer, cancel in list(self._timers.items()):
-            if cancel:
-                timer.cancel()
-                del self._timers[timer]
+        self.timers.cancel()
         self.loads.cancel()
         self.lifecycles.cancel()
 
