@@ -16,6 +16,8 @@ from launcher.cli.action.lookup import actions_served, listing_text, send_goal_e
 from launcher.cli.message_text import message_from
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
+FOREVER = 365 * 24 * 3600.0
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("name", help="the action (/fibonacci)")
@@ -24,9 +26,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-f", "--feedback", action="store_true", help="print the feedback")
     parser.add_argument("--timeout", type=float, default=10.0,
                         help="seconds to wait for a server (default 10)")
-
-
-FOREVER = 365 * 24 * 3600.0
 
 
 def _yaml(message: object) -> str:

@@ -7,15 +7,14 @@ import argparse
 from launcher.cli.logger.client import NAMES, call_node, logger_name
 from launcher.errors import LaunchError, UsageError
 
+LEVELS = {"unset": 0, "debug": 10, "info": 20, "warn": 30, "warning": 30, "error": 40,
+          "fatal": 50}
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("node", help="the node")
     parser.add_argument("level", help="debug, info, warn, error, fatal or unset (or a number)")
     parser.add_argument("logger", nargs="?", help="the logger (the node's own by default)")
-
-
-LEVELS = {"unset": 0, "debug": 10, "info": 20, "warn": 30, "warning": 30, "error": 40,
-          "fatal": 50}
 
 
 def run(args: argparse.Namespace) -> int:

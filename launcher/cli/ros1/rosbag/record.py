@@ -9,6 +9,8 @@ from pathlib import Path
 
 from launcher.errors import UsageError
 
+_DURATION = re.compile(r"^(\d+(?:\.\d*)?)([smh]?)$")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topics", nargs="*", metavar="TOPIC", help="the topics")
@@ -20,9 +22,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--duration", type=duration, metavar="DURATION",
                         help="record a bag of maximum duration DURATION (30, 30s, 5m, 1h)")
     parser.add_argument("-q", "--quiet", action="store_true", help="suppress console output")
-
-
-_DURATION = re.compile(r"^(\d+(?:\.\d*)?)([smh]?)$")
 
 
 def duration(text: str) -> float:

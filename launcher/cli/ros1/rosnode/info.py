@@ -8,12 +8,11 @@ from launcher.bus import keys
 from launcher.bus.interfaces import ros1_spelling
 from launcher.cli.ros1.rosnode.lookup import graph_entities, known_node
 
+RULE = "-" * 80
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("nodes", nargs="+", metavar="node", help="the nodes")
-
-
-RULE = "-" * 80
 
 
 def run(args: argparse.Namespace) -> int:

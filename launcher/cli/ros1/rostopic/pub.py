@@ -8,6 +8,8 @@ from launcher.bus.names import expand
 from launcher.cli import positive_number
 from launcher.cli.ros1.values import message_values
 
+LATCH_SECONDS = 3.0  # `pub -1` keeps its latched message up this long, as rostopic does
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic", help="the topic")
@@ -20,8 +22,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                       help="publishing rate (Hz)")
     parser.add_argument("-l", "--latch", action="store_true",
                         help="enable latching for -r (-1 and the default latch already)")
-
-LATCH_SECONDS = 3.0  # `pub -1` keeps its latched message up this long, as rostopic does
 
 
 def run(args: argparse.Namespace) -> int:
