@@ -42,11 +42,12 @@ from launcher.description.substitutions import expression as _expression
 from launcher.description.substitutions import files as _files
 from launcher.description.substitutions import packages as _packages
 
+Action = _action.Action  # launch.Action: the base of an action of the user's own
 LaunchDescription = _action.LaunchDescription
 PathJoinSubstitution = _files.PathJoinSubstitution
 
 __all__ = [
-    "AppendEnvironmentVariable", "AnyLaunchDescriptionSource", "Command",
+    "Action", "AppendEnvironmentVariable", "AnyLaunchDescriptionSource", "Command",
     "DeclareLaunchArgument", "EnvironmentVariable", "ExecuteProcess", "FindExecutable",
     "ForEach", "ForLoop", "GroupAction", "IfCondition", "IncludeLaunchDescription",
     "LaunchConfiguration", "LaunchDescription", "LaunchDescriptionSource", "LogInfo",

@@ -16,6 +16,7 @@ if TYPE_CHECKING:
 ROUTER_VARIABLE = "LAUNCHER_ROUTER"
 TIMEOUT_VARIABLE = "LAUNCHER_BUS_TIMEOUT"  # seconds to wait for a router; default 5
 DOMAIN_VARIABLE = "ROS_DOMAIN_ID"
+RUN_VARIABLE = "LAUNCHER_RUN_DIR"  # the run folder: the graph's socket and its peers'
 DEFAULT_TIMEOUT = 5.0
 MAX_DOMAIN = 232  # as ROS 2 allows
 SOCKET_PATH_MAX = 107  # sun_path, less its terminating NUL
@@ -31,8 +32,8 @@ def domain(environ: Mapping[str, str]) -> int | None:
 
 def run_folder(environ: Mapping[str, str]) -> str:
     """LAUNCHER_RUN_DIR, else $XDG_RUNTIME_DIR/launcher, else ~/.launcher/run."""
-    if environ.get("LAUNCHER_RUN_DIR"):
-        return environ["LAUNCHER_RUN_DIR"]
+    if environ.get(RUN_VARIABLE):
+        return environ[RUN_VARIABLE]
     runtime = environ.get("XDG_RUNTIME_DIR")
     if runtime and os.path.isdir(runtime):
         return os.path.join(runtime, "launcher")

@@ -15,6 +15,7 @@ def verbs(package: str, helps: dict[str, str], **modules: str) -> dict[str, Verb
 
 LAUNCHER: dict[str, Verb | Group] = {
     "launch": Verb("launcher.cli.launch_command", "run a launch file"),
+    "test": Verb("launcher.cli.test_command", "run a launch test (as launch_test does)"),
     "pkg": Group("packages: list, find, create", verbs("launcher.cli.pkg", {
         "list": "every package, with where it is",
         "prefix": "the install prefix of a package",

@@ -106,23 +106,32 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
             raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
         root.append(TimerAction(period=args.duration, actions=[Shutdown(
             reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
+    service = launch_service(configurations, index, debug=args.debug,
+                             noninteractive=args.noninteractive,
+                             launch_prefix=args.launch_prefix)
+    return service.run(LaunchDescription(root))
+
+
+def launch_service(configurations: dict[str, str], index: PackageIndex, *, debug: bool = False,
+                   noninteractive: bool = False, launch_prefix: str = "") -> LaunchService:
+    """A launch service on the user's graph, with the workspace's hooks applied (what
+    `launcher launch` and the launch tests run descriptions on)."""
     custody = Custody()
     custody.begin()  # before the hooks run: whatever they start is the launch's too
-    environment = children_environment(index, args.debug)
+    environment = children_environment(index, debug)
     discovery.explicit_endpoints(environment)  # a bad LAUNCHER_ROUTER, ROS_DOMAIN_ID or
     discovery.socket_path(environment)  # run folder is said now, not at the first node
-    service = LaunchService(custody=custody,
-        printer=Printer(color=False) if args.noninteractive else None,
-        log_root=log_root(), environment=environment,
-        configurations=configurations, launch_prefix=args.launch_prefix, debug=args.debug,
-        load_description=load_file, parse_text=parse_file_text, packages=index,
-        loader=BusLoader(), lifecycle=BusLifecycle(environment),
+    return LaunchService(
+        custody=custody, printer=Printer(color=False) if noninteractive else None,
+        log_root=log_root(), environment=environment, configurations=configurations,
+        launch_prefix=launch_prefix, debug=debug, load_description=load_file,
+        parse_text=parse_file_text, packages=index, loader=BusLoader(),
+        lifecycle=BusLifecycle(environment),
         # the graph's router, unless one runs, once the first process that may join the graph
         # is spawned (so it starts while that one imports); a launch of system programs needs
         # none, and a node that opens its session sooner starts it itself
         on_graph=lambda: discovery.start(environment, wait=False),
     )
-    return service.run(LaunchDescription(root))
 
 
 def children_environment(index: PackageIndex, debug: bool) -> dict[str, str]:

@@ -33,6 +33,7 @@ VERBS = {
     "run": "Run a package specific executable",
     "security": "Various security related sub-commands",
     "service": "Various service related sub-commands",
+    "test": "Run a ROS2 launch test",
     "topic": "Various topic related sub-commands",
     "wtf": "Use `wtf` as alias to `doctor`",
 }

@@ -13,32 +13,61 @@ import importlib.util
 import itertools
 import sys
 import traceback
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any, TypeVar
 
 from launcher import compat
 from launcher.description.action import Action, LaunchDescription
 from launcher.errors import Location, ParseError
 
 _counter = itertools.count()
+_INSTEAD = {"launch file": "; a launch file returns a LaunchDescription instead"}
+T = TypeVar("T")
 
 
 def load_python(path: Path) -> LaunchDescription:
     compat.enable_in_process()  # ROS 2 files import launch, launch_ros, ament_index_python
-    name = f"_launcher_launch_file_{next(_counter)}"
+    module = load_module(path, f"_launcher_launch_file_{next(_counter)}")
+    generate = getattr(module, "generate_launch_description", None)
+    if generate is None:
+        raise ParseError("a Python launch file must define generate_launch_description()",
+                         Location(str(path)))
+    result = run_user_code(path, generate)
+    where = _definition(generate, path)
+    if not isinstance(result, LaunchDescription):
+        raise ParseError(f"generate_launch_description() returned {type(result).__name__}, "
+                         "expected a LaunchDescription", where)
+    _check_entities(result, where)
+    result.file = path
+    return result
+
+
+def load_module(path: Path, name: str, noun: str = "launch file") -> Any:
+    """The user's Python file run as a module named `name` (kept out of sys.modules after,
+    and no __pycache__ left in their folder); its failures said at its line."""
     spec = importlib.util.spec_from_file_location(name, path)
     if spec is None or spec.loader is None:
         raise ParseError("cannot load this Python file", Location(str(path)))
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
     writes_bytecode = sys.dont_write_bytecode
-    sys.dont_write_bytecode = True  # no __pycache__ left in the user's (or a package's) folder
+    sys.dont_write_bytecode = True
     try:
-        spec.loader.exec_module(module)
-        generate = getattr(module, "generate_launch_description", None)
-        if generate is None:
-            raise ParseError("a Python launch file must define generate_launch_description()",
-                             Location(str(path)))
-        result = generate()
+        run_user_code(path, lambda: spec.loader.exec_module(module),  # type: ignore[union-attr]
+                      noun)
+    finally:
+        sys.modules.pop(name, None)
+        sys.dont_write_bytecode = writes_bytecode
+    return module
+
+
+def run_user_code(path: Path, work: Callable[[], T], noun: str = "launch file") -> T:
+    """`work()`, code of the user's file at `path`: an exception in it is said at its line,
+    with the traceback trimmed to the file's frames; so are sys.exit() and a
+    KeyboardInterrupt the code raises itself (no Ctrl-C was pressed)."""
+    try:
+        return work()
     except ParseError:
         raise
     except SyntaxError as exc:
@@ -47,26 +76,15 @@ def load_python(path: Path) -> LaunchDescription:
     except KeyboardInterrupt as exc:
         if hasattr(exc, "signum"):  # Ctrl-C or SIGTERM, as launcher's handlers raise them
             raise
-        raise _user_error(exc, path, "the launch file raised KeyboardInterrupt itself (no "
-                                     "Ctrl-C was pressed); a launch file returns a "
-                                     "LaunchDescription instead") from None
-    except SystemExit as exc:  # sys.exit() in a launch file: an error, not the launcher's end
-        raise _user_error(exc, path, f"the launch file called sys.exit({exc.code!r}); a launch "
-                                     f"file returns a LaunchDescription instead") from None
+        raise _user_error(exc, path, f"the {noun} raised KeyboardInterrupt itself (no Ctrl-C "
+                                     f"was pressed){_INSTEAD.get(noun, '')}") from None
+    except SystemExit as exc:  # sys.exit() in the file: an error, not the launcher's end
+        raise _user_error(exc, path, f"the {noun} called sys.exit({exc.code!r})"
+                                     f"{_INSTEAD.get(noun, '')}") from None
     except RecursionError as exc:
-        raise _user_error(exc, path, "the launch file recursed too deeply") from None
+        raise _user_error(exc, path, f"the {noun} recursed too deeply") from None
     except Exception as exc:  # the user's code failed: show where, in their file
-        raise _user_error(exc, path) from None
-    finally:
-        sys.modules.pop(name, None)
-        sys.dont_write_bytecode = writes_bytecode
-    where = _definition(generate, path)
-    if not isinstance(result, LaunchDescription):
-        raise ParseError(f"generate_launch_description() returned {type(result).__name__}, "
-                         "expected a LaunchDescription", where)
-    _check_entities(result, where)
-    result.file = path
-    return result
+        raise _user_error(exc, path, noun=noun) from None
 
 
 def _definition(function: object, path: Path) -> Location:
@@ -89,7 +107,8 @@ def _check_entities(description: LaunchDescription, where: Location) -> None:
                                  f"actions (launch.actions…, launch_ros.actions…)", where)
 
 
-def _user_error(exc: BaseException, path: Path, message: str | None = None) -> ParseError:
+def _user_error(exc: BaseException, path: Path, message: str | None = None,
+                noun: str = "launch file") -> ParseError:
     frames = traceback.extract_tb(exc.__traceback__)
     mine = [f for f in frames if Path(f.filename) == path]
     last = mine[-1] if mine else None
@@ -98,6 +117,6 @@ def _user_error(exc: BaseException, path: Path, message: str | None = None) -> P
         return ParseError(message, where)
     trace = "".join(traceback.format_list(mine)).rstrip()
     text = f"{type(exc).__name__}: {exc}"
-    return ParseError(f"the launch file raised {text}" + (f"\n{trace}" if trace else ""), where)
+    return ParseError(f"the {noun} raised {text}" + (f"\n{trace}" if trace else ""), where)
 
 

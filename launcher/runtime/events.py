@@ -10,6 +10,8 @@ class ProcessStarted(NamedTuple):
     origin: Any  # the action that started the process
     label: str
     pid: int
+    argv: tuple[str, ...] = ()  # its command line, substitutions done
+    cwd: str | None = None
 
 
 class ProcessExited(NamedTuple):

@@ -97,7 +97,9 @@ class ProcessTable:
 
     def _on_started(self, process: ManagedProcess) -> None:
         self.log("INFO", process.label, f"process started with pid [{process.pid}]")
-        self.emit(events.ProcessStarted(process.spec.origin, process.label, process.pid or 0))
+        spec = process.spec
+        self.emit(events.ProcessStarted(spec.origin, process.label, process.pid or 0,
+                                        tuple(spec.argv), spec.cwd))
 
     def _on_exited(self, process: ManagedProcess, _respawn_pending: bool) -> None:
         if process.spec.helper_done_line and not process.helper_done:

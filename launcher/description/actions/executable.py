@@ -15,7 +15,7 @@ from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError, did_you_mean
-from launcher.records import dataclass
+from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext
 from launcher.runtime.process import ProcessSpec
 
@@ -65,6 +65,8 @@ class ExecuteProcess(Action):
     on_start: Any = attr(Kind.ACTIONS, doc="Actions to run each time the process starts.")
     additional_env: list[EnvEntry] = attr(Kind.ENTRIES, name="env", entry=EnvEntry,
                                           doc="Environment variables for this process.")
+    # the Python API's env=: the whole environment instead of the launch's (as ROS 2's)
+    env: dict[Any, Any] | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -110,7 +112,9 @@ class ExecuteProcess(Action):
         return [*prefix, *self._words(context, self.cmd), *self._words(context, self.args)]
 
     def environment(self, context: LaunchContext) -> dict[str, str]:
-        env = dict(context.environment)
+        env = dict(context.environment) if self.env is None else {
+            perform_text(context, to_text(k)): perform_text(context, to_text(v))
+            for k, v in self.env.items()}
         for entry in self.additional_env:
             if entry_applies(context, entry):
                 env[perform_text(context, entry.name)] = perform_text(context, entry.value)

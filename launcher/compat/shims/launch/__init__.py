@@ -1,10 +1,10 @@
 """ROS 2's `launch` package, answered by launcher.api (see launcher.compat)."""
 
 from launch import actions, conditions, event_handlers, launch_description_sources, substitutions
-from launcher.api import LaunchDescription, Substitution
+from launcher.api import Action, LaunchDescription, Substitution
 from launcher.runtime.context import LaunchContext
 
 SomeSubstitutionsType = object
-__all__ = ["LaunchContext", "LaunchDescription", "Substitution", "SomeSubstitutionsType",
+__all__ = ["Action", "LaunchContext", "LaunchDescription", "Substitution", "SomeSubstitutionsType",
            "actions", "conditions", "event_handlers", "launch_description_sources",
            "substitutions"]

@@ -1,0 +1,40 @@
+"""A launch test's results as JUnit XML (what `--junit-xml` writes and colcon reads)."""
+
+from __future__ import annotations
+
+import unittest
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+
+def write(path: Path, name: str, results: list[unittest.TestResult]) -> None:
+    """One <testsuite> named `name` holding every test of `results`."""
+    cases: list[ET.Element] = []
+    failures = errors = skipped = 0
+    for result in results:
+        outcomes = ([(case, "failure", text) for case, text in result.failures] +
+                    [(case, "error", text) for case, text in result.errors] +
+                    [(case, "skipped", text) for case, text in result.skipped])
+        for case, kind, text in outcomes:
+            element = _case(name, case)
+            ET.SubElement(element, kind, message=text.strip().splitlines()[-1] if text
+                          else kind).text = text
+            cases.append(element)
+        failures += len(result.failures)
+        errors += len(result.errors)
+        skipped += len(result.skipped)
+        for case in getattr(result, "passed", []):
+            cases.append(_case(name, case))
+    total = sum(result.testsRun for result in results)
+    suite = ET.Element("testsuite", name=name, tests=str(total), failures=str(failures),
+                       errors=str(errors), skipped=str(skipped))
+    suite.extend(cases)
+    root = ET.Element("testsuites")
+    root.append(suite)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    ET.ElementTree(root).write(path, encoding="utf-8", xml_declaration=True)
+
+
+def _case(suite: str, case: unittest.TestCase) -> ET.Element:
+    return ET.Element("testcase", classname=f"{suite}.{type(case).__name__}",
+                      name=getattr(case, "_testMethodName", str(case)))

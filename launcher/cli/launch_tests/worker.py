@@ -1,0 +1,149 @@
+"""One run of a launch test: the description launched in this thread (the launch service
+handles the signals), the active tests in another once ReadyToTest is visited, the launch
+shut down when they are done, then the post-shutdown tests."""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+import unittest
+from typing import Any
+
+from launcher.api import (
+    LaunchDescription,
+    OnProcessExit,
+    OnProcessIO,
+    OnProcessStart,
+    RegisterEventHandler,
+)
+from launcher.runtime.service import LaunchService
+
+FOREVER = 365 * 24 * 3600.0  # s: the timer that keeps a keep_alive launch up
+
+
+class Result(unittest.TextTestResult):
+    """unittest's result, with the tests that passed kept too (for JUnit XML)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.passed: list[unittest.TestCase] = []
+
+    def addSuccess(self, test: unittest.TestCase) -> None:  # noqa: N802 - unittest's name
+        super().addSuccess(test)
+        self.passed.append(test)
+
+
+def run_tests(tests: unittest.TestSuite, stream: Any) -> unittest.TestResult:
+    return unittest.TextTestRunner(stream=stream, verbosity=2, resultclass=Result).run(tests)
+
+
+class ServiceProxy:
+    """The `launch_service` active tests are given: calls from their thread, run on the
+    launch's loop."""
+
+    def __init__(self, service: LaunchService) -> None:
+        self.service = service
+        service.loop.open_posting()
+
+    def start_action(self, action: Any) -> None:
+        """Visit `action` (an ExecuteProcess, a description) in the running launch."""
+        self.service.loop.call_soon_threadsafe(self.service.schedule, [action])
+
+    def stop_action(self, action: Any) -> None:
+        """Stop the processes `action` started."""
+        def stop() -> None:
+            for process in self.service.processes:
+                if process.spec.origin is action and process.alive:
+                    process.stop()
+        self.service.loop.call_soon_threadsafe(stop)
+
+    def shutdown(self) -> None:
+        self.service.loop.call_soon_threadsafe(self.service.shutdown, "the tests are done")
+
+
+class Worker:
+    def __init__(self, run: Any, service: LaunchService, arguments: dict[str, str]) -> None:
+        from launch_testing import ActiveIoHandler, ActiveProcInfoHandler
+
+        self.run, self.service, self.arguments = run, service, arguments
+        self.proc_info, self.proc_output = ActiveProcInfoHandler(), ActiveIoHandler()
+        self.ready, self.done = threading.Event(), threading.Event()
+        self.active_result: unittest.TestResult | None = None
+        self.note = ""  # why the active tests did not run, or did not finish
+
+    def execute(self, stream: Any) -> list[unittest.TestResult]:
+        """The results of the active tests and of the post-shutdown tests."""
+        from launch_testing.loader import bind
+
+        description, context = self.run.description(self.ready.set)
+        proxy = ServiceProxy(self.service)
+        shared = {**context, **self.run.param_args, "test_args": dict(self.arguments)}
+        bind(self.run.active, {**shared, "proc_info": self.proc_info,
+                               "proc_output": self.proc_output, "launch_service": proxy})
+        bind(self.run.post_shutdown, {**shared, "proc_info": self.proc_info.snapshot(),
+                                      "proc_output": self.proc_output.snapshot()})
+        if self.run.markers.get("keep_alive"):
+            self.service.add_timer(FOREVER, lambda: None)
+        tests = threading.Thread(target=self._active, args=(proxy, stream),
+                                 name="launch-test-active", daemon=True)
+        tests.start()
+        self.service.run(LaunchDescription([*self._recorders(), description]))
+        if not self.done.is_set():
+            self.note = self.note or "Processes under test stopped before tests completed"
+            print(f"FAIL: {self.run}: {self.note}", file=stream)
+            return [failed(self.run, self.note)]
+        post = run_tests(self.run.post_shutdown, stream)
+        return [result for result in (self.active_result, post) if result is not None]
+
+    def _active(self, proxy: ServiceProxy, stream: Any) -> None:
+        if not self.ready.wait(self.run.timeout):
+            self.note = (f"Timed out waiting for processes to start up: ReadyToTest was not "
+                         f"reached in {self.run.timeout:g} s")
+            proxy.shutdown()
+            return
+        try:
+            self.active_result = run_tests(self.run.active, stream)
+        finally:
+            self.done.set()
+            proxy.shutdown()
+
+    def _recorders(self) -> list[Any]:
+        """Event handlers that record each process's start, output and exit for the tests."""
+        from launch_testing.records import ProcessInfo, ProcessOutput
+
+        def started(event: Any, _context: Any) -> None:
+            details = {"name": event.label, "cmd": list(event.argv), "cwd": event.cwd,
+                       "pid": event.pid}
+            with contextlib.suppress(AttributeError):  # (an origin that keeps no attributes)
+                event.origin.process_details = details
+            self.proc_output.track(event.origin)
+            self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.argv),
+                                              event.pid))
+
+        def exited(event: Any, _context: Any) -> None:
+            cmd = (getattr(event.origin, "process_details", None) or {}).get("cmd", [])
+            self.proc_info.append(ProcessInfo(event.origin, event.label, cmd, event.pid,
+                                              event.returncode))
+
+        def printed(event: Any, _context: Any) -> None:
+            self.proc_output.append(ProcessOutput(event.origin, event.label,
+                                                  (event.text + "\n").encode(), event.stream))
+
+        return [RegisterEventHandler(OnProcessStart(on_start=started)),
+                RegisterEventHandler(OnProcessExit(on_exit=exited)),
+                RegisterEventHandler(OnProcessIO(on_stdout=printed, on_stderr=printed))]
+
+
+def failed(run: Any, reason: str) -> unittest.TestResult:
+    """A result with one failure: the run itself, for `reason`."""
+    result = unittest.TestResult()
+
+    class LaunchFailed(unittest.TestCase):
+        def runTest(self) -> None:  # noqa: N802 - unittest's name
+            self.fail(reason)
+
+    case = LaunchFailed()
+    case._testMethodName = "runTest"
+    result.addFailure(case, (AssertionError, AssertionError(reason), None))
+    result.testsRun = 1
+    return result

@@ -1,0 +1,94 @@
+"""`launcher test FILE [name:=value …]`: a launch test, as `launch_test` runs it (the shell's
+`launch_test` and `ros2 test` are this command). Each run of the file is launched on a graph of
+its own (a private run folder: no ROS_DOMAIN_ID to pick), and everything it started is gone
+when it ends. Exit status 0 when every test passed, 1 otherwise."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+from typing import Any
+
+from launcher.bus.places import RUN_VARIABLE
+from launcher.errors import LaunchError, UsageError
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.description = (
+        "Run a launch test (launch_testing's generate_test_description, active and "
+        "post-shutdown tests). Exit status: 0 when every test passed, 1 otherwise.")
+    parser.add_argument("launch_test_file", metavar="FILE", help="the launch test")
+    parser.add_argument("launch_arguments", nargs="*", metavar="name:=value",
+                        help="launch arguments (the last of the same name wins)")
+    parser.add_argument("--package-name", default=None,
+                        help="the package the test is in (names its results)")
+    parser.add_argument("-v", "--verbose", action="store_true",
+                        help="debug messages, and tracebacks with errors")
+    parser.add_argument("-s", "--show-args", "--show-arguments", action="store_true",
+                        help="list the launch arguments the test takes, and exit")
+    parser.add_argument("--junit-xml", dest="xmlpath", default=None, metavar="PATH",
+                        help="also write the results as JUnit XML here")
+
+
+def run(args: argparse.Namespace) -> int:
+    from launcher import compat
+    from launcher.cli.launch_command import launch_service, parse_assignments
+    from launcher.cli.workspace import load_index
+    from launcher.frontend.python_loader import load_module
+
+    path = Path(args.launch_test_file)
+    if not path.is_file():
+        raise UsageError(f"Test file '{path}' does not exist")
+    path = path.resolve()
+    configurations = parse_assignments(args.launch_arguments)
+    compat.enable_in_process()  # test files import launch, launch_testing, rclpy, …
+    from launch_testing.loader import TestFileError, load_runs
+
+    name = args.package_name or path.stem
+    module = load_module(path, name, "test file")
+    try:
+        runs = load_runs(module, f"{name}.{path.stem}.launch_tests")
+        if args.show_args:
+            from launcher.cli import views
+
+            description = runs[0].description(lambda: None)[0]
+            description.file = path
+            print(views.show_arguments(description, configurations, load_index()), end="")
+            return 0
+    except TestFileError as exc:
+        raise LaunchError(str(exc)) from None
+    results = []
+    for test_run in runs:
+        if len(runs) > 1:
+            print(f"\nStarting test run {test_run}", file=sys.stderr)
+        try:
+            results += _one_run(test_run, configurations, args, launch_service, load_index)
+        except TestFileError as exc:
+            raise LaunchError(str(exc)) from None
+    if args.xmlpath:
+        from launcher.cli.launch_tests.junit import write
+
+        write(Path(args.xmlpath), f"{name}.{path.stem}", results)
+    return 0 if all(result.wasSuccessful() for result in results) else 1
+
+
+def _one_run(test_run: Any, configurations: dict[str, str], args: argparse.Namespace,
+             launch_service: Any, load_index: Any) -> list[unittest.TestResult]:
+    """One launch of the file on a graph of its own (its run folder private and temporary)."""
+    from launcher.cli.launch_tests.worker import Worker
+
+    previous = os.environ.get(RUN_VARIABLE)
+    with tempfile.TemporaryDirectory(prefix="launch-test-") as folder:
+        os.environ[RUN_VARIABLE] = folder
+        try:
+            service = launch_service(configurations, load_index(), debug=args.verbose)
+            return Worker(test_run, service, configurations).execute(sys.stderr)
+        finally:
+            if previous is None:
+                os.environ.pop(RUN_VARIABLE, None)
+            else:
+                os.environ[RUN_VARIABLE] = previous

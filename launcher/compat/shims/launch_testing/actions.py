@@ -1,0 +1,28 @@
+"""launch_testing.actions: ReadyToTest, the action that says the tests may start."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from launcher.api import Action
+
+
+class ReadyToTest(Action):
+    """Visited, it tells the test runner that the processes before it have started and the
+    active tests may begin."""
+
+    def __init__(self, **kwargs: Any) -> None:
+        self.condition, self.where = kwargs.get("condition"), kwargs.get("where")
+        self.callbacks: list[Callable[[], None]] = []
+
+    def add_callback(self, callback: Callable[[], None]) -> None:
+        self.callbacks.append(callback)
+
+    def execute(self, context: Any) -> Sequence[Action] | None:
+        for callback in self.callbacks:
+            callback()
+        return None
+
+
+__all__ = ["ReadyToTest"]

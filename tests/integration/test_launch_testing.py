@@ -1,0 +1,182 @@
+"""launch_testing's own example tests (../shared/external/launch_testing), run unchanged as its
+README runs them, through `launcher test` (the shell's `launch_test`, `ros2 test`, `python -m
+launch_testing.launch_test`): each gives the result its authors intended, on real processes."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import shared
+
+EXAMPLES = ("launch_testing", "launch_testing", "test", "launch_testing", "examples")
+
+
+@pytest.fixture
+def examples(ws) -> Path:
+    """The examples, and an install prefix of `launch_testing` whose lib/launch_testing holds
+    the example processes they start (links to the shared files, as its install has them)."""
+    processes = shared("external", "launch_testing", "launch_testing", "example_processes")
+    prefix = ws.root / "prefix"
+    (prefix / "share" / "ament_index" / "resource_index" / "packages").mkdir(parents=True)
+    (prefix / "share" / "ament_index" / "resource_index" / "packages" / "launch_testing").touch()
+    (prefix / "lib" / "launch_testing").mkdir(parents=True)
+    for script in processes.glob("*.py"):
+        (prefix / "lib" / "launch_testing" / script.name).symlink_to(script)
+    ws.env["AMENT_PREFIX_PATH"] = str(prefix)
+    return shared("external", *EXAMPLES)
+
+
+def run_test(ws, path: Path, *words: str) -> subprocess.CompletedProcess:
+    return ws.run("test", str(path), *words, timeout=120)
+
+
+PASSING = ["hello_world_launch_test.py", "good_proc_launch_test.py",
+           "terminating_proc_launch_test.py", "context_launch_test.py",
+           "parameters_launch_test.py", "ready_action_test.py"]
+
+
+@pytest.mark.parametrize("name", PASSING)
+def test_an_example_passes(ws, examples, name):
+    done = run_test(ws, examples / name)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "FAILED" not in done.stderr and "\nOK" in done.stderr
+
+
+def test_the_ready_to_test_timeout_example_waits_past_the_default_fifteen_seconds(ws, examples):
+    done = run_test(ws, examples / "ready_to_test_action_timeout_test.py")
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_the_args_example_passes_with_its_argument(ws, examples):
+    done = run_test(ws, examples / "args_launch_test.py", "dut_arg:=hey")
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_the_args_example_fails_without_its_argument_as_its_readme_says(ws, examples):
+    done = run_test(ws, examples / "args_launch_test.py")
+    assert done.returncode == 1
+    assert "FAIL: test_ran_with_arg" in done.stderr and \
+        "Try running: launch_test test_with_args.test.py dut_arg:=arg" in done.stderr
+
+
+def test_show_args_lists_the_tests_launch_arguments(ws, examples):
+    done = run_test(ws, examples / "args_launch_test.py", "--show-args")
+    assert done.returncode == 0, done.stderr
+    assert "'dut_arg':\n        Passed to the terminating process\n        (default: 'default')" \
+        in done.stdout
+
+
+def test_a_parametrized_description_runs_once_per_value(ws, examples):
+    done = run_test(ws, examples / "parameters_launch_test.py")
+    assert done.stderr.count("Starting test run") == 3
+    assert "test_process_outputs_expected_value[thing=Off]" in done.stderr
+
+
+def test_junit_xml_holds_every_test_and_its_outcome(ws, examples):
+    report = ws.root / "results" / "good_proc.xml"
+    done = run_test(ws, examples / "good_proc_launch_test.py", "--junit-xml", str(report))
+    assert done.returncode == 0, done.stderr
+    suite = ET.parse(report).getroot().find("testsuite")
+    names = {case.get("name") for case in suite.iter("testcase")}
+    assert suite.get("tests") == "4" and suite.get("failures") == "0"
+    assert {"test_count_to_four", "test_exit_code", "test_full_output",
+            "test_out_of_order"} == names
+
+
+def test_launch_test_on_the_shells_path_is_launchers(ws, examples):
+    from launcher import compat
+
+    ws.env["PATH"] = f"{Path(sys.executable).parent}:{ws.env['PATH']}:{compat.COMMANDS}"
+    done = subprocess.run(["launch_test", str(examples / "hello_world_launch_test.py")],
+                          cwd=ws.root, env=ws.env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_ros2_test_runs_a_launch_test(ws, examples):
+    done = ws.run("ros2", "test", str(examples / "hello_world_launch_test.py"), timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_python_m_launch_testing_launch_test_runs_it(ws, examples):
+    from launcher import compat
+
+    ws.env["PYTHONPATH"] = os.pathsep.join(filter(None, [ws.env.get("PYTHONPATH"),
+                                                         compat.SHIMS]))
+    done = subprocess.run([sys.executable, "-m", "launch_testing.launch_test",
+                           str(examples / "hello_world_launch_test.py")], cwd=ws.root,
+                          env=ws.env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+# --- bad inputs ---------------------------------------------------------------------------------
+def test_a_file_without_generate_test_description_is_said_by_name(ws):
+    path = ws.write("empty_test.py", "import unittest\n")
+    done = run_test(ws, path)
+    assert done.returncode == 1
+    assert done.stderr.strip() == (f"error: {path}: a launch test file must define "
+                                   "generate_test_description()")
+
+
+def test_a_description_without_ready_to_test_fails_with_the_reason(ws):
+    path = ws.write("no_ready_test.py", """
+        import launch
+
+        def generate_test_description():
+            return launch.LaunchDescription([])
+        """)
+    done = run_test(ws, path)
+    assert done.returncode == 1
+    assert done.stderr.strip() == (f"error: {path}:3: generate_test_description functions must "
+                                   "return a LaunchDescription containing a ReadyToTest action")
+
+
+def test_a_ready_to_test_that_never_comes_fails_after_its_timeout(ws):
+    path = ws.write("late_test.py", """
+        import unittest
+        import launch
+        import launch_testing
+        import launch_testing.actions
+        import launch_testing.util
+
+        @launch_testing.ready_to_test_action_timeout(1)
+        def generate_test_description():
+            return launch.LaunchDescription([
+                launch_testing.util.KeepAliveProc(),
+                launch.actions.TimerAction(period=30.0,
+                                           actions=[launch_testing.actions.ReadyToTest()]),
+            ])
+
+        class TestNever(unittest.TestCase):
+            def test_never_runs(self):
+                pass
+        """)
+    done = run_test(ws, path)
+    assert done.returncode == 1
+    assert "Timed out waiting for processes to start up: ReadyToTest was not reached in 1 s" \
+        in done.stderr
+
+
+def test_a_test_file_that_fails_to_import_is_said_at_its_line(ws):
+    path = ws.write("broken_test.py", "import launch\nraise ValueError('no')\n")
+    done = run_test(ws, path)
+    assert done.returncode == 1
+    assert done.stderr.startswith(f"error: {path}:2: the test file raised ValueError: no")
+
+
+def test_a_missing_test_file_is_said(ws):
+    done = run_test(ws, ws.root / "nope_test.py")
+    assert done.returncode == 2 and "does not exist" in done.stderr
+
+
+def test_the_launch_is_not_on_the_users_graph(ws, examples):
+    """Its run folder is its own: nothing of the test's is in the user's run folder."""
+    run = ws.root / "run"
+    done = run_test(ws, examples / "hello_world_launch_test.py")
+    assert done.returncode == 0, done.stderr
+    assert not run.exists() or not any(run.iterdir())
