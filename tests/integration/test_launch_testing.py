@@ -180,3 +180,39 @@ def test_the_launch_is_not_on_the_users_graph(ws, examples):
     done = run_test(ws, examples / "hello_world_launch_test.py")
     assert done.returncode == 0, done.stderr
     assert not run.exists() or not any(run.iterdir())
+
+
+# --- through pytest (launch_testing's pytest plugin: how colcon test runs them) ---------------
+def pytest_run(ws, *words: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", *words],
+                          cwd=ws.root, env=ws.env, capture_output=True, text=True, timeout=300)
+
+
+def test_pytest_runs_a_launch_test_file_as_one_passing_item(ws, examples):
+    done = pytest_run(ws, str(examples / "good_proc_launch_test.py"))
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "1 passed" in done.stdout
+
+
+def test_pytest_fails_a_launch_test_with_the_failing_tests_reports(ws, examples):
+    done = pytest_run(ws, str(examples / "args_launch_test.py"))
+    assert done.returncode == 1
+    assert "FAIL: args_launch_test.args_launch_test.TestProcessOutput.test_ran_with_arg" \
+        in done.stdout
+
+
+def test_pytest_gives_launch_args_to_a_launch_test(ws, examples):
+    done = pytest_run(ws, str(examples / "args_launch_test.py"), "--launch-args", "dut_arg:=hey")
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_pytest_leaves_a_file_without_the_launch_test_mark_to_itself(ws):
+    path = ws.write("test_plain.py", """
+        def generate_test_description():
+            return None
+
+        def test_plain():
+            assert generate_test_description() is None
+        """)
+    done = pytest_run(ws, str(path))
+    assert done.returncode == 0 and "1 passed" in done.stdout, done.stdout
