@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-import sys
 from typing import Any
 
 from launcher.api import ExecuteProcess
 
 NO_CMD_ARGS = object()  # cmd_args that matches a process started with no arguments
-# a process that waits for the launch to stop it, and ends cleanly (0) on its SIGINT
-_KEEP_ALIVE = ("import time\ntry:\n    while True:\n        time.sleep(3600)\n"
-               "except KeyboardInterrupt:\n    pass\n")
+# a process that waits for the launch to stop it, and ends cleanly (0) when it does: a shell,
+# whose trap is set within a millisecond of its start (an interpreter's handler comes tens of
+# milliseconds later, and a test that ends sooner would see it die of the signal)
+_KEEP_ALIVE = "trap 'exit 0' INT TERM; while :; do sleep 1; done"
 
 
 class NoMatchingProcessException(Exception):
@@ -20,7 +20,7 @@ class NoMatchingProcessException(Exception):
 def KeepAliveProc() -> Any:  # noqa: N802 - launch_testing's name
     """A process that does nothing until the launch ends: it keeps a launch whose processes
     under test end by themselves running while the active tests run."""
-    return ExecuteProcess(cmd=[sys.executable, "-c", _KEEP_ALIVE])
+    return ExecuteProcess(cmd=["/bin/sh", "-c", _KEEP_ALIVE])
 
 
 def _details(process: Any) -> dict[str, Any]:
