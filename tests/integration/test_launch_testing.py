@@ -216,3 +216,72 @@ def test_pytest_leaves_a_file_without_the_launch_test_mark_to_itself(ws):
         """)
     done = pytest_run(ws, str(path))
     assert done.returncode == 0 and "1 passed" in done.stdout, done.stdout
+
+
+# --- launch_testing_ros and controller_manager.test_utils --------------------------------------
+TALKER = """
+import rclpy
+from std_msgs.msg import String
+
+rclpy.init()
+node = rclpy.create_node("talker")
+publisher = node.create_publisher(String, "chatter", 10)
+node.create_timer(0.1, lambda: publisher.publish(String(data="hello")))
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""
+
+ROS_TEST = """
+import sys
+import unittest
+
+import launch
+import launch_testing
+import launch_testing.actions
+import pytest
+import rclpy
+from controller_manager.test_utils import check_node_running
+from launch_testing_ros import WaitForTopics
+from std_msgs.msg import String
+
+
+@pytest.mark.launch_test
+def generate_test_description():
+    return launch.LaunchDescription([
+        launch.actions.ExecuteProcess(cmd=[sys.executable, "{talker}"]),
+        launch_testing.actions.ReadyToTest(),
+    ])
+
+
+class TestTalker(unittest.TestCase):
+    def test_chatter_carries_hello(self):
+        with WaitForTopics([("chatter", String)], timeout={timeout}) as waited:
+            self.assertEqual(waited.received_messages("chatter")[0].data, "hello")
+
+    def test_the_talker_is_on_the_graph(self):
+        rclpy.init()
+        node = rclpy.create_node("checker")
+        try:
+            check_node_running(node, "talker", timeout=10.0)
+        finally:
+            node.destroy_node()
+            rclpy.shutdown()
+"""
+
+
+def test_wait_for_topics_hears_a_nodes_messages_on_the_tests_graph(ws):
+    talker = ws.write("talker.py", TALKER)
+    path = ws.write("ros_launch_test.py", ROS_TEST.format(talker=talker, timeout=10.0))
+    done = run_test(ws, path)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_wait_for_topics_fails_when_a_topic_stays_silent(ws):
+    talker = ws.write("talker.py", "import time\ntime.sleep(60)\n")
+    path = ws.write("ros_launch_test.py", ROS_TEST.format(talker=talker, timeout=1.0))
+    done = run_test(ws, path)
+    assert done.returncode == 1
+    assert "RuntimeError: ('Did not receive messages on these topics: ', {'chatter'})" \
+        in done.stderr

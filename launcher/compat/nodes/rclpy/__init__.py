@@ -21,9 +21,10 @@ import signal
 import threading
 from typing import Any
 
+from rclpy.context import Context  # noqa: F401 - rclpy.Context, as rclpy offers it
 from rclpy.utilities import get_default_context, ok, shutdown, try_shutdown  # noqa: F401
 
-__all__ = ["create_node", "get_global_executor", "init", "ok", "shutdown", "spin",
+__all__ = ["Context", "create_node", "get_global_executor", "init", "ok", "shutdown", "spin",
            "spin_once", "spin_until_future_complete", "try_shutdown"]
 
 _global_executor: Any = None
