@@ -285,3 +285,56 @@ def test_wait_for_topics_fails_when_a_topic_stays_silent(ws):
     assert done.returncode == 1
     assert "RuntimeError: ('Did not receive messages on these topics: ', {'chatter'})" \
         in done.stderr
+
+
+CONTROL_TEST = """
+import os
+import unittest
+
+import launch
+import launch_testing.actions
+import pytest
+import rclpy
+from ament_index_python.packages import get_package_share_directory
+from controller_manager.test_utils import check_controllers_running, check_if_js_published
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+@pytest.mark.launch_test
+def generate_test_description():
+    demo = os.path.join(get_package_share_directory("gz_ros2_control_demos"), "launch",
+                        "cart_example_position.launch.py")
+    return launch.LaunchDescription([
+        launch.actions.IncludeLaunchDescription(PythonLaunchDescriptionSource(demo)),
+        launch_testing.actions.ReadyToTest(),
+    ])
+
+
+class TestControllers(unittest.TestCase):
+    def test_the_cart_is_controlled(self):
+        rclpy.init()
+        node = rclpy.create_node("controller_checker")
+        try:
+            check_controllers_running(node, [{names}])
+            check_if_js_published("/joint_states", ["slider_to_cart"])
+        finally:
+            node.destroy_node()
+            rclpy.shutdown()
+"""
+
+
+def test_controller_manager_test_utils_check_a_ros2_control_demo(ws):
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(shared("external", "gz_ros2_control_demos"))
+    names = '"joint_trajectory_controller", "joint_state_broadcaster"'
+    path = ws.write("control_launch_test.py", CONTROL_TEST.replace("{names}", names))
+    done = run_test(ws, path)
+    assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+
+
+def test_controller_manager_test_utils_say_which_controller_is_missing(ws):
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(shared("external", "gz_ros2_control_demos"))
+    path = ws.write("control_launch_test.py",
+                    CONTROL_TEST.replace("{names}", '"no_such_controller"'))
+    done = run_test(ws, path)
+    assert done.returncode == 1
+    assert "Controller node(s) not found: ns: /, ctrl:no_such_controller" in done.stderr
