@@ -338,3 +338,75 @@ def test_controller_manager_test_utils_say_which_controller_is_missing(ws):
     done = run_test(ws, path)
     assert done.returncode == 1
     assert "Controller node(s) not found: ns: /, ctrl:no_such_controller" in done.stderr
+
+
+# --- colcon test: an ament_python package's pytest tests and launch tests ----------------------
+PACKAGE = {
+    "src/talk_pkg/package.xml": """<?xml version="1.0"?>
+<package format="3">
+  <name>talk_pkg</name>
+  <version>0.0.1</version>
+  <description>talks</description>
+  <maintainer email="dev@example.com">dev</maintainer>
+  <license>Apache-2.0</license>
+  <test_depend>launch_testing</test_depend>
+  <export><build_type>ament_python</build_type></export>
+</package>
+""",
+    "src/talk_pkg/setup.py": """from setuptools import setup
+setup(name="talk_pkg", version="0.0.1", packages=["talk_pkg"], tests_require=["pytest"],
+      data_files=[("share/ament_index/resource_index/packages", ["resource/talk_pkg"]),
+                  ("share/talk_pkg", ["package.xml"])])
+""",
+    "src/talk_pkg/resource/talk_pkg": "",
+    "src/talk_pkg/talk_pkg/__init__.py": "",
+    "src/talk_pkg/test/test_unit.py": "def test_adds():\n    assert 1 + 1 == 2\n",
+    "src/talk_pkg/test/test_echo_launch.py": """import unittest
+
+import launch
+import launch_testing.actions
+import launch_testing.util
+import pytest
+
+
+@pytest.mark.launch_test
+def generate_test_description():
+    return launch.LaunchDescription([
+        launch.actions.ExecuteProcess(cmd=["echo", "{said}"]),
+        launch_testing.util.KeepAliveProc(),
+        launch_testing.actions.ReadyToTest(),
+    ])
+
+
+class TestEcho(unittest.TestCase):
+    def test_says_hi(self, proc_output):
+        proc_output.assertWaitFor("hi there", stream="stdout", timeout=3)
+""",
+}
+
+
+def colcon_workspace(ws, said: str) -> None:
+    for name, text in PACKAGE.items():
+        path = ws.root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text.replace("{said}", said))
+    built = ws.run("colcon", "build", timeout=300)
+    assert built.returncode == 0, built.stdout + built.stderr
+
+
+def test_colcon_test_runs_a_packages_pytest_and_launch_tests(ws):
+    colcon_workspace(ws, "hi there")
+    tested = ws.run("colcon", "test", timeout=300)
+    assert tested.returncode == 0, tested.stdout + tested.stderr
+    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    assert result.returncode == 0, result.stdout
+    assert "2 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
+
+
+def test_colcon_test_result_names_a_failing_launch_test(ws):
+    colcon_workspace(ws, "bye")
+    ws.run("colcon", "test", timeout=300)
+    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    assert result.returncode == 1
+    assert "2 tests, 0 errors, 1 failure, 0 skipped" in result.stdout
+    assert "test_echo_launch" in result.stdout
