@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.bus.places import RUN_VARIABLE
+from launcher.cli import positive_number
 from launcher.errors import LaunchError, UsageError
 
 
@@ -32,6 +33,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="list the launch arguments the test takes, and exit")
     parser.add_argument("--junit-xml", dest="xmlpath", default=None, metavar="PATH",
                         help="also write the results as JUnit XML here")
+    parser.add_argument("--timeout", type=positive_number, default=None, metavar="SECONDS",
+                        help="fail the run when its active tests take longer than this "
+                             "(default: no limit, as launch_test)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -86,7 +90,7 @@ def _one_run(test_run: Any, configurations: dict[str, str], args: argparse.Names
         os.environ[RUN_VARIABLE] = folder
         try:
             service = launch_service(configurations, load_index(), debug=args.verbose)
-            return Worker(test_run, service, configurations).execute(sys.stderr)
+            return Worker(test_run, service, configurations, args.timeout).execute(sys.stderr)
         finally:
             if previous is None:
                 os.environ.pop(RUN_VARIABLE, None)

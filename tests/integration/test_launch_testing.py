@@ -410,3 +410,25 @@ def test_colcon_test_result_names_a_failing_launch_test(ws):
     assert result.returncode == 1
     assert "2 tests, 0 errors, 1 failure, 0 skipped" in result.stdout
     assert "test_echo_launch" in result.stdout
+
+
+def test_a_hanging_test_fails_at_the_time_limit_and_leaves_nothing_running(ws):
+    path = ws.write("hang_test.py", """
+        import time
+        import unittest
+        import launch
+        import launch_testing.actions
+        import launch_testing.util
+
+        def generate_test_description():
+            return launch.LaunchDescription([
+                launch_testing.util.KeepAliveProc(), launch_testing.actions.ReadyToTest()])
+
+        class TestHang(unittest.TestCase):
+            def test_forever(self):
+                time.sleep(3600)
+        """)
+    done = run_test(ws, path, "--timeout", "2")
+    assert done.returncode == 1
+    assert "FAIL: hang_test.hang_test.launch_tests: the active tests did not finish within 2 s" \
+        in done.stderr

@@ -62,10 +62,13 @@ class ServiceProxy:
 
 
 class Worker:
-    def __init__(self, run: Any, service: LaunchService, arguments: dict[str, str]) -> None:
+    def __init__(self, run: Any, service: LaunchService, arguments: dict[str, str],
+                 time_limit: float | None = None) -> None:
+        """`time_limit`: seconds the active tests may take (none: no limit, as launch_test)."""
         from launch_testing import ActiveIoHandler, ActiveProcInfoHandler
 
         self.run, self.service, self.arguments = run, service, arguments
+        self.time_limit = time_limit
         self.proc_info, self.proc_output = ActiveProcInfoHandler(), ActiveIoHandler()
         self.ready, self.done = threading.Event(), threading.Event()
         self.active_result: unittest.TestResult | None = None
@@ -84,6 +87,8 @@ class Worker:
                                       "proc_output": self.proc_output.snapshot()})
         if self.run.markers.get("keep_alive"):
             self.service.add_timer(FOREVER, lambda: None)
+        if self.time_limit is not None:
+            self.service.add_timer(self.time_limit, self._time_up)
         tests = threading.Thread(target=self._active, args=(proxy, stream),
                                  name="launch-test-active", daemon=True)
         tests.start()
@@ -94,6 +99,13 @@ class Worker:
             return [failed(self.run, self.note)]
         post = run_tests(self.run.post_shutdown, stream)
         return [result for result in (self.active_result, post) if result is not None]
+
+    def _time_up(self) -> None:
+        """The time limit has passed: a test still running is a failure, and the launch ends
+        (everything it started stops; the test's thread is left to the process's end)."""
+        if not self.done.is_set():
+            self.note = f"the active tests did not finish within {self.time_limit:g} s"
+            self.service.shutdown(f"time limit: {self.note}")
 
     def _active(self, proxy: ServiceProxy, stream: Any) -> None:
         if not self.ready.wait(self.run.timeout):
