@@ -74,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
         except TestFileError as exc:
             raise LaunchError(str(exc)) from None
     if args.xmlpath:
-        from launcher.cli.launch_tests.junit import write
+        from launcher.compat.junit import write
 
         write(Path(args.xmlpath), f"{name}.{path.stem}", results)
     return 0 if all(result.wasSuccessful() for result in results) else 1

@@ -21,7 +21,7 @@ if TYPE_CHECKING:  # imported by every node's start (the finder): nothing more t
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz, ros2, …
 SHIMMED = ("ament_index_python", "launch", "launch_ros", "launch_testing",
-           "launch_testing_ros", "controller_manager")
+           "launch_testing_ros", "controller_manager", "rostest")
 SITE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "site")  # node APIs' hook
 
 

@@ -33,7 +33,7 @@ _API_NAMES = ("rclpy", "rospy", "tf2_ros", "tf2_geometry_msgs", "sensor_msgs_py"
 # `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 _SHIM_NAMES = ("ament_index_python", "launch", "launch_ros", "launch_testing",
-               "launch_testing_ros", "controller_manager")
+               "launch_testing_ros", "controller_manager", "rostest")
 _KINDS = ("msg", "srv", "action")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 

@@ -24,6 +24,7 @@ BUILTINS: dict[str, dict[str, str]] = {
         "include": _ACTIONS + "include",
         "group": _ACTIONS + "group",
         "timer": _ACTIONS + "timer",
+        "rostest": _ACTIONS + "rostest",
         **dict.fromkeys(("set_env", "unset_env", "append_env", "reset_env"),
                         _ACTIONS + "environment"),
         **dict.fromkeys(("log", "log_info", "log_warning", "log_error", "log_debug"),

@@ -15,7 +15,8 @@ from launcher.user_files import check_readable, read_bytes
 # Each format's loader is imported when a file of that format is parsed (PyYAML alone is a
 # fifth of `launcher launch`'s imports), and parse_cache keeps what it parsed for the next run.
 
-FORMATS = (".yaml", ".yml", ".xml", ".launch", ".py")  # .launch: roslaunch's (or ROS 2's) XML
+FORMATS = (".yaml", ".yml", ".xml", ".launch", ".test", ".py")  # .launch, .test: roslaunch's
+# (or ROS 2's) XML; .test: rostest's, whose <test>s roslaunch leaves out
 # Parsed YAML/XML descriptions, by path and modification time: including a file N times (one
 # spawn file per robot) parses it once. Descriptions are not changed by running them.
 _cache: dict[Path, tuple[int, LaunchDescription]] = {}
@@ -68,12 +69,12 @@ def load_file(path: Path) -> LaunchDescription:
 
 
 def _parse(kind: str, data: bytes, path: Path) -> Entity:
-    if kind in (".xml", ".launch"):
+    if kind in (".xml", ".launch", ".test"):
         from launcher.frontend import ros1
         from launcher.frontend.xml_loader import load_xml
 
         root = load_xml(data, str(path))
-        default = "ros1" if kind == ".launch" else "ros2"
+        default = "ros1" if kind in (".launch", ".test") else "ros2"
         if ros1.dialect(root, default) == "ros1":
             return ros1.translate(root)
         if "deprecated" in root.attributes:  # roslaunch's alone

@@ -260,9 +260,8 @@ def _entity(entity: Entity) -> list[Entity]:
         name = str(entity.attributes["name"].value) if "name" in entity.attributes else ""
         ns = str(entity.attributes["ns"].value).strip("/") if "ns" in entity.attributes else ""
         return [*_clearing(entity, f"{ns}/{name}" if ns and name else name), _node(entity)]
-    if tag == "test":  # rostest runs it; roslaunch ignores it
-        _node(entity)  # (checked all the same)
-        return []
+    if tag == "test":  # rostest runs it; roslaunch leaves it out (description/actions/rostest)
+        return [_test(entity)]
     if tag == "param":
         return [_global_param(entity)]
     if tag == "rosparam":
@@ -337,6 +336,16 @@ def _warning(text: str, where: Location) -> Entity:
     made = Entity("log", where, nested_in_children=True)
     made.attributes.update(message=_text(text, where), level=_text("warn", where))
     return made
+
+
+def _test(entity: Entity) -> Entity:
+    """`<test>`: its node, under a `rostest` that names it and gives its limits."""
+    test = _copy(entity, "rostest", {"test-name": "test-name", "time-limit": "time-limit",
+                                     "retry": "retry"})
+    node = _node(entity)
+    node.attributes.pop("on_exit", None)  # (rostest, not the node's exit, ends the launch)
+    test.children.append(node)
+    return test
 
 
 NODE_ATTRS = {"pkg": "pkg", "type": "exec", "name": "name", "ns": "namespace", "args": "args",

@@ -13,5 +13,6 @@ TOOLS = {  # the tool's name → its module (the tools with verbs: cli/commands.
     "roslaunch": "launcher.cli.ros1.roslaunch",
     "rosrun": "launcher.cli.ros1.rosrun",
     "catkin_make": "launcher.cli.ros1.catkin_make",
+    "rostest": "launcher.cli.ros1.rostest",
 }
 

@@ -1,7 +1,9 @@
-"""A launch test's results as JUnit XML (what `--junit-xml` writes and colcon reads)."""
+"""Test results as JUnit XML (what `launcher test --junit-xml`, rostest and rostest.rosrun
+write, and colcon test-result reads)."""
 
 from __future__ import annotations
 
+import re
 import unittest
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -17,8 +19,7 @@ def write(path: Path, name: str, results: list[unittest.TestResult]) -> None:
                     [(case, "skipped", text) for case, text in result.skipped])
         for case, kind, text in outcomes:
             element = _case(name, case)
-            ET.SubElement(element, kind, message=text.strip().splitlines()[-1] if text
-                          else kind).text = text
+            ET.SubElement(element, kind, message=_message(text) or kind).text = text
             cases.append(element)
         failures += len(result.failures)
         errors += len(result.errors)
@@ -38,3 +39,13 @@ def write(path: Path, name: str, results: list[unittest.TestResult]) -> None:
 def _case(suite: str, case: unittest.TestCase) -> ET.Element:
     return ET.Element("testcase", classname=f"{suite}.{type(case).__name__}",
                       name=getattr(case, "_testMethodName", str(case)))
+
+
+_RAISED = re.compile(r"^[A-Za-z_][\w.]*(?:Error|Exception|Failure|Exit)\b.*$", re.M)
+
+
+def _message(text: str) -> str:
+    """The line that says what was raised (`AssertionError: 'a' != 'b'`), else the last."""
+    found = _RAISED.findall(text or "")
+    lines = (text or "").strip().splitlines()
+    return found[-1] if found else (lines[-1] if lines else "")

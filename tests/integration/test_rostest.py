@@ -1,0 +1,170 @@
+"""rostest over launcher: a ROS 1 package's .test file, its nodes launched and its `<test>`s
+run against them (rospy tests through rostest.rosrun), rostest's summary and results, the
+bad inputs; and roslaunch leaving the tests out. Real processes on a graph of the test's."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import pytest
+
+MANIFEST = """<?xml version="1.0"?>
+<package format="2">
+  <name>hear_pkg</name>
+  <version>0.0.1</version>
+  <description>hears</description>
+  <maintainer email="dev@example.com">dev</maintainer>
+  <license>BSD</license>
+  <buildtool_depend>catkin</buildtool_depend>
+  <depend>rospy</depend>
+  <test_depend>rostest</test_depend>
+</package>
+"""
+TALKER = """#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+rospy.init_node("talker")
+pub = rospy.Publisher("chatter", String, queue_size=10)
+rate = rospy.Rate(10)
+try:
+    while not rospy.is_shutdown():
+        pub.publish(String(data="hello"))
+        rate.sleep()
+except rospy.ROSInterruptException:
+    pass
+"""
+HEAR_TEST = """#!/usr/bin/env python3
+import time
+import unittest
+
+import rospy
+import rostest
+from std_msgs.msg import String
+
+
+class TestHear(unittest.TestCase):
+    def test_hears_{expected}(self):
+        rospy.init_node("hear_test")
+        time.sleep({delay})
+        message = rospy.wait_for_message("chatter", String, timeout=10)
+        self.assertEqual(message.data, "{expected}")
+
+
+if __name__ == "__main__":
+    rostest.rosrun("hear_pkg", "hear_test", TestHear)
+"""
+TEST_FILE = """<launch>
+  <node pkg="hear_pkg" type="talker.py" name="talker" />
+  <test test-name="hear_test" pkg="hear_pkg" type="{type}" time-limit="{limit}" {extra}/>
+</launch>
+"""
+
+
+@pytest.fixture
+def package(ws):
+    """A ROS 1 package with a talker and a rospy test of it; results under the ws."""
+    root = ws.root / "src" / "hear_pkg"
+    (root / "scripts").mkdir(parents=True)
+    (root / "test").mkdir()
+    (root / "package.xml").write_text(MANIFEST)
+    talker = root / "scripts" / "talker.py"
+    talker.write_text(TALKER)
+    talker.chmod(0o755)
+    ws.own_bus().env.update(LAUNCHER_PACKAGE_PATH=str(ws.root / "src"),
+                            ROS_HOME=str(ws.root / "home"))
+    return root
+
+
+def write_test(root, expected: str = "hello", delay: float = 0.0, type_: str = "hear_test.py",
+               limit: float = 30, extra: str = "") -> None:
+    script = root / "scripts" / "hear_test.py"
+    script.write_text(HEAR_TEST.format(expected=expected, delay=delay))
+    script.chmod(0o755)
+    (root / "test" / "hear.test").write_text(
+        TEST_FILE.format(type=type_, limit=limit, extra=extra))
+
+
+def results(ws):
+    return ws.root / "home" / "test_results" / "hear_pkg"
+
+
+def test_a_test_that_hears_its_node_passes_with_rostests_summary(ws, package):
+    write_test(package)
+    done = ws.run("rostest", "hear_pkg", "hear.test", timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "[hear.rosunit-hear_test][passed]" in done.stdout
+    assert "SUMMARY\n * RESULT: SUCCESS\n * TESTS: 1\n * ERRORS: 0\n * FAILURES: 0" \
+        in done.stdout
+
+
+def test_the_results_are_written_where_rostest_writes_them(ws, package):
+    write_test(package)
+    ws.run("rostest", "hear_pkg", "hear.test", timeout=120)
+    case = ET.parse(results(ws) / "rosunit-hear_test.xml").getroot().find(".//testcase")
+    assert case.get("name") == "test_hears_hello"
+    summary = ET.parse(results(ws) / "rostest-hear.xml").getroot()
+    assert (summary.get("tests"), summary.get("failures")) == ("1", "0")
+
+
+def test_a_failing_test_fails_the_run_and_says_its_case(ws, package):
+    write_test(package, expected="bye")
+    done = ws.run("rostest", "hear_pkg", "hear.test", timeout=120)
+    assert done.returncode == 1
+    assert "[hear.rosunit-hear_test][FAILURE]" in done.stdout
+    assert "test_hears_bye: AssertionError: 'hello' != 'bye'" in done.stdout
+    assert " * RESULT: FAIL" in done.stdout
+
+
+def test_a_test_past_its_time_limit_is_stopped_and_fails(ws, package):
+    write_test(package, delay=60, limit=2)
+    done = ws.run("rostest", "hear_pkg", "hear.test", timeout=120)
+    assert done.returncode == 1
+    assert "test [hear_test] ran past its time limit of 2 s and was stopped" in done.stdout
+
+
+def test_a_failed_test_is_run_again_while_retries_are_left(ws, package):
+    write_test(package, expected="bye", extra='retry="1"')
+    done = ws.run("rostest", "hear_pkg", "hear.test", timeout=120)
+    assert done.returncode == 1
+    log = next((ws.root / "log").rglob("launch.log")).read_text()
+    assert log.count("test_hears_bye (__main__.TestHear.test_hears_bye) ... FAIL") == 2
+
+
+def test_a_test_file_by_path_runs_too(ws, package):
+    write_test(package)
+    done = ws.run("rostest", str(package / "test" / "hear.test"), timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_roslaunch_leaves_the_tests_out(ws, package):
+    write_test(package)
+    done = ws.run("roslaunch", "hear_pkg", "hear.test", "--nodes", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["/talker"]
+
+
+# --- bad inputs ---------------------------------------------------------------------------------
+def test_an_unknown_test_attribute_is_warned_at_its_place_and_left_out_as_roslaunch_does(
+        ws, package):
+    write_test(package, extra='time-limt="3"')
+    done = ws.run("rostest", "hear_pkg", "hear.test", timeout=60)
+    assert done.returncode == 0, done.stdout + done.stderr
+    said = done.stdout + done.stderr
+    assert f"{package / 'test' / 'hear.test'}:3:" in said
+    assert "has no attribute 'time-limt' (did you mean 'time-limit'?)" in said
+
+
+def test_a_test_whose_type_is_not_found_is_said(ws, package):
+    write_test(package, type_="nope_test.py")
+    done = ws.run("rostest", "hear_pkg", "hear.test", timeout=60)
+    assert done.returncode == 1
+    assert "nope_test.py" in done.stdout + done.stderr
+
+
+def test_a_file_without_tests_is_said(ws, package):
+    (package / "test" / "empty.test").write_text(
+        '<launch><node pkg="hear_pkg" type="talker.py" name="talker" /></launch>\n')
+    done = ws.run("rostest", "hear_pkg", "empty.test", timeout=60)
+    assert done.returncode == 1
+    assert "the file has no <test>: nothing to run" in done.stderr
