@@ -7,6 +7,19 @@ import re
 import unittest
 import xml.etree.ElementTree as ET
 from pathlib import Path
+from typing import Any
+
+
+class RecordingResult(unittest.TextTestResult):
+    """unittest's result, with the tests that passed kept too (a report lists every test)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.passed: list[unittest.TestCase] = []
+
+    def addSuccess(self, test: unittest.TestCase) -> None:  # noqa: N802 - unittest's name
+        super().addSuccess(test)
+        self.passed.append(test)
 
 
 def write(path: Path, name: str, results: list[unittest.TestResult]) -> None:

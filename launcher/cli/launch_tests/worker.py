@@ -16,25 +16,15 @@ from launcher.api import (
     OnProcessStart,
     RegisterEventHandler,
 )
+from launcher.compat.junit import RecordingResult
 from launcher.runtime.service import LaunchService
 
 FOREVER = 365 * 24 * 3600.0  # s: the timer that keeps a keep_alive launch up
 
 
-class Result(unittest.TextTestResult):
-    """unittest's result, with the tests that passed kept too (for JUnit XML)."""
-
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        self.passed: list[unittest.TestCase] = []
-
-    def addSuccess(self, test: unittest.TestCase) -> None:  # noqa: N802 - unittest's name
-        super().addSuccess(test)
-        self.passed.append(test)
-
-
 def run_tests(tests: unittest.TestSuite, stream: Any) -> unittest.TestResult:
-    return unittest.TextTestRunner(stream=stream, verbosity=2, resultclass=Result).run(tests)
+    return unittest.TextTestRunner(stream=stream, verbosity=2,
+                                   resultclass=RecordingResult).run(tests)
 
 
 class ServiceProxy:

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from launcher.sim.sdf.context import Context, top_element
+from launcher.sim.sdf.context import opened
 from launcher.sim.sdf.model import BuiltModel, build, new_spec
 from launcher.sim.sdf.pose import IDENTITY, Pose, parse_pose
 from launcher.sim.sdf.world import SdfWorld, load_world
@@ -29,9 +29,8 @@ class SdfModel:
 
 def load_model(text: str, path: Path | None, environ: Mapping[str, str] | None = None,
                packages: Any = None) -> SdfModel:
-    element, origin = top_element(text, path, "model", " to spawn (a <world> file is run "
-                                                       "with `gz sim`)")
-    context = Context(environ, packages)
+    element, origin, context = opened(text, path, "model", " to spawn (a <world> file is run "
+                                      "with `gz sim`)", environ, packages)
     spec = new_spec(element.get("name", "model"))
     built = build(spec, element, origin, context, "", IDENTITY)
     return SdfModel(spec, built, parse_pose(element.find("pose")), context.warnings)

@@ -91,6 +91,14 @@ class Context:
 
 
 
+def opened(text: str, path: Path | None, tag: str, hint: str,
+           environ: Mapping[str, str] | None, packages: Any) -> tuple[Element, Origin, Context]:
+    """The document's `<world>` or `<model>` (top_element), where it came from, and the
+    context it is read in."""
+    element, origin = top_element(text, path, tag, hint)
+    return element, origin, Context(environ, packages)
+
+
 def top_element(text: str, path: Path | None, tag: str,
                 hint: str) -> tuple[Element, Origin]:
     """The document's `<world>` or `<model>` (`tag`) and where it came from; its absence is

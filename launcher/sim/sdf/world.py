@@ -17,7 +17,7 @@ from typing import Any
 import mujoco
 
 from launcher.sim.mjcf import PluginConfig
-from launcher.sim.sdf.context import Context, Origin, top_element
+from launcher.sim.sdf.context import Context, Origin, opened
 from launcher.sim.sdf.elements import check_children, plugin_configs
 from launcher.sim.sdf.model import BuiltModel, build, new_spec
 from launcher.sim.sdf.pose import IDENTITY, Pose, number, numbers, parse_pose, rotate
@@ -44,9 +44,8 @@ class SdfWorld:
 
 def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None = None,
                packages: Any = None) -> SdfWorld:
-    world, origin = top_element(text, path, "world", " (a model file is spawned with "
-                                "`create -file`, or included in a world)")
-    context = Context(environ, packages)
+    world, origin, context = opened(text, path, "world", " (a model file is spawned with "
+                                    "`create -file`, or included in a world)", environ, packages)
     spec = new_spec(world.get("name", "default"))
     # stable with the velocity actuators of wheels and joint servos (as for MJCF worlds)
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST

@@ -7,6 +7,7 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
+from launch_testing.active import Active
 from launch_testing.records import ProcessOutput
 from launch_testing.util import NoMatchingProcessException, resolveProcesses
 
@@ -46,12 +47,11 @@ class IoHandler:
         return list(self._by_action[key])
 
 
-class ActiveIoHandler:
+class ActiveIoHandler(Active):
     """An IoHandler that the launch fills while the active tests wait on it."""
 
     def __init__(self) -> None:
-        self._changed = threading.Condition()
-        self._handler = IoHandler()
+        super().__init__(IoHandler())
 
     @property
     def io_event(self) -> threading.Condition:
@@ -61,33 +61,6 @@ class ActiveIoHandler:
         with self._changed:
             self._handler.track(action)
             self._changed.notify_all()
-
-    def append(self, output: ProcessOutput) -> None:
-        with self._changed:
-            self._handler.append(output)
-            self._changed.notify_all()
-
-    def __iter__(self) -> Iterator[ProcessOutput]:
-        with self._changed:
-            return iter(self._handler)
-
-    def processes(self) -> list[Any]:
-        """The launch actions of the processes that printed something."""
-        with self._changed:
-            return self._handler.processes()
-
-    def process_names(self) -> list[str]:
-        """The names of the processes that printed something."""
-        with self._changed:
-            return self._handler.process_names()
-
-    def __getitem__(self, key: Any) -> list[ProcessOutput]:
-        with self._changed:
-            return self._handler[key]
-
-    def snapshot(self) -> IoHandler:
-        """What was recorded, for the post-shutdown tests."""
-        return self._handler
 
     def assertWaitFor(self, *args: Any, **kwargs: Any) -> None:  # noqa: N802
         """waitFor, and an AssertionError when the text did not come in time."""

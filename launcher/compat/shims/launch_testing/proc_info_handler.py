@@ -7,6 +7,7 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
+from launch_testing.active import Active
 from launch_testing.records import ProcessInfo
 from launch_testing.util import NoMatchingProcessException, resolveProcesses
 
@@ -41,43 +42,15 @@ class ProcInfoHandler:
         return self._infos[key]
 
 
-class ActiveProcInfoHandler:
+class ActiveProcInfoHandler(Active):
     """A ProcInfoHandler that the launch fills while the active tests wait on it."""
 
     def __init__(self) -> None:
-        self._changed = threading.Condition()
-        self._handler = ProcInfoHandler()
+        super().__init__(ProcInfoHandler())
 
     @property
     def proc_event(self) -> threading.Condition:
         return self._changed
-
-    def append(self, info: ProcessInfo) -> None:
-        with self._changed:
-            self._handler.append(info)
-            self._changed.notify_all()
-
-    def __iter__(self) -> Iterator[ProcessInfo]:
-        with self._changed:
-            return iter(self._handler)
-
-    def processes(self) -> list[Any]:
-        """The launch actions of every recorded process."""
-        with self._changed:
-            return self._handler.processes()
-
-    def process_names(self) -> list[str]:
-        """The names of every recorded process."""
-        with self._changed:
-            return self._handler.process_names()
-
-    def __getitem__(self, key: Any) -> ProcessInfo:
-        with self._changed:
-            return self._handler[key]
-
-    def snapshot(self) -> ProcInfoHandler:
-        """What was recorded, for the post-shutdown tests."""
-        return self._handler
 
     def _wait(self, process: Any, cmd_args: Any, timeout: float, exited: bool) -> bool:
         def seen() -> bool:

@@ -10,19 +10,9 @@ import unittest
 from pathlib import Path
 from typing import Any
 
-from launcher.compat.junit import write
+from launcher.compat.junit import RecordingResult, write
 
 RESULTS_FLAG = "--gtest_output=xml:"
-
-
-class _Result(unittest.TextTestResult):
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        self.passed: list[unittest.TestCase] = []
-
-    def addSuccess(self, test: unittest.TestCase) -> None:  # noqa: N802 - unittest's name
-        super().addSuccess(test)
-        self.passed.append(test)
 
 
 def results_file(argv: list[str]) -> Path | None:
@@ -39,7 +29,7 @@ def rosrun(package: str, test_name: str, test: Any, sysargs: list[str] | None = 
     argv = sys.argv if sysargs is None else sysargs
     suite = unittest.TestLoader().loadTestsFromTestCase(test) if isinstance(test, type) \
         else test
-    result = unittest.TextTestRunner(verbosity=2, resultclass=_Result).run(suite)
+    result = unittest.TextTestRunner(verbosity=2, resultclass=RecordingResult).run(suite)
     target = results_file(argv)
     if target is not None:
         write(target, f"{package}.{test_name}", [result])
