@@ -70,9 +70,9 @@ def run(argv: list[str]) -> int:
                 logger.info(f"Waiting for transform {source} ->  {target}: {exc}")
                 continue
             print(describe(pose, stamp), flush=True)
+        return 0
     finally:
         node.destroy_node()
-    return 0
 
 
 def main() -> int:
