@@ -25,6 +25,7 @@ from launcher.packages.manifest import Package, read_manifest
 SKIPPED = {"build", "devel", "install", "log", ".git", "__pycache__"}
 _TARGET = re.compile(r"\b(add_executable|add_library)\s*\(\s*([^\s)]+)([^)]*)\)", re.I)
 _INSTALL_PYTHON = re.compile(r"\bcatkin_install_python\s*\(\s*PROGRAMS([^)]*)\)", re.I)
+_ROSTEST = re.compile(r"\badd_rostest\s*\(\s*([^\s)]+)([^)]*)\)", re.I)
 
 
 class CatkinError(LaunchError):
@@ -59,6 +60,21 @@ def cxx_targets(package: Package) -> list[tuple[Location, str, str]]:
             continue
         line = text.count("\n", 0, match.start()) + 1
         found.append((Location(str(cmake), line), match.group(1).lower(), match.group(2)))
+    return found
+
+
+def rostests(package: Package) -> list[tuple[Path, list[str]]]:
+    """The package's `add_rostest(FILE [ARGS name:=value …])`: each .test file and its
+    arguments, as `catkin_make run_tests` runs them."""
+    cmake = package.path / "CMakeLists.txt"
+    if not cmake.is_file():
+        return []
+    text = cmake.read_text(encoding="utf-8", errors="replace")
+    found = []
+    for match in _ROSTEST.finditer(text):
+        words = match.group(2).split()
+        arguments = words[words.index("ARGS") + 1:] if "ARGS" in words else []
+        found.append((package.path / match.group(1), [w for w in arguments if ":=" in w]))
     return found
 
 

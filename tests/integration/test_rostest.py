@@ -168,3 +168,42 @@ def test_a_file_without_tests_is_said(ws, package):
     done = ws.run("rostest", "hear_pkg", "empty.test", timeout=60)
     assert done.returncode == 1
     assert "the file has no <test>: nothing to run" in done.stderr
+
+
+# --- catkin_make run_tests and catkin_test_results ------------------------------------------------
+CMAKE = """cmake_minimum_required(VERSION 3.0.2)
+project(hear_pkg)
+find_package(catkin REQUIRED COMPONENTS rospy rostest)
+catkin_package()
+if(CATKIN_ENABLE_TESTING)
+  add_rostest(test/hear.test)
+endif()
+"""
+
+
+def test_catkin_make_run_tests_runs_each_add_rostest_and_catkin_test_results_sums_them(
+        ws, package):
+    write_test(package)
+    (package / "CMakeLists.txt").write_text(CMAKE)
+    made = ws.run("catkin_make", "run_tests", timeout=180)
+    assert made.returncode == 0, made.stdout + made.stderr
+    assert (ws.root / "build" / "test_results" / "hear_pkg" / "rostest-hear.xml").is_file()
+    summed = ws.run("catkin_test_results", "build/test_results", timeout=60)
+    assert summed.returncode == 0, summed.stdout + summed.stderr
+    assert "Summary: 1 tests, 0 errors, 0 failures, 0 skipped" in summed.stdout
+
+
+def test_catkin_test_results_fails_and_names_a_failing_test(ws, package):
+    write_test(package, expected="bye")
+    (package / "CMakeLists.txt").write_text(CMAKE)
+    made = ws.run("catkin_make", "run_tests", timeout=180)
+    assert made.returncode == 0, made.stdout + made.stderr  # (as catkin's run_tests target)
+    summed = ws.run("catkin_test_results", "build/test_results", "--verbose", timeout=60)
+    assert summed.returncode == 1
+    assert "hear.rosunit.hear_test" in summed.stdout
+    assert "Summary: 1 tests, 0 errors, 1 failures, 0 skipped" in summed.stdout
+
+
+def test_catkin_test_results_without_results_is_said(ws):
+    done = ws.run("catkin_test_results", "build/test_results", timeout=60)
+    assert done.returncode == 2 and "does not exist" in done.stderr

@@ -14,5 +14,6 @@ TOOLS = {  # the tool's name → its module (the tools with verbs: cli/commands.
     "rosrun": "launcher.cli.ros1.rosrun",
     "catkin_make": "launcher.cli.ros1.catkin_make",
     "rostest": "launcher.cli.ros1.rostest",
+    "catkin_test_results": "launcher.cli.ros1.catkin_test_results",
 }
 

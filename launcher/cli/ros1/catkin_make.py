@@ -8,6 +8,7 @@ import argparse
 from pathlib import Path
 
 from launcher.arguments import Parser
+from launcher.packages.manifest import Package
 
 
 def main(argv: list[str], prog: str = "catkin_make") -> int:
@@ -45,4 +46,26 @@ def main(argv: list[str], prog: str = "catkin_make") -> int:
                   "services, and rospy nodes", flush=True)
     devel = catkin.write_devel(workspace, compat.COMMANDS)
     print(f"-- wrote {devel / 'setup.bash'}: source it to use the workspace's packages")
+    if "run_tests" in args.targets:
+        run_tests(found, workspace / "build" / "test_results")
     return 0
+
+
+def run_tests(packages: list[Package], results: Path) -> None:
+    """`catkin_make run_tests`: each package's add_rostest files through rostest, their
+    results under build/test_results/PKG (catkin_test_results reads them). As catkin's
+    target, it succeeds whatever the tests say. The workspace's packages are found as its
+    devel space would give them."""
+    import os
+
+    from launcher.cli.ros1 import rostest
+    from launcher.packages import catkin
+
+    folders = [str(package.path.parent) for package in packages]
+    os.environ["LAUNCHER_PACKAGE_PATH"] = os.pathsep.join(
+        [*folders, *filter(None, [os.environ.get("LAUNCHER_PACKAGE_PATH")])])
+    for package in packages:
+        for test_file, arguments in catkin.rostests(package):
+            print(f"-- run_tests: {package.name}: rostest {test_file.name}", flush=True)
+            rostest.main([package.name, test_file.name, *arguments,
+                          "--results-base-dir", str(results)])

@@ -1,9 +1,10 @@
 """`rostest [PKG] FILE.test [arg:=value …]`, as ROS 1's rostest: the file's nodes launched on a
 graph of their own (a private run folder), then each `<test>` run once they have started, its
 results read from the XML it writes (or, when it writes none, from its exit status, where
-rostest gives up), and rostest's summary. Results go under `--results-base-dir` (default
-$ROS_TEST_RESULTS_DIR, else $ROS_HOME/test_results, else ~/.ros/test_results), in the
-package's folder: `rosunit-TEST.xml` for each test and `rostest-FILE.xml` for them all."""
+rostest gives up), and rostest's summary. Each test's results go to $ROS_TEST_RESULTS_DIR
+(else $ROS_HOME/test_results, else ~/.ros/test_results), in the package's folder, as
+`rosunit-TEST.xml`; the summary of them all, `rostest-FILE.xml`, goes there too, or under
+`--results-base-dir`."""
 
 from __future__ import annotations
 
@@ -50,16 +51,20 @@ def main(argv: list[str], prog: str = "rostest") -> int:
     path = resolve(files, index)[0]
     configurations = parse_assignments([w for w in args.words if ":=" in w])
     description = load_file(path)
-    results = _results_folder(args, files, path)
-    outcomes, not_run = _run(description, configurations, index, results)
-    return _summary(outcomes, not_run, results / (args.results_filename or
-                                                  f"rostest-{path.stem}.xml"), path.stem)
-
-
-def _results_folder(args: argparse.Namespace, files: list[str], path: Path) -> Path:
-    base = args.results_base_dir or os.environ.get("ROS_TEST_RESULTS_DIR") or \
-        str(Path(os.environ.get("ROS_HOME", Path.home() / ".ros")) / "test_results")
     package = files[0] if len(files) > 1 else "_hudson"  # (rostest's name when none is given)
+    outcomes, not_run = _run(description, configurations, index,
+                             _results_folder(None, package))
+    summary = _results_folder(args.results_base_dir, package) / (
+        args.results_filename or f"rostest-{path.stem}.xml")
+    return _summary(outcomes, not_run, summary, path.stem)
+
+
+def _results_folder(base: str | None, package: str) -> Path:
+    """`base`/PKG, `base` by default $ROS_TEST_RESULTS_DIR, else $ROS_HOME/test_results (where
+    each test's own results go; `--results-base-dir` moves the summary, as catkin's
+    add_rostest moves it to build/test_results)."""
+    base = base or os.environ.get("ROS_TEST_RESULTS_DIR") or \
+        str(Path(os.environ.get("ROS_HOME", Path.home() / ".ros")) / "test_results")
     folder = Path(base) / package
     folder.mkdir(parents=True, exist_ok=True)
     return folder
