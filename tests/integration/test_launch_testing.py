@@ -432,3 +432,60 @@ def test_a_hanging_test_fails_at_the_time_limit_and_leaves_nothing_running(ws):
     assert done.returncode == 1
     assert "FAIL: hang_test.hang_test.launch_tests: the active tests did not finish within 2 s" \
         in done.stderr
+
+
+CMAKE_PACKAGE = {
+    "src/cm_pkg/package.xml": """<?xml version="1.0"?>
+<package format="3">
+  <name>cm_pkg</name>
+  <version>0.0.1</version>
+  <description>cmake tests</description>
+  <maintainer email="dev@example.com">dev</maintainer>
+  <license>Apache-2.0</license>
+  <buildtool_depend>ament_cmake</buildtool_depend>
+  <test_depend>launch_testing_ament_cmake</test_depend>
+  <test_depend>ament_cmake_pytest</test_depend>
+  <export><build_type>ament_cmake</build_type></export>
+</package>
+""",
+    "src/cm_pkg/CMakeLists.txt": """cmake_minimum_required(VERSION 3.8)
+project(cm_pkg)
+find_package(ament_cmake REQUIRED)
+if(BUILD_TESTING)
+  find_package(launch_testing_ament_cmake REQUIRED)
+  find_package(ament_cmake_pytest REQUIRED)
+  add_launch_test(test/test_echo_launch.py TIMEOUT 30)
+  ament_add_pytest_test(test_unit test/test_unit.py)
+endif()
+ament_package()
+""",
+    "src/cm_pkg/test/test_unit.py": PACKAGE["src/talk_pkg/test/test_unit.py"],
+    "src/cm_pkg/test/test_echo_launch.py": PACKAGE["src/talk_pkg/test/test_echo_launch.py"],
+}
+
+
+def cmake_workspace(ws, said: str) -> None:
+    for name, text in CMAKE_PACKAGE.items():
+        path = ws.root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text.replace("{said}", said))
+    built = ws.run("colcon", "build", timeout=300)
+    assert built.returncode == 0, built.stdout + built.stderr
+
+
+def test_colcon_test_runs_add_launch_test_and_ament_add_pytest_test(ws):
+    cmake_workspace(ws, "hi there")
+    tested = ws.run("colcon", "test", timeout=300)
+    assert tested.returncode == 0, tested.stdout + tested.stderr
+    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    assert result.returncode == 0, result.stdout
+    # (each test twice, as on ROS: ctest's record and the test's own JUnit results)
+    assert "4 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
+
+
+def test_colcon_test_result_names_a_failing_add_launch_test(ws):
+    cmake_workspace(ws, "bye")
+    ws.run("colcon", "test", timeout=300)
+    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    assert result.returncode == 1
+    assert "test_echo_launch" in result.stdout and "0 errors, 2 failures" in result.stdout

@@ -90,11 +90,53 @@ function(ament_python_install_package name)
           PATTERN "__pycache__" EXCLUDE)
 endfunction()
 
+# BUILD_TESTING on unless the build says otherwise, and ctest's dashboard files (colcon test
+# runs ctest -D), as ament_cmake_test's include(CTest) has them
+include(CTest)
+
+# tests, as ament_cmake_pytest and launch_testing_ament_cmake register them: ctest runs them
+# (colcon test), each writing its JUnit results under build/PKG/test_results (colcon
+# test-result reads them), with launcher's interpreter: pytest, and `launcher test`
+function(_launcher_test name timeout)
+  enable_testing()
+  set(_python "$ENV{COLCON_PYTHON_EXECUTABLE}")
+  if(NOT _python)
+    set(_python python3)
+  endif()
+  set(_results "${CMAKE_BINARY_DIR}/test_results/${PROJECT_NAME}/${name}.xunit.xml")
+  add_test(NAME ${name} COMMAND ${_python} ${ARGN} ${_results}
+           WORKING_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
+  set_tests_properties(${name} PROPERTIES TIMEOUT ${timeout})
+endfunction()
+
+function(ament_add_pytest_test name path)
+  cmake_parse_arguments(arg "" "TIMEOUT;WORKING_DIRECTORY" "ENV;APPEND_ENV" ${ARGN})
+  if(NOT arg_TIMEOUT)
+    set(arg_TIMEOUT 60)
+  endif()
+  get_filename_component(path "${path}" ABSOLUTE)
+  _launcher_test(${name} ${arg_TIMEOUT} -m pytest -p no:cacheprovider "${path}"
+                 --junit-prefix=${PROJECT_NAME} --junit-xml)
+endfunction()
+
+function(add_launch_test file)
+  cmake_parse_arguments(arg "" "TARGET;TIMEOUT" "ARGS;ENV;APPEND_ENV" ${ARGN})
+  get_filename_component(file "${file}" ABSOLUTE)
+  if(NOT arg_TARGET)
+    get_filename_component(arg_TARGET "${file}" NAME_WE)
+  endif()
+  if(NOT arg_TIMEOUT)
+    set(arg_TIMEOUT 60)
+  endif()
+  _launcher_test(${arg_TARGET} ${arg_TIMEOUT} -m launcher test "${file}" ${arg_ARGS}
+                 --package-name ${PROJECT_NAME} --junit-xml)
+endfunction()
+
 # the export and lint helpers: what they declare matters to C++ consumers only
 foreach(_launcher_noop ament_export_dependencies ament_export_include_directories
         ament_export_libraries ament_export_targets ament_export_link_flags
         ament_export_definitions ament_export_interfaces ament_target_dependencies
-        ament_lint_auto_find_test_dependencies ament_add_pytest_test ament_add_test
+        ament_lint_auto_find_test_dependencies ament_add_test
         ament_index_register_resource catkin_package catkin_python_setup)
   cmake_language(EVAL CODE "function(${_launcher_noop})\nendfunction()")
 endforeach()

@@ -8,7 +8,8 @@ set(_LAUNCHER_PROVIDED
   ament_cmake ament_cmake_core ament_cmake_auto ament_cmake_python ament_cmake_test
   ament_cmake_pytest ament_cmake_export_dependencies ament_cmake_libraries
   ament_lint_auto ament_lint_common ament_cmake_copyright ament_cmake_flake8
-  ament_cmake_pep257 ament_cmake_xmllint ament_cmake_lint_cmake catkin)
+  ament_cmake_pep257 ament_cmake_xmllint ament_cmake_lint_cmake launch_testing_ament_cmake
+  catkin)
 
 macro(launcher_provide_dependency method name)
   if("${name}" IN_LIST _LAUNCHER_PROVIDED)
