@@ -207,3 +207,25 @@ def test_catkin_test_results_fails_and_names_a_failing_test(ws, package):
 def test_catkin_test_results_without_results_is_said(ws):
     done = ws.run("catkin_test_results", "build/test_results", timeout=60)
     assert done.returncode == 2 and "does not exist" in done.stderr
+
+
+# --- rostest's hztest ---------------------------------------------------------------------------
+HZ_TEST = """<launch>
+  <node pkg="hear_pkg" type="talker.py" name="talker" />
+  <test test-name="hz" pkg="rostest" type="hztest" time-limit="30">
+    <param name="topic" value="chatter" />
+    <param name="hz" value="{hz}" />
+    <param name="hzerror" value="2.0" />
+    <param name="test_duration" value="2.0" />
+  </test>
+</launch>
+"""
+
+
+@pytest.mark.parametrize(("hz", "code"), [("10.0", 0), ("50.0", 1)], ids=["right", "wrong"])
+def test_hztest_checks_a_topics_rate(ws, package, hz, code):
+    (package / "test" / "hz.test").write_text(HZ_TEST.format(hz=hz))
+    done = ws.run("rostest", "hear_pkg", "hz.test", timeout=120)
+    assert done.returncode == code, done.stdout + done.stderr
+    if code:
+        assert "Hz, expected 50 ± 2 Hz" in done.stdout
