@@ -26,7 +26,7 @@ class HzTest(unittest.TestCase):
         duration = float(rospy.get_param("~test_duration", 5.0))
         wait = float(rospy.get_param("~wait_time", 20.0))
         stamps: list[float] = []
-        kind = _published_type(rospy, topic, wait if expected else duration)
+        kind = published_type(rospy, topic, wait if expected else duration)
         if kind is not None:
             rospy.Subscriber(topic, kind, lambda _m: stamps.append(time.monotonic()))
         if expected == 0:
@@ -45,7 +45,7 @@ class HzTest(unittest.TestCase):
                              f"{topic}: {rate:.2f} Hz, expected {expected:g} ± {error:g} Hz")
 
 
-def _published_type(rospy: Any, topic: str, wait: float) -> Any:
+def published_type(rospy: Any, topic: str, wait: float) -> Any:
     """The message class of `topic` once someone publishes it (None if none does in time)."""
     import importlib
 

@@ -229,3 +229,40 @@ def test_hztest_checks_a_topics_rate(ws, package, hz, code):
     assert done.returncode == code, done.stdout + done.stderr
     if code:
         assert "Hz, expected 50 ± 2 Hz" in done.stdout
+
+
+PUBLISH_TEST = """<launch>
+  <node pkg="hear_pkg" type="talker.py" name="talker" />
+  <test test-name="published" pkg="rostest" type="publishtest" time-limit="30">
+    <rosparam param="topics">[{{name: chatter, timeout: 10}}, {{name: {quiet}, timeout: 1, negative: true}}]</rosparam>
+  </test>
+</launch>
+"""
+
+
+@pytest.mark.parametrize(("quiet", "code"), [("silence", 0), ("chatter", 1)],
+                         ids=["silent topic", "published topic"])
+def test_publishtest_checks_topics_are_published_or_not(ws, package, quiet, code):
+    (package / "test" / "published.test").write_text(PUBLISH_TEST.format(quiet=quiet))
+    done = ws.run("rostest", "hear_pkg", "published.test", timeout=120)
+    assert done.returncode == code, done.stdout + done.stderr
+    if code:
+        assert "chatter was published, and should not have been" in done.stdout
+
+
+PARAM_TEST = """<launch>
+  <param name="rate" value="10" />
+  <test test-name="rate_set" pkg="rostest" type="paramtest" time-limit="30">
+    <param name="param_name_target" value="/rate" />
+    <param name="param_value_expected" value="{expected}" />
+    <param name="wait_time" value="2" />
+  </test>
+</launch>
+"""
+
+
+@pytest.mark.parametrize(("expected", "code"), [("10", 0), ("11", 1)], ids=["same", "other"])
+def test_paramtest_checks_a_parameter(ws, package, expected, code):
+    (package / "test" / "rate.test").write_text(PARAM_TEST.format(expected=expected))
+    done = ws.run("rostest", "hear_pkg", "rate.test", timeout=120)
+    assert done.returncode == code, done.stdout + done.stderr

@@ -1,0 +1,42 @@
+"""rostest's `paramtest`: a `<test>` node that checks a parameter is set (and, given
+`~param_value_expected`, to that value) within `~wait_time` seconds. Its private parameters,
+as rostest's: `~param_name_target` (required), `~param_value_expected`, `~wait_time`
+(default 20)."""
+
+from __future__ import annotations
+
+import sys
+import time
+import unittest
+from typing import Any
+
+NAME = "paramtest"
+
+
+class ParamTest(unittest.TestCase):
+    def test_param(self) -> None:
+        import rospy
+
+        rospy.init_node(NAME, anonymous=True)
+        target = rospy.get_param("~param_name_target", None)
+        self.assertTrue(target, "paramtest needs the private parameter ~param_name_target")
+        wait = float(rospy.get_param("~wait_time", 20.0))
+        deadline = time.monotonic() + wait
+        while not rospy.has_param(target) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        self.assertTrue(rospy.has_param(target), f"parameter {target} was not set within "
+                                                 f"{wait:g} s")
+        if rospy.has_param("~param_value_expected"):
+            expected = rospy.get_param("~param_value_expected")
+            self.assertEqual(str(rospy.get_param(target)), str(expected),
+                             f"parameter {target}")
+
+
+def main(argv: list[str] | None = None) -> Any:
+    import rostest
+
+    rostest.rosrun("rostest", NAME, ParamTest, sys.argv if argv is None else argv)
+
+
+if __name__ == "__main__":
+    main()
