@@ -89,8 +89,11 @@ def _one_run(test_run: Any, configurations: dict[str, str], args: argparse.Names
     with tempfile.TemporaryDirectory(prefix="launch-test-") as folder:
         os.environ[RUN_VARIABLE] = folder
         try:
-            service = launch_service(configurations, load_index(), debug=args.verbose)
-            return Worker(test_run, service, configurations, args.timeout).execute(sys.stderr)
+            def new_service() -> Any:
+                return launch_service(configurations, load_index(), debug=args.verbose)
+
+            return Worker(test_run, new_service, configurations, args.timeout).execute(
+                sys.stderr)
         finally:
             if previous is None:
                 os.environ.pop(RUN_VARIABLE, None)

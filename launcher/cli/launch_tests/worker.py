@@ -7,6 +7,7 @@ from __future__ import annotations
 import contextlib
 import threading
 import unittest
+from collections.abc import Callable
 from typing import Any
 
 from launcher.api import (
@@ -52,12 +53,15 @@ class ServiceProxy:
 
 
 class Worker:
-    def __init__(self, run: Any, service: LaunchService, arguments: dict[str, str],
-                 time_limit: float | None = None) -> None:
-        """`time_limit`: seconds the active tests may take (none: no limit, as launch_test)."""
+    def __init__(self, run: Any, new_service: Callable[[], LaunchService],
+                 arguments: dict[str, str], time_limit: float | None = None) -> None:
+        """`new_service` makes the launch service once the description is known good (none is
+        started for a test file that cannot run); `time_limit`: seconds the active tests may
+        take (none: no limit, as launch_test)."""
         from launch_testing import ActiveIoHandler, ActiveProcInfoHandler
 
-        self.run, self.service, self.arguments = run, service, arguments
+        self.run, self.new_service, self.arguments = run, new_service, arguments
+        self.service: Any = None
         self.time_limit = time_limit
         self.proc_info, self.proc_output = ActiveProcInfoHandler(), ActiveIoHandler()
         self.ready, self.done = threading.Event(), threading.Event()
@@ -69,6 +73,7 @@ class Worker:
         from launch_testing.loader import bind
 
         description, context = self.run.description(self.ready.set)
+        self.service = self.new_service()
         proxy = ServiceProxy(self.service)
         shared = {**context, **self.run.param_args, "test_args": dict(self.arguments)}
         bind(self.run.active, {**shared, "proc_info": self.proc_info,
