@@ -385,28 +385,26 @@ class TestEcho(unittest.TestCase):
 }
 
 
-def colcon_workspace(ws, said: str) -> None:
-    for name, text in PACKAGE.items():
+def colcon_tested(ws, files: dict[str, str], said: str) -> subprocess.CompletedProcess:
+    """The workspace of `files` built and tested: what `colcon test-result --verbose` says."""
+    for name, text in files.items():
         path = ws.root / name
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text.replace("{said}", said))
     built = ws.run("colcon", "build", timeout=300)
     assert built.returncode == 0, built.stdout + built.stderr
+    ws.run("colcon", "test", timeout=300)
+    return ws.run("colcon", "test-result", "--verbose", timeout=60)
 
 
 def test_colcon_test_runs_a_packages_pytest_and_launch_tests(ws):
-    colcon_workspace(ws, "hi there")
-    tested = ws.run("colcon", "test", timeout=300)
-    assert tested.returncode == 0, tested.stdout + tested.stderr
-    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    result = colcon_tested(ws, PACKAGE, "hi there")
     assert result.returncode == 0, result.stdout
     assert "2 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
 
 
 def test_colcon_test_result_names_a_failing_launch_test(ws):
-    colcon_workspace(ws, "bye")
-    ws.run("colcon", "test", timeout=300)
-    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    result = colcon_tested(ws, PACKAGE, "bye")
     assert result.returncode == 1
     assert "2 tests, 0 errors, 1 failure, 0 skipped" in result.stdout
     assert "test_echo_launch" in result.stdout
@@ -464,28 +462,14 @@ ament_package()
 }
 
 
-def cmake_workspace(ws, said: str) -> None:
-    for name, text in CMAKE_PACKAGE.items():
-        path = ws.root / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text.replace("{said}", said))
-    built = ws.run("colcon", "build", timeout=300)
-    assert built.returncode == 0, built.stdout + built.stderr
-
-
 def test_colcon_test_runs_add_launch_test_and_ament_add_pytest_test(ws):
-    cmake_workspace(ws, "hi there")
-    tested = ws.run("colcon", "test", timeout=300)
-    assert tested.returncode == 0, tested.stdout + tested.stderr
-    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    result = colcon_tested(ws, CMAKE_PACKAGE, "hi there")
     assert result.returncode == 0, result.stdout
     # (each test twice, as on ROS: ctest's record and the test's own JUnit results)
     assert "4 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
 
 
 def test_colcon_test_result_names_a_failing_add_launch_test(ws):
-    cmake_workspace(ws, "bye")
-    ws.run("colcon", "test", timeout=300)
-    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    result = colcon_tested(ws, CMAKE_PACKAGE, "bye")
     assert result.returncode == 1
     assert "test_echo_launch" in result.stdout and "0 errors, 2 failures" in result.stdout
