@@ -68,6 +68,8 @@ class BusLoader:
             node, self._node = self._node, None
         if node is not None:
             node.destroy_node()
+            node.session.close()  # (the node was handed it: left open, its threads would
+            # call into the interpreter as it ends, and abort the process)
 
     # --- the workers ------------------------------------------------------------------------
     def _serve(self, container: str, work: queue.SimpleQueue[Any]) -> None:

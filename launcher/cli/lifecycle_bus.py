@@ -76,3 +76,4 @@ class BusLifecycle:
             node, self._node = self._node, None
         if node is not None:
             node.destroy_node()
+            node.session.close()  # (the node was handed it; see components.BusLoader.close)
