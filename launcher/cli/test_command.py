@@ -6,14 +6,11 @@ when it ends. Exit status 0 when every test passed, 1 otherwise."""
 from __future__ import annotations
 
 import argparse
-import os
 import sys
-import tempfile
 import unittest
 from pathlib import Path
 from typing import Any
 
-from launcher.bus.places import RUN_VARIABLE
 from launcher.cli import positive_number
 from launcher.errors import LaunchError, UsageError
 
@@ -84,18 +81,10 @@ def _one_run(test_run: Any, configurations: dict[str, str], args: argparse.Names
              launch_service: Any, load_index: Any) -> list[unittest.TestResult]:
     """One launch of the file on a graph of its own (its run folder private and temporary)."""
     from launcher.cli.launch_tests.worker import Worker
+    from launcher.cli.own_graph import own_graph
 
-    previous = os.environ.get(RUN_VARIABLE)
-    with tempfile.TemporaryDirectory(prefix="launch-test-") as folder:
-        os.environ[RUN_VARIABLE] = folder
-        try:
-            def new_service() -> Any:
-                return launch_service(configurations, load_index(), debug=args.verbose)
+    def new_service() -> Any:
+        return launch_service(configurations, load_index(), debug=args.verbose)
 
-            return Worker(test_run, new_service, configurations, args.timeout).execute(
-                sys.stderr)
-        finally:
-            if previous is None:
-                os.environ.pop(RUN_VARIABLE, None)
-            else:
-                os.environ[RUN_VARIABLE] = previous
+    with own_graph("launch-test-"):
+        return Worker(test_run, new_service, configurations, args.timeout).execute(sys.stderr)

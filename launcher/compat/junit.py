@@ -9,6 +9,8 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
 
+RESULTS_FLAG = "--gtest_output=xml:"  # where rostest asks a test to write its results
+
 
 class RecordingResult(unittest.TextTestResult):
     """unittest's result, with the tests that passed kept too (a report lists every test)."""

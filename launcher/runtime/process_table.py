@@ -65,6 +65,12 @@ class ProcessTable:
     def failed(self) -> bool:
         return any(p.failed for p in self.processes)
 
+    def stop_started_by(self, origin: Any) -> None:
+        """Stop the running processes that the action `origin` started."""
+        for process in self.processes:
+            if process.spec.origin is origin and process.alive:
+                process.stop()
+
     def stop(self) -> None:
         for process in self.processes:
             process.stop()

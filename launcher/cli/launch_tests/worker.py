@@ -42,11 +42,7 @@ class ServiceProxy:
 
     def stop_action(self, action: Any) -> None:
         """Stop the processes `action` started."""
-        def stop() -> None:
-            for process in self.service.processes:
-                if process.spec.origin is action and process.alive:
-                    process.stop()
-        self.service.loop.call_soon_threadsafe(stop)
+        self.service.loop.call_soon_threadsafe(self.service.table.stop_started_by, action)
 
     def shutdown(self) -> None:
         self.service.loop.call_soon_threadsafe(self.service.shutdown, "the tests are done")

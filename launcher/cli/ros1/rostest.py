@@ -11,7 +11,6 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -74,24 +73,16 @@ def _run(description: Any, configurations: dict[str, str], index: Any,
          results: Path) -> tuple[list[Any], list[str]]:
     """Launch the file on a graph of its own and run its tests: their outcomes, and the tests
     the launch ended before."""
-    from launcher.bus.places import RUN_VARIABLE
     from launcher.cli.launch_command import launch_service
+    from launcher.cli.own_graph import own_graph
     from launcher.cli.ros1.rostest_run import StartTests, TestsRun
     from launcher.description.action import LaunchDescription
 
-    previous = os.environ.get(RUN_VARIABLE)
-    with tempfile.TemporaryDirectory(prefix="rostest-") as folder:
-        os.environ[RUN_VARIABLE] = folder
-        try:
-            service = launch_service(configurations, index)
-            run = TestsRun(service, results)
-            service.context.rostests = run.collected
-            service.run(LaunchDescription([description, StartTests(run)]))
-        finally:
-            if previous is None:
-                os.environ.pop(RUN_VARIABLE, None)
-            else:
-                os.environ[RUN_VARIABLE] = previous
+    with own_graph("rostest-"):
+        service = launch_service(configurations, index)
+        run = TestsRun(service, results)
+        service.context.rostests = run.collected
+        service.run(LaunchDescription([description, StartTests(run)]))
     if not run.collected:
         raise LaunchError("rostest: the file has no <test>: nothing to run")
     return run.outcomes, run.not_run()

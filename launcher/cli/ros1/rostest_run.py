@@ -13,12 +13,11 @@ from pathlib import Path
 from typing import Any
 
 from launcher.api import Action, OnProcessExit, RegisterEventHandler
+from launcher.compat.junit import RESULTS_FLAG
 from launcher.description.action import Replay
 from launcher.description.actions.rostest import CollectedTest
 from launcher.description.substitution import to_text
 from launcher.runtime.service import LaunchService
-
-RESULTS_FLAG = "--gtest_output=xml:"
 
 
 @dataclass
@@ -76,9 +75,7 @@ class TestsRun:
     def _time_up(self) -> None:
         """The test ran past its time limit: it is stopped, and fails for it."""
         self._timed_out = True
-        for process in self.service.processes:
-            if process.spec.origin is self._node and process.alive:
-                process.stop()
+        self.service.table.stop_started_by(self._node)
 
     def _exited(self, event: Any, _context: Any) -> None:
         if self._timer is not None:

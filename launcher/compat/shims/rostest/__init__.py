@@ -10,9 +10,7 @@ import unittest
 from pathlib import Path
 from typing import Any
 
-from launcher.compat.junit import RecordingResult, write
-
-RESULTS_FLAG = "--gtest_output=xml:"
+from launcher.compat.junit import RESULTS_FLAG, RecordingResult, write
 
 
 def results_file(argv: list[str]) -> Path | None:
