@@ -203,7 +203,7 @@ class ParameterValue:
                         "int, float, bool, List[str|int|float|bool]")
 
 
-def Node(*, package: Any, executable: Any, name: Any = None, namespace: Any = None,  # noqa: N802
+def Node(*, executable: Any, package: Any = None, name: Any = None, namespace: Any = None,  # noqa: N802
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
          arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (),
          _kind: type = _node.Node, **kw: Any) -> Any:

@@ -13,15 +13,14 @@ from __future__ import annotations
 import os
 import sys
 
+from launcher.compat.finder import SHIMMED, SHIMS
+
 TYPE_CHECKING = False  # (typing.TYPE_CHECKING without importing typing)
 
 if TYPE_CHECKING:  # imported by every node's start (the finder): nothing more than needed
     from collections.abc import MutableMapping
 
-SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 COMMANDS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin")  # gz, ros2, …
-SHIMMED = ("ament_index_python", "launch", "launch_ros", "launch_testing",
-           "launch_testing_ros", "controller_manager", "rostest")
 SITE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "site")  # node APIs' hook
 
 
@@ -33,15 +32,24 @@ def _real_installed(name: str) -> bool:
     return importlib.util.find_spec(name) is not None
 
 
+def installed_apart(name: str) -> bool:
+    """A real `name` (not launcher's shim of it) is importable here: its own plugins and
+    tools then run, and launcher's stand aside."""
+    import importlib.util
+
+    spec = importlib.util.find_spec(name)
+    return spec is not None and spec.origin is not None and not spec.origin.startswith(SHIMS)
+
+
 def enable_in_process() -> None:
     """Make the shims importable here, for modules that have no real version installed, and
     the message packages (a Python launch file imports lifecycle_msgs' Transition ids; the
     finder comes last, so a real one wins)."""
     if SHIMS not in sys.path and not all(_real_installed(name) for name in SHIMMED):
         sys.path.append(SHIMS)
-    from launcher.compat import finder
+    from launcher.compat.finder import install
 
-    finder.install()
+    install()
 
 
 def enable_for_children(environment: MutableMapping[str, str]) -> None:

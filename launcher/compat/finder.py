@@ -32,8 +32,8 @@ _API_NAMES = ("rclpy", "rospy", "tf2_ros", "tf2_geometry_msgs", "sensor_msgs_py"
 # launch files' and xacro's modules (compat/shims): found here too, so that a shell with
 # `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
-_SHIM_NAMES = ("ament_index_python", "launch", "launch_ros", "launch_testing",
-               "launch_testing_ros", "controller_manager", "rostest")
+SHIMMED = ("ament_index_python", "launch", "launch_ros", "launch_testing",
+           "launch_testing_ros", "launch_pytest", "controller_manager", "rostest")
 _KINDS = ("msg", "srv", "action")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 
@@ -54,7 +54,7 @@ class InterfaceFinder:
             if rest:
                 return None  # submodules come from the package's own __path__
             return importlib.machinery.PathFinder.find_spec(fullname, [NODE_APIS])
-        if top in _SHIM_NAMES:
+        if top in SHIMMED:
             if rest:
                 return None
             return importlib.machinery.PathFinder.find_spec(fullname, [SHIMS])

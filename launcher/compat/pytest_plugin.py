@@ -21,13 +21,9 @@ MARKER = "launch_test"
 
 def _real_launch_testing() -> bool:
     """A launch_testing that is not launcher's shim is importable (its plugin then runs)."""
-    import importlib.util
-
     from launcher import compat
 
-    spec = importlib.util.find_spec("launch_testing")
-    return spec is not None and spec.origin is not None and \
-        not spec.origin.startswith(compat.SHIMS)
+    return compat.installed_apart("launch_testing")
 
 
 def pytest_addoption(parser: Any) -> None:

@@ -19,6 +19,7 @@ import itertools
 import os
 import selectors
 import signal
+import threading
 import time
 from collections import Counter, deque
 from collections.abc import Callable, Iterator
@@ -51,6 +52,8 @@ class EventLoop:
         self._stopped = False
         self._posted: deque[tuple[Callable[..., Any], tuple]] = deque()  # from other threads
         self._post_pipe: tuple[int, int] | None = None
+        self._post_lock = threading.Lock()
+        self._closed = False
 
     # --- scheduling -----------------------------------------------------------------------
     def call_soon(self, callback: Callable[..., Any], *args: Any) -> Timer:
@@ -61,13 +64,18 @@ class EventLoop:
         heapq.heappush(self._timers, (timer.when, next(self._sequence), timer))
         return timer
 
-    def call_soon_threadsafe(self, callback: Callable[..., Any], *args: Any) -> None:
-        """`callback(*args)` on the loop's thread, from any thread (a worker's result)."""
-        if self._post_pipe is None:
-            raise RuntimeError("call open_posting() on the loop's thread first")
-        self._posted.append((callback, args))  # deque.append is atomic
-        with contextlib.suppress(BlockingIOError, OSError):
-            os.write(self._post_pipe[1], b"\0")
+    def call_soon_threadsafe(self, callback: Callable[..., Any], *args: Any) -> bool:
+        """`callback(*args)` on the loop's thread, from any thread (a worker's result); False
+        when the loop has been closed (nothing runs it any more)."""
+        with self._post_lock:  # (not while close() closes the pipe: its fd could be reused)
+            if self._closed:
+                return False
+            if self._post_pipe is None:
+                raise RuntimeError("call open_posting() on the loop's thread first")
+            self._posted.append((callback, args))
+            with contextlib.suppress(BlockingIOError, OSError):
+                os.write(self._post_pipe[1], b"\0")
+        return True
 
     def open_posting(self) -> None:
         """Make call_soon_threadsafe ready (a pipe the loop reads); idempotent."""
@@ -183,9 +191,11 @@ class EventLoop:
 
     def close(self) -> None:
         self.remove_signal_handlers()
-        if self._post_pipe is not None:
-            self.remove_reader(self._post_pipe[0])
-            for fd in self._post_pipe:
-                os.close(fd)
-            self._post_pipe = None
+        with self._post_lock:
+            self._closed = True
+            if self._post_pipe is not None:
+                self.remove_reader(self._post_pipe[0])
+                for fd in self._post_pipe:
+                    os.close(fd)
+                self._post_pipe = None
         self._selector.close()

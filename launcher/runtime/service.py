@@ -89,16 +89,21 @@ class LaunchService:
                              self._pending, self._queue.clear, self._cancel)
 
     # --- entry point ------------------------------------------------------------------------
-    def run(self, description: Any) -> int:
-        """Run the description until the launch ends; return the exit status."""
+    def run(self, description: Any, *, signals: bool = True) -> int:
+        """Run the description until the launch ends; return the exit status. `signals`:
+        SIGINT and SIGTERM end the launch (only the main thread can take them: a launch run
+        in another thread, as launch_pytest's, is ended by `shutdown` and still looks for
+        adopted processes on its tick)."""
         # First: the watchdog's fork must not inherit signal handling. (`launcher launch` has
         # begun the custody already, before the hooks ran; this is for the API's launches.)
         self.custody.begin(self.context.environment)
-        for sig in (signal.SIGINT, signal.SIGTERM):
-            self.loop.add_signal_handler(sig, self.ending.on_signal)
-        if self.custody.subreaper:  # collect adopted processes as they exit, and look anyway
+        if signals:
+            for sig in (signal.SIGINT, signal.SIGTERM):
+                self.loop.add_signal_handler(sig, self.ending.on_signal)
+        if self.custody.subreaper and signals:  # collect adopted processes as they exit
             self.loop.add_signal_handler(signal.SIGCHLD, lambda _sig: self.table
                                          .look_for_orphans())
+        if self.custody.subreaper:  # and look anyway
             self.loop.call_later(TICK, self._tick)
         try:
             if self.run_log is not None:

@@ -81,6 +81,13 @@ def test_work_posted_from_other_threads_runs_on_the_loop_in_order():
     assert seen == [(0, True), (1, True), (2, True)]
 
 
+def test_work_posted_to_a_closed_loop_is_refused_not_written_to_its_closed_pipe():
+    loop = EventLoop()
+    loop.open_posting()
+    loop.close()
+    assert loop.call_soon_threadsafe(lambda: None) is False
+
+
 def test_a_signal_inside_a_shielded_section_waits_for_the_loop():
     from launcher.errors import Interrupted
 

@@ -26,9 +26,12 @@ LIBRARY_NAMES = {
     "_make": "namedtuple's constructor from an iterable (its documented API)",
     "_replace": "namedtuple's and a dataclass field's copy with changes (documented API)",
 }
-# Third-party internals that launcher patches, each in one place with the reason
+# Third-party internals that launcher patches or must call, each in one place with the reason
 PATCHED = {
     ("packages/xacro.py", "_eval_dict"): "xacro's $(find) table, pointed at the package index",
+    ("cli/launch_tests/launch_pytest_plugin.py", "_genfunctions"):
+        "pytest's making of a test's items (one per parameter), for the coroutine and generator "
+        "tests launch_pytest collects, as launch_pytest's own plugin does",
 }
 
 

@@ -67,6 +67,8 @@ class ExecuteProcess(Action):
                                           doc="Environment variables for this process.")
     # the Python API's env=: the whole environment instead of the launch's (as ROS 2's)
     env: dict[Any, Any] | None = field(default=None, repr=False)
+    # the Python API's cached_output=: keep the output for get_stdout()/get_stderr() (tests)
+    cached_output: bool = field(default=False, repr=False)
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -159,11 +161,39 @@ class ExecuteProcess(Action):
             return None
         spec = self.spec(context)
         self._register_reactions(context, spec.label)
+        if self.cached_output:
+            self._cache = {"stdout": [], "stderr": []}
+            context.service.register_handler(_LabelHandler(spec.label, _OutputCache(self._cache)))
         try:
-            context.service.start_process(spec, lambda process: self.started(context, process))
+            context.service.start_process(spec, lambda process: self._spawned(context, process))
         except OSError as exc:
             raise ExecutionError(f"cannot start '{spec.argv[0]}': {exc.strerror or exc}") from None
         return None
+
+    def _spawned(self, context: LaunchContext, process: Any) -> None:
+        self._process = process
+        self.started(context, process)
+
+    # --- what the Python API's users read (launch_pytest's tests) -----------------------
+    @property
+    def return_code(self) -> int | None:
+        """The exit status of its latest process; None while that runs, or before it starts."""
+        process = getattr(self, "_process", None)
+        return None if process is None else process.returncode
+
+    def get_stdout(self) -> str:
+        """All its processes have written to stdout (with `cached_output=True`)."""
+        return self._cached("stdout")
+
+    def get_stderr(self) -> str:
+        """All its processes have written to stderr (with `cached_output=True`)."""
+        return self._cached("stderr")
+
+    def _cached(self, stream: str) -> str:
+        if not self.cached_output:
+            raise RuntimeError(f"cached output must be true to be able to get {stream}: "
+                               "ExecuteProcess(..., cached_output=True)")
+        return "".join(getattr(self, "_cache", {}).get(stream, ()))
 
     def started(self, context: LaunchContext, process: Any) -> None:
         """Called once the process is spawned (a container then loads its nodes): at once, or
@@ -196,6 +226,19 @@ class _LabelHandler:
 
     def handle(self, event: Any, context: LaunchContext) -> Any:
         return self.inner.handle(event, context)
+
+
+@dataclass
+class _OutputCache:
+    """Keeps a process's output lines (an action's `cached_output`)."""
+
+    lines: dict[str, list[str]]
+
+    def matches(self, event: Any) -> bool:
+        return getattr(event, "stream", None) in self.lines
+
+    def handle(self, event: Any, context: LaunchContext) -> None:
+        self.lines[event.stream].append(event.text + "\n")
 
 
 def _field_spec(obj: Any, name: str) -> Any:

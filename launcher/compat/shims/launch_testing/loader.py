@@ -40,14 +40,14 @@ class TestRun:
         call `ready`."""
         result = self.function()
         description, context = result if isinstance(result, tuple) else (result, {})
-        ready_actions = list(_ready_actions(getattr(description, "actions", [])))
-        if not ready_actions:
+        found = list(ready_actions(getattr(description, "actions", [])))
+        if not found:
             code = getattr(self.function, "__code__", None) or getattr(
                 getattr(self.function, "func", None), "__code__", None)
             where = f"{code.co_filename}:{code.co_firstlineno}: " if code else ""
             raise TestFileError(f"{where}generate_test_description functions must return a "
                                 "LaunchDescription containing a ReadyToTest action")
-        for action in ready_actions:
+        for action in found:
             action.add_callback(ready)
         return description, dict(context)
 
@@ -115,13 +115,13 @@ def _loader(post_shutdown: bool) -> unittest.TestLoader:
     return Loader()
 
 
-def _ready_actions(actions: Any) -> Iterator[ReadyToTest]:
+def ready_actions(actions: Any) -> Iterator[ReadyToTest]:
     for action in actions:
         if isinstance(action, ReadyToTest):
             yield action
         sub = getattr(action, "sub_actions", None)
         if sub is not None:
-            yield from _ready_actions(sub())
+            yield from ready_actions(sub())
 
 
 def _suites(suite: Any) -> Iterator[unittest.TestSuite]:
