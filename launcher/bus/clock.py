@@ -1,7 +1,8 @@
 """A node's clock: wall time, or the last `/clock` message when `use_sim_time` is true.
 
 Sim time advances when the node's executor delivers `/clock` (as with rclpy); before the
-first message it reads zero. Timers and Rate stay on the monotonic wall clock.
+first message it reads zero. A timer given this clock keeps sim time (timer.py); others, and
+Rate, keep the monotonic clock.
 """
 
 from __future__ import annotations

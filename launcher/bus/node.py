@@ -164,10 +164,13 @@ class Node:
         anything arrives."""
         self.host.share_queue(other.host)
 
-    def create_timer(self, period: float, callback: Callable[[], None]) -> Timer:
+    def create_timer(self, period: float, callback: Callable[[], None],
+                     clock: Clock | None = None) -> Timer:
+        """Call `callback` every `period` seconds of the monotonic clock, or of `clock` (the
+        node's `get_clock()`: sim time when use_sim_time is true, as rclpy's timers are)."""
         if period <= 0:
             raise LaunchError(f"timer period must be > 0, got {period}")
-        timer = Timer(period, callback)
+        timer = Timer(period, callback, clock)
         self._timers.append(timer)
         return timer
 
@@ -207,17 +210,19 @@ class Node:
     # --- executing --------------------------------------------------------------------------
     def spin_once(self, timeout: float | None = None) -> bool:
         """Run one ready callback (or due timer), waiting up to `timeout`; True if one ran."""
-        now = time.monotonic()
-        due = [t for t in self._timers if not t.cancelled]
-        if due:
-            first = min(due, key=lambda t: t.next)
-            if first.next <= now:
-                first.next = max(first.next + first.period, now)
-                first.callback()
-                return True
-            wait = first.next - now if timeout is None else min(timeout, first.next - now)
-        else:
-            wait = timeout
+        wait = timeout
+        ready = []
+        for timer in self._timers:
+            if timer.cancelled:
+                continue
+            until = timer.wait()
+            if until == 0.0:
+                ready.append(timer)
+            elif until is not None:
+                wait = until if wait is None else min(wait, until)
+        if ready:
+            min(ready, key=lambda t: t.next).fire()
+            return True
         work = self.host.next_work(wait)
         if work is None:
             return False

@@ -1,17 +1,43 @@
-"""Timers (run by the node's executor when due) and Rate (a loop at a steady frequency), both
-on the monotonic clock: no drift."""
+"""Timers (run by the node's executor when due) and Rate (a loop at a steady frequency).
+
+A timer keeps the monotonic clock, or, given a node's clock on sim time (`use_sim_time`), the
+sim's: it is due when `/clock` has reached it, as rclpy's timers are, so a node keeps its
+timing in sim time however fast or slow the sim runs. Calls stay on their grid: one that came
+late does not shift the next, and the ones missed while nothing ran are skipped."""
 
 from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from typing import Any
 
 
 class Timer:
-    def __init__(self, period: float, callback: Callable[[], None]) -> None:
+    def __init__(self, period: float, callback: Callable[[], None], clock: Any = None) -> None:
         self.period, self.callback = period, callback
-        self.next = time.monotonic() + period
+        self._sim = clock if clock is not None and clock.use_sim_time else None
+        self.next = self.now() + period
         self.cancelled = False
+
+    def now(self) -> float:
+        """Its time, in seconds: the sim's for a timer on sim time, else the monotonic clock."""
+        return self._sim.now().nanoseconds / 1e9 if self._sim is not None else time.monotonic()
+
+    def wait(self) -> float | None:
+        """Wall seconds until it is due (0: now); None while it waits for sim time to move
+        (the `/clock` that moves it is work that wakes the executor)."""
+        now = self.now()
+        if now < self.next - self.period:  # time went back (a sim reset): start again
+            self.next = now + self.period
+        if now >= self.next:
+            return 0.0
+        return None if self._sim is not None else self.next - now
+
+    def fire(self) -> None:
+        """Run the callback; the next call is the next point of its grid after now."""
+        missed = int((self.now() - self.next) // self.period)
+        self.next += self.period * (max(missed, 0) + 1)
+        self.callback()
 
     def cancel(self) -> None:
         self.cancelled = True

@@ -505,3 +505,69 @@ def test_a_latched_subscriber_gets_what_a_later_publisher_holds(bus):
         waiter.send_signal(signal.SIGINT)
         waiter.wait(30)
         assert stop(proc) == 130
+
+
+CLOCK = """
+import time
+from launcher.bus.node import Node
+node = Node("clock")
+pub = node.create_publisher("rosgraph_msgs/msg/Clock", "/clock")
+while pub.get_subscription_count() == 0:
+    time.sleep(0.01)
+for tenth in range(1, 101):  # 10 s of sim time in about half a second
+    sec, rest = divmod(tenth, 10)
+    pub.publish(node.message("rosgraph_msgs/msg/Clock",
+                             clock={"sec": sec, "nanosec": rest * 100_000_000}))
+    time.sleep(0.005)
+time.sleep(0.5)
+node.destroy_node()
+"""
+
+SIM_TIMED = """
+import time
+{imports}
+start = time.monotonic()
+def fired():
+    print("fired", round({now}, 3), round(time.monotonic() - start, 2), flush=True)
+{make_timer}
+print("ready", flush=True)
+{spin}
+"""
+
+
+def sim_timer_fires(bus, script: str) -> list[tuple[float, float]]:
+    """(sim time, wall time) of each call of a 1 s timer on sim time, while /clock runs 10 s
+    of sim time in half a second of wall time, after 1.5 s of wall time with no /clock."""
+    bus.write("timed.py", script)
+    proc, out = launch(bus, "t.launch.yaml", (
+        f"launch:\n  - executable:\n      cmd: {PY} timed.py --ros-args -p use_sim_time:=true\n"
+        "      output: screen\n"))
+    wait_text(out, "ready")
+    time.sleep(1.5)
+    bus.write("clock.py", CLOCK)
+    subprocess.run([PY, "clock.py"], cwd=bus.root, env=bus.env, timeout=60, check=True)
+    assert stop(proc) == 130
+    return [(float(line.split()[2]), float(line.split()[3]))
+            for line in out.read_text().splitlines() if "fired" in line]
+
+
+def test_a_bus_timer_on_a_sim_time_clock_keeps_sim_time(bus):
+    fires = sim_timer_fires(bus, SIM_TIMED.format(
+        imports="from launcher.bus.node import Node\nnode = Node('timed')",
+        now="node.get_clock().now().seconds",
+        make_timer="node.create_timer(1.0, fired, node.get_clock())",
+        spin="node.spin()"))
+    assert [round(sim) for sim, _ in fires] == list(range(1, 11))
+    assert fires[0][1] > 1.4  # nothing before the /clock came (1.5 s of wall time)
+    assert fires[-1][1] - fires[0][1] < 1.5  # ten sim seconds in well under ten of wall time
+
+
+def test_an_rclpy_timer_on_a_sim_time_node_keeps_sim_time(bus):
+    fires = sim_timer_fires(bus, SIM_TIMED.format(
+        imports="import rclpy\nrclpy.init()\nnode = rclpy.create_node('timed')",
+        now="node.get_clock().now().nanoseconds / 1e9",
+        make_timer="node.create_timer(1.0, fired)",
+        spin="rclpy.spin(node)"))
+    assert [round(sim) for sim, _ in fires] == list(range(1, 11))
+    assert fires[0][1] > 1.4
+    assert fires[-1][1] - fires[0][1] < 1.5

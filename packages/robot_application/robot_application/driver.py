@@ -29,7 +29,7 @@ def Driver() -> Node:  # noqa: N802  # the component's name, as a class would ha
     node.create_subscription("nav_msgs/msg/Odometry", "odom", on_odom)
     publisher = node.create_publisher("geometry_msgs/msg/Twist", "cmd_vel")
     command = node.message("geometry_msgs/msg/Twist", linear={"x": speed}, angular={"z": turn})
-    node.create_timer(0.1, lambda: publisher.publish(command))
+    node.create_timer(0.1, lambda: publisher.publish(command), node.get_clock())  # sim time
     node.get_logger().info(f"driving at {speed} m/s, turning at {turn} rad/s")
     return node
 

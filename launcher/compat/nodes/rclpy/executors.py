@@ -130,16 +130,15 @@ class Executor:
                 for timer in node.timers:
                     if timer.is_canceled():
                         continue
-                    next_at = due(timer)
-                    if next_at <= now and is_custom(timer.callback_group) and \
+                    until = due(timer)
+                    if until == 0.0 and is_custom(timer.callback_group) and \
                             not timer.callback_group.can_execute(timer):
                         # (held back by its group, as rclpy's executor does: asked again soon)
-                        soonest = now + HELD_BACK if soonest is None else \
-                            min(soonest, now + HELD_BACK)
-                        continue
-                    if next_at <= now:
-                        return node, take(timer, now), ()
-                    soonest = next_at if soonest is None else min(soonest, next_at)
+                        until = HELD_BACK
+                    elif until == 0.0:
+                        return node, take(timer), ()
+                    if until is not None:  # (None: on sim time, woken by the /clock)
+                        soonest = now + until if soonest is None else min(soonest, now + until)
             for node in nodes:  # then waiting work
                 host = rclpy.node.live_host(node)
                 work = host.next_work(0) if host is not None else None

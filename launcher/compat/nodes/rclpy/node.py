@@ -374,7 +374,8 @@ class Node:
         :param timer_period_sec: the period, in seconds.
         :param callback: called with no arguments each period.
         :param callback_group: the group it runs in.
-        :param clock: accepted for rclpy's signature; periods are on the monotonic clock.
+        :param clock: the clock whose time it keeps (default: the node's, sim time when
+            use_sim_time is true).
         :param autostart: start it now (false: it waits for reset()).
         :return: the Timer.
         """
@@ -393,10 +394,11 @@ class Node:
         """A Rate that sleeps so that a loop runs `frequency` times a second.
 
         :param frequency: loops a second.
-        :param clock: accepted for rclpy's signature.
+        :param clock: the clock whose time it keeps (default: the node's, sim time when
+            use_sim_time is true).
         :return: the Rate.
         """
-        return Rate(frequency, context=self._context)
+        return Rate(frequency, clock=clock or self._clock, context=self._context)
 
     def create_guard_condition(self, callback: Callable[[], Any],
                                callback_group: Any = None) -> GuardCondition:
