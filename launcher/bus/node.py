@@ -223,7 +223,10 @@ class Node:
         if ready:
             min(ready, key=lambda t: t.next).fire()
             return True
-        work = self.host.next_work(wait)
+        work = self.host.next_work(0)
+        if work is None:  # idle: all that was due has run
+            self._clock.caught_up()
+            work = self.host.next_work(wait)
         if work is None:
             return False
         callback, args = work

@@ -30,8 +30,8 @@ class Publisher:
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host = topic, qos, host
         self.space = space or host.space
-        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name),
-                             self.space)
+        self.key = key = keys.topic_key(keys.DOMAIN, topic, self.type_name,
+                                        types.type_hash(self.type_name), self.space)
         # As rmw_zenoh: only a reliable keep-all publisher blocks under congestion; the others
         # drop what a congested link cannot take, so a subscriber that stops reading (a
         # stopped process, a slow link) never stalls the publisher, nor the router's other
@@ -52,8 +52,9 @@ class Publisher:
                 sample_miss_detection=zenoh.ext.MissDetectionConfig(
                     heartbeat=None, sporadic_heartbeat=HEARTBEAT) if qos.reliable else None)
         self._sequence = itertools.count(1)
-        self._gid = os.urandom(16)
-        host.publisher_gids.add(self._gid)
+        self.sent = 0  # the sequence number of the last sample sent to a subscriber (lockstep)
+        self.gid = os.urandom(16)
+        host.publisher_gids.add(self.gid)
         self._write = types.writer(self.type_name)
         self._token = host.announce(keys.PUBLISHER, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)
@@ -80,10 +81,13 @@ class Publisher:
 
     def publish_raw(self, payload: bytes) -> None:
         """Publish a CDR payload as it is (bag play, bridges)."""
-        attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
         with self._lock:  # a callback on Zenoh's thread may race destroy() (a bridge's)
             if self._closed:
                 return
+            sequence = next(self._sequence)
+            if self._matching:  # (one that nobody was there to hear is not waited for)
+                self.sent = sequence
+            attachment = keys.attachment(sequence, time.time_ns(), self.gid)
             (self._latched or self._publisher).put(payload, attachment=attachment)
 
     def get_subscription_count(self) -> int:

@@ -21,6 +21,7 @@ import zenoh.ext
 
 from launcher.bus import keys
 from launcher.bus.host import Host
+from launcher.bus.lockstep import LEDGER
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 
@@ -41,8 +42,9 @@ class Subscription:
         self._turn_queued = False
         self._warned = False
         self.space = space or host.space
-        key = keys.topic_key(keys.DOMAIN, topic, self.type_name, types.type_hash(self.type_name),
-                             self.space)
+        self.key = key = keys.topic_key(keys.DOMAIN, topic, self.type_name,
+                                        types.type_hash(self.type_name), self.space)
+        LEDGER.subscribe(key)
         # its node's own samples are told by their publisher's gid (the attachment's last 16
         # bytes), not by Zenoh's locality: in a component container, nodes share a session
         self._own = host.publisher_gids if remote_only else None
@@ -67,13 +69,15 @@ class Subscription:
         payload = sample.payload.to_bytes()
         if self._inline:
             self._deliver(payload)
-            return
-        with self._lock:
-            self._pending.append(payload)  # full: the oldest goes (KEEP_LAST)
-            if self._turn_queued:
-                return
-            self._turn_queued = True
-        self._host.enqueue(self._take)
+        else:
+            with self._lock:
+                self._pending.append(payload)  # full: the oldest goes (KEEP_LAST)
+                queue_turn = not self._turn_queued
+                self._turn_queued = True
+            if queue_turn:
+                self._host.enqueue(self._take)
+        if LEDGER.enabled:  # (a lockstep waits here: what has come, once it is handled)
+            LEDGER.note(sample.attachment)
 
     def _take(self) -> None:
         """The executor's turn: deliver the oldest waiting sample; queue another turn if more
@@ -104,7 +108,10 @@ class Subscription:
         self._callback(message)
 
     def destroy(self) -> None:
-        self._host.drop(self, self._subscriber, self._token)
+        if self._host.forget(self):
+            LEDGER.unsubscribe(self.key)
+            for item in (self._subscriber, self._token):
+                item.undeclare()
 
 
 class FirstMessage:

@@ -16,6 +16,7 @@ from typing import Any
 
 from launcher.bus import keys
 from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.lockstep import Relay
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.errors import LaunchError
@@ -137,6 +138,7 @@ def setup(node: Node) -> Bridge:
                           "--ros-args -p config_file:=bridge.yaml")
     for entry in entries:
         bridge.add(entry)
+    node.host.adopt(Relay(node.host))  # (a part of a sim's lockstep, while there is one)
     if not bridge.count:  # every entry was refused (each said why, with its place)
         raise LaunchError("nothing to bridge: every entry was left out (see above)")
     node.get_logger().info(f"bridging {bridge.count} of {total} entries")

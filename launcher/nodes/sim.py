@@ -1,4 +1,4 @@
-"""`sim [-v LEVEL] [-r] [-s] [--iterations N] [-z RATE | --rtf FACTOR] [WORLD]`: the world server.
+"""`sim [-v N] [-r] [-s] [--iterations N] [-z RATE|--rtf F|--lockstep] [WORLD]`: the world server.
 
 The flags are `gz sim`'s: `-r` runs at start (otherwise paused until a control request),
 `-s` is the server only: as `gz sim` (launcher's gz), the sim serves its web viewer (the GUI's
@@ -8,7 +8,9 @@ The viewer's view is the world's `--camera NAME`, or follows `--track ENTITY`, o
 entity as `launcher sim snapshot` does.
 `--iterations N` stops after N steps,
 `-z RATE` paces at RATE steps per second (0: as fast as possible), `--rtf` paces at a
-real-time factor instead (default: the world's <real_time_factor>, else 1), `-v` sets the
+real-time factor instead (default: the world's <real_time_factor>, else 1), `--lockstep`
+runs unpaced in lockstep with the nodes on sim time (launcher/bus/lockstep.py; also
+LAUNCHER_SIM_LOCKSTEP=true, or a tick in seconds, where no pacing flag is given), `-v` sets the
 verbosity (0 quiet … 4 debug; default 2, warnings). WORLD is an SDF or MJCF file: a path, a
 file in a resource folder (MUJOCO_SIM_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, …) or a built-in
 world (default: empty.sdf); `.j2` worlds are rendered with `--world-arg NAME=VALUE`.
@@ -27,6 +29,8 @@ from launcher.errors import UsageError, reported
 from launcher.sim import viewer
 
 VERBOSITY = {0: 60, 1: 40, 2: 30, 3: 20, 4: 10}
+LOCKSTEP_TICK = 0.01  # s of sim time a lockstep tick steps
+LOCKSTEP_VARIABLE = "LAUNCHER_SIM_LOCKSTEP"  # as --lockstep, from a launch file's set_env
 
 
 def build_parser() -> Parser:
@@ -78,6 +82,12 @@ def build_parser() -> Parser:
                       help="steps per second of wall time (0: unpaced)")
     pace.add_argument("--rtf", type=float, default=None, metavar="FACTOR",
                       help="real-time factor (1: real time, 0: unpaced)")
+    pace.add_argument("--lockstep", action="store_true",
+                      help="unpaced, as fast as the nodes on sim time follow: each tick of sim "
+                           "time waits until they and the bridges have handled the one before; "
+                           "time stands still while none is there")
+    parser.add_argument("--lockstep-tick", type=float, default=LOCKSTEP_TICK, metavar="SECONDS",
+                        help=f"sim time a lockstep tick steps (default {LOCKSTEP_TICK:g} s)")
     parser.add_argument("--world-arg", action="append", default=[], metavar="NAME=VALUE",
                         help="a value for a .j2 world template (repeatable)")
     parser.add_argument("--seed", type=int, default=0, metavar="N",
@@ -86,6 +96,30 @@ def build_parser() -> Parser:
     parser.add_argument("--state-rate", type=float, default=50.0, metavar="HZ",
                         help="rate of pose/info and model_states in sim time")
     return parser
+
+
+def lockstep_from_environment(unpaced_by_flags: bool) -> float | None:
+    """LOCKSTEP_VARIABLE, as `--lockstep` (true, or a tick in seconds), where no pacing flag
+    was given: what a launch file sets for the sim it starts (`set_env`)."""
+    value = os.environ.get(LOCKSTEP_VARIABLE, "").strip().lower()
+    if not unpaced_by_flags or value in ("", "0", "false", "no", "off"):
+        return None
+    if value in ("1", "true", "yes", "on"):
+        return LOCKSTEP_TICK
+    try:
+        tick = float(value)
+    except ValueError:
+        tick = 0.0
+    if not tick > 0:
+        raise UsageError(f"{LOCKSTEP_VARIABLE}='{value}': expected true, false or a tick in "
+                         "seconds (> 0)")
+    return tick
+
+
+def pacing(rtf: float, lockstep: float | None) -> str:
+    if lockstep is not None:
+        return f"in lockstep with the nodes on sim time, {lockstep:g} s a tick"
+    return "unpaced" if rtf == 0 else f"real-time factor {rtf:g}"
 
 
 def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
@@ -105,6 +139,8 @@ def parse(argv: list[str]) -> tuple[argparse.Namespace, list[str]]:
                         ("--rtf", args.rtf)):
         if value is not None and value < 0:
             parser.error(f"{name} must be >= 0, got {value}")
+    if not args.lockstep_tick > 0:
+        parser.error(f"--lockstep-tick must be > 0 s, got {args.lockstep_tick:g}")
     return args, ros
 
 
@@ -181,6 +217,8 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
 
     path = find_world(args.world or "empty.sdf")
     values = world_values(args.world_arg)
+    lockstep = args.lockstep_tick if args.lockstep else \
+        lockstep_from_environment(args.rate is None and args.rtf is None)
     node = Node("sim", argv=ros, space=keys.SIM)  # off the ROS graph, as gz sim is
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
@@ -189,7 +227,9 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         default_rtf = world.real_time_factor if world.real_time_factor is not None else 1.0
         rtf = args.rtf if args.rtf is not None else \
             (args.rate * timestep if args.rate is not None else default_rtf)
-        server = SimServer(world, node, rtf, args.run, args.state_rate)
+        if lockstep is not None:
+            rtf = 0.0
+        server = SimServer(world, node, rtf, args.run, args.state_rate, lockstep)
         install_signal_handlers(server)  # (before the viewer's URL: a stop after it is clean)
         log = node.get_logger()
         server.start_view = lambda port: start_view(args, log, port, world)
@@ -200,7 +240,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         node.get_logger().info(
             f"world '{world.world_name}' from {path}: timestep {timestep} s, "
             f"{'running' if args.run else 'paused'}, "
-            f"{'unpaced' if rtf == 0 else f'real-time factor {rtf:g}'}")
+            f"{pacing(rtf, lockstep)}")
         server.run(args.iterations)
     finally:
         node.destroy_node()

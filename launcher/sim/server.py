@@ -8,7 +8,8 @@ can hold physics back (each subscription keeps only its last `depth` samples: a 
 flood is the latest command, not a backlog). A control request's `multi_step` is stepped by
 the loop in batches, the bus served between them: the request is answered at once, a later
 request (pause, run, reset, another step) replaces the steps still to go, and more than
-MAX_MULTI_STEP is refused.
+MAX_MULTI_STEP is refused. With `--lockstep` the loop steps one tick at a time, unpaced, each
+once the nodes on sim time and the bridges have handled the one before (bus/lockstep.py).
 
 Topics (sim-native types from the mujoco_sim package, Gazebo's names):
   /clock and /world/<w>/clock                Clock, after every batch of steps (paused: 20 Hz)
@@ -30,6 +31,7 @@ from typing import Any
 
 import mujoco
 
+from launcher.bus.lockstep import Leader
 from launcher.bus.node import Node
 from launcher.bus.wire import clock_cdr
 from launcher.errors import LaunchError
@@ -41,6 +43,8 @@ from launcher.sim.world import World
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
 CALLBACK_BUDGET = 0.002  # s of callbacks between two batches of steps
 MAX_MULTI_STEP = 100_000_000
+LOCKSTEP_REPEAT = 0.05  # s of wall time between two clocks of the same time in a lockstep
+LOCKSTEP_DRAIN = 10_000  # callbacks at most between two lockstep ticks (a flood ends no tick)
 
 
 def route_mujoco_warnings(logger: Any) -> None:
@@ -50,7 +54,9 @@ def route_mujoco_warnings(logger: Any) -> None:
 
 class SimServer:
     def __init__(self, world: World, node: Node, rtf: float, running: bool,
-                 state_rate: float = 50.0) -> None:
+                 state_rate: float = 50.0, lockstep: float | None = None) -> None:
+        """`lockstep`: the tick, in s of sim time, of a lockstep with the nodes on sim time
+        (bus/lockstep.py); None: paced by `rtf`."""
         self.world, self.node, self.transport = world, node, world.transport
         self.view: Any = None  # the web viewer (viewer.py), once show() is given one
         self.log = node.get_logger()
@@ -77,12 +83,19 @@ class SimServer:
             f'<plugin filename="world_state" name="WorldState">'
             f"<update_rate>{state_rate}</update_rate></plugin>", "the sim")])
         self._started = time.monotonic()
+        self.leader: Leader | None = None
+        self.tick_steps = 0
+        if lockstep is not None:
+            self.leader = Leader(node.host, name, self.log)
+            self.tick_steps = max(1, round(lockstep / world.model.opt.timestep))
 
     # --- the loop --------------------------------------------------------------------------
     def run(self, iterations: int | None = None) -> None:
         try:
             self._loop(iterations)
         finally:
+            if self.leader is not None:
+                self.leader.close()
             self.camera.close()
             if self.view is not None:
                 self.view.close()
@@ -110,6 +123,9 @@ class SimServer:
                 elif self.view is not None:  # (a busy bus: the page is still served)
                     self.view.follow(self.world, self.paused)
                 continue
+            if self.leader is not None:
+                self._lockstep_tick(iterations)
+                continue
             due = pacer.due()
             if due == 0:  # ahead of schedule: serve the bus until the next step is due
                 if node.spin_once(pacer.wait_time()) or self.paused or self.stopped:
@@ -128,6 +144,31 @@ class SimServer:
             world.physics.step(batch)
             pacer.stepped(batch)
             self.publish_clock()
+
+    def _lockstep_tick(self, iterations: int | None) -> None:
+        """Wait until the members of the lockstep have handled the last clock (serving the
+        bus, and saying the time again now and then for those that join), apply all that
+        they sent, then step one tick."""
+        world, node, leader = self.world, self.node, self.leader
+        assert leader is not None
+        now = round(world.data.time * 1e9)
+        while not leader.ready(now):
+            if self.paused or self.stopped:
+                return
+            if leader.joined or not node.spin_once(LOCKSTEP_REPEAT):
+                leader.joined = False
+                self.publish_clock()  # (a member that came since hears the time)
+        for _ in range(LOCKSTEP_DRAIN):  # what they sent, before the step
+            if self.stopped or not node.spin_once(0):
+                break
+        left = self.tick_steps
+        if iterations is not None:
+            left = min(left, iterations - world.physics.iterations)
+        while left > 0 and not self.stopped:
+            batch = world.physics.steps_until_update(left)
+            world.physics.step(batch)
+            left -= batch
+        self.publish_clock()
 
     def serve(self) -> None:
         """Run the callbacks that are ready, for up to CALLBACK_BUDGET."""

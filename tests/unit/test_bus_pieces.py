@@ -262,3 +262,37 @@ def test_the_qos_vocabulary_names_profiles_and_policies_once():
                                              "transient_local; got 'sticky'"):
         QoS().with_policies(durability="sticky")
 
+
+
+class _Attachment:
+    def __init__(self, data: bytes) -> None:
+        self.data = data
+
+    def to_bytes(self) -> bytes:
+        return self.data
+
+
+def test_a_lockstep_answer_has_landed_once_what_it_sent_here_has_come():
+    from launcher.bus.lockstep import Ledger
+
+    ledger = Ledger()
+    gid = bytes(range(16))
+    ledger.subscribe("0/cmd_vel/T")
+    sent = [["0/cmd_vel/T", gid.hex(), 3], ["0/rosout/T", bytes(16).hex(), 9]]
+    ledger.note(_Attachment(keys.attachment(2, 0, gid)))
+    assert not ledger.landed(sent)  # the third cmd_vel is still on its way
+    ledger.note(_Attachment(keys.attachment(3, 0, gid)))
+    assert ledger.landed(sent)  # (rosout: not subscribed here, not waited for)
+
+
+def test_a_later_sample_counts_for_an_earlier_one_dropped_on_the_way():
+    from launcher.bus.lockstep import Ledger
+
+    ledger = Ledger()
+    gid = b"g" * 16
+    ledger.subscribe("k")
+    ledger.note(_Attachment(keys.attachment(5, 0, gid)))
+    ledger.note(_Attachment(keys.attachment(4, 0, gid)))  # (late: the highest stays)
+    assert ledger.landed([["k", gid.hex(), 5]])
+    ledger.unsubscribe("k")
+    assert ledger.landed([["k", gid.hex(), 99]])  # no longer subscribed: not waited for

@@ -144,6 +144,8 @@ class Executor:
                 work = host.next_work(0) if host is not None else None
                 if work is not None:
                     return node, work[0], work[1]
+            for node in nodes:  # idle: all that was due has run
+                rclpy.node.caught_up(node)
             ends = [t for t in (deadline, soonest) if t is not None]
             wait = min(ends) - now if ends else None
             if deadline is not None and now >= deadline:

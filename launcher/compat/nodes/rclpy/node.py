@@ -838,6 +838,12 @@ def live_host(node: Node) -> Any:
     return node._host_or_none()
 
 
+def caught_up(node: Node) -> None:
+    """The executor has nothing left to do for the node (a sim in lockstep is told so)."""
+    if node._host_or_none() is not None:
+        node._bus.get_clock().caught_up()
+
+
 def grouped(node: Node, group: CallbackGroup | None, callback: Callable[..., Any],
             entity: Callable[[], Any] = lambda: None) -> Callable[..., Any]:
     """`callback` as `group` (None: the node's default) runs it; see Node._grouped."""
