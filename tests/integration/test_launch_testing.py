@@ -114,6 +114,47 @@ def test_python_m_launch_testing_launch_test_runs_it(ws, examples):
     assert done.returncode == 0, done.stdout + done.stderr
 
 
+EXPECTED_OUTPUT_TEST = """
+import os
+import sys
+import unittest
+
+import launch
+import launch_testing
+import launch_testing.actions
+import launch_testing.tools
+import launch_testing_ros.tools
+
+HERE = os.path.dirname(__file__)
+TALK = "print('pid 42'); print('hello 1'); print('noise'); print('hello 2', flush=True)"
+
+
+def generate_test_description():
+    talker = launch.actions.ExecuteProcess(cmd=[sys.executable, "-c", TALK], output="screen")
+    return launch.LaunchDescription([talker, launch_testing.actions.ReadyToTest()]), \
+        {"talker": talker}
+
+
+class TestTalkerOutput(unittest.TestCase):
+    def test_the_talker_says_what_the_file_expects(self, proc_output, talker):
+        output_filter = launch_testing_ros.tools.basic_output_filter(
+            filtered_rmw_implementation="rmw_zenoh_cpp")
+        proc_output.assertWaitFor(
+            expected_output=launch_testing.tools.expected_output_from_file(
+                path=os.path.join(HERE, "talker")),
+            process=talker, output_filter=output_filter, timeout=10, stream="stdout")
+"""
+
+
+def test_expected_output_from_a_file_through_the_ros_output_filter(ws):
+    """ROS 2's demo packages check their nodes so: launch_testing.tools and
+    launch_testing_ros.tools, the expected lines in a .regex file."""
+    ws.write("talker.regex", "hello \\d\nhello 2\n")
+    path = ws.write("talker_test.py", EXPECTED_OUTPUT_TEST)
+    done = run_test(ws, path)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
 # --- bad inputs ---------------------------------------------------------------------------------
 def test_a_file_without_generate_test_description_is_said_by_name(ws):
     path = ws.write("empty_test.py", "import unittest\n")

@@ -1,4 +1,5 @@
-"""ament_index_python, answered from launcher's package index."""
+"""ament_index_python: packages answered from launcher's package index, resources from the
+ament prefixes (AMENT_PREFIX_PATH)."""
 
 from ament_index_python.packages import (  # noqa: F401
     PackageNotFoundError,
@@ -6,4 +7,10 @@ from ament_index_python.packages import (  # noqa: F401
     get_package_share_directory,
     get_package_share_path,
     get_packages_with_prefixes,
+)
+from ament_index_python.resources import (  # noqa: F401
+    get_resource,
+    get_resources,
+    get_search_paths,
+    has_resource,
 )

@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
-from launch_testing.tools import build_text_match
+from launch_testing.tools.output import remove_ansi_escape_sequences
+from launch_testing.tools.text import build_text_match
 from launch_testing.util import NO_CMD_ARGS, resolveProcesses
 
 EXIT_OK, EXIT_FORCED = 0, 1
 EXIT_SIGINT, EXIT_SIGQUIT, EXIT_SIGKILL, EXIT_SIGSEGV = 130, 131, 137, 139
-_ANSI = re.compile(r"\x1b\[[0-9;]*[A-Za-z]")
 
 
 def assertExitCodes(proc_info: Any, allowable_exit_codes: Sequence[int] = (EXIT_OK,),  # noqa: N802
@@ -46,7 +45,7 @@ def assertInStream(proc_output: Any, expected_output: Any, process: Any,  # noqa
         text = "".join(out.text.decode(errors="replace") for out in proc_output[action]
                        if out.stream == stream)
         if strip_ansi_escape_sequences:
-            text = _ANSI.sub("", text)
+            text = remove_ansi_escape_sequences(text)
         if output_filter is not None:
             text = output_filter(text)
         if matches(text) is not None:

@@ -1,34 +1,11 @@
-"""launch_testing.tools: matching expected text, and starting a process from an active test
-(launch_process, ProcessProxy)."""
+"""launch_testing.tools.process: starting a process from an active test (launch_process) and
+what the test sees of it (ProcessProxy)."""
 
 from __future__ import annotations
 
 import contextlib
 from collections.abc import Callable, Iterator
 from typing import Any
-
-
-def build_text_match(expected: Any) -> Callable[[str], Any]:
-    """A function of a text that is None unless `expected` is in it: a text, a regular
-    expression (searched), or a list of them found one after the other."""
-    if isinstance(expected, str):
-        return lambda text: text.find(expected) if expected in text else None
-    if hasattr(expected, "search"):
-        return expected.search
-    if isinstance(expected, list | tuple):
-        parts = [build_text_match(part) for part in expected]
-
-        def in_order(text: str) -> Any:
-            start = 0
-            for part, expectation in zip(parts, expected, strict=True):
-                found = part(text[start:])
-                if found is None:
-                    return None
-                start += (found.end() if hasattr(found, "end") else found + len(expectation))
-            return start
-
-        return in_order
-    raise ValueError(f"Unknown format for expected text: {expected!r}")
 
 
 class ProcessProxy:
@@ -105,4 +82,4 @@ def launch_process(launch_service: Any, process_action: Any, proc_info: Any, pro
             launch_service.stop_action(process_action)
 
 
-__all__ = ["ProcessProxy", "build_text_match", "launch_process"]
+__all__ = ["ProcessProxy", "launch_process"]
