@@ -16,7 +16,7 @@ from typing import Any
 
 import pytest
 
-MARKER = "launch_test"
+MARKERS = ("launch_test", "rostest")  # launch_testing's, and launch_testing_ros's
 
 
 def _real_launch_testing() -> bool:
@@ -34,8 +34,9 @@ def pytest_addoption(parser: Any) -> None:
 
 
 def pytest_configure(config: Any) -> None:
-    config.addinivalue_line("markers", f"{MARKER}: a generate_test_description function that "
-                                       "is a launch test's entry point")
+    for marker in MARKERS:
+        config.addinivalue_line("markers", f"{marker}: a generate_test_description function "
+                                           "that is a launch test's entry point")
 
 
 def pytest_pycollect_makemodule(module_path: Path, parent: Any) -> Any:
@@ -45,8 +46,9 @@ def pytest_pycollect_makemodule(module_path: Path, parent: Any) -> Any:
 
 
 def _is_launch_test(path: Path) -> bool:
-    """The file defines generate_test_description marked `@pytest.mark.launch_test` (read,
-    not run: nothing of the user's runs to find out)."""
+    """The file defines generate_test_description marked `@pytest.mark.launch_test` (or
+    launch_testing_ros's `@pytest.mark.rostest`; read, not run: nothing of the user's runs
+    to find out)."""
     import ast
 
     try:
@@ -54,7 +56,8 @@ def _is_launch_test(path: Path) -> bool:
     except (OSError, SyntaxError, ValueError):
         return False
     return any(isinstance(node, ast.FunctionDef) and node.name == "generate_test_description"
-               and any(ast.unparse(d).endswith(f"mark.{MARKER}") for d in node.decorator_list)
+               and any(ast.unparse(d).endswith(tuple(f"mark.{m}" for m in MARKERS))
+                       for d in node.decorator_list)
                for node in tree.body)
 
 

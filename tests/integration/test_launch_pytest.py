@@ -294,3 +294,16 @@ def test_sessions_in_parallel_each_hear_only_their_own_launch(ws):
                       "test_delta.py")
     assert done.returncode == 0, done.stdout + done.stderr
     assert "4 passed" in done.stdout
+
+
+def test_an_output_check_that_returns_false_fails_with_the_output(ws):
+    """launch_pytest's assert_output_sync lets a validator that returns False pass; here it
+    fails, saying what the output was."""
+    write_test(ws, PROCESS + """
+@pytest.mark.launch(fixture=launch_description)
+def test_case(dut, launch_context):
+    tools.assert_output_sync(launch_context, dut, lambda out: 'goodbye' in out, timeout=0.5)
+""")
+    done = pytest_run(ws, "test_it.py")
+    assert "1 failed" in done.stdout, done.stdout
+    assert "the stdout of python-1 did not pass <lambda> within 0.5 s; it was:" in done.stdout

@@ -259,6 +259,28 @@ def test_pytest_leaves_a_file_without_the_launch_test_mark_to_itself(ws):
     assert done.returncode == 0 and "1 passed" in done.stdout, done.stdout
 
 
+def test_pytest_runs_a_file_marked_rostest_as_launch_testing_ros_has_it(ws):
+    path = ws.write("test_marked_rostest.py", """
+        import unittest
+        import launch
+        import launch_testing.actions
+        import pytest
+
+        @pytest.mark.rostest
+        def generate_test_description():
+            return launch.LaunchDescription([
+                launch.actions.ExecuteProcess(cmd=["echo", "ros"]),
+                launch_testing.actions.ReadyToTest()])
+
+        class TestEcho(unittest.TestCase):
+            def test_echo(self, proc_output):
+                proc_output.assertWaitFor("ros", stream="stdout", timeout=5)
+        """)
+    done = pytest_run(ws, str(path))
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "1 passed" in done.stdout  # (as a plain module: 'fixture proc_output not found')
+
+
 # --- launch_testing_ros and controller_manager.test_utils --------------------------------------
 TALKER = """
 import rclpy
@@ -423,6 +445,27 @@ class TestEcho(unittest.TestCase):
     def test_says_hi(self, proc_output):
         proc_output.assertWaitFor("hi there", stream="stdout", timeout=3)
 """,
+    "src/talk_pkg/test/test_echo_pytest.py": """import launch
+import launch_pytest
+from launch_pytest.tools import process as process_tools
+import pytest
+
+
+@pytest.fixture
+def echo():
+    return launch.actions.ExecuteProcess(cmd=["echo", "{said}"], cached_output=True)
+
+
+@launch_pytest.fixture
+def launch_description(echo):
+    return launch.LaunchDescription([echo, launch_pytest.actions.ReadyToTest()])
+
+
+@pytest.mark.launch(fixture=launch_description)
+def test_says_hi(echo, launch_context):
+    process_tools.assert_output_sync(launch_context, echo,
+                                     lambda out: out.strip() == "hi there", timeout=5)
+""",
 }
 
 
@@ -438,17 +481,17 @@ def colcon_tested(ws, files: dict[str, str], said: str) -> subprocess.CompletedP
     return ws.run("colcon", "test-result", "--verbose", timeout=60)
 
 
-def test_colcon_test_runs_a_packages_pytest_and_launch_tests(ws):
+def test_colcon_test_runs_a_packages_pytest_launch_and_launch_pytest_tests(ws):
     result = colcon_tested(ws, PACKAGE, "hi there")
     assert result.returncode == 0, result.stdout
-    assert "2 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
+    assert "3 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
 
 
-def test_colcon_test_result_names_a_failing_launch_test(ws):
+def test_colcon_test_result_names_failing_launch_tests(ws):
     result = colcon_tested(ws, PACKAGE, "bye")
     assert result.returncode == 1
-    assert "2 tests, 0 errors, 1 failure, 0 skipped" in result.stdout
-    assert "test_echo_launch" in result.stdout
+    assert "3 tests, 0 errors, 2 failures, 0 skipped" in result.stdout
+    assert "test_echo_launch" in result.stdout and "test_echo_pytest" in result.stdout
 
 
 def test_a_hanging_test_fails_at_the_time_limit_and_leaves_nothing_running(ws):

@@ -4,7 +4,6 @@ shut down when they are done, then the post-shutdown tests."""
 
 from __future__ import annotations
 
-import contextlib
 import threading
 import unittest
 from collections.abc import Callable
@@ -114,18 +113,17 @@ class Worker:
         """Event handlers that record each process's start, output and exit for the tests."""
         from launch_testing.records import ProcessInfo, ProcessOutput
 
+        commands: dict[str, list[str]] = {}  # each process's, by its label
+
         def started(event: Any, _context: Any) -> None:
-            details = {"name": event.label, "cmd": list(event.argv), "cwd": event.cwd,
-                       "pid": event.pid}
-            with contextlib.suppress(AttributeError):  # (an origin that keeps no attributes)
-                event.origin.process_details = details
+            commands[event.label] = list(event.argv)
             self.proc_output.track(event.origin)
             self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.argv),
                                               event.pid))
 
         def exited(event: Any, _context: Any) -> None:
-            cmd = (getattr(event.origin, "process_details", None) or {}).get("cmd", [])
-            self.proc_info.append(ProcessInfo(event.origin, event.label, cmd, event.pid,
+            self.proc_info.append(ProcessInfo(event.origin, event.label,
+                                              commands.get(event.label, []), event.pid,
                                               event.returncode))
 
         def printed(event: Any, _context: Any) -> None:

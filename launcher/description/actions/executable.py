@@ -174,7 +174,18 @@ class ExecuteProcess(Action):
         self._process = process
         self.started(context, process)
 
-    # --- what the Python API's users read (launch_pytest's tests) -----------------------
+    # --- what the Python API's users read (launch tests) ----------------------------------
+    @property
+    def process_details(self) -> dict[str, Any] | None:
+        """Its latest process: name (its label), cmd, cwd, env and pid; None before one
+        starts."""
+        process = getattr(self, "_process", None)
+        if process is None:
+            return None
+        spec = process.spec
+        return {"name": process.label, "cmd": list(spec.argv), "cwd": spec.cwd,
+                "env": dict(spec.env), "pid": process.pid}
+
     @property
     def return_code(self) -> int | None:
         """The exit status of its latest process; None while that runs, or before it starts."""

@@ -44,29 +44,42 @@ def wait_for_stderr_sync(launch_context: Any, execute_process_action: Any,
 def assert_output_sync(launch_context: Any, execute_process_action: Any,
                        validate_output: Callable[[str], Any],
                        timeout: float | None = None) -> None:
-    """Wait until `validate_output` (which asserts) passes on stdout; its assertion if not."""
-    if not wait_for_output_sync(launch_context, execute_process_action,
-                                _passes(validate_output), timeout):
-        validate_output(execute_process_action.get_stdout())
+    """Wait until `validate_output` passes on stdout (it asserts, or returns a boolean); its
+    assertion if it never does."""
+    _assert(wait_for_output_sync, launch_context, execute_process_action, validate_output,
+            timeout, execute_process_action.get_stdout, "stdout")
 
 
 def assert_stderr_sync(launch_context: Any, execute_process_action: Any,
                        validate_output: Callable[[str], Any],
                        timeout: float | None = None) -> None:
     """As assert_output_sync, on stderr."""
-    if not wait_for_stderr_sync(launch_context, execute_process_action,
-                                _passes(validate_output), timeout):
-        validate_output(execute_process_action.get_stderr())
+    _assert(wait_for_stderr_sync, launch_context, execute_process_action, validate_output,
+            timeout, execute_process_action.get_stderr, "stderr")
 
 
-def _passes(validate: Callable[[str], Any]) -> Callable[[str], bool]:
+def _assert(wait: Callable[..., Any], launch_context: Any, action: Any,
+            validate: Callable[[str], Any], timeout: float | None,
+            read: Callable[[], str], stream: str) -> None:
+    """A validator that returns False fails too (launch_pytest's passes it: only an
+    AssertionError counts there, though its examples say a boolean may be returned)."""
     def passes(text: str) -> bool:
         try:
-            validate(text)
+            return validate(text) is not False
         except AssertionError:
             return False
-        return True
-    return passes
+
+    if not wait(launch_context, action, passes, timeout):
+        text = read()
+        if validate(text) is False:  # (one that asserts has raised its own message)
+            raise AssertionError(f"the {stream} of {_name(action)} did not pass "
+                                 f"{getattr(validate, '__name__', 'the check')} within "
+                                 f"{timeout} s; it was:\n{text}")
+
+
+def _name(action: Any) -> str:
+    details = getattr(action, "process_details", None) or {}
+    return details.get("name") or type(action).__name__
 
 
 def _beside_the_loop(function: Callable[..., Any]) -> Callable[..., Any]:
