@@ -494,6 +494,69 @@ def test_colcon_test_result_names_failing_launch_tests(ws):
     assert "test_echo_launch" in result.stdout and "test_echo_pytest" in result.stdout
 
 
+OWN_WORD_TEST = """import sys
+import time
+import unittest
+
+import launch
+import launch_testing.actions
+import pytest
+import rclpy
+from std_msgs.msg import String
+
+TALK = ("import rclpy, sys\\nfrom std_msgs.msg import String\\nrclpy.init()\\n"
+        "node = rclpy.create_node('talker')\\n"
+        "pub = node.create_publisher(String, 'chatter', 10)\\n"
+        "node.create_timer(0.05, lambda: pub.publish(String(data=sys.argv[1])))\\n"
+        "rclpy.spin(node)")
+
+
+@pytest.mark.launch_test
+def generate_test_description():
+    return launch.LaunchDescription([
+        launch.actions.ExecuteProcess(cmd=[sys.executable, "-c", TALK, "{word}"]),
+        launch_testing.actions.ReadyToTest()])
+
+
+class TestOwnWord(unittest.TestCase):
+    def test_only_its_own_talker_is_heard(self):
+        heard = set()
+        rclpy.init()
+        node = rclpy.create_node("listener")
+        node.create_subscription(String, "chatter", lambda m: heard.add(m.data), 10)
+        end = time.monotonic() + 4
+        while time.monotonic() < end:
+            rclpy.spin_once(node, timeout_sec=0.1)
+        rclpy.shutdown()
+        self.assertEqual(heard, {{"{word}"}})
+"""
+
+
+def word_package(name: str, word: str) -> dict[str, str]:
+    return {
+        f"src/{name}/package.xml": PACKAGE["src/talk_pkg/package.xml"].replace("talk_pkg", name),
+        f"src/{name}/setup.py": PACKAGE["src/talk_pkg/setup.py"].replace("talk_pkg", name),
+        f"src/{name}/resource/{name}": "",
+        f"src/{name}/{name}/__init__.py": "",
+        f"src/{name}/test/test_own_word_launch.py": OWN_WORD_TEST.format(word=word),
+    }
+
+
+def test_colcon_test_runs_packages_in_parallel_each_on_a_graph_of_its_own(ws):
+    """Two packages' launch tests publish on the same topic at the same time, and each hears
+    only its own (with no ROS_DOMAIN_ID set)."""
+    for name, text in {**word_package("pkg_a", "alpha"), **word_package("pkg_b", "beta")}.items():
+        path = ws.root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    built = ws.run("colcon", "build", timeout=300)
+    assert built.returncode == 0, built.stdout + built.stderr
+    ws.run("colcon", "test", "--parallel-workers", "2", timeout=300)
+    result = ws.run("colcon", "test-result", "--verbose", timeout=60)
+    assert result.returncode == 0, result.stdout
+    assert "2 tests, 0 errors, 0 failures, 0 skipped" in result.stdout
+
+
 def test_a_hanging_test_fails_at_the_time_limit_and_leaves_nothing_running(ws):
     path = ws.write("hang_test.py", """
         import time
