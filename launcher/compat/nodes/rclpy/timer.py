@@ -10,6 +10,8 @@ from __future__ import annotations
 import time
 from typing import Any
 
+from launcher.bus.timer import Grid
+
 SIM_LOOK = 0.001  # s between looks at sim time while a Rate on it sleeps
 
 
@@ -21,14 +23,11 @@ class Timer:
         self._period_ns = timer_period_ns
         self._canceled = not autostart
         self._last = self._now()
-        self._next = self._last + self._period
+        self._grid = Grid(self._period, self._last)
         self._fire = None  # set by the node: the callback run in its group
 
     def _now(self) -> float:
-        """Seconds on its clock: sim time when that is ROS time on /clock, else monotonic."""
-        if getattr(self._clock, "ros_time_is_active", False):
-            return self._clock.now().nanoseconds / 1e9
-        return time.monotonic()
+        return _seconds(self._clock)
 
     @property
     def timer_period_ns(self) -> int:
@@ -57,11 +56,11 @@ class Timer:
     def reset(self) -> None:
         """Start again: the next call one period from now."""
         self._canceled = False
-        self._next = self._now() + self._period
+        self._grid = Grid(self._period, self._now())
 
     def is_ready(self) -> bool:
         """Whether a call is due now."""
-        return not self._canceled and self._now() >= self._next
+        return not self._canceled and self._now() >= self._grid.next
 
     def time_since_last_call(self) -> int:
         """Nanoseconds since the last call (or the start), on its clock."""
@@ -71,7 +70,7 @@ class Timer:
         """Nanoseconds until the next call on its clock (None when canceled)."""
         if self._canceled:
             return None
-        return int((self._next - self._now()) * 1e9)
+        return int((self._grid.next - self._now()) * 1e9)
 
     def destroy(self) -> None:
         """Stop the timer for good."""
@@ -92,22 +91,26 @@ def bind(timer: Timer, run: Any) -> None:
 def due(timer: Timer) -> float | None:
     """Wall seconds until the timer is due (0: now); None while it waits for sim time to move
     (the `/clock` that moves it is work that wakes the executor)."""
-    now = timer._now()
-    if now < timer._next - timer._period:  # time went back (a sim reset): start again
-        timer._next = now + timer._period
-    if now >= timer._next:
-        return 0.0
-    return None if getattr(timer._clock, "ros_time_is_active", False) else timer._next - now
+    return timer._grid.until(timer._now(), not _on_sim_time(timer._clock))
 
 
 def take(timer: Timer) -> Any:
-    """The executor's part, at a due timer: the next call is the next point of its grid after
-    now, and the callback to run comes back."""
+    """The executor's part, at a due timer: its grid moves on, and the callback to run comes
+    back."""
     now = timer._now()
-    missed = int((now - timer._next) // timer._period)
-    timer._next += timer._period * (max(missed, 0) + 1)
+    timer._grid.advance(now)
     timer._last = now
     return timer._fire
+
+
+def _on_sim_time(clock: Any) -> bool:
+    """The clock is ROS time on /clock (a node's, with use_sim_time true)."""
+    return bool(getattr(clock, "ros_time_is_active", False))
+
+
+def _seconds(clock: Any) -> float:
+    """Now, in seconds on `clock`: sim time when it is on /clock, else the monotonic clock."""
+    return clock.now().nanoseconds / 1e9 if _on_sim_time(clock) else time.monotonic()
 
 
 class Rate:
@@ -118,31 +121,23 @@ class Rate:
     def __init__(self, frequency: float, *, clock: Any = None, context: Any = None) -> None:
         if frequency <= 0:
             raise ValueError("frequency must be > 0")
-        self._period = 1.0 / frequency
         self._clock = clock
-        self._next = self._now() + self._period
+        self._grid = Grid(1.0 / frequency, _seconds(clock))
         self._context = context
-
-    def _now(self) -> float:
-        if getattr(self._clock, "ros_time_is_active", False):
-            return self._clock.now().nanoseconds / 1e9
-        return time.monotonic()
 
     def sleep(self) -> None:
         """Sleep out the rest of the period (ExternalShutdownException at shutdown)."""
         from rclpy.executors import ExternalShutdownException
 
-        sim = getattr(self._clock, "ros_time_is_active", False)
+        sim = _on_sim_time(self._clock)
         while True:
-            left = self._next - self._now()
-            if left <= 0:
+            left = self._grid.until(_seconds(self._clock), True)
+            if not left:
                 break
             if self._context is not None and not self._context.ok():
                 raise ExternalShutdownException()
             time.sleep(SIM_LOOK if sim else min(left, 0.1))
-        now = self._now()
-        missed = int((now - self._next) // self._period)
-        self._next += self._period * (max(missed, 0) + 1)
+        self._grid.advance(_seconds(self._clock))
 
     def destroy(self) -> None:
         """Nothing to release."""
