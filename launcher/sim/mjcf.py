@@ -4,7 +4,9 @@ A file ending `.j2` is rendered first (undefined variables are errors). Direct c
 `<plugin filename="…" name="…">…</plugin>` of `<mujoco>` are launcher plugins (Gazebo's shape),
 which MuJoCo would reject: they are taken out and blanked with the same number of lines, so
 MuJoCo's line numbers still point into the file. `file="model://…"`/`package://` attributes
-are rewritten to absolute paths.
+are rewritten to absolute paths. `<include file="…">` is found relative to the including file
+(then the top file's folder, as MuJoCo looks) or through a URI, and handed to MuJoCo with the
+text, so a model read from a string includes as one read from its file.
 """
 
 from __future__ import annotations
@@ -20,8 +22,11 @@ import mujoco
 
 from launcher.errors import LaunchError
 from launcher.sim.resources import resolve_uri
+from launcher.user_files import read_text
 
 _URI = re.compile(r'(\bfile\s*=\s*")((?:model|package|file)://[^"]*)(")')
+_INCLUDE = re.compile(r'<include\s[^>]*?\bfile\s*=\s*"([^"]*)"')
+MAX_INCLUDES = 1000  # files one model may include, all levels together (a loop ends here)
 
 
 @dataclass
@@ -38,6 +43,7 @@ class Source:
     text: str
     path: Path | None
     plugins: list[PluginConfig] = field(default_factory=list)
+    includes: dict[str, bytes] = field(default_factory=dict)  # as written in file="…"
 
     @property
     def label(self) -> str:
@@ -66,10 +72,35 @@ def read(text: str, path: Path | None, values: Mapping[str, str] | None = None,
     source = Source(text, path)
     _take_plugins(source)
     base = path.parent if path else None
-    source.text = _URI.sub(lambda m: m.group(1) + str(resolve_uri(m.group(2), base,
-                                                                   environ=environ))
-                           + m.group(3), source.text)
+    source.text = _uris(source.text, base, environ)
+    if base is not None:
+        _gather_includes(source, source.text, base, base, environ)
     return source
+
+
+def _uris(text: str, base: Path | None, environ: Mapping[str, str] | None) -> str:
+    return _URI.sub(lambda m: m.group(1) + str(resolve_uri(m.group(2), base, environ=environ))
+                    + m.group(3), text)
+
+
+def _gather_includes(source: Source, text: str, folder: Path, top: Path,
+                     environ: Mapping[str, str] | None) -> None:
+    """Every file `text` includes, and those they include, into `source.includes`."""
+    for written in _INCLUDE.findall(text):
+        if written in source.includes:
+            continue
+        if len(source.includes) >= MAX_INCLUDES:
+            raise LaunchError(f"{source.label}: more than {MAX_INCLUDES} included files "
+                              f"(does a file include itself?)")
+        found = next((p for p in (folder / written, top / written) if p.is_file()), None)
+        if found is None:
+            looked = " and ".join(dict.fromkeys(str(p) for p in (folder / written,
+                                                                 top / written)))
+            raise LaunchError(f"{source.label}: <include file=\"{written}\">: no such file "
+                              f"(looked for {looked})")
+        included = _uris(read_text(found), found.parent, environ)
+        source.includes[written] = included.encode()
+        _gather_includes(source, included, found.parent, top, environ)
 
 
 def _take_plugins(source: Source) -> None:
@@ -112,15 +143,17 @@ def _take_plugins(source: Source) -> None:
     source.text = data.decode()
 
 
-def compile_spec(source: Source) -> mujoco.MjSpec:
-    """Parse MJCF into a spec; MuJoCo's message keeps its line, with the file named."""
+def compile_spec(source: Source, as_written: bool = False) -> mujoco.MjSpec:
+    """Parse MJCF into a spec; MuJoCo's message keeps its line, with the file named.
+    `as_written`: MuJoCo's own defaults where the file is silent (else an integrator the
+    sim's servos need, see below)."""
     try:
-        spec = mujoco.MjSpec.from_string(source.text)
+        spec = mujoco.MjSpec.from_string(source.text, include=source.includes or None)
     except ValueError as exc:
         raise LaunchError(f"{source.label}: MuJoCo could not read it: {_clean(exc)}") from None
     if source.path is not None:
         spec.modelfiledir = str(source.path.parent)
-    if not re.search(r"\bintegrator\s*=", source.text):
+    if not as_written and not re.search(r"\bintegrator\s*=", source.text):
         # Stable with the velocity actuators that wheels and joint servos use; Euler is not.
         spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     return spec
