@@ -58,7 +58,7 @@ __all__ = [
     "TextSubstitution", "ThisLaunchFileDir", "TimerAction", "UnlessCondition",
     "UnsetEnvironmentVariable", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
     "Node", "ComposableNodeContainer", "LoadComposableNodes", "ComposableNode",
-    "FindPackageShare", "FindPackagePrefix", "ParameterValue", "PushRosNamespace",
+    "FindPackageShare", "FindPackagePrefix", "ParameterFile", "ParameterValue", "PushRosNamespace",
     "SetParameter", "SetRemap", "SetUseSimTime", "SetParametersFromFile", "LifecycleNode",
     "EmitEvent", "ChangeState", "OnStateTransition", "matches_action",
 ]
@@ -203,6 +203,14 @@ class ParameterValue:
                         "int, float, bool, List[str|int|float|bool]")
 
 
+class ParameterFile:
+    """A parameters file, as launch_ros has it: `ParameterFile(path, allow_substs=False)`;
+    with `allow_substs` the substitutions written in the file are performed."""
+
+    def __init__(self, param_file: Any, *, allow_substs: Any = False) -> None:
+        self.param_file, self.allow_substs = param_file, allow_substs
+
+
 def Node(*, executable: Any, package: Any = None, name: Any = None, namespace: Any = None,  # noqa: N802
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
          arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (),
@@ -270,6 +278,10 @@ def _parameters(parameters: Sequence[Any]) -> list[Any]:
     for item in parameters:
         if isinstance(item, dict):
             entries.append(_params.ParamEntry(children=_parameter_group(item), group=True))
+        elif isinstance(item, ParameterFile):
+            entries.append(_params.ParamEntry(from_file=to_text(item.param_file),
+                                              allow_substs=to_text(item.allow_substs)
+                                              if item.allow_substs else None))
         else:
             entries.append(_params.ParamEntry(from_file=to_text(item)))
     return entries

@@ -1,3 +1,3 @@
 """launch_ros.parameter_descriptions (launcher.api)."""
 
-from launcher.api import ParameterValue  # noqa: F401
+from launcher.api import ParameterFile, ParameterValue  # noqa: F401
