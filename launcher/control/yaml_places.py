@@ -72,11 +72,21 @@ def key_place(files: list[str], node: str, dotted: str) -> str:
     """`file:line` of `node: ros__parameters: a: b:` for dotted name `a.b`, or ""."""
     parts = dotted.split(".")
     for path, root in _composed(files):
-        found = _descend(root, [node, "ros__parameters", *parts]) or \
-            _descend(root, [f"/{node}", "ros__parameters", *parts])
-        if found is not None:
-            return f"{path}:{found.start_mark.line + 1}"
+        parent = _descend(root, [node, "ros__parameters", *parts[:-1]]) or \
+            _descend(root, [f"/{node}", "ros__parameters", *parts[:-1]])
+        key = _key(parent, parts[-1])
+        if key is not None:
+            return f"{path}:{key.start_mark.line + 1}"
     return ""
+
+
+def _key(node: Any, name: str) -> Any:
+    """The key `name` of a mapping node (its line is the key's, not its value's)."""
+    import yaml
+
+    if not isinstance(node, yaml.MappingNode):
+        return None
+    return next((key for key, _ in node.value if key.value == name), None)
 
 
 def _composed(files: list[str]) -> Iterator[tuple[str, Any]]:
