@@ -28,6 +28,7 @@ TYPES = {
         f"{_HERE}.sensor_broadcasters:IMUSensorBroadcaster",
     "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster":
         f"{_HERE}.sensor_broadcasters:ForceTorqueSensorBroadcaster",
+    "pose_broadcaster/PoseBroadcaster": f"{_HERE}.pose_broadcaster:PoseBroadcaster",
     "position_controllers/GripperActionController": f"{_HERE}.gripper:GripperActionController",
     "effort_controllers/GripperActionController":
         f"{_HERE}.gripper:EffortGripperActionController",
