@@ -18,6 +18,7 @@ _STAMP_WORDS = struct.Struct("<II")
 _SEVEN = struct.Struct("<7d")
 _COUNT = struct.Struct("<I")
 _CLOCK = struct.Struct("<4siIiI?7xQ")
+_ROS_CLOCK = struct.Struct("<4siI")
 
 
 def split_time(seconds: float) -> tuple[int, int]:
@@ -29,6 +30,11 @@ def split_time(seconds: float) -> tuple[int, int]:
 def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
     """mujoco_sim/msg/Clock as CDR, packed directly: it goes out after every step."""
     return _CLOCK.pack(CDR_HEADER, *split_time(sim), *split_time(real), paused, iterations)
+
+
+def ros_clock_cdr(sim: float) -> bytes:
+    """rosgraph_msgs/msg/Clock as CDR (a builtin_interfaces/Time)."""
+    return _ROS_CLOCK.pack(CDR_HEADER, *split_time(sim))
 
 
 def _string(text: str) -> bytes:

@@ -27,7 +27,12 @@ from launcher.errors import LaunchError, did_you_mean
 SIM_PLUGINS = ("gz_ros2_control/GazeboSimSystem", "ign_ros2_control/IgnitionSystem",
                "gazebo_ros2_control/GazeboSystem")
 MOCK_PLUGINS = ("mock_components/GenericSystem", "fake_components/GenericSystem")
-PLUGINS = SIM_PLUGINS + MOCK_PLUGINS
+# mujoco_ros2_control's: the MJCF's own actuators (started by its ros2_control_node)
+MUJOCO_PLUGINS = ("mujoco_ros2_control/MujocoSystemInterface",
+                  "mujoco_ros2_control/MujocoSystem")
+PLUGINS = SIM_PLUGINS + MOCK_PLUGINS + MUJOCO_PLUGINS
+TRANSMISSIONS = ("transmission_interface/SimpleTransmission",
+                 "transmission_interface/DifferentialTransmission")
 TYPES = ("system", "actuator", "sensor")
 
 
@@ -53,6 +58,17 @@ class Component:
 
 
 @dataclass
+class Transmission:
+    """A `<transmission>` of the block: its joints' and actuators' names, roles, mechanical
+    reductions and offsets (transmission_interface's)."""
+
+    name: str
+    plugin: str
+    joints: list[tuple[str, str, float, float]] = field(default_factory=list)  # name, role, …
+    actuators: list[tuple[str, str, float]] = field(default_factory=list)  # name, role, reduction
+
+
+@dataclass
 class Hardware:
     name: str
     type: str
@@ -62,6 +78,7 @@ class Hardware:
     joints: list[Component] = field(default_factory=list)
     sensors: list[Component] = field(default_factory=list)
     gpios: list[Component] = field(default_factory=list)
+    transmissions: list[Transmission] = field(default_factory=list)
 
     @property
     def components(self) -> list[Component]:
@@ -70,6 +87,10 @@ class Hardware:
     @property
     def is_sim(self) -> bool:
         return self.plugin in SIM_PLUGINS
+
+    @property
+    def is_mujoco(self) -> bool:
+        return self.plugin in MUJOCO_PLUGINS
 
     def command_names(self) -> list[str]:
         return [f"{c.name}/{i.name}" for c in self.components for i in c.command_interfaces]
@@ -126,6 +147,32 @@ def _hardware(block: ET.Element, joints: dict[str, ET.Element], text: str, label
             result.sensors.append(_component(element, "sensor", where))
         elif element.tag == "gpio":
             result.gpios.append(_component(element, "gpio", where))
+        elif element.tag == "transmission":
+            result.transmissions.append(_transmission(element, where))
+    return result
+
+
+def _transmission(element: ET.Element, where: str) -> Transmission:
+    name = element.get("name", "")
+    plugin = (element.findtext("plugin") or "").strip()
+    if plugin not in TRANSMISSIONS:
+        raise LaunchError(f"{where}: <transmission name=\"{name}\">: unknown plugin "
+                          f"'{plugin}'; expected {' or '.join(TRANSMISSIONS)}"
+                          f"{did_you_mean(plugin, TRANSMISSIONS)}")
+    result = Transmission(name, plugin)
+    for joint in element.findall("joint"):
+        result.joints.append((joint.get("name", ""), joint.get("role", ""),
+                              _number(joint.findtext("mechanical_reduction") or "1", where),
+                              _number(joint.findtext("offset") or "0", where)))
+    for actuator in element.findall("actuator"):
+        result.actuators.append((actuator.get("name", ""), actuator.get("role", ""),
+                                 _number(actuator.findtext("mechanical_reduction") or "1",
+                                         where)))
+    wanted = 1 if plugin.endswith("SimpleTransmission") else 2
+    if len(result.joints) != wanted or len(result.actuators) != wanted:
+        raise LaunchError(f"{where}: <transmission name=\"{name}\"> ({plugin}) needs "
+                          f"{wanted} joint(s) and {wanted} actuator(s); it has "
+                          f"{len(result.joints)} and {len(result.actuators)}")
     return result
 
 

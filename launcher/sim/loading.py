@@ -42,14 +42,17 @@ class LoadedWorld:
 
 
 def load_world_file(path: Path, values: Mapping[str, str] | None = None,
-                    environ: Mapping[str, str] | None = None) -> LoadedWorld:
+                    environ: Mapping[str, str] | None = None,
+                    as_written: bool = False) -> LoadedWorld:
+    """`as_written`: an MJCF compiled with MuJoCo's own defaults (mjcf.compile_spec)."""
     text = read_text(path)
     if path.name.endswith(".j2"):
         text = mjcf.render_template(text, path, values or {})
     if after_prologue(text).startswith("<sdf"):
         return _from_sdf(sdf.load_world(text, path, environ), path)
     source = mjcf.read(text, path, environ=environ, rendered=True)
-    return LoadedWorld(mjcf.compile_spec(source), str(path), source.plugins, None)
+    return LoadedWorld(mjcf.compile_spec(source, as_written), str(path), source.plugins,
+                       None)
 
 
 def _from_sdf(world: sdf.SdfWorld, path: Path) -> LoadedWorld:

@@ -64,6 +64,14 @@ class PluginHost:
             self.world.append(plugin)
             self.changed()
 
+    def add(self, plugin: Plugin, model: Any, data: Any) -> None:
+        """A world plugin made in code (not from a world file): bound and loaded; one that
+        fails raises, as the program that made it cannot go on without it."""
+        plugin.bind(model, data)
+        plugin.load()
+        self.world.append(plugin)
+        self.changed()
+
     def load(self, plugins: Sequence[Plugin]) -> None:
         for plugin in list(plugins):
             try:

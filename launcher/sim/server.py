@@ -33,7 +33,7 @@ import mujoco
 
 from launcher.bus.lockstep import Leader
 from launcher.bus.node import Node
-from launcher.bus.wire import clock_cdr
+from launcher.bus.wire import clock_cdr, ros_clock_cdr
 from launcher.errors import LaunchError
 from launcher.sim.pacing import Pacer
 from launcher.sim.plugins import config_from
@@ -64,6 +64,8 @@ class SimServer:
         self.paused = not running
         self.stopped = False
         self.steps_to_go = 0  # of a multi_step request
+        self._when_stepped: Any = None  # told (True) when steps_to_go is done, or (False) not
+        self._ros_clocks: list[Any] = []  # rosgraph_msgs/Clock on the ROS graph (add_ros_clock)
         self.pacer = Pacer(world.model.opt.timestep, rtf)
         name = world.world_name
         self._clocks = [node.create_publisher("mujoco_sim/msg/Clock", "/clock"),
@@ -116,6 +118,8 @@ class SimServer:
                     world.physics.step(batch)
                     self.steps_to_go -= batch
                     self.publish_clock()
+                    if not self.steps_to_go:
+                        self._stepped(True)
                 continue
             if self.paused:  # serve the bus; the clock says "paused" 20 times a second
                 if not node.spin_once(0.05):
@@ -170,6 +174,37 @@ class SimServer:
             left -= batch
         self.publish_clock()
 
+    # --- pausing and stepping, for the services of a plugin (mujoco_ros2_control's) ---------
+    def set_paused(self, paused: bool) -> None:
+        """Pause or run; running ends steps still to go (their caller is told so)."""
+        if self.paused and not paused:
+            self.pacer.restart()  # no catching up on the time spent paused
+        self.paused = paused
+        if not paused and self.steps_to_go:
+            self.steps_to_go = 0
+            self._stepped(False)
+        self.publish_clock()
+
+    def step_then(self, steps: int, done: Any) -> None:
+        """Step a paused world `steps` steps, then call `done(True)`; `done(False)` if a
+        later request ends them first (a run, another step, a reset)."""
+        if self.steps_to_go:
+            self._stepped(False)
+        self.steps_to_go, self._when_stepped = steps, done
+
+    def _stepped(self, finished: bool) -> None:
+        done, self._when_stepped = self._when_stepped, None
+        if done is not None:
+            done(finished)
+
+    def add_ros_clock(self) -> None:
+        """/clock as rosgraph_msgs/Clock on the ROS graph too (for a sim started without a
+        bridge, as mujoco_ros2_control's node publishes it)."""
+        from launcher.bus import keys
+
+        self._ros_clocks.append(self.node.create_publisher("rosgraph_msgs/msg/Clock", "/clock",
+                                                           space=keys.ROS))
+
     def serve(self) -> None:
         """Run the callbacks that are ready, for up to CALLBACK_BUDGET."""
         end = time.monotonic() + CALLBACK_BUDGET
@@ -179,6 +214,9 @@ class SimServer:
     def publish_clock(self) -> None:
         if self.view is not None:  # (after every batch, and while paused: rate-limited)
             self.view.follow(self.world, self.paused)
+        for publisher in self._ros_clocks:
+            if publisher.get_subscription_count():
+                publisher.publish_raw(ros_clock_cdr(self.world.data.time))
         wanted = [p for p in self._clocks if p.get_subscription_count()]
         if not wanted:
             return
@@ -233,6 +271,8 @@ class SimServer:
         was_paused = self.paused
         if not (resetting and not request.pause and not steps):
             self.paused = request.pause
+        if self.steps_to_go:
+            self._stepped(False)  # replaced by this request
         self.steps_to_go = steps if self.paused else 0  # replaces what was still to go
         if (was_paused and not self.paused) or request.reset_all or request.reset_time_only:
             self.pacer.restart()

@@ -62,10 +62,12 @@ class World:
 
     @classmethod
     def from_path(cls, path: Path, transport: Transport, values: Mapping[str, str] | None = None,
-                  environ: Mapping[str, str] | None = None, seed: int = 0) -> World:
+                  environ: Mapping[str, str] | None = None, seed: int = 0,
+                  as_written: bool = False) -> World:
         """The world of an SDF or MJCF file (a `.j2` rendered with `values`); what the file
-        holds that launcher leaves out is logged, once each."""
-        loaded = load_world_file(path, values, environ)
+        holds that launcher leaves out is logged, once each. `as_written`: an MJCF with
+        MuJoCo's own defaults."""
+        loaded = load_world_file(path, values, environ, as_written)
         for warning in loaded.warnings:
             transport.logger.warning(warning)
         world = cls(loaded.spec, loaded.label, transport, loaded.plugins, models=loaded.models,

@@ -1,0 +1,279 @@
+"""mujoco_ros2_control_plugins in the sim: the `mujoco_plugins.<name>.type` parameters of the
+`mujoco_ros2_control_node`, each made and given its own sub-namespace (`<name>`, as
+rclcpp's sub-nodes give it: relative topics are `/<name>/<topic>`), updated every control
+cycle after the controllers, as mujoco_ros2_control updates them.
+
+  HeartbeatPublisherPlugin        `mujoco_heartbeat` (std_msgs/String) at `update_rate` Hz
+  FreeJointStatePublisherPlugin   `topic` (free_joint_states) at `publish_rate`: every free
+                                  body (or `body_names`), in the world or `frame_id`'s frame
+  BaseVelocityPlugin              `cmd_vel_topic` drives `body`'s free joint kinematically in
+                                  the plane (clamped, zero after `cmd_timeout`)
+  RangefinderLidarPlugin          `lidar.*`: the MJCF's `<name>-NN` rangefinders as a LaserScan
+
+A type launcher does not provide is refused at start, with the ones it does.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from launcher.errors import LaunchError, did_you_mean
+
+PREFIX = "mujoco_ros2_control_plugins/"
+
+
+class RosPlugin:
+    """One plugin: its instance name, its parameters (`mujoco_plugins.<name>.…`)."""
+
+    def __init__(self, node: Any, world: Any, name: str, where: str) -> None:
+        self.node, self.world, self.name, self.where = node, world, name, where
+        prefix = f"mujoco_plugins.{name}."
+        self.params = {k[len(prefix):]: v for k, v in node.parameters.items()
+                       if k.startswith(prefix)}
+        self.log = node.get_logger()
+
+    def param(self, name: str, default: Any) -> Any:
+        return self.params.get(name, default)
+
+    def topic(self, name: str) -> str:
+        """A relative topic in the plugin's sub-namespace; an absolute one as it is."""
+        return name if name.startswith("/") else f"/{self.name}/{name}"
+
+    def update(self, model: Any, data: Any, now: float) -> None:
+        pass
+
+    def close(self) -> None:
+        pass
+
+
+class Heartbeat(RosPlugin):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.period = 1.0 / float(self.param("update_rate", 1.0))
+        self.publisher = self.node.create_publisher("std_msgs/msg/String",
+                                                    self.topic("mujoco_heartbeat"), 10)
+        self.count, self.last = 0, -math.inf
+
+    def update(self, model: Any, data: Any, now: float) -> None:
+        if now - self.last < self.period - 1e-9:
+            return
+        self.last = now
+        self.publisher.publish(self.node.message(
+            "std_msgs/msg/String", data=f"MuJoCo ROS2 Control Heartbeat #{self.count} | "
+                                         f"Simulation time: {data.time:.6f}s"))
+        self.count += 1
+
+
+def _free_bodies(model: Any) -> dict[str, int]:
+    """Body name → its free joint."""
+    return {model.body(int(model.jnt_bodyid[j])).name: j for j in range(model.njnt)
+            if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE}
+
+
+class FreeJointStates(RosPlugin):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        model = self.world.model
+        free = _free_bodies(model)
+        wanted = list(self.param("body_names", []) or [])
+        for body in wanted:
+            if body not in free:
+                raise LaunchError(f"{self.where}: mujoco_plugins.{self.name}.body_names: "
+                                  f"'{body}' is not a body with a free joint"
+                                  f"{did_you_mean(body, free)}")
+        self.bodies = wanted or list(free)
+        self.frame = str(self.param("frame_id", "") or "")
+        if self.frame and mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.frame) < 0:
+            self.log.error(f"mujoco_plugins.{self.name}.frame_id: no body '{self.frame}'; "
+                           f"publishing in the world frame")
+            self.frame = ""
+        self.period = 1.0 / float(self.param("publish_rate", 50.0))
+        self.publisher = self.node.create_publisher(
+            "mujoco_ros2_control_msgs/msg/FreeJointStateArray",
+            self.topic(str(self.param("topic", "free_joint_states"))), 10)
+        self.last = -math.inf
+
+    def update(self, model: Any, data: Any, now: float) -> None:
+        if now - self.last < self.period - 1e-9 or not self.publisher.get_subscription_count():
+            return
+        self.last = now
+        node, entries = self.node, []
+        frame = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.frame) \
+            if self.frame else -1
+        inverse = np.zeros(4)
+        if frame >= 0:
+            mujoco.mju_negQuat(inverse, data.xquat[frame])
+        for name in self.bodies:
+            body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, name)
+            position, quat = data.xpos[body].copy(), data.xquat[body].copy()
+            joint = _free_bodies(model)[name]
+            dof = int(model.jnt_dofadr[joint])
+            linear = data.qvel[dof:dof + 3].copy()
+            angular = np.zeros(3)
+            mujoco.mju_rotVecQuat(angular, data.qvel[dof + 3:dof + 6], quat)  # to world
+            if frame >= 0:
+                for vector in (linear, angular):
+                    rotated = np.zeros(3)
+                    mujoco.mju_rotVecQuat(rotated, vector, inverse)
+                    vector[:] = rotated
+                relative = np.zeros(3)
+                mujoco.mju_rotVecQuat(relative, position - data.xpos[frame], inverse)
+                position = relative
+                combined = np.zeros(4)
+                mujoco.mju_mulQuat(combined, inverse, quat)
+                quat = combined
+            entry = node.message("mujoco_ros2_control_msgs/msg/FreeJointState", name=name)
+            entry.pose.header.frame_id = entry.twist.header.frame_id = self.frame
+            p, o = entry.pose.pose.position, entry.pose.pose.orientation
+            p.x, p.y, p.z = map(float, position)
+            o.w, o.x, o.y, o.z = map(float, quat)
+            t = entry.twist.twist
+            t.linear.x, t.linear.y, t.linear.z = map(float, linear)
+            t.angular.x, t.angular.y, t.angular.z = map(float, angular)
+            entries.append(entry)
+        message = node.message("mujoco_ros2_control_msgs/msg/FreeJointStateArray",
+                               free_joints=entries)
+        message.header.frame_id = self.frame
+        self.publisher.publish(message)
+
+
+class BaseVelocity(RosPlugin):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        model = self.world.model
+        body = str(self.param("body", "") or "")
+        free = _free_bodies(model)
+        if body not in free:
+            raise LaunchError(f"{self.where}: mujoco_plugins.{self.name}.body: '{body}' is not "
+                              f"a body with a <freejoint/>{did_you_mean(body, free)}: the base "
+                              f"velocity plugin drives a free joint")
+        self.body, self.joint = body, free[body]
+        self.max_linear = float(self.param("max_linear_velocity", math.inf))
+        self.max_yaw = float(self.param("max_yaw_rate", math.inf))
+        self.timeout = float(self.param("cmd_timeout", 0.5))
+        stamped = bool(self.param("use_stamped_twist", False))
+        topic = self.topic(str(self.param("cmd_vel_topic", "cmd_vel")))
+        self.command = (0.0, 0.0, 0.0)
+        self.received = -math.inf
+        self.node.create_subscription(
+            "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist", topic,
+            (lambda m: self._on(m.twist)) if stamped else self._on, 10)
+
+    def _on(self, twist: Any) -> None:
+        values = (twist.linear.x, twist.linear.y, twist.angular.z)
+        if all(math.isfinite(v) for v in values):
+            self.command, self.received = values, time.monotonic()
+
+    def update(self, model: Any, data: Any, now: float) -> None:
+        """Each control cycle: the command (clamped; zero once stale) in the world frame."""
+        vx, vy, wz = self.command if time.monotonic() - self.received <= self.timeout \
+            else (0.0, 0.0, 0.0)
+        speed = math.hypot(vx, vy)
+        if speed > self.max_linear:
+            vx, vy = vx * self.max_linear / speed, vy * self.max_linear / speed
+        wz = min(max(wz, -self.max_yaw), self.max_yaw)
+        xmat = data.xmat[int(model.jnt_bodyid[self.joint])]
+        self.override = (xmat[0] * vx + xmat[1] * vy, xmat[3] * vx + xmat[4] * vy, wz)
+
+    override: tuple[float, float, float] | None = None
+
+    def step(self, model: Any, data: Any) -> None:
+        """Before every physics step, as mujoco_ros2_control applies its staged override."""
+        if self.override is None:
+            return
+        dof = int(model.jnt_dofadr[self.joint])
+        data.qvel[dof], data.qvel[dof + 1], data.qvel[dof + 5] = self.override
+
+
+class RangefinderLidar(RosPlugin):
+    """The MJCF's rangefinders named `<lidar>-<index>`, one LaserScan per `<lidar>` (its
+    parameters `<lidar>.frame_name`, `.min_angle`, `.max_angle`, `.angle_increment`,
+    `.range_min`, `.range_max`, `.laserscan_topic`); a range outside the limits is -1, as
+    mujoco_ros2_control reports it."""
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        model = self.world.model
+        groups: dict[str, dict[int, int]] = {}
+        for i in range(model.nsensor):
+            if int(model.sensor_type[i]) != int(mujoco.mjtSensor.mjSENS_RANGEFINDER):
+                continue
+            name, dash, index = model.sensor(i).name.rpartition("-")
+            if dash and index.isdigit():
+                groups.setdefault(name, {})[int(index)] = int(model.sensor_adr[i])
+        self.lidars = [self._lidar(name, found) for name, found in groups.items()]
+        self.period = 1.0 / float(self.param("lidar_publish_rate", 5.0))
+        self.last = -math.inf
+
+    def _lidar(self, name: str, found: dict[int, int]) -> tuple[Any, ...]:
+        config = {k[len(name) + 1:]: v for k, v in self.params.items()
+                  if k.startswith(f"{name}.")}
+        needed = ("min_angle", "max_angle", "angle_increment")
+        missing = [n for n in needed if n not in config]
+        if missing:
+            raise LaunchError(f"{self.where}: mujoco_plugins.{self.name}: the rangefinders "
+                              f"'{name}-NN' need {', '.join(f'{name}.{m}' for m in missing)}")
+        low, high = float(config["min_angle"]), float(config["max_angle"])
+        step = float(config["angle_increment"])
+        count = int((high - low) / step) + 1 if step > 0 else 0
+        addresses = [found.get(i, 0) for i in range(count)]
+        publisher = self.node.create_publisher(
+            "sensor_msgs/msg/LaserScan", str(config.get("laserscan_topic", "/scan")), 10)
+        limits = (float(config.get("range_min", 0.0)), float(config.get("range_max", math.inf)))
+        return (publisher, addresses, str(config.get("frame_name", name)), low, high, step,
+                limits)
+
+    def update(self, model: Any, data: Any, now: float) -> None:
+        if now - self.last < self.period - 1e-9:
+            return
+        self.last = now
+        for publisher, addresses, frame, low, high, step, (near, far) in self.lidars:
+            if not publisher.get_subscription_count():
+                continue
+            ranges = [float(data.sensordata[a]) for a in addresses]
+            message = self.node.message(
+                "sensor_msgs/msg/LaserScan", angle_min=low, angle_max=high,
+                angle_increment=step, range_min=near, range_max=far,
+                ranges=[r if near <= r <= far else -1.0 for r in ranges])
+            message.header.frame_id = frame
+            sec = int(now)
+            message.header.stamp.sec = sec
+            message.header.stamp.nanosec = int(round((now - sec) * 1e9)) % 1_000_000_000
+            publisher.publish(message)
+
+
+TYPES: dict[str, type[RosPlugin]] = {
+    f"{PREFIX}HeartbeatPublisherPlugin": Heartbeat,
+    f"{PREFIX}FreeJointStatePublisherPlugin": FreeJointStates,
+    f"{PREFIX}BaseVelocityPlugin": BaseVelocity,
+    f"{PREFIX}RangefinderLidarPlugin": RangefinderLidar,
+}
+NOT_YET = (f"{PREFIX}CameraPlugin", f"{PREFIX}ExternalWrenchPlugin",
+           f"{PREFIX}Mujoco3dLidarPlugin")
+
+
+def load_plugins(node: Any, world: Any, where: str) -> list[RosPlugin]:
+    """Every `mujoco_plugins.<name>.type` of the node's parameters, made."""
+    names = sorted({k.split(".")[1] for k in node.parameters
+                    if k.startswith("mujoco_plugins.") and k.endswith(".type")
+                    and k.count(".") == 2})
+    plugins: list[RosPlugin] = []
+    for name in names:
+        kind = str(node.parameters[f"mujoco_plugins.{name}.type"])
+        cls = TYPES.get(kind)
+        if cls is None and kind in NOT_YET:
+            node.get_logger().warning(f"mujoco_plugins.{name}: {kind} is not in launcher yet; "
+                                      f"the sim runs without it")
+            continue
+        if cls is None:
+            known = [*TYPES, *NOT_YET]
+            raise LaunchError(f"{where}: mujoco_plugins.{name}.type: unknown plugin '{kind}'"
+                              f"{did_you_mean(kind, known)} (known: {', '.join(known)})")
+        plugins.append(cls(node, world, name, where))
+        node.get_logger().info(f"mujoco plugin '{name}' ({kind.removeprefix(PREFIX)}) loaded")
+    return plugins

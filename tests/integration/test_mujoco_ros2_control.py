@@ -1,0 +1,282 @@
+"""mujoco_ros2_control's demos unchanged on launcher: its ros2_control_node runs the MJCF scene
+in launcher's sim with controller_manager inside; real spawners, real `launcher topic`,
+`service` and `control` against real processes on a real router. And the bad inputs."""
+
+from __future__ import annotations
+
+import re
+import signal
+import time
+
+import pytest
+
+from tests.conftest import shared
+
+DEMOS = ("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")
+SERVICES = "/mujoco_ros2_control_node"
+
+
+@pytest.fixture
+def demos(ws):
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(shared(*DEMOS))
+    return ws
+
+
+def stop(proc) -> int:
+    proc.send_signal(signal.SIGINT)
+    return proc.wait(30)
+
+
+def numbers(text: str) -> list[float]:
+    return [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", text)]
+
+
+def joints(ws) -> dict[str, float]:
+    done = ws.run("topic", "echo", "/joint_states", "sensor_msgs/msg/JointState", "--once",
+                  timeout=30)
+    assert done.returncode == 0, done.stderr
+    names = re.findall(r"^- (\w+)$", done.stdout.split("position:")[0], re.M)
+    positions = numbers(done.stdout.split("position:")[1].split("velocity:")[0])
+    return dict(zip(names, positions, strict=True))
+
+
+def wait_until(check, timeout: float = 20.0, every: float = 0.3):
+    deadline = time.monotonic() + timeout
+    while True:
+        value = check()
+        if value or time.monotonic() > deadline:
+            return value
+        time.sleep(every)
+
+
+def launch(ws, demo: str, ready: str = "Configured and activated position_controller"):
+    proc = ws.start("launch", "mujoco_ros2_control_demos", demo, "headless:=true",
+                    output="demo.out")
+    ws.wait_for_output(ready, 90, "demo.out")
+    return proc
+
+
+def sim_time(ws) -> float:
+    done = ws.run("topic", "echo", "/clock", "rosgraph_msgs/msg/Clock", "--once", timeout=30)
+    assert done.returncode == 0, done.stderr
+    sec, nanosec = numbers(done.stdout)[:2]
+    return sec + nanosec * 1e-9
+
+
+def call(ws, name: str, type_name: str, request: str) -> str:
+    done = ws.run("service", "call", f"{SERVICES}/{name}",
+                  f"mujoco_ros2_control_msgs/srv/{type_name}", request, timeout=60)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def test_basic_robot_demo_runs_unchanged_and_its_docstring_command_moves_the_arm(demos):
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        demos.wait_for_output("Configured and activated pose_broadcaster", 60, "demo.out")
+        listed = demos.run("control", "list_controllers", timeout=30).stdout
+        for name in ("joint_state_broadcaster", "position_controller", "gripper_controller",
+                     "pose_broadcaster"):
+            assert re.search(rf"{name}\s+\S+\s+active", listed), listed
+        sent = demos.run("topic", "pub", "--once", "/position_controller/commands",
+                         "std_msgs/msg/Float64MultiArray", "data: [0.5, -0.5]")
+        assert sent.returncode == 0, sent.stderr
+        assert wait_until(lambda: abs(joints(demos)["joint1"] - 0.5) < 0.02 and
+                          abs(joints(demos)["joint2"] + 0.5) < 0.02), joints(demos)
+    finally:
+        assert stop(proc) == 130
+
+
+def test_basic_robot_publishes_clock_actuator_states_heartbeat_and_pose(demos):
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        first = sim_time(demos)
+        time.sleep(1.0)
+        assert sim_time(demos) > first + 0.5  # sim time runs at about real time
+        states = demos.run("topic", "echo", "/mujoco_actuators_states",
+                           "sensor_msgs/msg/JointState", "--once", timeout=30)
+        assert "gripper_right_finger_joint" in states.stdout, states  # a passive joint too
+        beat = demos.run("topic", "echo", "/heart_beat_plugin/mujoco_heartbeat",
+                         "std_msgs/msg/String", "--once", timeout=30)
+        assert "MuJoCo ROS2 Control Heartbeat #" in beat.stdout, beat
+        demos.wait_for_output("Configured and activated pose_broadcaster", 60, "demo.out")
+        pose = demos.run("topic", "echo", "/pose_broadcaster/pose",
+                         "geometry_msgs/msg/PoseStamped", "--once", timeout=30)
+        assert "frame_id: ee_link" in pose.stdout, pose
+    finally:
+        assert stop(proc) == 130
+
+
+def test_step_simulation_steps_a_paused_sim_exactly_and_is_refused_while_running(demos):
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        refused = call(demos, "step_simulation", "StepSimulation", "{steps: 10}")
+        assert "success: false" in refused and "pause" in refused, refused
+        assert "success: true" in call(demos, "set_pause", "SetPause", "{paused: true}")
+        before = sim_time(demos)
+        time.sleep(0.5)
+        assert sim_time(demos) == before  # paused: time stands still
+        stepped = call(demos, "step_simulation", "StepSimulation", "{steps: 250}")
+        assert "success: true" in stepped, stepped
+        assert sim_time(demos) == pytest.approx(before + 250 * 0.002, abs=1e-6)
+        zero = call(demos, "step_simulation", "StepSimulation", "{steps: 0}")
+        assert "success: false" in zero, zero
+        assert "success: true" in call(demos, "set_pause", "SetPause", "{paused: false}")
+    finally:
+        assert stop(proc) == 130
+
+
+def test_reset_world_returns_to_the_start_and_to_a_keyframe(demos):
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        demos.run("control", "set_controller_state", "position_controller", "inactive",
+                  timeout=30)
+        moved = call(demos, "reset_world", "ResetWorld",
+                     "{keyframe: start_90}")
+        assert "success: true" in moved, moved
+        assert wait_until(lambda: abs(joints(demos)["joint1"] - 1.57) < 0.05), joints(demos)
+        back = call(demos, "reset_world", "ResetWorld", "{}")
+        assert "success: true" in back, back
+        assert wait_until(lambda: abs(joints(demos)["joint1"]) < 0.05), joints(demos)
+        unknown = call(demos, "reset_world", "ResetWorld", "{keyframe: start_9}")
+        assert "success: false" in unknown and "did you mean ''start_90''" in unknown, unknown
+    finally:
+        assert stop(proc) == 130
+
+
+def test_pid_demo_moves_motor_actuators_through_their_pids(demos):
+    proc = launch(demos, "03_pid_control.launch.py")
+    try:
+        sent = demos.run("topic", "pub", "--once", "/position_controller/commands",
+                         "std_msgs/msg/Float64MultiArray", "data: [0.5, -0.5]")
+        assert sent.returncode == 0, sent.stderr
+        assert wait_until(lambda: abs(joints(demos)["joint1"] - 0.5) < 0.05 and
+                          abs(joints(demos)["joint2"] + 0.5) < 0.05), joints(demos)
+    finally:
+        assert stop(proc) == 130
+
+
+def test_transmissions_demo_moves_the_joints_through_the_differential(demos):
+    proc = launch(demos, "04_transmissions.launch.py")
+    try:
+        sent = demos.run("topic", "pub", "--once", "/position_controller/commands",
+                         "std_msgs/msg/Float64MultiArray", "data: [0.3, -0.2]")
+        assert sent.returncode == 0, sent.stderr
+        assert wait_until(lambda: abs(joints(demos)["joint1"] - 0.3) < 0.05 and
+                          abs(joints(demos)["joint2"] + 0.2) < 0.05), joints(demos)
+    finally:
+        assert stop(proc) == 130
+
+
+def test_base_velocity_demo_drives_the_floating_base(demos):
+    proc = launch(demos, "05_base_velocity_plugin.launch.py",
+                  "Configured and activated arm_position_controller")
+    try:
+        odom = ("/simulator/floating_base_state", "nav_msgs/msg/Odometry")
+        start = numbers(demos.run("topic", "echo", *odom, "--once", "--field",
+                                  "pose.pose.position.x", timeout=30).stdout)[0]
+        sent = demos.run("topic", "pub", "-r", "10", "-t", "15", "/cmd_vel",
+                         "geometry_msgs/msg/Twist", "{linear: {x: 0.5}}", timeout=30)
+        assert sent.returncode == 0, sent.stderr
+        moved = numbers(demos.run("topic", "echo", *odom, "--once", "--field",
+                                  "pose.pose.position.x", timeout=30).stdout)[0]
+        assert moved > start + 0.3, (start, moved)
+    finally:
+        assert stop(proc) == 130
+
+
+# --- bad inputs: ros2_control_node says where and what, and exits -----------------------------
+ARM = """<mujoco model="arm">
+  <worldbody>
+    <body name="link">
+      <joint name="j1" axis="0 1 0"/>
+      <geom type="box" size="0.1 0.1 0.5" pos="0 0 0.5"/>
+    </body>
+  </worldbody>
+  <actuator><position name="j1" joint="j1" kp="100"/></actuator>
+</mujoco>
+"""
+
+
+def robot(model: str, command: str = "position", extra: str = "") -> str:
+    return f"""<robot name="arm">
+  <link name="world"/><link name="link"/>
+  <joint name="j1" type="revolute"><parent link="world"/><child link="link"/>
+    <axis xyz="0 1 0"/><limit lower="-3" upper="3" effort="100" velocity="3"/></joint>
+  <ros2_control name="MujocoSystem" type="system">
+    <hardware><plugin>mujoco_ros2_control/MujocoSystemInterface</plugin>
+      <param name="mujoco_model">{model}</param>{extra}</hardware>
+    <joint name="j1"><command_interface name="{command}"/><state_interface name="position"/>
+    </joint>
+  </ros2_control>
+</robot>"""
+
+
+def node_args(ws, description: str, *files: str) -> list[str]:
+    import yaml
+
+    params = ws.write("description.yaml", yaml.safe_dump(
+        {"/**": {"ros__parameters": {"robot_description": description}}}))
+    args = ["run", "mujoco_ros2_control", "ros2_control_node", "--ros-args"]
+    for path in (params, *files):
+        args += ["--params-file", str(path)]
+    return args
+
+
+def node_run(ws, description: str, *files: str):
+    return ws.run(*node_args(ws, description, *files), timeout=60)
+
+
+def test_an_mjcf_that_does_not_compile_is_named_with_its_line(ws):
+    ws.own_bus()
+    bad = ws.write("arm.xml", ARM.replace('<joint name="j1" axis="0 1 0"/>',
+                                          '<joint name="j1" axis="0 1 0" kind="x"/>'))
+    done = node_run(ws, robot(str(bad)))
+    assert done.returncode == 1
+    assert f"{bad}: MuJoCo could not read it" in done.stderr and "line 4" in done.stderr, \
+        done.stderr
+    assert "Traceback" not in done.stderr
+
+
+def test_a_missing_mujoco_model_is_refused(ws):
+    ws.own_bus()
+    done = node_run(ws, robot("/nowhere/scene.xml"))
+    assert done.returncode == 1
+    assert "mujoco_model '/nowhere/scene.xml' does not exist" in done.stderr, done.stderr
+
+
+def test_an_unknown_plugin_type_is_refused_with_the_nearest_one(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM)
+    plugins = ws.write("plugins.yaml", "/**:\n  ros__parameters:\n    mujoco_plugins:\n"
+                       "      beat:\n        type: mujoco_ros2_control_plugins/"
+                       "HeartbeatPublisherPlugn\n")
+    done = node_run(ws, robot(str(model)), str(plugins))
+    assert done.returncode == 1
+    assert "unknown plugin 'mujoco_ros2_control_plugins/HeartbeatPublisherPlugn'" in \
+        done.stderr and "did you mean 'mujoco_ros2_control_plugins/HeartbeatPublisher" \
+        "Plugin'" in done.stderr, done.stderr
+
+
+def test_a_command_interface_the_actuator_cannot_follow_is_refused(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM)
+    done = node_run(ws, robot(str(model), command="effort"))
+    assert done.returncode == 1
+    assert "joint 'j1': its 'effort' command interface needs a motor" in done.stderr and \
+        "'j1' is a position actuator" in done.stderr, done.stderr
+
+
+def test_a_pid_for_a_joint_the_model_lacks_is_said_at_its_line(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM)
+    pids = ws.write("pids.yaml", "/**:\n  ros__parameters:\n    pid_gains:\n      position:\n"
+                    "        jl:\n          p: 10.0\n")
+    extra = f'<param name="pids_config_file">{pids}</param>'
+    proc = ws.start(*node_args(ws, robot(str(model), extra=extra)), output="node.out")
+    try:
+        ws.wait_for_output("this PID drives nothing", 30, "node.out")
+        out = ws.output("node.out")
+        assert f"{pids}:5: pid_gains.position.jl: the MuJoCo model has no joint" in out, out
+    finally:
+        assert stop(proc) in (0, 130)
