@@ -5,12 +5,12 @@ in launcher's sim with controller_manager inside; real spawners, real `launcher 
 from __future__ import annotations
 
 import re
-import signal
 import time
 
 import pytest
 
 from tests.conftest import shared
+from tests.integration.test_ros2_control import stop, wait_until
 
 DEMOS = ("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")
 SERVICES = "/mujoco_ros2_control_node"
@@ -20,11 +20,6 @@ SERVICES = "/mujoco_ros2_control_node"
 def demos(ws):
     ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(shared(*DEMOS))
     return ws
-
-
-def stop(proc) -> int:
-    proc.send_signal(signal.SIGINT)
-    return proc.wait(30)
 
 
 def numbers(text: str) -> list[float]:
@@ -38,15 +33,6 @@ def joints(ws) -> dict[str, float]:
     names = re.findall(r"^- (\w+)$", done.stdout.split("position:")[0], re.M)
     positions = numbers(done.stdout.split("position:")[1].split("velocity:")[0])
     return dict(zip(names, positions, strict=True))
-
-
-def wait_until(check, timeout: float = 20.0, every: float = 0.3):
-    deadline = time.monotonic() + timeout
-    while True:
-        value = check()
-        if value or time.monotonic() > deadline:
-            return value
-        time.sleep(every)
 
 
 def launch(ws, demo: str, ready: str = "Configured and activated position_controller"):

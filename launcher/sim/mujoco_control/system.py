@@ -78,6 +78,11 @@ class MujocoSystem(Component):
                        for i in j.command_interfaces})
                      for j in info.joints]
         self.mimics = [(j.name, j.mimic) for j in info.joints if j.mimic]
+        self.commands_of = {row[0]: row[5] for row in self.rows}
+        # each coupling with its actuators (None where the model lacks one), found once
+        self.coupled = [(c, [next((a for a in self.actuators if (a.joint == n or a.name == n)
+                                   and a.kind != PASSIVE), None) for n in c.actuator_names])
+                        for c in self.couplings]
         self.sensor_rows = self._sensors()
         self.hold()
 
@@ -209,9 +214,7 @@ class MujocoSystem(Component):
                 actuator.velocity = float(qvel[actuator.dof])
                 actuator.effort = float(force[actuator.dof])
         joint_values: dict[str, list[float]] = {}
-        for coupling in self.couplings:
-            found = [next((a for a in self.actuators if a.joint == n or a.name == n), None)
-                     for n in coupling.actuator_names]
+        for coupling, found in self.coupled:
             if None in found:
                 continue
             values = coupling.to_joints([(a.position, a.velocity, a.effort) for a in found])
@@ -234,16 +237,14 @@ class MujocoSystem(Component):
             handle.value = sign * float(sensordata[index])
 
     def write(self, time: float, period: float) -> None:
-        commands = {row[0]: row[5] for row in self.rows}
+        commands = self.commands_of
         for name, (leader, multiplier, _offset) in self.mimics:
             mine, theirs = commands.get(name, {}), commands.get(leader, {})
             for kind, handle in mine.items():
                 if kind in theirs:
                     handle.value = theirs[kind].value * multiplier
         coupled: set[str] = set()
-        for coupling in self.couplings:
-            found = [next((a for a in self.actuators if (a.joint == n or a.name == n)
-                           and a.kind != PASSIVE), None) for n in coupling.actuator_names]
+        for coupling, found in self.coupled:
             if None in found:
                 continue
             joints = [tuple(_value(commands.get(n, {}), k) for k in (POSITION, VELOCITY,
