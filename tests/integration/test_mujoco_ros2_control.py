@@ -10,7 +10,8 @@ import time
 import pytest
 
 from tests.conftest import shared
-from tests.integration.test_ros2_control import stop, wait_until
+from tests.support.nodes import stop
+from tests.support.waiting import wait_until
 
 DEMOS = ("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")
 SERVICES = "/mujoco_ros2_control_node"

@@ -5,12 +5,13 @@ hardware, and the bad inputs the issue lists. Real processes on a real router.""
 from __future__ import annotations
 
 import re
-import signal
 import time
 
 import pytest
 
 from tests.conftest import shared
+from tests.support.nodes import stop
+from tests.support.waiting import wait_until
 
 DEMOS = ("external", "gz_ros2_control_demos")
 
@@ -21,24 +22,10 @@ def demos(ws):
     return ws
 
 
-def stop(proc) -> int:
-    proc.send_signal(signal.SIGINT)
-    return proc.wait(30)
-
-
 def field(ws, topic: str, type_name: str, path: str) -> list[float]:
     done = ws.run("topic", "echo", topic, type_name, "--once", "--field", path, timeout=30)
     assert done.returncode == 0, done.stderr
     return [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", done.stdout)]
-
-
-def wait_until(check, timeout: float = 20.0, every: float = 0.3):
-    deadline = time.monotonic() + timeout
-    while True:
-        value = check()
-        if value or time.monotonic() > deadline:
-            return value
-        time.sleep(every)
 
 
 def controllers(ws, *extra: str) -> str:
