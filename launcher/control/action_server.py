@@ -1,9 +1,10 @@
-"""An action server on a bus node for controllers that take goals (follow_joint_trajectory,
-gripper_cmd), over the protocol of bus/actions.py (rcl_action's services, topics, states and
-goal table). The controller drives each goal from its update: `accept` decides at the request,
-an accepted goal executes at once (`on_accepted`), `feedback` reports, and `succeed`, `abort`
-and `canceled` end it. Every cancel request is accepted, as ros2_controllers' servers accept
-them: the goal is canceling when `on_cancel` hears of it, and the controller ends it."""
+"""An action server on a bus node for what drives goals from its own loop: controllers that
+take goals (follow_joint_trajectory, gripper_cmd) and the sim's SimulateSteps, over the
+protocol of bus/actions.py (rcl_action's services, topics, states and goal table). The owner
+drives each goal from its update: `accept` decides at the request, an accepted goal executes
+at once (`on_accepted`), `feedback` reports, and `succeed`, `abort` and `canceled` end it.
+Every cancel request is accepted, as ros2_controllers' servers accept them: the goal is
+canceling when `on_cancel` hears of it, and its owner ends it."""
 
 from __future__ import annotations
 

@@ -4,6 +4,7 @@ model frame is, its plugins, and the ids bound to the current model."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -14,6 +15,25 @@ from launcher.sim.transform import IDENTITY, Pose
 
 class SpawnError(LaunchError):
     """An entity cannot be added, found, moved or given that velocity."""
+
+
+class NameInvalid(SpawnError):
+    """A name that cannot name an entity."""
+
+
+class NameTaken(SpawnError):
+    """A name another entity has (and no renaming allowed)."""
+
+
+@dataclass
+class Spawn:
+    """One request to add an entity: a template (templates.py) at a pose (w, x, y, z)."""
+    template: Any
+    name: str
+    position: Sequence[float]
+    quat: Sequence[float]
+    allow_renaming: bool = False
+    joints: Mapping[str, float] | None = None
 
 
 @dataclass
@@ -29,3 +49,5 @@ class Entity:
     qpos: int = -1  # address of its free joint's qpos, -1 if none
     dof: int = -1
     placed: dict[str, Pose] = field(default_factory=dict)  # static roots as loaded
+    spawned: bool = False  # added while the sim runs (not a model of the world file)
+    info: Any = None  # what simulation_interfaces' SetEntityInfo gave it (category, tags, …)

@@ -18,6 +18,9 @@ Topics (sim-native types from the mujoco_sim package, Gazebo's names):
   /world/<w>/model/<m>/joint_state           joint state plugins
 Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/set_pose,
 /world/<w>/state (every entity's pose and twist now, paused or not), /world/<w>/snapshot.
+Spawns that arrive together (creates, the standard API's) are added with one recompile.
+On the ROS graph: simulation_interfaces' services and action, on /gzserver/*
+(sim/simulation_interfaces/).
 """
 
 from __future__ import annotations
@@ -35,10 +38,11 @@ from launcher.bus.lockstep import Leader
 from launcher.bus.node import Node
 from launcher.bus.wire import clock_cdr, ros_clock_cdr
 from launcher.errors import LaunchError
+from launcher.sim import simulation_interfaces
 from launcher.sim.pacing import Pacer
 from launcher.sim.plugins import config_from
 from launcher.sim.snapshot import Camera
-from launcher.sim.world import World
+from launcher.sim.world import Spawn, World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
 CALLBACK_BUDGET = 0.002  # s of callbacks between two batches of steps
@@ -65,13 +69,18 @@ class SimServer:
         self.stopped = False
         self.steps_to_go = 0  # of a multi_step request
         self._when_stepped: Any = None  # told (True) when steps_to_go is done, or (False) not
+        self._step_progress: Any = None  # told the steps done after each batch of them
+        self._steps_asked = 0
         self._ros_clocks: list[Any] = []  # rosgraph_msgs/Clock on the ROS graph (add_ros_clock)
         self.pacer = Pacer(world.model.opt.timestep, rtf)
         name = world.world_name
         self._clocks = [node.create_publisher("mujoco_sim/msg/Clock", "/clock"),
                         node.create_publisher("mujoco_sim/msg/Clock", f"/world/{name}/clock")]
         node.create_service("mujoco_sim/srv/Control", f"/world/{name}/control", self.on_control)
-        node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create", self.on_create)
+        self._spawns: list[tuple[Spawn, Any]] = []  # spawn_soon's, not yet spawned
+        create = node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create",
+                                     self.on_create)
+        create.deferred = True
         node.create_service("mujoco_sim/srv/Remove", f"/world/{name}/remove", self.on_remove)
         node.create_service("mujoco_sim/srv/SetPose", f"/world/{name}/set_pose", self.on_set_pose)
         node.create_service("mujoco_sim/srv/State", f"/world/{name}/state", self.on_state)
@@ -84,6 +93,8 @@ class SimServer:
         world.load_world_plugins(before=[config_from(
             f'<plugin filename="world_state" name="WorldState">'
             f"<update_rate>{state_rate}</update_rate></plugin>", "the sim")])
+        # ROS's standard simulator API (simulation_interfaces) on the ROS graph, as ros_gz's
+        self.standard_api = simulation_interfaces.serve(self)
         self._started = time.monotonic()
         self.leader: Leader | None = None
         self.tick_steps = 0
@@ -106,6 +117,8 @@ class SimServer:
         world, pacer, node = self.world, self.pacer, self.node
         self.publish_clock()
         while not self.stopped:
+            if self._spawns:
+                self._spawn_pending()
             if iterations is not None and world.physics.iterations >= iterations:
                 break
             if self.paused and self.steps_to_go:  # a multi_step, batch by batch
@@ -118,6 +131,9 @@ class SimServer:
                     world.physics.step(batch)
                     self.steps_to_go -= batch
                     self.publish_clock()
+                    if self._step_progress is not None:
+                        self._step_progress(self._steps_asked - self.steps_to_go,
+                                            self.steps_to_go)
                     if not self.steps_to_go:
                         self._stepped(True)
                 continue
@@ -185,17 +201,34 @@ class SimServer:
             self._stepped(False)
         self.publish_clock()
 
-    def step_then(self, steps: int, done: Any) -> None:
+    def step_then(self, steps: int, done: Any, progress: Any = None) -> None:
         """Step a paused world `steps` steps, then call `done(True)`; `done(False)` if a
-        later request ends them first (a run, another step, a reset)."""
+        later request ends them first (a run, another step, a reset, `stop_stepping`).
+        `progress(completed, remaining)` is told after each batch of steps."""
         if self.steps_to_go:
             self._stepped(False)
         self.steps_to_go, self._when_stepped = steps, done
+        self._steps_asked, self._step_progress = steps, progress
+
+    def stop_stepping(self) -> None:
+        """End the steps still to go (their caller is told they did not finish)."""
+        if self.steps_to_go:
+            self.steps_to_go = 0
+            self._stepped(False)
 
     def _stepped(self, finished: bool) -> None:
-        done, self._when_stepped = self._when_stepped, None
+        done, self._when_stepped, self._step_progress = self._when_stepped, None, None
         if done is not None:
             done(finished)
+
+    def reset(self, time: bool, poses: bool) -> None:
+        """Reset the world's time, poses or both (the control service's and the standard
+        API's resets); steps still to go end."""
+        self.world.reset(time=time, poses=poses)
+        self.stop_stepping()
+        if time:
+            self.pacer.restart()
+        self.publish_clock()
 
     def add_ros_clock(self) -> None:
         """/clock as rosgraph_msgs/Clock on the ROS graph too (for a sim started without a
@@ -256,10 +289,9 @@ class SimServer:
 
     # --- services --------------------------------------------------------------------------
     def on_control(self, request: Any, response: Any) -> Any:
-        world = self.world
         if request.reset_all or request.reset_time_only or request.reset_model_only:
-            world.reset(time=request.reset_all or request.reset_time_only,
-                        poses=request.reset_all or request.reset_model_only)
+            self.world.reset(time=request.reset_all or request.reset_time_only,
+                             poses=request.reset_all or request.reset_model_only)
         steps = request.multi_step or (1 if request.step else 0)
         if steps > MAX_MULTI_STEP:
             response.success = False
@@ -282,7 +314,8 @@ class SimServer:
                             "paused" if self.paused else "running")
         return response
 
-    def on_create(self, request: Any, response: Any) -> Any:
+    def on_create(self, request: Any, reply: Any) -> None:
+        response = reply.new_response()
         try:
             templates = self.world.templates
             if request.sdf.strip():
@@ -297,17 +330,43 @@ class SimServer:
             if len(names) != len(values):
                 raise LaunchError(f"{len(names)} joint names but {len(values)} joint "
                                   "positions: give one position per joint")
-            entity = self.world.spawn(template, request.name, position, quat,
-                                      request.allow_renaming,
-                                      dict(zip(names, map(float, values), strict=True)))
         except LaunchError as exc:
             self.log.warning(f"create failed: {exc}")
             response.success, response.message = False, str(exc)
-            return response
-        self.log.info(f"spawned '{entity.name}' from {entity.label}")
-        response.success, response.name = True, entity.name
-        response.message = f"spawned '{entity.name}'"
-        return response
+            reply.send(response)
+            return
+
+        def spawned(entity: Any) -> None:
+            if isinstance(entity, LaunchError):
+                self.log.warning(f"create failed: {entity}")
+                response.success, response.message = False, str(entity)
+            else:
+                response.success, response.name = True, entity.name
+                response.message = f"spawned '{entity.name}'"
+            reply.send(response)
+
+        self.spawn_soon(Spawn(template, request.name, position, quat, request.allow_renaming,
+                              dict(zip(names, map(float, values), strict=True))), spawned)
+
+    # --- spawning in batches -----------------------------------------------------------------
+    def spawn_soon(self, request: Spawn, done: Any) -> None:
+        """Spawn `request` with the others that arrive with it (one recompile for them all,
+        world.spawn_all), then call `done(entity or SpawnError)`."""
+        self._spawns.append((request, done))
+
+    def _spawn_pending(self) -> None:
+        self.serve()  # the requests that came with these join them
+        pending, self._spawns = self._spawns, []
+        results = self.world.spawn_all([request for request, _ in pending])
+        for (_, done), entity in zip(pending, results, strict=True):
+            if not isinstance(entity, LaunchError):  # (a string's label is its first spawn's)
+                source = f" from {entity.label}" if os.path.isfile(entity.label) else ""
+                self.log.info(f"spawned '{entity.name}'{source}")
+            done(entity)
+        added = sum(not isinstance(entity, LaunchError) for entity in results)
+        if added > 1:
+            self.log.info(f"{added} entities spawned with one recompile")
+        self.publish_clock()
 
     def on_remove(self, request: Any, response: Any) -> Any:
         try:

@@ -25,6 +25,10 @@ from launcher.sim.transform import IDENTITY, Pose
 from launcher.user_files import read_text
 
 
+class UnsupportedFormat(LaunchError):
+    """A description in none of the formats the sim reads."""
+
+
 @dataclass
 class Template:
     spec: mujoco.MjSpec
@@ -91,7 +95,7 @@ class Templates:
             return Template(loaded.spec, model.name, label, model.plugins, root=model.root,
                             offset=model.offset, static=model.static, pose=loaded.pose,
                             warnings=loaded.warnings)
-        raise LaunchError(f"{label}: not a model description: expected URDF (<robot>), SDF "
+        raise UnsupportedFormat(f"{label}: not a model description: expected URDF (<robot>), SDF "
                           f"(<sdf>) or MJCF (<mujoco>), found '{stripped[:40]}'")
 
 

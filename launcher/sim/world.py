@@ -21,14 +21,14 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 import mujoco
 
 from launcher.errors import LaunchError, Location, did_you_mean
-from launcher.sim.entity import Entity, SpawnError
+from launcher.sim.entity import Entity, NameInvalid, NameTaken, Spawn, SpawnError
 from launcher.sim.loading import WorldModel, load_world_file
 from launcher.sim.mjcf import PluginConfig
 from launcher.sim.placement import Placement, checked
@@ -42,7 +42,7 @@ from launcher.sim.transform import Pose, pose_from
 from launcher.sim.transport import Transport
 from launcher.user_files import read_text
 
-__all__ = ["Entity", "SpawnError", "World", "world_name"]
+__all__ = ["Entity", "Spawn", "SpawnError", "World", "world_name"]
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
@@ -133,17 +133,25 @@ class World:
                                         self.data)
 
     # --- entities --------------------------------------------------------------------------
-    def unique_name(self, name: str, allow_renaming: bool) -> str:
+    def unique_name(self, name: str, allow_renaming: bool,
+                    taken: Collection[str] = ()) -> str:
+        """`name`, or with allow_renaming the first free `name_N`; `taken`: names given to
+        entities not yet added (the same batch of spawns)."""
         if not _NAME.match(name):
-            raise SpawnError(f"invalid entity name '{name}': use letters, digits and '_' "
-                             "(it prefixes every body, joint and topic of the entity)")
-        if name not in self.entities and not self._name_in_model(name):
+            raise NameInvalid(f"invalid entity name '{name}': use letters, digits and '_' "
+                              "(it prefixes every body, joint and topic of the entity)")
+
+        def free(candidate: str) -> bool:
+            return candidate not in self.entities and candidate not in taken and \
+                not self._name_in_model(candidate)
+
+        if free(name):
             return name
         if not allow_renaming:
-            raise SpawnError(f"an entity named '{name}' already exists; choose another name or "
-                             "set allow_renaming")
+            raise NameTaken(f"an entity named '{name}' already exists; choose another name or "
+                            "set allow_renaming")
         number = 1
-        while f"{name}_{number}" in self.entities or self._name_in_model(f"{name}_{number}"):
+        while not free(f"{name}_{number}"):
             number += 1
         return f"{name}_{number}"
 
@@ -156,49 +164,86 @@ class World:
               joints: Mapping[str, float] | None = None) -> Entity:
         """Add the template as entity `name`; `joints` gives hinge and slide joints their first
         positions (a reset puts them back at zero, as the model has them)."""
-        checked(position, quat)
-        name = self.unique_name(name or template.name, allow_renaming)
+        done = self.spawn_all([Spawn(template, name, position, quat, allow_renaming, joints)])[0]
+        if isinstance(done, SpawnError):
+            raise done
+        return done
+
+    def spawn_all(self, requests: Sequence[Spawn]) -> list[Entity | SpawnError]:
+        """Add several entities with one recompile (each recompile is of the whole model, so
+        ten spawns at once cost about one); each request succeeds or fails alone, and one that
+        fails leaves the world as it was. The entity, or the reason, for each request."""
+        results: list[Entity | SpawnError] = []
+        ready: list[tuple[int, Entity, mujoco.MjSpec, Spawn]] = []
+        taken: set[str] = set()
+        for request in requests:
+            try:
+                entity, child = self._prepare(request, taken)
+            except SpawnError as exc:
+                results.append(exc)
+                continue
+            taken.add(entity.name)
+            ready.append((len(results), entity, child, request))
+            results.append(entity)
+        if not ready:
+            return results
+        frames = []
+        try:
+            for _, entity, child, request in ready:
+                frames.append(self.spec.worldbody.add_frame(pos=list(request.position),
+                                                            quat=list(request.quat)))
+                self.spec.attach(child, frame=frames[-1], prefix=f"{entity.name}/")
+            self.spec.dedup_assets()  # ten copies of a robot share its meshes
+            self.model, self.data = self.spec.recompile(self.model, self.data)
+        except Exception as exc:
+            for frame in frames:
+                self.spec.delete(frame)
+            if len(ready) > 1:  # find the one that breaks it: each alone
+                for index, _, _, request in ready:
+                    results[index] = self.spawn_all([request])[0]
+                return results
+            index, entity, _, request = ready[0]
+            results[index] = SpawnError(f"{request.template.label}: MuJoCo could not add "
+                                        f"'{entity.name}': {' '.join(str(exc).split())}")
+            return results
+        for frame, (_, entity, _, _) in zip(frames, ready, strict=True):
+            entity.anchors = [frame]
+            self.entities[entity.name] = entity
+        self.plugins.changed()
+        self._rebind(self.model, self.data)
+        placed = False
+        for _, entity, _, request in ready:
+            for joint, value in (request.joints or {}).items():
+                index = self.model.joint(f"{entity.name}/{joint}").id
+                self.data.qpos[self.model.jnt_qposadr[index]] = value
+                placed = True
+        if placed:
+            mujoco.mj_forward(self.model, self.data)
+        for _, entity, _, _ in ready:
+            self.plugins.load(entity.plugins)
+        return results
+
+    def _prepare(self, request: Spawn, taken: set[str]) -> tuple[Entity, mujoco.MjSpec]:
+        """The entity a request makes (not yet in the world) and the spec to attach."""
+        template = request.template
+        checked(request.position, request.quat)
+        name = self.unique_name(request.name or template.name, request.allow_renaming, taken)
         for warning in template.warnings:
             if warning not in self._warned:
                 self._warned.add(warning)
                 self.transport.logger.warning(warning)
-        child, roots = _child_of(template, joints or {})
+        child, roots = _child_of(template, request.joints or {})
         root = template.root or roots[0].name
         entity = Entity(name, [], f"{name}/{root}", template.label, offset=template.offset,
-                        roots=[f"{name}/{body.name}" for body in roots])
+                        roots=[f"{name}/{body.name}" for body in roots], spawned=True)
         plugins = [p for p in (self.plugins.make(c, entity) for c in template.plugins) if p]
         for plugin in plugins:
             try:
                 plugin.prepare(child)
             except LaunchError as exc:
                 raise SpawnError(str(exc)) from None
-        entity.anchors = [self._attach(child, name, position, quat, template.label)]
         entity.plugins = plugins
-        self.entities[name] = entity
-        self.plugins.changed()
-        self._rebind(self.model, self.data)
-        if joints:
-            for joint, value in joints.items():
-                index = self.model.joint(f"{name}/{joint}").id
-                self.data.qpos[self.model.jnt_qposadr[index]] = value
-            mujoco.mj_forward(self.model, self.data)
-        self.plugins.load(entity.plugins)
-        return entity
-
-    def _attach(self, child: mujoco.MjSpec, name: str, position: Sequence[float],
-                quat: Sequence[float], label: str) -> Any:
-        """Attach `child` at a frame of its own, prefixed `<name>/`, and recompile keeping the
-        state; on failure the world is as it was. The frame (what removing it deletes)."""
-        frame = self.spec.worldbody.add_frame(pos=list(position), quat=list(quat))
-        try:
-            self.spec.attach(child, frame=frame, prefix=f"{name}/")
-            self.spec.dedup_assets()  # ten copies of a robot share its meshes
-            self.model, self.data = self.spec.recompile(self.model, self.data)
-        except Exception as exc:
-            self.spec.delete(frame)
-            raise SpawnError(f"{label}: MuJoCo could not add '{name}': "
-                             f"{' '.join(str(exc).split())}") from None
-        return frame
+        return entity, child
 
     def spawn_file(self, uri: str, name: str, pose: Sequence[float] = (0, 0, 0, 0, 0, 0),
                    allow_renaming: bool = False) -> Entity:
@@ -208,14 +253,24 @@ class World:
                           allow_renaming)
 
     def remove(self, name: str) -> None:
-        entity = self.entity(name)
-        for anchor in entity.anchors:
-            self.spec.delete(anchor)
+        self.remove_all([name])
+
+    def remove_all(self, names: Sequence[str]) -> None:
+        """Remove these entities with one recompile (an unknown name: SpawnError, nothing
+        removed)."""
+        entities = [self.entity(name) for name in names]
+        if not entities:
+            return
+        for entity in entities:
+            for anchor in entity.anchors:
+                self.spec.delete(anchor)
         model, data = self.spec.recompile(self.model, self.data)
-        del self.entities[name]
+        for entity in entities:
+            del self.entities[entity.name]
         self.plugins.changed()
-        for plugin in entity.plugins:
-            plugin.close()
+        for entity in entities:
+            for plugin in entity.plugins:
+                plugin.close()
         self._rebind(model, data)
 
     def entity(self, name: str) -> Entity:

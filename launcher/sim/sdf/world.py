@@ -58,8 +58,31 @@ def load_world(text: str, path: Path | None, environ: Mapping[str, str] | None =
         add_light(spec, light)
     with context.inside(origin):
         models = _models(spec, world, origin, context)
+    _world_frames(spec, world, context)
     return SdfWorld(spec, spec.modelname, models, plugin_configs(world), rtf, context.warnings,
                     _spherical_coordinates(world))
+
+
+NAMED_POSE_GROUP = 5  # a site group the viewer does not draw
+
+
+def _world_frames(spec: Any, world: Element, context: Context) -> None:
+    """The world's own `<frame>`s, placed in the world frame, as sites of the world body (the
+    standard API's named poses); one placed relative to a model is left out, said once."""
+    for frame in world.findall("frame"):
+        pose = frame.find("pose")
+        anchors = {frame.get("attached_to", ""), pose.get("relative_to", "") if pose is not None
+                   else ""}
+        name = frame.get("name", "")
+        if not name:
+            continue
+        if anchors - {"", "world"}:
+            context.warn(frame, f"world frame '{name}': a frame placed relative to a model is "
+                                "not a named pose yet (only frames in the world frame are)")
+            continue
+        placed = parse_pose(pose)
+        spec.worldbody.add_site(name=name, pos=list(placed.pos), quat=list(placed.quat),
+                                group=NAMED_POSE_GROUP)
 
 
 def _magnetic_field(spec: Any, world: Element) -> None:
