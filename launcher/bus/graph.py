@@ -19,15 +19,24 @@ class TopicInfo:
 
 
 def entities(session: zenoh.Session, timeout: float = 1.0,
-             space: keys.Space = keys.ROS) -> list[keys.Entity]:
+             space: keys.Space = keys.ROS, selector: str = "") -> list[keys.Entity]:
+    """The graph's entities (or those whose tokens match `selector`, a liveliness key
+    expression: a question about one name costs one name's tokens, not the whole graph's)."""
     found = []
-    for reply in session.liveliness().get(f"{space.liveliness}/{keys.DOMAIN}/**",
+    for reply in session.liveliness().get(selector or f"{space.liveliness}/{keys.DOMAIN}/**",
                                           timeout=timeout):
         if reply.ok is not None:
             entity = keys.parse_liveliness(str(reply.ok.key_expr))
             if entity is not None:
                 found.append(entity)
     return found
+
+
+def servers(session: zenoh.Session, service: str, type_name: str, timeout: float = 0.5,
+            space: keys.Space = keys.ROS) -> list[keys.Entity]:
+    """The servers of `service` (any service of `type_name` when it is empty)."""
+    return entities(session, timeout, space,
+                    keys.servers_selector(keys.DOMAIN, service, type_name, space))
 
 
 def topics(session: zenoh.Session, space: keys.Space = keys.ROS) -> dict[str, TopicInfo]:

@@ -149,6 +149,14 @@ def liveliness_key(domain: int, entity: Entity, space: Space = ROS) -> str:
     return "/".join(parts)
 
 
+def servers_selector(domain: int, service: str, type_name: str, space: Space = ROS) -> str:
+    """The liveliness key expression of every server of `service` with `type_name` (a query
+    for one service's servers, not the whole graph's tokens)."""
+    service_part = mangle(service) if service else "*"
+    return "/".join([space.liveliness, str(domain), "*", "*", "*", SERVICE, "*", "*", "*",
+                     service_part, dds_type(type_name), "**"])
+
+
 def parse_liveliness(key: str) -> Entity | None:
     parts = fields(key)
     if parts is None:

@@ -218,9 +218,9 @@ class Client:
     def wait_for_service(self, timeout: float = 5.0) -> bool:
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            if any(e.kind == keys.SERVICE and e.topic == self.name and
-                   e.type_name == self.type_name  # another type by that name will not answer
-                   for e in graph.entities(self._host.graph_session(), 0.5, self.space)):
+            # (a server of another type by that name would not answer: not counted)
+            if graph.servers(self._host.graph_session(), self.name, self.type_name, 0.5,
+                             self.space):
                 return True
             time.sleep(0.05)
         return False

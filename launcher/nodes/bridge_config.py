@@ -16,6 +16,7 @@ type with `/srv/` makes a service.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
@@ -125,8 +126,9 @@ def load_file(path: str, parameters: Mapping[str, Any], types: Types,
     text = read_text(file)
     if file.name.endswith(".j2") or "{{" in text or "{%" in text:
         text = _render(text, file, parameters)
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's, where PyYAML has it
     try:
-        document = yaml.compose(text)
+        document = yaml.compose(text, Loader=loader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         line = f":{mark.line + 1}:{mark.column + 1}" if mark else ""
@@ -138,10 +140,11 @@ def load_file(path: str, parameters: Mapping[str, Any], types: Types,
         raise LaunchError(f"{path}:{document.start_mark.line + 1}: the top level must be a "
                           "list of entries (each starting with '- ')")
     entries = []
+    construct = yaml.SafeLoader("").construct_object  # (values from the nodes composed once)
     for number, node in enumerate(document.value, 1):
         where = f"{path}:{node.start_mark.line + 1}: entry {number}"
         try:
-            raw = yaml.safe_load(yaml.serialize(node))
+            raw = construct(node, deep=True)
             entries.append(parse_entry(raw, where, types, _places(path, node, number)))
         except LaunchError as exc:
             report(f"{exc}; skipped")
@@ -158,13 +161,21 @@ def _places(path: str, node: Any, number: int) -> dict[str, str]:
             for key, value in pairs}
 
 
-def _render(text: str, file: Path, parameters: Mapping[str, Any]) -> str:
+@functools.lru_cache(maxsize=32)
+def _template(text: str) -> Any:
+    """A config's template, compiled once per text (one file serves every robot's bridge)."""
     import jinja2
 
     environment = jinja2.Environment(undefined=jinja2.StrictUndefined,
                                      keep_trailing_newline=True)
+    return environment.from_string(text)
+
+
+def _render(text: str, file: Path, parameters: Mapping[str, Any]) -> str:
+    import jinja2
+
     try:
-        return environment.from_string(text).render(**parameters)
+        return _template(text).render(**parameters)
     except jinja2.UndefinedError as exc:
         raise LaunchError(f"{file}: template error: {exc.message}; give it as a parameter "
                           "of the bridge (-p NAME:=VALUE)") from None

@@ -89,11 +89,9 @@ def find_world(node: Any, deadline: float, timeout: float, service: str = "creat
     from launcher.bus import graph, keys
 
     while True:
-        found = graph.entities(node.graph_session(), 0.5, keys.SIM)
+        found = graph.servers(node.graph_session(), "", type_name, 0.5, keys.SIM)
         worlds = sorted({e.topic.split("/")[2] for e in found
-                         if e.kind == keys.SERVICE and e.topic.startswith("/world/")
-                         and e.topic.endswith(f"/{service}")
-                         and e.type_name == type_name})  # the sim's, not a bridge's
+                         if e.topic.startswith("/world/") and e.topic.endswith(f"/{service}")})
         if len(worlds) == 1:
             return worlds[0]
         if len(worlds) > 1:
