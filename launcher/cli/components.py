@@ -1,8 +1,11 @@
 """The launch's Loader (runtime/composition.py): it asks containers over the bus.
 
 It joins the graph only when a launch has composable nodes, as a node named
-`launch_ros_<pid>` (launch_ros's name for it), from one worker thread per container, so
-requests to one container are sent in order and one slow container does not hold up another.
+`launch_ros_<pid>` (launch_ros's name for it), from one worker thread per container, so one
+slow container does not hold up another. As launch_ros runs each LoadComposableNodes action
+on its own, the loads of several actions go to a container at once (IN_FLIGHT at most; the
+container makes them at once), each action's own loads in their order: fifty robots' nodes
+load in a fraction of the time one after another would take.
 
 launch_ros waits for a container's service for ever, printing nothing; here a container this
 launch started is waited for while it runs (its exit fails what it was asked at once), and any
@@ -28,6 +31,7 @@ WAIT = 30.0  # s for a container not started by this launch to appear
 WAIT_VARIABLE = "LAUNCHER_LOAD_TIMEOUT"
 ANSWER_WAIT = 75.0  # s for one load's answer (the container gives a constructor 60 s)
 CLOSE_WAIT = 3.0  # s the launch's end waits for the workers to leave the bus
+IN_FLIGHT = 32  # actions whose loads one container is sent at once (launch_ros's pool's most)
 
 
 class BusLoader:
@@ -74,6 +78,7 @@ class BusLoader:
     # --- the workers ------------------------------------------------------------------------
     def _serve(self, container: str, work: queue.SimpleQueue[Any]) -> None:
         client = None
+        gate = threading.Semaphore(IN_FLIGHT)
         while not self._cancelled.is_set():
             item = work.get()
             if item is None:  # (close)
@@ -88,10 +93,26 @@ class BusLoader:
                     done(request, "", exc.message)
                 client = None if alive is not None else client
                 continue
+            gate.acquire()
+            self._start(self._load_all, client, requests, done, gate)
+
+    def _start(self, target: Callable[..., None], *args: Any) -> None:
+        thread = threading.Thread(target=target, args=args, daemon=True)
+        with self._lock:
+            self._threads = [t for t in self._threads if t.is_alive()]
+            self._threads.append(thread)
+        thread.start()
+
+    def _load_all(self, client: Any, requests: list[LoadRequest], done: Done,
+                  gate: threading.Semaphore) -> None:
+        """One action's loads, in their order."""
+        try:
             for request in requests:
                 if self._cancelled.is_set():
                     return
                 done(request, *self._load(client, request))
+        finally:
+            gate.release()
 
     def _bus(self, environment: dict[str, str]) -> Any:
         with self._lock:

@@ -63,11 +63,18 @@ class Container:
         self._ids = itertools.count(1)
         self._loaded: dict[int, Loaded] = {}
         self._lock = threading.Lock()
-        node.create_service(LOAD, "~/_container/load_node", self._load)
+        load = node.create_service(LOAD, "~/_container/load_node", self._load_soon)
+        load.deferred = True  # (answered from the load's own thread)
         node.create_service(UNLOAD, "~/_container/unload_node", self._unload)
         node.create_service(LIST, "~/_container/list_nodes", self._list)
 
     # --- services ---------------------------------------------------------------------------
+    def _load_soon(self, request: Any, reply: Any) -> None:
+        """Each load waits for its component's constructor on a thread of its own: several
+        loads are made at once, and the container's node serves on meanwhile."""
+        threading.Thread(target=lambda: reply.send(self._load(request, reply.new_response())),
+                         name="load", daemon=True).start()
+
     def _load(self, request: Any, response: Any) -> Any:
         try:
             loaded = self.load(request)
@@ -163,11 +170,12 @@ class Container:
                               "name or namespace")
 
     def index(self) -> Any:
-        if self._index is None:
-            from launcher.packages.index import PackageIndex
+        with self._lock:  # (loads come at once)
+            if self._index is None:
+                from launcher.packages.index import PackageIndex
 
-            self._index = PackageIndex.from_environment()
-        return self._index
+                self._index = PackageIndex.from_environment()
+            return self._index
 
     def _run(self, loaded: Loaded, component: Any) -> None:
         """The component's thread: make it, then spin its nodes until it ends."""
