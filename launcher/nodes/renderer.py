@@ -166,7 +166,8 @@ class Renderer:
             labels, colours = self.segment(camera, self.render(camera, "segmentation"))
             self.publish(name, "labels_map", self.image(header, labels, "rgb8"))
             self.publish(name, "colored_map", self.image(header, colours, "rgb8"))
-        self.publish(name, "camera_info", self.camera_info(header, camera))
+        if "camera_info" in topics:
+            self.publish(name, "camera_info", self.camera_info(header, camera))
         for key, output in ros:
             self.publish(name, key, self.ros_message(output, camera, stamp, colour, depth))
         if name in self.metrics:
@@ -217,7 +218,9 @@ class Renderer:
             renderer.disable_segmentation_rendering()
         if what == "depth":
             picture = picture.astype(np.float32)
-            picture[picture >= far * 0.999] = np.inf
+            # past the far clip: +inf (gz-sensors'), or the far clip (mujoco_ros2_control's)
+            picture[picture >= far * 0.999] = far if camera.get("beyond_far") == "far" else \
+                np.inf
             picture[picture < near] = -np.inf
             picture = self.finish(camera, picture, 1.0, np.inf)
         elif what == "segmentation":  # (each pixel's object id and type: segment() reads them)

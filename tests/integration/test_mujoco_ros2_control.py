@@ -4,13 +4,15 @@ in launcher's sim with controller_manager inside; real spawners, real `launcher 
 
 from __future__ import annotations
 
+import json
+import math
 import re
 import time
 
 import pytest
 
 from tests.conftest import shared
-from tests.support.nodes import stop
+from tests.support.nodes import node_package, stop
 from tests.support.waiting import wait_until
 
 DEMOS = ("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")
@@ -265,5 +267,123 @@ def test_a_pid_for_a_joint_the_model_lacks_is_said_at_its_line(ws):
         ws.wait_for_output("this PID drives nothing", 30, "node.out")
         out = ws.output("node.out")
         assert f"{pids}:5: pid_gains.position.jl: the MuJoCo model has no joint" in out, out
+    finally:
+        assert stop(proc) in (0, 130)
+
+
+# A node that waits for one message on each topic it is given and prints what it saw.
+PICTURES = """
+import json, sys
+import rclpy
+from rclpy.node import Node
+from sensor_msgs.msg import CameraInfo, Image
+rclpy.init()
+node = Node("camera_probe")
+seen = {}
+def keep(topic):
+    def heard(message):
+        if topic in seen:
+            return
+        if isinstance(message, CameraInfo):
+            seen[topic] = {"frame": message.header.frame_id, "k": list(message.k),
+                           "size": [message.width, message.height]}
+            return
+        width, height = message.width, message.height
+        summary = {"frame": message.header.frame_id, "encoding": message.encoding,
+                   "size": [width, height], "bytes": len(bytes(message.data))}
+        if message.encoding == "32FC1":
+            import array
+            values = array.array("f", bytes(message.data))
+            summary["nearest"], summary["farthest"] = min(values), max(values)
+            summary["finite"] = all(v == v and abs(v) != float("inf") for v in values)
+        seen[topic] = summary
+    return heard
+for spec in sys.argv[1:]:
+    topic, kind = spec.split("=")
+    node.create_subscription(CameraInfo if kind == "info" else Image, topic, keep(topic), 1)
+while len(seen) < len(sys.argv) - 1:
+    rclpy.spin_once(node, timeout_sec=0.1)
+print("SEEN " + json.dumps(seen), flush=True)
+"""
+
+
+def pictures(ws, *topics: str, trigger: str = "") -> dict:
+    """One message of each `TOPIC=image|info`, summed up (a `trigger` service called once
+    the probe listens)."""
+    node_package(ws, "camera_probe", {"probe.py": PICTURES})
+    probe = ws.start("run", "camera_probe", "probe.py", *topics, output="probe.out")
+    try:
+        if trigger:
+            time.sleep(2.0)
+            done = ws.run("service", "call", trigger, "std_srvs/srv/Trigger", timeout=30)
+            assert done.returncode == 0 and "success: true" in done.stdout, done.stderr
+        assert probe.wait(90) == 0, ws.output("probe.out")
+    finally:
+        if probe.poll() is None:
+            probe.kill()
+    line = next(x for x in ws.output("probe.out").splitlines() if x.startswith("SEEN "))
+    return json.loads(line[5:])
+
+
+def test_the_camera_plugin_gives_colour_aligned_depth_and_camera_info(demos):
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        seen = pictures(demos, "/camera/color/image_raw=image",
+                        "/camera/aligned_depth_to_color/image_raw=image",
+                        "/camera/color/camera_info=info")
+    finally:
+        assert stop(proc) in (0, 130)
+    colour = seen["/camera/color/image_raw"]
+    depth = seen["/camera/aligned_depth_to_color/image_raw"]
+    info = seen["/camera/color/camera_info"]
+    assert colour == {"frame": "camera_color_optical_frame", "encoding": "rgb8",
+                      "size": [640, 480], "bytes": 640 * 480 * 3}
+    assert depth["encoding"] == "32FC1" and depth["size"] == [640, 480] and depth["finite"]
+    # the floor in metres, up to the far clip where the camera sees nothing
+    assert 0.05 < depth["nearest"] < depth["farthest"] == pytest.approx(50.0, rel=1e-3)
+    focal = 240 / math.tan(math.radians(58) / 2)  # the camera's fovy: 58°
+    assert info["size"] == [640, 480] and info["frame"] == "camera_color_optical_frame"
+    assert info["k"] == pytest.approx([focal, 0, 320, 0, focal, 240, 0, 0, 1])
+
+
+EYE = ARM.replace('<body name="link">', '<camera name="eye" pos="2 0 0.5" xyaxes="0 1 0 0 0 1"'
+                  ' resolution="64 48"/>\n    <body name="link">')
+CAMERA_PLUGIN = """/**:
+  ros__parameters:
+    mujoco_plugins:
+      mujoco_camera_plugin:
+        type: mujoco_ros2_control_plugins/CameraPlugin
+        camera_publish_rate: 5.0
+        {camera}:
+          policy: polled
+          image_topic: /eye/image
+          depth_topic: /eye/depth
+          info_topic: /eye/info
+"""
+
+
+def test_a_polled_camera_draws_once_per_trigger(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", EYE)
+    plugins = ws.write("plugins.yaml", CAMERA_PLUGIN.format(camera="eye"))
+    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    try:
+        ws.wait_for_output("camera 'eye' (polled, 64x48)", 60, "node.out")
+        seen = pictures(ws, "/eye/image=image", trigger="/mujoco_camera_plugin/eye/trigger")
+    finally:
+        assert stop(proc) in (0, 130)
+    assert seen["/eye/image"]["size"] == [64, 48]
+
+
+def test_camera_settings_for_a_camera_the_model_lacks_are_said_at_their_line(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", EYE)
+    plugins = ws.write("plugins.yaml", CAMERA_PLUGIN.format(camera="eyes"))
+    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    try:
+        out = ws.wait_for_output("these settings are unused", 60, "node.out")
+        assert f"{plugins}:8: mujoco_plugins.mujoco_camera_plugin.eyes: the MuJoCo model has " \
+               "no camera 'eyes' (did you mean 'eye'?)" in out, out
+        ws.wait_for_output("camera 'eye' (streaming, 64x48)", 30, "node.out")  # runs on
     finally:
         assert stop(proc) in (0, 130)

@@ -9,6 +9,8 @@ cycle after the controllers, as mujoco_ros2_control updates them.
   BaseVelocityPlugin              `cmd_vel_topic` drives `body`'s free joint kinematically in
                                   the plane (clamped, zero after `cmd_timeout`)
   RangefinderLidarPlugin          `lidar.*`: the MJCF's `<name>-NN` rangefinders as a LaserScan
+  CameraPlugin                    the MJCF's cameras: colour, aligned depth and camera_info
+                                  (camera_plugin.py; imported only where one is configured)
 
 A type launcher does not provide is refused at start, with the ones it does.
 """
@@ -253,25 +255,33 @@ TYPES: dict[str, type[RosPlugin]] = {
     f"{PREFIX}BaseVelocityPlugin": BaseVelocity,
     f"{PREFIX}RangefinderLidarPlugin": RangefinderLidar,
 }
-NOT_YET = (f"{PREFIX}CameraPlugin", f"{PREFIX}ExternalWrenchPlugin",
-           f"{PREFIX}Mujoco3dLidarPlugin")
+CAMERA = f"{PREFIX}CameraPlugin"
+NOT_YET = (f"{PREFIX}ExternalWrenchPlugin", f"{PREFIX}Mujoco3dLidarPlugin")
 
 
-def load_plugins(node: Any, world: Any, where: str) -> list[RosPlugin]:
-    """Every `mujoco_plugins.<name>.type` of the node's parameters, made."""
+def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = None
+                 ) -> list[RosPlugin]:
+    """Every `mujoco_plugins.<name>.type` of the node's parameters, made (`files`: the
+    parameter files, to name where a setting is written)."""
     names = sorted({k.split(".")[1] for k in node.parameters
                     if k.startswith("mujoco_plugins.") and k.endswith(".type")
                     and k.count(".") == 2})
     plugins: list[RosPlugin] = []
     for name in names:
         kind = str(node.parameters[f"mujoco_plugins.{name}.type"])
+        if kind == CAMERA:
+            from launcher.sim.mujoco_control.camera_plugin import CameraPlugin
+
+            plugins.append(CameraPlugin(node, world, name, where, files=files))
+            node.get_logger().info(f"mujoco plugin '{name}' (CameraPlugin) loaded")
+            continue
         cls = TYPES.get(kind)
         if cls is None and kind in NOT_YET:
             node.get_logger().warning(f"mujoco_plugins.{name}: {kind} is not in launcher yet; "
                                       f"the sim runs without it")
             continue
         if cls is None:
-            known = [*TYPES, *NOT_YET]
+            known = [*TYPES, CAMERA, *NOT_YET]
             raise LaunchError(f"{where}: mujoco_plugins.{name}.type: unknown plugin '{kind}'"
                               f"{did_you_mean(kind, known)} (known: {', '.join(known)})")
         plugins.append(cls(node, world, name, where))

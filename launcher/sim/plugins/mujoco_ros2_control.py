@@ -75,7 +75,8 @@ class MujocoRos2Control(Plugin):
                                                         STATE_TOPIC, 100)
         self._odometry(log)
         self.services = SimServices(self.mujoco_node, self.server, self.sim, self._after_reset)
-        self.plugins = load_plugins(self.mujoco_node, self.sim, self.config.where)
+        self.plugins = load_plugins(self.mujoco_node, self.sim, self.config.where,
+                                    [*files, *pid_files])
         self.every_step = [p for p in self.plugins if hasattr(p, "step")]
         self.cycle = _Cycle()
         self.next_update = 0.0
