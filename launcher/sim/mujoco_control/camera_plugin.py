@@ -23,7 +23,7 @@ from typing import Any
 
 from launcher.control.yaml_places import key_place
 from launcher.errors import LaunchError, did_you_mean
-from launcher.sim.mujoco_control.ros_plugins import RosPlugin
+from launcher.sim.mujoco_control.ros_plugin import RosPlugin
 from launcher.sim.sensors.rendering import rendering_of
 
 PARAMETERS = "mujoco_plugins.mujoco_camera_plugin."

@@ -10,7 +10,7 @@ cycle after the controllers, as mujoco_ros2_control updates them.
                                   the plane (clamped, zero after `cmd_timeout`)
   RangefinderLidarPlugin          `lidar.*`: the MJCF's `<name>-NN` rangefinders as a LaserScan
   CameraPlugin                    the MJCF's cameras: colour, aligned depth and camera_info
-                                  (camera_plugin.py; imported only where one is configured)
+                                  (camera_plugin.py)
 
 A type launcher does not provide is refused at start, with the ones it does.
 """
@@ -25,32 +25,10 @@ import mujoco
 import numpy as np
 
 from launcher.errors import LaunchError, did_you_mean
+from launcher.sim.mujoco_control.camera_plugin import CameraPlugin
+from launcher.sim.mujoco_control.ros_plugin import RosPlugin
 
 PREFIX = "mujoco_ros2_control_plugins/"
-
-
-class RosPlugin:
-    """One plugin: its instance name, its parameters (`mujoco_plugins.<name>.…`)."""
-
-    def __init__(self, node: Any, world: Any, name: str, where: str) -> None:
-        self.node, self.world, self.name, self.where = node, world, name, where
-        prefix = f"mujoco_plugins.{name}."
-        self.params = {k[len(prefix):]: v for k, v in node.parameters.items()
-                       if k.startswith(prefix)}
-        self.log = node.get_logger()
-
-    def param(self, name: str, default: Any) -> Any:
-        return self.params.get(name, default)
-
-    def topic(self, name: str) -> str:
-        """A relative topic in the plugin's sub-namespace; an absolute one as it is."""
-        return name if name.startswith("/") else f"/{self.name}/{name}"
-
-    def update(self, model: Any, data: Any, now: float) -> None:
-        pass
-
-    def close(self) -> None:
-        pass
 
 
 class Heartbeat(RosPlugin):
@@ -270,8 +248,6 @@ def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = No
     for name in names:
         kind = str(node.parameters[f"mujoco_plugins.{name}.type"])
         if kind == CAMERA:
-            from launcher.sim.mujoco_control.camera_plugin import CameraPlugin
-
             plugins.append(CameraPlugin(node, world, name, where, files=files))
             node.get_logger().info(f"mujoco plugin '{name}' (CameraPlugin) loaded")
             continue
