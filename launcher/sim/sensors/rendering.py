@@ -23,7 +23,6 @@ import mujoco
 import numpy as np
 
 from launcher.bus.qos import LATCHED, QoS
-from launcher.sim.plugins.label import labels_of
 
 RENDERER_VARIABLE = "LAUNCHER_RENDERER"  # "none": the sim starts no renderer of its own
 
@@ -85,6 +84,9 @@ class Rendering:
         size = mujoco.mj_sizeModel(model)
         buffer = np.empty(size, dtype=np.uint8)
         mujoco.mj_saveModel(model, None, buffer)
+        from launcher.sim.plugins.label import labels_of  # (its import loads sim/sdf/: here,
+        # not at the top, so that a camera plugin may be imported before the SDF loader)
+
         settings = [camera.settings() for camera in self.cameras.values()]
         self.model_publisher.publish(self.sim.transport.message(
             "mujoco_sim/msg/RenderModel", version=self.version, cameras=json.dumps(settings),
