@@ -8,6 +8,7 @@ Rate, keep the monotonic clock.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from typing import Any
 
 from launcher.bus.qos import QoS
@@ -30,11 +31,15 @@ class Time:
 
 
 class Clock:
-    def __init__(self, node: Any, use_sim_time: bool) -> None:
+    def __init__(self, node: Any, use_sim_time: bool,
+                 sim_time: Callable[[], float] | None = None) -> None:
+        """`sim_time`: the sim's own time (seconds), for a node inside the sim: read when
+        asked, nothing subscribed (the sim's /clock would come back to it through the bus)."""
         self.use_sim_time = use_sim_time
         self._sim_ns = 0
         self._follower: Any = None  # its node's part in a sim's lockstep (lockstep.py)
-        if use_sim_time:
+        self._source = sim_time if use_sim_time else None
+        if use_sim_time and sim_time is None:
             from launcher.bus.lockstep import Follower
 
             node.create_subscription("rosgraph_msgs/msg/Clock", "/clock", self._on_clock,
@@ -46,10 +51,17 @@ class Clock:
         if self._follower is not None:
             self._follower.clock(self._sim_ns)
 
+    @property
+    def source(self) -> Callable[[], float] | None:
+        """The sim's own time this clock reads (a node inside the sim), or None."""
+        return self._source
+
     def caught_up(self) -> None:
         """The node's executor has nothing left to do (a sim in lockstep is told so)."""
         if self._follower is not None:
             self._follower.caught_up()
 
     def now(self) -> Time:
+        if self._source is not None:
+            return Time(round(self._source() * 1e9))
         return Time(self._sim_ns if self.use_sim_time else time.time_ns())

@@ -60,9 +60,12 @@ class Parameter:
 class Node:
     def __init__(self, name: str, *, namespace: str = "", argv: list[str] | None = None,
                  session: zenoh.Session | None = None, parameter_services: bool = True,
-                 space: keys.Space = keys.ROS) -> None:
+                 space: keys.Space = keys.ROS,
+                 sim_time: Callable[[], float] | None = None) -> None:
         """`space` keys.SIM makes a node of the simulator's own side (the sim, the `gz`
-        tools): off the ROS graph; an entity may still say where it goes (`space=`)."""
+        tools): off the ROS graph; an entity may still say where it goes (`space=`).
+        `sim_time`: a node inside the sim reads sim time from the sim itself (seconds), not
+        from /clock, when use_sim_time is true."""
         within = components.current()  # made by a component container: its arguments
         if within is not None:
             argv, session = within.argv, within.session
@@ -100,7 +103,8 @@ class Node:
             from launcher.bus.parameters import serve  # rcl_interfaces types: only here
 
             serve(self)
-        self._clock = Clock(self, bool(self.params.values.get("use_sim_time", False)))
+        self._clock = Clock(self, bool(self.params.values.get("use_sim_time", False)),
+                            sim_time)
 
     def _asked_to_shut_down(self, query: Any) -> None:
         """`rosnode kill`: the process ends as on Ctrl-C (rospy's and rclpy's shutdown, the

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Sequence
+from typing import Any
 
 CDR_HEADER = b"\x00\x01\x00\x00"  # CDR, little-endian
 _STAMP = struct.Struct("<iI")
@@ -35,6 +36,24 @@ def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
 def ros_clock_cdr(sim: float) -> bytes:
     """rosgraph_msgs/msg/Clock as CDR (a builtin_interfaces/Time)."""
     return _ROS_CLOCK.pack(CDR_HEADER, *split_time(sim))
+
+
+def image_cdr(sec: int, nanosec: int, frame_id: str, height: int, width: int, encoding: str,
+              step: int, data: Any) -> bytearray:
+    """sensor_msgs/msg/Image (and the sim's Image, the same layout) as CDR, the pixels (a
+    C-contiguous buffer of `height * step` bytes) copied once: a camera's frames are megabytes
+    each, and the general serializer copies them several times."""
+    size = len(memoryview(data).cast("B"))
+    head = bytearray(CDR_HEADER)
+    head += _STAMP.pack(sec, nanosec)
+    head += _string(frame_id)
+    head += b"\0" * (-(len(head) - 4) % 4)
+    head += _COUNT.pack(height) + _COUNT.pack(width)
+    head += _string(encoding)
+    head += b"\0"  # is_bigendian
+    head += b"\0" * (-(len(head) - 4) % 4)
+    head += _COUNT.pack(step) + _COUNT.pack(size)
+    return head + memoryview(data).cast("B")  # (one copy, none zero-filled first)
 
 
 def _string(text: str) -> bytes:

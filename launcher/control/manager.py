@@ -130,7 +130,8 @@ class ControllerManager:
         argv += ["-p", "use_sim_time:=true"]
         for remap in self.remaps:
             argv += ["-r", remap]
-        node = Node(name, namespace=self.node.namespace, argv=argv, session=self.node.session)
+        node = Node(name, namespace=self.node.namespace, argv=argv, session=self.node.session,
+                    sim_time=self.node.get_clock().source)  # (in the sim: its own time)
         node.spin_with(self.node)
         return node
 

@@ -23,12 +23,13 @@ from launcher.arguments import Parser
 from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
-from launcher.bus.wire import split_time
+from launcher.bus.wire import image_cdr, split_time
 from launcher.errors import reported
 from launcher.sim.sensors.metrics import MESSAGE as METRICS
 from launcher.sim.sensors.metrics import SUFFIX as METRICS_STREAM
 from launcher.sim.sensors.metrics import Metrics
 from launcher.sim.sensors.noise import generator
+from launcher.sim.sensors.offscreen import Offscreen
 from launcher.sim.sensors.pictures import (
     Lens,
     add_noise,
@@ -65,7 +66,8 @@ class Renderer:
         self.noise: dict[str, Any] = {}  # the generators of the cameras with <noise>
         self.lenses: dict[str, Lens] = {}  # the cameras with a <distortion>
         self.publishers: dict[tuple[str, str], Any] = {}
-        self.contexts: dict[tuple[int, int], Any] = {}
+        self.contexts: dict[tuple[int, int], Any] = {}  # mujoco.Renderers (segmentation)
+        self.drawers: dict[tuple[int, int], Offscreen] = {}  # colour and depth
         self.wanted: list[str] = []
         self.drawn = self.dropped = self.sequence = 0
         self.classes: dict[str, type] = {}
@@ -108,6 +110,9 @@ class Renderer:
         self.noise = {name: self.noise.get(name) or generator(c["seed"], c["name"])
                       for name, c in cameras.items() if any(c["noise"])}
         self.contexts.clear()  # (they hold the old model)
+        for drawer in self.drawers.values():
+            drawer.close()
+        self.drawers.clear()
         self.say_wanted()
 
     def say_wanted(self) -> None:
@@ -194,34 +199,40 @@ class Renderer:
         clip) or segmentation (int32 H×W×2: each pixel's object id and type). A camera with a
         lens is drawn wider, then seen through it (finish)."""
         found = self.lenses.get(camera["camera"])
-        renderer = self.context(found.width, found.height) if found else \
-            self.context(camera["width"], camera["height"])
+        width, height = (found.width, found.height) if found else \
+            (camera["width"], camera["height"])
+        camera_id = self.model.camera(camera["camera"]).id
         if found:
-            camera_id = self.model.camera(camera["camera"]).id
             nominal, self.model.cam_fovy[camera_id] = \
                 float(self.model.cam_fovy[camera_id]), found.fovy
         near, far = (camera["depth_near"], camera["depth_far"]) if what == "depth" else \
             (camera["near"], camera["far"])
         extent = max(float(self.model.stat.extent), 1e-9)
         self.model.vis.map.znear, self.model.vis.map.zfar = near / extent, min(far, 1e9) / extent
-        if what == "depth":
-            renderer.enable_depth_rendering()
-        elif what == "segmentation":
-            renderer.enable_segmentation_rendering()
         try:
-            renderer.update_scene(self.data, camera=camera["camera"])
-            picture = renderer.render()
+            if what == "segmentation":
+                renderer = self.context(width, height)
+                renderer.enable_segmentation_rendering()
+                try:
+                    renderer.update_scene(self.data, camera=camera_id)
+                    picture = renderer.render()
+                finally:
+                    renderer.disable_segmentation_rendering()
+            elif what == "depth":
+                picture = self.offscreen(width, height).depth(self.data, camera_id)
+            else:
+                picture = self.offscreen(width, height).colour(self.data, camera_id)
         finally:
             if found:
                 self.model.cam_fovy[camera_id] = nominal
-            renderer.disable_depth_rendering()
-            renderer.disable_segmentation_rendering()
         if what == "depth":
-            picture = picture.astype(np.float32)
             # past the far clip: +inf (gz-sensors'), or the far clip (mujoco_ros2_control's)
-            picture[picture >= far * 0.999] = far if camera.get("beyond_far") == "far" else \
-                np.inf
-            picture[picture < near] = -np.inf
+            if camera.get("beyond_far") == "far":
+                np.minimum(picture, far, out=picture)
+            else:
+                picture[picture >= far * 0.999] = np.inf
+            if picture.min() < near:  # (rare: one pass to look, a second only then)
+                picture[picture < near] = -np.inf
             picture = self.finish(camera, picture, 1.0, np.inf)
         elif what == "segmentation":  # (each pixel's object id and type: segment() reads them)
             picture = self.finish(camera, picture, 0.0, -1)
@@ -247,18 +258,30 @@ class Renderer:
         return picture
 
     def context(self, width: int, height: int) -> Any:
-        """A mujoco.Renderer of that size (one GL context each), made once."""
+        """A mujoco.Renderer of that size, made once: segmentation maps (its decoding of
+        the segmented picture)."""
         import mujoco
 
         found = self.contexts.get((width, height))
         if found is None:
-            self.model.vis.global_.offwidth = max(self.model.vis.global_.offwidth, width)
-            self.model.vis.global_.offheight = max(self.model.vis.global_.offheight, height)
+            self._fit(width, height)
             found = self.contexts[(width, height)] = mujoco.Renderer(self.model, height, width)
-            if len(self.contexts) == 1:
+        return found
+
+    def offscreen(self, width: int, height: int) -> Offscreen:
+        """MuJoCo's renderer on a context of that size, made once: colour and depth."""
+        found = self.drawers.get((width, height))
+        if found is None:
+            self._fit(width, height)
+            found = self.drawers[(width, height)] = Offscreen(self.model, width, height)
+            if len(self.drawers) == 1:
                 self.logger.info(f"drawing the cameras of world '{self.world}' with "
                                  f"{os.environ.get('MUJOCO_GL', 'egl')}: {_gl_renderer()}")
         return found
+
+    def _fit(self, width: int, height: int) -> None:
+        self.model.vis.global_.offwidth = max(self.model.vis.global_.offwidth, width)
+        self.model.vis.global_.offheight = max(self.model.vis.global_.offheight, height)
 
     # --- messages ------------------------------------------------------------------------------
     def message(self, type_name: str, **fields: Any) -> Any:
@@ -286,9 +309,8 @@ class Renderer:
                 (grey * 257).astype("<u2")
         height, width = picture.shape[:2]
         picture = np.ascontiguousarray(picture)
-        return self.message("mujoco_sim/msg/Image", header=header, height=height,
-                                 width=width, encoding=encoding, is_bigendian=0,
-                                 step=picture.strides[0], data=picture.tobytes())
+        return image_cdr(header.stamp.sec, header.stamp.nanosec, header.frame_id, height,
+                         width, encoding, picture.strides[0], picture)
 
     def points(self, header: Any, camera: dict[str, Any], depth: Any, colour: Any) -> Any:
         """The depth image as points in the sensor frame (x ahead, y left, z up), with the
@@ -352,7 +374,11 @@ class Renderer:
         return self.publishers[(name, stream)].get_subscription_count() > 0
 
     def publish(self, name: str, stream: str, message: Any) -> None:
-        self.publishers[(name, stream)].publish(message)
+        """A message, or an image already packed as CDR (image())."""
+        if isinstance(message, bytearray):
+            self.publishers[(name, stream)].publish_raw(message)
+        else:
+            self.publishers[(name, stream)].publish(message)
 
 
 def _streams(camera: dict[str, Any]) -> list[str]:

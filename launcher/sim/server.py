@@ -178,6 +178,8 @@ class SimServer:
             if leader.joined or not node.spin_once(LOCKSTEP_REPEAT):
                 leader.joined = False
                 self.publish_clock()  # (a member that came since hears the time)
+            if self._spawns:  # (a spawn asked for meanwhile is not held up by the tick)
+                self._spawn_pending()
         for _ in range(LOCKSTEP_DRAIN):  # what they sent, before the step
             if self.stopped or not node.spin_once(0):
                 break

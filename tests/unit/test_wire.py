@@ -40,3 +40,16 @@ def test_the_joint_state_reader_reads_what_rosbags_writes_and_caches_names():
         sec, nanosec, read_names, read_positions = reader.read(payload)
         assert (sec, nanosec, read_names) == (12, 34, names)
         assert list(read_positions) == positions
+
+
+def test_the_packed_image_is_the_cdr_rosbags_makes():
+    from launcher.bus.wire import image_cdr
+
+    pixels = np.arange(2 * 3 * 4, dtype=np.float32).reshape(2, 3 * 4 // 4, 4)[..., 0]
+    pixels = np.ascontiguousarray(pixels)
+    payload = image_cdr(3, 9, "cam_o", 2, 3, "32FC1", 12, pixels)
+    message = registry().deserialize(bytes(payload), "sensor_msgs/msg/Image")
+    assert (message.height, message.width, message.encoding, message.step) == (2, 3, "32FC1", 12)
+    assert message.header.frame_id == "cam_o" and message.header.stamp.nanosec == 9
+    assert np.frombuffer(bytes(message.data), np.float32).tolist() == pixels.ravel().tolist()
+    assert bytes(registry().serialize(message, "sensor_msgs/msg/Image")) == bytes(payload)

@@ -51,8 +51,9 @@ class MujocoRos2Control(Plugin):
         sim_node = self.server.node
         files = [s for kind, s in ros_args.parse(self.argv).parameter_sources if kind == "file"]
         base = self.argv if "--ros-args" in self.argv else ["--ros-args", *self.argv]
+        now = lambda: float(self.data.time)  # noqa: E731  # (the sim's own time)
         self.node = Node("controller_manager", argv=[*base, "-p", "use_sim_time:=true"],
-                         session=sim_node.session)
+                         session=sim_node.session, sim_time=now)
         self.node.spin_with(sim_node)
         extra = ["-p", "use_sim_time:=true"]
         pid_file = self.block.params.get("pids_config_file", "").strip()
@@ -60,7 +61,7 @@ class MujocoRos2Control(Plugin):
         for path in pid_files:
             extra = ["--params-file", path, *extra]
         self.mujoco_node = Node("mujoco_ros2_control_node", argv=[*base, *extra],
-                                session=sim_node.session)
+                                session=sim_node.session, sim_time=now)
         self.mujoco_node.spin_with(sim_node)
         log = self.mujoco_node.get_logger()
         pids = pids_from(self.mujoco_node.parameters)

@@ -282,7 +282,7 @@ class GzRos2Control(Plugin):
         namespace = self.namespace if not self.namespace or self.namespace.startswith("/") \
             else f"/{self.namespace}"
         self.node = Node(self.manager_name, namespace=namespace, argv=argv,
-                         session=sim_node.session)
+                         session=sim_node.session, sim_time=lambda: float(self.data.time))
         self.node.spin_with(sim_node)
         self.components = [SimSystem(b, self) if b.is_sim else make_mock(b) for b in self.blocks]
         try:
