@@ -1,5 +1,6 @@
-"""rviz configs as Foxglove layouts (nodes/rviz/layout.py): ros_gz_sim_demos' configs, in
-place, each converted and checked against the .rviz file as read here."""
+"""rviz configs as Foxglove layouts (nodes/rviz/layout.py): ros_gz_sim_demos' and
+mujoco_ros2_control_demos' configs, in place, each converted and checked against the .rviz
+file as read here."""
 
 from __future__ import annotations
 
@@ -12,22 +13,24 @@ import yaml
 from launcher.nodes.rviz import layout
 from tests.conftest import launcher_argv, shared
 
-CONFIGS = ("camera.rviz", "diff_drive.rviz", "gpu_lidar_bridge.rviz", "imu.rviz")
+CONFIGS = [("ros_gz_sim_demos", "rviz", name) for name in
+           ("camera.rviz", "diff_drive.rviz", "gpu_lidar_bridge.rviz", "imu.rviz")] + \
+    [("mujoco_ros2_control", "mujoco_ros2_control_demos", "config", "test_robot.rviz")]
 
 
 def displays(document: dict) -> list[tuple[str, str | None]]:
     """(class's last part, topic) of each display, as the test reads the file."""
     out = []
     for display in document["Visualization Manager"]["Displays"]:
-        topic = display.get("Topic")
+        topic = display.get("Topic", display.get("Description Topic"))
         out.append((display["Class"].rsplit("/", 1)[-1],
                     topic.get("Value") if isinstance(topic, dict) else topic))
     return out
 
 
-@pytest.mark.parametrize("name", CONFIGS)
-def test_ros_gz_sim_demos_configs_convert_with_their_frame_panels_and_topics(name):
-    path = shared("external", "ros_gz_sim_demos", "rviz", name)
+@pytest.mark.parametrize("place", CONFIGS, ids=lambda place: place[-1])
+def test_the_demos_configs_convert_with_their_frame_panels_and_topics(place):
+    path = shared("external", *place)
     document = yaml.safe_load(path.read_text())
     made, unmapped = layout.convert(layout.read(path))
     assert unmapped == []
@@ -47,6 +50,11 @@ def test_ros_gz_sim_demos_configs_convert_with_their_frame_panels_and_topics(nam
             assert topic in images
         elif kind == "Imu":
             assert f"{topic}.linear_acceleration.x" in plotted
+        elif kind == "TF":  # (the 3D panel draws every frame of /tf)
+            continue
+        elif kind == "RobotModel":
+            assert any(layer["layerId"] == "foxglove.Urdf" and layer["topic"] == topic
+                       for layer in three_d["layers"].values())
         else:
             assert three_d["topics"][topic]["visible"] is True, (kind, topic)
     # the panels side by side in the layout tree
