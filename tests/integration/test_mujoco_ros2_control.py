@@ -387,3 +387,62 @@ def test_camera_settings_for_a_camera_the_model_lacks_are_said_at_their_line(ws)
         ws.wait_for_output("camera 'eye' (streaming, 64x48)", 30, "node.out")  # runs on
     finally:
         assert stop(proc) in (0, 130)
+
+
+WRENCH_PLUGIN = """/**:
+  ros__parameters:
+    mujoco_plugins:
+      push:
+        type: mujoco_ros2_control_plugins/ExternalWrenchPlugin
+"""
+
+
+def wrench(body: str, seconds: int) -> str:
+    return ("{wrenches: {external_wrenches: [{wrench: {header: {frame_id: " + body + "}, "
+            "wrench: {force: {x: 400.0}}}, application_point: {z: 1.0}, "
+            "duration: {sec: " + str(seconds) + "}}]}}")
+
+
+def test_the_external_wrench_plugin_pushes_a_body_for_its_duration(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM)
+    plugins = ws.write("plugins.yaml", WRENCH_PLUGIN)
+    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    try:
+        ws.wait_for_output("ExternalWrenchPlugin: /push/apply_wrench", 60, "node.out")
+        before = sim_time(ws)
+        pushing = ws.start("service", "call", "/push/apply_wrench",
+                           "mujoco_ros2_control_msgs/srv/ApplyExternalWrench", wrench("link", 3),
+                           output="call.out")
+        tilted = wait_until(lambda: abs(actuator_position(ws, "j1")) > 0.05, 20)
+        assert pushing.wait(60) == 0, ws.output("call.out")
+        answered = sim_time(ws)
+    finally:
+        assert stop(proc) in (0, 130)
+    assert tilted, "the pushed link did not tilt"
+    assert "success: true" in ws.output("call.out") and answered - before >= 3.0
+
+
+def test_a_wrench_on_a_body_the_model_lacks_is_refused_whole(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM)
+    plugins = ws.write("plugins.yaml", WRENCH_PLUGIN)
+    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    try:
+        ws.wait_for_output("ExternalWrenchPlugin: /push/apply_wrench", 60, "node.out")
+        done = ws.run("service", "call", "/push/apply_wrench",
+                      "mujoco_ros2_control_msgs/srv/ApplyExternalWrench", wrench("lnk", 1),
+                      timeout=60)
+    finally:
+        assert stop(proc) in (0, 130)
+    assert "success: false" in done.stdout, done.stdout
+    assert "Body 'lnk' not found in MuJoCo model (did you mean 'link'?)" in done.stdout
+
+
+def actuator_position(ws, joint: str) -> float:
+    done = ws.run("topic", "echo", "/mujoco_actuators_states", "sensor_msgs/msg/JointState",
+                  "--once", timeout=30)
+    assert done.returncode == 0, done.stderr
+    names = re.findall(r"^- (\w+)$", done.stdout.split("position:")[0], re.M)
+    positions = numbers(done.stdout.split("position:")[1].split("velocity:")[0])
+    return dict(zip(names, positions, strict=True))[joint]

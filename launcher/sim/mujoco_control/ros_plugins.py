@@ -11,6 +11,7 @@ cycle after the controllers, as mujoco_ros2_control updates them.
   RangefinderLidarPlugin          `lidar.*`: the MJCF's `<name>-NN` rangefinders as a LaserScan
   CameraPlugin                    the MJCF's cameras: colour, aligned depth and camera_info
                                   (camera_plugin.py)
+  ExternalWrenchPlugin            `apply_wrench` pushes bodies for a while (wrench_plugin.py)
 
 A type launcher does not provide is refused at start, with the ones it does.
 """
@@ -27,6 +28,7 @@ import numpy as np
 from launcher.errors import LaunchError, did_you_mean
 from launcher.sim.mujoco_control.camera_plugin import CameraPlugin
 from launcher.sim.mujoco_control.ros_plugin import RosPlugin
+from launcher.sim.mujoco_control.wrench_plugin import ExternalWrench
 
 PREFIX = "mujoco_ros2_control_plugins/"
 
@@ -232,9 +234,10 @@ TYPES: dict[str, type[RosPlugin]] = {
     f"{PREFIX}FreeJointStatePublisherPlugin": FreeJointStates,
     f"{PREFIX}BaseVelocityPlugin": BaseVelocity,
     f"{PREFIX}RangefinderLidarPlugin": RangefinderLidar,
+    f"{PREFIX}ExternalWrenchPlugin": ExternalWrench,
 }
 CAMERA = f"{PREFIX}CameraPlugin"
-NOT_YET = (f"{PREFIX}ExternalWrenchPlugin", f"{PREFIX}Mujoco3dLidarPlugin")
+NOT_YET = (f"{PREFIX}Mujoco3dLidarPlugin",)
 
 
 def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = None
