@@ -282,3 +282,24 @@ def test_snapshot_without_a_sim_says_so(sim_ws):
     assert done.returncode == 1
     assert "no /world/<name>/snapshot service appeared within 1 s; is the sim running?" \
         in done.stderr
+
+
+MJCF_ROBOT = """<mujoco model="bot"><worldbody><body name="base">
+<geom type="box" size=".2 .1 .05"/><body name="arm" pos="0 0 .1"><joint name="j" axis="0 0 1"/>
+<geom type="capsule" size=".02 .1"/></body></body></worldbody></mujoco>"""
+
+
+def test_create_spawns_an_mjcf_robot_from_a_file_as_it_spawns_an_sdf_one(sim_ws):
+    sim_ws.write("bot.xml", MJCF_ROBOT)
+    sim = sim_ws.start("sim", "-r", "-v", "3", output="sim.out")
+    try:
+        sim_ws.wait_for_output("world 'empty'", 60, "sim.out")
+        done = sim_ws.run("run", "ros_gz_sim", "create", "-file", "bot.xml", "-name", "r1",
+                          "-x", "2", "-z", "1", timeout=60)
+        assert done.returncode == 0, done.stderr
+        listed = sim_ws.run("gz", "model", "--list", timeout=30).stdout
+        pose = sim_ws.run("gz", "model", "-m", "r1", "-p", timeout=30).stdout
+    finally:
+        assert stop(sim) in (0, 130)
+    assert "- r1" in listed, listed
+    assert "[2.000000 0.000000" in pose, pose  # its pose, falling from 1 m
