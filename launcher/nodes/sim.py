@@ -14,6 +14,7 @@ LAUNCHER_SIM_LOCKSTEP=true, or a tick in seconds, where no pacing flag is given)
 verbosity (0 quiet … 4 debug; default 2, warnings). WORLD is an SDF or MJCF file: a path, a
 file in a resource folder (MUJOCO_SIM_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, …) or a built-in
 world (default: empty.sdf); `.j2` worlds are rendered with `--world-arg NAME=VALUE`.
+`--keyframe NAME` starts from an MJCF keyframe, and resets return to it.
 `--headless-rendering` and `--render-engine` are accepted.
 """
 
@@ -90,6 +91,9 @@ def build_parser() -> Parser:
                         help=f"sim time a lockstep tick steps (default {LOCKSTEP_TICK:g} s)")
     parser.add_argument("--world-arg", action="append", default=[], metavar="NAME=VALUE",
                         help="a value for a .j2 world template (repeatable)")
+    parser.add_argument("--keyframe", default="", metavar="NAME",
+                        help="start from this MJCF keyframe (<key name=NAME>); a reset "
+                             "returns to it")
     parser.add_argument("--seed", type=int, default=0, metavar="N",
                         help="seed of the sensors' noise: the same seed, the same readings "
                              "(default 0)")
@@ -223,6 +227,8 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
         world = World.from_path(path, BusTransport(node), values, seed=args.seed)
+        if args.keyframe:
+            world.start_from(args.keyframe)
         timestep = world.model.opt.timestep
         default_rtf = world.real_time_factor if world.real_time_factor is not None else 1.0
         rtf = args.rtf if args.rtf is not None else \

@@ -59,6 +59,7 @@ def world_name(name: str) -> str:
 
 class World:
     real_time_factor: float | None = None  # the world file's own pace, if it sets one
+    keyframe: str = ""  # the MJCF keyframe the world starts from and resets to (start_from)
 
     @classmethod
     def from_path(cls, path: Path, transport: Transport, values: Mapping[str, str] | None = None,
@@ -297,15 +298,32 @@ class World:
         self.plugins.bind(model, data)
 
     # --- resets ----------------------------------------------------------------------------
+    def start_from(self, keyframe: str) -> None:
+        """Start, and from now on reset, at the MJCF keyframe named `keyframe` (`<key>`);
+        entities spawned later keep their own start in it. A name the model lacks is an
+        error naming the nearest ones."""
+        names = [self.model.key(i).name for i in range(self.model.nkey)]
+        if keyframe not in names:
+            raise LaunchError(f"no keyframe '{keyframe}' in the world"
+                              f"{did_you_mean(keyframe, names)}; its keyframes: "
+                              f"{', '.join(names) or 'none (an MJCF <keyframe><key name=…>)'}",
+                              Location(self.label))
+        self.keyframe = keyframe
+        self.reset()
+
     def reset(self, time: bool = True, poses: bool = True) -> None:
-        """Reset all (both), time only, or poses only (Gazebo's WorldReset)."""
+        """Reset all (both), time only, or poses only (Gazebo's WorldReset); poses go back to
+        the world's keyframe when it starts from one."""
+        key = self.model.key(self.keyframe) if self.keyframe else None
         if time and poses:
             mujoco.mj_resetData(self.model, self.data)
+            if key is not None:
+                mujoco.mj_resetDataKeyframe(self.model, self.data, key.id)
         elif poses:
-            self.data.qpos[:] = self.model.qpos0
-            self.data.qvel[:] = 0.0
-            self.data.act[:] = 0.0
-            self.data.ctrl[:] = 0.0
+            self.data.qpos[:] = self.model.qpos0 if key is None else key.qpos
+            self.data.qvel[:] = 0.0 if key is None else key.qvel
+            self.data.act[:] = 0.0 if key is None else key.act
+            self.data.ctrl[:] = 0.0 if key is None else key.ctrl
         if poses:
             for entity in self.entities.values():  # static entities that were moved
                 for root, pose in entity.placed.items():

@@ -303,3 +303,13 @@ def test_create_spawns_an_mjcf_robot_from_a_file_as_it_spawns_an_sdf_one(sim_ws)
         assert stop(sim) in (0, 130)
     assert "- r1" in listed, listed
     assert "[2.000000 0.000000" in pose, pose  # its pose, falling from 1 m
+
+
+def test_an_unknown_keyframe_is_one_clean_error_naming_the_nearest(sim_ws):
+    sim_ws.write("keyed.xml", '<mujoco model="keyed"><worldbody><body name="ball" pos="0 0 1">'
+                 '<freejoint/><geom size="0.1"/></body></worldbody><keyframe>'
+                 '<key name="high" qpos="0 0 3 1 0 0 0"/></keyframe></mujoco>')
+    done = sim_ws.run("sim", "keyed.xml", "--keyframe", "hihg")
+    assert done.returncode == 1 and "Traceback" not in done.stderr
+    assert "keyed.xml: no keyframe 'hihg' in the world (did you mean 'high'?)" in done.stderr, \
+        done.stderr

@@ -631,3 +631,30 @@ def test_a_link_moving_on_an_anchored_part_does_not_collide_with_it(world):
     assert world.data.ncon == 0
     slide = world.model.jnt_qposadr[world.model.joint("cart/slide").id]
     assert world.data.qpos[slide] == pytest.approx(1.0, abs=0.02)  # 1 m/s for 1 s, unbraked
+
+
+KEYED = """<mujoco model="keyed"><worldbody>
+  <body name="ball" pos="0 0 1"><freejoint/><geom size="0.1"/></body>
+</worldbody><keyframe><key name="high" qpos="0 0 3 1 0 0 0"/></keyframe></mujoco>"""
+
+
+def test_a_world_starts_from_its_keyframe_and_resets_to_it(tmp_path):
+    world = make_world(KEYED, tmp_path / "keyed.xml")
+    world.start_from("high")
+    assert world.data.qpos[2] == pytest.approx(3.0)
+    run_for(world, 0.3, name="ball")
+    assert world.data.qpos[2] < 3.0
+    world.reset(time=False, poses=True)
+    assert world.data.qpos[2] == pytest.approx(3.0) and world.data.time > 0
+    run_for(world, 0.3, name="ball")
+    world.reset()
+    assert world.data.qpos[2] == pytest.approx(3.0) and world.data.time == 0.0
+
+
+def test_a_keyframe_the_world_lacks_names_the_nearest(tmp_path):
+    world = make_world(KEYED, tmp_path / "keyed.xml")
+    with pytest.raises(LaunchError) as caught:
+        world.start_from("hihg")
+    assert "no keyframe 'hihg' in the world (did you mean 'high'?); its keyframes: high" in \
+        str(caught.value)
+    assert world.keyframe == "" and world.data.qpos[2] == pytest.approx(1.0)
