@@ -11,8 +11,10 @@ turned into it.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -46,6 +48,17 @@ SIGNS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)],
 
 class Refused(Exception):
     """A request answered with a Result code other than OK: (code, message)."""
+
+
+def answering(handler: Callable[[Any, Any, Any], Any]) -> Callable[[Any, Any, Any], Any]:
+    """A service callback whose Refused becomes its answer's Result."""
+    @functools.wraps(handler)
+    def answer(self: Any, request: Any, response: Any) -> Any:
+        try:
+            return handler(self, request, response)
+        except Refused as refused:
+            return result(response, *refused.args)
+    return answer
 
 
 @dataclass
@@ -114,27 +127,21 @@ class Entities:
         return names
 
     # --- services ----------------------------------------------------------------------------
+    @answering
     def on_get_entities(self, request: Any, response: Any) -> Any:
-        try:
-            response.entities = self.matching(request.filters)
-        except Refused as refused:
-            return result(response, *refused.args)
+        response.entities = self.matching(request.filters)
         return result(response, OK)
 
+    @answering
     def on_get_states(self, request: Any, response: Any) -> Any:
-        try:
-            names = self.matching(request.filters)
-        except Refused as refused:
-            return result(response, *refused.args)
+        names = self.matching(request.filters)
         response.entities = names
         response.states = [self._state(name) for name in names]
         return result(response, OK)
 
+    @answering
     def on_get_state(self, request: Any, response: Any) -> Any:
-        try:
-            self.entity(request.entity)
-        except Refused as refused:
-            return result(response, *refused.args)
+        self.entity(request.entity)
         response.state = self._state(request.entity)
         return result(response, OK)
 
@@ -154,37 +161,35 @@ class Entities:
             fill_vector(state.acceleration.angular, turn @ data.qacc[dof + 3:dof + 6])
         return state
 
+    @answering
     def on_set_state(self, request: Any, response: Any) -> Any:
         """Every part checked before any is applied: a refused request changes nothing."""
         api, state = self.api, request.state
-        try:
-            entity = self.entity(request.entity)
-            frame = api.frame(state.header.frame_id)
-            if frame is None:
-                raise Refused(NOT_FOUND, f"reference frame '{state.header.frame_id}' is neither "
-                                         "the world nor an entity")
-            twist = [*_vector(state.twist.linear), *_vector(state.twist.angular)]
-            acceleration = [*_vector(state.acceleration.linear),
-                            *_vector(state.acceleration.angular)]
-            static = entity.dof < 0
-            for asked, values, what in ((request.set_twist, twist, "a twist"),
-                                        (request.set_acceleration, acceleration,
-                                         "an acceleration")):
-                if asked and static and any(values):
-                    raise Refused(OPERATION_FAILED, f"'{request.entity}' is static (it has no "
-                                                    f"free joint): it cannot be given {what}")
-            if request.set_twist and not all(math.isfinite(v) and abs(v) <= MAX_SPEED
-                                             for v in twist):
-                raise Refused(OPERATION_FAILED, f"the twist must be finite numbers within "
-                                                f"±{MAX_SPEED:g}")
-            pose = None
-            if request.set_pose:
-                try:
-                    pose = frame * pose_of(state.pose)
-                except ValueError as exc:
-                    raise Refused(INVALID_POSE, str(exc)) from None
-        except Refused as refused:
-            return result(response, *refused.args)
+        entity = self.entity(request.entity)
+        frame = api.frame(state.header.frame_id)
+        if frame is None:
+            raise Refused(NOT_FOUND, f"reference frame '{state.header.frame_id}' is neither "
+                                 "the world nor an entity")
+        twist = [*_vector(state.twist.linear), *_vector(state.twist.angular)]
+        acceleration = [*_vector(state.acceleration.linear),
+                        *_vector(state.acceleration.angular)]
+        static = entity.dof < 0
+        for asked, values, what in ((request.set_twist, twist, "a twist"),
+                                    (request.set_acceleration, acceleration,
+                                     "an acceleration")):
+            if asked and static and any(values):
+                raise Refused(OPERATION_FAILED, f"'{request.entity}' is static (it has no "
+                                            f"free joint): it cannot be given {what}")
+        if request.set_twist and not all(math.isfinite(v) and abs(v) <= MAX_SPEED
+                                         for v in twist):
+            raise Refused(OPERATION_FAILED, f"the twist must be finite numbers within "
+                                        f"±{MAX_SPEED:g}")
+        pose = None
+        if request.set_pose:
+            try:
+                pose = frame * pose_of(state.pose)
+            except ValueError as exc:
+                raise Refused(INVALID_POSE, str(exc)) from None
         placement = api.world.placement
         if pose is not None:
             placement.set_pose(request.entity, list(pose.pos), list(pose.quat))
@@ -196,20 +201,16 @@ class Entities:
         return result(response, OK, "the acceleration is not set: MuJoCo integrates forces, "
                                     "it takes no accelerations" if ignored else "")
 
+    @answering
     def on_get_info(self, request: Any, response: Any) -> Any:
-        try:
-            info = info_of(self.entity(request.entity))
-        except Refused as refused:
-            return result(response, *refused.args)
+        info = info_of(self.entity(request.entity))
         response.info.category.category = info.category
         response.info.description, response.info.tags = info.description, list(info.tags)
         return result(response, OK)
 
+    @answering
     def on_set_info(self, request: Any, response: Any) -> Any:
-        try:
-            entity = self.entity(request.entity)
-        except Refused as refused:
-            return result(response, *refused.args)
+        entity = self.entity(request.entity)
         category = request.info.category.category
         if category not in CATEGORIES:
             return result(response, OPERATION_FAILED,
@@ -218,11 +219,9 @@ class Entities:
         entity.info = Info(category, request.info.description, list(request.info.tags))
         return result(response, OK)
 
+    @answering
     def on_get_bounds(self, request: Any, response: Any) -> Any:
-        try:
-            entity = self.entity(request.entity)
-        except Refused as refused:
-            return result(response, *refused.args)
+        entity = self.entity(request.entity)
         box = local_box(self.api.world, entity)
         if box is None:
             response.bounds.type = EMPTY

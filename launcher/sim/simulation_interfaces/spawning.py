@@ -29,7 +29,7 @@ from launcher.sim.simulation_interfaces.common import (
     pose_of,
     result,
 )
-from launcher.sim.simulation_interfaces.entities import Entities, Refused
+from launcher.sim.simulation_interfaces.entities import Entities, Refused, answering
 from launcher.sim.templates import UnsupportedFormat
 from launcher.sim.transform import IDENTITY
 
@@ -144,11 +144,9 @@ class Spawning:
             self.spawn(one, answer, one_done)
 
     # --- deleting ----------------------------------------------------------------------------
+    @answering
     def on_delete(self, request: Any, response: Any) -> Any:
-        try:
-            self.entities.entity(request.entity)
-        except Refused as refused:
-            return result(response, *refused.args)
+        self.entities.entity(request.entity)
         self.api.world.remove(request.entity)
         self.api.node.get_logger().info(f"removed '{request.entity}'")
         self.api.server.publish_clock()
