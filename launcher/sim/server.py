@@ -42,7 +42,7 @@ from launcher.sim import simulation_interfaces
 from launcher.sim.pacing import Pacer
 from launcher.sim.plugins import config_from
 from launcher.sim.snapshot import Camera
-from launcher.sim.world import Spawn, World
+from launcher.sim.world import Spawn, SpawnError, World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
 CALLBACK_BUDGET = 0.002  # s of callbacks between two batches of steps
@@ -107,6 +107,9 @@ class SimServer:
         try:
             self._loop(iterations)
         finally:
+            for _, done in self._spawns:  # (their callers are not left waiting)
+                done(SpawnError("the sim stopped before it could add the entity"))
+            self._spawns = []
             if self.leader is not None:
                 self.leader.close()
             self.camera.close()
@@ -224,8 +227,8 @@ class SimServer:
             done(finished)
 
     def reset(self, time: bool, poses: bool) -> None:
-        """Reset the world's time, poses or both (the control service's and the standard
-        API's resets); steps still to go end."""
+        """Reset the world's time, poses or both (the standard API's resets); steps still
+        to go end."""
         self.world.reset(time=time, poses=poses)
         self.stop_stepping()
         if time:
