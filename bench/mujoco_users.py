@@ -33,7 +33,7 @@ import uuid
 from pathlib import Path
 
 import psutil
-from _harness import launcher_cmd, start_router, summary, table
+from _harness import launcher_cmd, start_router, stop, summary, table
 
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
@@ -77,15 +77,6 @@ def sim_process(launch_pid: int) -> psutil.Process:
         except psutil.Error:
             continue
     raise RuntimeError("no ros2_control_node in the launch")
-
-
-def stop(proc: subprocess.Popen) -> None:
-    proc.send_signal(2)
-    try:
-        proc.wait(30)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        proc.wait()
 
 
 def watch(node, seconds: float, topics: tuple[str, ...] = ()) -> tuple[float, list[int]]:

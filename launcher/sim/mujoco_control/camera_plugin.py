@@ -28,8 +28,6 @@ from launcher.sim.sensors.rendering import rendering_of
 
 PARAMETERS = "mujoco_plugins.mujoco_camera_plugin."
 POLICIES = ("streaming", "polled", "disabled")
-SETTINGS = ("policy", "frame_name", "image_topic", "depth_topic", "info_topic",
-            "trigger_service_name")
 
 
 class MjcfCamera:

@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from launcher.errors import did_you_mean
 from launcher.sim.resources import BUILTIN_WORLDS, builtin_worlds, resource_entries
 from launcher.sim.simulation_interfaces.common import (
     FEATURE_UNSUPPORTED,
@@ -103,8 +104,6 @@ class Worlds:
     def on_named_pose_bounds(self, request: Any, response: Any) -> Any:
         named = self.named()
         if request.name not in named:
-            from launcher.errors import did_you_mean
-
             return result(response, NOT_FOUND, f"no named pose '{request.name}'"
                           f"{did_you_mean(request.name, list(named))}; the world has: "
                           f"{', '.join(named) or 'none'}")
