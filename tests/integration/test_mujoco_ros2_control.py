@@ -38,8 +38,9 @@ def joints(ws) -> dict[str, float]:
     return dict(zip(names, positions, strict=True))
 
 
-def launch(ws, demo: str, ready: str = "Configured and activated position_controller"):
-    proc = ws.start("launch", "mujoco_ros2_control_demos", demo, "headless:=true",
+def launch(ws, demo: str, ready: str = "Configured and activated position_controller",
+           *arguments: str):
+    proc = ws.start("launch", "mujoco_ros2_control_demos", demo, "headless:=true", *arguments,
                     output="demo.out")
     ws.wait_for_output(ready, 90, "demo.out")
     return proc
@@ -67,6 +68,24 @@ def test_basic_robot_demo_runs_unchanged_and_its_docstring_command_moves_the_arm
         for name in ("joint_state_broadcaster", "position_controller", "gripper_controller",
                      "pose_broadcaster"):
             assert re.search(rf"{name}\s+\S+\s+active", listed), listed
+        sent = demos.run("topic", "pub", "--once", "/position_controller/commands",
+                         "std_msgs/msg/Float64MultiArray", "data: [0.5, -0.5]")
+        assert sent.returncode == 0, sent.stderr
+        assert wait_until(lambda: abs(joints(demos)["joint1"] - 0.5) < 0.02 and
+                          abs(joints(demos)["joint2"] + 0.5) < 0.02), joints(demos)
+    finally:
+        assert stop(proc) == 130
+
+
+@pytest.mark.parametrize("arguments", [(), ("use_urdf_inputs:=true",)],
+                         ids=["inputs-files", "inputs-in-the-urdf"])
+def test_mjcf_generation_demo_converts_at_run_time_and_its_arm_moves(demos, arguments):
+    proc = launch(demos, "02_mjcf_generation.launch.py",
+                  "Configured and activated position_controller", *arguments)
+    try:
+        mjcf = demos.run("topic", "echo", "/mujoco_robot_description", "std_msgs/msg/String",
+                         "--once", "--full-length", timeout=30)
+        assert re.search(r'<camera [^>]*name=\\"camera\\"', mjcf.stdout), mjcf.stdout[:2000]
         sent = demos.run("topic", "pub", "--once", "/position_controller/commands",
                          "std_msgs/msg/Float64MultiArray", "data: [0.5, -0.5]")
         assert sent.returncode == 0, sent.stderr
