@@ -3,7 +3,11 @@
 A file ending `.j2` is rendered first (undefined variables are errors). Direct children
 `<plugin filename="…" name="…">…</plugin>` of `<mujoco>` are launcher plugins (Gazebo's shape),
 which MuJoCo would reject: they are taken out and blanked with the same number of lines, so
-MuJoCo's line numbers still point into the file. `file="model://…"`/`package://` attributes
+MuJoCo's line numbers still point into the file. So is mujoco_ros2_control's lidar extension
+(`<extension><plugin plugin="mujoco.plugin.lidar">` and the `<sensor><plugin>`s using it, a C++
+plugin MuJoCo's Python does not have): each such sensor becomes a world plugin config of that
+name, its `<config>`s (the instance's, then its own) gathered into one element
+(sim/plugins/mjcf_lidar.py casts its rays). `file="model://…"`/`package://` attributes
 are rewritten to absolute paths. `<include file="…">` is found relative to the including file
 (then the top file's folder, as MuJoCo looks) or through a URI, and handed to MuJoCo with the
 text, so a model read from a string includes as one read from its file.
@@ -71,6 +75,7 @@ def read(text: str, path: Path | None, values: Mapping[str, str] | None = None,
         text = render_template(text, path, values or {})
     source = Source(text, path)
     _take_plugins(source)
+    _take_lidars(source)
     base = path.parent if path else None
     source.text = _uris(source.text, base, environ)
     if base is not None:
@@ -101,6 +106,68 @@ def _gather_includes(source: Source, text: str, folder: Path, top: Path,
         included = _uris(read_text(found), found.parent, environ)
         source.includes[written] = included.encode()
         _gather_includes(source, included, found.parent, top, environ)
+
+
+LIDAR_PLUGIN = "mujoco.plugin.lidar"
+
+
+def _take_lidars(source: Source) -> None:
+    """Take out the lidar extension and the sensors that use it; each sensor a plugin
+    config (`filename` mujoco.plugin.lidar, `name` the sensor's)."""
+    if LIDAR_PLUGIN not in source.text:
+        return
+    data = source.text.encode()
+    found: list[tuple[str, int, int, int, ET.Element]] = []  # parent, start, stop, line
+    parser = expat.ParserCreate()
+    stack: list[str] = []
+    starts: list[tuple[int, int]] = []
+
+    def start(tag: str, _attrs: dict[str, str]) -> None:
+        stack.append(tag)
+        if len(stack) == 3 and tag == "plugin" and stack[1] in ("extension", "sensor"):
+            starts.append((parser.CurrentByteIndex, parser.CurrentLineNumber))
+
+    def end(tag: str) -> None:
+        if len(stack) == 3 and tag == "plugin" and stack[1] in ("extension", "sensor"):
+            begin, line = starts.pop()
+            stop = parser.CurrentByteIndex
+            if data.startswith(b"</", stop):
+                stop = data.index(b">", stop) + 1
+            found.append((stack[1], begin, stop, line,
+                          ET.fromstring(data[begin:stop].decode())))
+        stack.pop()
+
+    parser.StartElementHandler, parser.EndElementHandler = start, end
+    parser.Parse(data, True)  # (read once already by _take_plugins: valid XML)
+    instances: dict[str, dict[str, str]] = {}
+    for parent, _, _, _, element in found:
+        if parent == "extension" and element.get("plugin") == LIDAR_PLUGIN:
+            for instance in element.findall("instance"):
+                instances[instance.get("name", "")] = _configs(instance)
+    taken = []
+    for parent, begin, stop, line, element in found:
+        if parent == "extension":
+            if element.get("plugin") == LIDAR_PLUGIN:
+                taken.append((begin, stop))
+            continue
+        instance = element.get("instance")
+        if element.get("plugin") != LIDAR_PLUGIN and instance not in instances:
+            continue
+        config = ET.Element("lidar", {k: v for k, v in element.attrib.items()
+                                      if k not in ("plugin", "instance")})
+        for key, value in {**instances.get(instance or "", {}), **_configs(element)}.items():
+            ET.SubElement(config, "config", {"key": key, "value": value})
+        name = element.get("name", "")
+        source.plugins.append(PluginConfig(LIDAR_PLUGIN, name, config,
+                                           f"{source.label}:{line}"))
+        taken.append((begin, stop))
+    for begin, stop in sorted(taken, reverse=True):
+        data = data[:begin] + b"\n" * data[begin:stop].count(b"\n") + data[stop:]
+    source.text = data.decode()
+
+
+def _configs(element: ET.Element) -> dict[str, str]:
+    return {c.get("key", ""): c.get("value", "") for c in element.findall("config")}
 
 
 def _take_plugins(source: Source) -> None:

@@ -228,7 +228,7 @@ def test_an_unknown_processed_input_is_refused_at_its_line_with_the_nearest(demo
 
 def test_a_camera_at_a_link_the_robot_lacks_is_refused_with_the_nearest(demo_ws):
     err = _refused(demo_ws, _inputs(demo_ws, '    <camera site="camera_lnk" name="cam"/>'))
-    assert "camera 'cam': site 'camera_lnk' is not a link of the robot" in err, err
+    assert "camera 'cam' site: 'camera_lnk' is not a link of the robot" in err, err
     assert "did you mean 'camera_link'" in err, err
 
 
@@ -340,3 +340,24 @@ def test_collada_meshes_become_obj_through_trimesh_installed_apart(demo_ws):
     corners = model.mesh_vert[model.mesh_vertadr[0]:][:model.mesh_vertnum[0]]
     edges = sorted(np.linalg.norm(a - b) for i, a in enumerate(corners) for b in corners[i + 1:])
     assert np.allclose(edges, [0.1] * 3 + [0.1 * 2 ** 0.5] * 3, atol=1e-6)  # the tetrahedron
+
+
+def test_add_free_joint_floats_the_root_link(demo_ws):
+    urdf = demo_ws.write("cart.urdf", """
+        <robot name="cart">
+          <link name="base_link">
+            <inertial><mass value="2"/>
+              <inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+            <visual><geometry><box size="0.4 0.3 0.1"/></geometry></visual>
+          </link>
+        </robot>
+        """)
+    inputs = demo_ws.write("inputs.xml", f"<mujoco_inputs><raw_inputs>{DEFAULT_CLASSES}"
+                                         "</raw_inputs></mujoco_inputs>")
+    done = convert(demo_ws, "-u", str(urdf), "-m", str(inputs), "-f", "-s", "-o", "out")
+    assert done.returncode == 0, done.stderr
+    model = mujoco.MjModel.from_xml_path(
+        str(demo_ws.root / "out" / "mujoco_description_formatted.xml"))
+    joint = model.joint("floating_base_joint")
+    assert joint.type == mujoco.mjtJoint.mjJNT_FREE
+    assert model.body(model.jnt_bodyid[joint.id]).name == "base_link"

@@ -465,3 +465,112 @@ def actuator_position(ws, joint: str) -> float:
     names = re.findall(r"^- (\w+)$", done.stdout.split("position:")[0], re.M)
     positions = numbers(done.stdout.split("position:")[1].split("velocity:")[0])
     return dict(zip(names, positions, strict=True))[joint]
+
+
+# --- the 3D lidar plugin over MJCF lidar sensors (mujoco_ros2_control's extension) -----------
+LIDAR_ARM = """<mujoco model="arm">
+  <extension>
+    <plugin plugin="mujoco.plugin.lidar">
+      <instance name="flat">
+        <config key="resolution" value="{resolution}"/>
+        <config key="azimuth_range" value="-0.2 0.2"/>
+        <config key="elevation_range" value="0.0"/>
+        <config key="max_range" value="10.0"/>
+        <config key="update_rate" value="10"/>
+      </instance>
+    </plugin>
+  </extension>
+  <worldbody>
+    <geom name="wall" type="box" size="0.1 5 5" pos="2.1 0 0"/>
+    <body name="link">
+      <joint name="j1" axis="0 0 1"/>
+      <geom type="cylinder" size="0.05 0.05" mass="1"/>
+      <site name="lidar_site" pos="0 0 0.2"/>
+    </body>
+  </worldbody>
+  <actuator><position name="j1" joint="j1" kp="100"/></actuator>
+  <sensor>
+    <plugin name="scan2d" instance="flat" objtype="site" objname="lidar_site"/>
+    <plugin name="cloud3d" plugin="mujoco.plugin.lidar" objtype="site" objname="lidar_site">
+      <config key="resolution" value="4 3"/>
+      <config key="azimuth_range" value="-0.3 0.3"/>
+      <config key="elevation_range" value="-0.1 0.1"/>
+      <config key="max_range" value="{reach}"/>
+      <config key="update_rate" value="0"/>
+    </plugin>
+  </sensor>
+</mujoco>
+"""
+LIDAR_PLUGIN = """/**:
+  ros__parameters:
+    mujoco_plugins:
+      mujoco_3d_lidar_plugin:
+        type: mujoco_ros2_control_plugins/Mujoco3dLidarPlugin
+        scan2d:
+          frame_name: lidar_frame
+          topic: /flat_scan
+"""
+
+
+def lidar_node(ws, resolution: str = "5 1", reach: str = "10"):
+    ws.own_bus()
+    model = ws.write("arm.xml", LIDAR_ARM.replace("{resolution}", resolution)
+                     .replace("{reach}", reach))
+    plugins = ws.write("plugins.yaml", LIDAR_PLUGIN)
+    return ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+
+
+def test_a_one_row_mjcf_lidar_is_a_laser_scan_of_the_wall(ws):
+    proc = lidar_node(ws)
+    try:
+        ws.wait_for_output("Adding lidar sensor: 'scan2d'", 60, "node.out")
+        scan = ws.run("topic", "echo", "/flat_scan", "sensor_msgs/msg/LaserScan", "--once",
+                      timeout=30)
+    finally:
+        assert stop(proc) in (0, 130)
+    assert scan.returncode == 0, scan.stderr
+    assert "frame_id: lidar_frame" in scan.stdout, scan.stdout
+    ranges = numbers(scan.stdout.split("ranges:")[1].split("intensities:")[0])
+    expected = [2.0 / math.cos(a) for a in (-0.2, -0.1, 0.0, 0.1, 0.2)]
+    assert ranges == pytest.approx(expected, abs=1e-4)
+
+
+def cloud_points(ws, reach: str):
+    import numpy as np
+
+    proc = lidar_node(ws, reach=reach)
+    try:
+        ws.wait_for_output("Adding lidar sensor: 'cloud3d'", 60, "node.out")
+        cloud = ws.run("topic", "echo", "/points", "sensor_msgs/msg/PointCloud2", "--once",
+                       "--full-length", timeout=30)
+    finally:
+        assert stop(proc) in (0, 130)
+    assert cloud.returncode == 0, cloud.stderr
+    assert re.search(r"^height: 3$", cloud.stdout, re.M) and \
+        re.search(r"^width: 4$", cloud.stdout, re.M), cloud.stdout[:500]
+    raw = bytes(int(v) for v in numbers(cloud.stdout.split("data:")[1].split("is_dense")[0]))
+    return np.frombuffer(raw, "<f4").reshape(3, 4, 3)
+
+
+def test_a_several_row_mjcf_lidar_is_a_point_cloud_on_the_wall(ws):
+    points = cloud_points(ws, "10")
+    assert points[..., 0] == pytest.approx(2.0, abs=1e-4)  # every ray ends on the wall, x = 2
+    low_row = [2.0 * math.tan(-0.1) / math.cos(a) for a in (-0.3, -0.1, 0.1, 0.3)]
+    assert points[0, :, 2] == pytest.approx(low_row, abs=1e-4)  # elevation -0.1, azimuths
+
+
+def test_a_point_cloud_is_nan_where_nothing_is_in_range(ws):
+    import numpy as np
+
+    assert np.isnan(cloud_points(ws, "1.5")).all()  # the wall is 2 m away
+
+
+def test_a_wrong_lidar_setting_is_said_at_the_sensor_line_and_the_sim_runs_on(ws):
+    proc = lidar_node(ws, resolution="5")
+    try:
+        out = ws.wait_for_output("Adding lidar sensor: 'cloud3d'", 60, "node.out")
+        assert "arm.xml:23: lidar sensor 'scan2d': Both horizontal and vertical resolutions " \
+               "must be specified" in out, out
+        assert sim_time(ws) > 0.0  # the sim runs, without that lidar
+    finally:
+        assert stop(proc) in (0, 130)

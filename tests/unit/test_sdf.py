@@ -364,6 +364,33 @@ def test_mjcf_worlds_top_level_bodies_are_entities(tmp_path):
     assert world.placement.poses()[1] == pytest.approx(np.array([[2, 0, 0.2], [0, 4, 0.5]]))
 
 
+def test_the_mjcf_lidar_extension_becomes_one_plugin_per_sensor_lines_kept():
+    from launcher.sim import mjcf
+
+    text = """<mujoco model="m">
+  <extension>
+    <plugin plugin="mujoco.plugin.lidar">
+      <instance name="flat"><config key="resolution" value="5 1"/>
+        <config key="max_range" value="9"/></instance>
+    </plugin>
+  </extension>
+  <worldbody><site name="s"/></worldbody>
+  <sensor>
+    <plugin name="front" instance="flat" objtype="site" objname="s">
+      <config key="max_range" value="4"/></plugin>
+  </sensor>
+</mujoco>"""
+    source = mjcf.read(text, None)
+    assert source.text.count("\n") == text.count("\n")  # MuJoCo's lines still point home
+    assert "lidar" not in source.text
+    (lidar,) = source.plugins
+    assert (lidar.filename, lidar.name, lidar.where) == ("mujoco.plugin.lidar", "front",
+                                                         "<string>:10")
+    configs = {c.get("key"): c.get("value") for c in lidar.element.findall("config")}
+    assert configs == {"resolution": "5 1", "max_range": "4"}  # the sensor's own win
+    assert lidar.element.get("objname") == "s"
+
+
 # --- plugins -------------------------------------------------------------------------------
 def test_gazebo_system_spellings_infrastructure_and_cpp_plugins(tmp_path):
     world, recorder = make_world(tmp_path, world_text("""

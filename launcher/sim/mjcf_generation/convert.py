@@ -202,13 +202,20 @@ def _sites(mjcf: ET.Element) -> dict[str, tuple[ET.Element, ET.Element]]:
             for parent in mjcf.iter() for site in parent.findall("site")}
 
 
+def _at_link(sites: dict[str, tuple[ET.Element, ET.Element]], link: str,
+             what: str) -> tuple[ET.Element, ET.Element]:
+    """The site a link became, and the element holding it; a link the robot lacks is an
+    error naming `what` asked for it."""
+    if link not in sites:
+        raise ConversionError(f"{what}: '{link}' is not a link of the robot"
+                              f"{did_you_mean(link, sites)}")
+    return sites[link]
+
+
 def _add_cameras(mjcf: ET.Element, inputs: Inputs) -> None:
     sites = _sites(mjcf)
     for link, camera in inputs.cameras.items():
-        if link not in sites:
-            raise ConversionError(f"camera '{camera.get('name', '')}': site '{link}' is not a "
-                                  f"link of the robot{did_you_mean(link, sites)}")
-        parent, site = sites[link]
+        parent, site = _at_link(sites, link, f"camera '{camera.get('name', '')}' site")
         placed = copy.deepcopy(camera)
         placed.set("pos", site.get("pos", "0 0 0"))
         placed.set("quat", _numbers(_turned(_quat(site), HALF_TURN_X)))
@@ -218,10 +225,7 @@ def _add_cameras(mjcf: ET.Element, inputs: Inputs) -> None:
 def _add_lidars(mjcf: ET.Element, inputs: Inputs) -> None:
     sites = _sites(mjcf)
     for link, lidar in inputs.lidars.items():
-        if link not in sites:
-            raise ConversionError(f"lidar: ref_site '{link}' is not a link of the robot"
-                                  f"{did_you_mean(link, sites)}")
-        parent, site = sites[link]
+        parent, site = _at_link(sites, link, "lidar ref_site")
         turn = from_rpy(0, 0, 0, 0, lidar.min_angle, 0).quat
         quat = _turned(_turned(_quat(site), RANGEFINDER_FRAME), turn)
         body = ET.SubElement(parent, "body", {"name": f"{link}_lidar_body",

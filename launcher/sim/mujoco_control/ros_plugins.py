@@ -1,7 +1,7 @@
 """mujoco_ros2_control_plugins in the sim: the `mujoco_plugins.<name>.type` parameters of the
 `mujoco_ros2_control_node`, each made and given its own sub-namespace (`<name>`, as
 rclcpp's sub-nodes give it: relative topics are `/<name>/<topic>`), updated every control
-cycle after the controllers, as mujoco_ros2_control updates them.
+cycle before the controllers, as mujoco_ros2_control updates them.
 
   HeartbeatPublisherPlugin        `mujoco_heartbeat` (std_msgs/String) at `update_rate` Hz
   FreeJointStatePublisherPlugin   `topic` (free_joint_states) at `publish_rate`: every free
@@ -12,6 +12,8 @@ cycle after the controllers, as mujoco_ros2_control updates them.
   CameraPlugin                    the MJCF's cameras: colour, aligned depth and camera_info
                                   (camera_plugin.py)
   ExternalWrenchPlugin            `apply_wrench` pushes bodies for a while (wrench_plugin.py)
+  Mujoco3dLidarPlugin             the MJCF's lidar sensors as LaserScan or PointCloud2
+                                  (lidar3d_plugin.py)
 
 A type launcher does not provide is refused at start, with the ones it does.
 """
@@ -27,6 +29,7 @@ import numpy as np
 
 from launcher.errors import LaunchError, did_you_mean
 from launcher.sim.mujoco_control.camera_plugin import CameraPlugin
+from launcher.sim.mujoco_control.lidar3d_plugin import Mujoco3dLidar
 from launcher.sim.mujoco_control.ros_plugin import RosPlugin
 from launcher.sim.mujoco_control.wrench_plugin import ExternalWrench
 
@@ -235,9 +238,9 @@ TYPES: dict[str, type[RosPlugin]] = {
     f"{PREFIX}BaseVelocityPlugin": BaseVelocity,
     f"{PREFIX}RangefinderLidarPlugin": RangefinderLidar,
     f"{PREFIX}ExternalWrenchPlugin": ExternalWrench,
+    f"{PREFIX}Mujoco3dLidarPlugin": Mujoco3dLidar,
 }
 CAMERA = f"{PREFIX}CameraPlugin"
-NOT_YET = (f"{PREFIX}Mujoco3dLidarPlugin",)
 
 
 def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = None
@@ -255,12 +258,8 @@ def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = No
             node.get_logger().info(f"mujoco plugin '{name}' (CameraPlugin) loaded")
             continue
         cls = TYPES.get(kind)
-        if cls is None and kind in NOT_YET:
-            node.get_logger().warning(f"mujoco_plugins.{name}: {kind} is not in launcher yet; "
-                                      f"the sim runs without it")
-            continue
         if cls is None:
-            known = [*TYPES, CAMERA, *NOT_YET]
+            known = [*TYPES, CAMERA]
             raise LaunchError(f"{where}: mujoco_plugins.{name}.type: unknown plugin '{kind}'"
                               f"{did_you_mean(kind, known)} (known: {', '.join(known)})")
         plugins.append(cls(node, world, name, where))

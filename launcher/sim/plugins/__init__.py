@@ -52,6 +52,7 @@ _GZ_CLASS = re.compile(r"^(?:gz::sim|ignition::gazebo)::systems::(?P<system>\w+)
 
 BUILTIN = {
     "world_state": "launcher.sim.plugins.world_state:WorldState",
+    "mujoco.plugin.lidar": "launcher.sim.plugins.mjcf_lidar:MjcfLidar",
     "diff_drive": "launcher.sim.plugins.diff_drive:DiffDrive",
     "gz-sim-diff-drive-system": "launcher.sim.plugins.diff_drive:DiffDrive",
     "gz::sim::systems::DiffDrive": "launcher.sim.plugins.diff_drive:DiffDrive",
