@@ -9,7 +9,9 @@ message (whose `char[16] client_gid` is hashed as `uint8[16]`, as ROS 2 does).
 `<Name>_Goal`, `_Result` and `_Feedback`; the services `<Name>_SendGoal` (goal id and goal →
 accepted and stamp) and `<Name>_GetResult` (goal id → status and result); the message
 `<Name>_FeedbackMessage` (goal id and feedback). An error in a definition is at its
-file:line:column.
+file:line:column. A field's default value (`uint64 steps 1`), which rosbags' parser reads past,
+is kept in DEFAULTS under the type's name, what a new message of the type starts with (as
+rosidl's generated classes do).
 """
 
 from __future__ import annotations
@@ -33,6 +35,10 @@ ACTION_PARTS = ("_Goal", "_Result", "_Feedback")
 ACTION_SUFFIXES = ("_FeedbackMessage", "_SendGoal", "_GetResult", *ACTION_PARTS)
 
 
+DEFAULTS: dict[str, dict[str, Any]] = {}  # type -> field -> its default value
+_FALSE, _TRUE = ("false", "0"), ("true", "1")
+
+
 def parse_msg(text: str, name: str, file: Path, first_line: int = 1) -> dict[str, Any]:
     from rosbags.typesys import get_types_from_msg  # (only for packages' own definitions)
 
@@ -44,7 +50,96 @@ def parse_msg(text: str, name: str, file: Path, first_line: int = 1) -> dict[str
                           f"(expected a field `TYPE NAME [DEFAULT]` or a constant "
                           f"`TYPE NAME=VALUE`)" if line else
                           f"invalid message definition: {exc}", where) from None
+    found = field_defaults(text, file, first_line)
+    if found:
+        DEFAULTS[name] = found
+    else:
+        DEFAULTS.pop(name, None)
     return parsed
+
+
+def field_defaults(text: str, file: Path, first_line: int = 1) -> dict[str, Any]:
+    """The fields of a definition that have a default value (`TYPE NAME VALUE`), as values."""
+    found: dict[str, Any] = {}
+    for number, line in enumerate(text.splitlines(), first_line):
+        words = _uncommented(line).split(None, 2)
+        if len(words) < 3 or "=" in words[1] or words[2].startswith("="):
+            continue  # no default, or a constant
+        kind, field, written = words[0], words[1], words[2].strip()
+        try:
+            found[field] = _default_value(kind, written)
+        except ValueError:
+            raise LaunchError(f"invalid default value '{written}' for {kind} {field} "
+                              f"(expected {_expected(kind)})", Location(str(file), number)) \
+                from None
+    return found
+
+
+def _expected(kind: str) -> str:
+    base = kind.split("[")[0].split("<=")[0]
+    one = {"bool": "true or false", "float32": "a number", "float64": "a number",
+           "string": "a string", "wstring": "a string"}.get(base, "a whole number")
+    return f"[{one}, …]" if "[" in kind else one
+
+
+def _uncommented(line: str) -> str:
+    quote = ""
+    for index, char in enumerate(line):
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "\"'":
+            quote = char
+        elif char == "#":
+            return line[:index]
+    return line
+
+
+def _default_value(kind: str, written: str) -> Any:
+    base = kind.split("[")[0].split("<=")[0].split("/")[-1]
+    if "[" not in kind:
+        return _scalar(base, written)
+    if not (written.startswith("[") and written.endswith("]")):
+        raise ValueError(written)
+    inner = written[1:-1].strip()
+    items = [] if not inner else _items(inner)
+    return [_scalar(base, item.strip()) for item in items]
+
+
+def _items(text: str) -> list[str]:
+    items, current, quote = [], "", ""
+    for char in text:
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "\"'":
+            quote = char
+        elif char == ",":
+            items.append(current)
+            current = ""
+            continue
+        current += char
+    items.append(current)
+    return items
+
+
+def _scalar(base: str, written: str) -> Any:
+    if base in ("string", "wstring"):
+        if len(written) >= 2 and written[0] == written[-1] and written[0] in "\"'":
+            return written[1:-1]
+        return written
+    if base == "bool":
+        if written.lower() in _TRUE:
+            return True
+        if written.lower() in _FALSE:
+            return False
+        raise ValueError(written)
+    if base in ("float32", "float64"):
+        return float(written)
+    return int(written, 0)
+
+
+def _renamed_defaults(old: str, new: str) -> None:
+    if old in DEFAULTS:
+        DEFAULTS[new] = DEFAULTS.pop(old)
 
 
 def _where(reason: str, text: str, name: str, file: Path, first_line: int
@@ -76,6 +171,7 @@ def parse_srv(text: str, name: str, file: Path) -> dict[str, Any]:
     for half, text, first in (("_Request", lines[:cut], 1),
                               ("_Response", lines[cut + 1:], cut + 2)):
         parsed = parse_msg("\n".join(text), f"{package}/msg/{base}{half}", file, first)
+        _renamed_defaults(f"{package}/msg/{base}{half}", f"{name}{half}")
         for key, value in parsed.items():
             out[f"{name}{half}" if key == f"{package}/msg/{base}{half}" else key] = value
     return out
@@ -96,6 +192,7 @@ def parse_action(text: str, name: str, file: Path) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for part, (section, first) in zip(ACTION_PARTS, sections, strict=True):
         parsed = parse_msg("\n".join(section), f"{package}/msg/{base}{part}", file, first)
+        _renamed_defaults(f"{package}/msg/{base}{part}", f"{name}{part}")
         for key, value in parsed.items():
             out[f"{name}{part}" if key == f"{package}/msg/{base}{part}" else key] = value
     out.update(action_definitions(name))
@@ -171,6 +268,7 @@ def parse_ros1_action(text: str, package: str, action: str, file: Path) -> dict[
     out: dict[str, Any] = {}
     for part in ACTION_PARTS:
         out[f"{package}/msg/{action}{part[1:]}"] = parsed[f"{name}{part}"]
+        _renamed_defaults(f"{name}{part}", f"{package}/msg/{action}{part[1:]}")
     out.update({k: v for k, v in parsed.items() if not k.startswith(name)})
     header = ("header", (T.NAME, "std_msgs/msg/Header"))
     status = ("status", (T.NAME, "actionlib_msgs/msg/GoalStatus"))

@@ -1,7 +1,8 @@
 """Messages from plain data and back: `topic pub` YAML in, `topic echo` YAML out.
 
-Missing fields take their zero values. A value that does not fit names the field path and
-the type it expected (`linear.x: expected float64, got 'fast'`).
+Missing fields take their definition's default values, else their zero values. A value that
+does not fit names the field path and the type it expected (`linear.x: expected float64, got
+'fast'`).
 """
 
 from __future__ import annotations
@@ -47,7 +48,9 @@ def build(type_name: str, values: Any, path: str = "", plain: bool = False) -> A
         if key not in known:
             raise MessageError(f"{path}{key}: {name} has no field '{key}'"
                                f"{did_you_mean(str(key), known)}; fields: {', '.join(known)}")
-    kwargs = {f: _value(kind, detail, values.get(f), f"{path}{f}", plain)
+    defaults = types.defaults(name)
+    kwargs = {f: _value(kind, detail, values[f] if f in values else defaults.get(f),
+                        f"{path}{f}", plain)
               for f, (kind, detail) in fields}
     return SimpleNamespace(**kwargs) if plain else types.message_class(name)(**kwargs)
 

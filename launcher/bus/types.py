@@ -369,6 +369,10 @@ class TypeRegistry:
     def fields(self, name: str) -> list[tuple[str, Any]]:
         return list(self.fielddefs[self.ensure(name)][1])
 
+    def defaults(self, name: str) -> dict[str, Any]:
+        """The fields of `name` its definition gives a default value (interfaces.py)."""
+        return interfaces.DEFAULTS.get(self.ensure(name), {})
+
 
 def _referenced(kind: Any, detail: Any) -> list[str]:
     """Type names a field refers to (names, sequences and arrays of names)."""

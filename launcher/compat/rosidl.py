@@ -173,6 +173,12 @@ def _default(kind: int, detail: Any) -> Callable[[], Any]:
     return list
 
 
+def _written_default(field: str, kind: int, detail: Any, value: Any) -> Callable[[], Any]:
+    """A field's default value from its definition, stored as a value set would be."""
+    check = _checker(field, kind, detail)
+    return lambda: check(list(value) if isinstance(value, list) else value)
+
+
 def _checker(field: str, kind: int, detail: Any) -> Callable[[Any], Any]:
     """A function that checks a value for the field and returns what is stored."""
     if kind == kinds.BASE:
@@ -304,6 +310,7 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
     types = registry()
     fields = types.fields(name)  # registers it (and what it names) for CDR
     constants = types.fielddefs[name][0]
+    defaults = types.defaults(name)
     package, kind, short = name.split("/")
     namespace: dict[str, Any] = {
         "__slots__": tuple("_" + f for f, _ in fields) + (("_seq",) if _ros1_header(name)
@@ -313,7 +320,8 @@ def message_class(type_name: str, module: str = "", qualname: str = "") -> type:
         "_TYPE": name,
         "_FIELDS": tuple(f for f, _ in fields),
         "_SLOTS": tuple("_" + f for f, _ in fields),
-        "_DEFAULTS": tuple(_default(k, d) for _, (k, d) in fields),
+        "_DEFAULTS": tuple(_written_default(f, k, d, defaults[f]) if f in defaults
+                           else _default(k, d) for f, (k, d) in fields),
         "_FIELD_TYPES": {f: _idl(k, d) for f, (k, d) in fields},
         "SLOT_TYPES": tuple(Slot(_idl(k, d)) for _, (k, d) in fields),
     }

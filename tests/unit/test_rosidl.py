@@ -175,3 +175,65 @@ def test_service_halves_by_their_ros1_and_ros2_names():
     from std_srvs.srv import SetBool, SetBool_Response, SetBoolRequest
 
     assert SetBoolRequest is SetBool.Request and SetBool_Response is SetBool.Response
+
+
+def workspace_with(tmp_path, kind: str, name: str, text: str) -> dict[str, str]:
+    package = tmp_path / "ws" / "my_msgs"
+    (package / kind).mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>my_msgs</name><version>1.0.0</version><description>d'
+        '</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>'
+        '</package>')
+    (package / kind / name).write_text(text)
+    return dict(os.environ, PYTHONPATH=SITE, LAUNCHER_PACKAGE_PATH=str(tmp_path / "ws"))
+
+
+def test_a_definitions_default_values_are_what_a_new_message_starts_with(tmp_path):
+    env = workspace_with(tmp_path, "msg", "Gains.msg",
+                         'int32 count 7\nfloat64[] gains [1.5, 2]  # per joint\n'
+                         'string name "bot # one"\nbool on true\nstring[] tags ["a", "b,c"]\n'
+                         'int32 plain\n')
+    done = run_python("""
+        from my_msgs.msg import Gains
+        print(Gains())
+        print(Gains(count=1).count)
+    """, env)
+    assert done.stdout.splitlines() == [
+        "my_msgs.msg.Gains(count=7, gains=array('d', [1.5, 2.0]), name='bot # one', on=True, "
+        "tags=['a', 'b,c'], plain=0)", "1"], done.stderr
+
+
+def test_service_and_action_parts_keep_their_default_values(tmp_path):
+    env = workspace_with(tmp_path, "srv", "Step.srv", "uint64 steps 1\n---\nbool done true\n")
+    (tmp_path / "ws" / "my_msgs" / "action").mkdir()
+    (tmp_path / "ws" / "my_msgs" / "action" / "Go.action").write_text(
+        "float64 speed 0.5\n---\nint8 code -1\n---\nstring state 'moving'\n")
+    done = run_python("""
+        from my_msgs.srv import Step
+        from my_msgs.action import Go
+        print(Step.Request().steps, Step.Response().done)
+        print(Go.Goal().speed, Go.Result().code, Go.Feedback().state)
+    """, env)
+    assert done.stdout.splitlines() == ["1 True", "0.5 -1 moving"], done.stderr
+
+
+def test_messages_built_from_data_take_the_default_values_of_missing_fields(tmp_path):
+    env = workspace_with(tmp_path, "msg", "Gains.msg", "int32 count 7\nint32 plain\n")
+    done = run_python("""
+        from launcher.bus.messages import build
+        message = build("my_msgs/msg/Gains", {"plain": 2})
+        print(message.count, message.plain)
+    """, env)
+    assert done.stdout.strip() == "7 2", done.stderr
+
+
+def test_a_default_value_that_does_not_fit_its_type_is_said_at_its_line(tmp_path):
+    from pathlib import Path
+
+    from launcher.bus.interfaces import parse_msg
+    from launcher.errors import LaunchError
+
+    with pytest.raises(LaunchError) as raised:
+        parse_msg("int32 plain\nint32 count seven\n", "my_msgs/msg/Bad", Path("Bad.msg"))
+    assert str(raised.value) == ("Bad.msg:2: invalid default value 'seven' for int32 count "
+                                 "(expected a whole number)")
