@@ -102,7 +102,7 @@ def run(argv: list[str]) -> int:
         pids = block.params.get("pids_config_file", "").strip()
         if pids and not Path(pids).is_file():
             raise LaunchError(f"{block.where}: pids_config_file '{pids}' does not exist")
-        world = World.from_path(path, BusTransport(node), as_written=True)  # MuJoCo's model
+        world = World.from_path(path, BusTransport(node), as_written=True)  # (MuJoCo's model)
         started = _start_state(world, block)
         speed = float(block.params.get("sim_speed_factor", "-1") or -1)
         server = SimServer(world, node, speed if speed > 0 else 1.0, True)

@@ -14,6 +14,7 @@ from typing import Any
 
 from launcher.sim import mjcf, sdf
 from launcher.sim.mjcf import PluginConfig
+from launcher.sim.plugins import mjcf_sensors
 from launcher.sim.sdf.xmltree import after_prologue
 from launcher.sim.transform import IDENTITY, Pose
 from launcher.user_files import read_text
@@ -44,13 +45,17 @@ class LoadedWorld:
 def load_world_file(path: Path, values: Mapping[str, str] | None = None,
                     environ: Mapping[str, str] | None = None,
                     as_written: bool = False) -> LoadedWorld:
-    """`as_written`: an MJCF compiled with MuJoCo's own defaults (mjcf.compile_spec)."""
+    """`as_written`: an MJCF as mujoco_ros2_control loads it, compiled with MuJoCo's own
+    defaults (mjcf.compile_spec) and its sensors left to its hardware; else its sensors are
+    on ROS (sim/plugins/mjcf_sensors.py)."""
     text = read_text(path)
     if path.name.endswith(".j2"):
         text = mjcf.render_template(text, path, values or {})
     if after_prologue(text).startswith("<sdf"):
         return _from_sdf(sdf.load_world(text, path, environ), path)
     source = mjcf.read(text, path, environ=environ, rendered=True)
+    if not as_written:  # (mujoco_ros2_control's hardware reads its sensors itself)
+        source.plugins.extend(mjcf_sensors.configs(source.label))
     return LoadedWorld(mjcf.compile_spec(source, as_written), str(path), source.plugins,
                        None)
 

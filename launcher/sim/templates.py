@@ -19,6 +19,7 @@ import mujoco
 from launcher.errors import LaunchError
 from launcher.sim import mjcf, sdf, urdf
 from launcher.sim.mjcf import PluginConfig
+from launcher.sim.plugins import mjcf_sensors
 from launcher.sim.resources import model_file, resolve_uri
 from launcher.sim.sdf.xmltree import after_prologue
 from launcher.sim.transform import IDENTITY, Pose
@@ -88,7 +89,8 @@ class Templates:
         if stripped.startswith("<mujoco"):
             source = mjcf.read(text, path, environ=self.environ)
             spec = mjcf.compile_spec(source)
-            return Template(spec, spec.modelname or "model", label, source.plugins)
+            return Template(spec, spec.modelname or "model", label,
+                            [*source.plugins, *mjcf_sensors.configs(label)])
         if stripped.startswith("<sdf"):
             loaded = sdf.load_model(text, path, self.environ, self.packages)
             model = loaded.model

@@ -574,3 +574,19 @@ def test_a_wrong_lidar_setting_is_said_at_the_sensor_line_and_the_sim_runs_on(ws
         assert sim_time(ws) > 0.0  # the sim runs, without that lidar
     finally:
         assert stop(proc) in (0, 130)
+
+
+def test_its_mjcf_sensors_stay_with_its_hardware_not_on_topics_of_their_own(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM.replace(
+        '<geom type="box" size="0.1 0.1 0.5" pos="0 0 0.5"/>',
+        '<geom type="box" size="0.1 0.1 0.5" pos="0 0 0.5"/><site name="imu"/>').replace(
+        "</mujoco>", '<sensor><accelerometer name="acc" site="imu"/></sensor></mujoco>'))
+    proc = ws.start(*node_args(ws, robot(str(model))), output="node.out")
+    try:
+        ws.wait_for_output("controller_manager at", 60, "node.out")
+        assert sim_time(ws) > 0.0
+        listed = ws.run("topic", "list", timeout=30).stdout
+    finally:
+        assert stop(proc) in (0, 130)
+    assert "/clock" in listed and "/imu/imu" not in listed, listed

@@ -24,48 +24,11 @@ from typing import Any
 from launcher.control.yaml_places import key_place
 from launcher.errors import LaunchError, did_you_mean
 from launcher.sim.mujoco_control.ros_plugin import RosPlugin
+from launcher.sim.sensors.mjcf_camera import MjcfCamera
 from launcher.sim.sensors.rendering import rendering_of
 
 PARAMETERS = "mujoco_plugins.mujoco_camera_plugin."
 POLICIES = ("streaming", "polled", "disabled")
-
-
-class MjcfCamera:
-    """One MJCF camera as the renderer draws it (its settings) and the plugin schedules it."""
-
-    def __init__(self, plugin: CameraPlugin, index: int, config: dict[str, Any]) -> None:
-        model = plugin.world.model
-        self.camera_name = model.camera(index).name
-        self.policy = str(config.get("policy", "streaming"))
-        self.width, self.height = (int(v) for v in model.cam_resolution[index])
-        self.fovy = float(model.cam_fovy[index])
-        name = self.camera_name
-        self.frame = str(config.get("frame_name", f"{name}_frame"))
-        self.topics = {stream: plugin.topic(str(config.get(key, default))) for stream, key,
-                       default in (("image", "image_topic", f"{name}/color"),
-                                   ("depth_image", "depth_topic", f"{name}/depth"),
-                                   ("camera_info", "info_topic", f"{name}/camera_info"))}
-        extent = float(model.stat.extent)
-        self.near = float(model.vis.map.znear) * extent
-        self.far = float(model.vis.map.zfar) * extent
-        self.rate = plugin.rate
-        self.requested = False  # a polled camera's trigger, not yet drawn
-
-    def settings(self) -> dict[str, Any]:
-        """What the renderer needs of this camera (sent with the model)."""
-        near, far = self.near, self.far
-        focal = self.height / 2 / math.tan(math.radians(self.fovy) / 2)
-        types = {"image": "sensor_msgs/msg/Image", "depth_image": "sensor_msgs/msg/Image",
-                 "camera_info": "sensor_msgs/msg/CameraInfo"}
-        return {"camera": self.camera_name, "kind": "camera", "width": self.width,
-                "height": self.height, "encoding": "rgb8", "near": near, "far": far,
-                "depth_near": near, "depth_far": far, "beyond_far": "far",
-                "k": [focal, 0.0, self.width / 2, 0.0, focal, self.height / 2, 0.0, 0.0, 1.0],
-                "frame_id": self.frame, "topics": {}, "always_on": False,
-                "name": self.camera_name, "noise": [0.0, 0.0], "seed": 0,
-                "segmentation": "semantic", "distortion": [0.0] * 5, "update_rate": self.rate,
-                "ros": [{"stream": stream, "type": types[stream], "topic": topic,
-                         "frame_id": self.frame} for stream, topic in self.topics.items()]}
 
 
 class CameraPlugin(RosPlugin):
@@ -92,7 +55,7 @@ class CameraPlugin(RosPlugin):
                                   f"{', '.join(POLICIES)})")
             if policy == "disabled":
                 continue
-            camera = MjcfCamera(self, index, config)
+            camera = MjcfCamera(self.world.model, index, config, self.rate, self.topic)
             self.cameras.append(camera)
             self.rendering.add(camera)
             if policy == "polled":

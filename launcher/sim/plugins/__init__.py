@@ -53,6 +53,8 @@ _GZ_CLASS = re.compile(r"^(?:gz::sim|ignition::gazebo)::systems::(?P<system>\w+)
 BUILTIN = {
     "world_state": "launcher.sim.plugins.world_state:WorldState",
     "mujoco.plugin.lidar": "launcher.sim.plugins.mjcf_lidar:MjcfLidar",
+    "mjcf_sensors": "launcher.sim.plugins.mjcf_sensors:MjcfSensors",
+    "mjcf_cameras": "launcher.sim.plugins.mjcf_cameras:MjcfCameras",
     "diff_drive": "launcher.sim.plugins.diff_drive:DiffDrive",
     "gz-sim-diff-drive-system": "launcher.sim.plugins.diff_drive:DiffDrive",
     "gz::sim::systems::DiffDrive": "launcher.sim.plugins.diff_drive:DiffDrive",
