@@ -2,12 +2,13 @@
 
   create [-world W] (-file F | -string XML | -param P | -topic T) [-name N | -entity N]
          [-allow_renaming [true|false]] [-x X] [-y Y] [-z Z] [-R ROLL] [-P PITCH] [-Y YAW]
-         [-timeout SECONDS]
+         [-timeout SECONDS] [-keyframe KEY]
 The same names work as parameters (`--ros-args -p name:=robot -p topic:=robot_description`).
 `-topic` waits for a latched std_msgs/String (robot_state_publisher's robot_description);
 `-param P` reads this node's own parameter P. Without `-world`, the one sim on the bus is
 used. It waits up to `-timeout` (30 s) for the sim's create service; exit 0 on success, 1 with
-the sim's reason, 2 on bad arguments.
+the sim's reason, 2 on bad arguments. `-keyframe KEY` (launcher's) starts an MJCF robot's
+joints from its `<key name="KEY">`, and every reset of the world puts them back there.
 """
 
 from __future__ import annotations
@@ -44,6 +45,8 @@ class Options:
     P: float = attr(Kind.FLOAT, 0.0)
     Y: float = attr(Kind.FLOAT, 0.0)
     timeout: float = attr(Kind.FLOAT, 30.0, minimum=0.0, doc="Seconds to wait for the sim.")
+    keyframe: str = attr(Kind.TEXT, "", doc="An MJCF description's keyframe (<key name>) its "
+                         "joints start from and every reset returns to (launcher's).")
 
 
 NAMES = {spelling for f, spec in declared_fields(Options)
@@ -163,7 +166,8 @@ def spawn(node: Any, joints: Sequence[tuple[str, float]] = ()) -> int:
                            allow_renaming=bool(options.get("allow_renaming", False)),
                            sdf=text, sdf_filename=file,
                            joint_names=[j for j, _ in joints],
-                           joint_positions=[float(v) for _, v in joints])
+                           joint_positions=[float(v) for _, v in joints],
+                           keyframe=options.get("keyframe", ""))
     request.pose.position.x, request.pose.position.y, request.pose.position.z = position
     orientation = request.pose.orientation
     orientation.w, orientation.x, orientation.y, orientation.z = quat

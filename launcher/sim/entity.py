@@ -34,6 +34,7 @@ class Spawn:
     quat: Sequence[float]
     allow_renaming: bool = False
     joints: Mapping[str, float] | None = None
+    keyframe: str = ""  # an MJCF description's <key> its joints start from and reset to
 
 
 @dataclass
@@ -50,4 +51,5 @@ class Entity:
     dof: int = -1
     placed: dict[str, Pose] = field(default_factory=dict)  # static roots as loaded
     spawned: bool = False  # added while the sim runs (not a model of the world file)
+    start: dict[str, list[float]] = field(default_factory=dict)  # joint -> qpos, its keyframe
     info: Any = None  # what simulation_interfaces' SetEntityInfo gave it (category, tags, …)

@@ -351,7 +351,8 @@ class SimServer:
             reply.send(response)
 
         self.spawn_soon(Spawn(template, request.name, position, quat, request.allow_renaming,
-                              dict(zip(names, map(float, values), strict=True))), spawned)
+                              dict(zip(names, map(float, values), strict=True)),
+                              request.keyframe), spawned)
 
     # --- spawning in batches -----------------------------------------------------------------
     def spawn_soon(self, request: Spawn, done: Any) -> None:

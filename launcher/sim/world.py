@@ -162,10 +162,12 @@ class World:
 
     def spawn(self, template: Template, name: str, position: Sequence[float],
               quat: Sequence[float], allow_renaming: bool = False,
-              joints: Mapping[str, float] | None = None) -> Entity:
+              joints: Mapping[str, float] | None = None, keyframe: str = "") -> Entity:
         """Add the template as entity `name`; `joints` gives hinge and slide joints their first
-        positions (a reset puts them back at zero, as the model has them)."""
-        done = self.spawn_all([Spawn(template, name, position, quat, allow_renaming, joints)])[0]
+        positions (a reset puts them back at zero, as the model has them); `keyframe`, an MJCF
+        description's `<key>`, gives its joints theirs (and resets return to it)."""
+        done = self.spawn_all([Spawn(template, name, position, quat, allow_renaming, joints,
+                                     keyframe)])[0]
         if isinstance(done, SpawnError):
             raise done
         return done
@@ -214,6 +216,7 @@ class World:
         self._rebind(self.model, self.data)
         placed = False
         for _, entity, _, request in ready:
+            placed = self._put_at_start(entity) or placed
             for joint, value in (request.joints or {}).items():
                 index = self.model.joint(f"{entity.name}/{joint}").id
                 self.data.qpos[self.model.jnt_qposadr[index]] = value
@@ -244,7 +247,17 @@ class World:
             except LaunchError as exc:
                 raise SpawnError(str(exc)) from None
         entity.plugins = plugins
+        if request.keyframe:
+            entity.start = {f"{name}/{joint}": values for joint, values in
+                            _key_joints(template, request.keyframe).items()}
         return entity, child
+
+    def _put_at_start(self, entity: Entity) -> bool:
+        """Put a robot spawned from a keyframe back at it (after a spawn or a reset)."""
+        for joint, values in entity.start.items():
+            address = self.model.jnt_qposadr[self.model.joint(joint).id]
+            self.data.qpos[address:address + len(values)] = values
+        return bool(entity.start)
 
     def spawn_file(self, uri: str, name: str, pose: Sequence[float] = (0, 0, 0, 0, 0, 0),
                    allow_renaming: bool = False) -> Entity:
@@ -328,11 +341,35 @@ class World:
             for entity in self.entities.values():  # static entities that were moved
                 for root, pose in entity.placed.items():
                     self.placement.put_static(self.model.body(root).id, pose)
+                self._put_at_start(entity)
         if time:
             self.data.time = 0.0
             self.physics.iterations = 0
         mujoco.mj_forward(self.model, self.data)
         self.plugins.reset()
+
+
+def _key_joints(template: Template, keyframe: str) -> dict[str, list[float]]:
+    """The joints of an MJCF description's keyframe and their positions in it; the free
+    joints of its root bodies are left out (the spawn pose places those)."""
+    model = template.spec.copy().compile()
+    names = [model.key(i).name for i in range(model.nkey)]
+    if keyframe not in names:
+        raise SpawnError(f"{template.label}: no keyframe '{keyframe}' in the description"
+                         f"{did_you_mean(keyframe, names)}; its keyframes: "
+                         f"{', '.join(names) or 'none (an MJCF <keyframe><key name=…>)'}")
+    qpos = model.key(keyframe).qpos
+    found = {}
+    for joint in range(model.njnt):
+        body = int(model.jnt_bodyid[joint])
+        if not model.joint(joint).name or (model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE
+                                           and int(model.body_parentid[body]) == 0):
+            continue  # (an unnamed joint cannot be found again once attached)
+        start = int(model.jnt_qposadr[joint])
+        width = {int(mujoco.mjtJoint.mjJNT_FREE): 7, int(mujoco.mjtJoint.mjJNT_BALL): 4}.get(
+            int(model.jnt_type[joint]), 1)
+        found[model.joint(joint).name] = qpos[start:start + width].tolist()
+    return found
 
 
 def _child_of(template: Template, joints: Mapping[str, float]) -> tuple[mujoco.MjSpec, list]:

@@ -305,6 +305,24 @@ def test_create_spawns_an_mjcf_robot_from_a_file_as_it_spawns_an_sdf_one(sim_ws)
     assert "[2.000000 0.000000" in pose, pose  # its pose, falling from 1 m
 
 
+def test_create_with_a_keyframe_the_robot_lacks_is_refused_naming_the_nearest(sim_ws):
+    sim_ws.write("bot.xml", MJCF_ROBOT.replace(
+        "</worldbody>", '</worldbody><keyframe><key name="bent" qpos="0.5"/></keyframe>'))
+    sim = sim_ws.start("sim", "-r", "-v", "3", output="sim.out")
+    try:
+        sim_ws.wait_for_output("world 'empty'", 60, "sim.out")
+        refused = sim_ws.run("run", "ros_gz_sim", "create", "-file", "bot.xml", "-name", "r1",
+                             "-keyframe", "bnet", timeout=60)
+        done = sim_ws.run("run", "ros_gz_sim", "create", "-file", "bot.xml", "-name", "r1",
+                          "-keyframe", "bent", timeout=60)
+    finally:
+        assert stop(sim) in (0, 130)
+    assert refused.returncode == 1 and "Traceback" not in refused.stderr
+    assert "no keyframe 'bnet' in the description (did you mean 'bent'?)" in refused.stderr, \
+        refused.stderr
+    assert done.returncode == 0, done.stderr
+
+
 def test_an_unknown_keyframe_is_one_clean_error_naming_the_nearest(sim_ws):
     sim_ws.write("keyed.xml", '<mujoco model="keyed"><worldbody><body name="ball" pos="0 0 1">'
                  '<freejoint/><geom size="0.1"/></body></worldbody><keyframe>'

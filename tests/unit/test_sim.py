@@ -658,3 +658,35 @@ def test_a_keyframe_the_world_lacks_names_the_nearest(tmp_path):
     assert "no keyframe 'hihg' in the world (did you mean 'high'?); its keyframes: high" in \
         str(caught.value)
     assert world.keyframe == "" and world.data.qpos[2] == pytest.approx(1.0)
+
+
+KEYED_ROBOT = """<mujoco model="arm"><worldbody><body name="base"><geom size="0.1" mass="1"/>
+  <body name="link" pos="0 0 0.2"><joint name="elbow" axis="0 1 0"/>
+    <geom type="capsule" size="0.02 0.1" mass="0.5"/></body></body></worldbody>
+<keyframe><key name="bent" qpos="0.8"/></keyframe></mujoco>"""
+
+
+def test_a_robot_spawned_from_its_keyframe_starts_there_and_resets_to_it(world, tmp_path):
+    path = tmp_path / "arm.xml"
+    path.write_text(KEYED_ROBOT)
+    world.spawn(world.templates.from_file(str(path)), "arm", [2, 0, 0.5], [1, 0, 0, 0],
+                keyframe="bent")
+    elbow = world.model.jnt_qposadr[world.model.joint("arm/elbow").id]
+    root = world.model.jnt_qposadr[world.model.joint(world.model.body("arm/base")
+                                                     .jntadr[0]).id]
+    assert world.data.qpos[elbow] == pytest.approx(0.8)
+    assert world.data.qpos[root:root + 3] == pytest.approx([2, 0, 0.5])  # its pose: the spawn's
+    world.data.qpos[elbow] = -0.3
+    world.reset()
+    assert world.data.qpos[elbow] == pytest.approx(0.8)
+
+
+def test_a_keyframe_the_robot_lacks_refuses_the_spawn_naming_the_nearest(world, tmp_path):
+    path = tmp_path / "arm.xml"
+    path.write_text(KEYED_ROBOT)
+    with pytest.raises(LaunchError) as caught:
+        world.spawn(world.templates.from_file(str(path)), "arm", [2, 0, 0.5], [1, 0, 0, 0],
+                    keyframe="bnet")
+    assert "no keyframe 'bnet' in the description (did you mean 'bent'?); its keyframes: bent" \
+        in str(caught.value)
+    assert "arm" not in world.entities
