@@ -442,6 +442,28 @@ def test_the_external_wrench_plugin_pushes_a_body_for_its_duration(ws):
     assert "success: true" in ws.output("call.out") and answered - before >= 3.0
 
 
+def test_a_live_wrench_is_shown_as_arrow_markers_in_its_bodys_frame(ws):
+    ws.own_bus()
+    model = ws.write("arm.xml", ARM)
+    plugins = ws.write("plugins.yaml", WRENCH_PLUGIN)
+    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    try:
+        ws.wait_for_output("ExternalWrenchPlugin: /push/apply_wrench", 60, "node.out")
+        pushing = ws.start("service", "call", "/push/apply_wrench",
+                           "mujoco_ros2_control_msgs/srv/ApplyExternalWrench", wrench("link", 3),
+                           output="call.out")
+        shown = wait_until(lambda: "external_wrench/force" in ws.run(
+            "topic", "echo", "/mujoco_ros2_control_node/wrench_markers",
+            "visualization_msgs/msg/MarkerArray", "--once", timeout=30).stdout, 20)
+        markers = ws.run("topic", "echo", "/mujoco_ros2_control_node/wrench_markers",
+                         "visualization_msgs/msg/MarkerArray", "--once", timeout=30).stdout
+        assert pushing.wait(60) == 0, ws.output("call.out")
+    finally:
+        assert stop(proc) in (0, 130)
+    assert shown, markers
+    assert "frame_id: link" in markers and "x: 4.0" in markers, markers  # 400 N * 0.01 m/N
+
+
 def test_a_wrench_on_a_body_the_model_lacks_is_refused_whole(ws):
     ws.own_bus()
     model = ws.write("arm.xml", ARM)

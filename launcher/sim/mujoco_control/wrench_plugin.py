@@ -9,7 +9,10 @@ applied as MuJoCo's `xfrc_applied` before every physics step, at the body's cent
 with the torque the offset adds. A request naming a body the model lacks is refused whole,
 with the nearest names; a ramp longer than its duration too. The answer comes once the
 longest wrench has ended, in sim time (the plugin sleeps that long in wall time; a paused or
-slower sim would answer before its wrench was done).
+slower sim would answer before its wrench was done). While someone subscribes,
+`~/wrench_markers` (the node's, as a sub-node's private name resolves) shows each live wrench
+as arrows from its application point in the body's frame: force red (`force_arrow_scale`,
+0.01 m/N), torque cyan (`torque_arrow_scale`, 0.1 m/(N m)), both shrinking with the ramp.
 """
 
 from __future__ import annotations
@@ -23,6 +26,9 @@ from launcher.errors import did_you_mean
 from launcher.sim.mujoco_control.ros_plugin import RosPlugin
 
 SERVICE = "mujoco_ros2_control_msgs/srv/ApplyExternalWrench"
+MARKERS = "visualization_msgs/msg/MarkerArray"
+SHAFT, HEAD = 0.02, 0.04  # m: the arrows' diameters
+ARROW, ADD = 0, 0  # visualization_msgs/Marker
 
 
 def _seconds(duration: Any) -> float:
@@ -38,6 +44,10 @@ class ExternalWrench(RosPlugin):
         service = self.node.create_service(SERVICE, self.topic("apply_wrench"), self.on_apply)
         service.deferred = True
         self.log.info(f"ExternalWrenchPlugin: {service.name}")
+        self.scales = (float(self.param("force_arrow_scale", 0.01)),
+                       float(self.param("torque_arrow_scale", 0.1)))
+        self.markers = self.node.create_publisher(
+            MARKERS, "~/wrench_markers", 10)
 
     def on_apply(self, request: Any, reply: Any) -> None:
         response = reply.new_response()
@@ -89,8 +99,30 @@ class ExternalWrench(RosPlugin):
         self.active = [w for w in self.active if now < w[4]]
 
     def update(self, model: Any, data: Any, now: float) -> None:
-        """Each control cycle: requests whose wrenches have all ended are answered."""
+        """Each control cycle: requests whose wrenches have all ended are answered; the
+        live wrenches' markers published."""
         done = [w for w in self.waiting if w[0] <= now]
         self.waiting = [w for w in self.waiting if w[0] > now]
         for _, reply, response in done:
             reply.send(response)
+        if self.markers.get_subscription_count():
+            self.markers.publish(self._markers(model, now))
+
+    def _markers(self, model: Any, now: float) -> Any:
+        node, markers = self.node, []
+        for body, force, torque, point, end, ramp in self.active:
+            scale = 1.0 if ramp <= 0 or end - now >= ramp else max(0.0, (end - now) / ramp)
+            for vector, arrow_scale, part, colour in (
+                    (force, self.scales[0], "force", (1.0, 0.0, 0.0)),
+                    (torque, self.scales[1], "torque", (0.0, 0.7, 0.9))):
+                if float(vector @ vector) <= 1e-18:
+                    continue
+                tip = point + vector * arrow_scale * scale
+                markers.append(node.message(
+                    "visualization_msgs/msg/Marker",
+                    header={"frame_id": model.body(body).name},  # (stamp 0: the latest tf)
+                    ns=f"external_wrench/{part}", id=len(markers), type=ARROW, action=ADD,
+                    points=[dict(zip("xyz", map(float, p), strict=True)) for p in (point, tip)],
+                    scale={"x": SHAFT, "y": HEAD, "z": 0.0},
+                    color=dict(zip("rgba", (*colour, 0.8), strict=True))))
+        return node.message(MARKERS, markers=markers)
