@@ -6,7 +6,8 @@ The URDF comes from `-u FILE`, `-r TEXT` or robot_state_publisher's `robot_descr
 parameter; `<mujoco_inputs>` from `-m FILE` or the URDF; the scene from `--scene FILE` or
 the URDF's `<mujoco_inputs><scene>`. Published, the files live in a private temporary folder
 for as long as the node runs. The conversion is launcher's (launcher/sim/mjcf_generation),
-with MuJoCo's URDF compiler; only COLLADA meshes need trimesh, installed apart and said.
+with MuJoCo's URDF compiler; only COLLADA meshes and `decompose_mesh` need tools of their own
+(trimesh, CoACD), installed apart and said.
 """
 
 from __future__ import annotations
@@ -53,17 +54,17 @@ def build_parser() -> argparse.ArgumentParser:
         help="Optionally pass an existing folder with pre-generated OBJ meshes.")
     add("--scene", default=None, help="Optionally pass an existing xml for the scene")
     add("--install-only", action="store_true",
-        help="Only install the tools COLLADA meshes need (trimesh), then exit")
+        help="Only install the tools COLLADA meshes and decompose_mesh need, then exit")
     return parser
 
 
 def run(argv: list[str]) -> int:
-    from launcher.sim.mjcf_generation import collada
+    from launcher.sim.mjcf_generation import apart
 
     ros = argv[argv.index("--ros-args"):] if "--ros-args" in argv else []
     args = build_parser().parse_args(argv[:len(argv) - len(ros)])
     if args.install_only:
-        collada.python_with_trimesh(_say)
+        apart.python_with_tools(_say)
         return 0
     if not args.publish_topic and not args.save_only:
         raise LaunchError("give --publish_topic TOPIC (the MJCF for a ros2_control_node) or "
@@ -98,7 +99,7 @@ def run(argv: list[str]) -> int:
 
 def _convert(args: argparse.Namespace, text: str, urdf_label: str, output: Path) -> Path:
     from launcher.packages.index import PackageIndex
-    from launcher.sim.mjcf_generation import collada, convert, inputs
+    from launcher.sim.mjcf_generation import apart, convert, inputs
     from launcher.sim.resources import resolve_uri
 
     inputs_label, inputs_text = (args.mujoco_inputs, read_text(Path(args.mujoco_inputs))) \
@@ -124,7 +125,7 @@ def _convert(args: argparse.Namespace, text: str, urdf_label: str, output: Path)
         convert.Options(output, relative_assets=not args.publish_topic, fuse=args.fuse,
                         add_free_joint=args.add_free_joint, scene=scene,
                         pregenerated=pregenerated),
-        lambda uri: resolve_uri(uri, base, packages), collada.converter(_say))
+        lambda uri: resolve_uri(uri, base, packages), apart.Tools(_say))
     for warning in warnings:
         print(f"[{NAME}] warning: {warning}", file=sys.stderr, flush=True)
     _say(f"wrote {formatted}")

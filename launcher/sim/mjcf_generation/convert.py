@@ -20,6 +20,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import mujoco
 
@@ -53,27 +54,29 @@ class Options:
 
 
 def convert(text: str, label: str, inputs: Inputs, options: Options,
-            resolve: Callable[[str], Path],
-            convert_dae: Callable[[Path, Path], None]) -> tuple[Path, list[str]]:
+            resolve: Callable[[str], Path], tools: Any) -> tuple[Path, list[str]]:
     """Write the MJCF of URDF `text` into `options.output`: its path, and warnings."""
     robot = parse_robot(text, label)
     root = root_link(robot, text, label)
     if options.add_free_joint and options.fuse and root != "world":
         robot, root = _with_floating_root(robot, root)
     frames = link_frames(robot, root)
-    compiled = _compile_urdf(copy.deepcopy(robot), label, options, resolve, convert_dae)
+    compiled, parts = _compile_urdf(copy.deepcopy(robot), label, options, resolve, tools,
+                                    inputs.decompose)
     mjcf = ET.fromstring(compiled.read_text())
     if options.add_free_joint and root != "world":
         _free_joint(mjcf, root, options.fuse)
     _split_visuals(mjcf)
+    _collide_as_parts(mjcf, parts)
     _drop_repeated_mimics(mjcf, inputs.raw)
     mjcf.extend(copy.deepcopy(options.scene))
     mjcf.extend(copy.deepcopy(inputs.raw))
     _add_sites(mjcf, frames, options.add_free_joint and root != "world")
     _add_cameras(mjcf, inputs)
     _add_lidars(mjcf, inputs)
-    warnings = [f"decompose_mesh '{name}': not done (no convex decomposition here); the mesh "
-                "collides as its convex hull" for name in inputs.decompose]
+    warnings = [f"decompose_mesh '{name}': the robot has no mesh of that name"
+                f"{did_you_mean(name, _meshes(mjcf))}" for name in inputs.decompose
+                if name not in parts]
     warnings += _modify(mjcf, inputs)
     out = options.output / FORMATTED
     ET.indent(mjcf)
@@ -104,13 +107,13 @@ def _with_floating_root(robot: ET.Element, root: str) -> tuple[ET.Element, str]:
 
 
 def _compile_urdf(robot: ET.Element, label: str, options: Options,
-                  resolve: Callable[[str], Path],
-                  convert_dae: Callable[[Path, Path], None]) -> Path:
+                  resolve: Callable[[str], Path], tools: Any,
+                  decompose: dict[str, str]) -> tuple[Path, dict[str, list[str]]]:
     for parent in list(robot.iter()):
         for collision in parent.findall("collision"):
             parent.remove(collision)
     assets = options.output / "assets"
-    gather(robot, assets, resolve, options.pregenerated, convert_dae)
+    parts = gather(robot, assets, resolve, options.pregenerated, tools, decompose)
     compiler = {"assetdir": "assets" if options.relative_assets else str(assets),
                 "balanceinertia": "true", "discardvisual": "false", "strippath": "false"}
     if not options.fuse:
@@ -131,7 +134,7 @@ def _compile_urdf(robot: ET.Element, label: str, options: Options,
             from None
     compiled = options.output / COMPILED
     mujoco.mj_saveLastXML(str(compiled), model)
-    return compiled
+    return compiled, parts
 
 
 def _free_joint(mjcf: ET.Element, root: str, fused: bool) -> None:
@@ -167,6 +170,38 @@ def _split_visuals(mjcf: ET.Element) -> None:
             parent.remove(geom)
             ET.SubElement(parent, "geom", collision)
             ET.SubElement(parent, "geom", visual)
+
+
+def _collide_as_parts(mjcf: ET.Element, parts: dict[str, list[str]]) -> None:
+    """A decomposed mesh collides as its convex parts: its collision geoms become one per
+    part (meshes `<stem>_collision_<i>`, as obj2mjcf names them); its visuals stay whole."""
+    asset = mjcf.find("asset")
+    for stem, files in parts.items():
+        whole = next((m for m in asset.iter("mesh") if m.get("name", _name(m)) == stem), None) \
+            if asset is not None else None
+        if whole is None:
+            continue
+        for file in files:
+            mesh = ET.SubElement(asset, "mesh", {"name": Path(file).stem, "file": file})
+            if whole.get("scale"):
+                mesh.set("scale", whole.get("scale", ""))
+        for parent in list(mjcf.iter()):
+            for geom in [g for g in parent.findall("geom") if g.get("mesh") == stem and
+                         g.get("class") == "collision"]:
+                index = list(parent).index(geom)
+                parent.remove(geom)
+                for offset, file in enumerate(files):
+                    parent.insert(index + offset, ET.Element(
+                        "geom", dict(geom.attrib, mesh=Path(file).stem)))
+
+
+def _name(mesh: ET.Element) -> str:
+    """A mesh asset's name: its own, else its file's stem (MuJoCo's rule)."""
+    return Path(mesh.get("file", "")).stem
+
+
+def _meshes(mjcf: ET.Element) -> list[str]:
+    return [m.get("name", _name(m)) for m in mjcf.iter("mesh")]
 
 
 def _drop_repeated_mimics(mjcf: ET.Element, raw: list[ET.Element]) -> None:
