@@ -73,34 +73,76 @@ class SimServer:
         self._steps_asked = 0
         self._ros_clocks: list[Any] = []  # rosgraph_msgs/Clock on the ROS graph (add_ros_clock)
         self.pacer = Pacer(world.model.opt.timestep, rtf)
-        name = world.world_name
-        self._clocks = [node.create_publisher("mujoco_sim/msg/Clock", "/clock"),
-                        node.create_publisher("mujoco_sim/msg/Clock", f"/world/{name}/clock")]
-        node.create_service("mujoco_sim/srv/Control", f"/world/{name}/control", self.on_control)
+        self.state_rate = state_rate
+        self.no_world = False  # the world unloaded (simulation_interfaces' UnloadWorld)
         self._spawns: list[tuple[Spawn, Any]] = []  # spawn_soon's, not yet spawned
-        create = node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create",
-                                     self.on_create)
-        create.deferred = True
-        node.create_service("mujoco_sim/srv/Remove", f"/world/{name}/remove", self.on_remove)
-        node.create_service("mujoco_sim/srv/SetPose", f"/world/{name}/set_pose", self.on_set_pose)
-        node.create_service("mujoco_sim/srv/State", f"/world/{name}/state", self.on_state)
+        self._clocks = [node.create_publisher("mujoco_sim/msg/Clock", "/clock")]
+        self._named: list[Any] = []  # the endpoints named by the world (_serve_world)
+        self._serve_world(world.world_name)
         self.camera = Camera(world)  # its GL context is made at the first snapshot
-        node.create_service("mujoco_sim/srv/Snapshot", f"/world/{name}/snapshot",
-                            self.on_snapshot)
         # the web viewer on request (`gz sim -g`), made by start_view(port) if one is given
         self.start_view: Any = None
-        node.create_service("mujoco_sim/srv/Gui", f"/world/{name}/gui", self.on_gui)
-        world.load_world_plugins(before=[config_from(
-            f'<plugin filename="world_state" name="WorldState">'
-            f"<update_rate>{state_rate}</update_rate></plugin>", "the sim")])
+        self._load_plugins(world)
         # ROS's standard simulator API (simulation_interfaces) on the ROS graph, as ros_gz's
         self.standard_api = simulation_interfaces.serve(self)
         self._started = time.monotonic()
         self.leader: Leader | None = None
         self.tick_steps = 0
+        self.lockstep = lockstep
         if lockstep is not None:
-            self.leader = Leader(node.host, name, self.log)
+            self.leader = Leader(node.host, world.world_name, self.log)
             self.tick_steps = max(1, round(lockstep / world.model.opt.timestep))
+
+    def _serve_world(self, name: str) -> None:
+        """The sim's services and clock under `/world/<name>/`, as gz sim names them."""
+        node = self.node
+        for endpoint in self._named:
+            endpoint.destroy()
+        clock = node.create_publisher("mujoco_sim/msg/Clock", f"/world/{name}/clock")
+        self._clocks[1:] = [clock]
+        create = node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create",
+                                     self.on_create)
+        create.deferred = True
+        self._named = [clock, create] + [node.create_service(
+            f"mujoco_sim/srv/{kind}", f"/world/{name}/{service}", callback)
+            for kind, service, callback in (
+                ("Control", "control", self.on_control),
+                ("Remove", "remove", self.on_remove),
+                ("SetPose", "set_pose", self.on_set_pose),
+                ("State", "state", self.on_state),
+                ("Snapshot", "snapshot", self.on_snapshot),
+                ("Gui", "gui", self.on_gui))]
+
+    def _load_plugins(self, world: World) -> None:
+        world.load_world_plugins(before=[config_from(
+            f'<plugin filename="world_state" name="WorldState">'
+            f"<update_rate>{self.state_rate}</update_rate></plugin>", "the sim")])
+
+    def load(self, world: World, no_world: bool = False) -> None:
+        """Put `world` in the place of the running one (simulation_interfaces' LoadWorld):
+        the old one's entities and plugins go, the new one's plugins load, and it is stopped
+        (paused, at time 0). Its services and clock follow its name. `no_world`: an empty
+        stand-in after UnloadWorld, until a world is loaded."""
+        for _, done in self._spawns:
+            done(SpawnError("the world was replaced before the entity could be added"))
+        self._spawns = []
+        old = self.world
+        old.close()
+        self.world, self.no_world = world, no_world
+        self.pacer = Pacer(world.model.opt.timestep, self.pacer.rtf)
+        if world.world_name != old.world_name:
+            self._serve_world(world.world_name)
+            if self.leader is not None and self.lockstep is not None:
+                self.leader.close()
+                self.leader = Leader(self.node.host, world.world_name, self.log)
+        if self.lockstep is not None:
+            self.tick_steps = max(1, round(self.lockstep / world.model.opt.timestep))
+        self.camera.close()
+        self.camera = Camera(world)
+        self._load_plugins(world)
+        self.paused = True
+        self.stop_stepping()
+        self.publish_clock()
 
     # --- the loop --------------------------------------------------------------------------
     def run(self, iterations: int | None = None) -> None:
@@ -117,9 +159,10 @@ class SimServer:
                 self.view.close()
 
     def _loop(self, iterations: int | None) -> None:
-        world, pacer, node = self.world, self.pacer, self.node
+        node = self.node
         self.publish_clock()
         while not self.stopped:
+            world, pacer = self.world, self.pacer  # (a loaded world takes their place)
             if self._spawns:
                 self._spawn_pending()
             if iterations is not None and world.physics.iterations >= iterations:
@@ -197,7 +240,9 @@ class SimServer:
 
     # --- pausing and stepping, for the services of a plugin (mujoco_ros2_control's) ---------
     def set_paused(self, paused: bool) -> None:
-        """Pause or run; running ends steps still to go (their caller is told so)."""
+        """Pause or run; running ends steps still to go (their caller is told so). With no
+        world loaded (UnloadWorld) it stays paused."""
+        paused = paused or self.no_world
         if self.paused and not paused:
             self.pacer.restart()  # no catching up on the time spent paused
         self.paused = paused
@@ -307,7 +352,7 @@ class SimServer:
         # A reset alone keeps a paused world paused, as Gazebo does; pause/step say otherwise
         was_paused = self.paused
         if not (resetting and not request.pause and not steps):
-            self.paused = request.pause
+            self.paused = request.pause or self.no_world
         if self.steps_to_go:
             self._stepped(False)  # replaced by this request
         self.steps_to_go = steps if self.paused else 0  # replaces what was still to go
@@ -322,6 +367,8 @@ class SimServer:
     def on_create(self, request: Any, reply: Any) -> None:
         response = reply.new_response()
         try:
+            if self.no_world:
+                raise LaunchError("no world is loaded (UnloadWorld removed it): load one first")
             templates = self.world.templates
             if request.sdf.strip():
                 template = templates.from_string(request.sdf, f"entity '{request.name}'")

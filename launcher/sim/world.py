@@ -19,6 +19,7 @@ message / logger), so it can be stepped without one.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import re
 from collections.abc import Collection, Mapping, Sequence
@@ -74,6 +75,7 @@ class World:
         world = cls(loaded.spec, loaded.label, transport, loaded.plugins, models=loaded.models,
                     seed=seed, spherical_coordinates=loaded.spherical_coordinates)
         world.real_time_factor = loaded.real_time_factor
+        world.load_warnings = list(loaded.warnings)
         return world
 
     def __init__(self, spec: mujoco.MjSpec, label: str, transport: Transport,
@@ -84,6 +86,7 @@ class World:
         """`models`: the world file's models (SDF); None takes MJCF's top-level bodies.
         `seed` seeds the sensors' noise."""
         self.spec, self.label, self.transport = spec, label, transport
+        self.load_warnings: list[str] = []  # what the file holds that launcher leaves out
         self.world_name = world_name(spec.modelname)
         if self.world_name not in (spec.modelname, "default"):
             transport.logger.warning(f"world name '{spec.modelname}' is not a valid ROS name "
@@ -286,6 +289,16 @@ class World:
             for plugin in entity.plugins:
                 plugin.close()
         self._rebind(model, data)
+
+    def close(self) -> None:
+        """The world is done with (another takes its place): every plugin closed, its
+        renderer stopped."""
+        for plugin in list(self.plugins.all):
+            with contextlib.suppress(Exception):  # (one that fails must not keep the rest)
+                plugin.close()
+        rendering = getattr(self, "rendering", None)
+        if rendering is not None:
+            rendering.retire()
 
     def entity(self, name: str) -> Entity:
         if name not in self.entities:

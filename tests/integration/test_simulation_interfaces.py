@@ -141,7 +141,7 @@ features = call("get_simulator_features", GetSimulatorFeatures).features
 out(features=list(features.features), formats=list(features.spawn_formats))
 """)
     assert {0, 1, 10, 11, 20, 23, 24, 25, 26, 31, 32, 33, 50} <= set(seen["features"])
-    assert 40 not in seen["features"] and 43 not in seen["features"]  # no LoadWorld/Unload
+    assert {40, 41, 43, 44, 45} <= set(seen["features"])  # LoadWorld and UnloadWorld too
     assert seen["formats"] == ["sdf", "urdf", "mjcf"]
     listed = arena.run("service", "list").stdout.split()
     for name in ("delete_entity", "get_available_worlds", "get_current_world", "get_entities",
@@ -396,21 +396,90 @@ out(names=[p.name for p in poses], at=[round(dock.pose.position.x, 3),
     assert seen["unknown"][0] == 2 and "did you mean 'dock'" in seen["unknown"][1]
 
 
-def test_worlds_spawnables_and_loading_another_world(arena):
+def test_worlds_and_spawnables(arena):
     seen = client(arena, """
 current = call("get_current_world", GetCurrentWorld)
 available = call("get_available_worlds", GetAvailableWorlds)
 spawnables = call("get_spawnables", GetSpawnables).spawnables
 out(current=[current.world.name, current.world.world_resource.uri],
     available=[w.name for w in available.worlds],
-    spawnables=[[s.entity_resource.uri, s.description] for s in spawnables],
-    load=code(call("load_world", LoadWorld, world_resource=Resource(uri="empty.sdf")))[0],
-    unload=code(call("unload_world", UnloadWorld))[0], state=state())
+    spawnables=[[s.entity_resource.uri, s.description] for s in spawnables])
 """)
     assert seen["current"] == ["arena", str(arena.root / "arena.sdf")]
     assert "empty" in seen["available"]
     assert seen["spawnables"] == [["model://crate", "A wooden crate"]]
-    assert (seen["load"], seen["unload"], seen["state"]) == (0, 0, 0)
+
+
+def test_load_world_puts_a_world_in_the_place_of_the_running_one_stopped(arena):
+    arena.write("table_top.xml", MJCF_WORLD)
+    seen = client(arena, f"""
+spawned = spawn("crate_1", uri="model://crate")
+set_state(SimulationState.STATE_PLAYING)
+loaded = call("load_world", LoadWorld,
+              world_resource=Resource(uri="{arena.root / 'table_top.xml'}"))
+current = call("get_current_world", GetCurrentWorld)
+out(loaded=code(loaded), name=loaded.world.name, current=current.world.name,
+    entities=entities(), state=state(), at=seconds("cube"),
+    named=[p.name for p in call("get_named_poses", GetNamedPoses).poses],
+    spawned=spawn("crate_2", uri="model://crate")[0])
+""")
+    assert seen["loaded"] == [1, ""] and seen["name"] == seen["current"] == "table_top"
+    assert seen["entities"] == ["cube", "table"]  # the arena's, and crate_1, are gone
+    assert seen["state"] == 0 and seen["at"] == 0.0  # stopped: paused at time 0
+    assert seen["named"] == ["drop_zone"] and seen["spawned"] == 1
+    services = arena.run("gz", "service", "-l").stdout  # the sim's own follow its name
+    assert "/world/table_top/create" in services and "/world/arena/create" not in services
+
+
+def test_load_world_takes_a_world_as_a_string(arena):
+    seen = client(arena, f"""
+loaded = call("load_world", LoadWorld, world_resource=Resource(resource_string={MJCF_WORLD!r}))
+current = call("get_current_world", GetCurrentWorld)
+out(loaded=code(loaded)[0], entities=entities(),
+    string=current.world.world_resource.resource_string == {MJCF_WORLD!r})
+""")
+    assert seen == {"loaded": 1, "entities": ["cube", "table"], "string": True}
+
+
+def test_load_world_refusals_leave_the_running_world(arena):
+    arena.write("broken.sdf", "<sdf version='1.9'><world name='b'><model name='m'>")
+    arena.write("notes.txt", "a world, surely")
+    arena.write("meshy.sdf", "<sdf version='1.9'><world name='meshy'><model name='m'><link "
+                "name='l'><visual name='v'><geometry><mesh><uri>model://no_such_model/m.stl"
+                "</uri></mesh></geometry></visual></link></model></world></sdf>")
+    seen = client(arena, f"""
+def load(**resource):
+    return code(call("load_world", LoadWorld, world_resource=Resource(**resource)))
+out(none=load(), missing=load(uri="no_such_world.sdf"),
+    text=load(uri="{arena.root / 'notes.txt'}"), broken=load(uri="{arena.root / 'broken.sdf'}"),
+    assets=load(uri="{arena.root / 'meshy.sdf'}"),
+    current=call("get_current_world", GetCurrentWorld).world.name, entities=entities())
+""")
+    assert seen["none"][0] == 102  # NO_RESOURCE
+    assert seen["missing"][0] == 2 and "world 'no_such_world.sdf' not found" in \
+        seen["missing"][1]
+    assert seen["text"][0] == 101 and "expected SDF (<sdf>) or MJCF" in seen["text"][1]
+    assert seen["broken"][0] == 103 and "broken.sdf" in seen["broken"][1]
+    assert seen["assets"][0] == 104 and "no_such_model" in seen["assets"][1]
+    assert seen["current"] == "arena" and seen["entities"] == ["ball", "wall"]
+
+
+def test_unload_world_leaves_no_world_until_one_is_loaded(arena):
+    seen = client(arena, """
+unloaded = code(call("unload_world", UnloadWorld))
+out(unloaded=unloaded, again=code(call("unload_world", UnloadWorld))[0],
+    current=code(call("get_current_world", GetCurrentWorld))[0], state=state(),
+    entities=entities(), play=set_state(SimulationState.STATE_PLAYING)[0],
+    spawn=spawn("crate_1", uri="model://crate")[:2],
+    step=code(call("step_simulation", StepSimulation, steps=5))[0],
+    loaded=code(call("load_world", LoadWorld, world_resource=Resource(uri="empty.sdf")))[0],
+    after=state())
+""")
+    assert seen["unloaded"] == [1, ""] and seen["again"] == 101  # NO_WORLD_LOADED
+    assert seen["current"] == 101 and seen["state"] == 4  # STATE_NO_WORLD
+    assert seen["entities"] == [] and seen["play"] == 103  # INCORRECT_TRANSITION
+    assert seen["spawn"][0] == 4 and "no world is loaded" in seen["spawn"][1]
+    assert seen["step"] == 4 and (seen["loaded"], seen["after"]) == (1, 0)
 
 
 def test_quitting_ends_the_sim(ws):

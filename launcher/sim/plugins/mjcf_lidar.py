@@ -8,7 +8,7 @@ elevation e of the site's frame, rows of azimuths one elevation after another; a
 past `max_range`, under `min_range` or with nothing hit is -1, as the extension writes it.
 Like the extension, a scan is taken when `1 / update_rate` of sim time has passed since the
 last (from the first step on), whoever reads it; `ranges` and `stamp` (the sim time it was
-taken) are what mujoco_ros2_control's 3D lidar plugin publishes (ros_plugins.py). A wrong
+taken) are what mujoco_ros2_control's 3D lidar plugin publishes (lidar3d_plugin.py). A wrong
 setting is an error at the sensor's line (the extension's words), and the sim goes on without
 that lidar. `async` is accepted: the scan is taken in the step.
 """
@@ -69,6 +69,7 @@ class MjcfLidar(Plugin):
         self.directions = np.stack([np.cos(a) * np.cos(e), np.sin(a) * np.cos(e), np.sin(e)],
                                    axis=-1).reshape(-1, 3)
         self.ranges = np.full(len(self.directions), -1.0)
+        self.geoms = np.zeros(len(self.directions), dtype=np.int32)
         self.stamp = 0.0  # the sim time of the last scan (0: none yet)
         self.last = -1.0  # the extension's first "last compute time"
         self.site = -1
@@ -114,11 +115,12 @@ class MjcfLidar(Plugin):
         return values[0], values[1]
 
     def bind(self, model: Any, data: Any) -> None:
+        prefix = f"{self.entity.name}/" if self.entity is not None else ""  # (a spawned one's)
         names = [model.site(i).name for i in range(model.nsite)]
-        if self.site_name not in names:
+        if prefix + self.site_name not in names:
             self.fail(f"site '{self.site_name}' is not in the model"
-                      f"{did_you_mean(self.site_name, names)}")
-        self.site = names.index(self.site_name)
+                      f"{did_you_mean(prefix + self.site_name, names)}")
+        self.site = names.index(prefix + self.site_name)
 
     def reset(self) -> None:
         self.last, self.stamp, self.next_update = -1.0, 0.0, 0.0
@@ -132,8 +134,7 @@ class MjcfLidar(Plugin):
         self.next_update = data.time + self.period
         rotation = data.site_xmat[self.site].reshape(3, 3)
         vectors = np.ascontiguousarray(self.directions @ rotation.T).reshape(-1)
-        geoms = np.zeros(len(self.ranges), dtype=np.int32)
         mujoco.mj_multiRay(model, data, data.site_xpos[self.site], vectors, None, 1, -1,
-                           geoms, self.ranges, None, len(self.ranges), self.max_range)
+                           self.geoms, self.ranges, None, len(self.ranges), self.max_range)
         self.ranges[(self.ranges >= self.max_range) | (self.ranges < self.min_range)] = -1.0
         self.stamp = data.time

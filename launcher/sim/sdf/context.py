@@ -15,12 +15,16 @@ from pathlib import Path
 from typing import Any
 
 from launcher.errors import LaunchError
-from launcher.sim.resources import SDF_VERSIONS, model_file, resolve_uri
+from launcher.sim.resources import SDF_VERSIONS, ResourceNotFound, model_file, resolve_uri
 from launcher.sim.sdf.xmltree import Element, SdfError, parse
 from launcher.user_files import read_text
 
 OLDEST, NEWEST = SDF_VERSIONS
 
+
+
+class AssetNotFound(SdfError, ResourceNotFound):
+    """A mesh, model or file an SDF names that is nowhere (at the element naming it)."""
 
 @dataclass(frozen=True)
 class Origin:
@@ -49,6 +53,8 @@ class Context:
     def resolve(self, uri: str, element: Element, origin: Origin, what: str) -> Path:
         try:
             return resolve_uri(uri, origin.base, self.packages, self.environ)
+        except ResourceNotFound as exc:
+            raise AssetNotFound(f"{what} {exc.message}", element.location) from None
         except LaunchError as exc:
             raise element.error(f"{what} {exc.message}") from None
 

@@ -111,3 +111,10 @@ class Rendering:
                 self.process.kill()
                 self.process.wait()
             self.process = None
+
+    def retire(self) -> None:
+        """Its world is gone (another was loaded): the renderer stopped, the topics given up
+        (the latched model with them)."""
+        self.close()
+        for endpoint in (self.model_publisher, self.state_publisher, self.subscription):
+            endpoint.destroy()

@@ -10,8 +10,8 @@ pausing, stepping and resetting), beside the `/world/<w>/…` services and the `
                  GetEntityInfo, SetEntityInfo, GetEntityBounds (and the entity filters)
   spawning.py    SpawnEntity, SpawnEntities (one recompile for the lot), DeleteEntity,
                  GetSpawnables
-  worlds.py      GetCurrentWorld, GetAvailableWorlds, GetNamedPoses, GetNamedPoseBounds,
-                 LoadWorld and UnloadWorld (unsupported: one sim process runs one world)
+  worlds.py      GetCurrentWorld, GetAvailableWorlds, GetNamedPoses, GetNamedPoseBounds
+  world_loading.py  LoadWorld (a world in the place of the running one), UnloadWorld
 GetSimulatorFeatures lists what is served. Every answer carries a Result: OK, or a code and a
 message saying what was wrong; a request never stops the sim (QUITTING aside).
 """
@@ -45,6 +45,8 @@ FEATURES = [
     20, 21, 22, 23,  # SIMULATION_RESET and its TIME, STATE and SPAWNED scopes
     24, 25, 26,  # SIMULATION_STATE_GETTING, _SETTING, _PAUSE
     31, 32, 33,  # STEP_SIMULATION_SINGLE, _MULTIPLE, _ACTION
+    40, 41,  # WORLD_LOADING, WORLD_RESOURCE_STRING
+    43,  # WORLD_UNLOADING
     44,  # WORLD_INFO_GETTING
     45,  # AVAILABLE_WORLDS
     50,  # SPAWNING_ENTITIES
@@ -72,5 +74,5 @@ def on_features(request: Any, response: Any) -> Any:
     response.features.custom_info = (
         "launcher's MuJoCo sim: entities are the world's models and those spawned; "
         "SpawnEntity takes SDF, URDF and MJCF by path, model://, package:// or file:// URI or "
-        "as a string; one sim runs one world (no LoadWorld/UnloadWorld)")
+        "as a string; LoadWorld takes SDF and MJCF worlds the same ways")
     return response

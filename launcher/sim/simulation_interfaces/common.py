@@ -14,6 +14,7 @@ TYPES = "simulation_interfaces"
 # Result.result
 FEATURE_UNSUPPORTED, OK, NOT_FOUND, INCORRECT_STATE, OPERATION_FAILED = range(5)
 WORLD_FRAMES = ("", "world", "/world", "map", "/map")
+NO_WORLD_TEXT = "no world is loaded (UnloadWorld removed it): LoadWorld one first"
 
 
 @dataclass

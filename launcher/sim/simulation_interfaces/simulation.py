@@ -16,6 +16,7 @@ from launcher.bus.actions import CANCELING
 from launcher.control.action_server import ActionServer
 from launcher.sim.simulation_interfaces.common import (
     FEATURE_UNSUPPORTED,
+    NO_WORLD_TEXT,
     OK,
     OPERATION_FAILED,
     TYPES,
@@ -54,6 +55,8 @@ class Simulation:
     # --- state -------------------------------------------------------------------------------
     def state(self) -> int:
         server = self.server
+        if server.no_world:
+            return NO_WORLD
         if not server.paused:
             return PLAYING
         if server.world.physics.iterations == 0 and not server.steps_to_go and \
@@ -72,10 +75,12 @@ class Simulation:
             return result(response, INCORRECT_TRANSITION,
                           f"{name} is not a state to set: set STATE_STOPPED, STATE_PLAYING, "
                           "STATE_PAUSED or STATE_QUITTING")
+        server = self.server
+        if server.no_world and target != QUITTING:
+            return result(response, INCORRECT_TRANSITION, NO_WORLD_TEXT)
         if target == now:
             return result(response, ALREADY_IN_TARGET_STATE,
                           f"the simulation is already {STATE_NAMES[now]}")
-        server = self.server
         if target == STOPPED:
             server.set_paused(True)
             server.reset(time=True, poses=True)
@@ -94,6 +99,8 @@ class Simulation:
 
     # --- stepping ----------------------------------------------------------------------------
     def _refusal(self, steps: int) -> str:
+        if self.server.no_world:
+            return NO_WORLD_TEXT
         if not self.server.paused:
             return ("the simulation is playing: stepping needs it paused (SetSimulationState "
                     "STATE_PAUSED first)")

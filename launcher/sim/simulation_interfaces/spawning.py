@@ -22,8 +22,10 @@ from launcher.sim.entity import NameInvalid, NameTaken, Spawn, SpawnError
 from launcher.sim.resources import ResourceNotFound, resolve_uri, resource_dirs
 from launcher.sim.simulation_interfaces.common import (
     FEATURE_UNSUPPORTED,
+    NO_WORLD_TEXT,
     NOT_FOUND,
     OK,
+    OPERATION_FAILED,
     TYPES,
     Api,
     pose_of,
@@ -55,6 +57,8 @@ class Spawning:
     def request(self, asked: Any) -> Spawn:
         """The sim's spawn request for a SpawnEntity request (Refused: code and reason)."""
         world = self.api.world
+        if self.api.server.no_world:
+            raise Refused(OPERATION_FAILED, NO_WORLD_TEXT)
         resource = asked.entity_resource
         uri, text = resource.uri.strip(), resource.resource_string
         try:

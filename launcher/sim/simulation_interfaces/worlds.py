@@ -2,8 +2,7 @@
 GetAvailableWorlds (the world files of the resource path, of the folders a request names and
 the built-in ones), GetNamedPoses and GetNamedPoseBounds (the world's top-level sites: an MJCF
 `<site>` in `<worldbody>`, an SDF world's `<frame>`; each unbounded). LoadWorld and
-UnloadWorld answer that they are not supported: one sim process runs one world, and another
-world is another sim (`gz sim other.sdf`).
+UnloadWorld are world_loading.py's.
 """
 
 from __future__ import annotations
@@ -22,30 +21,32 @@ from launcher.sim.simulation_interfaces.common import (
     fill_pose,
     result,
 )
+from launcher.sim.simulation_interfaces.world_loading import NO_WORLD_LOADED, WorldLoading
 from launcher.sim.transform import Pose
 
 WORLD_FILES = (".sdf", ".world")
-ONE_WORLD = ("one sim process runs one world: start another sim with that world "
-             "(gz sim WORLD) instead")
 
 
 class Worlds:
-    def __init__(self, api: Api) -> None:
-        self.api = api
+    def __init__(self, api: Api, loading: WorldLoading) -> None:
+        self.api, self.loading = api, loading
         node = api.node
         for name, type_name, callback in (
                 ("get_current_world", "GetCurrentWorld", self.on_current),
                 ("get_available_worlds", "GetAvailableWorlds", self.on_available),
                 ("get_named_poses", "GetNamedPoses", self.on_named_poses),
-                ("get_named_pose_bounds", "GetNamedPoseBounds", self.on_named_pose_bounds),
-                ("load_world", "LoadWorld", self.on_unsupported),
-                ("unload_world", "UnloadWorld", self.on_unsupported)):
+                ("get_named_pose_bounds", "GetNamedPoseBounds", self.on_named_pose_bounds)):
             node.create_service(f"{TYPES}/srv/{type_name}", f"~/{name}", callback)
 
     def on_current(self, request: Any, response: Any) -> Any:
+        if self.api.server.no_world:
+            return result(response, NO_WORLD_LOADED, "no world is loaded")
         world = self.api.world
         response.world.name = world.world_name
-        response.world.world_resource.uri = str(world.label)
+        if self.loading.resource_string:  # (a world given as a string has no file)
+            response.world.world_resource.resource_string = self.loading.resource_string
+        else:
+            response.world.world_resource.uri = str(world.label)
         return result(response, OK)
 
     def on_available(self, request: Any, response: Any) -> Any:
@@ -110,9 +111,6 @@ class Worlds:
         response.bounds.type = 0  # TYPE_EMPTY: unbounded
         return result(response, OK)
 
-    def on_unsupported(self, request: Any, response: Any) -> Any:
-        return result(response, FEATURE_UNSUPPORTED, ONE_WORLD)
-
 
 def _is_mjcf(path: Path) -> bool:
     if path.suffix != ".xml":
@@ -126,4 +124,4 @@ def _is_mjcf(path: Path) -> bool:
 
 
 def serve(api: Api) -> Worlds:
-    return Worlds(api)
+    return Worlds(api, WorldLoading(api))
