@@ -35,6 +35,7 @@ class Spawn:
     allow_renaming: bool = False
     joints: Mapping[str, float] | None = None
     keyframe: str = ""  # an MJCF description's <key> its joints start from and reset to
+    namespace: str = ""  # its ROS plugins' names go under it (entity_namespace)
 
 
 @dataclass

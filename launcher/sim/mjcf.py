@@ -40,6 +40,7 @@ class PluginConfig:
     element: ET.Element
     where: str  # file:line, for messages
     robot: str = ""  # a URDF plugin's robot description (gz_ros2_control reads its blocks)
+    namespace: str = ""  # its entity's (entity_namespace): a ROS plugin's names go under it
 
 
 @dataclass

@@ -20,6 +20,7 @@ message / logger), so it can be stepped without one.
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import math
 import re
 from collections.abc import Collection, Mapping, Sequence
@@ -243,7 +244,9 @@ class World:
         root = template.root or roots[0].name
         entity = Entity(name, [], f"{name}/{root}", template.label, offset=template.offset,
                         roots=[f"{name}/{body.name}" for body in roots], spawned=True)
-        plugins = [p for p in (self.plugins.make(c, entity) for c in template.plugins) if p]
+        configs = [dataclasses.replace(c, namespace=request.namespace) for c in template.plugins] \
+            if request.namespace else template.plugins
+        plugins = [p for p in (self.plugins.make(c, entity) for c in configs) if p]
         for plugin in plugins:
             try:
                 plugin.prepare(child)

@@ -509,3 +509,26 @@ out(listed=entities(), named=[p.name for p in call("get_named_poses", GetNamedPo
     assert seen["listed"] == ["cube", "cube2", "table"]
     assert seen["named"] == ["drop_zone"] and seen["spawned"] == 1
     assert seen["cube"][2] < 0.9 and seen["world"] == "table_top"
+
+
+RANGER = """<sdf version="1.9"><model name="ranger"><link name="base"><inertial><mass>1</mass>
+<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+<sensor name="sonar" type="ray"><update_rate>10</update_rate><ray><scan><horizontal>
+<samples>1</samples><min_angle>0</min_angle><max_angle>0</max_angle></horizontal></scan>
+<range><min>0.05</min><max>5</max></range></ray>
+<plugin name="sonar_plugin" filename="libgazebo_ros_ray_sensor.so">
+<output_type>sensor_msgs/Range</output_type><ros><namespace>front</namespace></ros></plugin>
+</sensor></link></model></sdf>"""
+
+
+def test_an_entity_namespace_puts_its_ros_interfaces_under_it(arena):
+    seen = client(arena, f"""
+out(answer=spawn("r7", text={RANGER!r}, entity_namespace="robot7",
+                 initial_pose=pose(0.0, -2.0, 0.2)),
+    refused=spawn("r8", text={RANGER!r}, entity_namespace="bad name!")[:2])
+""")
+    assert seen["answer"][:2] == [1, ""], seen
+    assert seen["refused"][0] == 105  # NAMESPACE_INVALID
+    topics = arena.run("topic", "list", timeout=30).stdout.split()
+    assert "/robot7/front/sonar_plugin/out" in topics, topics

@@ -22,6 +22,7 @@ from typing import Any
 from launcher.records import dataclass, replace
 from launcher.schema import Kind, attr
 from launcher.sim.plugins.diff_drive import DiffDrive, yaw_quat
+from launcher.sim.plugins.gazebo_ros import under
 from launcher.sim.plugins.joint_state import JointStatePublisher
 
 # the gz name each classic parameter feeds: (ROS 1, ROS 2) -> gz
@@ -87,8 +88,8 @@ def _ros_topic(plugin: Any, ros1: str, default: str) -> str:
             name = target.strip()
     if name.startswith("/"):
         return name
-    namespace = plugin.text("robotNamespace") or (element.findtext("ros/namespace") or "")
-    namespace = namespace.strip().strip("/")
+    namespace = under(plugin.config.namespace, plugin.text("robotNamespace") or
+                      (element.findtext("ros/namespace") or "")).strip("/")
     return f"/{namespace}/{name}" if namespace else f"/{name}"
 
 

@@ -67,7 +67,7 @@ class _GroundTruth(PeriodicPublisher):
         return name
 
     def load(self) -> None:
-        node = ros_node(self.config.element)
+        node = ros_node(self.config.element, self.config.namespace)
         topic = self.setting("topicName") or self.default_topic
         self.publisher = self.sim.transport.publisher(self.type_name, node.topic(topic),
                                                       ros=True)

@@ -1,7 +1,9 @@
 """A gazebo_ros plugin's ROS node, as `gazebo_ros::Node::Get(sdf)` makes it: named after the
 plugin, in `<ros><namespace>` (ROS 1: `<robotNamespace>`), with the `<ros><remapping>` rules
 applied to its topics as ROS 2 applies remappings (both sides expanded in the node's
-namespace: `~/out:=scan` turns `/ns/plugin/out` into `/ns/scan`)."""
+namespace: `~/out:=scan` turns `/ns/plugin/out` into `/ns/scan`). An entity spawned in a
+namespace (simulation_interfaces' `entity_namespace`) has a relative one put under it (an
+absolute one stays)."""
 
 from __future__ import annotations
 
@@ -24,10 +26,10 @@ class RosNode:
                      self.namespace)
 
 
-def ros_node(plugin: Any) -> RosNode:
+def ros_node(plugin: Any, entity_namespace: str = "") -> RosNode:
     ros = plugin.find("ros")
-    namespace = (ros.findtext("namespace") if ros is not None else None) or \
-        plugin.findtext("robotNamespace") or "/"
+    namespace = under(entity_namespace, (ros.findtext("namespace") if ros is not None else None)
+                      or plugin.findtext("robotNamespace") or "")
     rules = []
     for remapping in (ros.iterfind("remapping") if ros is not None else ()):
         source, _, target = (remapping.text or "").strip().partition(":=")
@@ -35,3 +37,13 @@ def ros_node(plugin: Any) -> RosNode:
             rules.append((source.strip(), target.strip()))
     name = re.sub(r"\W", "_", plugin.get("name", "") or "gazebo_ros") or "gazebo_ros"
     return RosNode(name, "/" + namespace.strip().strip("/"), tuple(rules))
+
+
+def under(entity_namespace: str, written: str) -> str:
+    """A plugin's namespace as written, below its entity's (`entity_namespace`, "" for
+    none); an absolute one stays as it is."""
+    written = written.strip()
+    if written.startswith("/"):
+        return written
+    parts = (entity_namespace.strip("/"), written.strip("/"))
+    return "/" + "/".join(part for part in parts if part)

@@ -41,6 +41,7 @@ from launcher.control.resources import Component
 from launcher.errors import LaunchError
 from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
+from launcher.sim.plugins.gazebo_ros import under
 
 SERVO_TIME = 0.005  # s: how fast a joint's velocity servo settles
 VELOCITY, POSITION, EFFORT = "velocity", "position", "effort"
@@ -279,8 +280,8 @@ class GzRos2Control(Plugin):
         argv += ["-p", "use_sim_time:=true"]
         for remap in self.remaps:
             argv += ["-r", remap]
-        namespace = self.namespace if not self.namespace or self.namespace.startswith("/") \
-            else f"/{self.namespace}"
+        namespace = under(self.config.namespace, self.namespace) \
+            if self.namespace or self.config.namespace else ""
         self.node = Node(self.manager_name, namespace=namespace, argv=argv,
                          session=sim_node.session, sim_time=lambda: float(self.data.time))
         self.node.spin_with(sim_node)

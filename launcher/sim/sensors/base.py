@@ -84,7 +84,7 @@ class Sensor(Plugin):
             raise SdfError(f"{self.label}: {exc.message}", exc.location) from None
         self.ros = ClassicOutputs(classic_outputs(self.config.element, self.config.kind,
                                                   self.config.scope_link, self.label,
-                                                  self._warn))
+                                                  self._warn, self.config.namespace))
 
     def _warn(self, where: Any, message: str) -> None:
         self.sim.transport.logger.warning(f"{where.location.file}:{where.location.line}: "

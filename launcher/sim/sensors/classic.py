@@ -63,8 +63,8 @@ class RosOutput:
     options: dict[str, Any] = field(default_factory=dict)
 
 
-def classic_outputs(element: Any, kind: str, link: str, label: str, warn: Any) -> \
-        list[RosOutput]:
+def classic_outputs(element: Any, kind: str, link: str, label: str, warn: Any,
+                    entity_namespace: str = "") -> list[RosOutput]:
     """The ROS outputs of the gazebo_ros plugins in a `<sensor>` element; a plugin launcher
     does not know, or one for another kind of sensor, is a warning at its line, left out."""
     outputs: list[RosOutput] = []
@@ -83,7 +83,7 @@ def classic_outputs(element: Any, kind: str, link: str, label: str, warn: Any) -
             warn(plugin, f"{label}: plugin '{filename}' serves {' or '.join(kinds)} sensors, "
                          "not this one; it is left out")
             continue
-        node = ros_node(plugin)
+        node = ros_node(plugin, entity_namespace)
         frame = plugin.value("frame_name") or plugin.value("frameName") or \
             link.rsplit("::", 1)[-1]
         try:

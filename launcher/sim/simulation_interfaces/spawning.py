@@ -21,7 +21,6 @@ from launcher.errors import LaunchError
 from launcher.sim.entity import NameInvalid, NameTaken, Spawn, SpawnError
 from launcher.sim.resources import ResourceNotFound, resolve_uri, resource_dirs
 from launcher.sim.simulation_interfaces.common import (
-    FEATURE_UNSUPPORTED,
     NO_WORLD_TEXT,
     NOT_FOUND,
     OK,
@@ -62,12 +61,9 @@ class Spawning:
         resource = asked.entity_resource
         uri, text = resource.uri.strip(), resource.resource_string
         try:
-            if asked.entity_namespace.strip():
-                check_namespace(asked.entity_namespace.strip())
-                raise Refused(FEATURE_UNSUPPORTED, "entity_namespace is not applied by "
-                                                   "launcher's sim: give the robot's plugins "
-                                                   "their namespace in its description "
-                                                   "(<ros><namespace>)")
+            namespace = asked.entity_namespace.strip()
+            if namespace:
+                check_namespace(namespace)
             if uri:
                 try:
                     path = resolve_uri(uri, None, world.templates.packages,
@@ -101,7 +97,7 @@ class Spawning:
             pose = template.pose  # none given: the description's own
         pose = frame * pose
         return Spawn(template, asked.name, list(pose.pos), list(pose.quat),
-                     asked.allow_renaming)
+                     asked.allow_renaming, namespace=namespace)
 
     def spawn(self, asked: Any, answer: Any, done: Any) -> None:
         """Spawn one request; `answer` (a SpawnEntity response or a SpawnResult) is filled
