@@ -298,8 +298,9 @@ info = EntityInfo(category=EntityCategory(category=EntityCategory.CATEGORY_ROBOT
 tagged = code(call("set_entity_info", SetEntityInfo, entity="ball", info=info))
 def sphere(x, y, z, r):
     return Bounds(type=Bounds.TYPE_SPHERE, points=[Vector3(x=x, y=y, z=z), Vector3(x=r)])
-convex = call("get_entities", GetEntities, filters=EntityFilters(bounds=Bounds(
-    type=Bounds.TYPE_CONVEX_HULL, points=[Vector3(), Vector3(x=1.0), Vector3(y=1.0)])))
+def hull(*points):
+    return Bounds(type=Bounds.TYPE_CONVEX_HULL,
+                  points=[Vector3(x=float(x), y=float(y), z=float(z)) for x, y, z in points])
 states = call("get_entities_states", GetEntitiesStates, filters=EntityFilters(filter="b.*"))
 out(tagged=tagged, pattern=entities(filter="w.*"),
     static=entities(categories=[EntityCategory(category=EntityCategory.CATEGORY_STATIC_OBJECT)]),
@@ -309,7 +310,12 @@ out(tagged=tagged, pattern=entities(filter="w.*"),
     near_wall=entities(bounds=sphere(1.5, 3.0, 0.5, 0.6)),
     box=entities(bounds=Bounds(type=Bounds.TYPE_BOX, points=[Vector3(x=-0.2, y=-0.2, z=0.8),
                                                              Vector3(x=0.2, y=0.2, z=1.2)])),
-    convex=code(convex)[0], bad=code(call("get_entities", GetEntities,
+    around_ball=entities(bounds=hull((-1, -1, 0), (1, -1, 0), (0, 1, 0), (0, 0, 2))),
+    past_ball=entities(bounds=hull((-1, -1, -0.1), (1.6, -1, -0.1), (-1, 1.6, -0.1),
+                                   (-1, -1, 2.5))),
+    line=code(call("get_entities", GetEntities, filters=EntityFilters(
+        bounds=hull((0, 0, 0), (1, 0, 0), (2, 0, 0)))))[0],
+    bad=code(call("get_entities", GetEntities,
                                           filters=EntityFilters(filter="(")))[0],
     states=[list(states.entities), round(states.states[0].pose.position.z, 3)],
     info=[call("get_entity_info", GetEntityInfo, entity="ball").info.description,
@@ -319,7 +325,9 @@ out(tagged=tagged, pattern=entities(filter="w.*"),
     assert seen["pattern"] == ["wall"] and seen["static"] == ["wall"]
     assert seen["robots"] == ["ball"] and seen["any_tag"] == ["ball"] and seen["all_tags"] == []
     assert seen["near_wall"] == ["wall"] and seen["box"] == ["ball"]
-    assert seen["convex"] == 0 and seen["bad"] == 4  # FEATURE_UNSUPPORTED, OPERATION_FAILED
+    assert seen["around_ball"] == ["ball"]  # a tetrahedron round the ball; the wall is out
+    assert seen["past_ball"] == []  # its box holds the ball's, but its slanted face is short
+    assert seen["line"] == 4 and seen["bad"] == 4  # OPERATION_FAILED: no hull; a bad pattern
     assert seen["states"] == [["ball"], 1.0]
     assert seen["info"] == ["a ball", 5]
 

@@ -35,6 +35,7 @@ FEATURES = [
     4,   # ENTITY_TAGS
     5,   # ENTITY_BOUNDS
     6,   # ENTITY_BOUNDS_BOX (and spheres, which every simulator takes)
+    7,   # ENTITY_BOUNDS_CONVEX
     8,   # ENTITY_CATEGORIES
     9,   # SPAWNING_RESOURCE_STRING
     10,  # ENTITY_STATE_GETTING

@@ -16,6 +16,7 @@ import math
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from itertools import combinations
 from typing import Any
 
 import numpy as np
@@ -23,7 +24,6 @@ import numpy as np
 from launcher.errors import did_you_mean
 from launcher.sim.placement import MAX_SPEED
 from launcher.sim.simulation_interfaces.common import (
-    FEATURE_UNSUPPORTED,
     NOT_FOUND,
     OK,
     OPERATION_FAILED,
@@ -43,6 +43,7 @@ CATEGORIES = (0, 1, 2, 4, 5)
 BOX, SPHERE, CONVEX_HULL, EMPTY = 1, 3, 2, 0
 ANY, ALL = 0, 1
 INVALID_POSE = 101
+MAX_HULL_POINTS = 64  # of a convex hull filter (its axes grow as the cube of them)
 SIGNS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)
 
 
@@ -278,7 +279,8 @@ def local_box(world: Any, entity: Any) -> tuple[np.ndarray, np.ndarray] | None:
 
 
 def _overlap_test(bounds: Any) -> Any:
-    """A test of a world box (low, high) against filter bounds: a sphere or a box."""
+    """A test of a world box (low, high) against filter bounds: a sphere, a box or a convex
+    hull."""
     points = [np.array(_vector(p)) for p in bounds.points]
     if bounds.type == SPHERE:
         if len(points) != 2 or not points[1][0] >= 0:
@@ -293,12 +295,44 @@ def _overlap_test(bounds: Any) -> Any:
         lo, hi = np.minimum(*points), np.maximum(*points)
         return lambda low, high: bool(np.all(low <= hi) and np.all(high >= lo))
     if bounds.type == CONVEX_HULL:
-        raise Refused(FEATURE_UNSUPPORTED, "convex-hull bounds are not a filter this sim "
-                                           "takes (ENTITY_BOUNDS_CONVEX): use a box or a "
-                                           "sphere")
+        return _hull_test(np.array(points).reshape(-1, 3))
     raise Refused(OPERATION_FAILED, f"bounds type {bounds.type} is not one of Bounds' types "
                                     "(0 empty, 1 box, 2 convex hull, 3 sphere)")
 
 
 def serve(api: Api) -> Entities:
     return Entities(api)
+
+
+def _hull_test(points: np.ndarray) -> Any:
+    """A box-against-convex-hull overlap test by separating axes: the two overlap unless
+    their shadows on some axis are apart. The axes tried are every plane through three of
+    the points (the hull's faces among them), the box's three, and each direction between
+    two points crossed with the box's (the edge pairs): enough to find a gap wherever there
+    is one (a hull of a few dozen points: a few thousand axes, one matrix product)."""
+    if len(points) > MAX_HULL_POINTS:
+        raise Refused(OPERATION_FAILED, f"convex hull bounds of {len(points)} points: at "
+                                        f"most {MAX_HULL_POINTS} are taken")
+    if not np.all(np.isfinite(points)):
+        raise Refused(OPERATION_FAILED, "the convex hull's points must be finite numbers")
+    i, j, k = (np.array(index) for index in zip(*combinations(range(len(points)), 3),
+                                                 strict=True)) \
+        if len(points) >= 3 else (np.zeros(0, int),) * 3
+    faces = np.cross(points[j] - points[i], points[k] - points[i])
+    if not len(faces) or np.max(np.linalg.norm(faces, axis=1)) <= 1e-12:
+        raise Refused(OPERATION_FAILED, "convex hull bounds need at least 3 points not on one "
+                                        "line")
+    a, b = (np.array(index) for index in zip(*combinations(range(len(points)), 2),
+                                             strict=True))
+    edges = np.cross((points[b] - points[a])[:, None, :], np.eye(3)[None]).reshape(-1, 3)
+    axes = np.concatenate([faces, np.eye(3), edges])
+    axes = axes[np.linalg.norm(axes, axis=1) > 1e-12]
+    shadow = points @ axes.T
+    low_hull, high_hull = shadow.min(axis=0), shadow.max(axis=0)
+
+    def overlaps(low: np.ndarray, high: np.ndarray) -> bool:
+        corners = (low + high) / 2 + (high - low) / 2 * SIGNS
+        box = corners @ axes.T
+        return bool(np.all(box.max(axis=0) >= low_hull - 1e-9) and
+                    np.all(box.min(axis=0) <= high_hull + 1e-9))
+    return overlaps
