@@ -26,6 +26,7 @@ from typing import Any
 
 from launcher.bus import keys
 from launcher.bus.node import Node
+from launcher.bus.qos import QoS
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes.create import SimNotFound, find_world
 from launcher.nodes.running import run_node
@@ -62,8 +63,10 @@ class GazeboApi:
                 ("get_physics_properties", "GetPhysicsProperties", self.on_physics),
                 ("get_world_properties", "GetWorldProperties", self.on_world)):
             node.create_service(f"gazebo_msgs/srv/{type_name}", f"~/{name}", callback)
+        # transient local: a latched publisher's message (ROS 1's `rostopic pub`, which the
+        # course uses) reaches it whenever that publisher appears, as ROS 1 latching does
         node.create_subscription("gazebo_msgs/msg/ModelState", "~/set_model_state",
-                                 self.on_model_state_topic)
+                                 self.on_model_state_topic, QoS(transient_local=True))
         self._relay("model_states", "gazebo_msgs/msg/ModelStates")
         self._relay("link_states", "gazebo_msgs/msg/LinkStates")
 
