@@ -111,3 +111,15 @@ def test_a_declared_camera_the_model_lacks_is_a_warning_naming_the_nearest(sense
     out = sensed.output("sim.out")
     assert "ros_cameras: 'rear_cma' is not a camera of the model (did you mean 'rear_cam'?)" \
         in out, out
+
+
+def test_a_removed_robots_sensor_topics_go_with_it(sensed):
+    sensed.write("bot.xml", ROBOT)
+    done = sensed.run("run", "ros_gz_sim", "create", "-file", "bot.xml", "-name", "r1",
+                      "-y", "1", "-z", "0.06", timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "/r1/nose_range" in sensed.run("topic", "list", timeout=30).stdout.split()
+    deleted = sensed.run("service", "call", "/gzserver/delete_entity",
+                         "simulation_interfaces/srv/DeleteEntity", "{entity: r1}", timeout=60)
+    assert deleted.returncode == 0, deleted.stderr
+    assert "/r1/nose_range" not in sensed.run("topic", "list", timeout=30).stdout.split()

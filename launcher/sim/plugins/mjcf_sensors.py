@@ -117,6 +117,10 @@ class MjcfSensors(Plugin):
             output.next_update = 0.0
         self.next_update = 0.0
 
+    def close(self) -> None:  # (its entity removed, or its world replaced)
+        for output in self.outputs or ():
+            output.publisher.destroy()
+
     def post_step(self, model: Any, data: Any) -> None:
         now = float(data.time)
         soonest = math.inf
