@@ -9,6 +9,7 @@ its children and grandchildren inherit; after the test, no process may still car
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -122,9 +123,13 @@ class Workspace:
 
 
 @pytest.fixture
-def ws(tmp_path: Path):
-    """A workspace; fails the test if any process it started is still running after it."""
-    workspace = Workspace(tmp_path, uuid.uuid4().hex)
+def ws(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory):
+    """A workspace; fails the test if any process it started is still running after it. Its
+    folder is named by the test's first letters, not its whole name: the run folders inside
+    it hold Unix sockets, whose paths must stay under 108 characters (under pytest-xdist too,
+    whose folders are deeper)."""
+    name = re.sub(r"\W", "_", request.node.name[:12])
+    workspace = Workspace(tmp_path_factory.mktemp(name), uuid.uuid4().hex)
     yield workspace
     deadline = time.monotonic() + 5
     left = workspace.processes()

@@ -46,6 +46,7 @@ from launcher.private import open_private, private_folder
 LINGER = 3.0  # seconds a started router waits with nothing connected before it stops
 LINGER_VARIABLE = "LAUNCHER_ROUTER_LINGER"  # sets that
 PEER_PREFIX = "peer-"
+PEER_NAME_MAX = len(f"{PEER_PREFIX}4194304-00000000.sock")  # (Linux's largest pid)
 _ENDPOINT = re.compile(r"(?P<protocol>tcp|udp|tls|quic|ws)/(?P<host>\[[0-9a-fA-F:.]+\]|[^/:\s"
                        r"\[\]]+):(?P<port>\d{1,5})(?:#.*)?$|unixsock-stream/(?P<path>/\S+)$")
 
@@ -70,10 +71,12 @@ def run_dir(environ: Mapping[str, str] | None = None) -> Path:
 def socket_path(environ: Mapping[str, str] | None = None) -> Path:
     env = os.environ if environ is None else environ
     path = Path(places.socket_file(env, domain_id(env)))
-    if len(str(path)) > places.SOCKET_PATH_MAX:
+    longest = len(str(path.parent)) + 1 + max(len(path.name), PEER_NAME_MAX)
+    if longest > places.SOCKET_PATH_MAX:
         raise UsageError(f"the run folder {path.parent} is too long a path for the graph's "
-                         f"socket ({len(str(path))} > {places.SOCKET_PATH_MAX} characters); "
-                         "set LAUNCHER_RUN_DIR to a shorter folder")
+                         f"sockets (its nodes' need up to {longest} characters, a Unix socket "
+                         f"takes {places.SOCKET_PATH_MAX}); set LAUNCHER_RUN_DIR to a shorter "
+                         "folder")
     return path
 
 

@@ -112,3 +112,13 @@ def test_the_sims_side_has_keys_and_tokens_of_its_own():
     token = keys.liveliness_key(0, entity, keys.SIM)
     assert token.startswith("@sim_lv/0/z/1/2/MP/%/%ns/n/%a%b/")
     assert keys.parse_liveliness(token) == entity
+
+
+def test_a_run_folder_too_long_for_the_nodes_sockets_is_said_before_anything_starts():
+    """The graph's own socket would fit, a node's would not (its name is longer): said at
+    once, not as the socket library's error when the node opens its session."""
+    folder = "/tmp/" + "x" * 85  # 90 characters: domain-0.sock fits, peer-…-….sock does not
+    assert len(f"{folder}/domain-0.sock") <= 107
+    with pytest.raises(UsageError, match=r"too long a path for the graph's sockets \(its "
+                                         r"nodes' need up to 117 characters"):
+        discovery.socket_path({"LAUNCHER_RUN_DIR": folder})
