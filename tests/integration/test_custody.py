@@ -376,7 +376,7 @@ def test_fault_campaign_leaves_nothing_behind(tmp_path):
             proc.kill()
             raise AssertionError(f"run {run} ({fault}) did not end:\n"
                                  f"{ws.output('campaign.launch.yaml')}\n{ws.output()}") from None
-        assert code in (-9, 0, 1, 130, 143), (run, code)
+        assert code in (-9, 0, 1, 130, 143), (run, code, fault, launcher_text(ws))
         text = launcher_text(ws)
         assert "Traceback" not in text, (run, text)
         try:

@@ -593,7 +593,7 @@ def test_a_wrong_lidar_setting_is_said_at_the_sensor_line_and_the_sim_runs_on(ws
         out = ws.wait_for_output("Adding lidar sensor: 'cloud3d'", 60, "node.out")
         assert "arm.xml:23: lidar sensor 'scan2d': Both horizontal and vertical resolutions " \
                "must be specified" in out, out
-        assert sim_time(ws) > 0.0  # the sim runs, without that lidar
+        assert wait_until(lambda: sim_time(ws) > 0.0, 20)  # the sim runs, without that lidar
     finally:
         assert stop(proc) in (0, 130)
 
@@ -607,7 +607,7 @@ def test_its_mjcf_sensors_stay_with_its_hardware_not_on_topics_of_their_own(ws):
     proc = ws.start(*node_args(ws, robot(str(model))), output="node.out")
     try:
         ws.wait_for_output("controller_manager at", 60, "node.out")
-        assert sim_time(ws) > 0.0
+        assert wait_until(lambda: sim_time(ws) > 0.0, 20)
         listed = ws.run("topic", "list", timeout=30).stdout
     finally:
         assert stop(proc) in (0, 130)

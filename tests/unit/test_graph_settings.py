@@ -55,8 +55,8 @@ def test_the_run_folder_and_the_socket_path(tmp_path):
         discovery.socket_path({"LAUNCHER_RUN_DIR": "/tmp/" + "x" * 120})
 
 
-def test_a_run_folder_of_someone_else_is_a_clear_error(tmp_path):
-    blocked = tmp_path / "file"
+def test_a_run_folder_of_someone_else_is_a_clear_error(tmp_path_factory):
+    blocked = tmp_path_factory.mktemp("rf") / "file"  # (a short path: its sockets would fit)
     blocked.write_text("")
     with pytest.raises(discovery.NoRouter, match="cannot use the run folder"), \
             discovery.router({"LAUNCHER_RUN_DIR": str(blocked / "run")}):
