@@ -345,12 +345,13 @@ def campaign_launch(rng: random.Random) -> str:
     return "\n".join(lines) + "\n"
 
 
-def test_fault_campaign_leaves_nothing_behind(tmp_path):
+def test_fault_campaign_leaves_nothing_behind(tmp_path_factory):
     """120 runs: a random launch of 1–20 children of the kinds above, hit by SIGINT, SIGTERM
     or SIGKILL at a random moment of its first 1.5 s (often inside the first 0.4 s, while
     the children are being spawned), or by two signals in a row."""
     rng = random.Random(int(os.environ.get("LAUNCHER_CAMPAIGN_SEED", "15")))
     faults = {"SIGINT": 0, "SIGTERM": 0, "SIGKILL": 0, "twice": 0}
+    tmp_path = tmp_path_factory.mktemp("fc")  # (short: the run folders' sockets must fit)
     for run in range(120):
         ws = Workspace(tmp_path / f"run{run}", f"campaign-{os.getpid()}-{run}")
         ws.env["LAUNCHER_ROUTER"] = f"unixsock-stream/{tmp_path}/no-router.sock"  # no nodes
