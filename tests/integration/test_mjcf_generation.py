@@ -292,6 +292,22 @@ def test_a_modify_element_that_matches_nothing_is_a_warning(demo_ws):
     assert "warning: modify_element: no joint named 'joint9' in the MJCF" in done.stderr
 
 
+def one_mesh_arm(ws, name: str, mesh: str) -> Path:
+    """A URDF arm whose one moving link's only visual is `mesh`."""
+    return ws.write(f"{name}.urdf", f"""
+        <robot name="{name}">
+          <link name="base"/>
+          <link name="arm">
+            <inertial><mass value="1"/>
+              <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+            <visual><geometry><mesh filename="{mesh}"/></geometry></visual>
+          </link>
+          <joint name="j" type="revolute"><parent link="base"/><child link="arm"/>
+            <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+        </robot>
+        """)
+
+
 COLLADA_TETRAHEDRON = """<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
   <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
@@ -316,18 +332,7 @@ def test_collada_meshes_become_obj_through_trimesh_installed_apart(demo_ws):
     converter's script installs its tools."""
     demo_ws.env["ROS_HOME"] = str(demo_ws.root / "ros_home")
     demo_ws.write("part.dae", COLLADA_TETRAHEDRON)
-    urdf = demo_ws.write("dae.urdf", """
-        <robot name="dae">
-          <link name="base"/>
-          <link name="arm">
-            <inertial><mass value="1"/>
-              <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
-            <visual><geometry><mesh filename="part.dae"/></geometry></visual>
-          </link>
-          <joint name="j" type="revolute"><parent link="base"/><child link="arm"/>
-            <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
-        </robot>
-        """)
+    urdf = one_mesh_arm(demo_ws, "dae", "part.dae")
     inputs = demo_ws.write("inputs.xml", f"<mujoco_inputs><raw_inputs>{DEFAULT_CLASSES}"
                                          "</raw_inputs></mujoco_inputs>")
     done = convert(demo_ws, "-u", str(urdf), "-m", str(inputs), "-s", "-o", "out")
@@ -373,18 +378,7 @@ def test_a_decomposed_mesh_collides_as_the_convex_parts_the_converter_cuts(demo_
     mujoco_ros2_control's converter cut of the same mesh."""
     demo_ws.env["ROS_HOME"] = str(demo_ws.root / "ros_home")
     mesh = RECORDED / "decomposed" / "ell.stl"
-    urdf = demo_ws.write("ell.urdf", f"""
-        <robot name="ell">
-          <link name="base"/>
-          <link name="arm">
-            <inertial><mass value="1"/>
-              <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
-            <visual><geometry><mesh filename="{mesh}"/></geometry></visual>
-          </link>
-          <joint name="j" type="revolute"><parent link="base"/><child link="arm"/>
-            <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
-        </robot>
-        """)
+    urdf = one_mesh_arm(demo_ws, "ell", str(mesh))
     inputs = demo_ws.write("inputs.xml", f"<mujoco_inputs><raw_inputs>{DEFAULT_CLASSES}"
                                          "</raw_inputs><processed_inputs><decompose_mesh "
                                          'mesh_name="ell" threshold="0.05"/></processed_inputs>'

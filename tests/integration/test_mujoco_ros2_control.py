@@ -422,13 +422,23 @@ def wrench(body: str, seconds: int) -> str:
             "duration: {sec: " + str(seconds) + "}}]}}")
 
 
-def test_the_external_wrench_plugin_pushes_a_body_for_its_duration(ws):
+def wrench_node(ws):
+    """mujoco_ros2_control's node with the ExternalWrenchPlugin `push`, ready."""
     ws.own_bus()
     model = ws.write("arm.xml", ARM)
     plugins = ws.write("plugins.yaml", WRENCH_PLUGIN)
     proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
     try:
         ws.wait_for_output("ExternalWrenchPlugin: /push/apply_wrench", 60, "node.out")
+    except AssertionError:
+        stop(proc)
+        raise
+    return proc
+
+
+def test_the_external_wrench_plugin_pushes_a_body_for_its_duration(ws):
+    proc = wrench_node(ws)
+    try:
         before = sim_time(ws)
         pushing = ws.start("service", "call", "/push/apply_wrench",
                            "mujoco_ros2_control_msgs/srv/ApplyExternalWrench", wrench("link", 3),
@@ -443,12 +453,8 @@ def test_the_external_wrench_plugin_pushes_a_body_for_its_duration(ws):
 
 
 def test_a_live_wrench_is_shown_as_arrow_markers_in_its_bodys_frame(ws):
-    ws.own_bus()
-    model = ws.write("arm.xml", ARM)
-    plugins = ws.write("plugins.yaml", WRENCH_PLUGIN)
-    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    proc = wrench_node(ws)
     try:
-        ws.wait_for_output("ExternalWrenchPlugin: /push/apply_wrench", 60, "node.out")
         pushing = ws.start("service", "call", "/push/apply_wrench",
                            "mujoco_ros2_control_msgs/srv/ApplyExternalWrench", wrench("link", 3),
                            output="call.out")
@@ -465,12 +471,8 @@ def test_a_live_wrench_is_shown_as_arrow_markers_in_its_bodys_frame(ws):
 
 
 def test_a_wrench_on_a_body_the_model_lacks_is_refused_whole(ws):
-    ws.own_bus()
-    model = ws.write("arm.xml", ARM)
-    plugins = ws.write("plugins.yaml", WRENCH_PLUGIN)
-    proc = ws.start(*node_args(ws, robot(str(model)), str(plugins)), output="node.out")
+    proc = wrench_node(ws)
     try:
-        ws.wait_for_output("ExternalWrenchPlugin: /push/apply_wrench", 60, "node.out")
         done = ws.run("service", "call", "/push/apply_wrench",
                       "mujoco_ros2_control_msgs/srv/ApplyExternalWrench", wrench("lnk", 1),
                       timeout=60)
