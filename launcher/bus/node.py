@@ -20,7 +20,7 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import zenoh
@@ -45,11 +45,34 @@ def _hear_ctrl_c() -> None:
     """A node stops on SIGINT however it was started: a program started in the background
     of a script (`python node.py &`) inherits SIGINT ignored, and would then ignore Ctrl-C and
     the stop a launch sends. rclpy's init installs its handler over that as well."""
-    import signal
-
     if threading.current_thread() is threading.main_thread() and \
             signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
         signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+@contextlib.contextmanager
+def _signals_held(forgive: bool) -> Iterator[None]:
+    """SIGINT and SIGTERM wait until the block is done (on the main thread, where Python runs
+    its handlers), then act as they would have: a node's teardown cut short by one would leave
+    its Zenoh threads running, which the interpreter then joins for ever. `timeout -s INT`
+    sends its signal twice (to the program and to its group), and the second can land in the
+    teardown the first began. `forgive`: the node already stopped on a signal; one more asks
+    for what is under way, and is dropped."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    caught: list[int] = []
+    held = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
+    held = {sig: handler for sig, handler in held.items() if handler is not None}
+    for sig in held:  # (None: a handler not installed from Python, left alone)
+        signal.signal(sig, lambda signum, _frame: caught.append(signum))
+    try:
+        yield
+    finally:
+        for sig, handler in held.items():
+            signal.signal(sig, handler)
+        if caught and not forgive:
+            signal.raise_signal(caught[0])
 
 
 class Parameter:
@@ -269,15 +292,16 @@ class Node:
         if self._destroyed:
             return
         self._destroyed = True
-        self.host.close_graph_session()
-        for entity in list(self.host.entities):
-            # the session must close whatever happened to one entity
-            with contextlib.suppress(zenoh.ZError, RuntimeError):
-                entity.destroy()
-        self._token.undeclare()
-        if self._shutdown is not None:
-            with contextlib.suppress(zenoh.ZError):
-                self._shutdown.undeclare()
-        if self._owns_session:
-            self.session.close()
+        with _signals_held(forgive=self.interrupted):
+            self.host.close_graph_session()
+            for entity in list(self.host.entities):
+                # the session must close whatever happened to one entity
+                with contextlib.suppress(zenoh.ZError, RuntimeError):
+                    entity.destroy()
+            self._token.undeclare()
+            if self._shutdown is not None:
+                with contextlib.suppress(zenoh.ZError):
+                    self._shutdown.undeclare()
+            if self._owns_session:
+                self.session.close()
 

@@ -437,6 +437,46 @@ def test_a_node_started_with_sigint_ignored_still_stops_on_it(bus):
     wait_router_gone(bus)
 
 
+# A signal that lands while destroy_node() undeclares: sent from inside the subscription's own
+# destroy, so it lands there every time (`timeout -s INT` sends its second one about then).
+SIGNAL_IN_TEARDOWN = """
+import os, signal, sys, threading
+from launcher.bus.node import Node
+node = Node("teardown")
+sub = node.create_subscription("geometry_msgs/msg/Twist", "cmd_vel", print)
+destroy = sub.destroy
+def destroy_under_a_signal():
+    os.kill(os.getpid(), signal.SIGINT)
+    sum(range(100000))  # Python runs the handler here
+    destroy()
+sub.destroy = destroy_under_a_signal
+if sys.argv[1] == "second":
+    threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT)).start()
+    node.spin()  # the first Ctrl-C ends it
+try:
+    node.destroy_node()
+    print("destroyed, entities left:", len(node.host.entities), flush=True)
+except KeyboardInterrupt:
+    print("interrupted after, entities left:", len(node.host.entities), flush=True)
+"""
+
+
+def test_a_second_ctrl_c_during_destroy_node_lets_it_finish(bus):
+    bus.write("teardown.py", SIGNAL_IN_TEARDOWN)
+    proc = subprocess.run([PY, "teardown.py", "second"], cwd=bus.root, env=bus.env,
+                          capture_output=True, text=True, timeout=30)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert proc.stdout == "destroyed, entities left: 0\n"  # the stop under way is the answer
+
+
+def test_a_ctrl_c_during_destroy_node_is_raised_once_it_is_done(bus):
+    bus.write("teardown.py", SIGNAL_IN_TEARDOWN)
+    proc = subprocess.run([PY, "teardown.py", "first"], cwd=bus.root, env=bus.env,
+                          capture_output=True, text=True, timeout=30)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert proc.stdout == "interrupted after, entities left: 0\n"
+
+
 def test_bag_record_all_includes_latched_topics(bus):
     talker, out = launch(bus, "talk.launch.yaml",
                          f"launch:\n  - executable: {{cmd: {PY} talker.py 2.0, output: screen}}\n")
