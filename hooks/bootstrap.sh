@@ -128,7 +128,7 @@ case "${1:-}" in
         exec .venv/bin/launcher launch launch_files/robot.launch.yaml --duration 20 \
         --noninteractive "$@" ;;
     test) shift
-        say "running the tests (about 10 minutes on 2 cores): python -m pytest tests"
+        say "running the tests (about 25 minutes on 2 cores): python -m pytest tests"
         exec .venv/bin/python -m pytest tests "$@" ;;
     *) echo "usage: sh hooks/bootstrap.sh demo|test" >&2; exit 2 ;;
 esac
