@@ -14,20 +14,23 @@ import pytest
 
 from tests.conftest import shared
 
-DEMOS = shared("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")
-RESOURCES = DEMOS / "demo_resources"
+DEMOS = ("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")  # in ../shared
 RECORDED = Path(__file__).resolve().parent.parent / "data" / "mjcf_generation"
 TOOL = ("run", "mujoco_ros2_control", "make_mjcf_from_robot_description.py")
 
 
 @pytest.fixture
 def demo_ws(ws):
-    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(DEMOS)
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(shared(*DEMOS))
     return ws
 
 
+def resources() -> Path:
+    return shared(*DEMOS, "demo_resources")
+
+
 def expanded(ws, use_pid: str) -> Path:
-    done = ws.run("run", "xacro", "xacro", str(RESOURCES / "robot" / "test_robot.urdf"),
+    done = ws.run("run", "xacro", "xacro", str(resources() / "robot" / "test_robot.urdf"),
                   f"use_pid:={use_pid}", "use_mjcf_from_topic:=true",
                   "use_transmissions:=false", "headless:=true")
     assert done.returncode == 0, done.stderr
@@ -89,8 +92,8 @@ def differences(ours: Path, theirs: Path) -> list[str]:
 def test_the_demo_inputs_files_make_the_model_the_converter_makes(demo_ws):
     urdf = expanded(demo_ws, "false")
     done = convert(demo_ws, "-u", str(urdf),
-                   "-m", str(RESOURCES / "mjcf_generation" / "test_inputs.xml"),
-                   "--scene", str(RESOURCES / "scenes" / "scene_info.xml"),
+                   "-m", str(resources() / "mjcf_generation" / "test_inputs.xml"),
+                   "--scene", str(resources() / "scenes" / "scene_info.xml"),
                    "--save_only", "-o", "out")
     assert done.returncode == 0, done.stderr
     made = demo_ws.root / "out" / "mujoco_description_formatted.xml"

@@ -5,13 +5,14 @@ from __future__ import annotations
 
 import os
 import shutil
+import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
 from tests import environment
-from tests.environment import REAL_TOOLS, clean_path, real_tools_in
+from tests.environment import REAL_TOOLS, REPO, clean_path, real_tools_in
 
 MARKER = "FAKE-REAL-ROSPARAM-REACHED"
 
@@ -59,3 +60,30 @@ def test_missing_shared_material_skips_naming_it_and_fails_when_ci_requires_it(m
     monkeypatch.setenv(environment.REQUIRE_EXTERNAL, "1")
     with pytest.raises(pytest.fail.Exception, match="LAUNCHER_REQUIRE_EXTERNAL=1 makes that"):
         environment.shared("external", "no-such-world.sdf")
+
+
+def test_a_clone_without_shared_collects_the_whole_suite_with_no_error(tmp_path):
+    """A user's clone has no ../shared beside it: every test module must still import (the
+    tests that need the material skip when they run, naming it), so `pytest --collect-only`
+    of a copy of the repo standing alone exits 0 and collects as many tests as this one."""
+    clone = tmp_path / "alone" / REPO.name
+    shutil.copytree(REPO, clone, ignore=shutil.ignore_patterns(
+        ".git", ".venv", "node_modules", "__pycache__", ".pytest_cache", "site", ".fidelity",
+        "test-artefacts", "log"))
+    env = {key: value for key, value in os.environ.items()
+           if key != environment.REQUIRE_EXTERNAL and not key.startswith("PYTEST_")}
+    argv = [sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider",
+            "-p", "no:xdist", "tests"]
+    alone = subprocess.run(argv, cwd=clone, env=env, capture_output=True, text=True,
+                           timeout=300)
+    assert not (clone.parent / "shared").exists()
+    assert alone.returncode == 0, alone.stdout[-3000:] + alone.stderr[-3000:]
+    assert "error" not in alone.stdout.splitlines()[-1], alone.stdout[-3000:]
+    here = subprocess.run(argv, cwd=REPO, env=env, capture_output=True, text=True,
+                          timeout=300)
+    assert collected(alone.stdout) == collected(here.stdout), alone.stdout[-3000:]
+
+
+def collected(summary: str) -> int:
+    """The count in pytest's last line ("2308 tests collected in 4.6s")."""
+    return int(summary.splitlines()[-1].split()[0])
