@@ -99,6 +99,10 @@ class Publisher:
             return
         with self._lock:  # never while a put is under way: Zenoh says "Already borrowed"
             self._closed = True
-            for item in (self._listener, self._latched, self._publisher, self._token):
-                if item is not None:
-                    item.undeclare()
+            for item in (self._listener, self._publisher, self._token):
+                item.undeclare()
+            # The advanced publisher is dropped, not undeclared: zenoh-python's undeclare()
+            # stops its heartbeat task holding the GIL, and that task's runtime thread may be
+            # waiting for the GIL to run a callback of ours (a matching change): the process
+            # hung. Dropping the last reference does the same with the GIL released.
+            self._latched = None

@@ -477,6 +477,52 @@ def test_a_ctrl_c_during_destroy_node_is_raised_once_it_is_done(bus):
     assert proc.stdout == "interrupted after, entities left: 0\n"
 
 
+# Subscribers on the topics come and go all the time, so the latched publishers' matching
+# callbacks keep asking for the GIL on Zenoh's threads while the node is destroyed.
+CHURN = """
+import sys, time
+from launcher.bus.node import Node
+node = Node("churner")
+print("churning", flush=True)
+while True:
+    subs = [node.create_subscription("std_msgs/msg/String", f"t{i}", print) for i in range(20)]
+    time.sleep(0.005)
+    for sub in subs:
+        sub.destroy()
+"""
+LATCHED_ROUNDS = """
+from launcher.bus.node import Node
+from launcher.bus.qos import LATCHED
+for round in range(10):
+    node = Node(f"latched{round}")
+    for i in range(20):
+        node.create_publisher("std_msgs/msg/String", f"t{i}", LATCHED)
+    node.spin(0.2)
+    node.destroy_node()
+    print("destroyed", round, flush=True)
+"""
+
+
+def test_latched_entities_are_destroyed_while_their_matching_callbacks_fire(bus):
+    """zenoh-python undeclares an advanced publisher holding the GIL while it waits for a
+    task on Zenoh's thread, which may itself wait for the GIL to run a matching callback:
+    destroy_node() hung (a container of robots outlived SIGINT and SIGTERM). Ten nodes of
+    latched entities, each destroyed under a churn of subscribers, all finish."""
+    bus.write("churn.py", CHURN)
+    bus.write("rounds.py", LATCHED_ROUNDS)
+    churn = subprocess.Popen([PY, "churn.py"], cwd=bus.root, env=bus.env,
+                             stdout=subprocess.PIPE, text=True)
+    try:
+        assert churn.stdout.readline() == "churning\n"
+        rounds = subprocess.run([PY, "rounds.py"], cwd=bus.root, env=bus.env,
+                                capture_output=True, text=True, timeout=30)
+    finally:
+        churn.kill()
+        churn.wait()
+    assert rounds.returncode == 0, rounds.stderr
+    assert rounds.stdout.splitlines()[-1] == "destroyed 9"
+
+
 def test_bag_record_all_includes_latched_topics(bus):
     talker, out = launch(bus, "talk.launch.yaml",
                          f"launch:\n  - executable: {{cmd: {PY} talker.py 2.0, output: screen}}\n")
