@@ -23,6 +23,8 @@ import time
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
+from launcher.dispositions import reset_for_children
+
 MARK_PREFIX = "LAUNCHER_LAUNCH_"
 DETACHED = "LAUNCHER_DETACHED"
 # Set on a node a roslaunch file starts: its parameters as ROS 2's `--ros-args` words (JSON),
@@ -172,6 +174,7 @@ def run_to_end(argv: list[str], env: Mapping[str, str], *, cwd: str | None = Non
     import subprocess  # only when a helper runs: a node's start-up time
     import tempfile
 
+    reset_for_children()
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         child = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=out,
                                  stderr=subprocess.STDOUT if merge_stderr else err,

@@ -16,6 +16,8 @@ import subprocess
 from collections.abc import Callable
 from typing import Any, NamedTuple, Protocol
 
+from launcher.dispositions import reset_for_children
+
 EXIT_POLL = 0.01  # seconds between looks at a leader's exit where there is no pidfd
 
 
@@ -49,7 +51,8 @@ class System:
     def spawn(self, argv: list[str], env: dict[str, str], cwd: str | None,
               tty: bool) -> Started:
         """Start `argv` in a session of its own. OSError (not found, not executable, bad
-        cwd) goes to the caller."""
+        cwd) goes to the caller. It starts with the stop signals at their defaults."""
+        reset_for_children()
         out_r, out_w = _channel(tty)
         err_r, err_w = _channel(tty)
         try:

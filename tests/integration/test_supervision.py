@@ -12,6 +12,8 @@ import time
 import psutil
 import pytest
 
+from tests.conftest import launcher_argv
+
 PY = sys.executable
 
 # A child that reports the signals it gets, and ignores the ones named in argv.
@@ -187,6 +189,54 @@ def test_sigkill_to_the_launcher_leaves_nothing_behind(ws):
     while ws.processes() and time.monotonic() < deadline:
         time.sleep(0.05)
     assert not ws.processes()
+
+
+def started_by_a_script(ws, name: str) -> subprocess.Popen:
+    """`launcher launch NAME` with the stop signals ignored, as a shell script's background
+    job (`&`: SIGINT and SIGQUIT) under nohup (SIGHUP) gets it; SIGTERM too, for good measure."""
+    def ignore_stop_signals() -> None:
+        for sig in (signal.SIGINT, signal.SIGQUIT, signal.SIGHUP, signal.SIGTERM):
+            signal.signal(sig, signal.SIG_IGN)
+
+    return subprocess.Popen(launcher_argv() + ["launch", name], cwd=ws.root, env=ws.env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            preexec_fn=ignore_stop_signals)
+
+
+def test_children_start_with_the_stop_signals_at_their_defaults(ws):
+    """Whatever the launcher inherited, as systemd starts a service: an ignored signal would
+    stay ignored across exec, and the launch's SIGINT would not stop its processes."""
+    ws.write("dispositions.launch.yaml", """
+    launch:
+      - executable: {cmd: grep SigIgn /proc/self/status, output: screen}
+    """)
+    proc = started_by_a_script(ws, "dispositions.launch.yaml")
+    out, _ = proc.communicate(timeout=60)
+    assert proc.returncode == 0, out
+    (mask,) = re.findall(r"SigIgn:\s+([0-9a-f]+)", out)
+    ignored = {sig for sig in signal.Signals if int(mask, 16) >> (sig - 1) & 1}
+    assert not ignored & {signal.SIGINT, signal.SIGQUIT, signal.SIGHUP, signal.SIGTERM}, ignored
+
+
+def test_a_launch_started_by_a_script_stops_its_nodes_with_sigint_alone(ws):
+    """A Python program that leaves SIGINT to Python (KeyboardInterrupt) ends on the launch's
+    first SIGINT, though the launcher was started with SIGINT ignored: no SIGTERM needed."""
+    ws.write("python.launch.yaml", f"""
+    launch:
+      - executable:
+          cmd: {PY} -c "import time; print('ready', flush=True); time.sleep(60)"
+          output: screen
+          sigterm_timeout: "20"
+    """)
+    proc = started_by_a_script(ws, "python.launch.yaml")
+    for line in proc.stdout:
+        if "ready" in line:
+            break
+    os.kill(proc.pid, signal.SIGINT)  # the launcher catches it all the same (its own handler)
+    out, _ = proc.communicate(timeout=15)
+    assert proc.returncode == 130, out
+    assert "SIGTERM" not in out and "SIGKILL" not in out, out
+    assert "KeyboardInterrupt" in out, out
 
 
 def test_children_get_unbuffered_python_and_a_tty_when_asked(ws):
