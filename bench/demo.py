@@ -2,12 +2,15 @@
 """The demo end to end (issue 7): `launcher launch launch_files/robot.launch.yaml` to the first
 /odom on the ROS side; 5, 10 and 50 robots from multi_robot.launch.yaml (time until all
 publish odometry, the sim's real-time factor while they all drive at 1 kHz physics); the whole
-demo's memory. Everything is real: the launches run from the repo as a user runs them, and a probe
-node inside each launch reports what it hears."""
+demo's memory; 50 robots' Ctrl-C (SIGINT to the end of the launch, and how many of its
+processes needed SIGTERM or SIGKILL), started in the foreground and as a script's background
+job starts it (SIGINT and SIGQUIT ignored). Everything is real: the launches run from the
+repo as a user runs them, and a probe node inside each launch reports what it hears."""
 
 from __future__ import annotations
 
 import json
+import signal
 import subprocess
 import sys
 import threading
@@ -63,9 +66,16 @@ node.spin(1000)
 """
 
 
+def as_a_script_job() -> None:
+    """What a non-interactive shell does to a job it starts with `&`."""
+    for sig in (signal.SIGINT, signal.SIGQUIT):
+        signal.signal(sig, signal.SIG_IGN)
+
+
 def run(root: Path, launch: str, args: list[str], topics: list[str], window: float,
-        timeout: float = 180.0) -> dict:
-    """Start `launch` with a probe beside it; its reports, plus the tree's memory."""
+        timeout: float = 180.0, script: bool = False) -> dict:
+    """Start `launch` with a probe beside it; its reports, plus the tree's memory, and how
+    long its SIGINT took to end it ("stop", s) and how many processes were escalated."""
     (root / "probe.py").write_text(PROBE)
     wrapper = root / "bench.launch.yaml"
     arg_lines = "".join(f"\n        - {{name: {a.split(':=')[0]}, value: '{a.split(':=')[1]}'}}"
@@ -83,7 +93,7 @@ launch:
     started = time.time()
     proc = subprocess.Popen([*launcher_cmd(), "launch", str(wrapper), "--noninteractive"],
                             cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            text=True)
+                            text=True, preexec_fn=as_a_script_job if script else None)
     result: dict = {"started": started, "first": {}}
     timer = threading.Timer(timeout, proc.send_signal, (2,))  # gives up: partial figures
     timer.start()
@@ -99,7 +109,11 @@ launch:
                     result["rss"], result["uss"] = memory(proc.pid)
     finally:
         timer.cancel()
-        proc.send_signal(2)
+        signalled = time.monotonic()
+        proc.send_signal(signal.SIGINT)
+        rest = proc.stdout.read()  # to its end: the launcher has exited
+        result["stop"] = time.monotonic() - signalled
+        result["escalated"] = rest.count("still running; sending")
         proc.wait(60)
     return result
 
@@ -155,6 +169,14 @@ def main() -> None:
             (f"{count} robots: sum of RSS, MiB", "report", f"{many['rss']:.0f}"),
             (f"{count} robots: sum of USS, MiB", "report", f"{many['uss']:.0f}"),
         ]
+        if count == 50:
+            script = run(root, "multi_robot.launch.yaml", [f"count:={count}"], topics, 1.0,
+                         120.0, script=True)
+            for how, result in (("foreground", many), ("started by a script", script)):
+                rows += [(f"{count} robots, {how}: SIGINT -> launch ended, s", "<= 1.0",
+                          f"{result['stop']:.3f}"),
+                         (f"{count} robots, {how}: processes sent SIGTERM or SIGKILL", "0",
+                          str(result["escalated"]))]
     table("demo (bench/demo.py)", rows)
 
 
