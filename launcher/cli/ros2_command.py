@@ -40,8 +40,9 @@ VERBS = {
 SAME = {verb for verb in VERBS if verb in LAUNCHER}  # ros2's verbs that are launcher's commands
 ALIASES = {"wtf": "doctor"}
 MISSING = {  # ROS 2 verbs with no capability in launcher, and why
-    "component": "composable node containers are not available in launcher yet; run the "
-                 "components as nodes of their own",
+    "component": "its verbs (list, load, unload, types) are not in launcher yet; the "
+                 "containers are: a launch file's node_container and load_composable_node, "
+                 "or `launcher service call /CONTAINER/_container/load_node`",
     "multicast": "launcher's graph never uses multicast (it stays on this machine unless "
                  "configured): there is nothing to send or receive",
     "security": "SROS2 keystores are not available in launcher: its graph is private to "

@@ -10,8 +10,9 @@ launcher's bus, for processes where no real rclpy is installed (see launcher/com
         ...
         rclpy.spin(node)
 
-Not here (yet): actions (`rclpy.action`), lifecycle nodes, waitables, type adaptation,
-content filters, QoS events (kept, never raised) and the loaned-message API.
+Actions (`rclpy.action`) and lifecycle nodes (`rclpy.lifecycle`) are modules of their own.
+Not here (yet): waitables, type adaptation, content filters, QoS events (kept, never raised)
+and the loaned-message API.
 """
 
 from __future__ import annotations
