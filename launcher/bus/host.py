@@ -26,12 +26,13 @@ _node_ids = itertools.count()
 def direct(callback: Callable[..., Any]) -> Any:
     """`callback` run on the Zenoh thread that receives, not handed to a Python thread of its
     own (zenoh-python's default: one thread per subscriber, queryable and matching listener,
-    and a hand-over per sample). For what comes rarely and only queues work (matching
-    changes, queries): a component container ran a thread per publisher and service (740
-    threads for 30 robots). Not for subscriptions: zenoh-python's thread takes a stream's
-    samples in batches where each direct one takes the GIL (Twist 1 → 1: 25–39 k/s against
-    65 k/s), and a callback that publishes (a bridge's) must not hold up the thread that
-    receives: under a flood both ends waited on each other."""
+    and a hand-over per sample). For what comes rarely and only queues work (queries): a
+    component container ran a thread per publisher and service (740 threads for 30 robots).
+    Not for subscriptions: zenoh-python's thread takes a stream's samples in batches where
+    each direct one takes the GIL (Twist 1 → 1: 25–39 k/s against 65 k/s), and a callback
+    that publishes (a bridge's) must not hold up the thread that receives: under a flood both
+    ends waited on each other. Not for matching listeners either: Zenoh runs those on its Net
+    runtime, whose thread would wait there for the GIL (see Publisher's listener)."""
     return zenoh.handlers.Callback(callback, indirect=False)
 
 

@@ -16,7 +16,7 @@ import zenoh
 import zenoh.ext
 
 from launcher.bus import keys
-from launcher.bus.host import Host, direct
+from launcher.bus.host import Host
 from launcher.bus.qos import KEEP_ALL_DEPTH, QoS
 from launcher.bus.types import registry
 
@@ -58,23 +58,41 @@ class Publisher:
         self._write = types.writer(self.type_name)
         self._token = host.announce(keys.PUBLISHER, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)
-        # Kept current by Zenoh, so asking costs an attribute read (the sim asks every step).
-        self._matching = self._publisher.matching_status.matching
         self._watchers: list[Callable[[bool], None]] = []
-        self._closed = False
+        self._told = False  # what the watchers were last told
+        self._watching = threading.Lock()  # (not _lock: destroy() holds that while the
+        self._closed = False               # listener's undeclare waits for its callback)
         self._lock = threading.Lock()
-        self._listener = self._publisher.declare_matching_listener(direct(self._on_matching))
+        # Declared only once something watches, its callback on a thread of zenoh-python's:
+        # one run on Zenoh's own thread (the Net runtime's) waits there for the GIL, while
+        # the thread holding it may be undeclaring an advanced publisher, whose heartbeat
+        # task needs that runtime to end (zenoh-python stops it holding the GIL): the
+        # process hung, a container of robots past SIGINT and SIGTERM.
+        self._listener: Any = None
+
+    @property
+    def _matching(self) -> bool:
+        """Whether any subscriber matches: Zenoh keeps it current, so asking costs a fraction
+        of a microsecond (the sim asks every step)."""
+        return self._publisher.matching_status.matching
 
     def _on_matching(self, status: Any) -> None:
-        self._matching = status.matching
+        with self._watching:
+            if status.matching == self._told:
+                return
+            self._told = status.matching
         for watcher in self._watchers:
             self._host.enqueue(watcher, status.matching)
 
     def watch_subscribers(self, callback: Callable[[bool], None]) -> None:
         """Call `callback(matching)` on the executor whenever subscribers come or all go
         (and once now); lazy bridges subscribe to their source only while someone listens."""
-        self._watchers.append(callback)
-        self._host.enqueue(callback, self._matching)
+        with self._watching:
+            if self._listener is None:
+                self._listener = self._publisher.declare_matching_listener(self._on_matching)
+            self._told = matching = self._matching
+            self._watchers.append(callback)
+        self._host.enqueue(callback, matching)
 
     def publish(self, message: Any) -> None:
         self.publish_raw(self._write(message))
@@ -92,17 +110,13 @@ class Publisher:
 
     def get_subscription_count(self) -> int:
         """1 while any subscriber matches (Zenoh does not count them), else 0."""
-        return 1 if self._matching else 0
+        return 0 if self._closed or not self._matching else 1
 
     def destroy(self) -> None:
         if not self._host.forget(self):
             return
         with self._lock:  # never while a put is under way: Zenoh says "Already borrowed"
             self._closed = True
-            for item in (self._listener, self._publisher, self._token):
-                item.undeclare()
-            # The advanced publisher is dropped, not undeclared: zenoh-python's undeclare()
-            # stops its heartbeat task holding the GIL, and that task's runtime thread may be
-            # waiting for the GIL to run a callback of ours (a matching change): the process
-            # hung. Dropping the last reference does the same with the GIL released.
-            self._latched = None
+            for item in (self._listener, self._latched, self._publisher, self._token):
+                if item is not None:
+                    item.undeclare()

@@ -110,11 +110,8 @@ class Subscription:
     def destroy(self) -> None:
         if self._host.forget(self):
             LEDGER.unsubscribe(self.key)
-            self._token.undeclare()
-            if isinstance(self._subscriber, zenoh.ext.AdvancedSubscriber):
-                self._subscriber = None  # dropped, not undeclared: see Publisher.destroy
-            else:
-                self._subscriber.undeclare()
+            for item in (self._subscriber, self._token):
+                item.undeclare()
 
 
 class FirstMessage:
