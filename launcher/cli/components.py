@@ -74,6 +74,12 @@ class BusLoader:
             node.destroy_node()
             node.session.close()  # (the node was handed it: left open, its threads would
             # call into the interpreter as it ends, and abort the process)
+        # A worker still waiting for an answer (a load past the launch's end) is woken by the
+        # closed session, and waited for: one inside Zenoh as the interpreter ends aborts it.
+        with self._lock:
+            threads = list(self._threads)
+        for thread in threads:
+            thread.join(CLOSE_WAIT)
 
     # --- the workers ------------------------------------------------------------------------
     def _serve(self, container: str, work: queue.SimpleQueue[Any]) -> None:
@@ -93,6 +99,10 @@ class BusLoader:
                     done(request, "", exc.message)
                 client = None if alive is not None else client
                 continue
+            except Exception:  # noqa: BLE001 - Zenoh's, once close() has closed the session
+                if not self._cancelled.is_set():
+                    raise
+                return
             gate.acquire()
             self._start(self._load_all, client, requests, done, gate)
 
@@ -170,6 +180,10 @@ class BusLoader:
             response = client.call(message, timeout=ANSWER_WAIT)
         except LaunchError as exc:
             return "", exc.message
+        except Exception:  # noqa: BLE001 - Zenoh's, once close() has closed the session
+            if not self._cancelled.is_set():
+                raise
+            return "", "the launch ended before the container answered"
         if not response.success:
             return "", response.error_message or "the container refused it"
         return response.full_node_name, ""

@@ -97,7 +97,8 @@ class ThreadedLaunch:
         self.watch = LaunchWatch(self)
         self._event_loop = event_loop
         self._thread: threading.Thread | None = None
-        self._ready = threading.Event()
+        self._ready = threading.Event()  # ReadyToTest was visited, or the launch ended first
+        self._reached = False  # ReadyToTest was visited
         self.failed = False  # an action of a launch failed, or an error was reported
 
     # --- what tests read --------------------------------------------------------------------
@@ -123,7 +124,8 @@ class ThreadedLaunch:
         tells when the tests may begin."""
         self.finish(auto_shutdown=True)
         self.service, self._ready = self.new_service(), threading.Event()
-        ready.add_callback(self._ready.set)
+        self._reached = False
+        ready.add_callback(self._on_ready)
         if not shutdown_when_idle:
             self.service.add_timer(FOREVER, lambda: None)
         self.service.loop.open_posting()
@@ -141,9 +143,14 @@ class ThreadedLaunch:
             self._ready.set()  # (a launch that ended before ReadyToTest: nothing to wait for)
             self.watch._wake()
 
+    def _on_ready(self) -> None:
+        self._reached = True
+        self._ready.set()
+
     def wait_ready(self, timeout: float) -> bool:
-        """Whether ReadyToTest was visited within `timeout` seconds (and the launch runs)."""
-        return self._ready.wait(timeout) and not self.ended
+        """Whether ReadyToTest was visited within `timeout` seconds (the launch may have
+        ended since, its processes done: the tests judge that)."""
+        return self._ready.wait(timeout) and self._reached
 
     def shutdown(self, reason: str = "the tests are done") -> None:
         """Ask the launch to end (nothing to do once it has)."""

@@ -70,7 +70,10 @@ class Tool:
 
 
 def _wait(proc: subprocess.Popen, out: Path, output: Path, stop_after: float | None) -> int | str:
+    """`stop_after` counts from the first probe record (a loaded machine starts the tool's
+    first process later, not its own timing), or from the start when none has come."""
     started = last_change = time.monotonic()
+    first: float | None = None  # when the first probe record came
     seen = (-1, -1)
     while True:
         code = proc.poll()
@@ -81,8 +84,10 @@ def _wait(proc: subprocess.Popen, out: Path, output: Path, stop_after: float | N
         state = (len(list(out.iterdir())), output.stat().st_size)
         if state != seen:
             seen, last_change = state, now
+        if first is None and state[0] > 0:
+            first = now
         settled = stop_after is None and state[0] > 0 and now - last_change > QUIET
-        if settled or (stop_after is not None and now - started > stop_after) \
+        if settled or (stop_after is not None and now - (first or started) > stop_after) \
                 or now - started > LONGEST:
             _interrupt(proc)
             return "interrupted"

@@ -72,6 +72,9 @@ def _marked(case: Case):
         strict=True, reason="a known difference, not yet fixed (tests/fidelity/known.py)"))
 
 
+# One pytest-xdist worker takes them all (`--dist loadgroup`): the fixture above runs every
+# case of the session, a few at a time, and another worker would run them all again.
+@pytest.mark.xdist_group("fidelity_corpus")
 @pytest.mark.parametrize("case", [_marked(case) for case in CASES],
                          ids=[case.name for case in CASES])
 def test_launcher_agrees_with_the_real_tool(case: Case, runs) -> None:

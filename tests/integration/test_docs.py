@@ -29,6 +29,9 @@ from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import cases
 from tests.fidelity.known import KNOWN_DIFFERENCES
 
+# One pytest-xdist worker builds the site once for all of them (`--dist loadgroup`).
+pytestmark = pytest.mark.xdist_group("docs_site")
+
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:

@@ -186,7 +186,7 @@ def test_bad_clients_leave_the_bridge_serving_the_others(served):
     garbage = client(url, {"do": "abuse", "what": "garbage"}, {"do": "wait", "seconds": 1})
     assert found(garbage, "status")["level"] == 2  # an error status: "Invalid message"
     oversized = client(url, {"do": "abuse", "what": "oversized", "bytes": 80 * 1024 * 1024},
-                       {"do": "wait", "seconds": 3})
+                       {"do": "wait_closed", "seconds": 30})
     assert "closed" in found(oversized, "closed")  # over the SDK's 16 MiB cap: dropped
     mismatched = client(url, {"do": "publish", "topic": "/cmd_vel",
                               "type": "geometry_msgs/msg/Twist", "raw": [1, 2, 3],

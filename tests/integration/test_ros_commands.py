@@ -112,7 +112,7 @@ def test_ros2_verbs_daemon_and_the_ones_launcher_lacks(ws):
     assert "action, bag, component" in wrong.stderr and "Traceback" not in wrong.stderr
     lacking = shell(ws, "ros2 component list")
     assert lacking.returncode == 1 and "ros2 component:" in lacking.stderr
-    assert "not available" in lacking.stderr
+    assert "not in launcher yet" in lacking.stderr and "node_container" in lacking.stderr
     doctor = shell(ws, "ros2 wtf --help")
     assert doctor.returncode == 0 and "usage: ros2 doctor" in doctor.stdout
     packages = shell(ws, "ros2 pkg prefix robot_state_publisher")

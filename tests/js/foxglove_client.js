@@ -17,6 +17,7 @@
 //   {"do": "time", "seconds": S}                           the server's time messages
 //   {"do": "abuse", "what": "subscribe10000"|"unadvertised"|"oversized"|"mismatched"|"garbage"}
 //   {"do": "wait", "seconds": S}
+//   {"do": "wait_closed", "seconds": S}                    until the server closes, at most S s
 const WebSocket = require("ws");
 const { FoxgloveClient } = require("@foxglove/ws-protocol");
 const { parse } = require("@foxglove/rosmsg");
@@ -49,7 +50,8 @@ client.on("unadvertise", (ids) => ids.forEach((id) => { for (const [t, c] of cha
 client.on("advertiseServices", (list) => list.forEach((s) => services.set(s.name, s)));
 client.on("status", (s) => say({ status: s.message, level: s.level }));
 let closing = false;
-ws.on("close", (code, reason) => { if (!closing) say({ closed: code, reason: String(reason) }); });
+let closed = false;
+ws.on("close", (code, reason) => { closed = true; if (!closing) say({ closed: code, reason: String(reason) }); });
 for (const name of Object.keys(waiting)) client.on(name, (e) => waiting[name].forEach((f) => f(e)));
 
 const until = async (check, seconds) => {
@@ -70,6 +72,7 @@ async function run() {
   say({ connected: info && info.name, capabilities: info && info.capabilities, protocol: ws.protocol });
   for (const step of steps) {
     if (step.do === "wait") await sleep(step.seconds * 1000);
+    else if (step.do === "wait_closed") await until(() => closed, step.seconds);
     else if (step.do === "channels") {
       await until(() => channels.size > 0, 10);
       if (step.topic) await until(() => channels.get(step.topic), 15);

@@ -101,3 +101,39 @@ def test_the_ros_output_filter_drops_an_rmws_registered_lines(tmp_path, monkeypa
     drop = basic_output_filter(filtered_rmw_implementation="rmw_x")
     assert drop("[x] noise\npid 3\nsignal\n") == "signal\n"
     assert basic_output_filter(filtered_rmw_implementation="rmw_y")("[x] kept\n") == "[x] kept\n"
+
+
+class EndsRightAfterReady:
+    """A launch service that visits the description's ReadyToTest, then ends at once (its one
+    process done), as a launch of `[true, ReadyToTest()]` may before the tests look."""
+
+    def __init__(self) -> None:
+        self.loop = type("Loop", (), {"open_posting": lambda self: None})()
+        self.ending = type("Ending", (), {"error": False})()
+
+    def run(self, description, signals: bool = True) -> None:
+        from launch_testing.actions import ReadyToTest
+
+        pending = list(description.actions)
+        while pending:
+            action = pending.pop(0)
+            if isinstance(action, ReadyToTest):
+                action.execute(None)
+            pending += list(getattr(action, "actions", []))
+
+
+def test_a_launch_that_ends_after_its_ready_to_test_still_lets_the_tests_run():
+    """launch_pytest's fixture waits for ReadyToTest; a launch that reached it and then ended
+    (its processes done) before the test thread looked runs the tests, which judge the exits
+    (a loaded machine reported "ReadyToTest was never reached: the launch ended first")."""
+    from launch import LaunchDescription
+    from launch_testing.actions import ReadyToTest
+
+    from launcher.compat.threaded_launch import ThreadedLaunch
+
+    ready = ReadyToTest()
+    launch = ThreadedLaunch(EndsRightAfterReady, event_loop=None)
+    launch.start(LaunchDescription([ready]), ready)
+    launch.finish(auto_shutdown=False)
+    assert launch.ended
+    assert launch.wait_ready(0)
