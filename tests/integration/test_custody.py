@@ -345,14 +345,16 @@ def campaign_launch(rng: random.Random) -> str:
     return "\n".join(lines) + "\n"
 
 
-def test_fault_campaign_leaves_nothing_behind(tmp_path_factory):
-    """120 runs: a random launch of 1–20 children of the kinds above, hit by SIGINT, SIGTERM
-    or SIGKILL at a random moment of its first 1.5 s (often inside the first 0.4 s, while
-    the children are being spawned), or by two signals in a row."""
-    rng = random.Random(int(os.environ.get("LAUNCHER_CAMPAIGN_SEED", "15")))
+@pytest.mark.parametrize("part", range(4))
+def test_fault_campaign_leaves_nothing_behind(tmp_path_factory, part):
+    """120 runs in four parts of 30 (which pytest-xdist's workers take side by side): a
+    random launch of 1–20 children of the kinds above, hit by SIGINT, SIGTERM or SIGKILL at a
+    random moment of its first 1.5 s (often inside the first 0.4 s, while the children are
+    being spawned), or by two signals in a row."""
+    rng = random.Random(int(os.environ.get("LAUNCHER_CAMPAIGN_SEED", "15")) * 4 + part)
     faults = {"SIGINT": 0, "SIGTERM": 0, "SIGKILL": 0, "twice": 0}
     tmp_path = tmp_path_factory.mktemp("fc")  # (short: the run folders' sockets must fit)
-    for run in range(120):
+    for run in range(30 * part, 30 * (part + 1)):
         ws = Workspace(tmp_path / f"run{run}", f"campaign-{os.getpid()}-{run}")
         ws.env["LAUNCHER_ROUTER"] = f"unixsock-stream/{tmp_path}/no-router.sock"  # no nodes
         ws.root.mkdir()
@@ -385,4 +387,4 @@ def test_fault_campaign_leaves_nothing_behind(tmp_path_factory):
         except AssertionError as exc:
             raise AssertionError(f"run {run} ({fault}) left processes behind: {exc}\n"
                                  f"{ws.output('campaign.launch.yaml')}\n{text}") from None
-    assert min(faults.values()) > 10, faults
+    assert min(faults.values()) >= 3, faults
