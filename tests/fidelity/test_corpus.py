@@ -29,31 +29,51 @@ from tests.fidelity.runner import launcher_tool
 
 CASES = cases()
 JOBS = 3
+AHEAD = 2 * JOBS  # cases started before their test asks, so that JOBS are always running
+
+
+class Runs:
+    """Each case's launcher outcome, computed a few at a time: a test's case, and the cases
+    of the next tests in the session's order, which are most often this process's next ones
+    (pytest-xdist hands a worker its tests in runs of neighbours; a case it never asks for is
+    computed and dropped, a few a worker at most)."""
+
+    def __init__(self, order: list[Case], tag: str) -> None:
+        self.order, self.tag = order, tag
+        self.index = {case.name: i for i, case in enumerate(order)}
+        self.scratch = Path(tempfile.mkdtemp(prefix="fidelity-"))
+        self.pool = ThreadPoolExecutor(JOBS)
+        self.futures: dict[str, Future] = {}
+
+    def result(self, case: Case, timeout: float) -> dict:
+        start = self.index[case.name]
+        for ahead in self.order[start:start + AHEAD + 1]:
+            if ahead.name not in self.futures:
+                self.futures[ahead.name] = self.pool.submit(self._run, ahead)
+        return self.futures[case.name].result(timeout=timeout)
+
+    def _run(self, case: Case) -> dict:
+        folder = self.scratch / case.name.replace("/", "__")
+        tool = launcher_tool(case.flavour, folder / "run")
+        tool.env["LAUNCHER_TEST_TAG"] = self.tag
+        return outcome(tool.run(case, folder), folder, case.flavour)
 
 
 @pytest.fixture(scope="module")
 def runs(request):
-    """Each selected case's launcher outcome, computed a few at a time."""
+    """The cases of this session's corpus tests, in their order."""
     chosen = [item.callspec.params["case"] for item in request.session.items
               if getattr(item, "callspec", None) and "case" in item.callspec.params
               and item.module.__name__ == __name__]
-    tag = uuid.uuid4().hex
-    scratch = Path(tempfile.mkdtemp(prefix="fidelity-"))
-    pool = ThreadPoolExecutor(JOBS)
-
-    def run(case: Case) -> dict:
-        folder = scratch / case.name.replace("/", "__")
-        tool = launcher_tool(case.flavour, folder / "run")
-        tool.env["LAUNCHER_TEST_TAG"] = tag
-        return outcome(tool.run(case, folder), folder, case.flavour)
-
-    futures: dict[str, Future] = {case.name: pool.submit(run, case) for case in chosen}
-    yield futures
-    pool.shutdown(wait=True)
+    corpus = Runs(chosen, uuid.uuid4().hex)
+    yield corpus
+    for future in corpus.futures.values():
+        future.cancel()  # (cases run ahead that no test of this process will ask for)
+    corpus.pool.shutdown(wait=True)
     deadline = time.monotonic() + 5
-    while tagged_processes(tag) and time.monotonic() < deadline:
+    while tagged_processes(corpus.tag) and time.monotonic() < deadline:
         time.sleep(0.05)
-    assert not tagged_processes(tag), "the corpus's launches left processes behind"
+    assert not tagged_processes(corpus.tag), "the corpus's launches left processes behind"
 
 
 def recorded(case: Case) -> dict:
@@ -72,9 +92,6 @@ def _marked(case: Case):
         strict=True, reason="a known difference, not yet fixed (tests/fidelity/known.py)"))
 
 
-# One pytest-xdist worker takes them all (`--dist loadgroup`): the fixture above runs every
-# case of the session, a few at a time, and another worker would run them all again.
-@pytest.mark.xdist_group("fidelity_corpus")
 @pytest.mark.parametrize("case", [_marked(case) for case in CASES],
                          ids=[case.name for case in CASES])
 def test_launcher_agrees_with_the_real_tool(case: Case, runs) -> None:
@@ -82,7 +99,7 @@ def test_launcher_agrees_with_the_real_tool(case: Case, runs) -> None:
     choice = CHOICES.get(case.name)
     if choice is not None:
         expected = choice.apply(expected)
-    got = runs[case.name].result(timeout=120)
+    got = runs.result(case, timeout=120)
     assert got == expected, _difference(expected, got, choice)
 
 

@@ -4,6 +4,7 @@ door whose links lead somewhere."""
 
 from __future__ import annotations
 
+import fcntl
 import html
 import json
 import os
@@ -29,19 +30,29 @@ from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import cases
 from tests.fidelity.known import KNOWN_DIFFERENCES
 
-# One pytest-xdist worker builds the site once for all of them (`--dist loadgroup`).
-pytestmark = pytest.mark.xdist_group("docs_site")
-
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:
-    out = tmp_path_factory.mktemp("site")
+    """The site, built once a session: pytest-xdist's workers share their base folder's
+    parent, and the first to come builds it there while the others wait on the lock."""
+    shared = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        shared = shared.parent
+    out, built = shared / "docs-site", shared / "docs-site.built"
+    with open(shared / "docs-site.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not built.exists():
+            build(out)
+            built.touch()
+    return out
+
+
+def build(out: Path) -> None:
     env = {**os.environ, "NO_MKDOCS_2_WARNING": "1", "DISABLE_MKDOCS_2_WARNING": "true"}
     done = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "-d", str(out)],
                           cwd=REPO, env=env, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stdout + done.stderr
     assert "WARNING" not in done.stderr, done.stderr
-    return out
 
 
 def text(page: Path) -> str:
