@@ -36,6 +36,18 @@ def direct(callback: Callable[..., Any]) -> Any:
     return zenoh.handlers.Callback(callback, indirect=False)
 
 
+def join_callback_threads(timeout: float = 1.0) -> None:
+    """zenoh-python runs a Python callback on a thread of its own (named "… (pyo3-closure)"),
+    a daemon when the thread that declared the entity is one (a component's, a launch's
+    worker). One that is still leaving Zenoh's channel as the interpreter finalises is stopped
+    inside Rust code, which aborts the process ("FATAL: exception not rethrown"). At exit,
+    once the nodes are destroyed and their channels closed, they are given `timeout` to end."""
+    deadline = time.monotonic() + timeout
+    for thread in threading.enumerate():
+        if thread.daemon and thread.name.endswith("(pyo3-closure)"):
+            thread.join(max(0.0, deadline - time.monotonic()))
+
+
 class Host:
     def __init__(self, session: zenoh.Session, namespace: str, name: str,
                  logger: Logger, space: keys.Space = keys.ROS) -> None:

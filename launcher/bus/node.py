@@ -27,7 +27,7 @@ import zenoh
 
 from launcher.bus import components, keys, names, ros_args
 from launcher.bus.clock import Clock
-from launcher.bus.host import Host
+from launcher.bus.host import Host, direct, join_callback_threads
 from launcher.bus.logging import Logger
 from launcher.bus.node_parameters import NodeParameters
 from launcher.bus.publisher import Publisher
@@ -75,6 +75,11 @@ def _signals_held(forgive: bool) -> Iterator[None]:
             signal.raise_signal(caught[0])
 
 
+# Registered before any node's destroy_node: the threading module runs its exit hooks in the
+# reverse order, so this one after every node is destroyed.
+getattr(threading, "_register_atexit", atexit.register)(join_callback_threads)
+
+
 class Parameter:
     def __init__(self, name: str, value: Any) -> None:
         self.name, self.value = name, value
@@ -112,7 +117,7 @@ class Node:
         self._token = self.host.announce(keys.NODE)
         self._shutdown = self.session.declare_queryable(
             keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self.host.node_id),
-            self._asked_to_shut_down) if space == keys.ROS and within is None else None
+            direct(self._asked_to_shut_down)) if space == keys.ROS and within is None else None
         self._stopped = threading.Event()
         self.interrupted = False  # Ctrl-C arrived during spin()
         self._destroyed = False
