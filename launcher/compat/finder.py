@@ -33,7 +33,14 @@ _API_NAMES = ("rclpy", "rospy", "tf2_ros", "tf2_geometry_msgs", "sensor_msgs_py"
 # `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
 SHIMMED = ("ament_index_python", "launch", "launch_ros", "launch_testing",
-           "launch_testing_ros", "launch_pytest", "controller_manager", "rostest")
+           "launch_testing_ros", "launch_pytest", "launch_xml", "launch_yaml",
+           "controller_manager", "rostest")
+# The real packages' module tree (recorded by tests/fidelity/surface.py): a module of it that
+# has no file among the shims is made from it, its names found in the packages above it
+LAYOUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "layout.json")
+LAYOUT_ROOTS = ("launch", "launch_xml", "launch_yaml", "launch_ros", "launch_testing",
+                "launch_testing_ros", "launch_pytest", "ament_index_python", "rclpy", "rospy",
+                "actionlib", "rostest")
 _KINDS = ("msg", "srv", "action")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 
@@ -50,14 +57,12 @@ class InterfaceFinder:
     def find_spec(self, fullname: str, path: Sequence[str] | None = None,
                   target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
         top, _, rest = fullname.partition(".")
-        if top in _API_NAMES:
-            if rest:
-                return None  # submodules come from the package's own __path__
-            return importlib.machinery.PathFinder.find_spec(fullname, [NODE_APIS])
-        if top in SHIMMED:
-            if rest:
-                return None
-            return importlib.machinery.PathFinder.find_spec(fullname, [SHIMS])
+        if top in _API_NAMES or top in SHIMMED:
+            if rest:  # submodules come from the package's own __path__, else the layout
+                return _layout_spec(fullname) if _ours(fullname.rpartition(".")[0]) else None
+            found = importlib.machinery.PathFinder.find_spec(
+                fullname, [NODE_APIS if top in _API_NAMES else SHIMS])
+            return found or _layout_spec(fullname)
         if rest and rest not in _KINDS or getattr(self._busy, "on", False) \
                 or _inside_standard_import():
             return None
@@ -93,6 +98,84 @@ class InterfaceFinder:
             return
         module.__doc__ = f"{package}.{kind}: {kind} classes from launcher's type store"
         module.__getattr__ = _lazy_types(package, kind)  # type: ignore[attr-defined]
+
+
+_layout: dict[str, list[str]] | None = None
+
+
+def layout() -> dict[str, list[str]]:
+    """{module: its public names} of the real packages that launcher shims."""
+    global _layout
+    if _layout is None:
+        import json
+
+        with open(LAYOUT, encoding="utf-8") as file:
+            _layout = json.load(file)
+    return _layout
+
+
+def _ours(package: str) -> bool:
+    """Whether `package` is launcher's (a shim's file or a layout module), not a real install
+    whose missing submodules are not ours to make."""
+    module = sys.modules.get(package)
+    if module is None:
+        return False
+    origin = getattr(getattr(module, "__spec__", None), "origin", None)
+    return origin is None and isinstance(getattr(module, "__loader__", None), LayoutLoader) \
+        or isinstance(origin, str) and origin.startswith((SHIMS, NODE_APIS))
+
+
+def _layout_spec(fullname: str) -> importlib.machinery.ModuleSpec | None:
+    modules = layout()
+    if fullname not in modules:
+        return None
+    spec = importlib.machinery.ModuleSpec(fullname, LayoutLoader())
+    if any(name.startswith(fullname + ".") for name in modules):
+        spec.submodule_search_locations = []
+    return spec
+
+
+class LayoutLoader:
+    """A module of the real packages' tree with no file of its own among the shims: its names
+    are the ones its nearest packages above it give (the real packages re-export what their
+    modules define, and the shims define each thing once)."""
+
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> None:
+        return None
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        names = layout()[module.__name__]
+        module.__all__ = list(names)  # type: ignore[attr-defined]
+        module.__getattr__ = _from_above(module.__name__, frozenset(names))  # type: ignore
+
+
+def _from_above(dotted: str, names: frozenset[str]) -> Any:
+    def get(name: str) -> Any:
+        if name in names:
+            package = dotted.rpartition(".")[0]
+            while package:
+                above = sys.modules.get(package) or importlib.import_module(package)
+                value = vars(above).get(name, _NOTHING)
+                if value is _NOTHING and isinstance(getattr(above, "__loader__", None),
+                                                    LayoutLoader):
+                    try:
+                        value = getattr(above, name)
+                    except AttributeError:
+                        value = _NOTHING
+                if value is not _NOTHING:
+                    setattr(sys.modules[dotted], name, value)
+                    return value
+                package = package.rpartition(".")[0]
+            raise AttributeError(f"module '{dotted}' has no attribute '{name}': launcher does "
+                                 f"not provide {dotted}.{name} (the real package has it)")
+        from launcher.errors import did_you_mean
+
+        raise AttributeError(f"module '{dotted}' has no attribute '{name}'"
+                             f"{did_you_mean(name, sorted(names))}")
+    return get
+
+
+_NOTHING = object()
 
 
 def _inside_standard_import() -> bool:

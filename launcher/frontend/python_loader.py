@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import importlib.util
 import itertools
+import re
 import sys
 import traceback
 from collections.abc import Callable
@@ -107,6 +108,21 @@ def _check_entities(description: LaunchDescription, where: Location) -> None:
                                  f"actions (launch.actions…, launch_ros.actions…)", where)
 
 
+def _nearest_import(exc: BaseException) -> str:
+    """' (did you mean …?)' for `from module import Name` of a name the module lacks: the
+    module's names and, for launch's and rclpy's modules, the real package's."""
+    if not isinstance(exc, ImportError) or exc.name not in sys.modules:
+        return ""
+    wanted = re.match(r"cannot import name '(\w+)'", str(exc))
+    if wanted is None:
+        return ""
+    from launcher.compat.finder import layout
+    from launcher.errors import did_you_mean
+
+    names = [n for n in dir(sys.modules[exc.name]) if not n.startswith("_")]
+    return did_you_mean(wanted[1], [*names, *layout().get(exc.name, ())])
+
+
 def _user_error(exc: BaseException, path: Path, message: str | None = None,
                 noun: str = "launch file") -> ParseError:
     frames = traceback.extract_tb(exc.__traceback__)
@@ -116,7 +132,7 @@ def _user_error(exc: BaseException, path: Path, message: str | None = None,
     if message is not None:
         return ParseError(message, where)
     trace = "".join(traceback.format_list(mine)).rstrip()
-    text = f"{type(exc).__name__}: {exc}"
+    text = f"{type(exc).__name__}: {exc}{_nearest_import(exc)}"
     return ParseError(f"the {noun} raised {text}" + (f"\n{trace}" if trace else ""), where)
 
 
