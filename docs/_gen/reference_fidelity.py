@@ -12,6 +12,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from tests.fidelity.choices import CHOICES  # noqa: E402
 from tests.fidelity.corpus import cases  # noqa: E402
 from tests.fidelity.known import KNOWN_DIFFERENCES  # noqa: E402
+from tests.fidelity.left_out import LEFT_OUT  # noqa: E402
+from tests.fidelity.surface_check import GAPS, sizes  # noqa: E402
 
 INTRO = """# Fidelity: launcher against the real tools
 
@@ -62,4 +64,48 @@ def page() -> str:
               "the list: the test fails on an unexpected pass).", ""]
     lines += [f"- `{name}`" for name in known] or \
         ["None: every case agrees with the real tool, or differs on purpose (above)."]
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + surface()) + "\n"
+
+
+SURFACE_INTRO = """## The Python API, against the real packages
+
+The public surface of the real packages (every module, and in each its classes, functions and
+constants, with their signatures, base classes and enum members) is recorded in
+`tests/fidelity/surface/` from the packages themselves, installed apart: launch, launch_xml,
+launch_yaml, launch_ros, launch_testing, launch_testing_ros and launch_pytest (launch 3.7.1,
+launch_ros 0.28.0, and the names the newer sources add), rclpy, rcl_interfaces,
+lifecycle_msgs and ament_index_python (the Kilted wheels), and Debian's rospy, actionlib,
+rostest, roslaunch and rosbag. A test imports every recorded module through launcher's shims
+and checks that every name is there and takes every call the real one takes (the same
+parameter names, positions and defaults).
+
+```sh
+python -m tests.fidelity.surface --ros2-source DIR     # record (DIR/launch, DIR/launch_ros)
+python -m tests.fidelity.surface_check                 # what differs now
+```
+"""
+
+
+def surface() -> list[str]:
+    import json
+
+    gaps = json.loads(GAPS.read_text())
+    lines = ["", SURFACE_INTRO, "| | ROS 2 | ROS 1 |", "| --- | --- | --- |"]
+    size = sizes()
+    for what in ("modules", "names", "left_out"):
+        label = {"left_out": "left out on purpose (names, a module with its names)"}.get(
+            what, what)
+        lines.append(f"| {label} | {size['ROS 2'][what]} | {size['ROS 1'][what]} |")
+    ros1 = sum(1 for key in gaps if key.partition(".")[0].partition(":")[0] in
+               ("rospy", "actionlib", "rostest", "roslaunch", "rosbag"))
+    lines += [f"| not yet there | {len(gaps) - ros1} | {ros1} |", "",
+              "### Left out on purpose", "", "| what | why |", "| --- | --- |"]
+    by_reason: dict[str, list[str]] = {}
+    for key, reason in LEFT_OUT.items():
+        by_reason.setdefault(reason, []).append(key)
+    for reason, keys in by_reason.items():
+        lines.append(f"| {', '.join(f'`{k}`' for k in sorted(keys))} | {reason} |")
+    if gaps:
+        lines += ["", "### Not yet there", ""]
+        lines += [f"- `{key}`: {why}" for key, why in gaps.items()]
+    return lines

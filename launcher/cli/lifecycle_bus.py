@@ -35,9 +35,9 @@ class BusLifecycle:
                                   parameter_services=False)
             return self._node
 
-    def watch(self, node: str, seen: Callable[[str, str], None]) -> None:
+    def watch(self, node: str, seen: Callable[..., None]) -> None:
         def on_event(message: Any) -> None:
-            seen(message.start_state.label, message.goal_state.label)
+            seen(message.start_state.label, message.goal_state.label, message)
 
         self._bus().create_subscription("lifecycle_msgs/msg/TransitionEvent",
                                         f"{node}/transition_event", on_event, qos=10,

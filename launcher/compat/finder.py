@@ -28,7 +28,7 @@ if TYPE_CHECKING:  # (typing's names are not imported at run time: this runs at 
 
 NODE_APIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "nodes")
 _API_NAMES = ("rclpy", "rospy", "tf2_ros", "tf2_geometry_msgs", "sensor_msgs_py", "cv_bridge",
-              "message_filters", "actionlib", "tf")
+              "message_filters", "actionlib", "tf", "rosbag", "roslaunch")
 # launch files' and xacro's modules (compat/shims): found here too, so that a shell with
 # `launcher env` runs `xacro` with `$(find pkg)` and Python launch files, a real one first
 SHIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shims")
@@ -38,9 +38,13 @@ SHIMMED = ("ament_index_python", "launch", "launch_ros", "launch_testing",
 # The real packages' module tree (recorded by tests/fidelity/surface.py): a module of it that
 # has no file among the shims is made from it, its names found in the packages above it
 LAYOUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "layout.json")
+# where launch's and launch_ros's names are, whatever module of theirs a file imports one from
+CANONICAL = {"launch": ("launcher.api", "launcher.api.utilities", "launch"),
+             "launch_ros": ("launcher.api", "launcher.api.ros", "launcher.api.ros_adapter",
+                            "launch")}
 LAYOUT_ROOTS = ("launch", "launch_xml", "launch_yaml", "launch_ros", "launch_testing",
                 "launch_testing_ros", "launch_pytest", "ament_index_python", "rclpy", "rospy",
-                "actionlib", "rostest")
+                "actionlib", "rostest", "rosbag", "roslaunch")
 _KINDS = ("msg", "srv", "action")
 CHOICE_VARIABLE = "LAUNCHER_ROS_MODULES"
 
@@ -59,7 +63,10 @@ class InterfaceFinder:
         top, _, rest = fullname.partition(".")
         if top in _API_NAMES or top in SHIMMED:
             if rest:  # submodules come from the package's own __path__, else the layout
-                return _layout_spec(fullname) if _ours(fullname.rpartition(".")[0]) else None
+                if not _ours(fullname.rpartition(".")[0]):
+                    return None
+                found = importlib.machinery.PathFinder.find_spec(fullname, path)
+                return found or _layout_spec(fullname)
             found = importlib.machinery.PathFinder.find_spec(
                 fullname, [NODE_APIS if top in _API_NAMES else SHIMS])
             return found or _layout_spec(fullname)
@@ -100,11 +107,12 @@ class InterfaceFinder:
         module.__getattr__ = _lazy_types(package, kind)  # type: ignore[attr-defined]
 
 
-_layout: dict[str, list[str]] | None = None
+_layout: dict[str, dict[str, str]] | None = None
 
 
-def layout() -> dict[str, list[str]]:
-    """{module: its public names} of the real packages that launcher shims."""
+def layout() -> dict[str, dict[str, str]]:
+    """{module: {its public names: the module of the real package that defines the name
+    ("" for the module itself)}} of the real packages that launcher shims."""
     global _layout
     if _layout is None:
         import json
@@ -146,12 +154,35 @@ class LayoutLoader:
     def exec_module(self, module: types.ModuleType) -> None:
         names = layout()[module.__name__]
         module.__all__ = list(names)  # type: ignore[attr-defined]
-        module.__getattr__ = _from_above(module.__name__, frozenset(names))  # type: ignore
+        module.__getattr__ = _from_above(module.__name__, names)  # type: ignore
 
 
-def _from_above(dotted: str, names: frozenset[str]) -> Any:
+def rest_from_layout(dotted: str) -> Any:
+    """A shim file's module `__getattr__`: the names the real module has that the file does
+    not define, found as a layout module finds them (the layout is read at the first)."""
+    found: list[Any] = []
+
+    def get(name: str) -> Any:
+        if name.startswith("__"):  # (probes such as __path__ or __file__ by tools)
+            raise AttributeError(f"module '{dotted}' has no attribute '{name}'")
+        if not found:
+            found.append(_from_above(dotted, layout().get(dotted, {})))
+        return found[0](name)
+    return get
+
+
+def _from_above(dotted: str, names: dict[str, str]) -> Any:
     def get(name: str) -> Any:
         if name in names:
+            home = names[name]
+            if home and home != dotted and _ours(home.partition(".")[0]):
+                try:  # where the real package defines it (a shim file, or found above it)
+                    value = getattr(importlib.import_module(home), name)
+                except (ImportError, AttributeError):
+                    pass
+                else:
+                    setattr(sys.modules[dotted], name, value)
+                    return value
             package = dotted.rpartition(".")[0]
             while package:
                 above = sys.modules.get(package) or importlib.import_module(package)
@@ -166,6 +197,11 @@ def _from_above(dotted: str, names: frozenset[str]) -> Any:
                     setattr(sys.modules[dotted], name, value)
                     return value
                 package = package.rpartition(".")[0]
+            for canonical in CANONICAL.get(dotted.partition(".")[0], ()):
+                value = getattr(importlib.import_module(canonical), name, _NOTHING)
+                if value is not _NOTHING:
+                    setattr(sys.modules[dotted], name, value)
+                    return value
             raise AttributeError(f"module '{dotted}' has no attribute '{name}': launcher does "
                                  f"not provide {dotted}.{name} (the real package has it)")
         from launcher.errors import did_you_mean
@@ -203,7 +239,12 @@ def _lazy_types(package: str, kind: str) -> Any:
         half = next((h for h in ("Request", "Response") if kind == "srv" and name.endswith(h)
                      and len(name) > len(h)), "")
         try:
-            if half:  # ROS 1's TriggerRequest, and Trigger_Request
+            if kind == "srv" and name.endswith("_Event") and len(name) > 6:  # introspection's
+                from launcher.bus.types import registry
+
+                event = registry().service_event(type_name[:-len("_Event")])
+                cls = rosidl.message_class(event, f"{package}.{kind}", name)
+            elif half:  # ROS 1's TriggerRequest, and Trigger_Request
                 service = rosidl.service_class(type_name[:-len(half)].rstrip("_"))
                 cls = getattr(service, half)
             elif kind == "action":

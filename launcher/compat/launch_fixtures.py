@@ -15,6 +15,10 @@ import pytest
 from launcher.compat.threaded_launch import ThreadedLaunch
 
 NEW_SERVICE: Any = pytest.StashKey()  # the config's factory of launch services
+# the pytest sessions configured, innermost last (pytester nests them); launcher's plugin
+# (compat/pytest_plugin.py) keeps it, so that launch_service takes event_loop alone, as
+# launch_pytest's does
+CONFIGS: list[Any] = []
 OPTIONS = "_launch_pytest_fixture_options"  # on a launch fixture: how its launch runs
 OVERRIDABLE = "_launch_pytest_overridable_fixture"
 SCOPE = "_launch_pytest_fixture_scope"
@@ -42,8 +46,11 @@ def get_event_loop_fixture(*, scope: str = "function", overridable: bool = True)
 def get_launch_service_fixture(*, scope: str = "function", overridable: bool = True) -> Any:
     """A `launch_service` fixture of `scope`: a launch, ended (and checked) after."""
     @pytest.fixture(scope=scope)
-    def launch_service(event_loop: Any, pytestconfig: Any) -> Iterator[ThreadedLaunch]:
-        new_service: Callable[[], Any] = pytestconfig.stash[NEW_SERVICE]
+    def launch_service(event_loop: Any) -> Iterator[ThreadedLaunch]:
+        if not CONFIGS:
+            raise RuntimeError("launch_service: launcher's pytest plugin "
+                               "(launcher.compat.pytest_plugin) is not loaded")
+        new_service: Callable[[], Any] = CONFIGS[-1].stash[NEW_SERVICE]
         launch = ThreadedLaunch(new_service, event_loop)
         yield launch
         finalize(launch, "When tearing down launch_service fixture")

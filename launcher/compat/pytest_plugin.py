@@ -34,9 +34,19 @@ def pytest_addoption(parser: Any) -> None:
 
 
 def pytest_configure(config: Any) -> None:
+    from launcher.compat import launch_fixtures
+
+    launch_fixtures.CONFIGS.append(config)  # (launch_pytest's launch_service reads it)
     for marker in MARKERS:
         config.addinivalue_line("markers", f"{marker}: a generate_test_description function "
                                            "that is a launch test's entry point")
+
+
+def pytest_unconfigure(config: Any) -> None:
+    from launcher.compat import launch_fixtures
+
+    if config in launch_fixtures.CONFIGS:
+        launch_fixtures.CONFIGS.remove(config)
 
 
 def pytest_pycollect_makemodule(module_path: Path, parent: Any) -> Any:

@@ -59,6 +59,22 @@ class LaunchWatch:
                 value = condition()
         return value
 
+    def register_event_handler(self, event_handler: Any, append: bool = False) -> None:
+        """Add `event_handler` to the running launch (first of its handlers, unless
+        `append`), from the tests' thread: it is added on the launch's loop."""
+        def add() -> None:
+            registered = self.launch.service.handlers.registered
+            registered.insert(len(registered) if append else 0, event_handler)
+        self.launch.service.loop.call_soon_threadsafe(add)
+
+    def unregister_event_handler(self, event_handler: Any) -> None:
+        """Take `event_handler` out of the running launch (on its loop)."""
+        def remove() -> None:
+            registered = self.launch.service.handlers.registered
+            if event_handler in registered:
+                registered.remove(event_handler)
+        self.launch.service.loop.call_soon_threadsafe(remove)
+
     def recorders(self) -> list[Any]:
         """Event handlers that keep the record. Output wakes the waiters once every handler
         has seen it (the action's own cache among them), on the loop's next turn."""
@@ -68,7 +84,7 @@ class LaunchWatch:
         def exited(event: Any, _context: Any) -> None:
             self._note(self._exited, event.origin)
 
-        def printed(_event: Any, _context: Any) -> None:
+        def printed(_event: Any, _context: Any = None) -> None:  # (launch: the event alone)
             self.launch.service.loop.call_soon(self._wake)
 
         return [RegisterEventHandler(OnProcessStart(on_start=started)),

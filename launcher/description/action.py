@@ -4,16 +4,45 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from pathlib import Path
+from typing import Any
 
+from launcher.description import made_by_code
 from launcher.description.condition import Condition
 from launcher.description.fields import normalize
-from launcher.errors import LaunchError, Location
+from launcher.errors import ExecutionError, LaunchError, Location
 from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext, Snapshot
 
 
+class LaunchDescriptionEntity:
+    """launch.LaunchDescriptionEntity: what a launch description holds (actions, and
+    descriptions themselves). `made_at`: where code of the user's made it, if it did."""
+
+    made_at: Location | None = None
+
+    def __new__(cls, *args: Any, **kwargs: Any) -> Any:
+        entity = super().__new__(cls)
+        made_by_code.note(entity)
+        return entity
+
+    def describe(self) -> str:
+        return self.__repr__()
+
+    def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return []
+
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return self.get_sub_entities()
+
+    def describe_conditional_sub_entities(self) -> list[tuple[str, list[Any]]]:
+        return []
+
+    def get_asyncio_future(self) -> None:
+        return None
+
+
 @dataclass(kw_only=True, eq=False)
-class Action:
+class Action(LaunchDescriptionEntity):
     """Something a launch does. `visit` checks the condition, then runs `execute`.
 
     `execute` returns the actions to visit next (depth first, before later siblings), or None.
@@ -32,7 +61,15 @@ class Action:
                 return None
             return self.execute(context)
         except LaunchError as exc:
-            raise exc.at(self.where) from None
+            raise exc.at(self.where or self.made_at) from None
+        except Exception as exc:  # code of the user's (an action's execute, a callback)
+            place = made_by_code.place_of(exc)
+            if place is None:
+                raise  # launcher's own: the runtime reports it
+            error = ExecutionError(f"{type(self).__name__} raised {type(exc).__name__}: {exc}",
+                                   place)
+            error.__cause__ = exc
+            raise error from None
 
     def execute(self, context: LaunchContext) -> Sequence[Action] | None:
         raise NotImplementedError
@@ -40,6 +77,26 @@ class Action:
     def sub_actions(self) -> Sequence[Action]:
         """Actions nested in this one, for static walks (`--print`, `--show-args`)."""
         return ()
+
+    def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return list(self.sub_actions())
+
+    @staticmethod
+    def parse(entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        """launch's Action.parse: the `if` / `unless` of a frontend entity, as the keyword
+        arguments of an action (what a custom action's own `parse` begins with)."""
+        from launcher.description.condition import IfCondition, UnlessCondition
+
+        given = entity.get_attr("if", optional=True)
+        denied = entity.get_attr("unless", optional=True)
+        if given is not None and denied is not None:
+            raise RuntimeError("if and unless conditions can't be used simultaneously")
+        kwargs: dict[str, Any] = {}
+        if given is not None:
+            kwargs["condition"] = IfCondition(parser.parse_substitution(given))
+        elif denied is not None:
+            kwargs["condition"] = UnlessCondition(parser.parse_substitution(denied))
+        return Action, kwargs
 
 
 @dataclass(kw_only=True, eq=False)
@@ -49,15 +106,42 @@ class LaunchDescription(Action):
     actions: list[Action] = field(default_factory=list)
     file: Path | None = None
 
-    def __init__(self, actions: Iterable[Action] = (), *, file: Path | None = None,
+    def __init__(self, initial_entities: Iterable[Action] | None = None, *,
+                 deprecated_reason: str | None = None, file: Path | None = None,
                  where: Location | None = None) -> None:
-        self.actions = list(actions)
+        self.actions = list(initial_entities or ())
+        self.deprecated_reason = deprecated_reason
         self.file = file
         self.where = where
         self.condition = None
 
+    @property
+    def entities(self) -> list[Action]:
+        return self.actions
+
+    def __str__(self) -> str:  # (launch's: the object, not its contents)
+        return object.__repr__(self)
+
+    @property
+    def deprecated(self) -> bool:
+        return self.deprecated_reason is not None
+
     def add_action(self, action: Action) -> None:
         self.actions.append(action)
+
+    def add_entity(self, entity: Action) -> None:
+        self.actions.append(entity)
+
+    def get_launch_arguments(self, conditional_inclusion: bool = False) -> list[Action]:
+        """The DeclareLaunchArgument actions in it and in what it holds statically."""
+        found, todo = [], list(self.actions)
+        while todo:
+            entity = todo.pop(0)
+            if type(entity).__name__ == "DeclareLaunchArgument":
+                found.append(entity)
+            elif isinstance(entity, Action):
+                todo[:0] = list(entity.sub_actions())
+        return found
 
     def execute(self, context: LaunchContext) -> Sequence[Action]:
         if self.file is None:

@@ -1,10 +1,17 @@
-"""`if` / `unless` on any tag: the text must be true, false, 1 or 0 (any case)."""
+"""Conditions on actions, as launch has them: `if` / `unless` text (true, false, 1 or 0 in any
+case), a launch configuration's value, or any predicate of the context.
+
+`Condition` is launch.Condition (a user's own subclass overrides `evaluate`); the frontends'
+`if=` / `unless=` build TextCondition.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from launcher.description.substitution import Text_, describe_text, perform_text, to_text
 from launcher.errors import Location, SubstitutionError
-from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 
@@ -17,11 +24,27 @@ def evaluate_condition_text(text: str, what: str = "condition") -> bool:
     raise SubstitutionError(f"{what}: expected true, false, 1 or 0, got '{text}'")
 
 
-@dataclass(frozen=True)
 class Condition:
-    text: Text_
-    negate: bool = False
+    """launch.Condition: holds when `predicate(context)` is true (never without one)."""
+
     where: Location | None = None
+
+    def __init__(self, *, predicate: Callable[[LaunchContext], bool] | None = None) -> None:
+        self._predicate = predicate
+
+    def evaluate(self, context: LaunchContext) -> bool:
+        return False if self._predicate is None else bool(self._predicate(context))
+
+    def describe(self) -> str:
+        return repr(self)
+
+
+class TextCondition(Condition):
+    """`if=` / `unless=`: the text, substitutions done, must be true, false, 1 or 0."""
+
+    def __init__(self, text: Text_, negate: bool = False, where: Location | None = None) -> None:
+        super().__init__()
+        self.text, self.negate, self.where = text, negate, where
 
     def evaluate(self, context: LaunchContext) -> bool:
         what = "unless" if self.negate else "if"
@@ -35,12 +58,39 @@ class Condition:
         return f"{'unless' if self.negate else 'if'}={describe_text(self.text)}"
 
 
-def IfCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python API name
-    return Condition(to_text(value))
+class IfCondition(TextCondition):
+    """launch.conditions.IfCondition(predicate_expression)."""
+
+    def __init__(self, predicate_expression: Any) -> None:
+        super().__init__(to_text(predicate_expression))
 
 
-def UnlessCondition(value: object) -> Condition:  # noqa: N802 - ROS 2 Python API name
-    return Condition(to_text(value), negate=True)
+class UnlessCondition(TextCondition):
+    """launch.conditions.UnlessCondition(predicate_expression)."""
+
+    def __init__(self, predicate_expression: Any) -> None:
+        super().__init__(to_text(predicate_expression), negate=True)
+
+
+class LaunchConfigurationEquals(Condition):
+    """launch.conditions.LaunchConfigurationEquals: the configuration's value is the expected
+    text (None: the configuration is not set). launch deprecates it for EqualsSubstitution."""
+
+    negate = False
+
+    def __init__(self, launch_configuration_name: str, expected_value: Any) -> None:
+        super().__init__()
+        self.name = launch_configuration_name
+        self.expected = None if expected_value is None else to_text(expected_value)
+
+    def evaluate(self, context: LaunchContext) -> bool:
+        value = context.configurations.get(self.name)
+        expected = None if self.expected is None else perform_text(context, self.expected)
+        return (value == expected) != self.negate
+
+
+class LaunchConfigurationNotEquals(LaunchConfigurationEquals):
+    negate = True
 
 
 def entry_applies(context: LaunchContext, entry: object) -> bool:
@@ -49,6 +99,6 @@ def entry_applies(context: LaunchContext, entry: object) -> bool:
     `only_unless`)."""
     for field, negate in (("only_if", False), ("only_unless", True)):
         text = getattr(entry, field, None)
-        if text is not None and not Condition(text, negate).evaluate(context):
+        if text is not None and not TextCondition(text, negate).evaluate(context):
             return False
     return True

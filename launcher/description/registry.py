@@ -4,17 +4,23 @@ Built-in names are listed in `BUILTINS` (name -> module), so a launch file only 
 modules of the tags and substitutions it uses (start-up time is benchmarked); a unit test
 checks that this index matches the decorators. Extensions come through the same door: modules
 named by the `launcher.extensions` entry-point group, looked at only when a name is unknown.
-Loading a module collects every marked class in it and rejects a name defined twice.
+Loading a module collects every marked class in it and rejects a name defined twice. ROS 2's
+launch extensions (the `launch.frontend.launch_extension` group) come in the same way: their
+`@expose_action` / `@expose_substitution` (launcher.compat's launch.frontend) call `add`.
 """
 
 from __future__ import annotations
 
 import importlib
+import warnings
 from collections.abc import Iterable
 from types import ModuleType
+from typing import Any
 
 from launcher.description.substitution import Substitution
 
+# launcher's own extensions, then ROS 2 launch's (whose modules add themselves when imported)
+EXTENSION_GROUPS = ("launcher.extensions", "launch.frontend.launch_extension")
 _ACTIONS = "launcher.description.actions."
 _SUBS = "launcher.description.substitutions."
 BUILTINS: dict[str, dict[str, str]] = {
@@ -95,19 +101,28 @@ class Registry:
                                f"and {obj.__module__}")
         table[name] = obj
 
+    def add(self, kind: str, name: str, maker: object) -> None:
+        """Add one action ("action") or substitution at run time: what launch.frontend's
+        expose decorators make of a user's class; a name launcher has already is refused."""
+        table = self.actions if kind == "action" else self.substitutions
+        known = table.get(name, self.index[kind].get(name))
+        if known is not None and known is not maker:
+            raise RuntimeError(f"{kind} '{name}' is defined twice: by {known!r} and {maker!r}")
+        table[name] = maker  # type: ignore[assignment]
+
     def load_all(self) -> None:
         self.load(sorted({m for names in self.index.values() for m in names.values()}))
         self.load_extensions()
 
     def load_extensions(self) -> bool:
-        """Load `launcher.extensions` entry points once; True if anything was loaded."""
+        """Load the extension groups' entry points once; True if anything was loaded."""
         if self._extensions_loaded:
             return False
         self._extensions_loaded = True
         from importlib.metadata import entry_points  # only for unknown names: start-up time
 
-        found = list(entry_points(group="launcher.extensions"))
-        self.load(ep.load() for ep in found)
+        found = [ep for group in EXTENSION_GROUPS for ep in entry_points(group=group)]
+        self.load(module for ep in found if (module := _load_extension(ep)) is not None)
         return bool(found)
 
     # --- looking up -------------------------------------------------------------------------
@@ -128,6 +143,18 @@ class Registry:
         """Every name of that kind (for "did you mean"), without importing anything."""
         table = self.actions if kind == "action" else self.substitutions
         return set(self.index[kind]) | set(table)
+
+
+def _load_extension(point: Any) -> Any:
+    """An extension's module; a ROS 2 launch extension that fails to import is warned about
+    and passed over, as launch does (launcher's own fail loudly)."""
+    try:
+        return point.load()
+    except Exception as exc:
+        if point.group == EXTENSION_GROUPS[0]:
+            raise
+        warnings.warn(f"Failed to load the launch extension {point.name}: {exc}", stacklevel=2)
+        return None
 
 
 _default: Registry | None = None

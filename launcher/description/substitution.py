@@ -74,8 +74,22 @@ Text_ = tuple[Substitution, ...]
 
 def perform_text(context: LaunchContext, text: Text_) -> str:
     if len(text) == 1:
-        return text[0].perform(context)
-    return "".join(s.perform(context) for s in text)
+        value = text[0].perform(context)
+        return value if isinstance(value, str) else _not_text(text[0], value)
+    values = [s.perform(context) for s in text]
+    for sub, value in zip(text, values, strict=True):
+        if not isinstance(value, str):
+            _not_text(sub, value)
+    return "".join(values)
+
+
+def _not_text(sub: Substitution, value: object) -> str:
+    """A substitution of the user's own whose perform() gave something else than text."""
+    from launcher.description.made_by_code import defined_at
+
+    raise SubstitutionError(f"{type(sub).__name__}.perform() returned {value!r:.60} "
+                            f"({type(value).__name__}); a substitution returns text (str)",
+                            defined_at(type(sub).perform))
 
 
 def describe_text(text: Text_) -> str:

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.description.action import Action, LaunchDescription
-from launcher.description.condition import Condition
+from launcher.description.condition import TextCondition
 from launcher.description.fields import Kind, coerce, declared_fields, frontend_name
 from launcher.description.parameters import Written
 from launcher.description.registry import Registry, default_registry
@@ -36,6 +36,8 @@ def build_action(entity: Entity, registry: Registry) -> Action:
     if cls is None:
         hint = did_you_mean(entity.tag, registry.known("action"))
         raise ParseError(f"unknown tag '{entity.tag}'{hint}", entity.location)
+    if hasattr(cls, "from_entity"):  # it parses its own entity (launch.frontend.expose_action)
+        return cls.from_entity(entity, registry, _condition(entity, registry))
     kwargs = _fields(entity, cls, registry)
     kwargs["condition"] = _condition(entity, registry)
     return _construct(cls, kwargs, entity)
@@ -174,7 +176,7 @@ def _reject_leftovers(entity: Entity, cls: type, used: set[str]) -> None:
                 f"valid: {', '.join(sorted(set(valid)))}", attribute.name_location)
 
 
-def _condition(entity: Entity, registry: Registry) -> Condition | None:
+def _condition(entity: Entity, registry: Registry) -> TextCondition | None:
     given = [k for k in _CONDITIONS if k in entity.attributes]
     if len(given) == 2:
         raise ParseError(f"'{entity.tag}' has both 'if' and 'unless'; use one",
@@ -186,7 +188,7 @@ def _condition(entity: Entity, registry: Registry) -> Condition | None:
     if is_literal(text) and attribute.value.strip().lower() not in ("true", "false", "1", "0"):
         raise ParseError(f"{given[0]}: expected true, false, 1 or 0, got '{attribute.value}'",
                          attribute.location)
-    return Condition(text, negate=given[0] == "unless", where=attribute.location)
+    return TextCondition(text, negate=given[0] == "unless", where=attribute.location)
 
 
 # --- substitutions ------------------------------------------------------------------------

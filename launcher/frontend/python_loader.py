@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from launcher import compat
+from launcher.description import made_by_code
 from launcher.description.action import Action, LaunchDescription
 from launcher.errors import Location, ParseError
 
@@ -29,12 +30,13 @@ T = TypeVar("T")
 
 def load_python(path: Path) -> LaunchDescription:
     compat.enable_in_process()  # ROS 2 files import launch, launch_ros, ament_index_python
-    module = load_module(path, f"_launcher_launch_file_{next(_counter)}")
-    generate = getattr(module, "generate_launch_description", None)
-    if generate is None:
-        raise ParseError("a Python launch file must define generate_launch_description()",
-                         Location(str(path)))
-    result = run_user_code(path, generate)
+    with made_by_code.writing():
+        module = load_module(path, f"_launcher_launch_file_{next(_counter)}")
+        generate = getattr(module, "generate_launch_description", None)
+        if generate is None:
+            raise ParseError("a Python launch file must define generate_launch_description()",
+                             Location(str(path)))
+        result = run_user_code(path, generate)
     where = _definition(generate, path)
     if not isinstance(result, LaunchDescription):
         raise ParseError(f"generate_launch_description() returned {type(result).__name__}, "

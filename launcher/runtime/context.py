@@ -25,6 +25,16 @@ class Scope:
         return Scope(dict(self.configurations), dict(self.environment))
 
 
+class Locals(dict):
+    """Context locals: a dict whose keys read as attributes too (`context.locals.event`)."""
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(f"context.locals has no '{name}'") from None
+
+
 class Snapshot(NamedTuple):
     """A frozen copy of the context, to run deferred actions (timers, handlers) in later."""
 
@@ -86,11 +96,17 @@ class LaunchContext:
         load_description: Callable[[Path], Any] | None = None,
         packages: Any = None,
         parse_text: Callable[..., Any] | None = None,
+        *,
+        argv: list[str] | None = None,
+        noninteractive: bool = False,
     ) -> None:
         env = dict(os.environ if environment is None else environment)
         self.initial_environment = dict(env)
         self._scopes = [Scope(dict(configurations or {}), env)]
-        self._locals: list[dict[str, str]] = [{}]
+        self._locals: list[Locals] = [Locals()]
+        self._saved: list[tuple[str, dict[str, str]]] = []  # Push/Pop Environment, …
+        self.argv = list(argv or [])  # launch's LaunchContext.argv (the LaunchService's)
+        self.noninteractive = noninteractive
         self._files: list[Path | None] = []
         self.service = service
         self.log_dir = log_dir
@@ -137,16 +153,84 @@ class LaunchContext:
             raise RuntimeError("pop_scope without a matching push_scope")
         self._scopes.pop()
 
-    # --- loop variables -----------------------------------------------------------------
+    def push_environment(self) -> None:
+        """Save the environment (launch's PushEnvironment); pop_environment restores it."""
+        self._saved.append(("environment", dict(self.environment)))
+
+    def pop_environment(self) -> None:
+        self._restore("environment")
+
+    def push_configurations(self) -> None:
+        """Save the configurations (launch's PushLaunchConfigurations)."""
+        self._saved.append(("configurations", dict(self.configurations)))
+
+    def pop_configurations(self) -> None:
+        self._restore("configurations")
+
+    def _restore(self, what: str) -> None:
+        for index in range(len(self._saved) - 1, -1, -1):
+            if self._saved[index][0] == what:
+                saved = self._saved.pop(index)[1]
+                current = getattr(self.scope, what)
+                current.clear()
+                current.update(saved)
+                return
+        kind = "Environment" if what == "environment" else "LaunchConfigurations"
+        raise RuntimeError(f"Pop{kind} without a Push{kind} before it")
+
+    # --- loop variables, and launch's context locals ------------------------------------
     @property
-    def locals(self) -> dict[str, str]:
+    def locals(self) -> Locals:
+        """launch's `context.locals` (`context.locals.event` in an event handler's actions),
+        and the loop variables of ForEach and ForLoop."""
         return self._locals[-1]
 
+    def extend_locals(self, values: Mapping[str, Any]) -> None:
+        self._locals[-1].update(values)
+
+    def extend_globals(self, values: Mapping[str, Any]) -> None:
+        for frame in self._locals:
+            for key, value in values.items():
+                frame.setdefault(key, value)
+
+    def get_locals_as_dict(self) -> dict[str, Any]:
+        return dict(self.locals)
+
     def push_locals(self, values: Mapping[str, str] | None = None) -> None:
-        self._locals.append({**self.locals, **(values or {})})
+        self._locals.append(Locals({**self.locals, **(values or {})}))
 
     def pop_locals(self) -> None:
         self._locals.pop()
+
+    # --- launch's LaunchContext API, for actions and handlers of the user's own ----------
+    @property
+    def launch_configurations(self) -> dict[str, str]:
+        return self.configurations
+
+    def perform_substitution(self, substitution: Any) -> str:
+        return substitution.perform(self)
+
+    @property
+    def is_shutdown(self) -> bool:
+        return self.service is not None and self.service.shutting_down
+
+    def emit_event(self, event: Any) -> None:
+        """Hand an event to the launch's handlers (after the action being visited)."""
+        if self.service is not None:
+            self.service.emit(event)
+
+    emit_event_sync = emit_event
+
+    def would_handle_event(self, event: Any) -> bool:
+        return self.service is not None and self.service.would_handle(event)
+
+    def register_event_handler(self, event_handler: Any, append: bool = False) -> None:
+        if self.service is not None:
+            self.service.register_handler(event_handler)
+
+    def unregister_event_handler(self, event_handler: Any) -> None:
+        if self.service is not None:
+            self.service.unregister_handler(event_handler)
 
     # --- the file being read, for $(dirname) and $(filename) -----------------------------
     @property
@@ -177,7 +261,7 @@ class LaunchContext:
     def enter(self, snapshot: Snapshot) -> None:
         """Push a scope, loop variables and file equal to the snapshot's (undo with leave)."""
         self._scopes.append(snapshot.scope.copy())
-        self._locals.append(dict(snapshot.locals))
+        self._locals.append(Locals(snapshot.locals))
         self._files.append(snapshot.file)
 
     def leave(self) -> None:

@@ -54,7 +54,7 @@ class Ending:
         self.shutting_down = True
         self.log("DEBUG", "launch", f"shutting down: {reason}")
         self.drop_queue()
-        self.emit(events.Shutdown(reason))
+        self.emit(events.Shutdown(reason=reason))
         self.cancel()
         self.table.stop()
         self.check()

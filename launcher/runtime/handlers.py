@@ -20,6 +20,13 @@ class Handlers:
     def register(self, handler: events.EventHandler) -> None:
         self.registered.append(handler)
 
+    def unregister(self, handler: events.EventHandler) -> None:
+        if handler in self.registered:
+            self.registered.remove(handler)
+
+    def would_handle(self, event: events.Event) -> bool:
+        return any(handler.matches(event) for handler in self.registered)
+
     def emit(self, event: events.Event) -> None:
         for handler in list(self.registered):
             if handler.matches(event):

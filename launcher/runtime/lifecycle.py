@@ -11,9 +11,10 @@ one is out.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any, NamedTuple, Protocol
+from typing import Any, Protocol
 
 from launcher.errors import ExecutionError, LaunchError
+from launcher.runtime.events import Event
 from launcher.runtime.loop import EventLoop
 
 # lifecycle_msgs/msg/Transition's ids
@@ -21,20 +22,37 @@ TRANSITIONS = {"configure": 1, "cleanup": 2, "activate": 3, "deactivate": 4,
                "unconfigured_shutdown": 5, "inactive_shutdown": 6, "active_shutdown": 7}
 
 
-class StateTransition(NamedTuple):
-    origin: Any  # the lifecycle_node action
-    node: str  # its fully qualified name
-    start_state: str  # lifecycle_msgs' labels: unconfigured, inactive, active, finalized, …
-    goal_state: str
+class StateTransition(Event):
+    """launch_ros.events.lifecycle.StateTransition: a lifecycle node went from `start_state`
+    to `goal_state` (lifecycle_msgs' labels: unconfigured, inactive, active, finalized, …).
+    `action` is its lifecycle_node action, `node` its fully qualified name; `msg` (the
+    TransitionEvent message) is not kept: the labels are what handlers read."""
+
+    name = "launch_ros.events.lifecycle.StateTransition"
+
+    def __init__(self, *, action: Any, msg: Any = None, node: str = "",
+                 start_state: str = "", goal_state: str = "") -> None:
+        self.action, self.msg, self.node = action, msg, node
+        self.start_state, self.goal_state = start_state, goal_state
+
+    @property
+    def origin(self) -> Any:
+        return self.action
+
+    @property
+    def transition(self) -> str:
+        """The transition's label (configure, on_configure_success, …), as the message has
+        it."""
+        return "" if self.msg is None else self.msg.transition.label
 
 
 Done = Callable[[str], None]  # "" when the transition succeeded, else why not
 
 
 class Lifecycle(Protocol):
-    def watch(self, node: str, seen: Callable[[str, str], None]) -> None:
-        """Call `seen(start_label, goal_label)` (from any thread) for each transition `node`
-        makes from now on."""
+    def watch(self, node: str, seen: Callable[..., None]) -> None:
+        """Call `seen(start_label, goal_label, message)` (from any thread) for each transition
+        `node` makes from now on (`message`: its TransitionEvent)."""
 
     def change_state(self, node: str, transition: int, done: Done) -> None:
         """Ask `node` for a transition, waiting for its service; `done` from any thread."""
@@ -60,9 +78,9 @@ class LifecycleRequests:
         return self.lifecycle
 
     def watch(self, node: str, origin: Any) -> None:
-        def seen(start: str, goal: str) -> None:  # a bus thread
-            self.loop.call_soon_threadsafe(self._seen, StateTransition(origin, node, start,
-                                                                       goal))
+        def seen(start: str, goal: str, message: Any = None) -> None:  # a bus thread
+            self.loop.call_soon_threadsafe(self._seen, StateTransition(
+                action=origin, msg=message, node=node, start_state=start, goal_state=goal))
         self._bus().watch(node, seen)
 
     def _seen(self, event: StateTransition) -> None:

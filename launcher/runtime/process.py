@@ -260,6 +260,11 @@ class ManagedProcess:
                                   (signal.SIGKILL, GIVE_UP_AFTER_SIGKILL)]
             self._next_signal()
 
+    def signal(self, sig: int) -> None:
+        """Send `sig` to the running process's group (launch's SignalProcess event)."""
+        if self.state is State.RUNNING or self.state is State.STOPPING:
+            self._kill_group(sig)
+
     def escalate(self) -> None:
         """Send the next signal now instead of waiting."""
         if self.state is State.STOPPING and self._signals_left:

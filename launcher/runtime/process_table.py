@@ -98,21 +98,26 @@ class ProcessTable:
             if "own_log" in targets:
                 self.run_log.write_own(record)
         if self.listened():
-            self.emit(events.ProcessIO(process.spec.origin, process.label, record.stream,
-                                       record.text))
+            self.emit(events.output(process.spec.origin, process.label, record.stream,
+                                    record.text, process.spec.argv, process.pid))
 
     def _on_started(self, process: ManagedProcess) -> None:
         self.log("INFO", process.label, f"process started with pid [{process.pid}]")
         spec = process.spec
-        self.emit(events.ProcessStarted(spec.origin, process.label, process.pid or 0,
-                                        tuple(spec.argv), spec.cwd))
+        self.emit(events.ProcessStarted(action=spec.origin, name=process.label,
+                                        cmd=spec.argv, cwd=spec.cwd, env=spec.env,
+                                        pid=process.pid or 0))
 
-    def _on_exited(self, process: ManagedProcess, _respawn_pending: bool) -> None:
+    def _on_exited(self, process: ManagedProcess, respawn_pending: bool) -> None:
         if process.spec.helper_done_line and not process.helper_done:
             process.helper_done = True  # (over: it cannot be done later)
             self.helper_over(False)
-        self.emit(events.ProcessExited(process.spec.origin, process.label, process.pid,
-                                       process.returncode))
+        spec = process.spec
+        self.emit(events.ProcessExited(action=spec.origin, name=process.label, cmd=spec.argv,
+                                       cwd=spec.cwd, env=spec.env, pid=process.pid,
+                                       returncode=process.returncode))
+        if not respawn_pending:
+            self.emit(events.ExecutionComplete(action=spec.origin))
         self.changed()
 
 

@@ -85,8 +85,10 @@ class LaunchService:
                                             self.report, self._check_idle)
         self.gate = StartGate(self.start_process, self.fail, self.report,
                               lambda: self.ending.shutting_down, lambda: self._draining)
-        self.ending = Ending(self.loop, self.table, self.custody, self.log, self.emit,
-                             self._pending, self._queue.clear, self._cancel)
+        # (the ending tells the handlers its Shutdown itself: emit() would shut down again)
+        self.ending = Ending(self.loop, self.table, self.custody, self.log,
+                             lambda event: self.handlers.emit(event), self._pending,
+                             self._queue.clear, self._cancel)
 
     # --- entry point ------------------------------------------------------------------------
     def run(self, description: Any, *, signals: bool = True) -> int:
@@ -249,8 +251,30 @@ class LaunchService:
     def register_handler(self, handler: events.EventHandler) -> None:
         self.handlers.register(handler)
 
+    def unregister_handler(self, handler: events.EventHandler) -> None:
+        self.handlers.unregister(handler)
+
     def emit(self, event: events.Event) -> None:
+        """An event to the handlers; the ones the launch acts on itself (Shutdown, and
+        ShutdownProcess and SignalProcess for the processes they name) are acted on."""
+        if isinstance(event, events.Shutdown):
+            self.shutdown(event.reason)  # (which tells the OnShutdown handlers)
+            return
+        if isinstance(event, events.ProcessTargetedEvent):
+            self._target(event)
         self.handlers.emit(event)
+
+    def would_handle(self, event: events.Event) -> bool:
+        return self.handlers.would_handle(event)
+
+    def _target(self, event: events.ProcessTargetedEvent) -> None:
+        for process in self.table.processes:
+            if not process.alive or not event.process_matcher(process.spec.origin):
+                continue
+            if isinstance(event, events.SignalProcess):
+                process.signal(event.signal)
+            else:
+                process.stop()
 
     def add_timer(self, period: float, callback: Callable[[], None],
                   cancel_on_shutdown: bool = True) -> Timer:

@@ -90,9 +90,11 @@ def _uris(text: str, base: Path | None, environ: Mapping[str, str] | None) -> st
 
 
 def _gather_includes(source: Source, text: str, folder: Path, top: Path,
-                     environ: Mapping[str, str] | None) -> None:
-    """Every file `text` includes, and those they include, into `source.includes`."""
-    for written in _INCLUDE.findall(text):
+                     environ: Mapping[str, str] | None, label: str | None = None) -> None:
+    """Every file `text` (the file `label`) includes, and those they include, into
+    `source.includes`; a missing one is said at its tag's line and column."""
+    for match in _INCLUDE.finditer(text):
+        written = match.group(1)
         if written in source.includes:
             continue
         if len(source.includes) >= MAX_INCLUDES:
@@ -102,11 +104,13 @@ def _gather_includes(source: Source, text: str, folder: Path, top: Path,
         if found is None:
             looked = " and ".join(dict.fromkeys(str(p) for p in (folder / written,
                                                                  top / written)))
-            raise LaunchError(f"{source.label}: <include file=\"{written}\">: no such file "
-                              f"(looked for {looked})")
+            line = text.count("\n", 0, match.start()) + 1
+            column = match.start() - text.rfind("\n", 0, match.start())
+            raise LaunchError(f"{label or source.label}:{line}:{column}: <include "
+                              f"file=\"{written}\">: no such file (looked for {looked})")
         included = _uris(read_text(found), found.parent, environ)
         source.includes[written] = included.encode()
-        _gather_includes(source, included, found.parent, top, environ)
+        _gather_includes(source, included, found.parent, top, environ, str(found))
 
 
 LIDAR_PLUGIN = "mujoco.plugin.lidar"

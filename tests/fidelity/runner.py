@@ -121,12 +121,14 @@ def free_port() -> int:
         return sock.getsockname()[1]
 
 
-def launcher_tool(flavour: str, run_dir: Path) -> Tool:
-    """launcher as the user types it: `roslaunch` for ROS 1 files, `ros2 launch` for ROS 2's."""
+def launcher_tool(flavour: str, run_dir: Path, environ: dict[str, str] | None = None) -> Tool:
+    """launcher as the user types it: `roslaunch` for ROS 1 files, `ros2 launch` for ROS 2's
+    (`environ`: the environment to start from, taken in the main thread where pytest changes
+    os.environ as tests begin and end)."""
     exe = Path(sys.executable).with_name("launcher")
     base = [str(exe)] if exe.exists() else [sys.executable, "-m", "launcher"]
     command = (*base, "roslaunch") if flavour == "ros1" else (*base, "launch")
-    env = {key: value for key, value in os.environ.items()
+    env = {key: value for key, value in (environ or os.environ).items()
            if not key.startswith(("ROS_", "AMENT_", "LAUNCHER_", "COLCON_"))}
     env.update(LAUNCHER_RUN_DIR=str(run_dir), LAUNCHER_ROUTER_LINGER="0.2",
                LAUNCHER_LOG_DIR=str(run_dir / "log"))

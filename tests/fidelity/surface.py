@@ -97,19 +97,25 @@ def walk(interpreter: list[str], env: dict[str, str], roots: tuple[str, ...]) ->
 
 
 def write_layout() -> None:
-    """launcher/compat/layout.json: {module: [public names]} of every importable recorded
-    module of the packages that launcher shims."""
+    """launcher/compat/layout.json: {module: {public name: the module that defines it, or ""
+    for one defined there or a constant}} of every importable recorded module of the packages
+    that launcher shims."""
     from launcher.compat.finder import LAYOUT, LAYOUT_ROOTS
 
-    layout: dict[str, list[str]] = {}
+    def home(module: str, entry: dict) -> str:
+        defined = entry.get("module") or ""
+        return defined if defined != module and defined.split(".")[0] in LAYOUT_ROOTS else ""
+
+    layout: dict[str, dict[str, str]] = {}
+    newer = SURFACE / "newer.json"
+    extra = json.loads(newer.read_text()) if newer.exists() else {}
     for root in LAYOUT_ROOTS:
         for module, entry in json.loads((SURFACE / f"{root}.json").read_text()).items():
             if "error" not in entry:
-                layout[module] = sorted(entry["names"])
-    newer = SURFACE / "newer.json"
-    if newer.exists():
-        for module, names in json.loads(newer.read_text()).items():
-            layout[module] = sorted({*layout.get(module, ()), *names})
+                layout[module] = {name: home(module, e) for name, e in entry["names"].items()}
+    for module, names in extra.items():
+        layout.setdefault(module, {}).update(
+            {name: home(module, e) for name, e in names.items()})
     Path(LAYOUT).write_text(json.dumps(layout, indent=0, sort_keys=True) + "\n")
     say(f"wrote {LAYOUT}: {len(layout)} modules")
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import json
+import os
 import tempfile
 import time
 import uuid
@@ -44,6 +45,7 @@ class Runs:
         self.scratch = Path(tempfile.mkdtemp(prefix="fidelity-"))
         self.pool = ThreadPoolExecutor(JOBS)
         self.futures: dict[str, Future] = {}
+        self.environ = dict(os.environ)  # (read here: pytest changes it as tests run)
 
     def result(self, case: Case, timeout: float) -> dict:
         start = self.index[case.name]
@@ -54,7 +56,7 @@ class Runs:
 
     def _run(self, case: Case) -> dict:
         folder = self.scratch / case.name.replace("/", "__")
-        tool = launcher_tool(case.flavour, folder / "run")
+        tool = launcher_tool(case.flavour, folder / "run", self.environ)
         tool.env["LAUNCHER_TEST_TAG"] = self.tag
         return outcome(tool.run(case, folder), folder, case.flavour)
 

@@ -18,9 +18,10 @@ def generate_launch_description():
         RegisterEventHandler(OnProcessStart(target_action=talker, on_start=[
             LogInfo(msg="talker is up")])),
         RegisterEventHandler(OnProcessIO(target_action=talker,
-                                         on_stdout=lambda event, context: heard.append(event.text),
-                                         on_stderr=lambda event, context: [
-                                             LogInfo(msg="stderr said " + event.text)])),
+                                         on_stdout=lambda event: heard.append(
+                                             event.text.decode().strip()),
+                                         on_stderr=lambda event: [LogInfo(
+                                             msg="stderr said " + event.text.decode().strip())])),
         RegisterEventHandler(OnProcessExit(target_action=talker, on_exit=lambda event, context: [
             LogInfo(msg=f"talker exited with {event.returncode}; heard {heard}"),
             ExecuteProcess(cmd=["sleep", "30"], name="long"),

@@ -30,7 +30,11 @@ ALLOWED = {
     "sim": {"records", "user_files", "schema", "sim", "control", "bus", "errors", "packages"},
     "nodes": {"records", "user_files", "schema", "arguments", "nodes", "sim", "control", "bus",
               "errors", "packages"},
-    "compat": {"compat", "api", "packages", "runtime", "bus", "errors"},
+    "api": {"api", "records", "description", "runtime", "frontend", "packages", "errors"},
+    # the shims' entry points (launch.LaunchService, launch_testing's runner, roslaunch's
+    # ROSLaunchParent) build a launch as `launcher launch` does: through the cli's set-up
+    "compat": {"compat", "api", "records", "description", "frontend", "cli", "packages",
+               "runtime", "bus", "errors"},
 }
 
 

@@ -29,11 +29,11 @@ def test_on_state_transition_matches_its_node_and_states():
     node, other = object(), object()
     handler = OnStateTransition(target_lifecycle_node=node, goal_state="inactive",
                                 entities=[])
-    assert handler.matches(StateTransition(node, "/n", "configuring", "inactive"))
-    assert not handler.matches(StateTransition(node, "/n", "activating", "active"))
-    assert not handler.matches(StateTransition(other, "/o", "configuring", "inactive"))
+    assert handler.matches(StateTransition(action=node, node="/n", start_state="configuring", goal_state="inactive"))
+    assert not handler.matches(StateTransition(action=node, node="/n", start_state="activating", goal_state="active"))
+    assert not handler.matches(StateTransition(action=other, node="/o", start_state="configuring", goal_state="inactive"))
     every = OnStateTransition(start_state="activating", entities=[])
-    assert every.matches(StateTransition(other, "/o", "activating", "active"))
+    assert every.matches(StateTransition(action=other, node="/o", start_state="activating", goal_state="active"))
     change = ChangeState(lifecycle_node_matcher=matches_action(node), transition_id=3)
     assert change.matcher(node) and not change.matcher(other) and change.transition_id == 3
 

@@ -91,3 +91,17 @@ def test_a_missing_include_says_where_it_looked(tmp_path):
     scene.write_text('<mujoco><include file="nowhere.xml"/></mujoco>')
     with pytest.raises(LaunchError, match=r'<include file="nowhere.xml">: no such file'):
         load_world_file(scene)
+
+
+def test_a_missing_include_is_said_at_its_line_and_column_in_the_file_that_has_it(tmp_path):
+    from launcher.errors import LaunchError
+    from launcher.sim.loading import load_world_file
+
+    (tmp_path / "robot.xml").write_text('<mujoco>\n  <worldbody/>\n    <include file="gone.xml"/>'
+                                        '\n</mujoco>')
+    scene = tmp_path / "scene.xml"
+    scene.write_text('<mujoco><include file="robot.xml"/></mujoco>')
+    with pytest.raises(LaunchError) as raised:
+        load_world_file(scene)
+    assert str(raised.value).startswith(f"{tmp_path / 'robot.xml'}:3:5: <include "
+                                        'file="gone.xml">: no such file')

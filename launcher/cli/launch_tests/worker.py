@@ -113,22 +113,18 @@ class Worker:
         """Event handlers that record each process's start, output and exit for the tests."""
         from launch_testing.records import ProcessInfo, ProcessOutput
 
-        commands: dict[str, list[str]] = {}  # each process's, by its label
-
         def started(event: Any, _context: Any) -> None:
-            commands[event.label] = list(event.argv)
             self.proc_output.track(event.origin)
-            self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.argv),
+            self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.cmd),
                                               event.pid))
 
         def exited(event: Any, _context: Any) -> None:
-            self.proc_info.append(ProcessInfo(event.origin, event.label,
-                                              commands.get(event.label, []), event.pid,
-                                              event.returncode))
+            self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.cmd),
+                                              event.pid, event.returncode))
 
-        def printed(event: Any, _context: Any) -> None:
-            self.proc_output.append(ProcessOutput(event.origin, event.label,
-                                                  (event.text + "\n").encode(), event.stream))
+        def printed(event: Any) -> None:  # (launch gives an output handler the event alone)
+            self.proc_output.append(ProcessOutput(event.origin, event.label, event.text,
+                                                  event.stream))
 
         return [RegisterEventHandler(OnProcessStart(on_start=started)),
                 RegisterEventHandler(OnProcessExit(on_exit=exited)),

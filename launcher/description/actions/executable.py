@@ -13,7 +13,7 @@ from launcher.description.command_line import join_command, split_command
 from launcher.description.condition import entry_applies
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
-from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.description.substitution import Substitution, Text_, perform_text, to_text
 from launcher.errors import ExecutionError, did_you_mean
 from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext
@@ -71,6 +71,10 @@ class ExecuteProcess(Action):
     cached_output: bool = field(default=False, repr=False)
 
     def __post_init__(self) -> None:
+        if self.cmd is not None and not isinstance(self.cmd, str | list | tuple | Substitution):
+            raise TypeError(f"ExecuteProcess(cmd={self.cmd!r:.40}): expected the command as a "
+                            f"list of words (text or substitutions) or one text, got "
+                            f"{type(self.cmd).__name__}")
         super().__post_init__()
         if isinstance(self.on_exit, str):
             if self.on_exit.strip() != "shutdown":
@@ -95,8 +99,11 @@ class ExecuteProcess(Action):
         return split_command(context, to_text(value))
 
     def launch_prefix(self, context: LaunchContext) -> list[str]:
-        """`--launch-prefix` of the run, then this action's own `launch-prefix`."""
-        return self.run_prefix(context) + self._words(context, self.prefix)
+        """`--launch-prefix` of the run, then this action's own `launch-prefix` (without
+        one, the launch configuration `launch-prefix`, as launch has it)."""
+        own = self.prefix if self.prefix is not None else \
+            context.configurations.get("launch-prefix") or None
+        return self.run_prefix(context) + self._words(context, own)
 
     @staticmethod
     def run_prefix(context: LaunchContext) -> list[str]:
@@ -249,7 +256,7 @@ class _OutputCache:
         return getattr(event, "stream", None) in self.lines
 
     def handle(self, event: Any, context: LaunchContext) -> None:
-        self.lines[event.stream].append(event.text + "\n")
+        self.lines[event.stream].append(event.line + "\n")
 
 
 def _field_spec(obj: Any, name: str) -> Any:

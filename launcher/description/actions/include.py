@@ -48,6 +48,10 @@ class IncludeLaunchDescription(Action):
                  launch_arguments: Any = (), scoped: Any = False, pass_all_args: Any = None,
                  **kwargs: Any) -> None:
         source = file if file is not None else launch_description_source
+        given = getattr(source, "launch_description", None)  # a source holding one
+        if isinstance(given, LaunchDescription):
+            source = given
+        self.launch_description_source = launch_description_source
         self.file = source if isinstance(source, LaunchDescription) else \
             to_text(getattr(source, "location", source))
         pairs = launch_arguments.items() if isinstance(launch_arguments, dict) \

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from typing import Any
 
 from launcher.description.action import Action
-from launcher.description.actions.event_handlers import Handler, Reaction
+from launcher.description.actions.event_handlers import OnActionEventBase
 from launcher.description.actions.node import Node
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
@@ -21,6 +21,7 @@ from launcher.errors import ExecutionError
 from launcher.records import dataclass
 from launcher.runtime import lifecycle
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.events import Event
 
 
 @action("lifecycle_node")
@@ -45,9 +46,11 @@ class LifecycleNode(Node):
         return done
 
 
-class ChangeState:
+class ChangeState(Event):
     """launch_ros.events.lifecycle.ChangeState: ask the matching lifecycle nodes for a
     transition (lifecycle_msgs/msg/Transition's id)."""
+
+    name = "launch_ros.events.lifecycle.ChangeState"
 
     def __init__(self, *, lifecycle_node_matcher: Callable[[Any], bool] | None = None,
                  transition_id: int) -> None:
@@ -55,17 +58,18 @@ class ChangeState:
         self.transition_id = int(transition_id)
 
 
-def matches_action(target: Any) -> Callable[[Any], bool]:
+def matches_action(target_action: Any) -> Callable[[Any], bool]:
     """launch.events.matches_action: this action, and no other."""
-    return lambda candidate: candidate is target
+    return lambda candidate: candidate is target_action
 
 
 class EmitEvent(Action):
-    """launch.actions.EmitEvent, for the events launcher acts on: ChangeState (and Shutdown,
-    which the Shutdown action is)."""
+    """launch.actions.EmitEvent: hand an event to the launch (Shutdown ends it, ChangeState
+    drives lifecycle nodes, ShutdownProcess and SignalProcess reach their processes; every
+    event reaches the handlers registered for it)."""
 
-    def __init__(self, *, event: Any, condition: Any = None) -> None:
-        self.event, self.condition, self.where = event, condition, None
+    def __init__(self, *, event: Any, **kwargs: Any) -> None:
+        self.event, self.condition, self.where = event, kwargs.get("condition"), None
 
     def execute(self, context: LaunchContext) -> Any:
         if isinstance(self.event, ChangeState):
@@ -79,36 +83,32 @@ class EmitEvent(Action):
                 context.service.change_states(  # type: ignore[union-attr]
                     target.node_fqn, [self.event.transition_id], self.where)
             return None
-        name = type(self.event).__name__
-        if name == "Shutdown":
-            from launcher.description.actions.shutdown import Shutdown
-
-            return [Shutdown(reason=getattr(self.event, "reason", None))]
-        raise ExecutionError(f"EmitEvent: launcher acts on ChangeState and Shutdown events, "
-                             f"not {name}", self.where)
+        if not isinstance(self.event, Event):
+            raise ExecutionError(f"EmitEvent(event=...): expected an event (launch.events…), "
+                                 f"got {type(self.event).__name__}", self.where)
+        context.emit_event(self.event)
+        return None
 
 
-@dataclass
-class OnStateTransition(Handler):
+class OnStateTransition(OnActionEventBase):
     """launch_ros.event_handlers.OnStateTransition: `entities` when the node (all lifecycle
     nodes without `target_lifecycle_node`) goes from `start_state` to `goal_state` (either
-    may be left out)."""
+    may be left out), or makes the `transition` ('configure' …) named."""
 
-    target_lifecycle_node: Any = None
-    start_state: str | None = None
-    goal_state: str | None = None
-    entities: Reaction | None = None
-    transition: str | None = None
-
-    def __post_init__(self) -> None:
-        self.event_type = lifecycle.StateTransition
-        if self.target_action is None:
-            self.target_action = self.target_lifecycle_node
+    def __init__(self, *, target_lifecycle_node: Any = None, transition: str | None = None,
+                 start_state: str | None = None, goal_state: str | None = None,
+                 entities: Any = None, matcher: Callable[[Any], bool] | None = None,
+                 **kwargs: Any) -> None:
+        super().__init__(action_matcher=target_lifecycle_node, on_event=entities,
+                         target_event_cls=lifecycle.StateTransition,
+                         target_action_cls=LifecycleNode, **kwargs)
+        self.target_lifecycle_node = target_lifecycle_node
+        self.start_state, self.goal_state, self.transition = start_state, goal_state, transition
+        self.extra_matcher = matcher
 
     def matches(self, event: Any) -> bool:
         return super().matches(event) and \
             self.start_state in (None, event.start_state) and \
-            self.goal_state in (None, event.goal_state)
-
-    def reaction(self, event: Any) -> Reaction | None:
-        return self.entities
+            self.goal_state in (None, event.goal_state) and \
+            self.transition in (None, event.transition) and \
+            (self.extra_matcher is None or bool(self.extra_matcher(event)))

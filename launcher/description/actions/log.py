@@ -30,7 +30,7 @@ class Log(Action):
 
 
 @dataclass(kw_only=True, eq=False)
-class _FixedLevel(Log):
+class LevelFixed(Log):
     fixed: ClassVar[str] = "info"
     level: Any = None
 
@@ -41,23 +41,23 @@ class _FixedLevel(Log):
 
 @action("log_info")
 @dataclass(kw_only=True, eq=False)
-class LogInfo(_FixedLevel):
+class LogInfo(LevelFixed):
     fixed = "info"
 
 
 @action("log_warning")
 @dataclass(kw_only=True, eq=False)
-class LogWarning(_FixedLevel):
+class LogWarning(LevelFixed):
     fixed = "warning"
 
 
 @action("log_error")
 @dataclass(kw_only=True, eq=False)
-class LogError(_FixedLevel):
+class LogError(LevelFixed):
     fixed = "error"
 
 
 @action("log_debug")
 @dataclass(kw_only=True, eq=False)
-class LogDebug(_FixedLevel):
+class LogDebug(LevelFixed):
     fixed = "debug"

@@ -12,6 +12,7 @@ import rospy
 from actionlib_msgs.msg import GoalID, GoalStatusArray
 
 from actionlib import status as S
+from actionlib.action_client import CommState, get_name_of_constant  # noqa: F401
 
 
 class SimpleGoalState:

@@ -10,6 +10,7 @@ import rospy
 from actionlib_msgs.msg import GoalID, GoalStatus, GoalStatusArray
 
 from actionlib import status as S
+from actionlib.action_server import nop_cb  # noqa: F401 (simple_action_server has it)
 
 
 class SimpleActionServer:

@@ -18,65 +18,64 @@ and the loaned-message API.
 from __future__ import annotations
 
 import functools
-import signal
-import threading
+import importlib
 from typing import Any
 
 from rclpy.context import Context  # noqa: F401 - rclpy.Context, as rclpy offers it
-from rclpy.utilities import get_default_context, ok, shutdown, try_shutdown  # noqa: F401
+from rclpy.signals import (  # noqa: F401
+    SignalHandlerOptions,
+    install_signal_handlers,
+    uninstall_signal_handlers,
+    watch,
+)
+from rclpy.utilities import (  # noqa: F401
+    get_default_context,
+    get_rmw_implementation_identifier,
+    ok,
+    shutdown,
+    try_shutdown,
+)
 
-__all__ = ["Context", "create_node", "get_global_executor", "init", "ok", "shutdown", "spin",
-           "spin_once", "spin_until_future_complete", "try_shutdown"]
+__all__ = ["Context", "Future", "InitContextManager", "Parameter", "QoSProfile",
+           "SignalHandlerOptions", "create_node", "get_default_context", "get_global_executor",
+           "get_rmw_implementation_identifier", "init", "install_signal_handlers", "ok",
+           "shutdown", "spin", "spin_once", "spin_until_future_complete", "try_shutdown",
+           "uninstall_signal_handlers"]
 
 _global_executor: Any = None
-
-
-class SignalHandlerOptions:
-    NO = 0
-    SIGINT = 1
-    SIGTERM = 2
-    ALL = 3
+_ON_USE = {"Future": "rclpy.task", "Parameter": "rclpy.parameter", "QoSProfile": "rclpy.qos"}
 
 
 class InitContextManager:
-    """What `rclpy.init()` returns: `with rclpy.init(): …` shuts down at the end."""
+    """What `rclpy.init()` returns, having initialized the context: `with rclpy.init(): …`
+    shuts down at the end."""
 
-    def __init__(self, context: Any) -> None:
-        self.context = context
+    def __init__(self, args: list[str] | None, context: Context | None, domain_id: int | None,
+                 signal_handler_options: SignalHandlerOptions | None) -> None:
+        self.context = get_default_context() if context is None else context
+        if signal_handler_options is None:  # rclpy's: the default context handles signals
+            signal_handler_options = SignalHandlerOptions.ALL \
+                if self.context is get_default_context() else SignalHandlerOptions.NO
+        self.installed_signal_handlers = signal_handler_options != SignalHandlerOptions.NO
+        self.context.init(args, domain_id=domain_id)
+        watch(self.context)
+        install_signal_handlers(signal_handler_options)
 
     def __enter__(self) -> InitContextManager:
         return self
 
     def __exit__(self, *exc: Any) -> None:
-        self.context.try_shutdown()
+        try_shutdown(context=self.context,
+                     uninstall_handlers=self.installed_signal_handlers)
 
 
-def init(*, args: list[str] | None = None, context: Any = None, domain_id: int | None = None,
-         signal_handler_options: int | None = None) -> InitContextManager:
-    """Initialize the default (or the given) context with the command line `args`."""
-    context = context or get_default_context()
-    context.init(args, domain_id=domain_id)
-    options = SignalHandlerOptions.ALL if signal_handler_options is None else \
-        signal_handler_options
-    if options & SignalHandlerOptions.SIGTERM:
-        _on_sigterm(context)
-    return InitContextManager(context)
-
-
-def _on_sigterm(context: Any) -> None:
-    """SIGTERM ends spinning with ExternalShutdownException, as rclpy's handler does (a
-    handler the program installed itself stays)."""
-    if threading.current_thread() is not threading.main_thread():
-        return
-    if signal.getsignal(signal.SIGTERM) not in (signal.SIG_DFL, None):
-        return
-
-    def stop(number: int, frame: Any) -> None:
-        from rclpy.executors import ExternalShutdownException
-
-        context.interrupt()
-        raise ExternalShutdownException()
-    signal.signal(signal.SIGTERM, stop)
+def init(*, args: list[str] | None = None, context: Context | None = None,
+         domain_id: int | None = None,
+         signal_handler_options: SignalHandlerOptions | None = None) -> InitContextManager:
+    """Initialize the default (or the given) context with the command line `args`; SIGINT
+    and SIGTERM handlers when it is the default context (or as `signal_handler_options`
+    says)."""
+    return InitContextManager(args, context, domain_id, signal_handler_options)
 
 
 def get_global_executor() -> Any:
@@ -151,9 +150,10 @@ def spin_until_future_complete(node: Any, future: Any, executor: Any = None,
 
 
 def __getattr__(name: str) -> Any:
-    """`rclpy.executors`, `rclpy.qos`, … without importing them first."""
-    import importlib
-
+    """`rclpy.Future`, `rclpy.QoSProfile`, … and `rclpy.executors`, `rclpy.qos`, … without
+    importing them first."""
+    if name in _ON_USE:
+        return getattr(importlib.import_module(_ON_USE[name]), name)
     if name.startswith("_"):
         raise AttributeError(name)
     try:

@@ -10,16 +10,25 @@ from __future__ import annotations
 import threading
 from typing import Any
 
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
+from rclpy.clock import Clock  # noqa: F401
+from rclpy.context import Context
+from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service import ServiceNames
+from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.task import Future
+from rclpy.type_support import Srv  # noqa: F401
 
 CALL_TIMEOUT = 3600.0  # s, the longest a call waits for its answer unless told
 
 
 class Client(ServiceNames):
-    def __init__(self, node: Any, bus: Any, srv_type: Any, srv_name: str,
-                 callback_group: Any, qos_profile: Any) -> None:
-        self._node, self._bus, self.srv_type = node, bus, srv_type
+    def __init__(self, context: Context, client_impl: Any, srv_type: Any, srv_name: str,
+                 qos_profile: Any, callback_group: Any, *, node: Any = None) -> None:
+        """`client_impl`: launcher's bus client; `node`: the Node whose executor completes
+        its futures (Node.create_client gives both)."""
+        self.context, self._node, self._bus, self.srv_type = context, node, client_impl, \
+            srv_type
         self.callback_group, self.qos_profile = callback_group, qos_profile
         self._pending: set[Future] = set()
 
@@ -106,7 +115,7 @@ class Client(ServiceNames):
         """
         if timeout_sec is None:
             while not self._bus.wait_for_service(1.0):
-                if not self._node.context.ok():
+                if not self.context.ok():
                     return False
             return True
         return self._bus.wait_for_service(max(timeout_sec, 0.0))

@@ -1,13 +1,26 @@
-"""rclpy.clock: Clock, ROSClock (sim time when the node's use_sim_time is true)."""
+"""rclpy.clock: Clock, ROSClock (sim time when the node's use_sim_time is true), and the
+time jumps a clock reports to the callbacks made with `create_jump_callback` (jumps.py)."""
 
 from __future__ import annotations
 
 import time as _time
+from collections.abc import Callable
 from typing import Any
 
 from rclpy.clock_type import ClockType
+from rclpy.context import Context  # noqa: F401 - as rclpy's module offers it
 from rclpy.duration import Duration
+from rclpy.exceptions import NotInitializedException  # noqa: F401
+from rclpy.jumps import (  # noqa: F401 - as rclpy's module offers them
+    ClockChange,
+    JumpHandle,
+    JumpThreshold,
+    TimeJump,
+    TimeJumpDictionary,
+    jump,
+)
 from rclpy.time import Time
+from rclpy.utilities import get_default_context
 
 __all__ = ["Clock", "ClockType", "ROSClock"]
 
@@ -17,6 +30,7 @@ class Clock:
         if not isinstance(clock_type, ClockType):
             raise TypeError("Clock type must be a ClockType enum")
         self._clock_type = clock_type
+        self.jump_handles: list[JumpHandle] = []
 
     @property
     def clock_type(self) -> ClockType:
@@ -32,14 +46,25 @@ class Clock:
         """The clock's current Time."""
         return Time(nanoseconds=self._now_ns(), clock_type=self._clock_type)
 
+    def create_jump_callback(self, threshold: JumpThreshold, *,
+                             pre_callback: Callable[[], None] | None = None,
+                             post_callback: Callable[[TimeJump], None] | None = None
+                             ) -> JumpHandle:
+        """Call `pre_callback()` before and `post_callback(TimeJump)` after each jump of this
+        clock that crosses `threshold`, until the handle is unregistered."""
+        def post(jumped: TimeJumpDictionary) -> None:
+            assert post_callback is not None
+            post_callback(TimeJump(jumped["clock_change"],
+                                   Duration(nanoseconds=jumped["delta"])))
+        return JumpHandle(clock=self, threshold=threshold, pre_callback=pre_callback,
+                          post_callback=post if callable(post_callback) else None)
+
     def sleep_for(self, rel_time: Duration, context: Any = None) -> bool:
         """Sleep `rel_time` on this clock; False if the context shut down first."""
         return self.sleep_until(self.now() + rel_time, context)
 
     def sleep_until(self, until: Time, context: Any = None) -> bool:
         """Sleep until `until` on this clock; False if the context shut down first."""
-        from rclpy.utilities import get_default_context
-
         context = context or get_default_context()
         while context.ok():
             left = until.nanoseconds - self._now_ns()
@@ -53,18 +78,67 @@ class Clock:
 
 
 class ROSClock(Clock):
-    """ROS time: the node's `/clock` when use_sim_time is true, else the system time."""
+    """ROS time: the node's `/clock` when use_sim_time is true, else the system time. A clock
+    of no node follows the time a TimeSource sets while ROS time is active."""
 
-    def __init__(self, source: Any = None) -> None:
+    def __init__(self, source: Any = None, *, node: Any = None) -> None:
         super().__init__(clock_type=ClockType.ROS_TIME)
         self._source = source  # launcher's node clock
+        self._node = node  # whose /clock a TimeSource follows when jumps are asked for
+        self._active: bool | None = None  # None: as the source says
+        self._set_ns: int | None = None
+        self._time_source: Any = None
 
     @property
     def ros_time_is_active(self) -> bool:
         """Whether the time comes from /clock (use_sim_time)."""
+        if self._active is not None:
+            return self._active
         return bool(self._source is not None and self._source.use_sim_time)
 
     def _now_ns(self) -> int:
         if self._source is not None:
             return self._source.now().nanoseconds
+        if self.ros_time_is_active:
+            return self._set_ns or 0
         return _time.time_ns()
+
+    def set_ros_time_is_active(self, active: bool) -> None:
+        """Turn ROS time on or off (a TimeSource does, from use_sim_time): a clock change for
+        the jump callbacks."""
+        if active == self.ros_time_is_active:
+            return
+        before = self._now_ns()
+        change = ClockChange.ROS_TIME_ACTIVATED if active else ClockChange.ROS_TIME_DEACTIVATED
+
+        def switch() -> None:
+            self._active = active
+        after = (self._set_ns or 0) if active and self._source is None else \
+            _time.time_ns() if self._source is None else before
+        jump(self.jump_handles, change, after - before, switch)
+
+    def set_ros_time(self, nanoseconds: int) -> None:
+        """The ROS time is now `nanoseconds` (a TimeSource's /clock): a jump for the jump
+        callbacks when ROS time is active."""
+        before = self._set_ns if self._set_ns is not None else self._now_ns()
+
+        def move() -> None:
+            self._set_ns = nanoseconds
+        if self.ros_time_is_active:
+            jump(self.jump_handles, ClockChange.ROS_TIME_NO_CHANGE, nanoseconds - before, move)
+        else:
+            move()
+
+    def create_jump_callback(self, threshold: JumpThreshold, *,
+                             pre_callback: Callable[[], None] | None = None,
+                             post_callback: Callable[[TimeJump], None] | None = None
+                             ) -> JumpHandle:
+        """As Clock's; a node's clock starts following its /clock for them."""
+        handle = super().create_jump_callback(threshold, pre_callback=pre_callback,
+                                              post_callback=post_callback)
+        if self._node is not None and self._time_source is None:
+            from rclpy.time_source import TimeSource  # only when jumps are asked for
+
+            self._time_source = TimeSource(node=self._node)
+            self._time_source.attach_clock(self)
+        return handle

@@ -9,6 +9,8 @@ import weakref
 from collections.abc import Callable
 from typing import Any
 
+g_logging_ref_count = 0  # how many initialized contexts configured logging
+
 
 class Context:
     def __init__(self) -> None:
@@ -21,6 +23,7 @@ class Context:
         self.bell = threading.Lock()  # released when work comes; executors wait on it
         self.bell.acquire()
         self.domain_id = 0
+        self._logging = False  # counted in g_logging_ref_count
 
     def init(self, args: list[str] | None = None, *, initialize_logging: bool = True,
              domain_id: int | None = None) -> None:
@@ -29,6 +32,10 @@ class Context:
             if self._ok:
                 raise RuntimeError("Context.init() must only be called once")
             self._args, self._ok, self._cleaned = args, True, False
+            if initialize_logging:
+                global g_logging_ref_count
+                g_logging_ref_count += 1
+                self._logging = True
             if domain_id is not None:
                 self.domain_id = domain_id
 
@@ -52,6 +59,9 @@ class Context:
             if self._cleaned:
                 return
             self._cleaned = True
+        if self._logging:
+            self._logging = False
+            _logging_done()
         for callback in list(self._callbacks):
             callback()
         for node in list(self._nodes):
@@ -93,3 +103,8 @@ class Context:
 
     def __exit__(self, *exc: Any) -> None:
         self.try_shutdown()
+
+
+def _logging_done() -> None:
+    global g_logging_ref_count
+    g_logging_ref_count = max(g_logging_ref_count - 1, 0)

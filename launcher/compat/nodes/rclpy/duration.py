@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from rclpy.constants import S_TO_NS  # noqa: F401 - as rclpy's module offers it
+
 _S = 1_000_000_000
 
 

@@ -1,84 +1,139 @@
-"""rclpy.exceptions: what nodes catch."""
+"""rclpy.exceptions: what nodes catch, with rclpy's constructors and messages."""
+
+from __future__ import annotations
+
+from typing import Any
 
 
 class NotInitializedException(Exception):
-    def __init__(self, *args: object) -> None:
-        Exception.__init__(self, "rclpy.init() has not been called", *args)
+    """Raised when the rclpy implementation is accessed before rclpy.init()."""
+
+    def __init__(self, message: str | None = None) -> None:
+        Exception.__init__(self, f"rclpy.init() has not been called. msg:{message}" if message
+                           else "rclpy.init() has not been called.")
 
 
 class NoTypeSupportImportedException(Exception):
-    pass
+    """Raised when there is no type support imported."""
+
+    def __init__(self) -> None:
+        Exception.__init__(self, "no type_support imported")
 
 
 class InvalidHandle(Exception):
-    pass
+    """Raised when an entity is used after it was destroyed."""
+
+
+class TimerCancelledError(Exception):
+    """Raised when a canceled timer is called."""
 
 
 class NameValidationException(Exception):
-    pass
+    """Raised when a topic name, node name, or namespace are invalid."""
+
+    def __init__(self, name_type: str, name: str, error_msg: str, invalid_index: int) -> None:
+        Exception.__init__(self, f"Invalid {name_type}: {error_msg}:\n  '{name}'\n   "
+                                 f"{' ' * invalid_index}^")
 
 
 class InvalidNamespaceException(NameValidationException):
-    pass
+    """Raised when a namespace is invalid."""
+
+    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
+        NameValidationException.__init__(self, "namespace", name, error_msg, invalid_index)
 
 
 class InvalidNodeNameException(NameValidationException):
-    pass
+    """Raised when a node name is invalid."""
+
+    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
+        NameValidationException.__init__(self, "node name", name, error_msg, invalid_index)
 
 
 class InvalidTopicNameException(NameValidationException):
-    pass
+    """Raised when a topic name is invalid."""
+
+    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
+        NameValidationException.__init__(self, "topic name", name, error_msg, invalid_index)
 
 
 class InvalidServiceNameException(NameValidationException):
-    pass
+    """Raised when a service name is invalid."""
+
+    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
+        NameValidationException.__init__(self, "service name", name, error_msg, invalid_index)
 
 
 class ParameterException(Exception):
-    def __init__(self, error_msg: str, parameters: object = None, *args: object) -> None:
-        Exception.__init__(self, f"{error_msg}: {parameters}", *args)
+    """Base exception for parameter-related errors."""
+
+    def __init__(self, error_msg: str, parameters: Any) -> None:
+        Exception.__init__(self, f"{error_msg}: {parameters}")
 
 
 class ParameterNotDeclaredException(ParameterException):
-    def __init__(self, parameters: object, *args: object) -> None:
+    """Raised when handling an undeclared parameter when it is not allowed."""
+
+    def __init__(self, parameters: Any) -> None:
         ParameterException.__init__(self, "Invalid access to undeclared parameter(s)",
-                                    parameters, *args)
+                                    parameters)
 
 
 class ParameterAlreadyDeclaredException(ParameterException):
-    def __init__(self, parameters: object, *args: object) -> None:
-        ParameterException.__init__(self, "Parameter(s) already declared", parameters, *args)
+    """Raised when declaring a parameter that had been declared before."""
+
+    def __init__(self, parameters: Any) -> None:
+        ParameterException.__init__(self, "Parameter(s) already declared", parameters)
 
 
 class InvalidParameterException(ParameterException):
-    def __init__(self, parameter: object, *args: object) -> None:
-        ParameterException.__init__(self, "Invalid parameter name", parameter, *args)
+    """Raised when a parameter to be declared has an invalid name."""
+
+    def __init__(self, parameter_name: str) -> None:
+        ParameterException.__init__(self, "Invalid parameter name", parameter_name)
 
 
 class InvalidParameterTypeException(ParameterException):
-    def __init__(self, desired_parameter: object, expected_type: object, *args: object) -> None:
+    """Raised when a parameter is rejected for having an invalid type."""
+
+    def __init__(self, desired_parameter: Any, expected_type: str) -> None:
+        kind = getattr(desired_parameter, "type_", "?")
         ParameterException.__init__(
-            self, f"Trying to set parameter to '{getattr(desired_parameter, 'value', '?')}' "
-                  f"of type '{getattr(desired_parameter, 'type_', '?')}', expecting type "
-                  f"'{expected_type}'", getattr(desired_parameter, "name", "?"), *args)
+            self, f"Trying to set parameter '{desired_parameter.name}' to "
+                  f"'{desired_parameter.value}' of type '{getattr(kind, 'name', kind)}', "
+                  f"expecting type '{expected_type}'", desired_parameter.name)
 
 
 class InvalidParameterValueException(ParameterException):
-    def __init__(self, parameter: object, value: object, reason: str, *args: object) -> None:
+    """Raised when a parameter is rejected by a user callback or when applying a descriptor."""
+
+    def __init__(self, parameter: str, value: Any, reason: str) -> None:
         ParameterException.__init__(self, f"Invalid parameter value ({value}) for parameter. "
-                                          f"Reason: {reason}", parameter, *args)
+                                          f"Reason: {reason}", parameter)
 
 
 class ParameterImmutableException(ParameterException):
-    def __init__(self, parameter: object, *args: object) -> None:
+    """Raised when a read-only parameter is modified."""
+
+    def __init__(self, parameter_name: str) -> None:
         ParameterException.__init__(self, "Attempted to modify read-only parameter",
-                                    parameter, *args)
+                                    parameter_name)
 
 
 class ParameterUninitializedException(ParameterException):
-    def __init__(self, parameter: object, *args: object) -> None:
-        ParameterException.__init__(self, "The parameter was not initialized", parameter, *args)
+    """Raised when an uninitialized parameter is accessed."""
+
+    def __init__(self, parameter_name: str) -> None:
+        ParameterException.__init__(
+            self, f"The parameter '{parameter_name}' is not initialized", parameter_name)
 
 
 class ROSInterruptException(Exception):
-    pass
+    """Raised when an operation is canceled by rclpy shutting down."""
+
+    def __init__(self) -> None:
+        Exception.__init__(self, "rclpy.shutdown() has been called")
+
+
+class RCLError(RuntimeError):
+    """Raised when the middleware refuses an operation (rclpy's error from rcl)."""

@@ -8,17 +8,29 @@ MultiThreadedExecutor hands them to a pool, one at a time per mutually exclusive
 
 from __future__ import annotations
 
+import inspect
 import threading
 import time
 from collections import deque
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 import rclpy.node
 from rclpy.callback_groups import is_custom
+from rclpy.client import Client  # noqa: F401 - the names rclpy's module offers
+from rclpy.clock import Clock, ClockType  # noqa: F401
+from rclpy.context import Context  # noqa: F401
+from rclpy.exceptions import InvalidHandle, TimerCancelledError  # noqa: F401
+from rclpy.guard_condition import GuardCondition  # noqa: F401
+from rclpy.service import Service  # noqa: F401
+from rclpy.signals import SignalHandlerGuardCondition  # noqa: F401
+from rclpy.subscription import MessageInfo, Subscription  # noqa: F401
 from rclpy.task import Future, Task
-from rclpy.timer import due, take
-from rclpy.utilities import get_default_context
+from rclpy.timer import Timer, TimerInfo, due, take  # noqa: F401
+from rclpy.type_support import Msg  # noqa: F401
+from rclpy.utilities import get_default_context, timeout_sec_to_nsec  # noqa: F401
+from rclpy.waitable import NumberOfEntities, Waitable  # noqa: F401
 
 BELL_LOST = 0.1  # s: the longest an executor waits without looking (see _next_work)
 HELD_BACK = 0.01  # s: how soon a timer its group held back is offered again
@@ -35,12 +47,26 @@ class ShutdownException(Exception):
         Exception.__init__(self, "Executor is shutdown")
 
 
+async def await_or_execute(callback: Callable[..., Any], *args: Any) -> Any:
+    """Await `callback(*args)` if it is a coroutine function, else call it."""
+    if inspect.iscoroutinefunction(callback):
+        return await callback(*args)
+    return callback(*args)
+
+
 class TimeoutException(Exception):
-    pass
+    """Signal that a timeout occurred."""
+
+
+class TimeoutObject:
+    """A timeout (seconds) kept where the code that waits can change it."""
+
+    def __init__(self, timeout: float) -> None:
+        self.timeout = timeout
 
 
 class ConditionReachedException(Exception):
-    pass
+    """Signal that a condition was reached while spinning."""
 
 
 class Executor:
@@ -274,7 +300,3 @@ class MultiThreadedExecutor(Executor):
         super().shutdown(timeout_sec)
         self._pool.shutdown(wait=timeout_sec is None or timeout_sec > 0)
         return True
-
-
-class EventsExecutor(SingleThreadedExecutor):
-    """rclpy.experimental's EventsExecutor: the same as SingleThreadedExecutor here."""

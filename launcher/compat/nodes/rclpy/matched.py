@@ -7,12 +7,12 @@ changes since the last event)."""
 from __future__ import annotations
 
 import threading
-from dataclasses import dataclass
 from typing import Any
 
 import zenoh
 
 from launcher.bus import keys
+from launcher.records import dataclass
 
 
 @dataclass

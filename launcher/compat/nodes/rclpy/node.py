@@ -18,20 +18,35 @@ from launcher.bus import components, graph, keys
 from launcher.bus.node import Node as BusNode
 from launcher.compat import rosidl
 from launcher.errors import LaunchError
-from rclpy.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup, is_custom
+from rclpy import name_rules
+from rclpy.callback_groups import (  # noqa: F401 - the names rclpy's module offers
+    CallbackGroup,
+    MutuallyExclusiveCallbackGroup,
+    ReentrantCallbackGroup,
+    is_custom,
+)
 from rclpy.client import Client
-from rclpy.clock import ROSClock
-from rclpy.exceptions import (
+from rclpy.clock import Clock, ROSClock  # noqa: F401
+from rclpy.constants import S_TO_NS
+from rclpy.context import Context  # noqa: F401
+from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks  # noqa: F401
+from rclpy.exceptions import (  # noqa: F401
+    InvalidHandle,
     InvalidNamespaceException,
     InvalidNodeNameException,
     InvalidParameterTypeException,
+    InvalidParameterValueException,
+    InvalidTopicNameException,
     NotInitializedException,
     ParameterAlreadyDeclaredException,
+    ParameterImmutableException,
     ParameterNotDeclaredException,
+    ParameterUninitializedException,
 )
+from rclpy.expand_topic_name import expand_topic_name  # noqa: F401
 from rclpy.guard_condition import GuardCondition
-from rclpy.logging import RcutilsLogger
-from rclpy.parameter import Parameter
+from rclpy.logging import RcutilsLogger, get_logger  # noqa: F401
+from rclpy.parameter import PARAMETER_SEPARATOR_STRING, Parameter  # noqa: F401
 from rclpy.publisher import Publisher
 from rclpy.qos import QoSProfile, qos_profile_services_default, to_launcher
 from rclpy.service import Service
@@ -40,10 +55,34 @@ from rclpy.service_introspection import (
     RESPONSE_SENT,
     Introspection,
 )
-from rclpy.subscription import Subscription
-from rclpy.timer import Rate, Timer
+from rclpy.subscription import ContentFilterOptions, MessageInfo, Subscription  # noqa: F401
+from rclpy.timer import Rate, Timer, TimerInfo  # noqa: F401
 from rclpy.timer import bind as bind_timer
+from rclpy.topic_endpoint_info import TopicEndpointInfo  # noqa: F401
+from rclpy.type_support import (  # noqa: F401
+    Srv,
+    check_is_valid_msg_type,
+    check_is_valid_srv_type,
+)
 from rclpy.utilities import get_default_context
+from rclpy.validate_full_topic_name import validate_full_topic_name  # noqa: F401
+from rclpy.validate_namespace import validate_namespace  # noqa: F401
+from rclpy.validate_node_name import validate_node_name  # noqa: F401
+from rclpy.validate_parameter_name import validate_parameter_name  # noqa: F401
+from rclpy.validate_topic_name import validate_topic_name  # noqa: F401
+from rclpy.waitable import Waitable  # noqa: F401
+
+HIDDEN_NODE_PREFIX = "_"
+# What rclpy's module offers from modules that import this one, or that a node needs only
+# when asked: looked up at first use.
+_ON_USE = {"Executor": "rclpy.executors", "LoggingService": "rclpy.logging_service",
+           "ParameterService": "rclpy.parameter_service", "TimeSource": "rclpy.time_source",
+           "TypeDescriptionService": "rclpy.type_description_service",
+           "QoSOverridingOptions": "rclpy.qos_overriding_options"}
+
+
+class NodeNameNonExistentError(RuntimeError):
+    """Raised when a graph query names a node that is not on the graph."""
 
 EMPTY_AFTER_PRE_SET = ("parameter list cannot be empty, this might be due to "
                        "pre_set_parameters_callback modifying the original parameters list.")
@@ -75,10 +114,7 @@ class Node:
             self._bus = BusNode(node_name, namespace=namespace or "", argv=argv,
                                 parameter_services=start_parameter_services)
         except LaunchError as exc:
-            text = str(exc)
-            if "namespace" in text:
-                raise InvalidNamespaceException(text) from None
-            raise InvalidNodeNameException(text) from None
+            raise _invalid_name(node_name, namespace or "", str(exc)) from None
         self._bus.owner = self
         self._host = self._bus.host
         self._host.ring_with(self._context.bell)  # its work wakes whichever executor spins it
@@ -109,38 +145,14 @@ class Node:
                     self._declare_now(name, value)
         self._bus.add_on_set_parameters_callback(self._on_bus_set)
         self._bus.params.gate, self._bus.params.describer = self._gate, self._describe_for_bus
-        self._clock = ROSClock(self._bus.get_clock())
+        self._clock = ROSClock(self._bus.get_clock(), node=self)
         self._context.track_node(self)
+        self._events: Any = None  # ParameterEvents, made at the first change after start
+        self._started = True
         if enable_logger_service:
-            self._logger_services()
+            from rclpy.logging_service import LoggingService  # only when asked
 
-    def _logger_services(self) -> None:
-        """`~/get_logger_levels` and `~/set_logger_levels` (rcl_interfaces), as rclpy offers
-        them with enable_logger_service=True."""
-        from rcl_interfaces.msg import LoggerLevel, SetLoggerLevelsResult
-        from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
-
-        from rclpy.logging import LoggingSeverity, get_logger, get_logger_level
-
-        def get_levels(request: Any, response: Any) -> Any:  # (its own: 0 when unset)
-            response.levels = [LoggerLevel(name=name, level=int(get_logger_level(name)))
-                               for name in request.names]
-            return response
-
-        def set_levels(request: Any, response: Any) -> Any:
-            results = []
-            for wanted in request.levels:
-                try:
-                    get_logger(wanted.name).set_level(LoggingSeverity(wanted.level))
-                    results.append(SetLoggerLevelsResult(successful=True))
-                except ValueError:
-                    results.append(SetLoggerLevelsResult(
-                        successful=False, reason=f"{wanted.level} is not a logging severity "
-                                                 "(0, 10, 20, 30, 40, 50)"))
-            response.results = results
-            return response
-        self.create_service(GetLoggerLevels, "~/get_logger_levels", get_levels)
-        self.create_service(SetLoggerLevels, "~/set_logger_levels", set_levels)
+            LoggingService(self)
 
     # --- identity ---------------------------------------------------------------------------
     @property
@@ -250,6 +262,9 @@ class Node:
         :return: the Publisher.
         """
         self._check_alive()
+        if qos_overriding_options is not None:
+            qos_profile = self._overridden(qos_profile, "publisher", topic,
+                                           qos_overriding_options)
         qos = to_launcher(qos_profile)
         bus = self._bus.create_publisher(rosidl.type_name_of(msg_type), topic, qos)
         publisher = publisher_class(bus, msg_type, topic, qos_profile, event_callbacks)
@@ -257,6 +272,16 @@ class Node:
         self._watch_matches(event_callbacks, bus.topic, keys.SUBSCRIPTION, callback_group,
                             publisher)
         return publisher
+
+    def _overridden(self, qos_profile: QoSProfile | int, kind: str, topic: str,
+                    options: Any) -> QoSProfile:
+        """The QoS with the policies `options` names taken from their parameters."""
+        from rclpy.qos_overriding_options import declare_qos_parameters  # only when asked
+
+        if not isinstance(qos_profile, QoSProfile):
+            qos_profile = QoSProfile(depth=int(qos_profile))
+        return declare_qos_parameters(kind, self, self.resolve_topic_name(topic), qos_profile,
+                                      options)
 
     def _watch_matches(self, event_callbacks: Any, topic: str, kind: str, group: Any,
                        entity: Any) -> None:
@@ -297,6 +322,9 @@ class Node:
         :return: the Subscription.
         """
         self._check_alive()
+        if qos_overriding_options is not None:
+            qos_profile = self._overridden(qos_profile, "subscription", topic,
+                                           qos_overriding_options)
         type_name = rosidl.type_name_of(msg_type)
         made: list[Any] = []
         run = self._grouped(callback_group, callback, lambda: made[0] if made else None)
@@ -362,7 +390,8 @@ class Node:
         bus = self._bus.create_client(rosidl.type_name_of(srv_type), srv_name,
                                       make=rosidl.make)
         rosidl.service_class(rosidl.type_name_of(srv_type))
-        client = Client(self, bus, srv_type, srv_name, callback_group, qos_profile)
+        client = Client(self._context, bus, srv_type, srv_name, qos_profile, callback_group,
+                        node=self)
         self._entities.append(client)
         return client
 
@@ -398,7 +427,11 @@ class Node:
             use_sim_time is true).
         :return: the Rate.
         """
-        return Rate(frequency, clock=clock or self._clock, context=self._context)
+        if frequency <= 0:
+            raise ValueError("frequency must be > 0")
+        timer = Timer(None, None, int(S_TO_NS / frequency), clock or self._clock,
+                      context=self._context, autostart=False)
+        return Rate(timer, context=self._context)
 
     def create_guard_condition(self, callback: Callable[[], Any],
                                callback_group: Any = None) -> GuardCondition:
@@ -408,8 +441,8 @@ class Node:
         :param callback_group: the group it runs in.
         :return: the GuardCondition.
         """
-        guard = GuardCondition(callback, callback_group, self._host,
-                               self._grouped(callback_group, callback))
+        guard = GuardCondition(callback, callback_group, self._context, host=self._host,
+                               run=self._grouped(callback_group, callback))
         self._entities.append(guard)
         return guard
 
@@ -538,6 +571,41 @@ class Node:
         """Every service of the graph with its types: [(name, [type, …])]."""
         return self._names_and_types((keys.SERVICE,))
 
+    def _by_node(self, kinds: tuple[str, ...], node_name: str, node_namespace: str
+                 ) -> list[tuple[str, list[str]]]:
+        found = self._entities_on_graph()
+        fqn = f"{(node_namespace or '/').rstrip('/')}/{node_name}"
+        if not any(e.kind == keys.NODE and e.node_fqn == fqn for e in found):
+            raise NodeNameNonExistentError(f"cannot find node '{fqn}'")
+        table: dict[str, set[str]] = {}
+        for entity in found:
+            if entity.kind in kinds and entity.node_fqn == fqn:
+                table.setdefault(entity.topic, set()).add(entity.type_name)
+        return sorted((name, sorted(types)) for name, types in table.items())
+
+    def get_publisher_names_and_types_by_node(self, node_name: str, node_namespace: str,
+                                              no_demangle: bool = False
+                                              ) -> list[tuple[str, list[str]]]:
+        """The topics a node publishes, with their types (NodeNameNonExistentError if the
+        node is not on the graph)."""
+        return self._by_node((keys.PUBLISHER,), node_name, node_namespace)
+
+    def get_subscriber_names_and_types_by_node(self, node_name: str, node_namespace: str,
+                                               no_demangle: bool = False
+                                               ) -> list[tuple[str, list[str]]]:
+        """The topics a node subscribes to, with their types."""
+        return self._by_node((keys.SUBSCRIPTION,), node_name, node_namespace)
+
+    def get_service_names_and_types_by_node(self, node_name: str, node_namespace: str
+                                            ) -> list[tuple[str, list[str]]]:
+        """The services a node serves, with their types."""
+        return self._by_node((keys.SERVICE,), node_name, node_namespace)
+
+    def get_client_names_and_types_by_node(self, node_name: str, node_namespace: str
+                                           ) -> list[tuple[str, list[str]]]:
+        """The services a node is a client of, with their types."""
+        return self._by_node((keys.CLIENT,), node_name, node_namespace)
+
     def get_node_names(self) -> list[str]:
         """The names of the graph's nodes."""
         return [e.node for e in self._entities_on_graph() if e.kind == keys.NODE]
@@ -597,7 +665,9 @@ class Node:
                                                 Parameter(name, value=_plain(value)).type_.name)
         if descriptor is not None:
             self._descriptors[name] = descriptor
-        return self._declare_now(name, chosen)
+        declared = self._declare_now(name, chosen)
+        self._announce(new=[declared])
+        return declared
 
     def declare_parameters(self, namespace: str, parameters: Sequence[Any],
                            ignore_override: bool = False) -> list[Parameter]:
@@ -617,7 +687,7 @@ class Node:
         """Undeclare a parameter (ParameterNotDeclaredException if it was not declared)."""
         if name not in self._declared:
             raise ParameterNotDeclaredException(name)
-        del self._declared[name]
+        self._announce(deleted=[self._declared.pop(name)])
         self._bus.params.drop(name)
 
     def has_parameter(self, name: str) -> bool:
@@ -697,9 +767,12 @@ class Node:
             result = callback(list(parameter_list))
             if result is not None and not result.successful:
                 return result
+        known = set(self._declared)
         for parameter in parameter_list:
             self._declared[parameter.name] = parameter
             self._bus.params.keep(parameter.name, parameter.value)
+        self._announce(new=[p for p in parameter_list if p.name not in known],
+                       changed=[p for p in parameter_list if p.name in known])
         self._post_set(parameter_list)
         return SetParametersResult(successful=True)
 
@@ -752,7 +825,8 @@ class Node:
         if value is None:
             if name in self._declared and not dynamic and not self._allow_undeclared:
                 return "cannot undeclare a statically typed parameter"
-            self._declared.pop(name, None)
+            gone = self._declared.pop(name, None)
+            self._announce(deleted=[gone] if gone is not None else [])
             return None
         parameters = self._pre_set([Parameter(name, value=_plain(value))])
         if not parameters:
@@ -773,12 +847,24 @@ class Node:
             result = callback(list(parameters))
             if result is not None and not result.successful:
                 return result.reason or "refused by the node's parameter callback"
+        self._announce(new=[p for p in parameters if p.name not in self._declared],
+                       changed=[p for p in parameters if p.name in self._declared])
         for parameter in parameters:
             self._declared[parameter.name] = parameter
             if parameter.name != name:  # one a pre-set callback added: set here
                 self._bus.params.keep(parameter.name, parameter.value)
         self._pending_post = parameters
         return None
+
+    def _announce(self, **parameters: list[Parameter]) -> None:
+        """A change after start, on /parameter_events (parameter_events.py)."""
+        if not getattr(self, "_started", False) or not any(parameters.values()):
+            return
+        if self._events is None:
+            from rclpy.parameter_events import ParameterEvents  # at the first change
+
+            self._events = ParameterEvents(self)
+        self._events.announce(**parameters)
 
     def _describe_for_bus(self, name: str) -> dict[str, Any]:
         """The descriptor as plain fields, with its name and the declared type filled in
@@ -799,6 +885,8 @@ class Node:
             return
         if self._declared.get(name) == parameter:
             return
+        self._announce(new=[] if name in self._declared else [parameter],
+                       changed=[parameter] if name in self._declared else [])
         self._declared[name] = parameter
         for callback in self._set_callbacks:
             callback([parameter])
@@ -828,6 +916,15 @@ def _kind(value: Any) -> Any:
 
 # --- what the rest of this rclpy (its executors, clients, action servers and clients) asks
 # of a node, in one place: the Node class keeps rclpy's own surface ------------------------
+def _invalid_name(node_name: str, namespace: str, text: str) -> Exception:
+    """rclpy's exception for a node name or namespace the bus refused (`text` says why)."""
+    if "namespace" in text:
+        full = namespace if namespace.startswith("/") else "/" + namespace
+        fault = name_rules.full_topic_name(full, "namespace") or (text, 0)
+        return InvalidNamespaceException(namespace, *fault)
+    return InvalidNodeNameException(node_name, *(name_rules.node_name(node_name) or (text, 0)))
+
+
 def check_alive(node: Node) -> None:
     """rclpy's InvalidHandle once the node is destroyed."""
     node._check_alive()
@@ -860,3 +957,11 @@ def forget(node: Node, entity: Any) -> None:
     """The entity, destroyed by itself, is no longer the node's."""
     if entity in node._entities:
         node._entities.remove(entity)
+
+
+def __getattr__(name: str) -> Any:
+    if name in _ON_USE:
+        import importlib
+
+        return getattr(importlib.import_module(_ON_USE[name]), name)
+    raise AttributeError(f"module 'rclpy.node' has no attribute '{name}'")

@@ -6,7 +6,10 @@ import array
 from enum import Enum
 from typing import Any
 
-__all__ = ["Parameter", "parameter_value_to_python"]
+__all__ = ["PARAMETER_SEPARATOR_STRING", "Parameter", "get_parameter_value",
+           "parameter_dict_from_yaml_file", "parameter_value_to_python"]
+
+PARAMETER_SEPARATOR_STRING = "."
 
 
 class _Type(Enum):
@@ -123,8 +126,26 @@ class Parameter:
         return cls(message.name, value=parameter_value_to_python(message.value))
 
 
-def parameter_value_to_python(value: Any) -> Any:
+def get_parameter_value(string_value: str) -> Any:
+    """The rcl_interfaces/ParameterValue a string means, its type guessed as YAML reads it
+    (a string when it is no valid YAML, a mapping, null or a list of mixed types)."""
+    import yaml
+
+    try:
+        value = yaml.safe_load(string_value)
+    except yaml.YAMLError:
+        value = string_value
+    if value is None or isinstance(value, dict):
+        value = string_value
+    try:
+        return Parameter("value", value=value).get_parameter_value()
+    except (TypeError, ValueError):
+        return Parameter("value", value=string_value).get_parameter_value()
+
+
+def parameter_value_to_python(parameter_value: Any) -> Any:
     """The Python value of an rcl_interfaces/ParameterValue message."""
+    value = parameter_value
     kind = _Type(value.type)
     field = {_Type.BOOL: "bool_value", _Type.INTEGER: "integer_value",
              _Type.DOUBLE: "double_value", _Type.STRING: "string_value",

@@ -6,7 +6,14 @@ from __future__ import annotations
 
 from typing import Any
 
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
+from rclpy.client import Client  # noqa: F401
+from rclpy.event_handler import SubscriptionEventCallbacks  # noqa: F401
+from rclpy.node import Node  # noqa: F401
 from rclpy.parameter import Parameter, parameter_dict_from_yaml_file
+from rclpy.qos import QoSProfile  # noqa: F401
+from rclpy.subscription import MessageInfo, Subscription  # noqa: F401
+from rclpy.task import Future  # noqa: F401
 
 
 class AsyncParameterClient:
@@ -67,7 +74,6 @@ class AsyncParameterClient:
 
     def get_parameter_types(self, names: list[str], callback: Any = None) -> Any:
         """A Future of the types of `names`."""
-        from rclpy.task import Future
 
         described = self.describe_parameters(names)
         future = Future(executor=self._node.executor)
@@ -106,3 +112,8 @@ class AsyncParameterClient:
         if callback is not None:
             future.add_done_callback(callback)
         return future
+
+
+from launcher.compat.finder import rest_from_layout  # noqa: E402 - the rest of the real module's names
+
+__getattr__ = rest_from_layout(__name__)

@@ -4,13 +4,19 @@ from __future__ import annotations
 
 from typing import Any
 
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
+from rclpy.duration import Duration  # noqa: F401
+from rclpy.event_handler import EventHandler, PublisherEventCallbacks  # noqa: F401
+from rclpy.qos import QoSProfile  # noqa: F401
+
 
 class Publisher:
-    def __init__(self, bus: Any, msg_type: Any, topic: str, qos_profile: Any,
-                 event_callbacks: Any = None) -> None:
-        self._bus, self.msg_type, self._qos_profile = bus, msg_type, qos_profile
-        self.event_callbacks = event_callbacks
-        self._serialize = bus.publish
+    def __init__(self, publisher_impl: Any, msg_type: Any, topic: str, qos_profile: Any,
+                 event_callbacks: Any = None, callback_group: Any = None) -> None:
+        """`publisher_impl`: launcher's bus publisher (Node.create_publisher makes both)."""
+        self._bus, self.msg_type, self._qos_profile = publisher_impl, msg_type, qos_profile
+        self.event_callbacks, self.callback_group = event_callbacks, callback_group
+        self._serialize = publisher_impl.publish
 
     @property
     def topic_name(self) -> str:

@@ -4,6 +4,12 @@ from __future__ import annotations
 
 from typing import Any
 
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
+from rclpy.clock import Clock  # noqa: F401
+from rclpy.qos import QoSProfile  # noqa: F401
+from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
+from rclpy.type_support import Srv  # noqa: F401
+
 
 class ServiceNames:
     """The names a service and its clients answer to, as rclpy's."""
@@ -21,9 +27,10 @@ class ServiceNames:
 
 
 class Service(ServiceNames):
-    def __init__(self, bus: Any, srv_type: Any, srv_name: str, callback: Any,
+    def __init__(self, service_impl: Any, srv_type: Any, srv_name: str, callback: Any,
                  callback_group: Any, qos_profile: Any) -> None:
-        self._bus, self.srv_type, self.callback = bus, srv_type, callback
+        """`service_impl`: launcher's bus service (Node.create_service makes both)."""
+        self._bus, self.srv_type, self.callback = service_impl, srv_type, callback
         self.callback_group, self.qos_profile = callback_group, qos_profile
 
     _introspection: Any = None

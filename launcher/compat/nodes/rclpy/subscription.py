@@ -2,14 +2,31 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, TypedDict
+
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
+from rclpy.event_handler import SubscriptionEventCallbacks  # noqa: F401
+from rclpy.exceptions import RCLError  # noqa: F401
+from rclpy.qos import QoSProfile  # noqa: F401
+from rclpy.subscription_content_filter_options import ContentFilterOptions  # noqa: F401
+
+
+class MessageInfo(TypedDict):
+    """What a callback taking two arguments gets with each message."""
+
+    source_timestamp: int
+    received_timestamp: int
+    publication_sequence_number: int | None
+    reception_sequence_number: int | None
 
 
 class Subscription:
-    def __init__(self, bus: Any, msg_type: Any, topic: str, callback: Any,
+    def __init__(self, subscription_impl: Any, msg_type: Any, topic: str, callback: Any,
                  callback_group: Any, qos_profile: Any, raw: bool,
                  event_callbacks: Any = None) -> None:
-        self._bus, self.msg_type, self.callback = bus, msg_type, callback
+        """`subscription_impl`: launcher's bus subscription (Node.create_subscription makes
+        both)."""
+        self._bus, self.msg_type, self.callback = subscription_impl, msg_type, callback
         self.callback_group, self._qos_profile, self.raw = callback_group, qos_profile, raw
         self.event_callbacks = event_callbacks
 

@@ -5,14 +5,24 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable
+from enum import Enum
 from typing import Any
+
+
+class FutureState(Enum):
+    """Where a Future stands."""
+
+    PENDING = "PENDING"
+    CANCELLED = "CANCELLED"
+    FINISHED = "FINISHED"
+
 
 _driving = threading.local()  # .task: an executor's Task is stepping a coroutine here
 
 
 class Future:
     def __init__(self, *, executor: Any = None) -> None:
-        self._state = "pending"  # pending, finished, cancelled
+        self._state = FutureState.PENDING
         self._result: Any = None
         self._exception: BaseException | None = None
         self._callbacks: list[Callable[[Future], None]] = []
@@ -21,7 +31,7 @@ class Future:
         self._waiting: list[threading.Event] = []
 
     def __await__(self) -> Any:
-        while self._state == "pending":
+        while self._state == FutureState.PENDING:
             # To an executor's Task, the future itself (it resumes the task when this is
             # done); to anything else (asyncio), a bare yield, as rclpy's Future gives
             yield self if getattr(_driving, "task", False) else None
@@ -29,15 +39,15 @@ class Future:
 
     def cancel(self) -> None:
         """Cancel the future: it is done, and has no result."""
-        self._finish("cancelled")
+        self._finish(FutureState.CANCELLED)
 
     def cancelled(self) -> bool:
         """Whether the future was canceled."""
-        return self._state == "cancelled"
+        return self._state == FutureState.CANCELLED
 
     def done(self) -> bool:
         """Whether the future has a result, an exception, or was canceled."""
-        return self._state != "pending"
+        return self._state != FutureState.PENDING
 
     def result(self) -> Any:
         """The result (None until done); the exception, raised, if it failed."""
@@ -52,16 +62,16 @@ class Future:
     def set_result(self, result: Any) -> None:
         """Complete the future with `result`; its done callbacks run."""
         self._result = result
-        self._finish("finished")
+        self._finish(FutureState.FINISHED)
 
     def set_exception(self, exception: BaseException) -> None:
         """Complete the future with an exception; its done callbacks run."""
         self._exception = exception
-        self._finish("finished")
+        self._finish(FutureState.FINISHED)
 
-    def _finish(self, state: str) -> None:
+    def _finish(self, state: FutureState) -> None:
         with self._lock:
-            if self._state != "pending":
+            if self._state != FutureState.PENDING:
                 return
             self._state = state
             callbacks, self._callbacks = self._callbacks, []
@@ -81,7 +91,7 @@ class Future:
     def _wake_on_done(self, event: threading.Event) -> None:
         """Set `event` the moment this is done (for a thread that blocks on it)."""
         with self._lock:
-            if self._state == "pending":
+            if self._state == FutureState.PENDING:
                 self._waiting.append(event)
                 return
         event.set()
@@ -91,7 +101,7 @@ class Future:
         has one; at once if it is done already).
         """
         with self._lock:
-            if self._state == "pending":
+            if self._state == FutureState.PENDING:
                 self._callbacks.append(callback)
                 return
         self._schedule(callback)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from rclpy.clock_type import ClockType
+from rclpy.constants import S_TO_NS  # noqa: F401 - as rclpy's module offers it
 from rclpy.duration import Duration
 
 _S = 1_000_000_000

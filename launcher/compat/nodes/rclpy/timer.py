@@ -11,8 +11,38 @@ import time
 from typing import Any
 
 from launcher.bus.timer import Grid
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
+from rclpy.clock import Clock, ClockType  # noqa: F401
+from rclpy.context import Context  # noqa: F401
+from rclpy.exceptions import InvalidHandle, ROSInterruptException  # noqa: F401
+from rclpy.time import Time
+from rclpy.utilities import get_default_context  # noqa: F401
 
 SIM_LOOK = 0.001  # s between looks at sim time while a Rate on it sleeps
+
+
+class TimerInfo:
+    """When a timer's call was due and when it came (a callback taking one argument gets
+    it)."""
+
+    def __init__(self, *, expected_call_time: int = 0, actual_call_time: int = 0,
+                 clock_type: ClockType = ClockType.SYSTEM_TIME) -> None:
+        if not isinstance(clock_type, ClockType):
+            raise TypeError("Clock type must be a ClockType enum")
+        if expected_call_time < 0 or actual_call_time < 0:
+            raise ValueError("call time values must not be negative")
+        self._expected = Time(nanoseconds=expected_call_time, clock_type=clock_type)
+        self._actual = Time(nanoseconds=actual_call_time, clock_type=clock_type)
+
+    @property
+    def expected_call_time(self) -> Time:
+        """When the call was due."""
+        return self._expected
+
+    @property
+    def actual_call_time(self) -> Time:
+        """When the call came."""
+        return self._actual
 
 
 class Timer:
@@ -118,11 +148,10 @@ class Rate:
     use_sim_time is true: then the node must be spinning elsewhere for /clock to come, as in
     rclpy); on the monotonic clock it needs nothing else."""
 
-    def __init__(self, frequency: float, *, clock: Any = None, context: Any = None) -> None:
-        if frequency <= 0:
-            raise ValueError("frequency must be > 0")
-        self._clock = clock
-        self._grid = Grid(1.0 / frequency, _seconds(clock))
+    def __init__(self, timer: Timer, *, context: Any) -> None:
+        """Sleeps on `timer`'s period and clock (Node.create_rate makes the timer)."""
+        self._clock = timer.clock
+        self._grid = Grid(timer.timer_period_ns / 1e9, _seconds(self._clock))
         self._context = context
 
     def sleep(self) -> None:

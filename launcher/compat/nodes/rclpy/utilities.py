@@ -5,30 +5,43 @@ from __future__ import annotations
 import sys
 from typing import Any
 
+from rclpy.constants import S_TO_NS  # noqa: F401 - as rclpy's module offers it
 from rclpy.context import Context
 
-_default_context = Context()
+g_default_context = Context()  # the process' context (rclpy's module global)
 
 
 def get_default_context(*, shutting_down: bool = False) -> Context:
     """The process' context, made at first use."""
-    return _default_context
+    return g_default_context
 
 
 def ok(*, context: Context | None = None) -> bool:
     """Whether the default (or the given) context is initialized and not shut down."""
-    return (context or _default_context).ok()
+    return (context or g_default_context).ok()
 
 
 def shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
-    """Shut the default (or the given) context down."""
-    (context or _default_context).shutdown()
+    """Shut the default (or the given) context down; the signal handlers are uninstalled
+    when `uninstall_handlers`, or when it is None and the context is the default one."""
+    (context or g_default_context).shutdown()
+    _uninstall(context, uninstall_handlers)
 
 
 def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None
                  ) -> None:
-    """Shut the default (or the given) context down if it is not already."""
-    (context or _default_context).try_shutdown()
+    """Shut the default (or the given) context down if it is not already (signal handlers
+    as shutdown() says)."""
+    (context or g_default_context).try_shutdown()
+    _uninstall(context, uninstall_handlers)
+
+
+def _uninstall(context: Context | None, uninstall_handlers: bool | None) -> None:
+    if uninstall_handlers or uninstall_handlers is None and \
+            context in (None, g_default_context):
+        from rclpy.signals import uninstall_signal_handlers
+
+        uninstall_signal_handlers()
 
 
 def remove_ros_args(args: list[str] | None = None) -> list[str]:

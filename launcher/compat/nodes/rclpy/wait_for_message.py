@@ -6,6 +6,10 @@ from __future__ import annotations
 from typing import Any
 
 from launcher.bus.subscription import FirstMessage
+from rclpy.node import Node  # noqa: F401 - as rclpy's module offers it
+from rclpy.qos import QoSProfile  # noqa: F401
+from rclpy.signals import SignalHandlerGuardCondition  # noqa: F401
+from rclpy.utilities import timeout_sec_to_nsec  # noqa: F401
 
 
 def wait_for_message(msg_type: Any, node: Any, topic: str, *, qos_profile: Any = 1,

@@ -19,9 +19,6 @@ from __future__ import annotations
 from launcher.compat import rosidl
 from rospy.client import (  # noqa: F401
     delete_param,
-    get_caller_id,
-    get_name,
-    get_namespace,
     get_param,
     get_param_cached,
     get_param_names,
@@ -29,6 +26,7 @@ from rospy.client import (  # noqa: F401
     has_param,
     init_node,
     myargv,
+    on_shutdown,
     search_param,
     set_param,
     spin,
@@ -42,27 +40,32 @@ from rospy.core import (  # noqa: F401
     WARN,
     core_is_shutdown,
     get_node_uri,
+    get_ros_root,
     is_shutdown,
     logdebug,
     logdebug_once,
     logdebug_throttle,
+    logdebug_throttle_identical,
     logerr,
     logerr_once,
     logerr_throttle,
+    logerr_throttle_identical,
     logerror,
     logfatal,
     logfatal_once,
     logfatal_throttle,
+    logfatal_throttle_identical,
     loginfo,
     loginfo_once,
     loginfo_throttle,
+    loginfo_throttle_identical,
     logout,
     logwarn,
     logwarn_once,
     logwarn_throttle,
+    logwarn_throttle_identical,
     logwarning,
-    on_shutdown,
-    resolve_name,
+    parse_rosrpc_uri,
     signal_shutdown,
 )
 from rospy.exceptions import (  # noqa: F401
@@ -74,7 +77,10 @@ from rospy.exceptions import (  # noqa: F401
     ROSTimeMovedBackwardsException,
     ServiceException,
     TransportException,
+    TransportInitError,
+    TransportTerminated,
 )
+from rospy.names import get_caller_id, get_name, get_namespace, remap_name, resolve_name  # noqa: F401
 from rospy.rostime import Duration, Time, get_rostime, get_time  # noqa: F401
 from rospy.service import (  # noqa: F401
     Service,
@@ -82,7 +88,17 @@ from rospy.service import (  # noqa: F401
     ServiceProxyError,
     wait_for_service,
 )
-from rospy.timer import Rate, sleep  # noqa: F401
-from rospy.topics import Publisher, Subscriber  # noqa: F401
+from rospy.timer import Rate, Timer, sleep  # noqa: F401
+from rospy.topics import Message, Publisher, SubscribeListener, Subscriber  # noqa: F401
 
 rosidl.lenient()
+
+
+def __getattr__(name: str) -> object:
+    """std_msgs' Header, made when first asked for (rospy re-exports it)."""
+    if name == "Header":
+        from std_msgs.msg import Header
+
+        globals()["Header"] = Header
+        return Header
+    raise AttributeError(f"module 'rospy' has no attribute '{name}'")

@@ -12,14 +12,60 @@ from collections.abc import Callable
 from typing import Any
 
 from launcher.bus.subscription import FirstMessage
-from rospy.core import logerr, need_node, shut_down, signal_shutdown, state
+from rospy import names
+from rospy.core import (  # noqa: F401 (rospy.client has them)
+    DEBUG,
+    ERROR,
+    FATAL,
+    INFO,
+    WARN,
+    add_client_shutdown_hook,
+    logdebug,
+    logerr,
+    loginfo,
+    logwarn,
+    need_node,
+    set_initialized,
+    shut_down,
+    signal_shutdown,
+    state,
+)
 from rospy.exceptions import ROSException, ROSInitException, ROSInterruptException
+from rospy.impl import log as _log
+from rospy.names import get_namespace
+from rospy.rostime import get_time, set_rostime_initialized
+from rospy.service import Service  # noqa: F401 (rospy.client has it)
 from rospy.topics import Subscriber, attach_pending
+
+TIMEOUT_READY = 15.0  # seconds rospy waits for its node's servers to start
 
 
 def myargv(argv: list[str] | None = None) -> list[str]:
     """argv without ROS remapping arguments (`name:=value`)."""
     return [a for a in (sys.argv if argv is None else argv) if ":=" not in a]
+
+
+def load_command_line_node_params(argv: list[str]) -> dict[str, Any]:
+    """{name: value} of the `_name:=value` private parameters in `argv` (values read as
+    YAML); ROSInitException when one does not read."""
+    import yaml
+
+    params = {}
+    try:
+        for arg in argv:
+            source, found, value = arg.partition(names.REMAP)
+            source = source.strip()
+            if found and len(source) > 1 and source[0] == "_" and source[1] != "_" and \
+                    value.strip():
+                params[source[1:]] = yaml.safe_load(value.strip())
+    except yaml.YAMLError as exc:
+        raise ROSInitException(f"invalid command-line parameters: {exc}") from None
+    return params
+
+
+def on_shutdown(h: Callable[[], Any]) -> None:
+    """Call `h()` when the node shuts down, before it is taken down."""
+    add_client_shutdown_hook(h)
 
 
 def init_node(name: str, argv: list[str] | None = None, anonymous: bool = False,
@@ -55,9 +101,16 @@ def init_node(name: str, argv: list[str] | None = None, anonymous: bool = False,
         except LaunchError as exc:
             raise ROSInitException(str(exc)) from None
         if log_level is not None:
-            state.level = log_level
+            _log.threshold[0] = log_level
+        _log.clock[0] = get_time
         state.node = node
         state.name = node.fully_qualified_name
+        if argv is not None:
+            names.reload_mappings(argv)
+        names.initialize_mappings(state.name)
+        names.set_caller_id(state.name, node.resolve)
+        set_initialized(True)
+        set_rostime_initialized(True)
         attach_pending(node)
         state.spinner = threading.Thread(target=_spin_callbacks, name="rospy-callbacks",
                                          daemon=True)
@@ -80,20 +133,6 @@ def _spin_callbacks() -> None:
 
 def _on_signal(number: int, frame: Any) -> None:
     shut_down("signal-" + signal.Signals(number).name, destroy=False)
-
-
-def get_name() -> str:
-    """The node's fully qualified name (`/unnamed` before init_node)."""
-    return state.name
-
-
-get_caller_id = get_name
-
-
-def get_namespace() -> str:
-    """The node's namespace, ending in `/`."""
-    node = state.node
-    return (node.namespace.rstrip("/") + "/") if node is not None else "/"
 
 
 def spin() -> None:
@@ -246,9 +285,9 @@ def delete_param(param_name: str) -> None:
 def get_param_names() -> list[str]:
     """Every parameter name the node can read: its own and the server's."""
     node = need_node("get_param_names")
-    names = {k if k.startswith("/") else f"{state.name}/{k}" for k in node.parameters}
+    found_names = {k if k.startswith("/") else f"{state.name}/{k}" for k in node.parameters}
     found = _on_server(lambda server: server.names())
-    return sorted(names | set(found if found is not _unspecified else ()))
+    return sorted(found_names | set(found if found is not _unspecified else ()))
 
 
 def search_param(param_name: str) -> str | None:

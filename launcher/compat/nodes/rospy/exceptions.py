@@ -31,5 +31,13 @@ class ServiceException(ROSException):
     pass
 
 
-class TransportException(ROSException):
-    pass
+class TransportException(ROSInternalException):
+    """A transport (a topic's or service's connection) failed."""
+
+
+class TransportTerminated(TransportException):
+    """The transport was closed."""
+
+
+class TransportInitError(TransportException):
+    """The transport could not be made."""

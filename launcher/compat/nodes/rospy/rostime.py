@@ -4,6 +4,8 @@
 
 from __future__ import annotations
 
+import threading
+import time as _time
 from typing import Any
 
 from launcher.compat import rosidl
@@ -118,6 +120,8 @@ class Time(_Arithmetic, _TimeMessage):
         """A Time of `float_secs` seconds."""
         return cls(float(seconds))
 
+    from_seconds = from_sec
+
     @classmethod
     def now(cls) -> Time:
         """The node's current time (sim time when use_sim_time is set)."""
@@ -143,14 +147,58 @@ class Time(_Arithmetic, _TimeMessage):
         return f"rospy.Time[{self.to_nsec()}]"
 
 
+_initialized = [False]
+_wallclock = [False]  # switch_to_wallclock: sim time no longer followed
+_cond = threading.Condition()
+
+
 def get_rostime() -> Time:
-    """The node's current time as a Time."""
+    """The node's current time as a Time (sim time when use_sim_time is set)."""
     from rospy.core import need_node
 
     node = need_node("time is not initialized")
+    if _wallclock[0]:
+        return Time(0, _time.time_ns())
     return Time(0, node.get_clock().now().nanoseconds)
 
 
 def get_time() -> float:
     """The node's current time in seconds."""
     return get_rostime().to_sec()
+
+
+def set_rostime_initialized(val: bool) -> None:
+    """Mark the node's time as ready (init_node does) and wake those waiting on it."""
+    with _cond:
+        _initialized[0] = val
+        _cond.notify_all()
+
+
+def is_rostime_initialized() -> bool:
+    """Whether the node's time is ready."""
+    return _initialized[0]
+
+
+def get_rostime_cond() -> threading.Condition:
+    """The condition notified when the node's time becomes ready."""
+    return _cond
+
+
+def is_wallclock() -> bool:
+    """Whether the node's time is the wall clock (not sim time)."""
+    from rospy.core import state
+
+    clock = state.node.get_clock() if state.node is not None else None
+    return _wallclock[0] or not getattr(clock, "use_sim_time", False)
+
+
+def switch_to_wallclock() -> None:
+    """Use the wall clock from now on, even where use_sim_time is set."""
+    _wallclock[0] = True
+
+
+def wallsleep(duration: Any) -> None:
+    """Sleep `duration` (seconds or a Duration) of wall time, whatever the node's clock."""
+    seconds = duration.to_sec() if hasattr(duration, "to_sec") else float(duration)
+    if seconds > 0:
+        _time.sleep(seconds)

@@ -1,16 +1,69 @@
-"""rospy.service: Service, ServiceProxy and wait_for_service."""
+"""rospy.service: Service, ServiceProxy and wait_for_service (rospy.impl.tcpros_service's in
+rospy), the node's ServiceManager, and what rospy.service re-exports (rospy.core's names)."""
 
 from __future__ import annotations
 
+import threading
 import time as _time
 from collections.abc import Callable
 from typing import Any
 
 from launcher.compat import rosidl
-from rospy.client import spin
-from rospy.core import need_node, state
+from rospy.core import *  # noqa: F403 (rospy.service re-exports rospy.core)
+from rospy.core import __getattr__, need_node, state  # noqa: F401 (NullHandler, when asked)
 from rospy.exceptions import ROSException, ROSInterruptException, ServiceException
-from rospy.topics import build_message
+from rospy.impl.registration import (  # noqa: F401 (rospy.service has them)
+    Registration,
+    get_registration_listeners,
+    get_service_manager,
+    set_service_manager,
+)
+from rospy.impl.transport import *  # noqa: F403 (rospy.service re-exports it)
+from rospy.topics import args_kwds_to_message
+
+
+class ServiceManager:
+    """The node's services by resolved name; registration listeners hear of each."""
+
+    def __init__(self, registration_listeners: Any = None) -> None:
+        self.map: dict[str, Any] = {}
+        self.lock = threading.RLock()
+        self.registration_listeners = registration_listeners or get_registration_listeners()
+
+    def get_services(self) -> list[tuple[str, Any]]:
+        """[(name, uri), …] of the services."""
+        with self.lock:
+            return [(name, service.uri) for name, service in self.map.items()]
+
+    def unregister_all(self) -> None:
+        """Forget every service."""
+        self.map.clear()
+
+    def register(self, resolved_service_name: str, service: Any) -> None:
+        """Add a service; ServiceException when the name has one already."""
+        with self.lock:
+            taken = resolved_service_name in self.map
+            if not taken:
+                self.map[resolved_service_name] = service
+            self.registration_listeners.notify_added(resolved_service_name, service.uri,
+                                                     Registration.SRV)
+        if taken:
+            raise ServiceException(f"service [{resolved_service_name}] already registered")
+
+    def unregister(self, resolved_service_name: str, service: Any) -> None:
+        """Forget a service (if it is the one registered under the name)."""
+        with self.lock:
+            if self.map.get(resolved_service_name) is service:
+                del self.map[resolved_service_name]
+            self.registration_listeners.notify_removed(resolved_service_name, service.uri,
+                                                       Registration.SRV)
+
+    def get_service(self, resolved_service_name: str) -> Any:
+        """The service registered under the name, or None."""
+        return self.map.get(resolved_service_name)
+
+
+set_service_manager(ServiceManager())
 
 
 def _response(service_class: Any, result: Any) -> Any:
@@ -37,15 +90,20 @@ class Service:
             return _response(service_class, handler(request))
         self._bus = node.create_service(self.type, name, answer, make=rosidl.make,
                                         new_response=service_class.Response)
-        self.resolved_name = self._bus.name
+        self.resolved_name, self.uri = self._bus.name, None  # (no ROSRPC URI: the bus's)
+        get_service_manager().register(self.resolved_name, self)
 
     def shutdown(self, reason: str = "") -> None:
         """Stop serving."""
-        self._bus.destroy()
+        if self._bus is not None:
+            self._bus.destroy()
+            self._bus = None
+            get_service_manager().unregister(self.resolved_name, self)
 
     def spin(self) -> None:
         """Block until the node shuts down."""
-        spin()
+        while not state.shutdown.wait(0.2):
+            pass
 
 
 ServiceProxyError = ServiceException
@@ -78,7 +136,7 @@ class ServiceProxy:
         """
         from launcher.errors import LaunchError
 
-        request = build_message(self.request_class, args, kwargs)
+        request = args_kwds_to_message(self.request_class, args, kwargs)
         client = self._client()
         try:
             return client.call(request, 30.0)

@@ -9,7 +9,11 @@ from ament_index_python.packages import (  # noqa: F401
     get_packages_with_prefixes,
 )
 from ament_index_python.resources import (  # noqa: F401
+    RESOURCE_INDEX_SUBFOLDER,
+    InvalidResourceNameError,
+    InvalidResourceTypeNameError,
     get_resource,
+    get_resource_types,
     get_resources,
     get_search_paths,
     has_resource,

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from ament_index_python.resources import get_resource, get_resources, get_search_paths  # noqa: F401
 from launcher.packages.index import PackageIndex, PackageNotFound
 
 

@@ -7,20 +7,42 @@ from __future__ import annotations
 
 import os
 
-RESOURCE_INDEX = os.path.join("share", "ament_index", "resource_index")
+from ament_index_python.constants import AMENT_PREFIX_PATH_ENV_VAR, RESOURCE_INDEX_SUBFOLDER
+
+RESOURCE_INDEX = RESOURCE_INDEX_SUBFOLDER
+
+
+class InvalidResourceTypeNameError(ValueError):
+    """A resource type that is empty or holds a path separator."""
+
+
+class InvalidResourceNameError(ValueError):
+    """A resource name that is empty or holds a path separator."""
 
 
 def get_search_paths() -> list[str]:
     """The prefixes of AMENT_PREFIX_PATH that exist, in order."""
-    paths = os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep)
+    paths = os.environ.get(AMENT_PREFIX_PATH_ENV_VAR, "").split(os.pathsep)
     return [p for p in paths if p and os.path.isdir(p)]
 
 
 def _check(name: str, what: str) -> None:
+    error = InvalidResourceTypeNameError if what == "resource type" else InvalidResourceNameError
     if not name:
-        raise ValueError(f"The {what} must not be empty")
+        raise error(f"The {what} must not be empty")
     if "/" in name or "\\" in name:
-        raise ValueError(f"The {what} must not contain path separators")
+        raise error(f"The {what} must not contain path separators")
+
+
+def get_resource_types() -> set[str]:
+    """The resource types that any prefix has."""
+    types: set[str] = set()
+    for prefix in get_search_paths():
+        folder = os.path.join(prefix, RESOURCE_INDEX)
+        if os.path.isdir(folder):
+            types.update(name for name in os.listdir(folder)
+                         if os.path.isdir(os.path.join(folder, name)))
+    return types
 
 
 def get_resources(resource_type: str) -> dict[str, str]:
@@ -57,4 +79,6 @@ def get_resource(resource_type: str, resource_name: str) -> tuple[str, str]:
         return f.read(), prefix
 
 
-__all__ = ["get_resource", "get_resources", "get_search_paths", "has_resource"]
+__all__ = ["InvalidResourceNameError", "InvalidResourceTypeNameError",
+           "RESOURCE_INDEX_SUBFOLDER", "get_resource", "get_resource_types", "get_resources",
+           "get_search_paths", "has_resource"]

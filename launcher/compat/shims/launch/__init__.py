@@ -1,10 +1,44 @@
 """ROS 2's `launch` package, answered by launcher.api (see launcher.compat)."""
 
-from launch import actions, conditions, event_handlers, launch_description_sources, substitutions
-from launcher.api import Action, LaunchDescription, Substitution
+from launch import (
+    actions,
+    conditions,
+    event_handlers,
+    events,
+    launch_description_sources,
+    logging,
+    substitutions,
+    utilities,
+)
+from launch.launch_service import LaunchService
+from launcher.api import (
+    Action,
+    Condition,
+    EventHandler,
+    LaunchDescription,
+    LaunchDescriptionEntity,
+    LaunchDescriptionSource,
+    SomeEntitiesType,
+    SomeEntitiesType_types_tuple,
+    SomeSubstitutionsType,
+    SomeSubstitutionsType_types_tuple,
+    Substitution,
+)
+from launcher.api.introspector import LaunchIntrospector
+from launcher.api.sources import InvalidLaunchFileError
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.events import Event
 
-SomeSubstitutionsType = object
-__all__ = ["Action", "LaunchContext", "LaunchDescription", "Substitution", "SomeSubstitutionsType",
-           "actions", "conditions", "event_handlers", "launch_description_sources",
-           "substitutions"]
+__all__ = [
+    "Action", "Condition", "Event", "EventHandler", "InvalidLaunchFileError", "LaunchContext",
+    "LaunchDescription", "LaunchDescriptionEntity", "LaunchDescriptionSource",
+    "LaunchIntrospector", "LaunchService", "SomeEntitiesType", "SomeEntitiesType_types_tuple",
+    "SomeSubstitutionsType", "SomeSubstitutionsType_types_tuple", "Substitution", "actions",
+    "conditions", "event_handlers", "events", "launch_description_sources", "logging",
+    "substitutions", "utilities",
+]
+
+
+from launcher.compat.finder import rest_from_layout  # noqa: E402
+
+__getattr__ = rest_from_layout(__name__)

@@ -13,6 +13,7 @@ from launcher.compat.launch_fixtures import (
     OPTIONS,
     OVERRIDABLE,
     SCOPE,
+    finalize,
     get_event_loop_fixture,
     get_launch_context_fixture,
     get_launch_service_fixture,
@@ -45,15 +46,29 @@ def fixture(decorated: Callable[..., Any] | None = None, *args: Any,
     return decorate if decorated is None else decorate(decorated)
 
 
+def finalize_launch_service(launch_service: Any, eprefix: str = "",
+                            auto_shutdown: bool = True) -> None:
+    """End the launch `launch_service` runs (shut it down first if `auto_shutdown`) and
+    wait for it; a launch that failed fails the test, its message starting with `eprefix`."""
+    finalize(launch_service, eprefix, auto_shutdown=auto_shutdown)
+
+
+def scope_gt(scope1: str, scope2: str) -> bool:
+    """Whether pytest scope `scope1` is wider than `scope2` ('module' > 'function')."""
+    from _pytest.scope import Scope
+
+    return Scope(scope1) > Scope(scope2)
+
+
 def _widen(module: dict[str, Any], scope: str) -> None:
     if scope not in SCOPES:
         return
     for name, getter in GETTERS.items():
         present = module.get(name)
         if present is None or getattr(present, OVERRIDABLE, False) and \
-                SCOPES.index(scope) > SCOPES.index(getattr(present, SCOPE)):
+                scope_gt(scope, getattr(present, SCOPE)):
             module[name] = getter(scope=scope)
 
 
-__all__ = ["fixture", "get_event_loop_fixture", "get_launch_context_fixture",
-           "get_launch_service_fixture"]
+__all__ = ["finalize_launch_service", "fixture", "get_event_loop_fixture",
+           "get_launch_context_fixture", "get_launch_service_fixture", "scope_gt"]

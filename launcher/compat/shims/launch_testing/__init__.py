@@ -12,6 +12,7 @@ from typing import Any
 from launch_testing import actions, asserts, markers, tools, util
 from launch_testing.io_handler import ActiveIoHandler, IoHandler
 from launch_testing.proc_info_handler import ActiveProcInfoHandler, ProcInfoHandler
+from launch_testing.ready_aggregator import ReadyAggregator
 
 
 def post_shutdown_test() -> Callable[[type], type]:
@@ -55,5 +56,6 @@ def ready_to_test_action_timeout(timeout: float) -> Callable[..., Any]:
 
 
 __all__ = ["ActiveIoHandler", "ActiveProcInfoHandler", "IoHandler", "ProcInfoHandler",
+           "ReadyAggregator",
            "actions", "asserts", "markers", "parametrize", "post_shutdown_test",
            "ready_to_test_action_timeout", "tools", "util"]

@@ -13,18 +13,38 @@ from __future__ import annotations
 
 import threading
 import uuid
-from typing import Any
+from collections.abc import Callable
+from typing import Any, TypedDict
 
 from launcher.bus import actions
 from launcher.bus.qos import QoS
 from launcher.compat import rosidl
 from rclpy.action import names
+from rclpy.clock import Clock  # noqa: F401 - the names rclpy's module offers
+from rclpy.executors import await_or_execute  # noqa: F401
 from rclpy.node import adopt, check_alive, forget, grouped, live_host
+from rclpy.qos import QoSProfile  # noqa: F401
+from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.task import Future, has_executor, wake_on_done
+from rclpy.type_support import (  # noqa: F401
+    Action,
+    FeedbackMessage,
+    GetResultServiceResponse,
+    SendGoalServiceResponse,
+    check_for_type_support,
+)
+from rclpy.waitable import NumberOfEntities, Waitable  # noqa: F401
 
 CALL_TIMEOUT = 10.0  # s: a goal or cancel request's answer
 RESULT_TIMEOUT = 365 * 24 * 3600.0  # s: a result comes when the goal ends, however long
 
+
+
+class SendGoalKWargs(TypedDict):
+    """The keywords send_goal takes besides the goal."""
+
+    feedback_callback: Callable[[Any], None] | None
+    goal_uuid: Any
 
 class ClientGoalHandle:
     def __init__(self, action_client: ActionClient, goal_id: Any, goal_response: Any) -> None:

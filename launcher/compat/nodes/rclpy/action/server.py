@@ -22,8 +22,21 @@ from launcher.bus.actions import GoalEvent
 from launcher.bus.qos import QoS
 from launcher.compat import rosidl
 from rclpy.action import names
+from rclpy.clock import Clock  # noqa: F401 - the names rclpy's module offers
+from rclpy.executors import await_or_execute  # noqa: F401
 from rclpy.node import adopt, check_alive, forget, grouped
-from rclpy.task import Future
+from rclpy.qos import QoSProfile  # noqa: F401
+from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
+from rclpy.task import Future, Task  # noqa: F401
+from rclpy.type_support import (  # noqa: F401
+    Action,
+    FeedbackMessage,
+    GetResultServiceRequest,
+    GetResultServiceResponse,
+    SendGoalServiceRequest,
+    check_for_type_support,
+)
+from rclpy.waitable import NumberOfEntities, Waitable  # noqa: F401
 
 
 class GoalResponse(enum.Enum):
@@ -55,10 +68,15 @@ def default_cancel_callback(cancel_request: Any) -> CancelResponse:
 
 
 class ServerGoalHandle:
-    def __init__(self, action_server: ActionServer, goal: actions.Goal,
-                 goal_request: Any) -> None:
+    def __init__(self, action_server: ActionServer, goal_info: Any, goal_request: Any) -> None:
+        """`goal_info`: an action_msgs/GoalInfo (its goal_id and stamp), accepted on
+        `action_server` now, as rcl_action's goal handle is; or the server's own record."""
         self._action_server = action_server
-        self._goal = goal  # the server's record of it: its state
+        if isinstance(goal_info, actions.Goal):
+            self._goal = goal_info  # the server's record of it: its state
+        else:
+            self._goal = actions.Goal(goal_info.goal_id, goal_info.stamp, handle=self)
+            action_server.accept(self._goal)
         self._goal_request = goal_request
         self._result_future: Future = Future()
 
@@ -221,6 +239,12 @@ class ActionServer:
         reply.send(response)  # answered first, then said and handed on (as rclpy does)
         self._goals.announce()
         self._handle_accepted_callback(goal.handle)
+
+    def accept(self, goal: actions.Goal) -> None:
+        """Keep a goal made outside the send_goal service (a ServerGoalHandle made by hand)
+        and say so on the status topic."""
+        self._goals.add(goal)
+        self._goals.announce()
 
     def move(self, handle: ServerGoalHandle, event: GoalEvent) -> None:
         """A goal's move (its handle's execute, succeed, abort, canceled)."""

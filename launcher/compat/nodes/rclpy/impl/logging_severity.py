@@ -1,5 +1,14 @@
-"""rclpy.impl.logging_severity.LoggingSeverity (the same as rclpy.logging's)."""
+"""rclpy.impl.logging_severity.LoggingSeverity: rcutils' log levels."""
 
-from rclpy.logging import LoggingSeverity
+from enum import IntEnum
 
-__all__ = ["LoggingSeverity"]
+
+class LoggingSeverity(IntEnum):
+    """rcutils' log levels (UNSET: follow the parent logger's)."""
+
+    UNSET = 0
+    DEBUG = 10
+    INFO = 20
+    WARN = 30
+    ERROR = 40
+    FATAL = 50

@@ -2,14 +2,21 @@
 
 from __future__ import annotations
 
+import enum
 from typing import Any
+
+
+class TransitionCallbackReturn(enum.IntEnum):
+    """What a transition callback returns (lifecycle_msgs' transition results)."""
+
+    SUCCESS = 97
+    FAILURE = 98
+    ERROR = 99
 
 
 class ManagedEntity:
     def on_configure(self, state: Any) -> Any:
         """Told of the node's `configure` transition; SUCCESS by default."""
-        from rclpy.lifecycle.node import TransitionCallbackReturn
-
         return TransitionCallbackReturn.SUCCESS
 
     def on_cleanup(self, state: Any) -> Any:

@@ -6,21 +6,18 @@ on_activate, … callbacks, its services (`~/get_state`, `~/change_state`,
 
 from __future__ import annotations
 
-import enum
 import threading
 import time
-from typing import Any
+from typing import Any, TypedDict
 
-from rclpy.lifecycle.managed_entity import ManagedEntity
+from rclpy.callback_groups import CallbackGroup  # noqa: F401 - the names rclpy's module offers
+from rclpy.lifecycle.managed_entity import ManagedEntity, TransitionCallbackReturn
 from rclpy.lifecycle.publisher import LifecyclePublisher
+from rclpy.logging import RcutilsLogger  # noqa: F401
 from rclpy.node import Node
-from rclpy.qos import qos_profile_services_default
-
-
-class TransitionCallbackReturn(enum.IntEnum):
-    SUCCESS = 97
-    FAILURE = 98
-    ERROR = 99
+from rclpy.qos import QoSProfile, qos_profile_services_default  # noqa: F401
+from rclpy.service import Service  # noqa: F401
+from rclpy.type_support import check_is_valid_srv_type  # noqa: F401
 
 
 class LifecycleState:
@@ -71,8 +68,31 @@ OUTCOMES = {
 }
 
 
+class LifecycleNodeArgs(TypedDict, total=False):
+    """LifecycleNode's keywords besides Node's."""
+
+    enable_communication_interface: bool
+
+
+class CreateLifecyclePublisherArgs(TypedDict, total=False):
+    """create_lifecycle_publisher's keywords."""
+
+    callback_group: CallbackGroup | None
+    event_callbacks: Any
+    qos_overriding_options: Any
+    publisher_class: type[LifecyclePublisher]
+
+
 class LifecycleNodeMixin:
-    def _init_lifecycle(self, enable_communication_interface: bool = True) -> None:
+    """The lifecycle state machine, its services and transition events, mixed into a Node
+    (made before the mixin's __init__ runs)."""
+
+    def __init__(self, *, enable_communication_interface: bool = True,
+                 callback_group: CallbackGroup | None = None) -> None:
+        self._init_lifecycle(enable_communication_interface, callback_group)
+
+    def _init_lifecycle(self, enable_communication_interface: bool = True,
+                        callback_group: CallbackGroup | None = None) -> None:
         from lifecycle_msgs.msg import TransitionEvent
         from lifecycle_msgs.srv import (
             ChangeState,
@@ -96,7 +116,8 @@ class LifecycleNodeMixin:
                      self._on_transitions),
                     (GetAvailableTransitions, "~/get_transition_graph", self._on_graph)):
                 self.create_service(srv, name, callback,  # type: ignore[attr-defined]
-                                    qos_profile=qos_profile_services_default)
+                                    qos_profile=qos_profile_services_default,
+                                    callback_group=callback_group)
 
     # --- the callbacks users override ------------------------------------------------------
     def on_configure(self, state: LifecycleState) -> TransitionCallbackReturn:
@@ -294,4 +315,5 @@ class LifecycleNode(LifecycleNodeMixin, Node):
     def __init__(self, node_name: str, *args: Any, enable_communication_interface: bool = True,
                  **kwargs: Any) -> None:
         Node.__init__(self, node_name, *args, **kwargs)
-        self._init_lifecycle(enable_communication_interface)
+        LifecycleNodeMixin.__init__(
+            self, enable_communication_interface=enable_communication_interface)

@@ -6,7 +6,12 @@ from __future__ import annotations
 from typing import Any
 
 from rclpy.lifecycle.managed_entity import SimpleManagedEntity
-from rclpy.publisher import Publisher
+from rclpy.publisher import (  # noqa: F401 - the names rclpy's module offers
+    CallbackGroup,
+    Publisher,
+    PublisherEventCallbacks,
+    QoSProfile,
+)
 
 
 class LifecyclePublisher(SimpleManagedEntity, Publisher):

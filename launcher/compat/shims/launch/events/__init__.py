@@ -1,3 +1,18 @@
-"""launch.events (launcher.api)."""
+"""launch.events: the events of a launch (launcher.runtime.events)."""
 
-from launcher.api import matches_action  # noqa: F401
+from launch.events import process
+from launcher.api import matches_action
+from launcher.runtime.events import (
+           ExecutionComplete,
+           IncludeLaunchDescription,
+           Shutdown,
+           TimerEvent,
+)
+
+__all__ = ["ExecutionComplete", "IncludeLaunchDescription", "Shutdown", "TimerEvent",
+           "matches_action", "process"]
+
+
+from launcher.compat.finder import rest_from_layout  # noqa: E402
+
+__getattr__ = rest_from_layout(__name__)

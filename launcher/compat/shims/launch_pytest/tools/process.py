@@ -6,9 +6,19 @@ start or an exit that came before the call counts: it is not waited for again.""
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import functools
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
+
+
+@contextlib.contextmanager
+def register_event_handler(context: Any, event_handler: Any) -> Iterator[None]:
+    """`event_handler` is one of the launch's (`context`: launch_context) inside the block."""
+    try:
+        yield context.register_event_handler(event_handler, append=True)
+    finally:
+        context.unregister_event_handler(event_handler)
 
 
 def wait_for_start_sync(launch_context: Any, execute_process_action: Any,
@@ -100,5 +110,6 @@ assert_output = _beside_the_loop(assert_output_sync)
 assert_stderr = _beside_the_loop(assert_stderr_sync)
 
 __all__ = ["assert_output", "assert_output_sync", "assert_stderr", "assert_stderr_sync",
-           "wait_for_exit", "wait_for_exit_sync", "wait_for_output", "wait_for_output_sync",
-           "wait_for_start", "wait_for_start_sync", "wait_for_stderr", "wait_for_stderr_sync"]
+           "register_event_handler", "wait_for_exit", "wait_for_exit_sync", "wait_for_output",
+           "wait_for_output_sync", "wait_for_start", "wait_for_start_sync", "wait_for_stderr",
+           "wait_for_stderr_sync"]

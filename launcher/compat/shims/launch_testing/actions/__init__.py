@@ -1,10 +1,13 @@
-"""launch_testing.actions: ReadyToTest, the action that says the tests may start."""
+"""launch_testing.actions: ReadyToTest, the action that says the tests may start, and the
+actions that run a test program (GTest, PyTest)."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from launch_testing.actions.gtest import GTest
+from launch_testing.actions.pytest import PyTest
 from launcher.api import Action
 
 
@@ -19,10 +22,12 @@ class ReadyToTest(Action):
     def add_callback(self, callback: Callable[[], None]) -> None:
         self.callbacks.append(callback)
 
+    _add_callback = add_callback  # (launch_testing's own name, which its tools call)
+
     def execute(self, context: Any) -> Sequence[Action] | None:
         for callback in self.callbacks:
             callback()
         return None
 
 
-__all__ = ["ReadyToTest"]
+__all__ = ["GTest", "PyTest", "ReadyToTest"]

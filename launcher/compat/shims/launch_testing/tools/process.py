@@ -7,6 +7,9 @@ import contextlib
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from launch_testing.io_handler import ActiveIoHandler
+from launch_testing.proc_info_handler import ActiveProcInfoHandler
+
 
 class ProcessProxy:
     """One process of a test, as the active tests see it: its output and its state."""
@@ -82,4 +85,4 @@ def launch_process(launch_service: Any, process_action: Any, proc_info: Any, pro
             launch_service.stop_action(process_action)
 
 
-__all__ = ["ProcessProxy", "launch_process"]
+__all__ = ["ActiveIoHandler", "ActiveProcInfoHandler", "ProcessProxy", "launch_process"]

@@ -14,9 +14,9 @@ from typing import Any
 Match = Callable[..., "tuple[int, int] | None"]
 
 
-def normalize_lineseps(text: str) -> str:
-    r"""`text` with every line ending a '\n' (a pseudo-terminal's '\r\n' included)."""
-    return text.replace(os.linesep, "\n").replace("\r\n", "\n")
+def normalize_lineseps(lines: str) -> str:
+    r"""`lines` (a text) with every line ending a '\n' (a pseudo-terminal's '\r\n' included)."""
+    return lines.replace(os.linesep, "\n").replace("\r\n", "\n")
 
 
 def build_line_match(expected_lines: Any, *, strict: bool = False) -> Match:

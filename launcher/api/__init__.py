@@ -6,16 +6,82 @@ over (`DeclareLaunchArgument('x', default_value='1')`, `LaunchConfiguration('x')
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
-from typing import Any
+from collections.abc import Callable, Iterable, Sequence
+from typing import Any, Union
 
+from launcher.api.actions import (
+    Executable,
+    ExecuteLocal,
+    OpaqueCoroutine,
+    PopEnvironment,
+    PopLaunchConfigurations,
+    PushEnvironment,
+    PushLaunchConfigurations,
+    ReplaceEnvironmentVariables,
+    UnsetLaunchConfiguration,
+)
+from launcher.api.ros import (
+    LifecycleTransition,
+    Parameter,
+    ParameterFile,
+    ParameterValue,
+    ROSTimer,
+    RosTimer,
+    SetROSLogDir,
+    matches_node_name,
+)
+from launcher.api.sources import (
+    AnyLaunchDescriptionSource,
+    FrontendLaunchDescriptionSource,
+    InvalidLaunchFileError,
+    LaunchDescriptionSource,
+    PythonLaunchDescriptionSource,
+    XMLLaunchDescriptionSource,
+    YAMLLaunchDescriptionSource,
+)
+from launcher.api.substitutions import (
+    AllSubstitution,
+    AndSubstitution,
+    AnonName,
+    AnySubstitution,
+    Command,
+    ContainerSubstitution,
+    EnvironmentVariable,
+    EqualsSubstitution,
+    ExecutableInPackage,
+    FileContent,
+    FindExecutable,
+    FindPackage,
+    FindPackagePrefix,
+    FindPackageShare,
+    ForEachVar,
+    ForLoopIndex,
+    IfElseSubstitution,
+    LaunchConfiguration,
+    LaunchLogDir,
+    LeftRightLogicalSubstitution,
+    LocalSubstitution,
+    NotEqualsSubstitution,
+    NotSubstitution,
+    OrSubstitution,
+    PathJoinSubstitution,
+    PathSubstitution,
+    PythonExpression,
+    StringJoinSubstitution,
+    StringStripSubstitution,
+    Substitution,
+    SubstitutionFailure,
+    TextSubstitution,
+    ThisLaunchFile,
+    ThisLaunchFileDir,
+)
+from launcher.api.utilities import AsyncSafeSignalManager
 from launcher.description import action as _action
 from launcher.description.actions import arguments as _arguments
 from launcher.description.actions import composition as _composition
 from launcher.description.actions import environment as _environment
 from launcher.description.actions import group as _group
 from launcher.description.actions import lifecycle as _lifecycle
-from launcher.description.actions import log as _log
 from launcher.description.actions import loops as _loops
 from launcher.description.actions import node as _node
 from launcher.description.actions import param_entry as _params
@@ -23,58 +89,43 @@ from launcher.description.actions import ros as _ros
 from launcher.description.actions import shutdown as _shutdown
 from launcher.description.actions import timer as _timer
 from launcher.description.actions.event_handlers import (
+    BaseEventHandler,
+    EventHandler,
+    OnActionEventBase,
+    OnExecutionComplete,
+    OnIncludeLaunchDescription,
     OnProcessExit,
     OnProcessIO,
     OnProcessStart,
     OnShutdown,
     RegisterEventHandler,
+    UnregisterEventHandler,
+    event_named,
+    gen_handler,
 )
 from launcher.description.actions.executable import ExecuteProcess
 from launcher.description.actions.include import IncludeLaunchDescription
+from launcher.description.actions.log import Log, LogDebug, LogError, LogInfo, LogWarning
 from launcher.description.actions.opaque import OpaqueFunction
-from launcher.description.condition import Condition as _Condition
-from launcher.description.condition import IfCondition, UnlessCondition
-from launcher.description.substitution import Substitution, Text, to_text
-from launcher.description.substitutions import command as _command
-from launcher.description.substitutions import configuration as _configuration
-from launcher.description.substitutions import environment as _env
-from launcher.description.substitutions import expression as _expression
-from launcher.description.substitutions import files as _files
-from launcher.description.substitutions import packages as _packages
+from launcher.description.condition import (
+    Condition,
+    IfCondition,
+    LaunchConfigurationEquals,
+    LaunchConfigurationNotEquals,
+    UnlessCondition,
+)
+from launcher.description.condition import TextCondition as _TextCondition
+from launcher.description.substitution import to_text
+
+SomeSubstitutionsType = Union[str, Substitution, Iterable[Union[str, Substitution]]]  # noqa: UP007
+SomeSubstitutionsType_types_tuple = (str, Substitution, Iterable)
+SomeEntitiesType = Union[_action.LaunchDescriptionEntity,  # noqa: UP007
+                         Iterable[_action.LaunchDescriptionEntity]]
+SomeEntitiesType_types_tuple = (_action.LaunchDescriptionEntity, Iterable)
 
 Action = _action.Action  # launch.Action: the base of an action of the user's own
 LaunchDescription = _action.LaunchDescription
-PathJoinSubstitution = _files.PathJoinSubstitution
-
-__all__ = [
-    "Action", "AppendEnvironmentVariable", "AnyLaunchDescriptionSource", "Command",
-    "DeclareLaunchArgument", "EnvironmentVariable", "ExecuteProcess", "FindExecutable",
-    "ForEach", "ForLoop", "GroupAction", "IfCondition", "IncludeLaunchDescription",
-    "LaunchConfiguration", "LaunchDescription", "LaunchDescriptionSource", "LogInfo",
-    "OnProcessExit", "OnProcessIO", "OnProcessStart", "OnShutdown", "OpaqueFunction",
-    "PathJoinSubstitution", "PythonExpression", "PythonLaunchDescriptionSource",
-    "RegisterEventHandler", "ResetEnvironment", "ResetLaunchConfigurations",
-    "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown", "Substitution",
-    "TextSubstitution", "ThisLaunchFileDir", "TimerAction", "UnlessCondition",
-    "UnsetEnvironmentVariable", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
-    "Node", "ComposableNodeContainer", "LoadComposableNodes", "ComposableNode",
-    "FindPackageShare", "FindPackagePrefix", "ParameterFile", "ParameterValue", "PushRosNamespace",
-    "SetParameter", "SetRemap", "SetUseSimTime", "SetParametersFromFile", "LifecycleNode",
-    "EmitEvent", "ChangeState", "OnStateTransition", "matches_action",
-]
-
-
-# --- sources for IncludeLaunchDescription ---------------------------------------------------
-class LaunchDescriptionSource:
-    """Where an included description comes from: a path (text or substitutions)."""
-
-    def __init__(self, location: Any) -> None:
-        self.location = location
-
-
-PythonLaunchDescriptionSource = AnyLaunchDescriptionSource = LaunchDescriptionSource
-XMLLaunchDescriptionSource = YAMLLaunchDescriptionSource = LaunchDescriptionSource
-
+LaunchDescriptionEntity = _action.LaunchDescriptionEntity
 
 # --- actions ------------------------------------------------------------------------------
 def DeclareLaunchArgument(name: str, default_value: Any = None, description: str = "",  # noqa: N802
@@ -123,10 +174,6 @@ def ResetEnvironment(**kw: Any) -> Any:  # noqa: N802
     return _environment.ResetEnvironment(**kw)
 
 
-def LogInfo(*, msg: Any, **kw: Any) -> Any:  # noqa: N802
-    return _log.LogInfo(msg=msg, **kw)
-
-
 def Shutdown(*, reason: Any = None, **kw: Any) -> Any:  # noqa: N802
     return _shutdown.Shutdown(reason=None if reason is None else to_text(reason), **kw)
 
@@ -140,77 +187,7 @@ def ForEach(input_values: Any, *, function: Callable[..., Any], **kw: Any) -> An
     return _loops.ForEach(input_values=to_text(input_values), function=function, **kw)
 
 
-# --- substitutions ------------------------------------------------------------------------
-def _opt(value: Any) -> Any:
-    return None if value is None else to_text(value)
-
-
-def LaunchConfiguration(variable_name: Any, default: Any = None) -> Substitution:  # noqa: N802
-    return _configuration.LaunchConfiguration(to_text(variable_name), _opt(default))
-
-
-def EnvironmentVariable(name: Any, default_value: Any = None) -> Substitution:  # noqa: N802
-    return _env.EnvironmentVariable(to_text(name), _opt(default_value))
-
-
-def Command(command: Any, on_stderr: Any = "fail") -> Substitution:  # noqa: N802
-    return _command.Command(to_text(command), to_text(on_stderr))
-
-
-def PythonExpression(expression: Any) -> Substitution:  # noqa: N802
-    """A restricted expression (see launcher.description.safe_expression), not Python eval."""
-    return _expression.PythonExpression(to_text(expression))
-
-
-def TextSubstitution(*, text: str) -> Substitution:  # noqa: N802
-    return Text(text)
-
-
-def FindExecutable(*, name: Any) -> Substitution:  # noqa: N802
-    return _files.FindExecutable(to_text(name))
-
-
-def ThisLaunchFileDir() -> Substitution:  # noqa: N802
-    return _files.ThisLaunchFileDir()
-
-
-def FindPackageShare(package: Any) -> Substitution:  # noqa: N802
-    return _packages.FindPackageShare(to_text(package))
-
-
-def FindPackagePrefix(package: Any) -> Substitution:  # noqa: N802
-    return _packages.FindPackagePrefix(to_text(package))
-
-
 # --- launch_ros ---------------------------------------------------------------------------
-class ParameterValue:
-    """A value with its type, as launch_ros has it: `ParameterValue(Command(…), value_type=str)`."""
-
-    def __init__(self, value: Any, *, value_type: Any = None) -> None:
-        self.value, self.value_type = value, value_type
-
-    def type_name(self) -> str | None:
-        """`type:` as launch files write it: str, int, …, list_of_int, …"""
-        names = {str: "str", int: "int", float: "float", bool: "bool"}
-        if self.value_type is None:
-            return None
-        if self.value_type in names:
-            return names[self.value_type]
-        args = getattr(self.value_type, "__args__", ())
-        if getattr(self.value_type, "__origin__", None) is list and args and args[0] in names:
-            return f"list_of_{names[args[0]]}"
-        raise TypeError(f"ParameterValue: value_type {self.value_type!r} is not one of str, "
-                        "int, float, bool, List[str|int|float|bool]")
-
-
-class ParameterFile:
-    """A parameters file, as launch_ros has it: `ParameterFile(path, allow_substs=False)`;
-    with `allow_substs` the substitutions written in the file are performed."""
-
-    def __init__(self, param_file: Any, *, allow_substs: Any = False) -> None:
-        self.param_file, self.allow_substs = param_file, allow_substs
-
-
 def Node(*, executable: Any, package: Any = None, name: Any = None, namespace: Any = None,  # noqa: N802
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
          arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (),
@@ -262,7 +239,7 @@ def ComposableNode(*, package: Any, plugin: Any, name: Any = None,  # noqa: N802
     as launch_ros takes it: loaded only when it holds)."""
     switch: dict[str, Any] = {}
     if condition is not None:
-        if not isinstance(condition, _Condition):
+        if not isinstance(condition, _TextCondition):
             raise TypeError(f"ComposableNode(condition=...): expected IfCondition(...) or "
                             f"UnlessCondition(...), got {type(condition).__name__}")
         switch["only_unless" if condition.negate else "only_if"] = condition.text
@@ -278,6 +255,9 @@ def _parameters(parameters: Sequence[Any]) -> list[Any]:
     for item in parameters:
         if isinstance(item, dict):
             entries.append(_params.ParamEntry(children=_parameter_group(item), group=True))
+        elif isinstance(item, Parameter):
+            entries.append(_params.ParamEntry(children=_parameter_group(item.as_dict()),
+                                              group=True))
         elif isinstance(item, ParameterFile):
             entries.append(_params.ParamEntry(from_file=to_text(item.param_file),
                                               allow_substs=to_text(item.allow_substs)
@@ -299,8 +279,11 @@ def _parameter_group(values: dict[Any, Any]) -> list[Any]:
     return out
 
 
-def PushRosNamespace(namespace: Any, **kw: Any) -> Any:  # noqa: N802
+def PushROSNamespace(namespace: Any, **kw: Any) -> Any:  # noqa: N802
     return _ros.PushRosNamespace(namespace=namespace, **kw)
+
+
+PushRosNamespace = PushROSNamespace  # (its name before Jazzy)
 
 
 def SetParameter(name: Any, value: Any, **kw: Any) -> Any:  # noqa: N802
@@ -317,3 +300,39 @@ def SetRemap(src: Any, dst: Any, **kw: Any) -> Any:  # noqa: N802
 
 def SetUseSimTime(value: Any, **kw: Any) -> Any:  # noqa: N802
     return _ros.SetUseSimTime(value=value, **kw)
+
+
+__all__ = [
+    "SomeEntitiesType", "SomeEntitiesType_types_tuple", "SomeSubstitutionsType",
+    "SomeSubstitutionsType_types_tuple",
+    "LifecycleTransition", "Parameter", "ROSTimer", "RosTimer", "SetROSLogDir",
+    "matches_node_name", "PushROSNamespace",
+    "ContainerSubstitution", "LeftRightLogicalSubstitution", "gen_handler",
+    "AsyncSafeSignalManager",
+    "Action", "AllSubstitution", "AndSubstitution", "AnonName", "AnyLaunchDescriptionSource",
+    "AnySubstitution", "AppendEnvironmentVariable", "BaseEventHandler", "ChangeState",
+    "Command", "ComposableNode", "ComposableNodeContainer", "Condition",
+    "DeclareLaunchArgument", "EmitEvent", "EnvironmentVariable", "EqualsSubstitution",
+    "EventHandler", "Executable", "ExecutableInPackage", "ExecuteLocal", "ExecuteProcess",
+    "FileContent", "FindExecutable", "FindPackage", "FindPackagePrefix", "FindPackageShare",
+    "ForEach", "ForEachVar", "ForLoop", "ForLoopIndex", "FrontendLaunchDescriptionSource",
+    "GroupAction", "IfCondition", "IfElseSubstitution", "IncludeLaunchDescription",
+    "InvalidLaunchFileError", "LaunchConfiguration", "LaunchConfigurationEquals",
+    "LaunchConfigurationNotEquals", "LaunchDescription", "LaunchDescriptionEntity",
+    "LaunchDescriptionSource", "LaunchLogDir", "LifecycleNode", "LoadComposableNodes",
+    "LocalSubstitution", "Log", "LogDebug", "LogError", "LogInfo", "LogWarning", "Node",
+    "NotEqualsSubstitution", "NotSubstitution", "OnActionEventBase", "OnExecutionComplete",
+    "OnIncludeLaunchDescription", "OnProcessExit", "OnProcessIO", "OnProcessStart",
+    "OnShutdown", "OnStateTransition", "OpaqueCoroutine", "OpaqueFunction", "OrSubstitution",
+    "ParameterFile", "ParameterValue", "PathJoinSubstitution", "PathSubstitution",
+    "PopEnvironment", "PopLaunchConfigurations", "PushEnvironment", "PushLaunchConfigurations",
+    "PushRosNamespace", "PythonExpression", "PythonLaunchDescriptionSource",
+    "RegisterEventHandler", "ReplaceEnvironmentVariables", "ResetEnvironment",
+    "ResetLaunchConfigurations", "SetEnvironmentVariable", "SetLaunchConfiguration",
+    "SetParameter", "SetParametersFromFile", "SetRemap", "SetUseSimTime", "Shutdown",
+    "StringJoinSubstitution", "StringStripSubstitution", "Substitution", "SubstitutionFailure",
+    "TextSubstitution", "ThisLaunchFile", "ThisLaunchFileDir", "TimerAction",
+    "UnlessCondition", "UnregisterEventHandler", "UnsetEnvironmentVariable",
+    "UnsetLaunchConfiguration", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
+    "event_named", "matches_action",
+]
