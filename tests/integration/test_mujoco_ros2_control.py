@@ -54,8 +54,11 @@ def sim_time(ws) -> float:
 
 
 def call(ws, name: str, type_name: str, request: str) -> str:
+    # (the answer waited for as long as `ros2 service call` waits: a loaded machine steps
+    # 250 steps of the paused sim in more than the CLI's default 5 s)
     done = ws.run("service", "call", f"{SERVICES}/{name}",
-                  f"mujoco_ros2_control_msgs/srv/{type_name}", request, timeout=60)
+                  f"mujoco_ros2_control_msgs/srv/{type_name}", request, "--timeout", "50",
+                  timeout=60)
     assert done.returncode == 0, done.stderr
     return done.stdout
 
