@@ -42,9 +42,13 @@ def ros1_name(parameter: str) -> str:
     return "/" + parameter.replace(".", "/")
 
 
+MIXED = "!ros1-list "  # a list of mixed types, kept as this tag and its YAML
+
+
 def leaves(ros1: str, value: Any) -> dict[str, Any]:
     """A value as the server keeps it: a dict as its leaves, each a parameter value (a list
-    of mixed types, which a ROS 2 parameter cannot hold, as its text)."""
+    of mixed types, which a ROS 2 parameter cannot hold but ROS 1's XML-RPC server does, as
+    its YAML behind a tag: its clients read it back as the list)."""
     if isinstance(value, Mapping):
         found: dict[str, Any] = {}
         for inner, item in value.items():
@@ -55,10 +59,22 @@ def leaves(ros1: str, value: Any) -> dict[str, Any]:
         if kinds == {int, float}:
             value = [float(item) for item in value]
         elif len(kinds) > 1 or kinds & {list, tuple, dict, type(None)}:
-            value = str(list(value))
+            import yaml
+
+            value = MIXED + yaml.safe_dump(list(value), default_flow_style=True,
+                                           width=1 << 30).strip()
         else:
             value = list(value)
     return {key(ros1): value}
+
+
+def _read(value: Any) -> Any:
+    """A value as the server's clients read it (a mixed list as the list)."""
+    if isinstance(value, str) and value.startswith(MIXED):
+        import yaml
+
+        return yaml.safe_load(value[len(MIXED):])
+    return value
 
 
 def dump_text(value: Any) -> str:
@@ -165,12 +181,13 @@ class GraphParameters:
         if name:
             response = self._call(params.GET, "get_parameters", {"names": [name]})
             if response.values[0].type != params.NOT_SET:
-                return params.from_message(response.values[0])
+                return _read(params.from_message(response.values[0]))
         below = self._below(name)
         if not below:
             raise Missing(f"Parameter [{ros1}] is not set")
         values = self._call(params.GET, "get_parameters", {"names": list(below)}).values
-        return params.nested((full[len(name) + 1 if name else 0:], params.from_message(value))
+        return params.nested((full[len(name) + 1 if name else 0:],
+                              _read(params.from_message(value)))
                              for full, value in zip(below, values, strict=True))
 
     def set(self, ros1: str, value: Any) -> None:

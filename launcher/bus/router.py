@@ -39,6 +39,16 @@ POLL = 0.25  # seconds between two looks at what is connected
 SWEEP = 10.0  # seconds between two sweeps of dead peers' socket files (standing)
 
 
+def _answers_soon(sock: Any, wait: float = 10.0) -> bool:
+    """Whether the router starting on `sock` answers within `wait` seconds."""
+    deadline = time.monotonic() + wait
+    while time.monotonic() < deadline:
+        if discovery.answers(sock):
+            return True
+        time.sleep(0.05)
+    return False
+
+
 def serve(listen: list[str], linger: float | None, lock_fd: int | None,
           stop: threading.Event) -> int:
     """Run the router until `stop` (or, with `linger`, until idle that long); its exit status."""
@@ -53,8 +63,16 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
     try:
         hosting = lock_fd is not None or not discovery.answers(sock)
         if hosting:
-            session, hosted = _local_router(sock, lock_fd)
-            sessions.append(session)
+            try:
+                session, hosted = _local_router(sock, lock_fd)
+                sessions.append(session)
+            except zenoh.ZError as exc:
+                # another router (a launch's, starting as this one did) holds the socket:
+                # this one joins it, as it would have had that one answered a moment sooner
+                if lock_fd is not None or "acquire lock" not in str(exc) or \
+                        not _answers_soon(sock):
+                    raise
+                hosting = False
         if remote:  # checks credentials, which the local router cannot ask of its peers
             try:
                 sessions.append(zenoh.open(config("router", remote,

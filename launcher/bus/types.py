@@ -131,6 +131,8 @@ class TypeRegistry:
         if name in self.fielddefs:
             return name
         available = self._definitions()
+        if name not in available and name.endswith("_Event") and "/srv/" in name:
+            return self.service_event(name.removesuffix("_Event"))  # introspection's events
         if name not in available and not self._from_package(name):
             raise UnknownType(f"unknown message type '{name}'{did_you_mean(name, available)}")
         needed: dict[str, Any] = {}

@@ -166,11 +166,52 @@ def roslaunch_value(text: str, kind: str, name: str) -> Any:
         import yaml  # only where a value is read or written: a launch's start needs none
 
         try:
-            return yaml.safe_load(text)
+            return yaml.load(text, Loader=ros1_yaml_loader())  # noqa: S506 - a SafeLoader
         except yaml.YAMLError as exc:
             raise ExecutionError(f"param '{name}': not valid YAML: {exc}") from None
     raise ExecutionError(f"param '{name}': unknown type '{kind}'; roslaunch's types are "
                          f"{', '.join(ROS1_TYPES)}{did_you_mean(kind, ROS1_TYPES)}")
+
+
+_ros1_loader: Any = None
+
+
+def ros1_yaml_loader() -> Any:
+    """YAML as roslaunch reads its parameters (rosparam's loader): a safe loader that also
+    reads angles, `rad(pi/2)` (an expression of pi, never Python's eval) and `deg(180)`, as
+    radians, and the tags `!radians` and `!degrees`."""
+    global _ros1_loader
+    if _ros1_loader is None:
+        import math
+        import re
+
+        import yaml
+
+        class Ros1Loader(yaml.SafeLoader):
+            pass
+
+        def angle(kind: str) -> Any:
+            def construct(loader: Any, node: Any) -> float:
+                text = str(loader.construct_scalar(node)).strip()
+                inner = text[4:-1] if text.startswith(f"{kind[:3]}(") else text
+                try:
+                    if kind == "degrees":
+                        return float(inner) * math.pi / 180.0
+                    from launcher.description.safe_expression import evaluate
+
+                    return float(evaluate(inner, {"pi": math.pi}))  # type: ignore[arg-type]
+                except Exception:  # noqa: BLE001 - said as rosparam says it
+                    raise yaml.constructor.ConstructorError(
+                        None, None, f"invalid {kind[:-1]} expression: {text}",
+                        node.start_mark) from None
+            return construct
+
+        for kind in ("radians", "degrees"):
+            Ros1Loader.add_constructor(f"!{kind}", angle(kind))
+            Ros1Loader.add_implicit_resolver(f"!{kind}", re.compile(rf"^{kind[:3]}\([^)]*\)$"),
+                                             [kind[0]])
+        _ros1_loader = Ros1Loader
+    return _ros1_loader
 
 
 def unrolled(name: str, value: Any) -> dict[str, Any]:
@@ -221,7 +262,7 @@ def rosparam_values(context: LaunchContext, text: str, prefix: str, where: Any,
         text = perform_text(context, context.parse_text(text, str(getattr(where, "file", "")),
                                                         roslaunch=True))
     try:
-        document = yaml.safe_load(text)
+        document = yaml.load(text, Loader=ros1_yaml_loader())  # noqa: S506 - a SafeLoader
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark
         raise ExecutionError(f"rosparam: not valid YAML: {exc.problem}"

@@ -47,7 +47,7 @@ BUILTINS: dict[str, dict[str, str]] = {
     },
     "substitution": {
         **dict.fromkeys(("var", "for-var", "index", "anon"), _SUBS + "configuration"),
-        "env": _SUBS + "environment",
+        **dict.fromkeys(("env", "roslaunch_env"), _SUBS + "environment"),
         **dict.fromkeys(("eval", "roslaunch_eval"), _SUBS + "expression"),
         **dict.fromkeys(("dirname", "filename", "file-content", "find-exec", "log_dir"),
                         _SUBS + "files"),

@@ -223,6 +223,8 @@ ROS2_SPELLINGS = {"arg": "var", "find": "find-pkg-share", "optenv": "env"}
 
 def parse_substitutions(attribute: Attribute, registry: Registry) -> Text_:
     assert isinstance(attribute.value, str)
+    if attribute.literal:
+        return (Text(attribute.value),)
     try:
         parts = parse_roslaunch(attribute.value) if attribute.roslaunch else \
             parse_text(attribute.value)

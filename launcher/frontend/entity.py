@@ -24,6 +24,7 @@ class Attribute:
     # reads as one); XML text is typed by YAML's rules where that matters (parameters).
     string: bool = False
     roslaunch: bool = False  # its substitutions are roslaunch's (roslaunch_substitutions.py)
+    literal: bool = False  # taken as written, no substitutions (rosparam without subst_value)
 
     @property
     def name_location(self) -> Location:

@@ -23,7 +23,7 @@ from launcher.errors import Location
 from launcher.frontend.entity import Attribute, Entity
 from launcher.private import open_private, private_folder
 
-FORMAT = 3
+FORMAT = 4
 MAX_ENTRIES = 512  # past this, a new entry makes room by removing the older half
 _HERE = os.path.dirname(os.path.abspath(__file__))
 _LOADERS = ("entity.py", "yaml_loader.py", "xml_loader.py", "ros1.py", "parse_cache.py")
@@ -104,7 +104,7 @@ def _pack(entity: Entity) -> tuple[Any, ...]:
     attributes = tuple(
         (name, a.value if isinstance(a.value, str) else [_pack(e) for e in a.value],
          tuple(a.location), a.text_offset, tuple(a.key_location) if a.key_location else None,
-         a.string, a.roslaunch)
+         a.string, a.roslaunch, a.literal)
         for name, a in entity.attributes.items())
     return (entity.tag, tuple(entity.location), attributes,
             tuple(_pack(child) for child in entity.children), entity.nested_in_children)
@@ -113,10 +113,10 @@ def _pack(entity: Entity) -> tuple[Any, ...]:
 def _unpack(packed: tuple[Any, ...]) -> Entity:
     tag, location, attributes, children, nested = packed
     entity = Entity(tag, Location(*location), nested_in_children=nested)
-    for name, value, where, offset, key_where, string, roslaunch in attributes:
+    for name, value, where, offset, key_where, string, roslaunch, literal in attributes:
         entity.attributes[name] = Attribute(
             value if isinstance(value, str) else [_unpack(e) for e in value],
             Location(*where), offset, Location(*key_where) if key_where else None, string,
-            roslaunch)
+            roslaunch, literal)
     entity.children = [_unpack(child) for child in children]
     return entity

@@ -514,6 +514,14 @@ def _rosparam_into(entity: Entity, made: Entity) -> Entity:
                      ("subst_value", "allow_substs")):
         if key in entity.attributes:
             made.attributes[new] = entity.attributes[key]
+    given = entity.attributes.get("subst_value")
+    if "#text" in entity.attributes and (given is None or "$(" not in str(given.value) and
+                                         str(given.value).strip().lower() not in ("true", "1")):
+        # roslaunch reads a rosparam's YAML as written unless subst_value is true
+        text = entity.attributes["#text"]
+        made.attributes["rosparam"] = Attribute(text.value, text.location, text.text_offset,
+                                                text.key_location, text.string, text.roslaunch,
+                                                literal=True)
     ns, param = entity.attributes.get("ns"), entity.attributes.get("param")
     if ns is not None and param is not None:
         made.attributes["name"] = Attribute(f"{ns.value}/{param.value}", ns.location)

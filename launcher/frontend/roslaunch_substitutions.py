@@ -15,7 +15,7 @@ from launcher.errors import did_you_mean
 from launcher.frontend.substitution_parser import Call, Part, SubstitutionSyntaxError
 
 # roslaunch's name → (launcher's substitution, how many words it takes: None for "any")
-ROSLAUNCH = {"arg": ("var", 1), "env": ("env", 1), "optenv": ("env", None),
+ROSLAUNCH = {"arg": ("var", 1), "env": ("roslaunch_env", 1), "optenv": ("roslaunch_env", None),
              "anon": ("anon", 1), "find": ("find-pkg-share", 1), "dirname": ("dirname", 0)}
 EVAL = "roslaunch_eval"
 

@@ -269,6 +269,31 @@ def test_service_introspection_and_service_echo(ws):
             proc.wait(20)
 
 
+def test_topic_echo_of_a_services_event_topic_named_in_full(ws):
+    """`ros2 topic echo /add_two_ints/_service_event` works: a hidden topic named in full,
+    whose type (AddTwoInts_Event) comes with its service."""
+    node_package(ws, "intro", {"adder.py": INTROSPECTED})
+    ws.own_bus()
+    adder = ws.start("run", "intro", "adder.py", output="adder.txt")
+    echo = None
+    try:
+        ws.wait_for_output("up", 30, "adder.txt")
+        echo = ws.start("topic", "echo", "/add_two_ints/_service_event", output="events.txt")
+        import time
+
+        time.sleep(1.5)
+        called = ws.run("service", "call", "/add_two_ints", "example_interfaces/srv/AddTwoInts",
+                        "{a: 4, b: 5}")
+        assert "sum: 9" in called.stdout, called
+        said = ws.wait_for_output("event_type: 2", 20, "events.txt")
+        assert "request:\n- a: 4\n  b: 5" in said and "nobody publishes" not in said, said
+    finally:
+        for proc in (echo, adder):
+            if proc is not None:
+                proc.send_signal(signal.SIGINT)
+                proc.wait(20)
+
+
 CUSTOM_EXECUTOR = """
 from concurrent.futures import ThreadPoolExecutor
 import rclpy

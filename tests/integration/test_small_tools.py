@@ -148,6 +148,7 @@ def test_teleop_twist_keyboard_stamped_with_its_frame_id(ws):
                                "teleop_twist_keyboard", "--ros-args", "-p", "stamped:=true",
                                "-p", "frame_id:=base_link"], stdin=slave, stdout=slave,
                               stderr=slave, cwd=ws.root, env=ws.env)
+    listener = None
     try:
         screen = b""
         deadline = time.monotonic() + 30
@@ -155,18 +156,25 @@ def test_teleop_twist_keyboard_stamped_with_its_frame_id(ws):
             screen += os.read(master, 4096)
         listener = ws.start("topic", "echo", "/cmd_vel", "geometry_msgs/msg/TwistStamped",
                             output="stamped.txt")
-        time.sleep(1.5)
-        os.write(master, b"l")
-        said = ws.wait_for_output("z: -1.0", 20, "stamped.txt")
-        assert "frame_id: base_link" in said, said
+        said = ""
+        for _ in range(20):  # a key each time until the listener (matched when it is) hears
+            os.write(master, b"l")
+            deadline = time.monotonic() + 1.0
+            while "z: -1.0" not in said and time.monotonic() < deadline:
+                time.sleep(0.05)
+                said = ws.output("stamped.txt")
+            if "z: -1.0" in said:
+                break
+        assert "z: -1.0" in said and "frame_id: base_link" in said, said
         os.write(master, b"\x03")
         assert teleop.wait(20) == 0
-        listener.send_signal(signal.SIGINT)
-        listener.wait(20)
     finally:
         if teleop.poll() is None:
             teleop.kill()
             teleop.wait()
+        if listener is not None:
+            listener.send_signal(signal.SIGINT)
+            listener.wait(20)
         os.close(master)
         os.close(slave)
 

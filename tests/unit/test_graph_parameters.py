@@ -29,8 +29,14 @@ def test_values_are_kept_as_a_ros2_parameter_holds_them():
     assert graph.leaves("/gains", {"p": 1.5, "limits": {"max": 2}}) == \
         {"gains.p": 1.5, "gains.limits.max": 2}
     assert graph.leaves("/mixed", [1, 2.5]) == {"mixed": [1.0, 2.5]}  # one array type
-    assert graph.leaves("/odd", [1, "a"]) == {"odd": "[1, 'a']"}  # none fits: its text
     assert graph.leaves("/names", ("a", "b")) == {"names": ["a", "b"]}
+
+
+def test_a_list_of_mixed_types_is_kept_for_its_clients_to_read_as_the_list():
+    """ROS 1's server is XML-RPC, whose arrays take any types: [1, two, 3.0] stays a list."""
+    (kept,) = graph.leaves("/odd", [1, "two", 3.0]).values()
+    assert isinstance(kept, str)  # (a ROS 2 parameter cannot hold it as it is)
+    assert graph._read(kept) == [1, "two", 3.0]
 
 
 def test_rosparam_resolves_names_as_ros1_does(monkeypatch):

@@ -134,3 +134,45 @@ def test_conditions_read_as_roslaunch_reads_them_and_never_both(tmp_path):
     with pytest.raises(ParseError, match=r"<param> has both if= and unless=") as caught:
         load_file(both)
     assert caught.value.location.line == 2
+
+
+# --- roslaunch's rosparam and env, as real roslaunch 1.15 dumps them (--dump-params) -------
+def _dump(tmp_path, text):
+    import os
+    import subprocess
+    import sys
+
+    import yaml
+
+    (tmp_path / "t.launch").write_text(text)
+    done = subprocess.run([sys.executable, "-m", "launcher", "roslaunch", "--dump-params",
+                           "t.launch"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=60, env=dict(os.environ, LAUNCHER_CACHE_DIR=str(tmp_path)))
+    assert done.returncode == 0, done.stderr
+    return yaml.safe_load(done.stdout)
+
+
+def test_a_rosparams_yaml_is_taken_as_written_without_subst_value(tmp_path):
+    dumped = _dump(tmp_path, '<launch><arg name="who" default="world"/>'
+                             '<rosparam>greet: hello $(arg who)</rosparam>'
+                             '<rosparam subst_value="true">greet2: hello $(arg who)</rosparam>'
+                             '</launch>')
+    assert (dumped["/greet"], dumped["/greet2"]) == ("hello $(arg who)", "hello world")
+
+
+def test_rad_and_deg_in_a_rosparams_yaml_are_radians(tmp_path):
+    import math
+
+    dumped = _dump(tmp_path, "<launch><rosparam>angle: rad(pi/2)\nhalf: deg(180)\n"
+                             "tagged: !degrees 90</rosparam>"
+                             '<param name="y" type="yaml" value="rad(2*pi)"/></launch>')
+    assert dumped["/angle"] == math.pi / 2 and dumped["/half"] == math.pi
+    assert dumped["/tagged"] == math.pi / 2 and dumped["/y"] == 2 * math.pi
+
+
+def test_an_env_tag_sets_the_nodes_environment_not_the_one_optenv_reads(tmp_path, monkeypatch):
+    monkeypatch.delenv("LAUNCHER_TEST_SEEN", raising=False)
+    dumped = _dump(tmp_path, '<launch><env name="LAUNCHER_TEST_SEEN" value="set"/>'
+                             '<param name="seen" value="$(optenv LAUNCHER_TEST_SEEN unset)"/>'
+                             '</launch>')
+    assert dumped["/seen"] == "unset"

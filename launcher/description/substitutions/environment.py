@@ -19,11 +19,31 @@ class EnvironmentVariable(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         name = perform_text(context, self.name)
-        if name in context.environment:
-            return context.environment[name]
+        environment = self.environment(context)
+        if name in environment:
+            return environment[name]
         if self.default is not None:
             return perform_text(context, self.default)
         raise self.fail(
-            f"environment variable '{name}' is not set{did_you_mean(name, context.environment)}"
-            f"; give a default with $(env {name} DEFAULT)"
+            f"environment variable '{name}' is not set{did_you_mean(name, environment)}"
+            f"; give a default with {self.spelling(name)}"
         )
+
+    def environment(self, context: LaunchContext) -> dict[str, str]:
+        return context.environment
+
+    def spelling(self, name: str) -> str:
+        return f"$(env {name} DEFAULT)"
+
+
+@substitution("roslaunch_env")
+@dataclass(frozen=True)
+class RoslaunchEnvironmentVariable(EnvironmentVariable):
+    """roslaunch's `$(env)` and `$(optenv)`: roslaunch's own environment, as the launch began
+    (its `<env>` tags set the nodes' environment, not roslaunch's)."""
+
+    def environment(self, context: LaunchContext) -> dict[str, str]:
+        return context.initial_environment
+
+    def spelling(self, name: str) -> str:
+        return f"$(optenv {name} DEFAULT)"

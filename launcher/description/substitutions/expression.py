@@ -54,7 +54,7 @@ class RoslaunchExpression(Substitution):
         from launcher.description.parameters import roslaunch_value
         from launcher.description.substitution import Text
         from launcher.description.substitutions.configuration import AnonName
-        from launcher.description.substitutions.environment import EnvironmentVariable
+        from launcher.description.substitutions.environment import RoslaunchEnvironmentVariable
         from launcher.description.substitutions.files import ThisLaunchFileDir
         from launcher.description.substitutions.packages import FindPackageShare
 
@@ -70,9 +70,9 @@ class RoslaunchExpression(Substitution):
             "true": True, "false": False, "True": True, "False": False,
             "anon": lambda name: run(AnonName((Text(name),))),
             "dirname": lambda: run(ThisLaunchFileDir()),
-            "env": lambda name: run(EnvironmentVariable((Text(name),))),
-            "optenv": lambda name, default="": run(EnvironmentVariable((Text(name),),
-                                                                       (Text(default),))),
+            "env": lambda name: run(RoslaunchEnvironmentVariable((Text(name),))),
+            "optenv": lambda name, default="": run(RoslaunchEnvironmentVariable(
+                (Text(name),), (Text(default),))),
             "find": lambda package: run(FindPackageShare((Text(package),))),
         }
         try:
