@@ -39,16 +39,6 @@ POLL = 0.25  # seconds between two looks at what is connected
 SWEEP = 10.0  # seconds between two sweeps of dead peers' socket files (standing)
 
 
-def _answers_soon(sock: Any, wait: float = 10.0) -> bool:
-    """Whether the router starting on `sock` answers within `wait` seconds."""
-    deadline = time.monotonic() + wait
-    while time.monotonic() < deadline:
-        if discovery.answers(sock):
-            return True
-        time.sleep(0.05)
-    return False
-
-
 def serve(listen: list[str], linger: float | None, lock_fd: int | None,
           stop: threading.Event) -> int:
     """Run the router until `stop` (or, with `linger`, until idle that long); its exit status."""
@@ -63,16 +53,12 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
     try:
         hosting = lock_fd is not None or not discovery.answers(sock)
         if hosting:
-            try:
-                session, hosted = _local_router(sock, lock_fd)
-                sessions.append(session)
-            except zenoh.ZError as exc:
-                # another router (a launch's, starting as this one did) holds the socket:
-                # this one joins it, as it would have had that one answered a moment sooner
-                if lock_fd is not None or "acquire lock" not in str(exc) or \
-                        not _answers_soon(sock):
-                    raise
+            made = _local_router(sock, lock_fd)
+            if made is None:  # a launch's router started meanwhile: this one joins it
                 hosting = False
+            else:
+                session, hosted = made
+                sessions.append(session)
         if remote:  # checks credentials, which the local router cannot ask of its peers
             try:
                 sessions.append(zenoh.open(config("router", remote,
@@ -101,16 +87,20 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
     return 0
 
 
-def _local_router(sock: os.PathLike, lock_fd: int | None) -> tuple[zenoh.Session, Any]:
+def _local_router(sock: os.PathLike,
+                  lock_fd: int | None) -> tuple[zenoh.Session, Any] | None:
     """The router on the domain's socket, hosting the graph's parameter server (as roscore's
     master holds it; graph_parameters.Hosted); the start lock is held until both are there,
-    so whoever finds the router finds the server."""
+    so whoever finds the router finds the server. None when a standing router finds, once it
+    holds the start lock, that another (a launch's, started meanwhile) answers there."""
     from launcher.bus import graph_parameters
 
     with contextlib.ExitStack() as held:
         if lock_fd is None:  # standing: take the socket as discovery.start would
             lock = held.enter_context(open_private(discovery.lock_path(sock), "a"))
             fcntl.flock(lock, fcntl.LOCK_EX)
+            if discovery.answers(sock):
+                return None
             with contextlib.suppress(FileNotFoundError):
                 os.unlink(sock)
         session = zenoh.open(config("router", [f"unixsock-stream/{sock}"], []))
