@@ -137,7 +137,7 @@ class LaunchDescription(Action):
         found, todo = [], list(self.actions)
         while todo:
             entity = todo.pop(0)
-            if type(entity).__name__ == "DeclareLaunchArgument":
+            if "arg" in entity.tags:  # (DeclareLaunchArgument: the `arg` tag's action)
                 found.append(entity)
             elif isinstance(entity, Action):
                 todo[:0] = list(entity.sub_actions())

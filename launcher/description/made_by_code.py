@@ -41,12 +41,26 @@ def note(entity: object) -> None:
             object.__setattr__(entity, "made_at", place)
 
 
+_installed: tuple[str, ...] | None = None
+
+
+def users(filename: str) -> bool:
+    """Whether a frame's file is the user's: not launcher's, Python's or an installed
+    library's (so that a failure inside the standard library is not said as theirs)."""
+    global _installed
+    if _installed is None:
+        import sysconfig
+
+        paths = sysconfig.get_paths()
+        _installed = tuple({paths[k] for k in ("stdlib", "platstdlib", "purelib", "platlib")})
+    return not filename.startswith((OURS, "<", *_installed))
+
+
 def caller() -> Location | None:
     frame = sys._getframe(2)
     while frame is not None:
-        name = frame.f_code.co_filename
-        if not name.startswith(OURS) and not name.startswith("<frozen"):
-            return Location(name, frame.f_lineno)
+        if users(frame.f_code.co_filename):
+            return Location(frame.f_code.co_filename, frame.f_lineno)
         frame = frame.f_back  # type: ignore[assignment]
     return None
 
@@ -56,7 +70,7 @@ def place_of(exc: BaseException) -> Location | None:
     import traceback  # only for an error: start-up time
 
     for summary in reversed(traceback.extract_tb(exc.__traceback__)):
-        if not summary.filename.startswith(OURS) and not summary.filename.startswith("<"):
+        if users(summary.filename):
             return Location(summary.filename, summary.lineno or 0)
     return None
 

@@ -77,10 +77,12 @@ def perform_text(context: LaunchContext, text: Text_) -> str:
         value = text[0].perform(context)
         return value if isinstance(value, str) else _not_text(text[0], value)
     values = [s.perform(context) for s in text]
-    for sub, value in zip(text, values, strict=True):
-        if not isinstance(value, str):
-            _not_text(sub, value)
-    return "".join(values)
+    try:
+        return "".join(values)
+    except TypeError:  # a substitution of the user's gave something else than text
+        sub, value = next((s, v) for s, v in zip(text, values, strict=True)
+                          if not isinstance(v, str))
+        return _not_text(sub, value)
 
 
 def _not_text(sub: Substitution, value: object) -> str:

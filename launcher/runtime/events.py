@@ -23,7 +23,7 @@ class RunningProcessEvent(Event):
     def __init__(self, *, action: Any, name: str, cmd: Sequence[str], cwd: str | None,
                  env: Mapping[str, str] | None, pid: int | None) -> None:
         self.action, self.process_name = action, name
-        self.cmd, self.cwd, self.env, self.pid = list(cmd), cwd, env, pid
+        self.cmd, self.cwd, self.env, self.pid = cmd, cwd, env, pid
 
     @property
     def execute_process_action(self) -> Any:

@@ -85,3 +85,11 @@ def test_loading_a_python_launch_file_leaves_no_bytecode_beside_it(tmp_path, mon
     import sys
 
     assert sys.dont_write_bytecode is False  # put back
+
+
+def test_get_launch_arguments_finds_the_declared_arguments_inside_groups_too():
+    from launcher.api import DeclareLaunchArgument, GroupAction, LaunchDescription, LogInfo
+
+    description = LaunchDescription([DeclareLaunchArgument("a"), GroupAction(
+        [DeclareLaunchArgument("b"), LogInfo(msg="x")])])
+    assert [argument.name for argument in description.get_launch_arguments()] == ["a", "b"]
