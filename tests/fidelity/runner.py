@@ -71,7 +71,8 @@ class Tool:
 
 def _wait(proc: subprocess.Popen, out: Path, output: Path, stop_after: float | None) -> int | str:
     """`stop_after` counts from the first probe record (a loaded machine starts the tool's
-    first process later, not its own timing), or from the start when none has come."""
+    first process later, not its own timing); until one comes, only LONGEST ends the run
+    (every case with a `stop_after` starts a process)."""
     started = last_change = time.monotonic()
     first: float | None = None  # when the first probe record came
     seen = (-1, -1)
@@ -87,7 +88,7 @@ def _wait(proc: subprocess.Popen, out: Path, output: Path, stop_after: float | N
         if first is None and state[0] > 0:
             first = now
         settled = stop_after is None and state[0] > 0 and now - last_change > QUIET
-        if settled or (stop_after is not None and now - (first or started) > stop_after) \
+        if settled or (stop_after is not None and first is not None and now - first > stop_after) \
                 or now - started > LONGEST:
             _interrupt(proc)
             return "interrupted"

@@ -310,7 +310,7 @@ def test_ros_gz_sim_demos_camera_launch_bridges_images_unchanged(sensor_ws):
         sensor_ws.wait_for_output("bridging 2 of 2 entries", 60, "demo.out")
         image = sensor_ws.run("topic", "echo", "/camera", "sensor_msgs/msg/Image", "--once",
                               "--no-arr", "--timeout", "60", timeout=90)
-        assert image.returncode == 0, image.stderr
+        assert image.returncode == 0, image.stderr + sensor_ws.output("demo.out")
         assert "width: 320" in image.stdout and "height: 240" in image.stdout
         assert "encoding: rgb8" in image.stdout and "length: 230400" in image.stdout
         info = sensor_ws.run("topic", "echo", "/camera_info", "sensor_msgs/msg/CameraInfo",
