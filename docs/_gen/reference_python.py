@@ -23,7 +23,9 @@ MODULES = ["rclpy/__init__.py", "rclpy/node.py", "rclpy/executors.py", "rclpy/pu
            "tf2_ros/transform_listener.py", "tf2_ros/transform_broadcaster.py",
            "tf2_ros/static_transform_broadcaster.py", "tf2_geometry_msgs/__init__.py",
            "tf/__init__.py", "actionlib/simple_action_client.py",
-           "actionlib/simple_action_server.py", "message_filters/__init__.py",
+           "actionlib/simple_action_server.py", "actionlib/action_client.py",
+           "actionlib/comm_state_machine.py", "actionlib/action_server.py",
+           "actionlib/server_goal_handle.py", "message_filters/__init__.py",
            "cv_bridge/__init__.py", "sensor_msgs_py/point_cloud2.py"]
 
 TITLE = """# Python APIs for nodes

@@ -15,6 +15,9 @@ ROS1_MASTER = ("ROS 1's XML-RPC master and node servers: launcher's nodes meet o
                "and their parameters live on launcher's parameter server.")
 ROS1_WIRE = ("ROS 1's wire protocols (TCPROS, its serialisation and per-connection statistics): "
              "launcher's messages and services travel on its Zenoh bus, serialised as CDR.")
+# what rospy.impl.tcpros_service takes from tcpros_base, which tcpros_base defines
+TCPROS_TRANSPORT = ("TCPROSTransport", "TCPROSTransportProtocol", "get_tcpros_server_address",
+                    "recv_buff", "start_tcpros_server")
 ROS1_ROSOUT = ("rospy's /rosout and /clock plumbing: launcher's type store has no "
                "rosgraph_msgs/Log, rospy prints its log, and the node's clock follows /clock.")
 ROSTEST_ROSLAUNCH = ("rostest's roslaunch-based runner (a ROS 1 launch parent and master per test "
@@ -56,15 +59,26 @@ LEFT_OUT: dict[str, str] = {
     **{f"{package}.{package}_s__rosidl_typesupport_{kind}": TYPESUPPORT
        for package in ("lifecycle_msgs", "rcl_interfaces")
        for kind in ("c", "fastrtps_c", "introspection_c")},
-    **dict.fromkeys(("rospy.impl.masterslave", "rospy.impl.init", "rospy.msproxy",
+    **dict.fromkeys(("rospy.impl.init", "rospy.msproxy",
                      "rospy.impl.registration:RegManager", "rospy:MasterProxy",
-                     "rospy:get_master", "rospy.client:get_master", "rostest:get_master"),
+                     "rospy:get_master", "rospy.client:get_master", "rostest:get_master",
+                     *(f"rospy.impl.masterslave:{name}" for name in (
+                         "ROSHandler", "apivalidate", "is_publishers_list", "LOG_API",
+                         "RegManager"))),
                     ROS1_MASTER),
-    **dict.fromkeys(("rospy.impl.tcpros", "rospy.impl.tcpros_base", "rospy.impl.tcpros_pubsub",
-                     "rospy.impl.tcpros_service", "rospy.impl.statistics",
+    **dict.fromkeys(("rospy.impl.tcpros", "rospy.impl.tcpros_pubsub", "rospy.impl.statistics",
                      "rospy.topics:QueuedConnection", "rospy.topics:get_tcpros_handler",
                      "rospy.topics:SubscriberStatisticsLogger",
-                     "rospy.msg", "rospy:AnyMsg", "rospy.topics:serialize_message"),
+                     "rospy.msg", "rospy:AnyMsg", "rospy.topics:serialize_message",
+                     *(f"rospy.impl.{module}:{name}" for module in ("tcpros_base",
+                                                                     "tcpros_service")
+                       for name in TCPROS_TRANSPORT),
+                     *(f"rospy.impl.tcpros_base:{name}" for name in (
+                         "TCPServer", "TCPROSServer", "init_tcpros_server",
+                         "deserialize_messages", "serialize_message")),
+                     *(f"rospy.impl.tcpros_service:{name}" for name in (
+                         "ServiceImpl", "TCPService", "TCPROSServiceClient",
+                         "service_connection_handler"))),
                     ROS1_WIRE),
     **dict.fromkeys(("rospy.impl.rosout", "rospy.impl.simtime"), ROS1_ROSOUT),
     **dict.fromkeys(("rostest.rostest_parent", "rostest.runner",

@@ -66,17 +66,22 @@ class ServiceManager:
 set_service_manager(ServiceManager())
 
 
-def _response(service_class: Any, result: Any) -> Any:
-    response_class = service_class.Response
-    if isinstance(result, response_class):
-        return result
-    if result is None:
+def convert_return_to_response(response: Any, response_class: Any) -> Any:
+    """A service handler's return as a `response_class` message: the message itself, or
+    one made from a dict's fields, a list's or tuple's, or a single value (None:
+    ServiceException)."""
+    if isinstance(response, response_class):
+        return response
+    if response is None:
         raise ServiceException("service handler returned None")
-    if isinstance(result, dict):
-        return response_class(**result)
-    if isinstance(result, list | tuple):
-        return response_class(*result)
-    return response_class(result)
+    try:
+        if isinstance(response, dict):
+            return response_class(**response)
+        if isinstance(response, list | tuple):
+            return response_class(*response)
+        return response_class(response)
+    except (AttributeError, TypeError) as exc:
+        raise ServiceException(f"handler returned invalid value: {exc}") from None
 
 
 class Service:
@@ -87,7 +92,7 @@ class Service:
         node = need_node("Service")
 
         def answer(request: Any, _given: Any) -> Any:
-            return _response(service_class, handler(request))
+            return convert_return_to_response(handler(request), service_class.Response)
         self._bus = node.create_service(self.type, name, answer, make=rosidl.make,
                                         new_response=service_class.Response)
         self.resolved_name, self.uri = self._bus.name, None  # (no ROSRPC URI: the bus's)
