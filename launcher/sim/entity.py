@@ -52,5 +52,6 @@ class Entity:
     dof: int = -1
     placed: dict[str, Pose] = field(default_factory=dict)  # static roots as loaded
     spawned: bool = False  # added while the sim runs (not a model of the world file)
+    static: bool = False  # Gazebo's <static>: it never moves (one held by a joint may)
     start: dict[str, list[float]] = field(default_factory=dict)  # joint -> qpos, its keyframe
     info: Any = None  # what simulation_interfaces' SetEntityInfo gave it (category, tags, …)

@@ -29,6 +29,7 @@ class WorldModel:
     roots: list[str]
     offset: Pose = IDENTITY
     plugins: list[PluginConfig] = field(default_factory=list)
+    static: bool = False  # an SDF <static> model; an MJCF body with no joint in it
 
 
 @dataclass
@@ -61,6 +62,7 @@ def load_world_file(path: Path, values: Mapping[str, str] | None = None,
 
 
 def _from_sdf(world: sdf.SdfWorld, path: Path) -> LoadedWorld:
-    models = [WorldModel(m.name, m.root, m.roots, m.offset, m.plugins) for m in world.models]
+    models = [WorldModel(m.name, m.root, m.roots, m.offset, m.plugins, m.static)
+              for m in world.models]
     return LoadedWorld(world.spec, str(path), world.plugins, models, world.real_time_factor,
                        world.warnings, world.spherical_coordinates)

@@ -31,6 +31,7 @@ class PluginHost:
         self.all: list[Plugin] = []
         self.pre: list[Plugin] = []  # those with a pre_step
         self.post: list[Plugin] = []  # those with a post_step
+        self.idle: list[Plugin] = []  # those with a paused hook
 
     def make(self, config: PluginConfig, entity: Any) -> Plugin | None:
         """The plugin a config names; None (logged) when it cannot run here."""
@@ -116,3 +117,4 @@ class PluginHost:
         # only these bound the batches: a plugin without a post_step (one that spawns a
         # model at load) would otherwise make every batch a single step
         self.post = [p for p in found if type(p).post_step is not Plugin.post_step]
+        self.idle = [p for p in found if type(p).paused is not Plugin.paused]

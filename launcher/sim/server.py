@@ -14,8 +14,9 @@ once the nodes on sim time and the bridges have handled the one before (bus/lock
 Topics (sim-native types from the mujoco_sim package, Gazebo's names):
   /clock and /world/<w>/clock                Clock, after every batch of steps (paused: 20 Hz)
   /world/<w>/pose/info, /world/<w>/model_states   every entity (world_state plugin)
+  /world/<w>/dynamic_pose/info               every entity that is not static (world_state)
   /model/<m>/odometry, /model/<m>/tf, /model/<m>/cmd_vel   diff drive plugins
-  /world/<w>/model/<m>/joint_state           joint state plugins
+  /world/<w>/model/<m>/joint_state           joint state plugins (paused too, as Gazebo's)
 Services: /world/<w>/control, /world/<w>/create, /world/<w>/remove, /world/<w>/set_pose,
 /world/<w>/state (every entity's pose and twist now, paused or not), /world/<w>/snapshot.
 Spawns that arrive together (creates, the standard API's) are added with one recompile.
@@ -186,6 +187,7 @@ class SimServer:
             if self.paused:  # serve the bus; the clock says "paused" 20 times a second
                 if not node.spin_once(0.05):
                     self.publish_clock()
+                    self.world.physics.idle()  # (a loaded world may have replaced it)
                 elif self.view is not None:  # (a busy bus: the page is still served)
                     self.view.follow(self.world, self.paused)
                 continue

@@ -1,6 +1,7 @@
 """Stepping the physics in batches: the plugins' pre_step hooks, `mj_step` N times, the
 post_step hooks that are due, and MuJoCo's instability warnings turned into one logged event
-each (MuJoCo resets the state; the sim goes on)."""
+each (MuJoCo resets the state; the sim goes on). While the world is paused, `idle` runs the
+plugins' paused hooks instead."""
 
 from __future__ import annotations
 
@@ -61,6 +62,15 @@ class Physics:
                     plugin.post_step(model, data)
                 except Exception as exc:
                     self.plugins.failed(plugin, "post_step", exc)
+
+    def idle(self) -> None:
+        """The world is paused: the plugins' paused hooks (those that publish while paused,
+        as Gazebo's JointStatePublisher does)."""
+        for plugin in self.plugins.idle:
+            try:
+                plugin.paused(self.model, self.data)
+            except Exception as exc:
+                self.plugins.failed(plugin, "paused", exc)
 
     def _check_unstable(self) -> None:
         data = self.data

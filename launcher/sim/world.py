@@ -116,7 +116,7 @@ class World:
     def _add_world_model(self, model: WorldModel) -> None:
         anchors = [self.spec.body(root) for root in model.roots]
         entity = Entity(model.name, anchors, model.root, self.label, offset=model.offset,
-                        roots=list(model.roots))
+                        roots=list(model.roots), static=model.static)
         entity.plugins = [p for p in (self.plugins.make(c, entity) for c in model.plugins) if p]
         for plugin in list(entity.plugins):
             plugin.spec_prefix = f"{model.name}/"
@@ -243,7 +243,8 @@ class World:
         child, roots = _child_of(template, request.joints or {})
         root = template.root or roots[0].name
         entity = Entity(name, [], f"{name}/{root}", template.label, offset=template.offset,
-                        roots=[f"{name}/{body.name}" for body in roots], spawned=True)
+                        roots=[f"{name}/{body.name}" for body in roots], spawned=True,
+                        static=template.static and _jointless(child.worldbody))
         configs = [dataclasses.replace(c, namespace=request.namespace) for c in template.plugins] \
             if request.namespace else template.plugins
         plugins = [p for p in (self.plugins.make(c, entity) for c in configs) if p]
@@ -426,9 +427,16 @@ def _check_joints(spec: mujoco.MjSpec, joints: Mapping[str, float], label: str) 
 
 
 def _top_level_models(spec: mujoco.MjSpec) -> list[WorldModel]:
-    """An MJCF world's models: its top-level bodies."""
-    return [WorldModel(body.name, body.name, [body.name]) for body in spec.worldbody.bodies
-            if body.name]
+    """An MJCF world's models: its top-level bodies (static: none of its bodies has a
+    joint)."""
+    return [WorldModel(body.name, body.name, [body.name], static=_jointless(body))
+            for body in spec.worldbody.bodies if body.name]
+
+
+def _jointless(body: Any) -> bool:
+    """Nothing in `body` can move: not one joint in it (a URDF robot anchored to `world`
+    has no free joint, but its arm moves)."""
+    return not body.find_all(mujoco.mjtObj.mjOBJ_JOINT)
 
 
 def _compile(spec: mujoco.MjSpec, label: str) -> Any:

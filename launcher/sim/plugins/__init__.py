@@ -16,10 +16,11 @@ the entity's names in `spec` carry `spec_prefix`, empty for a spawned descriptio
 `<entity>/` for a model of the world file: use `joint_names(spec)` and `in_spec(name)`),
 `load()` (after compiling: publishers, subscriptions), `bind(model, data)` after every
 recompile, `pre_step` before each batch of steps, `post_step` after a batch once sim time has
-reached the plugin's `next_update`, `reset()` on a world reset and `close()` when its entity
-is removed. `next_update` lets the sim step in batches up to the next time a plugin must
-run; leave it at 0.0 to run after every step. Publishers report `get_subscription_count()`:
-skip building messages nobody receives.
+reached the plugin's `next_update`, `paused(model, data)` some 20 times a second while the
+world is paused (Gazebo runs its systems' PostUpdate paused too), `reset()` on a world reset
+and `close()` when its entity is removed. `next_update` lets the sim step in batches up to
+the next time a plugin must run; leave it at 0.0 to run after every step. Publishers report
+`get_subscription_count()`: skip building messages nobody receives.
 """
 
 from __future__ import annotations
@@ -147,6 +148,9 @@ class Plugin:
         pass
 
     def post_step(self, model: Any, data: Any) -> None:
+        pass
+
+    def paused(self, model: Any, data: Any) -> None:
         pass
 
     def reset(self) -> None:

@@ -3,7 +3,8 @@
 Gazebo's gz-sim-joint-state-publisher-system parameters: `joint_name` (repeatable; default all
 hinge and slide joints), `topic` (default `/world/<world>/model/<name>/joint_state`), and
 `update_rate` (Hz of sim time, default 50). Names are published without the entity prefix,
-as they are in the URDF.
+as they are in the URDF. While the world is paused it goes on publishing, as gz-sim's does
+(its PostUpdate runs paused), so a world opened paused already has its joints' state.
 """
 
 from __future__ import annotations
@@ -56,6 +57,10 @@ class JointStatePublisher(PeriodicPublisher):
 
     def measure(self, model: Any, data: Any) -> Any:
         return self.state(self.sim.transport, data.time, data)
+
+    def paused(self, model: Any, data: Any) -> None:
+        if self.publisher.get_subscription_count():
+            self.publisher.publish(self.measure(model, data))
 
     def state(self, transport: Any, now: float, data: Any) -> Any:
         """The message of the joints' state now."""

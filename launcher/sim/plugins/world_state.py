@@ -1,7 +1,9 @@
 """The world's state topics: every entity's pose and velocity, at `update_rate` Hz of sim time.
 
-`/world/<w>/pose/info` (Pose_V: each entity's root pose in the world frame, Gazebo's name)
-and `/world/<w>/model_states` (ModelStates: name, pose, twist, as ROS 1's
+`/world/<w>/pose/info` (Pose_V: each entity's root pose in the world frame, Gazebo's name),
+`/world/<w>/dynamic_pose/info` (the same for the entities that are not static, as Gazebo's
+scene broadcaster has it: a model held to the world by a joint is not static, its links may
+move) and `/world/<w>/model_states` (ModelStates: name, pose, twist, as ROS 1's
 /gazebo/model_states). The sim loads it into every world.
 """
 
@@ -25,6 +27,8 @@ class WorldState(Plugin):
         self.rate = self.parameters(Parameters).update_rate
         transport, world = self.sim.transport, self.sim.world_name
         self.poses = transport.publisher("mujoco_sim/msg/PoseV", f"/world/{world}/pose/info")
+        self.dynamic = transport.publisher("mujoco_sim/msg/PoseV",
+                                           f"/world/{world}/dynamic_pose/info")
         self.states = transport.publisher("mujoco_sim/msg/ModelStates",
                                           f"/world/{world}/model_states")
         self.links = transport.publisher("mujoco_sim/msg/ModelStates",
@@ -39,10 +43,11 @@ class WorldState(Plugin):
         if self.rate <= 0 or not schedule.tick(self, now, self.rate):
             return
         want_poses = self.poses.get_subscription_count() > 0
+        want_dynamic = self.dynamic.get_subscription_count() > 0
         want_states = self.states.get_subscription_count() > 0
         if self.links.get_subscription_count() > 0:
             self.publish_links(model, data)
-        if not (want_poses or want_states):
+        if not (want_poses or want_dynamic or want_states):
             return
         names, positions, quats = self.sim.placement.poses()
         transport = self.sim.transport
@@ -50,9 +55,12 @@ class WorldState(Plugin):
                  for p, q in zip(positions, quats, strict=True)]
         header = transport.header(now, "world")
         if want_poses:
-            self.poses.publish(transport.message("mujoco_sim/msg/PoseV", header=header,
-                                                 name=names, parent=["world"] * len(names),
-                                                 pose=poses))
+            self.publish_poses(self.poses, header, names, poses)
+        if want_dynamic:
+            entities = self.sim.entities
+            moving = [i for i, name in enumerate(names) if not entities[name].static]
+            self.publish_poses(self.dynamic, header, [names[i] for i in moving],
+                               [poses[i] for i in moving])
         if not want_states:
             return
         twists = [transport.message("geometry_msgs/msg/Twist",
@@ -61,6 +69,12 @@ class WorldState(Plugin):
                   for velocity in self.sim.placement.velocities(names)]
         self.states.publish(transport.message("mujoco_sim/msg/ModelStates", header=header,
                                               name=names, pose=poses, twist=twists))
+
+    def publish_poses(self, publisher: Any, header: Any, names: list[str],
+                      poses: list[Any]) -> None:
+        publisher.publish(self.sim.transport.message(
+            "mujoco_sim/msg/PoseV", header=header, name=names, parent=["world"] * len(names),
+            pose=poses))
 
     def publish_links(self, model: Any, data: Any) -> None:
         """Every link of every entity as `entity::link` (gazebo_ros's link_states): the pose
@@ -90,4 +104,5 @@ class WorldState(Plugin):
     def close(self) -> None:
         self.links.destroy()
         self.poses.destroy()
+        self.dynamic.destroy()
         self.states.destroy()

@@ -70,8 +70,10 @@ class Info:
 
 
 def info_of(entity: Any) -> Info:
+    """Its info as given, else its category: static (Gazebo's `<static>`; a model a joint
+    holds to the world is not, as its arm may move), a robot (it has plugins), an object."""
     if entity.info is None:
-        category = STATIC_OBJECT if entity.dof < 0 else ROBOT if entity.plugins else OBJECT
+        category = STATIC_OBJECT if entity.static else ROBOT if entity.plugins else OBJECT
         entity.info = Info(category)
     return entity.info
 
