@@ -54,7 +54,13 @@ class ParseError(LaunchError):
     """The launch file (or a config file) is not valid."""
 
 
-class SubstitutionError(LaunchError):
+class SubstitutionFailure(RuntimeError):
+    """launch.substitutions.SubstitutionFailure: a substitution could not be performed (what
+    code of the user's catches; launcher's own failures are SubstitutionErrors, one kind of
+    it)."""
+
+
+class SubstitutionError(LaunchError, SubstitutionFailure):
     """A substitution could not be performed."""
 
 

@@ -192,7 +192,7 @@ def Node(*, executable: Any, package: Any = None, name: Any = None, namespace: A
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
          arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (),
          _kind: type = _node.Node, **kw: Any) -> Any:
-    return _kind(package=package, executable=executable, node_name=name,
+    return _kind(package=package, executable=executable, given_name=name,
                  namespace=namespace, exec_name=exec_name, parameters=_parameters(parameters),
                  remappings=list(remappings), arguments=list(arguments) or None,
                  ros_arguments=list(ros_arguments) or None, **kw)

@@ -4,13 +4,14 @@ ExecuteLocal (ExecuteProcess with its process described apart)."""
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Callable
 from typing import Any
 
+from launcher.description import made_by_code
 from launcher.description.action import Action
 from launcher.description.actions.executable import ExecuteProcess
 from launcher.description.substitution import perform_text, to_text
+from launcher.errors import ExecutionError
 from launcher.runtime.context import LaunchContext
 
 
@@ -67,34 +68,22 @@ class OpaqueCoroutine(_Plain):
         self.ignore_context = ignore_context
 
     def execute(self, context: LaunchContext) -> None:
-        import asyncio
-
         arguments = self.args if self.ignore_context else [context, *self.args]
-        loop = asyncio.new_event_loop()
-        task = loop.create_task(self.coroutine(*arguments, **self.kwargs))
+        coroutine = self.coroutine(*arguments, **self.kwargs)
+        coroutines = None if context.service is None else context.service.coroutines
+        if coroutines is None:  # (a launch only inspected: nothing runs)
+            coroutine.close()
+            return
+        coroutines.run(_located(coroutine))
 
-        def run() -> None:
-            try:
-                loop.run_until_complete(task)
-            except (asyncio.CancelledError, Exception):  # noqa: BLE001 (said below)
-                if not task.cancelled() and task.exception() is not None and \
-                        context.service is not None:
-                    exc = task.exception()
-                    context.service.loop.call_soon_threadsafe(
-                        context.log, "ERROR", f"OpaqueCoroutine: {type(exc).__name__}: {exc}")
-            finally:
-                loop.close()
 
-        thread = threading.Thread(target=run, daemon=True, name="OpaqueCoroutine")
-        thread.start()
-        if context.service is not None:
-            from launcher.description.actions.event_handlers import OnShutdown
-
-            def cancel(_event: Any, _context: Any) -> None:
-                loop.call_soon_threadsafe(task.cancel)
-                thread.join(timeout=5)
-
-            context.register_event_handler(OnShutdown(on_shutdown=cancel))
+async def _located(coroutine: Any) -> Any:
+    """The coroutine; its failure said at the line of the user's code that raised."""
+    try:
+        return await coroutine
+    except Exception as exc:
+        raise ExecutionError(f"OpaqueCoroutine raised {type(exc).__name__}: {exc}",
+                             made_by_code.place_of(exc)) from exc
 
 
 class ExecuteLocal(ExecuteProcess):

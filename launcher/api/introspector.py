@@ -67,7 +67,10 @@ def format_action(action: Any) -> list[str]:
     if isinstance(action, RegisterEventHandler):
         return [f"RegisterEventHandler('{action.event_handler}'):",
                 *indent(format_event_handler(action.event_handler))]
-    return [f"Action('{action}')"]
+    # (launch's actions print as objects; launcher's own would print their fields)
+    shown = object.__repr__(action) if type(action).__module__.startswith("launcher.") \
+        else str(action)
+    return [f"Action('{shown}')"]
 
 
 def format_entities(entities: Iterable[Any]) -> list[str]:

@@ -217,8 +217,7 @@ def get_node_name_count(context: LaunchContext, node_name: str) -> int:
 # --- lifecycle --------------------------------------------------------------------------------
 def matches_node_name(node_name: str) -> Callable[[Any], bool]:
     """launch_ros.events.matches_node_name: the lifecycle node action of that full name."""
-    return lambda action: getattr(action, "node_fqn", None) == node_name or \
-        getattr(action, "node_name", None) == node_name
+    return lambda action: action.node_name == node_name  # (launch_ros's: once it has run)
 
 
 def match_node_name_goal(node_name: str, goal_state: str) -> Callable[[Any], bool]:

@@ -19,7 +19,7 @@ from launcher.description.substitutions import expression as _expression
 from launcher.description.substitutions import files as _files
 from launcher.description.substitutions import logic as _logic
 from launcher.description.substitutions import packages as _packages
-from launcher.errors import SubstitutionError
+from launcher.errors import SubstitutionError, SubstitutionFailure  # noqa: F401 (launch.substitutions has it)
 from launcher.runtime.context import LaunchContext
 
 
@@ -54,13 +54,6 @@ class Substitution(_base.Substitution):
         return cls, {}
 
 
-class SubstitutionFailure(RuntimeError):
-    """launch.substitutions.SubstitutionFailure: a substitution could not be performed."""
-
-    def __init__(self, msg: str) -> None:
-        super().__init__(msg)
-
-
 def _joined(text: Any) -> str:
     """launch's describe() of a list of substitutions: each one's, joined with ' + '."""
     return " + ".join(f"'{part.text}'" if type(part) is Text else part.describe()
@@ -77,7 +70,15 @@ def _set(obj: object, **fields: Any) -> None:
     object.__setattr__(obj, "where", None)
 
 
-class TextSubstitution(Text):
+class _AnyText(type):
+    """Text that launcher's own descriptions hold is a TextSubstitution to user code
+    (`isinstance(argument.default_value[0], TextSubstitution)`), as in launch."""
+
+    def __instancecheck__(cls, instance: Any) -> bool:
+        return isinstance(instance, Text)
+
+
+class TextSubstitution(Text, metaclass=_AnyText):
     def __init__(self, *, text: str) -> None:
         _set(self, text=str(text))
 

@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from typing import Any
 
 from launcher.description.action import LaunchDescriptionEntity
-from launcher.description.substitution import Substitution, perform_text, to_text
+from launcher.description.substitution import Substitution, Text, perform_text, to_text
 
 
 def is_a(obj: Any, entity_type: Any) -> bool:
@@ -28,19 +28,22 @@ def isclassinstance(obj: Any) -> bool:
 def ensure_argument_type(argument: Any, types: Any, argument_name: str,
                          caller: str | None = None) -> None:
     """Raise TypeError unless `argument` is of one of `types` (launch's check and message)."""
-    kinds = list(types) if isinstance(types, list | tuple) else [types]
-    if any(isinstance(argument, kind) if isinstance(kind, type) else argument == kind
-           for kind in kinds):
+    kinds = list(types) if isinstance(types, Iterable) else [types]
+    if any(isinstance(argument, kind) for kind in kinds if isinstance(kind, type)):
         return
-    names = ", ".join(f"'{getattr(kind, '__name__', kind)}'" for kind in kinds)
-    where = f"{caller}: " if caller else ""
-    raise TypeError(f"{where}Expected '{argument_name}' to be one of [{names}], but got "
-                    f"'{argument}' of type '{type(argument)}'")
+    who = "E" if caller is None else f"'{caller}' e"
+    raise TypeError(f"{who}xpected '{argument_name}' to be one of "
+                    f"[{', '.join(str(kind) for kind in kinds)}], but got '{argument}' of type "
+                    f"'{type(argument)}'")
 
 
 def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:
-    """Text, a substitution, or a list of them, as a list of substitutions."""
-    return list(to_text(subs))
+    """Text, a substitution, or a list of them, as a list of substitutions (text as
+    launch.substitutions.TextSubstitution, as launch gives it)."""
+    from launcher.api.substitutions import TextSubstitution
+
+    return [TextSubstitution(text=item.text) if type(item) is Text else item
+            for item in to_text(subs)]
 
 
 def perform_substitutions(context: Any, subs: Any) -> str:

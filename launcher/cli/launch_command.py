@@ -109,6 +109,7 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
     service = launch_service(configurations, index, debug=args.debug,
                              noninteractive=args.noninteractive,
                              launch_prefix=args.launch_prefix)
+    service.context.argv = [f"{name}:={value}" for name, value in configurations.items()]
     return service.run(LaunchDescription(root))
 
 

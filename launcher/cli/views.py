@@ -100,9 +100,7 @@ def show_arguments(description: LaunchDescription, configurations: dict[str, str
             lines.append("\n    (none)" if not title else "    (none)")
         for arg in args:
             lines.append(f"\n    '{arg.name}':")
-            lines.append(f"        {arg.description or 'no description given'}")
-            if arg.choices:
-                lines.append(f"        Valid choices are: {arg.choices}")
+            lines.append(f"        {arg.description}")
             lines.append(f"        ({arg.describe_default()})")
     if notes:
         lines += ["", "Includes whose arguments could not be listed:", *notes]

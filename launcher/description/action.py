@@ -12,6 +12,7 @@ from launcher.description.fields import normalize
 from launcher.errors import ExecutionError, LaunchError, Location
 from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext, Snapshot
+from launcher.runtime.events import ExecutionComplete
 
 
 class LaunchDescriptionEntity:
@@ -19,17 +20,29 @@ class LaunchDescriptionEntity:
     descriptions themselves). `made_at`: where code of the user's made it, if it did."""
 
     made_at: Location | None = None
+    condition: Condition | None = None
+    where: Location | None = None
+    tags: tuple[str, ...] = ()
 
     def __new__(cls, *args: Any, **kwargs: Any) -> Any:
         entity = super().__new__(cls)
         made_by_code.note(entity)
         return entity
 
+    def visit(self, context: LaunchContext) -> Sequence[LaunchDescriptionEntity] | None:
+        """The entities to visit next; a subclass of the user's says what it does here."""
+        raise NotImplementedError
+
     def describe(self) -> str:
-        return self.__repr__()
+        """launch's: the object itself (a class of the user's may say more)."""
+        return object.__repr__(self)
 
     def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return []
+
+    def sub_actions(self) -> Sequence[LaunchDescriptionEntity]:
+        """Entities nested in this one, for static walks (`--print`, `--show-args`)."""
+        return ()
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.get_sub_entities()
@@ -51,6 +64,7 @@ class Action(LaunchDescriptionEntity):
     condition: Condition | None = field(default=None, repr=False)
     where: Location | None = field(default=None, repr=False, compare=False)
     tags = ()  # set by @action
+    completes_later = False  # its ExecutionComplete comes when its work ends (a process's)
 
     def __post_init__(self) -> None:
         normalize(self)
@@ -59,7 +73,14 @@ class Action(LaunchDescriptionEntity):
         try:
             if self.condition is not None and not self.condition.evaluate(context):
                 return None
-            return self.execute(context)
+            try:
+                if type(self).__module__.startswith("launcher."):
+                    return self.execute(context)
+                with context.process_environment():  # an action of the user's own
+                    return self.execute(context)
+            finally:
+                if not self.completes_later:
+                    _completed(self, context)
         except LaunchError as exc:
             raise exc.at(self.where or self.made_at) from None
         except Exception as exc:  # code of the user's (an action's execute, a callback)
@@ -73,10 +94,6 @@ class Action(LaunchDescriptionEntity):
 
     def execute(self, context: LaunchContext) -> Sequence[Action] | None:
         raise NotImplementedError
-
-    def sub_actions(self) -> Sequence[Action]:
-        """Actions nested in this one, for static walks (`--print`, `--show-args`)."""
-        return ()
 
     def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return list(self.sub_actions())
@@ -97,6 +114,16 @@ class Action(LaunchDescriptionEntity):
         elif denied is not None:
             kwargs["condition"] = UnlessCondition(parser.parse_substitution(denied))
         return Action, kwargs
+
+
+def _completed(action: Action, context: LaunchContext) -> None:
+    """launch's ExecutionComplete for an action done when executed, for the handlers that
+    want it (made only when one does)."""
+    if context.service is None:
+        return
+    event = ExecutionComplete(action=action)
+    if context.would_handle_event(event):
+        context.emit_event(event)
 
 
 @dataclass(kw_only=True, eq=False)

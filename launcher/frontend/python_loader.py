@@ -20,7 +20,7 @@ from typing import Any, TypeVar
 
 from launcher import compat
 from launcher.description import made_by_code
-from launcher.description.action import Action, LaunchDescription
+from launcher.description.action import LaunchDescription, LaunchDescriptionEntity
 from launcher.errors import Location, ParseError
 
 _counter = itertools.count()
@@ -104,7 +104,7 @@ def _check_entities(description: LaunchDescription, where: Location) -> None:
         for number, entity in enumerate(todo.pop().actions, 1):
             if isinstance(entity, LaunchDescription):
                 todo.append(entity)
-            elif not isinstance(entity, Action):
+            elif not isinstance(entity, LaunchDescriptionEntity):
                 raise ParseError(f"the LaunchDescription holds {entity!r:.60} "
                                  f"({type(entity).__name__}) as entry {number}; expected launch "
                                  f"actions (launch.actions…, launch_ros.actions…)", where)

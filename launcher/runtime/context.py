@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping, MutableMapping
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple, Protocol, runtime_checkable
 
@@ -50,6 +51,7 @@ class Runtime(Protocol):
 
     launch_prefix: str
     shutting_down: bool
+    coroutines: Any  # the launch's asyncio loop and its coroutines (runtime/coroutines.py)
 
     def next_label(self, base: str) -> str: ...
 
@@ -59,6 +61,10 @@ class Runtime(Protocol):
     def hold_graph(self) -> None: ...
 
     def register_handler(self, handler: Any) -> None: ...
+
+    def would_handle(self, event: Any) -> bool: ...
+
+    def emit(self, event: Any) -> None: ...
 
     def watch_lifecycle(self, node: str, origin: Any) -> None: ...
 
@@ -100,6 +106,7 @@ class LaunchContext:
         argv: list[str] | None = None,
         noninteractive: bool = False,
     ) -> None:
+        self._in_process = False  # (see process_environment)
         env = dict(os.environ if environment is None else environment)
         self.initial_environment = dict(env)
         self._scopes = [Scope(dict(configurations or {}), env)]
@@ -138,8 +145,29 @@ class LaunchContext:
         return self.scope.configurations
 
     @property
-    def environment(self) -> dict[str, str]:
-        return self.scope.environment
+    def environment(self) -> Any:
+        """The environment new processes get: os.environ itself while code of the user's
+        runs (launch's context.environment is the process's), else the scope's."""
+        return os.environ if self._in_process else self.scope.environment
+
+    @contextmanager
+    def process_environment(self) -> Iterator[None]:
+        """While code of the user's runs (an OpaqueFunction, an action or a handler of
+        theirs), os.environ is the launch's environment, as in launch, where the two are one:
+        what the code reads there is what SetEnvironmentVariable set, and what it sets in
+        either is kept. launcher's own os.environ comes back after."""
+        if self._in_process:
+            yield
+            return
+        own = dict(os.environ)
+        _replace(os.environ, self.scope.environment)
+        self._in_process = True
+        try:
+            yield
+        finally:
+            self._in_process = False
+            _replace(self.scope.environment, os.environ)
+            _replace(os.environ, own)
 
     def push_scope(self, forwarding: bool = True, keep: Mapping[str, str] | None = None) -> None:
         scope = self.scope.copy()
@@ -211,6 +239,13 @@ class LaunchContext:
         return substitution.perform(self)
 
     @property
+    def asyncio_loop(self) -> Any:
+        """launch's context.asyncio_loop: the launch's asyncio loop, on a thread of its own
+        (None for a launch only inspected)."""
+        coroutines = None if self.service is None else self.service.coroutines
+        return None if coroutines is None else coroutines.asyncio_loop
+
+    @property
     def is_shutdown(self) -> bool:
         return self.service is not None and self.service.shutting_down
 
@@ -243,9 +278,19 @@ class LaunchContext:
 
     def push_file(self, path: Path | None) -> None:
         self._files.append(path)
+        self._file_locals()
 
     def pop_file(self) -> None:
         self._files.pop()
+        self._file_locals()
+
+    def _file_locals(self) -> None:
+        """launch's context.locals.current_launch_file_path and …_directory: the file
+        being read."""
+        path = self.current_file
+        if path is not None:
+            self.locals.update(current_launch_file_path=str(path),
+                               current_launch_file_directory=str(path.parent))
 
     def log(self, level: str, message: str) -> None:
         """A message from an action or substitution: to the run's output and log."""
@@ -268,3 +313,13 @@ class LaunchContext:
         self._scopes.pop()
         self._locals.pop()
         self._files.pop()
+
+
+def _replace(target: MutableMapping[str, str], source: Mapping[str, str]) -> None:
+    """Make `target` hold what `source` holds, touching only what differs (os.environ's
+    writes are putenv calls)."""
+    for key in [key for key in target if key not in source]:
+        del target[key]
+    for key, value in source.items():
+        if target.get(key) != value:
+            target[key] = value

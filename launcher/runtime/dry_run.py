@@ -22,6 +22,7 @@ class DryRun:
 
     launch_prefix = ""
     shutting_down = False
+    coroutines = None  # (nothing runs: OpaqueCoroutine looks for no loop here)
 
     def __init__(self) -> None:
         self.specs: list[Any] = []
@@ -58,6 +59,12 @@ class DryRun:
         pass
 
     def register_handler(self, handler: Any) -> None:
+        pass
+
+    def would_handle(self, event: Any) -> bool:
+        return False  # (no handler is registered: nothing happens in a dry run)
+
+    def emit(self, event: Any) -> None:
         pass
 
     def watch_lifecycle(self, node: str, origin: Any) -> None:

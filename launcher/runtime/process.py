@@ -116,6 +116,7 @@ class ManagedProcess:
     _timer: Timer | None = field(default=None, repr=False)  # respawn or escalation step
     _signals_left: list[tuple[signal.Signals, float]] = field(default_factory=list, repr=False)
     _stop_requested: bool = False
+    _signalled: set[int] = field(default_factory=set, repr=False)  # sent by the launch
 
     @property
     def label(self) -> str:
@@ -209,7 +210,9 @@ class ManagedProcess:
     # --- exiting on its own -----------------------------------------------------------------
     def _on_own_exit(self) -> None:
         code, spec = self.returncode, self.spec
-        self.failed = self.failed or code != 0
+        # (ended by a signal the launch sent it, as asked: the launch caused it)
+        caused = code is not None and code < 0 and -code in self._signalled
+        self.failed = self.failed or (code != 0 and not caused)
         retries_left = spec.respawn_max_retries < 0 or self.respawns < spec.respawn_max_retries
         if spec.respawn and retries_left and not self._stop_requested:
             self._to(State.BACKOFF)
@@ -236,6 +239,7 @@ class ManagedProcess:
 
     def _respawn(self) -> None:
         self._timer = None
+        self._signalled.clear()
         self._to(State.STARTING)
         try:
             self.spawn()
@@ -263,6 +267,7 @@ class ManagedProcess:
     def signal(self, sig: int) -> None:
         """Send `sig` to the running process's group (launch's SignalProcess event)."""
         if self.state is State.RUNNING or self.state is State.STOPPING:
+            self._signalled.add(int(sig))
             self._kill_group(sig)
 
     def escalate(self) -> None:

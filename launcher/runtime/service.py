@@ -23,6 +23,7 @@ from launcher.runtime import events
 from launcher.runtime.component_loads import ComponentLoads
 from launcher.runtime.composition import Loader, LoadRequest
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.coroutines import Coroutines
 from launcher.runtime.custody import TICK, Custody
 from launcher.runtime.ending import Ending
 from launcher.runtime.handlers import Handlers
@@ -72,6 +73,7 @@ class LaunchService:
         self.custody = custody or Custody()
         self._queue: deque[Any] = deque()
         self._draining = False
+        self._started_events: list[events.ProcessStarted] = []  # (see emit)
         self._given = set(configurations or {})  # the command line's name:=value names
         self.handlers = Handlers(self.context, self._guarded, self.schedule)
         self.timers = LaunchTimers(self.loop, self._check_idle)
@@ -81,6 +83,8 @@ class LaunchService:
                                   self._check_idle, on_graph and self._graph_hook(on_graph),
                                   lambda done: self.gate.helper_over(done))
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
+        self.coroutines = Coroutines(self.loop.call_soon_threadsafe, self._coroutine_failed,
+                                     self._check_idle)
         self.lifecycles = LifecycleRequests(self.loop, lifecycle, self.emit, self.log,
                                             self.report, self._check_idle)
         self.gate = StartGate(self.start_process, self.fail, self.report,
@@ -116,6 +120,7 @@ class LaunchService:
         finally:
             self.loads.close()
             self.lifecycles.close()
+            self.coroutines.close()
             self.loop.close()
             # its last look (the sweep) found nothing left: the watchdog need not look again
             self.custody.end(nothing_left=self.ending.swept_all)
@@ -164,6 +169,9 @@ class LaunchService:
                     self._queue.extendleft(reversed(list(more)))
         finally:
             self._draining = False
+        started, self._started_events = self._started_events, []
+        for event in started:
+            self.emit(event)
         checks, self.context.loaded_checks = self.context.loaded_checks, []
         for check in checks:
             self._guarded(check, None)
@@ -255,13 +263,21 @@ class LaunchService:
         self.handlers.unregister(handler)
 
     def emit(self, event: events.Event) -> None:
-        """An event to the handlers; the ones the launch acts on itself (Shutdown, and
-        ShutdownProcess and SignalProcess for the processes they name) are acted on."""
+        """An event to the handlers; the ones the launch acts on itself (Shutdown,
+        ShutdownProcess and SignalProcess for the processes they name, and
+        IncludeLaunchDescription, whose description joins the launch) are acted on."""
         if isinstance(event, events.Shutdown):
             self.shutdown(event.reason)  # (which tells the OnShutdown handlers)
             return
+        if self._draining and isinstance(event, events.ProcessStarted):
+            # as in launch, where a process starts once the actions being visited are: a
+            # handler registered after the process's action still hears of its start
+            self._started_events.append(event)
+            return
         if isinstance(event, events.ProcessTargetedEvent):
             self._target(event)
+        elif isinstance(event, events.IncludeLaunchDescription):
+            self.schedule([event.launch_description])  # (launch's own handler of it)
         self.handlers.emit(event)
 
     def would_handle(self, event: events.Event) -> bool:
@@ -300,9 +316,13 @@ class LaunchService:
     # --- what the ending asks ---------------------------------------------------------------
     def _pending(self) -> bool:
         return bool(self._queue or self._draining or self.timers.live or self.loads.out or
-                    self.lifecycles.out or self.gate.waiting)
+                    self.lifecycles.out or self.gate.waiting or self.coroutines.out)
+
+    def _coroutine_failed(self, exc: BaseException) -> None:
+        self.fail(exc if isinstance(exc, LaunchError) else unexpected(exc, None))  # type: ignore[arg-type]
 
     def _cancel(self) -> None:
+        self.coroutines.cancel()
         self.timers.cancel()
         self.loads.cancel()
         self.lifecycles.cancel()

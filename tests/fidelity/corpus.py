@@ -13,7 +13,7 @@ import hashlib
 import json
 from dataclasses import dataclass, field
 
-from tests.fidelity import cases_ros1, cases_ros2
+from tests.fidelity import cases_python, cases_ros1, cases_ros2
 
 
 @dataclass(frozen=True)
@@ -24,6 +24,11 @@ class Case:
     args: tuple[str, ...] = ()  # name:=value on the command line
     env: dict[str, str] = field(default_factory=dict)  # the user's shell adds these
     stop_after: float | None = None  # end a launch that would run on (respawn) after this
+
+    @property
+    def script(self) -> bool:
+        """A script of launch's Python API (a LaunchService run by hand), run with python."""
+        return self.main.endswith(".py") and not self.main.endswith("launch.py")
 
     @property
     def flavour(self) -> str:
@@ -38,7 +43,8 @@ class Case:
 
 
 def cases() -> list[Case]:
-    found = [Case(**spec) for spec in [*cases_ros1.specs(), *cases_ros2.specs()]]
+    found = [Case(**spec) for spec in [*cases_ros1.specs(), *cases_ros2.specs(),
+                                        *cases_python.specs()]]
     names = [case.name for case in found]
     duplicates = {name for name in names if names.count(name) > 1}
     assert not duplicates, f"corpus case names used twice: {sorted(duplicates)}"

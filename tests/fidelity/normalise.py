@@ -49,15 +49,21 @@ class Paths:
 
 
 def outcome(run: Outcome, folder: Path, flavour: str) -> dict[str, Any]:
+    """The exit, the probe's starts (as a set: processes start in any order) and, for a
+    Python case, its notes in the order the launch made them."""
     paths = Paths(folder)
-    starts = [_start(record, paths, flavour) for record in run.records]
+    starts = [_start(record, paths, flavour) for record in run.records if "note" not in record]
     unique = sorted({json.dumps(start, sort_keys=True) for start in starts})
-    return {
+    result = {
         "exit": "ok" if run.exit in (0, "interrupted") else run.exit,
         "starts": [json.loads(text) for text in unique],
         "restarted": sorted({start["name"] for start in starts
                              if sum(other == start for other in starts) > 1}),
     }
+    notes = [paths.tree(record["note"]) for record in run.records if "note" in record]
+    if notes:
+        result["notes"] = notes
+    return result
 
 
 def _start(record: dict[str, Any], paths: Paths, flavour: str) -> dict[str, Any]:

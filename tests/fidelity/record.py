@@ -121,7 +121,8 @@ def ros2_tool(venv: Path) -> Tool:
     env.update(PATH=f"{venv / 'bin'}:/usr/bin:/bin",
                AMENT_PREFIX_PATH=f"{WORKSPACE / 'install'}:{venv}",
                ROS_DOMAIN_ID=str(os.getpid() % 200), ROS_LOCALHOST_ONLY="1")
-    return Tool("ros2 launch", (str(venv / "bin/python"), str(venv / "drive.py")), env)
+    return Tool("ros2 launch", (str(venv / "bin/python"), str(venv / "drive.py")), env,
+                python=(str(venv / "bin/python"),))
 
 
 def record(case: Case, tool: Tool, scratch: Path) -> dict:

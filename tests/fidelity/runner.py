@@ -22,6 +22,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from launcher.compat import SITE
 from tests.fidelity.corpus import Case
 
 HERE = Path(__file__).resolve().parent
@@ -44,6 +45,7 @@ class Tool:
     name: str
     command: tuple[str, ...]  # before the launch file and its arguments
     env: dict[str, str]
+    python: tuple[str, ...] = ()  # before a script of launch's Python API (main.py)
 
     def run(self, case: Case, folder: Path) -> Outcome:
         folder.mkdir(parents=True, exist_ok=True)
@@ -59,7 +61,8 @@ class Tool:
         if case.flavour == "ros1":
             env["PROBE_ROS1"] = "1"
         (folder / "home").mkdir(exist_ok=True)
-        argv = [*self.command, str(folder / case.main), *case.args]
+        command = self.python if case.script else self.command
+        argv = [*command, str(folder / case.main), *case.args]
         with open(folder / "output.txt", "wb") as log:
             proc = subprocess.Popen(argv, cwd=folder, env=env, stdout=log,
                                     stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
@@ -137,4 +140,6 @@ def launcher_tool(flavour: str, run_dir: Path, environ: dict[str, str] | None = 
         env["ROS_PACKAGE_PATH"] = str(WORKSPACE / "src")
     else:
         env["AMENT_PREFIX_PATH"] = str(WORKSPACE / "install")
-    return Tool("launcher", tuple(command), env)
+        # a script of launch's API, run as `. hooks/setup.sh` lets a shell run one
+        env["PYTHONPATH"] = SITE
+    return Tool("launcher", tuple(command), env, python=(sys.executable,))

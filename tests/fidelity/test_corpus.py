@@ -47,18 +47,21 @@ class Runs:
         self.futures: dict[str, Future] = {}
         self.environ = dict(os.environ)  # (read here: pytest changes it as tests run)
 
-    def result(self, case: Case, timeout: float) -> dict:
+    def result(self, case: Case, timeout: float) -> tuple[dict, str]:
         start = self.index[case.name]
         for ahead in self.order[start:start + AHEAD + 1]:
             if ahead.name not in self.futures:
                 self.futures[ahead.name] = self.pool.submit(self._run, ahead)
         return self.futures[case.name].result(timeout=timeout)
 
-    def _run(self, case: Case) -> dict:
-        folder = self.scratch / case.name.replace("/", "__")
+    def _run(self, case: Case) -> tuple[dict, str]:
+        """The case's outcome, and what launcher printed (for the reader of a failure)."""
+        # (a short folder: the graph's sockets live in it, and a socket's path is short)
+        folder = self.scratch / f"case{self.index[case.name]}"
         tool = launcher_tool(case.flavour, folder / "run", self.environ)
         tool.env["LAUNCHER_TEST_TAG"] = self.tag
-        return outcome(tool.run(case, folder), folder, case.flavour)
+        run = tool.run(case, folder)
+        return outcome(run, folder, case.flavour), run.output
 
 
 @pytest.fixture(scope="module")
@@ -101,8 +104,9 @@ def test_launcher_agrees_with_the_real_tool(case: Case, runs) -> None:
     choice = CHOICES.get(case.name)
     if choice is not None:
         expected = choice.apply(expected)
-    got = runs.result(case, timeout=120)
-    assert got == expected, _difference(expected, got, choice)
+    got, output = runs.result(case, timeout=120)
+    assert got == expected, _difference(expected, got, choice) + \
+        f"\nlauncher's output (its end):\n{output[-2000:]}"
 
 
 def _difference(expected: dict, got: dict, choice) -> str:

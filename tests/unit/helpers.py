@@ -43,6 +43,7 @@ class FakeService:
         self.handlers: list[Any] = []
         self.launch_prefix = ""
         self.shutting_down = False
+        self.coroutines = None  # (no OpaqueCoroutine runs here)
         self.count = 0
         self.later: list[Any] = []
 
@@ -58,6 +59,14 @@ class FakeService:
 
     def register_handler(self, handler: Any) -> None:
         self.handlers.append(handler)
+
+    def would_handle(self, event: Any) -> bool:
+        return any(handler.matches(event) for handler in self.handlers)
+
+    def emit(self, event: Any) -> None:
+        """To the handlers that match, their actions after everything queued now."""
+        for handler in [h for h in self.handlers if h.matches(event)]:
+            self.later.extend(handler.handle(event, self.context) or ())
 
     def watch_lifecycle(self, node: str, origin: Any) -> None:
         self.logs.append(("WATCH", node))

@@ -49,6 +49,7 @@ class DeclareLaunchArgument(Action):
     def __post_init__(self) -> None:
         super().__post_init__()
         self.choices = [c.value if isinstance(c, Choice) else str(c) for c in self.choices]
+        self.description = _described(self.description, self.choices)
 
     @property
     def required(self) -> bool:
@@ -159,3 +160,12 @@ class ResetLaunchConfigurations(Action):
         kept = kept_configurations(context, self.keep)
         context.configurations.clear()
         context.configurations.update(kept)
+
+
+def _described(description: str, choices: list[str]) -> str:
+    """The argument's description as launch words it (what --show-args shows)."""
+    if not description:
+        return f"One of: {choices}" if choices else "no description given"
+    if choices and "Valid choices are: " not in description:
+        return f"{description.rstrip('.')}. Valid choices are: {choices}"
+    return description

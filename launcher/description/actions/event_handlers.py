@@ -60,7 +60,8 @@ class BaseEventHandler:
         context.enter(snapshot)
         try:
             context.extend_locals({"event": event})
-            actions = _entities(self.reaction(event, context))
+            with context.process_environment():
+                actions = _entities(self.reaction(event, context))
         finally:
             context.leave()
         if not actions:

@@ -41,6 +41,7 @@ class EnvEntry:
 @action("executable")
 @dataclass(kw_only=True, eq=False)
 class ExecuteProcess(Action):
+    completes_later = True  # (when its process ends: the process table says so)
     cmd: Any = attr(Kind.COMMAND, required=True,
                     doc="The command line; split like a shell, substitutions kept whole.")
     args: Any = attr(Kind.COMMAND, doc="More arguments, appended to cmd.")

@@ -31,7 +31,7 @@ class LifecycleNode(Node):
                                                 "runs (launch_ros's, Jazzy).")
 
     def execute(self, context: LaunchContext) -> Any:
-        if self.node_name is None:
+        if self.given_name is None:
             raise ExecutionError("lifecycle_node needs a name (launch_ros requires one)",
                                  self.where)
         done = super().execute(context)

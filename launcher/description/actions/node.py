@@ -64,6 +64,10 @@ class RemapEntry:
     only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
 
 
+UNSPECIFIED_NAME = "<node_name_unspecified>"  # (launch_ros's words for what was not given)
+UNSPECIFIED_SPACE = "<node_namespace_unspecified>"
+
+
 @action("node")
 @dataclass(kw_only=True, eq=False)
 class Node(ExecuteProcess):
@@ -73,7 +77,7 @@ class Node(ExecuteProcess):
                             "is a command on PATH, as in launch_ros).")
     executable: Any = attr(Kind.TEXT, name="exec", aliases=("executable",), required=True,
                            doc="The executable's name in the package.")
-    node_name: Any = attr(Kind.TEXT, name="name", doc="The node's name (-r __node:=).")
+    given_name: Any = attr(Kind.TEXT, name="name", doc="The node's name (-r __node:=).")
     namespace: Any = attr(Kind.TEXT, aliases=("ns",), doc="The node's namespace.")
     exec_name: Any = attr(Kind.TEXT, doc="Label for its output; default: the node name.")
     arguments: Any = attr(Kind.COMMAND, name="args", aliases=("arguments",),
@@ -96,7 +100,7 @@ class Node(ExecuteProcess):
     home: Any = attr(Kind.TEXT, doc="roslaunch's cwd word: ROS_HOME (the default: the node "
                                     "runs in $ROS_HOME, else ~/.ros) or node (its "
                                     "executable's folder).")
-    name: Any = None  # the label comes from exec_name / node_name
+    name: Any = None  # its process's label, once it has run (from exec_name / the name)
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -128,7 +132,7 @@ class Node(ExecuteProcess):
             found = find_executable(package, perform_text(context, self.executable))
         node = self._node_name(context)
         space = self._namespace(context)
-        if self.node_name is not None:
+        if self.given_name is not None:
             check_node_name(node, self.where)
         check_namespace(space, self.where)
         own = [(perform_text(context, r.source), perform_text(context, r.target))
@@ -156,12 +160,16 @@ class Node(ExecuteProcess):
                 argv += ["--ros-args", *self._words(context, self.ros_arguments)]  # flagged
             argv += ["--ros-args"]
             argv += ["-r", f"__node:={node}"] if node else []
-            argv += ["-r", f"__ns:={space}"] if space else []
+            # (a namespace given, even "", or pushed: launch_ros makes it absolute)
+            if space or self.namespace is not None:
+                argv += ["-r", f"__ns:={space or '/'}"]
             argv += words
             for source, target in remaps:
                 argv += ["-r", f"{source}:={target}"]
         self._check_unique(context, node or found.name, space)
-        label = self.exec_name if self.exec_name is not None else self.node_name
+        self._expanded = (space or ("/" if self.namespace is not None else UNSPECIFIED_SPACE),
+                          node or UNSPECIFIED_NAME)
+        label = self.exec_name if self.exec_name is not None else self.given_name
         base = perform_text(context, label) if label is not None else found.name
         env = found.environment(self.environment(context))
         if ros1:
@@ -177,6 +185,7 @@ class Node(ExecuteProcess):
             stem = "-".join(p for p in (*space.split("/"), spec.label) if p)
             log = (context.log_dir or Path(tempfile.gettempdir())) / f"{stem}.log"
             spec.argv = [*spec.argv, f"__log:={log}"]
+        self.name = spec.label  # (launch_ros's Node.name: its process's, once it has run)
         spec.joins_graph = True
         spec.after_loading = ros1  # roslaunch: once every file is read and its parameters set
         if self.machine is not None:
@@ -216,8 +225,34 @@ class Node(ExecuteProcess):
         os.makedirs(home, exist_ok=True)
         return home
 
+    # --- what launch_ros's Node tells the Python API's users, once it has run ---------------
+    @property
+    def node_name(self) -> str:
+        """Its full name (launch_ros's node_name), known once the action has run."""
+        expanded = getattr(self, "_expanded", None)
+        if expanded is None:
+            raise RuntimeError("cannot access 'node_name' before executing action")
+        space, name = expanded
+        return f"{space.rstrip('/')}/{name}" if space.startswith("/") else f"{space}/{name}"
+
+    @property
+    def expanded_node_namespace(self) -> str:
+        expanded = getattr(self, "_expanded", None)
+        return UNSPECIFIED_SPACE if expanded is None else expanded[0]
+
+    @property
+    def node_package(self) -> Any:
+        return self.package
+
+    @property
+    def node_executable(self) -> Any:
+        return self.executable
+
+    def is_node_name_fully_specified(self) -> bool:
+        return UNSPECIFIED_NAME not in self.node_name and UNSPECIFIED_SPACE not in self.node_name
+
     def _node_name(self, context: LaunchContext) -> str:
-        return perform_text(context, self.node_name) if self.node_name is not None else ""
+        return perform_text(context, self.given_name) if self.given_name is not None else ""
 
     def _namespace(self, context: LaunchContext) -> str:
         own = perform_text(context, self.namespace) if self.namespace is not None else ""

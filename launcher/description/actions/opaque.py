@@ -24,7 +24,7 @@ class OpaqueFunction(Action):
         self.condition, self.where = rest.get("condition"), rest.get("where")
 
     def execute(self, context: LaunchContext) -> Sequence[Action] | None:
-        with made_by_code.writing():
+        with made_by_code.writing(), context.process_environment():
             result = self.function(context, *self.args, **self.kwargs)
         return entities_of(result, "OpaqueFunction's function", self.function)
 

@@ -217,7 +217,7 @@ class LifecycleNodeMixin:
                     f"{LABELS[self._state_id]}: it is not allowed there (allowed: {allowed})")
                 raise TransitionNotAllowed(label, LABELS[self._state_id], allowed)
             label, start, through, _, method = PRIMARY[transition]
-            self._move(transition, label, start, through)
+            self._move(start, through)
             outcome = self._call(method, through, start)
             goal = self._finish(through, outcome)
             if goal == ERRORPROCESSING:
@@ -243,17 +243,19 @@ class LifecycleNodeMixin:
 
     def _finish(self, through: int, outcome: int) -> int:
         transition, label, goal = OUTCOMES[(through, int(outcome))]
-        self._move(transition, label, through, goal)
+        self._move(through, goal)
         return goal
 
-    def _move(self, transition: int, label: str, start: int, goal: int) -> None:
+    def _move(self, start: int, goal: int) -> None:
+        """Enter `goal`, and say so on transition_event as rcl_lifecycle says it: the start and
+        goal states (its `transition` field is left empty, id 0 and no label)."""
         self._state_id = goal
         if self._state_publisher is None:
             return
-        from lifecycle_msgs.msg import State, Transition, TransitionEvent
+        from lifecycle_msgs.msg import State, TransitionEvent
 
         self._state_publisher.publish(TransitionEvent(
-            timestamp=time.time_ns(), transition=Transition(id=transition, label=label),
+            timestamp=time.time_ns(),
             start_state=State(id=start, label=LABELS[start]),
             goal_state=State(id=goal, label=LABELS[goal])))
 

@@ -37,7 +37,8 @@ def ros1_parameters():
     return rospy.get_param("/")
 
 
-def main():
+def record_start():
+    """Write the record of this start (the lifecycle probe's start too)."""
     argv = sys.argv[1:]
     record = {
         "argv": argv,
@@ -56,6 +57,10 @@ def main():
     with open(os.path.join(out, name + ".part"), "w", encoding="utf-8") as stream:
         json.dump(record, stream, indent=1, sort_keys=True)
     os.rename(os.path.join(out, name + ".part"), os.path.join(out, name))
+
+
+def main():
+    record_start()
     time.sleep(float(os.environ.get("PROBE_SLEEP", "0")))
     sys.exit(int(os.environ.get("PROBE_EXIT", "0")))
 
