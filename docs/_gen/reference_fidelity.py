@@ -21,7 +21,10 @@ A launch file must mean what ROS makes it mean. The repo's differential corpus
 (`tests/fidelity/`) holds small launch files generated per tag, attribute, substitution and
 nesting, each with a probe node that records how it was started: its argv, the environment a
 launch sets, its working folder, the parameter files it was given and, for ROS 1, the whole
-parameter tree as the master holds it when the node starts. Each case was run through real
+parameter tree as the master holds it when the node starts. A Python case (a launch file or a
+script of launch's Python API) also notes, in order, what its own code saw: the launch
+context, the events and their fields, what its substitutions gave. Each case was run through
+real
 roslaunch 1.15 (Debian's) and real ros2 launch (launch 3.7.1, launch_ros 0.28.0 over rclpy's
 Kilted wheels), and what they did is recorded in `tests/fidelity/expected/`. The test suite
 runs every case through launcher and compares, so it needs no ROS install.
@@ -38,7 +41,8 @@ python -m tests.fidelity.compare                            # which cases differ
 
 def page() -> str:
     corpus = cases()
-    flavours = Counter(case.flavour for case in corpus)
+    flavours = Counter("python" if case.name.startswith("ros2/python/") else case.flavour
+                       for case in corpus)
     chosen = [case.name for case in corpus if case.name in CHOICES]
     known = sorted(name for name in KNOWN_DIFFERENCES)
     agree = len(corpus) - len(chosen) - len(known)
@@ -46,6 +50,8 @@ def page() -> str:
              "| | cases |", "| --- | --- |",
              f"| ROS 1 (roslaunch XML) | {flavours['ros1']} |",
              f"| ROS 2 (XML and YAML) | {flavours['ros2']} |",
+             f"| ROS 2 Python (launch files and LaunchService scripts) | "
+             f"{flavours['python']} |",
              f"| agree with the real tool | {agree} |",
              f"| differ on purpose (below) | {len(chosen)} |",
              f"| differ, not yet fixed (below) | {len(known)} |", "",

@@ -7,8 +7,10 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Coroutine
-from concurrent.futures import Future
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # (concurrent.futures costs the launch's start-up 5 ms)
+    from concurrent.futures import Future
 
 JOIN = 5.0  # s: the most the launch's end waits for the loop's thread
 
