@@ -32,7 +32,6 @@ from tests.fidelity.compare import compare  # noqa: E402
 from tests.fidelity.corpus import cases  # noqa: E402
 from tests.fidelity.record import ros1_tool, ros2_tool  # noqa: E402
 
-
 FAMILIES = (("ros1", "roslaunch", "ROS 1 files"), ("ros2", "ros2 launch", "XML and YAML files"),
             ("python", "ros2 launch", "Python launch files and scripts"))
 
