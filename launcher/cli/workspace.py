@@ -16,6 +16,8 @@ def load_index(environ: Mapping[str, str] | None = None) -> PackageIndex:
     index = PackageIndex.from_environment(os.environ if environ is None else environ)
     for warning in index.warnings:
         print(f"[WARN] [launch]: {warning}", file=sys.stderr)
+    for notice in index.notices:
+        print(f"[INFO] [launch]: {notice}", file=sys.stderr)
     return index
 
 

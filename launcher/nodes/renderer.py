@@ -83,6 +83,7 @@ class Renderer:
     def on_model(self, message: Any) -> None:
         import mujoco
 
+        first = self.model is None
         self.model = mujoco.MjModel.from_binary_path(
             "world.mjb", {"world.mjb": bytes(message.model)})
         self.data = mujoco.MjData(self.model)
@@ -114,6 +115,21 @@ class Renderer:
             drawer.close()
         self.drawers.clear()
         self.say_wanted()
+        if first:
+            self.prepare()
+
+    def prepare(self) -> None:
+        """Make the colour and depth drawers of the first model now, not at its first frame:
+        a GL context and MuJoCo's are most of a first picture's cost (about 0.6 s in software
+        GL), and the renderer is idle until someone watches. Later models are prepared at
+        their first frame, as before, so a world whose cameras nobody watches spends nothing
+        on each spawn. A GL that fails here fails again at the first frame, where it is said."""
+        try:
+            for camera in self.cameras.values():
+                if camera["kind"] != "segmentation_camera":
+                    self.offscreen(*self.size(camera))
+        except Exception as exc:  # (only the head start is lost)
+            self.logger.debug(f"drawers not prepared ahead: {exc}")
 
     def say_wanted(self) -> None:
         wanted = sorted(name for name, camera in self.cameras.items()
@@ -199,8 +215,7 @@ class Renderer:
         clip) or segmentation (int32 H×W×2: each pixel's object id and type). A camera with a
         lens is drawn wider, then seen through it (finish)."""
         found = self.lenses.get(camera["camera"])
-        width, height = (found.width, found.height) if found else \
-            (camera["width"], camera["height"])
+        width, height = self.size(camera)
         camera_id = self.model.camera(camera["camera"]).id
         if found:
             nominal, self.model.cam_fovy[camera_id] = \
@@ -239,6 +254,11 @@ class Renderer:
         else:
             picture = self.finish(camera, picture, 255.0, 0)
         return picture
+
+    def size(self, camera: dict[str, Any]) -> tuple[int, int]:
+        """The size it is drawn at: its own, or its lens's (wider, seen through it)."""
+        found = self.lenses.get(camera["camera"])
+        return (found.width, found.height) if found else (camera["width"], camera["height"])
 
     def segment(self, camera: dict[str, Any], segmentation: Any) -> tuple[Any, Any]:
         return segment(segmentation, self.geom_label, self.geom_instance,

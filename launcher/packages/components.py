@@ -6,7 +6,8 @@ declares a component as a callable that makes its node, either in package.xml
 or as the entry-point group `rclpy_components` of setup.cfg / setup.py
     'rclpy_components': ['pkg::Driver = pkg.driver:Driver']
 The callable is called with no arguments; the nodes it makes (launcher's or rclpy's) take the
-name, namespace, remaps and parameters that the container was asked for.
+name, namespace, remaps and parameters that the container was asked for. A compiled package
+found only as source offers its stand-in's (launcher's own implementation, see index.py).
 """
 
 from __future__ import annotations
@@ -29,6 +30,8 @@ def components(package: Package) -> dict[str, Component]:
     found: dict[str, Component] = {}
     for plugin, target in declared(package, "component", GROUP, key="plugin"):
         found.setdefault(plugin, Component(plugin, target, str(package.path)))
+    if package.stand_in is not None:
+        found = {**found, **components(package.stand_in)}
     return found
 
 

@@ -7,7 +7,9 @@
         <export><executable name="driver" module="robot_application.driver:main"/></export>
     or in setup.cfg's `[options.entry_points] console_scripts` (as ament_python packages do).
     They run as `python -m launcher.packages.entry MODULE:FUNCTION`, with the package folder
-    on PYTHONPATH; the function is found by import, never by evaluating text.
+    on PYTHONPATH; the function is found by import, never by evaluating text;
+  * for a compiled package found only as source, launcher's own implementation's first (its
+    stand-in, see index.py), then any the source holds.
 """
 
 from __future__ import annotations
@@ -42,6 +44,13 @@ class Executable:
 
 
 def executables(package: Package) -> dict[str, Executable]:
+    own = _own_executables(package)
+    if package.stand_in is None:
+        return own
+    return {**own, **executables(package.stand_in)}
+
+
+def _own_executables(package: Package) -> dict[str, Executable]:
     found: dict[str, Executable] = {}
     folders = [package.path / "lib" / package.name, package.path / "lib",
                package.path / "scripts", package.path / "bin"]

@@ -9,6 +9,10 @@ Search order (the first package of a name wins; a second one is a warning naming
   3. the packages built into launcher (`launcher/builtin/`);
   4. the install prefixes in AMENT_PREFIX_PATH, through the ament resource index, so a real
      ROS install's share folders work too.
+A compiled package (ament_cmake, cmake, catkin) found only as source, as when a whole repository
+is cloned into a workspace's src/ and never built, has no executables; where launcher has a
+built-in package of that name, the built-in is its stand-in: its executables and components
+run, the source stays the package's share folder, and the index says so once (a notice).
 Packages are used in place: `$(find-pkg-share pkg)` is the package folder. For
 `$(find-pkg-prefix pkg)` launcher keeps a folder of links per workspace root
 (`<cache>/prefixes/<hash>/share/<pkg>` -> the package), so `<prefix>/share/<pkg>/…` works.
@@ -62,6 +66,7 @@ class PackageIndex:
     cache: Path
     packages: dict[str, Package] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    notices: list[str] = field(default_factory=list)  # worth one line, not a warning
 
     @classmethod
     def from_environment(cls, environ: Mapping[str, str] | None = None,
@@ -83,7 +88,7 @@ class PackageIndex:
     # --- building ---------------------------------------------------------------------------
     def build(self) -> None:
         """Scan every root (again: edits are seen on every build)."""
-        self.packages, self.warnings = {}, []
+        self.packages, self.warnings, self.notices = {}, [], []
         for root in self.roots:
             if root.origin == "ament":
                 found = _ament_packages(root.path)
@@ -99,7 +104,14 @@ class PackageIndex:
         first = self.packages.get(package.name)
         if first is None:
             self.packages[package.name] = package
-        elif first.path.resolve() != package.path.resolve():
+        elif first.path.resolve() == package.path.resolve():
+            return
+        elif stands_in(package, first):
+            first.stand_in = package
+            self.notices.append(f"package '{first.name}' at {first.path} is source only (a "
+                                f"compiled {first.build_type} package, never built): "
+                                "launcher runs its own implementation of it")
+        else:
             self.warnings.append(f"package '{package.name}' is found twice: {first.path} "
                                  f"(used) and {package.path} (ignored)")
 
@@ -145,6 +157,13 @@ class PackageIndex:
                     link.unlink()
                 link.symlink_to(package.path, target_is_directory=True)
         return package.prefix
+
+
+def stands_in(builtin: Package, source: Package) -> bool:
+    """Whether launcher's `builtin` package runs in place of the compiled `source` package:
+    only a built-in with something to run (a message package's source is read as it is)."""
+    return builtin.origin == "builtin" and source.origin in ("workspace", "checkout") and \
+        source.compiled and any(tag in builtin.exports for tag in ("executable", "component"))
 
 
 def _scan(root: str, origin: str) -> list[Package]:

@@ -10,6 +10,8 @@ from launcher.errors import Location, ParseError
 from launcher.records import dataclass, field
 
 NAME_RULE = re.compile(r"^[a-z][a-z0-9_]*$")
+# Build types whose executables and libraries exist only once built (colcon, catkin)
+COMPILED_BUILD_TYPES = ("ament_cmake", "cmake", "catkin")
 DEPENDENCY_TAGS = ("depend", "build_depend", "build_export_depend", "buildtool_depend",
                    "buildtool_export_depend", "exec_depend", "run_depend", "test_depend",
                    "doc_depend")
@@ -27,10 +29,25 @@ class Package:
     exports: dict[str, list[dict[str, str]]] = field(default_factory=dict)  # tag -> attrs
     prefix: Path | None = None  # an install prefix, for packages from AMENT_PREFIX_PATH
     origin: str = "workspace"  # workspace | checkout | builtin | ament
+    # launcher's own implementation of it, for a compiled package found only as source
+    stand_in: Package | None = None
 
     @property
     def manifest(self) -> Path:
         return self.path / "package.xml"
+
+    @property
+    def build_type(self) -> str:
+        """package.xml's `<build_type>`; a package without one but with a CMakeLists.txt is
+        built by CMake (ament_cmake, as colcon takes it)."""
+        declared = self.exports.get("build_type", [])
+        if declared:
+            return declared[0]["text"]
+        return "ament_cmake" if (self.path / "CMakeLists.txt").is_file() else ""
+
+    @property
+    def compiled(self) -> bool:
+        return self.build_type in COMPILED_BUILD_TYPES
 
     def run_dependencies(self) -> set[str]:
         tags = ("depend", "exec_depend", "run_depend", "build_export_depend")

@@ -25,6 +25,17 @@ def demos(ws):
     return ws
 
 
+@pytest.fixture
+def cloned(ws):
+    """A colcon workspace whose src/ holds the whole mujoco_ros2_control repository, cloned
+    and never built (a link to the copy in ../shared: its packages only as source)."""
+    src = ws.root / "colcon_ws" / "src"
+    src.mkdir(parents=True)
+    (src / "mujoco_ros2_control").symlink_to(shared(*DEMOS[:2]), target_is_directory=True)
+    ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(src)
+    return ws
+
+
 def numbers(text: str) -> list[float]:
     return [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", text)]
 
@@ -194,6 +205,79 @@ def test_base_velocity_demo_drives_the_floating_base(demos):
         assert moved > start + 0.3, (start, moved)
     finally:
         assert stop(proc) == 130
+
+
+def test_a_cloned_unbuilt_repository_runs_launchers_ros2_control_node_and_says_so_once(cloned):
+    proc = launch(cloned, "01_basic_robot.launch.py")
+    try:
+        out = cloned.wait_for_output("Configured and activated pose_broadcaster", 60, "demo.out")
+    finally:
+        assert stop(proc) == 130
+    source = cloned.root / "colcon_ws" / "src" / "mujoco_ros2_control" / "mujoco_ros2_control"
+    said = [line for line in out.splitlines() if "source only" in line]
+    assert said == [f"[INFO] [launch]: package 'mujoco_ros2_control' at {source} is source "
+                    "only (a compiled ament_cmake package, never built): launcher runs its own "
+                    "implementation of it"], out
+    assert "has no executable" not in out and f"found twice: {source} (used)" not in out, out
+
+
+def settled_end_pose(scene, command: dict[str, float]) -> list[float]:
+    """Where the demo arm's ee_link comes to rest under `command`, derived from the model.
+
+    mujoco_ros2_control writes a position command straight into the ctrl of a position
+    actuator (MujocoSystemInterface::write), so each arm joint is a servo that stops where
+    its pull kp·(ctrl − q) balances the joint's gravity load less its passive forces (the
+    forearm's gravcomp="1"): q = ctrl − (qfrc_bias − qfrc_passive) / kp at rest. Solved by
+    fixed-point iteration (it contracts: the load changes little with q), the fingers held at
+    their commands, then the site's forward kinematics. joint1's frictionloss (1 N·m against
+    kp 25000 N·m/rad: at most 4e-5 rad) is left out. The commanded joints' kinematics alone
+    (z -0.479) would miss the sag by 9 mm."""
+    import mujoco
+
+    model = mujoco.MjModel.from_xml_path(str(scene))
+    data = mujoco.MjData(model)
+    for joint, value in command.items():
+        data.joint(joint).qpos = value
+    for _ in range(30):
+        mujoco.mj_forward(model, data)
+        for joint in ("joint1", "joint2"):
+            dof, kp = model.joint(joint).dofadr[0], model.actuator(joint).gainprm[0]
+            data.joint(joint).qpos = command[joint] - \
+                (data.qfrc_bias[dof] - data.qfrc_passive[dof]) / kp
+    mujoco.mj_forward(model, data)
+    return [float(v) for v in data.site("ee_link").xpos]
+
+
+def test_the_arms_end_pose_after_the_demo_trajectory_is_where_the_servos_settle(demos):
+    """mujoco_ros2_control's own launch test sends [0.5, -0.5] to the arm and closes the
+    gripper, then reads /pose_broadcaster/pose: (1.8753, 0, -0.4885) with a MuJoCo of 3.5 or
+    later, (1.8678, 0, -0.5162) with the older one of the ROS binaries, whose gravcomp left out
+    the forearm's compensation at joint1 (fixed in MuJoCo 3.5, issue 3066). launcher runs
+    the MuJoCo that is installed; the expected pose is derived from the model with it."""
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        demos.wait_for_output("Configured and activated pose_broadcaster", 60, "demo.out")
+        for topic, data in (("/position_controller/commands", "[0.5, -0.5]"),
+                            ("/gripper_controller/commands", "[-0.04]")):
+            sent = demos.run("topic", "pub", "--once", topic, "std_msgs/msg/Float64MultiArray",
+                             f"data: {data}")
+            assert sent.returncode == 0, sent.stderr
+        assert wait_until(lambda: abs(joints(demos)["joint1"] - 0.5) < 0.01 and
+                          abs(joints(demos)["gripper_left_finger_joint"] + 0.04) < 0.002,
+                          30), joints(demos)
+        time.sleep(1.0)  # (then settled: the arm's servos are critically damped)
+        pose = demos.run("topic", "echo", "/pose_broadcaster/pose",
+                         "geometry_msgs/msg/PoseStamped", "--once", timeout=30)
+    finally:
+        assert stop(proc) == 130
+    assert pose.returncode == 0, pose.stderr
+    position = numbers(pose.stdout.split("position:")[1].split("orientation:")[0])
+    expected = settled_end_pose(shared(*DEMOS, "demo_resources", "scenes", "scene.xml"),
+                                {"joint1": 0.5, "joint2": -0.5,
+                                 "gripper_left_finger_joint": -0.04,
+                                 "gripper_right_finger_joint": 0.04})
+    print(f"end pose: {position} (expected {expected})")
+    assert position == pytest.approx(expected, abs=0.01)
 
 
 # --- bad inputs: ros2_control_node says where and what, and exits -----------------------------
@@ -368,6 +452,26 @@ def test_the_camera_plugin_gives_colour_aligned_depth_and_camera_info(demos):
     assert info["k"] == pytest.approx([focal, 0, 320, 0, focal, 240, 0, 0, 1])
 
 
+def test_a_late_subscriber_gets_colour_depth_and_info_from_drawers_made_before_it_came(demos):
+    """As mujoco_ros2_control's test_camera_topics (all three within 5 s of subscribing): the
+    renderer makes its GL drawers when the model comes, so a subscriber waits for no GL
+    start-up. The time is printed, not asserted (a loaded machine stretches it)."""
+    proc = launch(demos, "01_basic_robot.launch.py")
+    try:
+        # said when the first drawer is made: here while nobody watches the camera
+        demos.wait_for_output("drawing the cameras of world 'scene'", 60, "demo.out")
+        began = time.monotonic()
+        seen = pictures(demos, "/camera/color/image_raw=image",
+                        "/camera/aligned_depth_to_color/image_raw=image",
+                        "/camera/color/camera_info=info")
+        took = time.monotonic() - began
+    finally:
+        assert stop(proc) in (0, 130)
+    print(f"bench: colour, depth and camera_info {took:.2f} s after the probe started")
+    assert set(seen) == {"/camera/color/image_raw", "/camera/aligned_depth_to_color/image_raw",
+                         "/camera/color/camera_info"}, seen
+
+
 EYE = ARM.replace('<body name="link">', '<camera name="eye" pos="2 0 0.5" xyaxes="0 1 0 0 0 1"'
                   ' resolution="64 48"/>\n    <body name="link">')
 CAMERA_PLUGIN = """/**:
@@ -492,6 +596,163 @@ def actuator_position(ws, joint: str) -> float:
     names = re.findall(r"^- (\w+)$", done.stdout.split("position:")[0], re.M)
     positions = numbers(done.stdout.split("position:")[1].split("velocity:")[0])
     return dict(zip(names, positions, strict=True))[joint]
+
+
+def actuator_states(ws) -> dict[str, list]:
+    """One /mujoco_actuators_states message: its names and each array, in order."""
+    done = ws.run("topic", "echo", "/mujoco_actuators_states", "sensor_msgs/msg/JointState",
+                  "--once", timeout=30)
+    assert done.returncode == 0, done.stderr
+    text = done.stdout.split("name:")[1]
+    names, rest = text.split("position:")
+    position, rest = rest.split("velocity:")
+    velocity, effort = rest.split("effort:")
+    return {"name": re.findall(r"^- (\w+)$", names, re.M), "position": numbers(position),
+            "velocity": numbers(velocity), "effort": numbers(effort)}
+
+
+# --- site transmissions: an actuator on a site drives the joint named as it ------------------
+# mujoco_ros2_control_tests' site_velocity_robot: a slider pushed by a velocity servo on a site
+# of its body (upstream's <velocity kv="1">, spelled as the general actuator it is)
+SLIDER = """<mujoco model="site_velocity_robot">
+  <option gravity="0 0 0" timestep="0.002"/>
+  <worldbody>
+    <body name="slider">
+      <inertial pos="0 0 0" mass="1.0" diaginertia="0.01 0.01 0.01"/>
+      <joint name="slider_joint" type="slide" axis="1 0 0" range="-2 2" damping="0.2"/>
+      <geom type="box" size="0.05 0.05 0.05"/>
+      <site name="drive_site" size="0.02"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <general name="slider_joint" site="drive_site" gainprm="1" biastype="affine"
+             biasprm="0 0 -1" ctrlrange="-1 1"/>
+  </actuator>
+</mujoco>
+"""
+SLIDER_ROBOT = """<robot name="site_velocity_robot">
+  <link name="world"/><link name="slider"/>
+  <joint name="slider_joint" type="prismatic"><parent link="world"/><child link="slider"/>
+    <axis xyz="1 0 0"/><limit lower="-2" upper="2" effort="100" velocity="1"/></joint>
+  <ros2_control name="MujocoSystem" type="system">
+    <hardware><plugin>mujoco_ros2_control/MujocoSystemInterface</plugin>
+      <param name="mujoco_model">{model}</param></hardware>
+    <joint name="slider_joint"><command_interface name="velocity"/>
+      <state_interface name="position"/><state_interface name="velocity"/>
+      <state_interface name="effort"/></joint>
+  </ros2_control>
+</robot>"""
+SLIDER_CONTROLLERS = """controller_manager:
+  ros__parameters:
+    update_rate: 100
+joint_state_broadcaster:
+  ros__parameters:
+    type: joint_state_broadcaster/JointStateBroadcaster
+site_velocity_controller:
+  ros__parameters:
+    type: forward_command_controller/ForwardCommandController
+    interface_name: velocity
+    joints: [slider_joint]
+"""
+
+
+def test_a_site_actuator_moves_the_joint_named_as_it_when_commanded(ws):
+    ws.own_bus()
+    model = ws.write("slider.xml", SLIDER)
+    controllers = ws.write("controllers.yaml", SLIDER_CONTROLLERS)
+    proc = ws.start(*node_args(ws, SLIDER_ROBOT.format(model=model), str(controllers)),
+                    output="node.out")
+    try:
+        ws.wait_for_output("controller_manager at", 60, "node.out")
+        spawned = ws.run("run", "controller_manager", "spawner", "joint_state_broadcaster",
+                         "site_velocity_controller", "--param-file", str(controllers),
+                         timeout=60)
+        assert spawned.returncode == 0, spawned.stderr
+        start = joints(ws)["slider_joint"]
+        sent = ws.run("topic", "pub", "--once", "/site_velocity_controller/commands",
+                      "std_msgs/msg/Float64MultiArray", "data: [0.25]")
+        assert sent.returncode == 0, sent.stderr
+        # the servo pushes at kv·(0.25 − v) against the damping 0.2·v: 0.25 / 1.2 m/s once
+        # steady (its time constant: 1 kg / 1.2 N·s/m), 2 m of travel lasting 10 s
+        steady = wait_until(lambda: abs(actuator_states(ws)["velocity"][0] - 0.25 / 1.2)
+                            < 0.005, 30)
+        moved = joints(ws)["slider_joint"] - start
+        states = actuator_states(ws)
+    finally:
+        assert stop(proc) in (0, 130)
+    assert steady and states["name"] == ["slider_joint"], states
+    assert moved > 0.3, (start, moved)
+
+
+def test_a_site_actuator_named_as_no_joint_of_the_model_is_said_at_its_block(ws):
+    ws.own_bus()
+    model = ws.write("slider.xml", SLIDER.replace('<general name="slider_joint"',
+                                                  '<general name="pusher"'))
+    robot = SLIDER_ROBOT.format(model=model).replace("slider_joint", "pusher")
+    proc = ws.start(*node_args(ws, robot), output="node.out")
+    try:
+        out = ws.wait_for_output("controller_manager at", 60, "node.out")
+    finally:
+        assert stop(proc) in (0, 130)
+    assert "robot_description:5: joint 'pusher': actuator 'pusher' pushes on a site and the " \
+           "MuJoCo model has no joint 'pusher' to read its state from" in out, out
+
+
+# Every kind of entry /mujoco_actuators_states has, as mujoco_ros2_control registers them: an
+# actuator on a joint (named by its joint), one on a site (by its own name, the joint it
+# drives), a joint no actuator drives (passive), and a free joint (never listed)
+KINDS = """<mujoco model="kinds">
+  <option gravity="0 0 0"/>
+  <worldbody>
+    <body name="base">
+      <joint name="turn" axis="0 0 1" damping="1"/>
+      <geom type="cylinder" size="0.1 0.05" mass="1"/>
+      <body name="carriage" pos="0.3 0 0">
+        <joint name="slide" type="slide" axis="1 0 0" damping="1"/>
+        <geom type="box" size="0.05 0.05 0.05" mass="1"/>
+        <site name="push"/>
+        <body name="flap" pos="0.1 0 0">
+          <joint name="flap" axis="0 1 0"/>
+          <geom type="box" size="0.05 0.01 0.05" mass="0.1"/>
+        </body>
+      </body>
+    </body>
+    <body name="crate" pos="2 0 0"><freejoint/><geom type="box" size="0.1 0.1 0.1"/></body>
+  </worldbody>
+  <actuator>
+    <motor name="turn_motor" joint="turn"/>
+    <general name="slide" site="push" gainprm="1" biastype="affine" biasprm="0 0 -1"/>
+  </actuator>
+</mujoco>
+"""
+KINDS_ROBOT = """<robot name="kinds">
+  <link name="world"/><link name="base"/><link name="carriage"/>
+  <joint name="turn" type="continuous"><parent link="world"/><child link="base"/>
+    <axis xyz="0 0 1"/></joint>
+  <joint name="slide" type="prismatic"><parent link="base"/><child link="carriage"/>
+    <axis xyz="1 0 0"/><limit lower="-1" upper="1" effort="10" velocity="1"/></joint>
+  <ros2_control name="MujocoSystem" type="system">
+    <hardware><plugin>mujoco_ros2_control/MujocoSystemInterface</plugin>
+      <param name="mujoco_model">{model}</param></hardware>
+    <joint name="turn"><command_interface name="effort"/><state_interface name="position"/>
+    </joint>
+    <joint name="slide"><command_interface name="velocity"/><state_interface name="position"/>
+    </joint>
+  </ros2_control>
+</robot>"""
+
+
+def test_actuator_states_have_one_entry_per_actuator_and_passive_joint_named_as_upstream(ws):
+    ws.own_bus()
+    model = ws.write("kinds.xml", KINDS)
+    proc = ws.start(*node_args(ws, KINDS_ROBOT.format(model=model)), output="node.out")
+    try:
+        ws.wait_for_output("controller_manager at", 60, "node.out")
+        states = actuator_states(ws)
+    finally:
+        assert stop(proc) in (0, 130)
+    assert states["name"] == ["turn", "slide", "flap"], states
+    assert all(len(states[k]) == 3 for k in ("position", "velocity", "effort")), states
 
 
 # --- the 3D lidar plugin over MJCF lidar sensors (mujoco_ros2_control's extension) -----------

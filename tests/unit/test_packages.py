@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from launcher.errors import LaunchError, ParseError
+from launcher.packages.components import components
 from launcher.packages.executables import executables, find_executable
 from launcher.packages.index import PackageIndex, PackageNotFound
 from launcher.packages.manifest import read_manifest
@@ -55,6 +56,36 @@ def test_search_order_ignore_markers_and_duplicates(tmp_path):
     (warning,) = index.warnings
     assert "package 'alpha' is found twice" in warning and str(second / "alpha") in warning
     assert index.get("mujoco_sim").origin == "builtin"
+
+
+COMPILED = "<export><build_type>ament_cmake</build_type></export>"
+
+
+@pytest.mark.parametrize("name, files, stood_in", [
+    ("robot_state_publisher", {"package.xml": manifest("robot_state_publisher", extra=COMPILED)},
+     True),
+    ("robot_state_publisher", {"package.xml": manifest("robot_state_publisher"),
+                               "CMakeLists.txt": "project(robot_state_publisher)\n"}, True),
+    ("robot_state_publisher", {"package.xml": manifest("robot_state_publisher", extra=(
+        "<export><build_type>ament_python</build_type></export>"))}, False),
+    ("std_srvs", {"package.xml": manifest("std_srvs", extra=COMPILED)}, False),
+], ids=["ament_cmake", "cmakelists-only", "ament_python-is-the-users", "messages-read-as-written"])
+def test_a_compiled_package_found_only_as_source_runs_the_builtin(tmp_path, name, files,
+                                                                  stood_in):
+    ws = make_tree(tmp_path / "src", {f"{name}/{path}": text for path, text in files.items()})
+    index = index_for(ws, tmp=tmp_path)
+    package = index.get(name)
+    assert package.path == ws / name  # its share: the source, as it is
+    if stood_in:
+        assert index.notices == [f"package '{name}' at {ws / name} is source only (a compiled "
+                                 "ament_cmake package, never built): launcher runs its own "
+                                 "implementation of it"] and not index.warnings
+        assert find_executable(package, name).argv[-1] == \
+            "launcher.nodes.robot_state_publisher:main"
+        assert "robot_state_publisher::RobotStatePublisher" in components(package)
+    else:
+        assert not index.notices and "is found twice" in index.warnings[0]
+        assert name not in executables(package)
 
 
 def test_not_found_lists_places_and_close_names(tmp_path):

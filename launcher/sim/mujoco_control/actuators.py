@@ -3,8 +3,9 @@
 An actuator's kind comes from its bias, as mujoco_ros2_control reads it: no bias is a motor,
 an affine bias with a position term a position servo, one with only a velocity term a velocity
 servo, anything else custom. A moving joint no actuator drives (not free, not ball) is a
-passive one: read, never written. An actuator that drives a tendon is the joint of its own name
-(the test robot's gripper: a tendon actuator named as the finger joint).
+passive one: read, never written. An actuator that drives a tendon or a site is the joint of its
+own name (the test robot's gripper: a tendon actuator named as the finger joint; a force on a
+site of the slider named as the slider's joint).
 """
 
 from __future__ import annotations
@@ -96,27 +97,12 @@ def actuators_of(model: Any, where: str) -> list[Actuator]:
     found: list[Actuator] = []
     for index in range(model.nu):
         name = model.actuator(index).name or f"actuator {index}"
-        kind, target = kind_of(model, index), int(model.actuator_trnid[index, 0])
-        transmission = int(model.actuator_trntype[index])
-        if transmission == int(mujoco.mjtTrn.mjTRN_JOINT):
-            joint = model.joint(target).name
-        elif transmission == int(mujoco.mjtTrn.mjTRN_TENDON):
-            joint = name
-            found_joint = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, name)
-            if found_joint < 0:
-                raise LaunchError(f"{where}: tendon actuator '{name}' has no joint of its name: "
-                                  f"mujoco_ros2_control reads a tendon actuator's state from "
-                                  f"the joint named as the actuator")
-            target = found_joint
-        elif transmission == int(mujoco.mjtTrn.mjTRN_SITE):
-            found.append(Actuator(name, index, name, -1, -1, kind))
+        joint, target = _moved_joint(model, index, name, where)
+        if target < 0:  # a site actuator with no joint of its name: commands, no states
+            found.append(Actuator(name, index, name, -1, -1, kind_of(model, index)))
             continue
-        else:
-            raise LaunchError(f"{where}: actuator '{name}': its transmission type "
-                              f"({mujoco.mjtTrn(transmission).name}) is not one "
-                              f"mujoco_ros2_control drives (joint, tendon or site)")
         found.append(Actuator(name, index, joint, int(model.jnt_qposadr[target]),
-                              int(model.jnt_dofadr[target]), kind))
+                              int(model.jnt_dofadr[target]), kind_of(model, index)))
     driven = {a.qpos for a in found}
     moving = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
     for joint in range(model.njnt):
@@ -128,6 +114,27 @@ def actuators_of(model: Any, where: str) -> list[Actuator]:
             found.append(Actuator(name, -1, name, int(model.jnt_qposadr[joint]),
                                   int(model.jnt_dofadr[joint]), PASSIVE))
     return found
+
+
+def _moved_joint(model: Any, index: int, name: str, where: str) -> tuple[str, int]:
+    """(the name its state goes by, the joint it is read from; -1 for none), as
+    mujoco_ros2_control registers it: a joint actuator by its joint; a tendon or site
+    actuator by its own name, read from the joint of that name (a site's force moves whatever
+    body it is on, so only the name says which joint is meant)."""
+    transmission = int(model.actuator_trntype[index])
+    if transmission == int(mujoco.mjtTrn.mjTRN_JOINT):
+        target = int(model.actuator_trnid[index, 0])
+        return model.joint(target).name, target
+    if transmission not in (int(mujoco.mjtTrn.mjTRN_TENDON), int(mujoco.mjtTrn.mjTRN_SITE)):
+        raise LaunchError(f"{where}: actuator '{name}': its transmission type "
+                          f"({mujoco.mjtTrn(transmission).name}) is not one "
+                          f"mujoco_ros2_control drives (joint, tendon or site)")
+    target = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, name)
+    if target < 0 and transmission == int(mujoco.mjtTrn.mjTRN_TENDON):
+        raise LaunchError(f"{where}: tendon actuator '{name}' has no joint of its name: "
+                          f"mujoco_ros2_control reads a tendon actuator's state from "
+                          f"the joint named as the actuator")
+    return name, target
 
 
 def pids_from(values: dict[str, Any]) -> dict[str, dict[str, Pid]]:

@@ -64,7 +64,8 @@ class MujocoSystem(Component):
         self.actuators = actuators_of(model, info.where)
         for actuator in self.actuators:
             actuator.pids = {mode: gains[actuator.joint] for mode, gains in pids.items()
-                             if actuator.joint in gains and actuator.kind != PASSIVE}
+                             if actuator.joint in gains and actuator.kind != PASSIVE
+                             and actuator.qpos >= 0}  # (a PID needs the joint's state)
         self.couplings = [Coupling(t) for t in info.transmissions]
         self.by_joint: dict[str, list[Actuator]] = {}
         for joint in info.joints:
@@ -108,6 +109,8 @@ class MujocoSystem(Component):
                     f"{self.info.where}: joint '{joint.name}' of <ros2_control "
                     f"name=\"{self.info.name}\"> is not a joint of the MuJoCo model"
                     f"{did_you_mean(joint.name, joints)} (its joints: {', '.join(joints)})")
+            if not in_coupling:
+                self._say_stateless(joint.name, actuators)
             if joint.mimic or not joint.command_interfaces:
                 continue
             driving = [a for a in actuators if a.kind != PASSIVE]
@@ -134,6 +137,16 @@ class MujocoSystem(Component):
                             f"{self.info.where}: joint '{joint.name}': its '{interface.name}' "
                             f"command interface needs {need}; actuator '{actuator.name}' is a "
                             f"{actuator.kind} actuator")
+
+    def _say_stateless(self, joint: str, actuators: list[Actuator]) -> None:
+        """A site actuator named as a joint the model lacks still pushes, but nothing gives
+        the joint's states: said, since they stay 0."""
+        stateless = [a.name for a in actuators if a.qpos < 0]
+        if stateless:
+            self.log.warning(f"{self.info.where}: joint '{joint}': actuator '{stateless[0]}' "
+                             f"pushes on a site and the MuJoCo model has no joint '{joint}' "
+                             f"to read its state from (a site actuator drives the joint of "
+                             f"its own name); its states stay 0")
 
     def _sensors(self) -> list[tuple[Any, int, int, float]]:
         """(state handle, sensordata index, …) for each sensor interface with a mujoco_type."""
