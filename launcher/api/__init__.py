@@ -131,7 +131,8 @@ LaunchDescriptionEntity = _action.LaunchDescriptionEntity
 def DeclareLaunchArgument(name: str, default_value: Any = None, description: str = "",  # noqa: N802
                           choices: Sequence[str] = (), **kw: Any) -> Any:
     return _arguments.DeclareLaunchArgument(name=name, default_value=default_value,
-                                            description=description, choices=list(choices), **kw)
+                                            given_description=description,
+                                            choices=list(choices), **kw)
 
 
 def SetLaunchConfiguration(name: Any, value: Any, **kw: Any) -> Any:  # noqa: N802

@@ -42,14 +42,19 @@ def kept_configurations(context: LaunchContext, entries: list[KeepEntry]) -> dic
 class DeclareLaunchArgument(Action):
     name: str = attr(Kind.NAME, required=True, doc="The argument's name.")
     default_value: Any = attr(Kind.TEXT, name="default", doc="Used when not given.")
-    description: str = attr(Kind.NAME, "", doc="Shown by --show-args and in errors.")
+    given_description: str = attr(Kind.NAME, "", name="description",
+                                  doc="Shown by --show-args and in errors.")
     choices: list[Any] = attr(Kind.ENTRIES, name="choice", entry=Choice,
                               doc="If given, the only valid values.")
 
     def __post_init__(self) -> None:
         super().__post_init__()
         self.choices = [c.value if isinstance(c, Choice) else str(c) for c in self.choices]
-        self.description = _described(self.description, self.choices)
+
+    @property
+    def description(self) -> str:
+        """As launch words it (what --show-args shows): the one given, with its choices."""
+        return _described(self.given_description, self.choices)
 
     @property
     def required(self) -> bool:
