@@ -4,11 +4,8 @@ print as launch's do: `[INFO] [x]: message` on the screen."""
 from __future__ import annotations
 
 import logging
-import logging.handlers
 import sys
 from typing import Any
-
-handlers = logging.handlers
 
 
 class LaunchConfig:
@@ -69,3 +66,13 @@ def reset() -> None:
         logging.getLogger("launch").removeHandler(_screen)
     _screen = None
     launch_config = LaunchConfig()
+
+
+def __getattr__(name: str) -> Any:
+    """launch.logging.handlers, imported when first asked for (the standard library's
+    logging.handlers brings sockets and pickle: a launch's start-up need not pay for them)."""
+    if name == "handlers":
+        import logging.handlers
+
+        return logging.handlers
+    raise AttributeError(f"module '{__name__}' has no attribute '{name}'")

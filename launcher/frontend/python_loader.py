@@ -13,7 +13,6 @@ import importlib.util
 import itertools
 import re
 import sys
-import traceback
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TypeVar
@@ -127,6 +126,8 @@ def _nearest_import(exc: BaseException) -> str:
 
 def _user_error(exc: BaseException, path: Path, message: str | None = None,
                 noun: str = "launch file") -> ParseError:
+    import traceback  # (for a failure alone: start-up time)
+
     frames = traceback.extract_tb(exc.__traceback__)
     mine = [f for f in frames if Path(f.filename) == path]
     last = mine[-1] if mine else None

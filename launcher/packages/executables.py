@@ -14,7 +14,6 @@
 
 from __future__ import annotations
 
-import configparser
 import os
 import re
 import sys
@@ -120,6 +119,8 @@ def declared(package: Package, tag: str, group: str, key: str = "name") -> list[
     found = [(e.get(key, ""), e.get("module", "")) for e in package.exports.get(tag, [])]
     setup_cfg = package.path / "setup.cfg"
     if setup_cfg.is_file():
+        import configparser  # (setup.cfg alone: start-up time)
+
         parser = configparser.ConfigParser(delimiters=("=",))
         parser.optionxform = str  # type: ignore[assignment,method-assign]  # keep the case
         try:

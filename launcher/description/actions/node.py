@@ -12,10 +12,7 @@ such a node is one error and the rest of the launch runs (ROS 2 would end the wh
 
 from __future__ import annotations
 
-import json
 import os
-import shlex
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -178,11 +175,15 @@ class Node(ExecuteProcess):
             if space and "ROS_NAMESPACE" not in own:  # nodeprocess.setup_env: the namespace
                 env["ROS_NAMESPACE"] = space.rstrip("/") or "/"  # unslashed, under own env
             if words:  # its parameters, for launcher's own nodes (rospy reads the server)
+                import json  # (ROS 1 alone: start-up time)
+
                 env[NODE_PARAMETERS] = json.dumps(words)
         cwd = self._ros1_cwd(context, argv[0], env) if ros1 else None
         spec = self.process_spec(context, argv, env, base, cwd)
         if ros1:  # nodeprocess: the log file is named after the node's full name
             stem = "-".join(p for p in (*space.split("/"), spec.label) if p)
+            import tempfile
+
             log = (context.log_dir or Path(tempfile.gettempdir())) / f"{stem}.log"
             spec.argv = [*spec.argv, f"__log:={log}"]
         self.name = spec.label  # (launch_ros's Node.name: its process's, once it has run)
@@ -211,6 +212,8 @@ class Node(ExecuteProcess):
             return []
         text = perform_text(context, to_text(value))
         try:
+            import shlex
+
             return shlex.split(text)
         except ValueError as exc:
             raise ExecutionError(f"cannot split '{text}' into words: {exc}") from None

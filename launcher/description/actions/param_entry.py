@@ -5,7 +5,6 @@ values and params files a node is given: one group per entry, launch_ros's typin
 from __future__ import annotations
 
 import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -57,8 +56,11 @@ _spec.metadata = {"launch": _spec.metadata["launch"]._replace(entry=ParamEntry)}
 def params_folder(context: LaunchContext) -> Path:
     """Where the params files launcher writes for a run go (private: they may hold the robot
     description)."""
-    return Path(context.log_dir) / "params" if context.log_dir else \
-        Path(tempfile.gettempdir()) / f"launcher-params-{os.getuid()}"
+    if context.log_dir:
+        return Path(context.log_dir) / "params"
+    import tempfile  # (a run without a log folder alone: start-up time)
+
+    return Path(tempfile.gettempdir()) / f"launcher-params-{os.getuid()}"
 
 
 def parameter_groups(context: LaunchContext, entries: list[ParamEntry],

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from launcher.description.safe_expression import ExpressionError, evaluate
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
@@ -21,6 +20,8 @@ class PythonExpression(Substitution):
     expression: Text_
 
     def perform(self, context: LaunchContext) -> str:
+        from launcher.description.safe_expression import ExpressionError, evaluate  # (ast)
+
         text = perform_text(context, self.expression)
         try:
             return str(evaluate(text, _arguments(context, str)))
@@ -32,6 +33,8 @@ def _arguments(context: LaunchContext, typed: Callable[[str], object]) -> dict[s
     """The launch's arguments for an expression, each `typed`: by bare name (those spelled
     as names), and as `arg('x')`."""
     def arg(name: str) -> object:
+        from launcher.description.safe_expression import ExpressionError
+
         if name not in context.configurations:
             raise ExpressionError(f"arg('{name}'): no launch argument '{name}'")
         return typed(context.configurations[name])
@@ -52,6 +55,7 @@ class RoslaunchExpression(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         from launcher.description.parameters import roslaunch_value
+        from launcher.description.safe_expression import ExpressionError, evaluate
         from launcher.description.substitution import Text
         from launcher.description.substitutions.configuration import AnonName
         from launcher.description.substitutions.environment import RoslaunchEnvironmentVariable

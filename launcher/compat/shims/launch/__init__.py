@@ -1,12 +1,13 @@
 """ROS 2's `launch` package, answered by launcher.api (see launcher.compat)."""
 
+from typing import Any
+
 from launch import (
     actions,
     conditions,
     event_handlers,
     events,
     launch_description_sources,
-    logging,
     substitutions,
     utilities,
 )
@@ -41,4 +42,15 @@ __all__ = [
 
 from launcher.compat.finder import rest_from_layout  # noqa: E402
 
-__getattr__ = rest_from_layout(__name__)
+_rest = rest_from_layout(__name__)
+
+
+def __getattr__(name: str) -> Any:
+    """launch.logging, imported when first asked for (Python's logging costs a launch's
+    start-up some 10 ms, and most launch files never touch it); the real package's other
+    names as the layout finds them."""
+    if name == "logging":
+        import launch.logging
+
+        return launch.logging
+    return _rest(name)
