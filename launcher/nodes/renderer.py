@@ -5,9 +5,11 @@ camera the sim says is due from the state on `/world/W/render/state` (only the l
 a state that comes while it draws is dropped, and counted), and publishes Gazebo's streams on
 the cameras' topics: images (rgb8, bgr8, mono8, mono16), depth images (32FC1, metres: +inf past
 the far clip, -inf before the near one), points, segmentation maps, and camera_info. It says
-which cameras anyone watches on `/world/W/render/wanted`, so the sim sends states for those
-alone. MuJoCo renders offscreen (`MUJOCO_GL`, egl unless set): on a GPU where there is one,
-else in software; the log names the GL renderer it got.
+which cameras anyone watches, and which model version it holds, on `/world/W/render/wanted`,
+so the sim sends states for those alone, and sends the model again to a renderer that lacks
+it (one whose route to the sim formed after the model's one publication). MuJoCo renders
+offscreen (`MUJOCO_GL`, egl unless set): on a GPU where there is one, else in software; the
+log names the GL renderer it got.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+import time
 from typing import Any
 
 import numpy as np
@@ -41,6 +44,7 @@ from launcher.sim.sensors.pictures import (
 
 NAME = "renderer"
 WANTED_PERIOD = 0.5  # s: the wanted cameras are said again this often (and on each change)
+LACKING_GRACE = 1.0  # s: states of a model not here yet are dropped quietly this long
 
 
 def build_parser() -> Parser:
@@ -70,6 +74,7 @@ class Renderer:
         self.drawers: dict[tuple[int, int], Offscreen] = {}  # colour and depth
         self.wanted: list[str] = []
         self.drawn = self.dropped = self.sequence = 0
+        self.lacking: tuple[int, float] | None = None  # (a model version lacked, since when)
         self.classes: dict[str, type] = {}
         self.wanted_publisher = node.create_publisher(
             "mujoco_sim/msg/StringMsg", f"/world/{world}/render/wanted", space=keys.SIM)
@@ -139,15 +144,18 @@ class Renderer:
         if wanted != self.wanted:
             self.logger.debug(f"cameras watched: {', '.join(wanted) or 'none'}")
         self.wanted = wanted  # (said again each time: the sim may have started since)
-        self.wanted_publisher.publish(self.message("mujoco_sim/msg/StringMsg",
-                                                        data=json.dumps(wanted)))
+        self.wanted_publisher.publish(self.message(
+            "mujoco_sim/msg/StringMsg",
+            data=json.dumps({"cameras": wanted, "version": self.version})))
 
     # --- drawing -------------------------------------------------------------------------------
     def on_state(self, message: Any) -> None:
         import mujoco
 
         if message.version != self.version or self.model is None:
+            self.lacks(message.version)
             return
+        self.lacking = None
         if self.sequence and message.sequence > self.sequence + 1:
             self.dropped += message.sequence - self.sequence - 1  # came while we drew
             self.logger.debug(f"{self.dropped} frames dropped so far (drawn: {self.drawn})")
@@ -164,6 +172,19 @@ class Renderer:
             if camera is not None:
                 self.draw(name, camera, message.time)
         self.drawn += 1
+
+    def lacks(self, version: int) -> None:
+        """A state of model `version`, which this renderer does not hold, is dropped: said
+        once per pair of versions, when it has lasted LACKING_GRACE (at a start or a spawn
+        the model may come just after the first states)."""
+        now = time.monotonic()
+        if self.lacking is None or self.lacking[0] != version:
+            self.lacking = (version, now)
+        elif now - self.lacking[1] >= LACKING_GRACE:
+            held = "no model" if self.model is None else f"model version {self.version}"
+            self.logger.info(f"dropping the states of model version {version}: this renderer "
+                             f"holds {held} (it says so to the sim, which sends the model "
+                             f"again)", once=True)
 
     def draw(self, name: str, camera: dict[str, Any], stamp: float) -> None:
         kind, topics = camera["kind"], camera["topics"]

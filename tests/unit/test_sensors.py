@@ -4,6 +4,7 @@ against geometry and physics, not only against shapes. The world is stepped with
 
 from __future__ import annotations
 
+import json
 import math
 import re
 from pathlib import Path
@@ -380,6 +381,40 @@ def test_a_cameras_info_topic_is_its_camera_info_topic(tmp_path, monkeypatch):
                                         topic="front"))
     assert world.entities["box"].plugins[0].topics() == {"image": "/front",
                                                          "camera_info": "/front/info"}
+
+
+def test_a_renderer_that_lacks_the_model_is_sent_it_again(tmp_path, monkeypatch):
+    """The model is published once per change; a renderer that missed it (its route to the
+    sim formed late) says the version it holds (-1: none) with the cameras it wants, and gets
+    the same model again: not while the model may still be on its way, and at most once
+    every 2 s. A renderer that says only the cameras, as a plain list, is still heard."""
+    monkeypatch.setenv("LAUNCHER_RENDERER", "none")
+    world = world_with(tmp_path, camera())
+    now = [100.0]
+    world.rendering.clock = lambda: now[0]
+    run(world, 0.05)
+    sent = world.transport.published["/world/w/render/model"]
+    assert [model.version for model in sent] == [1]
+    (name,) = world.rendering.cameras
+    say = world.transport.callbacks["/world/w/render/wanted"]
+
+    def holds(version, after):
+        now[0] += after
+        say(SimpleNamespace(data=json.dumps({"cameras": [name], "version": version})))
+        return len(sent) - 1  # the times the model was sent again
+
+    assert holds(-1, after=0.5) == 0  # (the first sending may not have arrived yet)
+    assert holds(1, after=2.0) == 0 and world.rendering.wants(name)
+    assert holds(-1, after=0.0) == 1 and sent[1] is sent[0]  # the same model, version 1
+    assert holds(-1, after=1.5) == 1  # within 2 s of the last sending
+    assert holds(0, after=0.6) == 2
+    assert "the renderer holds model version -1, not 1: sending it again" in \
+        world.transport.messages("debug")
+    say(SimpleNamespace(data=json.dumps([])))
+    assert not world.rendering.wants(name)
+    now[0] += 10
+    say(SimpleNamespace(data=json.dumps([name])))
+    assert world.rendering.wants(name) and len(sent) == 3
 
 
 def test_a_cameras_noise_is_gz_sensors_image_noise_seeded_per_camera(tmp_path, monkeypatch):
