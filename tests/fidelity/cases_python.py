@@ -5,7 +5,8 @@ parameters, namespaces and lifecycle events).
 
 Besides the probe's starts, a Python case records what its own code saw: `note(...)` (from
 PRELUDE, the same text in every case) writes one record per call, and the comparison keeps
-their order. Every case's text is PRELUDE, then its own definitions, then
+their order. Every case's text is PRELUDE (launch's and launch_ros's modules, as launch files import them),
+then its own definitions and imports (asyncio, where a case uses it), then
 `generate_launch_description()` returning its entities.
 """
 
@@ -16,7 +17,6 @@ from collections.abc import Iterator
 from typing import Any
 
 PRELUDE = '''\
-import asyncio
 import json
 import signal
 import os
@@ -245,6 +245,8 @@ def context_api() -> Iterator[dict[str, Any]]:
             note(context.is_shutdown)
     """)
     yield opaque("context/asyncio-loop", """
+        import asyncio
+
         def look(context):
             note(isinstance(context.asyncio_loop, asyncio.AbstractEventLoop))
     """)
@@ -661,6 +663,8 @@ def opaque_functions() -> Iterator[dict[str, Any]]:
             raise ValueError('opaque broke')
     """)
     yield py("opaque/coroutine", "OpaqueCoroutine(coroutine=later), noted('first'),", """
+        import asyncio
+
         async def later(context):
             await asyncio.sleep(0.2)
             note('coroutine done')
@@ -706,6 +710,8 @@ def services() -> Iterator[dict[str, Any]]:
             note('second raised', type(error).__name__)
     """)
     yield script("service/run-async", """
+        import asyncio
+
         async def main():
             service = LaunchService()
             service.include_launch_description(LaunchDescription([noted('async ran'), probe()]))
@@ -714,6 +720,8 @@ def services() -> Iterator[dict[str, Any]]:
         note('returned', asyncio.run(main()))
     """)
     yield script("service/shutdown", """
+        import asyncio
+
         async def main():
             service = LaunchService()
             service.include_launch_description(LaunchDescription([
@@ -964,7 +972,14 @@ def ros_actions() -> Iterator[dict[str, Any]]:
 
 
 def lifecycle() -> Iterator[dict[str, Any]]:
-    """A lifecycle node driven by launch_ros's events, as launch files drive one."""
+    """A lifecycle node driven by launch_ros's events, as launch files drive one. (Each ends
+    its launch itself; `stop_after` keeps a run from being taken as settled while the real
+    tool's lifecycle services are still being discovered.)"""
+    for spec in _lifecycle():
+        yield {"stop_after": 15.0, **spec}
+
+
+def _lifecycle() -> Iterator[dict[str, Any]]:
     node = "LifecycleNode(package='probe', executable='lifecycle_probe', name='life', namespace='')"
     yield py("lifecycle/configure-then-activate", """
         RegisterEventHandler(OnStateTransition(target_lifecycle_node=life, goal_state='inactive',

@@ -23,6 +23,7 @@ missing or was made of another text.
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import os
 import shutil
@@ -115,12 +116,16 @@ def ros1_tool(root: Path) -> Tool:
                               str(port)), env)
 
 
+_DOMAINS = itertools.count()
+
+
 def ros2_tool(venv: Path) -> Tool:
     env = {key: value for key, value in os.environ.items()
            if not key.startswith(("ROS_", "AMENT_", "LAUNCHER_", "PYTHON"))}
     env.update(PATH=f"{venv / 'bin'}:/usr/bin:/bin",
                AMENT_PREFIX_PATH=f"{WORKSPACE / 'install'}:{venv}",
-               ROS_DOMAIN_ID=str(os.getpid() % 200), ROS_LOCALHOST_ONLY="1")
+               # a domain per run: cases run side by side must not see each other's nodes
+               ROS_DOMAIN_ID=str((os.getpid() + next(_DOMAINS)) % 200), ROS_LOCALHOST_ONLY="1")
     return Tool("ros2 launch", (str(venv / "bin/python"), str(venv / "drive.py")), env,
                 python=(str(venv / "bin/python"),))
 
