@@ -77,22 +77,26 @@ class Publisher:
         return self._publisher.matching_status.matching
 
     def _on_matching(self, status: Any) -> None:
-        with self._watching:
+        with self._watching:  # (queued in the order told: see watch_subscribers)
             if status.matching == self._told:
                 return
             self._told = status.matching
-        for watcher in self._watchers:
-            self._host.enqueue(watcher, status.matching)
+            for watcher in self._watchers:
+                self._host.enqueue(watcher, status.matching)
 
     def watch_subscribers(self, callback: Callable[[bool], None]) -> None:
         """Call `callback(matching)` on the executor whenever subscribers come or all go
-        (and once now); lazy bridges subscribe to their source only while someone listens."""
+        (and once now); lazy bridges subscribe to their source only while someone listens.
+        What a watcher is told is queued under the lock that `_told` is kept under: a change
+        told on Zenoh's thread while the first word was on its way came before it, and the
+        watcher was left with the older word for good (a robot_state_publisher that never
+        published tf)."""
         with self._watching:
             if self._listener is None:
                 self._listener = self._publisher.declare_matching_listener(self._on_matching)
             self._told = matching = self._matching
             self._watchers.append(callback)
-        self._host.enqueue(callback, matching)
+            self._host.enqueue(callback, matching)
 
     def publish(self, message: Any) -> None:
         self.publish_raw(self._write(message))

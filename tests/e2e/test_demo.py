@@ -4,11 +4,13 @@ driver processes on a real Zenoh router; the worlds are SDF, found through the h
 
 from __future__ import annotations
 
+import queue
 import random
 import re
 import shutil
 import signal
 import subprocess
+import threading
 import time
 
 import psutil
@@ -40,18 +42,31 @@ def wait_for_driving(ws, timeout: float = 90) -> None:
     raise AssertionError(f"the robot did not drive:\n{ws.output('demo.out')}")
 
 
-def first_line_with(ws, args: list[str], needle: str, timeout: float = 30) -> str:
-    """Run `launcher ARGS` until a line holds `needle`; that line."""
+def first_line_with(ws, args: list[str], needle: str, timeout: float = 60) -> str:
+    """Run `launcher ARGS` until a line holds `needle`; that line ("" if none came within
+    `timeout` seconds: the test fails, it does not wait for ever)."""
     proc = subprocess.Popen([*launcher_argv(), *args], cwd=ws.root, env=ws.env,
                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-    try:
+    lines: queue.Queue[str] = queue.Queue()
+
+    def read() -> None:  # (ends with the output)
         for line in proc.stdout:
+            lines.put(line)
+
+    threading.Thread(target=read, daemon=True).start()
+    deadline = time.monotonic() + timeout
+    try:
+        while time.monotonic() < deadline:
+            try:
+                line = lines.get(timeout=max(0.0, deadline - time.monotonic()))
+            except queue.Empty:
+                break
             if needle in line:
                 return line
         return ""
     finally:
         proc.send_signal(signal.SIGINT)
-        proc.wait(timeout)
+        proc.wait(30)
 
 
 def sim_seconds(ws) -> float:
