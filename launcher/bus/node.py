@@ -84,6 +84,8 @@ class Parameter:
     def __init__(self, name: str, value: Any) -> None:
         self.name, self.value = name, value
 
+RECHECK = 0.5  # s: how often a node looks again at the subscribers it watches (wall clock)
+
 
 class Node:
     def __init__(self, name: str, *, namespace: str = "", argv: list[str] | None = None,
@@ -114,6 +116,7 @@ class Node:
                          self.name, logger, space)
         self.session = self.host.session
         self._timers: list[Timer] = []
+        self._watched: list[Any] = []  # publishers whose subscribers it watches (recheck)
         self._token = self.host.announce(keys.NODE)
         self._shutdown = self.session.declare_queryable(
             keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self.host.node_id),
@@ -195,6 +198,19 @@ class Node:
         """This node's callbacks run when `other` spins (one thread for both); call it before
         anything arrives."""
         self.host.share_queue(other.host)
+
+    def watch_subscribers(self, publisher: Any, callback: Callable[[bool], None]) -> None:
+        """`publisher.watch_subscribers(callback)`, and a look at what Zenoh says now every
+        RECHECK seconds: a word of Zenoh's that never came, or came out of order, heals
+        there (a lazy node left believing nobody listens never publishes again)."""
+        publisher.watch_subscribers(callback)
+        if not self._watched:
+            self.create_timer(RECHECK, self._recheck)
+        self._watched.append(publisher)
+
+    def _recheck(self) -> None:
+        for publisher in self._watched:
+            publisher.recheck()
 
     def create_timer(self, period: float, callback: Callable[[], None],
                      clock: Clock | None = None) -> Timer:

@@ -98,6 +98,19 @@ class Publisher:
             self._watchers.append(callback)
             self._host.enqueue(callback, matching)
 
+    def recheck(self) -> None:
+        """Tell the watchers what Zenoh says now where it differs from what they were told
+        (Node.watch_subscribers calls this on a timer)."""
+        with self._watching:
+            if self._closed or not self._watchers:
+                return
+            matching = self._matching
+            if matching == self._told:
+                return
+            self._told = matching
+            for watcher in self._watchers:
+                self._host.enqueue(watcher, matching)
+
     def publish(self, message: Any) -> None:
         self.publish_raw(self._write(message))
 

@@ -88,7 +88,7 @@ class GazeboApi:
                     space=keys.SIM))
             elif not matching and source:
                 source.pop().destroy()
-        publisher.watch_subscribers(watch)
+        self.node.watch_subscribers(publisher, watch)
 
     def on_model_state_topic(self, message: Any) -> None:
         ok, text = self._set_state(message)

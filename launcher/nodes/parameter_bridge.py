@@ -110,7 +110,7 @@ class Bridge:
                 state["subscription"].destroy()
                 state["subscription"] = None
 
-        publisher.watch_subscribers(on_subscribers)
+        self.node.watch_subscribers(publisher, on_subscribers)
 
 
 # ros_gz_bridge's parameter (the config file is a template of all the node's parameters)

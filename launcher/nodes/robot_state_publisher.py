@@ -68,7 +68,7 @@ class RobotStatePublisher:
         # joint_states is listened to only while /tf has a subscriber: with no one to tell,
         # the transforms are not worked out (and a lazy bridge, the sim behind it, rest too)
         self._joint_states: Any = None
-        self.tf_pub.watch_subscribers(self._on_tf_subscribers)
+        node.watch_subscribers(self.tf_pub, self._on_tf_subscribers)
         node.add_on_set_parameters_callback(self.on_parameter)
 
     def _on_tf_subscribers(self, matching: bool) -> None:
