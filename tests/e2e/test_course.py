@@ -12,8 +12,8 @@ import time
 
 import pytest
 
-from tests.conftest import REPO
 from tests.support.course import course_publisher, course_text
+from tests.support.environment import REPO
 
 LAUNCH = REPO / "launch_files" / "robot.launch.yaml"
 

@@ -16,7 +16,8 @@ import time
 import psutil
 import pytest
 
-from tests.conftest import REPO, launcher_argv, shared, tagged_processes
+from tests.support.environment import REPO, shared
+from tests.support.processes import launcher_argv, tagged_processes
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")
 

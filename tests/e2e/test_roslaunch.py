@@ -130,7 +130,7 @@ def test_the_course_command_lines_verbatim_in_a_shell(catkin):
     import os
     import subprocess
 
-    from tests.conftest import REPO
+    from tests.support.environment import REPO
 
     setup = REPO / "hooks" / "setup.bash"
     cmake = catkin.write("catkin_ws/src/world_plugin/CMakeLists.txt", course_world_plugin_cmake())

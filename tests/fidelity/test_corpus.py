@@ -20,13 +20,13 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import tagged_processes
 from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import Case, cases
 from tests.fidelity.known import KNOWN_DIFFERENCES
 from tests.fidelity.normalise import outcome
 from tests.fidelity.record import EXPECTED
 from tests.fidelity.runner import launcher_tool
+from tests.support.processes import tagged_processes
 
 CASES = cases()
 JOBS = 3

@@ -11,7 +11,7 @@ import time
 
 import pytest
 
-from tests.conftest import shared
+from tests.support.environment import shared
 from tests.support.nodes import node_package
 
 SERVER, CLIENT = "examples_rclpy_minimal_action_server", "examples_rclpy_minimal_action_client"

@@ -10,8 +10,8 @@ import pytest
 import yaml
 from rosbags.rosbag2 import Reader
 
-from tests.conftest import launcher_argv
 from tests.support.nodes import TALKER, script_launched
+from tests.support.processes import launcher_argv
 
 
 @pytest.fixture

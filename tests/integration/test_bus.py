@@ -10,8 +10,8 @@ import time
 import pytest
 
 from launcher.bus.discovery import answers
-from tests.conftest import launcher_argv
 from tests.support.nodes import TALKER, launch, stop, wait_text
+from tests.support.processes import launcher_argv
 
 PY = sys.executable
 LISTENER = """

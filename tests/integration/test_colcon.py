@@ -14,7 +14,7 @@ import time
 
 import pytest
 
-from tests.conftest import REPO, shared
+from tests.support.environment import REPO, shared
 
 SETUP = REPO / "hooks" / "setup.bash"
 SEED = ("seeds", "001_ea06ae6f7572c47f.txt")

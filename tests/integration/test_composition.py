@@ -10,7 +10,7 @@ import time
 
 import pytest
 
-from tests.conftest import REPO
+from tests.support.environment import REPO
 
 COMPONENTS = '''
 import time

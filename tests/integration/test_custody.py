@@ -16,8 +16,9 @@ import time
 import psutil
 import pytest
 
-from tests.conftest import Workspace, tagged_processes
 from tests.support.packages import make_tree, manifest
+from tests.support.processes import tagged_processes
+from tests.support.workspace import Workspace
 
 PY = sys.executable
 

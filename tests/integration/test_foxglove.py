@@ -18,7 +18,8 @@ from pathlib import Path
 import pytest
 
 from launcher.bus.types import registry
-from tests.conftest import REPO, tagged_processes
+from tests.support.environment import REPO
+from tests.support.processes import tagged_processes
 from tests.support.waiting import free_port, wait_for
 
 LAUNCH = str(REPO / "launch_files" / "robot.launch.yaml")

@@ -10,7 +10,7 @@ import time
 
 import pytest
 
-from tests.conftest import REPO, shared
+from tests.support.environment import REPO, shared
 from tests.support.gazebo import demos_workspace
 
 WORLDS = ("external", "gz-sim", "worlds")  # in ../shared

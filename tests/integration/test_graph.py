@@ -18,7 +18,8 @@ from pathlib import Path
 import pytest
 
 from launcher.bus.discovery import answers
-from tests.conftest import REPO, launcher_argv
+from tests.support.environment import REPO
+from tests.support.processes import launcher_argv
 
 CLIENTS = Path(__file__).parent / "clients"
 

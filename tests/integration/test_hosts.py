@@ -15,7 +15,8 @@ import uuid
 
 import pytest
 
-from tests.conftest import REPO, launcher_argv
+from tests.support.environment import REPO
+from tests.support.processes import launcher_argv
 
 pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason="network namespaces need root")
 

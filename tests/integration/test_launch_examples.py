@@ -8,7 +8,7 @@ import subprocess
 import sys
 
 from launcher.compat import SITE
-from tests.conftest import shared
+from tests.support.environment import shared
 
 
 def test_launch_counters_runs_unchanged_and_stops_what_ignores_sigint_and_sigterm(ws):

@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from tests.conftest import shared
+from tests.support.environment import shared
 
 EXAMPLES = ("launch_testing", "launch_pytest", "test", "launch_pytest", "examples")
 

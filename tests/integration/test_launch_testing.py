@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import shared
+from tests.support.environment import shared
 
 EXAMPLES = ("launch_testing", "launch_testing", "test", "launch_testing", "examples")
 

@@ -12,7 +12,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from tests.conftest import shared
+from tests.support.environment import shared
 
 DEMOS = ("external", "mujoco_ros2_control", "mujoco_ros2_control_demos")  # in ../shared
 RECORDED = Path(__file__).resolve().parent.parent / "data" / "mjcf_generation"

@@ -15,7 +15,7 @@ import time
 import pytest
 
 from launcher.compat import SITE
-from tests.conftest import shared
+from tests.support.environment import shared
 from tests.support.nodes import node_package
 
 PUBLISHERS = ["publisher_old_school", "publisher_local_function", "publisher_member_function"]

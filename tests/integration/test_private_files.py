@@ -7,7 +7,7 @@ from __future__ import annotations
 import os
 import stat
 
-from tests.conftest import REPO
+from tests.support.environment import REPO
 
 
 def mode(path) -> int:

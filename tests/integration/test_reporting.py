@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from tests.conftest import launcher_argv
+from tests.support.processes import launcher_argv
 
 PY = sys.executable
 

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import REPO
+from tests.support.environment import REPO
 
 SETUP = REPO / "hooks" / "setup.bash"
 

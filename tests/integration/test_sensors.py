@@ -11,7 +11,7 @@ import time
 
 import pytest
 
-from tests.conftest import shared
+from tests.support.environment import shared
 from tests.support.gazebo import demos_workspace
 
 WORLDS = ("external", "gz-sim", "worlds")  # in ../shared

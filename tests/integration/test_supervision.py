@@ -12,7 +12,7 @@ import time
 import psutil
 import pytest
 
-from tests.conftest import launcher_argv
+from tests.support.processes import launcher_argv
 
 PY = sys.executable
 

@@ -145,7 +145,7 @@ def test_view_frames_writes_the_tree_as_graphviz_and_pdf(ws):
     import os
     import subprocess
 
-    from tests.conftest import launcher_argv
+    from tests.support.processes import launcher_argv
 
     ws.own_bus()
     node_package(ws, "tf_nodes", {"broadcaster.py": BROADCASTER})

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.conftest import shared
+from tests.support.environment import shared
 
 COURSE = ("seeds", "000_a847380181b3b659.txt")  # the course, in ../shared
 

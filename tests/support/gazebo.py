@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.conftest import shared
+from tests.support.environment import shared
 
 
 def demos_workspace(ws) -> Path:

@@ -8,7 +8,7 @@ import signal
 import sys
 from pathlib import Path
 
-from tests.conftest import Workspace
+from tests.support.workspace import Workspace
 
 
 def node_package(ws, name: str, scripts: dict[str, str]) -> Path:

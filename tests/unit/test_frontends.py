@@ -4,7 +4,8 @@ import pytest
 
 from launcher.description.actions.executable import ExecuteProcess
 from launcher.errors import ParseError
-from tests.unit.helpers import run, xml_description, yaml_description
+from tests.support.fake_service import run
+from tests.support.launch_text import xml_description, yaml_description
 
 YAML = """
 launch:

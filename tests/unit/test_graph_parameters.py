@@ -16,7 +16,7 @@ from launcher.bus import graph_parameters as graph
 from launcher.cli.rosparam.server import resolve
 from launcher.errors import UsageError
 from launcher.frontend.loader import load_file
-from tests.unit.helpers import run
+from tests.support.fake_service import run
 
 
 def test_ros1_names_are_dotted_parameter_names_and_back():

@@ -17,7 +17,7 @@ import pytest
 from launcher.cli import ros2_command
 from launcher.cli.main import build_parser
 from launcher.cli.verbs import EVERY
-from tests.environment import REPO
+from tests.support.environment import REPO
 
 sys.path.insert(0, str(REPO / "docs" / "_gen"))
 import reference_cli  # noqa: E402 - the generator of the CLI reference, beside the docs

@@ -12,7 +12,7 @@ import pytest
 from launcher import compat
 from launcher.errors import ParseError
 from launcher.frontend.loader import load_file
-from tests.unit.helpers import run
+from tests.support.fake_service import run
 
 
 @pytest.fixture(scope="module")

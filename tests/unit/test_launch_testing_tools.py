@@ -129,7 +129,7 @@ def test_a_launch_that_ends_after_its_ready_to_test_still_lets_the_tests_run():
     from launch import LaunchDescription
     from launch_testing.actions import ReadyToTest
 
-    from launcher.compat.threaded_launch import ThreadedLaunch
+    from launcher.compat.testing.launch_pytest.threaded_launch import ThreadedLaunch
 
     ready = ReadyToTest()
     launch = ThreadedLaunch(EndsRightAfterReady, event_loop=None)

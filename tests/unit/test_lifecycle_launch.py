@@ -10,7 +10,7 @@ from launcher.description.actions.lifecycle import (
     matches_action,
 )
 from launcher.runtime.lifecycle import StateTransition
-from tests.unit.helpers import xml_description, yaml_description
+from tests.support.launch_text import xml_description, yaml_description
 
 
 def test_the_lifecycle_node_tag_in_xml_and_yaml():
@@ -58,7 +58,7 @@ def test_a_lifecycle_node_without_a_name_is_said_where_it_is():
     import pytest
 
     from launcher.errors import LaunchError
-    from tests.unit.helpers import run
+    from tests.support.fake_service import run
 
     description = xml_description('<launch>\n<lifecycle_node pkg="p" exec="e" '
                                   'namespace="ns"/>\n</launch>', "lc.launch.xml")

@@ -54,7 +54,7 @@ def test_readers_and_signals_reach_the_loop():
 def test_the_launch_service_and_the_tests_fake_are_both_runtimes():
     from launcher.runtime.context import Runtime
     from launcher.runtime.service import LaunchService
-    from tests.unit.helpers import FakeService
+    from tests.support.fake_service import FakeService
 
     assert isinstance(FakeService(), Runtime)
     assert isinstance(LaunchService(), Runtime)

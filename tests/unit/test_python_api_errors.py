@@ -12,7 +12,7 @@ import pytest
 
 from launcher.errors import LaunchError, ParseError
 from launcher.frontend.loader import load_file
-from tests.unit.helpers import run
+from tests.support.fake_service import run
 
 HEAD = "from launch import LaunchDescription, Action, Substitution\n" \
        "from launch.actions import ExecuteProcess, OpaqueFunction, LogInfo\n"

@@ -34,7 +34,7 @@ def test_string_strip_takes_the_white_space_around_the_text_away():
 
 
 def test_replace_environment_variables_leaves_the_processes_only_the_given_ones():
-    from tests.unit.helpers import run
+    from tests.support.fake_service import run
 
     done, _ = run(LaunchDescription([
         SetLaunchConfiguration("home", "/h"),

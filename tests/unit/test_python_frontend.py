@@ -4,7 +4,7 @@ import pytest
 
 from launcher.errors import ParseError
 from launcher.frontend.loader import load_file
-from tests.unit.helpers import run
+from tests.support.fake_service import run
 
 LAUNCH_PY = '''
 import os

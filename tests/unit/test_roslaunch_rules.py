@@ -18,7 +18,7 @@ import pytest
 
 from launcher.errors import LaunchError, ParseError
 from launcher.frontend.loader import load_file
-from tests.unit.helpers import run
+from tests.support.fake_service import run
 
 
 def launch(tmp_path, text: str, name: str = "top.launch"):

@@ -11,7 +11,8 @@ import pytest
 import yaml
 
 from launcher.nodes.rviz import layout
-from tests.conftest import launcher_argv, shared
+from tests.support.environment import shared
+from tests.support.processes import launcher_argv
 
 CONFIGS = [("ros_gz_sim_demos", "rviz", name) for name in
            ("camera.rviz", "diff_drive.rviz", "gpu_lidar_bridge.rviz", "imu.rviz")] + \

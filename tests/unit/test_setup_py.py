@@ -8,7 +8,7 @@ import pytest
 
 from launcher.errors import LaunchError
 from launcher.packages.setup_py import console_scripts
-from tests.conftest import shared
+from tests.support.environment import shared
 
 
 def write(tmp_path: Path, text: str) -> Path:

@@ -1,37 +1,14 @@
-"""Helpers for unit tests: parse inline launch text, and visit actions without a runtime."""
+"""Actions visited without a runtime: a service that records processes instead of starting
+them (unit tests may fake the spawner), and a description run against it."""
 
 from __future__ import annotations
 
-import textwrap
 from collections import deque
-from pathlib import Path
 from typing import Any
 
 from launcher.description.action import Action, LaunchDescription
-from launcher.description.registry import default_registry
-from launcher.description.substitution import perform_text
-from launcher.errors import Location
-from launcher.frontend.builder import build_description, parse_substitutions
-from launcher.frontend.entity import Attribute
 from launcher.frontend.loader import load_file
-from launcher.frontend.xml_loader import load_xml
-from launcher.frontend.yaml_loader import load_yaml
 from launcher.runtime.context import LaunchContext
-
-
-def yaml_description(text: str, file: str = "test.launch.yaml") -> LaunchDescription:
-    return build_description(load_yaml(textwrap.dedent(text).lstrip("\n"), file), Path(file))
-
-
-def xml_description(text: str, file: str = "test.launch.xml") -> LaunchDescription:
-    return build_description(load_xml(textwrap.dedent(text).strip().encode(), file), Path(file))
-
-
-def evaluate(text: str, context: LaunchContext | None = None, roslaunch: bool = False) -> str:
-    """Perform substitution text as a launch file would (a roslaunch file: `roslaunch`)."""
-    context = context or LaunchContext({}, {})
-    attribute = Attribute(text, Location("inline", 1, 1), 0, roslaunch=roslaunch)
-    return perform_text(context, parse_substitutions(attribute, default_registry()))
 
 
 class FakeService:
