@@ -68,6 +68,15 @@ class ExecutionError(LaunchError):
     """An action could not be carried out (a missing executable, a bad cwd, …)."""
 
 
+class ParameterError(LaunchError):
+    """A node's parameter holds a value its declaration refuses. `message` names the
+    parameter ("parameter 'rate': expected …"); the error names its node before it."""
+
+    def __init__(self, name: str, message: str, node: str = "") -> None:
+        super().__init__(f"{node}: {message}" if node else message)
+        self.name, self.node = name, node
+
+
 class UsageError(LaunchError):
     """The command line was wrong (exit status 2, as argparse's own errors)."""
 
@@ -117,13 +126,19 @@ def report(exc: BaseException, label: str = "", debug: bool = False) -> int:
         import traceback  # only when debugging: start-up time
 
         traceback.print_exception(exc)
-    prefix = f"[{label}] " if label else ""
+    prefix = f"[{label}] " if label and not _names(exc, label) else ""
     if isinstance(exc, LaunchError):
         print(f"{prefix}error: {exc}", file=sys.stderr, flush=True)
         return exc.exit_code
     print(f"{prefix}error: internal error: {type(exc).__name__}: {exc} (run with --debug for "
           "the traceback)", file=sys.stderr, flush=True)
     return 1
+
+
+def _names(exc: BaseException, label: str) -> bool:
+    """Whether the error names who says it already: a node's parameter error names its node,
+    which a built-in node's label names too (said once, not twice)."""
+    return isinstance(exc, ParameterError) and exc.node.strip("/") == label
 
 
 def reported(run: Callable[[], int | None], label: str = "", debug: bool = False) -> int:

@@ -5,8 +5,10 @@ wrote into it, with the same checks and messages everywhere.
 `attr(...)` goes into a dataclass field's metadata; `build(cls, values, where)` makes a record
 from values already read (YAML, a command line, XML children, ROS parameters): unknown keys
 are refused (or warned about) with "did you mean", required ones must be there, and each value
-is coerced to its kind, leniently about spelling and strictly about meaning. This module
-imports only `errors`: every layer may declare with it.
+is coerced to its kind, leniently about spelling and strictly about meaning. `problem` is the
+one check of a value against what a declaration says of it (required, choices, bounds), in the
+one wording: these fields' and a node's declared parameters' (bus/declarations.py). This
+module imports only `errors` and `records`: every layer may declare with it.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ from __future__ import annotations
 import enum
 import math
 from collections.abc import Callable, Mapping
-from typing import Any, NamedTuple, TypeVar
+from typing import Any, NamedTuple, Protocol, TypeVar
 
 from launcher import records
 from launcher.errors import ParseError, did_you_mean
@@ -42,8 +44,10 @@ class Attr(NamedTuple):
     doc: str = ""
     entry: type | None = None  # the record type of ENTRIES
     minimum: float | None = None  # for numbers: the smallest valid value
-    choices: tuple[str, ...] = ()  # for TEXT: the valid literal values
+    choices: tuple[str, ...] = ()  # for TEXT and NAMES (each name): the valid literal values
     maximum: float | None = None  # for numbers: the largest valid value
+    above: float | None = None  # for numbers: what a valid value must exceed (> 0, not ≥ 0)
+    below: float | None = None  # for numbers: what a valid value must stay under
 
 
 LISTS = (Kind.ENTRIES, Kind.ACTIONS, Kind.CHILDREN, Kind.NAMES)
@@ -64,6 +68,71 @@ def declared_fields(cls: type) -> list[tuple[records.Field, Attr]]:
 
 def frontend_name(f: records.Field, spec: Attr) -> str:
     return spec.name or f.name
+
+
+# --- the one check of a value against its declaration ---------------------------------------
+class Declared(Protocol):
+    """What a declaration says of its values: an Attr, or a node's declared parameter."""
+
+    @property
+    def required(self) -> bool: ...
+    @property
+    def choices(self) -> tuple[str, ...]: ...
+    @property
+    def minimum(self) -> float | None: ...
+    @property
+    def maximum(self) -> float | None: ...
+    @property
+    def above(self) -> float | None: ...
+    @property
+    def below(self) -> float | None: ...
+
+
+# each bound: its declaration's field, its sign, and when a value falls outside it
+_BOUNDS: tuple[tuple[str, str, Callable[[float, float], bool]], ...] = (
+    ("minimum", "≥", lambda value, bound: value < bound),
+    ("above", ">", lambda value, bound: value <= bound),
+    ("maximum", "≤", lambda value, bound: value > bound),
+    ("below", "<", lambda value, bound: value >= bound),
+)
+
+
+def problem(value: Any, spec: Declared, what: str, shown: str = "") -> str | None:
+    """What is wrong with `value` (None: not given) by its declaration, as `what: expected
+    …, got …`; None when nothing is. A list's items are checked one by one (each must be one
+    of the choices). `shown`: the value as the user wrote it, when that differs."""
+    if value is None:
+        return f"{what} is required" if spec.required else None
+    for item in value if isinstance(value, list | tuple) else (value,):
+        found = _outside_choices(item, spec, what) or \
+            _outside_bounds(item, spec, what, shown or str(item))
+        if found:
+            return found
+    return None
+
+
+def _outside_choices(item: Any, spec: Declared, what: str) -> str | None:
+    if not spec.choices or item in spec.choices:
+        return None
+    return (f"{what}: expected one of {', '.join(spec.choices)}, got '{item}'"
+            f"{did_you_mean(str(item), spec.choices)}")
+
+
+def _outside_bounds(item: Any, spec: Declared, what: str, shown: str) -> str | None:
+    """Out of a bound: a finite number only (an infinity or NaN says "no limit", as a speed
+    limit of .inf does)."""
+    if not isinstance(item, int | float) or isinstance(item, bool) or not math.isfinite(item):
+        return None
+    for key, sign, outside in _BOUNDS:
+        bound = getattr(spec, key)
+        if bound is not None and outside(item, bound):
+            return f"{what}: expected a number {sign} {_plain(bound)}, got {shown}"
+    return None
+
+
+def _plain(number: float) -> str:
+    """A bound as users write it: 1 for 1.0, 0.001 as it is."""
+    return str(int(number) if float(number).is_integer() else number)
 
 
 # --- coercion: lenient about spelling, strict about meaning --------------------------------
@@ -89,29 +158,22 @@ def coerce(kind: Kind, text: str, what: str, spec: Attr | None = None) -> Any:
             raise ParseError(f"{what}: expected {expected}, got '{text}'") from None
         if isinstance(value, float) and not math.isfinite(value):
             raise ParseError(f"{what}: expected a finite number, got '{text}'")
-        _check_range(value, what, spec, text.strip())
-        return value
-    if spec is not None and spec.choices and text not in spec.choices:
-        raise ParseError(f"{what}: expected one of {', '.join(spec.choices)}, got '{text}'"
-                         f"{did_you_mean(text, spec.choices)}")
-    return text
+        return _checked(value, what, spec, text.strip())
+    return _checked(text, what, spec)
 
 
-def _check_range(value: float, what: str, spec: Attr | None, shown: str) -> None:
-    if spec is None:
-        return
-    for bound, sign, outside in ((spec.minimum, "≥", value < (spec.minimum or 0)),
-                                 (spec.maximum, "≤", value > (spec.maximum or 0))):
-        if bound is not None and outside:
-            nice = int(bound) if float(bound).is_integer() else bound
-            raise ParseError(f"{what}: expected a number {sign} {nice}, got {shown}")
+def _checked(value: Any, what: str, spec: Attr | None, shown: str = "") -> Any:
+    found = problem(value, spec, what, shown) if spec is not None else None
+    if found:
+        raise ParseError(found)
+    return value
 
 
 def value_of(kind: Kind, value: Any, what: str, spec: Attr | None = None) -> Any:
     """A value read from YAML, a command line or a parameter, as `kind`: text is coerced,
     typed values are checked (a YAML `true` is no number; 3 is a fine float)."""
     if kind is Kind.NAMES and isinstance(value, str):
-        return [value]  # a repeatable element given once
+        return _checked([value], what, spec)  # a repeatable element given once
     if isinstance(value, str):
         return coerce(kind, value, what, spec)
     if kind is Kind.BOOL and isinstance(value, bool):
@@ -122,7 +184,7 @@ def value_of(kind: Kind, value: Any, what: str, spec: Attr | None = None) -> Any
             raise ParseError(f"{what}: expected a whole number, got {value!r}")
         return coerce(kind, str(int(value) if kind is Kind.INT else value), what, spec)
     if kind is Kind.NAMES and isinstance(value, list | tuple):
-        return [str(item) for item in value]
+        return _checked([str(item) for item in value], what, spec)
     if kind in (Kind.TEXT, Kind.NAME) and isinstance(value, int | float | bool):
         return coerce(kind, str(value).lower() if isinstance(value, bool) else str(value),
                       what, spec)
@@ -156,6 +218,6 @@ def build(cls: type[R], values: Mapping[str, Any], where: str = "", *,
         f, spec = spellings[key]
         kwargs[f.name] = value_of(spec.kind, value, f"{prefix}{key}", spec)
     for f, spec in fields:
-        if spec.required and f.name not in kwargs:
-            raise ParseError(f"{prefix}{frontend_name(f, spec)} is required")
+        if f.name not in kwargs:
+            _checked(None, f"{prefix}{frontend_name(f, spec)}", spec)
     return cls(**kwargs)

@@ -77,9 +77,10 @@ class NodeParameters:
     def declare(self, declared: tuple[Param, ...], only: tuple[str, ...] = ()) -> dict[str, Any]:
         """Parameters declared as data (those named in `only`, else all): checked against
         their declarations, their defaults kept as values (listed, as a ROS node lists what it
-        declares) and described by `describe`. ParameterError for the first bad one."""
+        declares) and described by `describe`. A ParameterError, naming the node, for the
+        first bad one."""
         self._declared = declared
-        found = declarations.read(declared, self._values, only)
+        found = declarations.read(declared, self._values, only, self.owner)
         for name, value in found.items():
             self._values.setdefault(name, value)
         return found

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from launcher.description.fields import Kind, attr
 from launcher.description.substitution import Text_, describe_text, perform_text, to_text
 from launcher.errors import Location, SubstitutionError
 from launcher.runtime.context import LaunchContext
@@ -91,6 +92,18 @@ class LaunchConfigurationEquals(Condition):
 
 class LaunchConfigurationNotEquals(LaunchConfigurationEquals):
     negate = True
+
+
+def if_attr(**spec: Any) -> Any:
+    """The declared `only_if` field of an entry, which `entry_applies` reads: roslaunch's if=
+    on a node's child, unless `spec` spells or documents it otherwise."""
+    return attr(Kind.TEXT, **{"doc": "roslaunch's if= on a node's child: the entry holds only "
+                                     "when true.", **spec})
+
+
+def unless_attr(**spec: Any) -> Any:
+    """The declared `only_unless` field of an entry: roslaunch's unless= on a node's child."""
+    return attr(Kind.TEXT, **{"doc": "roslaunch's unless= on a node's child.", **spec})
 
 
 def entry_applies(context: LaunchContext, entry: object) -> bool:

@@ -17,10 +17,9 @@ import threading
 import xml.etree.ElementTree as ET
 from typing import Any
 
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
-from launcher.errors import LaunchError
 from launcher.nodes import running
 from launcher.nodes.kinematics import MOVING, Tree
 
@@ -37,10 +36,7 @@ class JointStatePublisher:
     def __init__(self, node: Node, gui: bool = False) -> None:
         self.node, self.gui = node, gui
         self.log = node.get_logger()
-        try:
-            parameters = node.params.declare(PARAMETERS)
-        except ParameterError as exc:
-            raise LaunchError(str(exc)) from None
+        parameters = node.params.declare(PARAMETERS)
         self.rate, self.use_mimic = parameters["rate"], parameters["use_mimic_tags"]
         self.defaults = {k[len("zeros."):]: float(v) for k, v in node.parameters.items()
                          if k.startswith("zeros.")}

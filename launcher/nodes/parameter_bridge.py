@@ -15,7 +15,7 @@ import sys
 from typing import Any
 
 from launcher.bus import keys
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.lockstep import Relay
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
@@ -121,10 +121,7 @@ PARAMETERS = (
 
 
 def setup(node: Node) -> Bridge:
-    try:
-        config = node.params.declare(PARAMETERS)["config_file"]
-    except ParameterError as exc:
-        raise LaunchError(str(exc)) from None
+    config = node.params.declare(PARAMETERS)["config_file"]
     bridge = Bridge(node)
     types = bridge_config.Types(conversions.sim_type, conversions.known_ros_type)
     entries = [bridge_config.parse_argument(arg, types) for arg in node.args]

@@ -20,13 +20,14 @@ from collections.abc import Sequence
 from types import SimpleNamespace
 from typing import Any
 
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.node import Node
 from launcher.bus.qos import LATCHED, QoS
 from launcher.bus.wire import JointStateReader, TfLayout, pack_tf
 from launcher.errors import LaunchError
 from launcher.nodes import running
 from launcher.nodes.kinematics import Tree
+from launcher.sim.schedule import SLACK
 
 # robot_state_publisher's parameters, ROS 2's names, types and ranges
 PARAMETERS = (
@@ -42,10 +43,7 @@ class RobotStatePublisher:
     def __init__(self, node: Node) -> None:
         self.node = node
         self.log = node.get_logger()
-        try:
-            params = node.params.declare(PARAMETERS)
-        except ParameterError as exc:
-            raise LaunchError(str(exc)) from None
+        params = node.params.declare(PARAMETERS)
         self.frequency = params["publish_frequency"]
         self.ignore_timestamp, self.prefix = params["ignore_timestamp"], params["frame_prefix"]
         description = params["robot_description"]
@@ -136,7 +134,7 @@ class RobotStatePublisher:
             if self._last_stamp is not None and stamp < self._last_stamp:
                 self._last_stamp = None  # time went backwards: a sim reset
             if self._last_stamp is not None and self.frequency > 0 and \
-                    stamp - self._last_stamp < 1.0 / self.frequency - 1e-9:
+                    stamp - self._last_stamp < 1.0 / self.frequency - SLACK:
                 return
             self._last_stamp = stamp
         key = tuple(names)

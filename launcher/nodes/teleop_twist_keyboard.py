@@ -14,7 +14,7 @@ import signal
 import sys
 from typing import Any
 
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.node import Node
 from launcher.errors import LaunchError, reported
 
@@ -109,10 +109,7 @@ def _interrupt(signum: int, frame: Any) -> None:
 
 
 def _loop(node: Node, terminal: Terminal) -> int:
-    try:
-        parameters = node.params.declare(PARAMETERS)
-    except ParameterError as exc:
-        raise LaunchError(str(exc)) from None
+    parameters = node.params.declare(PARAMETERS)
     stamped, frame_id = parameters["stamped"], parameters["frame_id"]
     type_name = "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist"
     publisher = node.create_publisher(type_name, "cmd_vel")

@@ -167,7 +167,7 @@ def test_the_bridge_carries_clock_cmd_vel_odom_and_is_lazy_where_asked(bridge_ws
 
 
 def _launcher() -> list[str]:
-    from tests.conftest import launcher_argv
+    from tests.support.processes import launcher_argv
 
     return launcher_argv()
 
@@ -226,7 +226,7 @@ def test_a_config_file_that_is_no_path_is_refused_by_name(bridge_ws):
                            "config_file:=5"], cwd=bridge_ws.root, env=bridge_ws.env,
                           capture_output=True, text=True, timeout=30, input="")
     assert done.returncode == 1, done.stderr
-    assert "parameter 'config_file' is 5; expected text" in done.stderr, done.stderr
+    assert "parameter 'config_file': expected text, got 5" in done.stderr, done.stderr
     assert "Traceback" not in done.stderr
 
 

@@ -101,11 +101,11 @@ def test_tf_static_for_late_subscribers_tf_from_joint_states_and_mimics(rsp_ws):
     (["-p", "robot_description:=<robot name='r'><link name='a'/><link name='b'/></robot>"],
      "2 root links"),
     (["-p", "publish_frequency:=2000.0", "-p", "robot_description:=<robot name='r'>"
-      "<link name='a'/></robot>"], "parameter 'publish_frequency' is 2000.0; expected at "
-     "most 1000"),
+      "<link name='a'/></robot>"], "parameter 'publish_frequency': expected a number ≤ 1000, "
+     "got 2000.0"),
     (["-p", "ignore_timestamp:=often", "-p", "robot_description:=<robot name='r'>"
-      "<link name='a'/></robot>"], "parameter 'ignore_timestamp' is 'often'; expected true "
-     "or false"),
+      "<link name='a'/></robot>"], "parameter 'ignore_timestamp': expected true or false, "
+     "got 'often'"),
 ])
 def test_bad_parameters_exit_1_with_a_clear_message(rsp_ws, args, expected):
     done = subprocess.run([PY, "-m", "launcher.nodes.robot_state_publisher", "--ros-args",

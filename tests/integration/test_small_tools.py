@@ -49,7 +49,8 @@ def test_joint_state_publisher_refuses_a_rate_of_zero_by_name(ws):
     done = ws.run("run", "joint_state_publisher", "joint_state_publisher", "--ros-args",
                   "-p", "rate:=0", timeout=60)
     assert done.returncode == 1, done.stderr
-    assert "parameter 'rate' is 0.0; expected at least 0.001" in done.stderr, done.stderr
+    assert "error: /joint_state_publisher: parameter 'rate': expected a number ≥ 0.001, got " \
+        "0.0" in done.stderr, done.stderr
     assert "Traceback" not in done.stderr
 
 
@@ -140,7 +141,7 @@ def test_teleop_twist_keyboard_stamped_with_its_frame_id(ws):
     import subprocess
     import time
 
-    from tests.conftest import launcher_argv
+    from tests.support.processes import launcher_argv
 
     ws.own_bus()
     master, slave = os.openpty()
@@ -188,7 +189,7 @@ def test_teleop_twist_keyboard_drives_from_keys_and_gives_the_terminal_back(ws):
     import termios
     import time
 
-    from tests.conftest import launcher_argv
+    from tests.support.processes import launcher_argv
 
     ws.own_bus()
     master, slave = os.openpty()

@@ -85,9 +85,12 @@ class FakeNode:
 
 @pytest.mark.parametrize("values, expected", [
     ({"topic_whitelist": ["(unclosed"]}, "topic_whitelist: '(unclosed' is not a regular"),
-    ({"capabilities": ["clientPublish", "teleport"]}, "unknown capabilities ['teleport']"),
-    ({"port": 70000}, "parameter 'port' is 70000; expected at most 65535"),
-    ({"max_qos_depth": "deep"}, "parameter 'max_qos_depth' is 'deep'; expected an integer"),
+    ({"capabilities": ["clientPublish", "teleport"]},
+     "/foxglove_bridge: parameter 'capabilities': expected one of clientPublish, parameters, "
+     "parametersSubscribe, services, connectionGraph, assets, got 'teleport'"),
+    ({"port": 70000}, "/foxglove_bridge: parameter 'port': expected a number ≤ 65535, got 70000"),
+    ({"max_qos_depth": "deep"},
+     "/foxglove_bridge: parameter 'max_qos_depth': expected a whole number, got 'deep'"),
 ])
 def test_bad_settings_are_said(values, expected):
     with pytest.raises(LaunchError, match=expected.replace("(", r"\(").replace("[", r"\[")):

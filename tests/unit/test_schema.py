@@ -54,3 +54,41 @@ def test_unknown_keys_may_be_warned_about_or_ignored():
     assert record.name == "x" and len(said) == 1 and "unknown key 'extra'" in said[0]
     assert build(Record, {"name": "x", "use_sim_time": True}, unknown="ignore").name == "x"
     assert math.isclose(build(Record, {"name": "x"}).rate, 20.0)
+
+
+@dataclass
+class Bounded:
+    radius: float = attr(Kind.FLOAT, 0.1, above=0.0)
+    share: float = attr(Kind.FLOAT, 0.5, minimum=0.0, below=1.0)
+    sides: list[str] = attr(Kind.NAMES, choices=("left", "right"))
+
+
+@pytest.mark.parametrize("values, expected", [
+    ({"radius": 0}, "radius: expected a number > 0, got 0"),
+    ({"radius": "-0.5"}, "radius: expected a number > 0, got -0.5"),
+    ({"share": 1.0}, "share: expected a number < 1, got 1.0"),
+    ({"sides": ["left", "rihgt"]}, "sides: expected one of left, right, got 'rihgt' "
+                                   "(did you mean 'right'?)"),
+    ({"sides": "middle"}, "sides: expected one of left, right, got 'middle'"),
+], ids=["above", "above-text", "below", "each-choice", "one-choice"])
+def test_exclusive_bounds_and_each_names_choice_are_checked(values, expected):
+    with pytest.raises(ParseError) as caught:
+        build(Bounded, values)
+    assert str(caught.value) == expected
+
+
+def test_values_inside_exclusive_bounds_and_chosen_names_are_taken():
+    record = build(Bounded, {"radius": "1e-9", "share": 0, "sides": ["right", "left"]})
+    assert (record.radius, record.share, record.sides) == (1e-9, 0.0, ["right", "left"])
+
+
+def test_fields_and_parameters_are_checked_by_one_check_in_one_wording():
+    from launcher.bus.declarations import Param
+    from launcher.schema import problem
+
+    field = attr(Kind.FLOAT, above=0.0).metadata["launch"]
+    param = Param("radius", "double", 1.0, above=0.0)
+    assert problem(0.0, field, "radius") == problem(0.0, param, "radius") == \
+        "radius: expected a number > 0, got 0.0"
+    assert problem(None, Param("joints", "string_array"), "joints") == "joints is required"
+    assert problem(None, field, "radius") is None

@@ -6,6 +6,7 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 from launcher.description.action import Action
+from launcher.description.actions.entries import NameValue
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Text_, describe_text, perform_text
@@ -20,8 +21,9 @@ class Choice:
 
 
 @dataclass(eq=False)
-class KeepEntry:
-    name: Text_ = attr(Kind.TEXT, required=True, doc="A configuration to keep.")
+class KeepEntry(NameValue):
+    """A configuration to keep."""
+
     value: Text_ | None = attr(Kind.TEXT, doc="Its value (default: its current value).")
 
 

@@ -26,17 +26,18 @@ from typing import Any
 
 from launcher.description import parameters as params
 from launcher.description.action import Action
+from launcher.description.actions.entries import NameValue
 from launcher.description.actions.node import Node, RemapEntry
 from launcher.description.actions.param_entry import (
     ParamEntry,
     gather_parameters,
     python_parameters,
 )
-from launcher.description.condition import entry_applies
+from launcher.description.condition import entry_applies, if_attr, unless_attr
 from launcher.description.fields import Kind, attr
 from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
-from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.description.substitution import perform_text, to_text
 from launcher.errors import ExecutionError, LaunchError
 from launcher.packages.components import find_component
 from launcher.records import dataclass
@@ -45,9 +46,8 @@ from launcher.runtime.context import LaunchContext
 
 
 @dataclass(eq=False)
-class ExtraArgument:
-    name: Text_ = attr(Kind.TEXT, required=True, doc="use_intra_process_comms, …")
-    value: Text_ = attr(Kind.TEXT, required=True, doc="Its value.")
+class ExtraArgument(NameValue):
+    """An argument for the container about the node (use_intra_process_comms, …)."""
 
 
 @dataclass(eq=False)
@@ -63,9 +63,9 @@ class ComposableNode:
                                  doc="Topic and service remappings.")
     extra_arguments: list[Any] = attr(Kind.ENTRIES, name="extra_arg", entry=ExtraArgument,
                                       doc="Arguments for the container about this node.")
-    only_if: Any = attr(Kind.TEXT, name="if", doc="Loaded only when true (launch_ros's "
-                                                  "condition on a composable node).")
-    only_unless: Any = attr(Kind.TEXT, name="unless", doc="Loaded only when false.")
+    only_if: Any = if_attr(name="if", doc="Loaded only when true (launch_ros's condition on a "
+                                          "composable node).")
+    only_unless: Any = unless_attr(name="unless", doc="Loaded only when false.")
     where: Any = None
 
     def __post_init__(self) -> None:

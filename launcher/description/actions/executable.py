@@ -7,10 +7,11 @@ from collections.abc import Sequence
 from typing import Any
 
 from launcher.description.action import Action
+from launcher.description.actions.entries import NameValue
 from launcher.description.actions.event_handlers import OnProcessExit, OnProcessStart
 from launcher.description.actions.shutdown import Shutdown
 from launcher.description.command_line import join_command, split_command
-from launcher.description.condition import entry_applies
+from launcher.description.condition import entry_applies, if_attr, unless_attr
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import Substitution, Text_, perform_text, to_text
@@ -30,12 +31,11 @@ OUTPUT_MODES = {
 
 
 @dataclass(eq=False)
-class EnvEntry:
-    name: Text_ = attr(Kind.TEXT, required=True, doc="Variable name.")
-    value: Text_ = attr(Kind.TEXT, required=True, doc="Its value for this process.")
-    only_if: Any = attr(Kind.TEXT, doc="roslaunch's if= on a node's child: the entry holds "
-                                       "only when true.")
-    only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
+class EnvEntry(NameValue):
+    """An environment variable of the process."""
+
+    only_if: Any = if_attr()
+    only_unless: Any = unless_attr()
 
 
 @action("executable")

@@ -18,19 +18,19 @@ from launcher.description.actions.arguments import (
     check_required,
     declared_args,
 )
+from launcher.description.actions.entries import NameValue
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.parameters import GLOBAL_PARAMETERS
 from launcher.description.registry import action
-from launcher.description.substitution import Text_, perform_text, to_text
+from launcher.description.substitution import perform_text, to_text
 from launcher.errors import ExecutionError, LaunchError
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
 
 
 @dataclass(eq=False)
-class IncludeArg:
-    name: Text_ = attr(Kind.TEXT, required=True, doc="The included file's argument.")
-    value: Text_ = attr(Kind.TEXT, required=True, doc="Its value.")
+class IncludeArg(NameValue):
+    """An argument of the included file, and its value."""
 
 
 @action("include")
@@ -65,7 +65,7 @@ class IncludeLaunchDescription(Action):
 
     def resolve_path(self, context: LaunchContext) -> Path:
         raw = Path(perform_text(context, self.file))
-        here = context.current_file
+        here = context.files.current
         if not raw.is_absolute() and here is not None and (here.parent / raw).exists():
             raw = here.parent / raw
         path = raw.absolute()
@@ -79,7 +79,7 @@ class IncludeLaunchDescription(Action):
         if isinstance(self.file, LaunchDescription):
             return self.file
         path = self.resolve_path(context)
-        chain = [p for p in context.open_files if p is not None]
+        chain = [p for p in context.files.all if p is not None]
         if path in chain:
             cycle = " -> ".join(str(p) for p in chain[chain.index(path):] + [path])
             raise ExecutionError(f"include cycle: {cycle}")

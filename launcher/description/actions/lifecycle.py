@@ -18,6 +18,7 @@ from launcher.description.actions.node import Node
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.errors import ExecutionError
+from launcher.lifecycle import ACTIVATE, CONFIGURE
 from launcher.records import dataclass
 from launcher.runtime import lifecycle
 from launcher.runtime.context import LaunchContext
@@ -40,9 +41,8 @@ class LifecycleNode(Node):
         if context.service is not None:
             context.service.watch_lifecycle(self.node_fqn, self)
             if resolve(context, self.autostart, Kind.BOOL, "autostart"):
-                context.service.change_states(self.node_fqn, [
-                    lifecycle.TRANSITIONS["configure"], lifecycle.TRANSITIONS["activate"]],
-                    self.where)
+                context.service.change_states(self.node_fqn, [CONFIGURE, ACTIVATE],
+                                              self.where)
         return done
 
 

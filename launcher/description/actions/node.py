@@ -25,7 +25,7 @@ from launcher.description.actions.param_entry import (
     params_folder,
     python_parameters,
 )
-from launcher.description.condition import entry_applies
+from launcher.description.condition import entry_applies, if_attr, unless_attr
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
@@ -56,9 +56,8 @@ INSTEAD = ("the robot's data in Foxglove: `launcher run foxglove_bridge foxglove
 class RemapEntry:
     source: Text_ = attr(Kind.TEXT, name="from", required=True, doc="The name in the node.")
     target: Text_ = attr(Kind.TEXT, name="to", required=True, doc="The name it becomes.")
-    only_if: Any = attr(Kind.TEXT, doc="roslaunch's if= on a node's child: the entry holds "
-                                       "only when true.")
-    only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
+    only_if: Any = if_attr()
+    only_unless: Any = unless_attr()
 
 
 UNSPECIFIED_NAME = "<node_name_unspecified>"  # (launch_ros's words for what was not given)

@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.description import parameters as params
-from launcher.description.condition import entry_applies
+from launcher.description.condition import entry_applies, if_attr, unless_attr
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.substitution import Text_, perform_text, to_text
 from launcher.errors import ExecutionError
@@ -37,9 +37,8 @@ class ParamEntry:
                                                       "parameters.")
     rosparam: Text_ | None = attr(Kind.TEXT, doc="roslaunch's rosparam: the YAML, inline.")
     children: list[Any] = attr(Kind.ENTRIES, name="param", doc="Nested parameters.")
-    only_if: Any = attr(Kind.TEXT, doc="roslaunch's if= on a node's child: the entry holds "
-                                       "only when true.")
-    only_unless: Any = attr(Kind.TEXT, doc="roslaunch's unless= on a node's child.")
+    only_if: Any = if_attr()
+    only_unless: Any = unless_attr()
     group: bool = False  # a Python dict: one group of named children, one params file
     where: Any = None  # where the entry is written, for its errors
 

@@ -26,6 +26,7 @@ from launcher.bus import graph, keys, names
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
 from launcher.bus.types import normalize, registry
+from launcher.bus.wire import stamp_nanoseconds
 from launcher.errors import LaunchError
 from launcher.nodes.foxglove.parameters import SERVICE_WAIT, NodeParameters
 from launcher.nodes.foxglove.settings import Settings, allowed
@@ -195,7 +196,7 @@ class Bridge:
             else time.time_ns()
 
     def on_clock(self, message: Any) -> None:
-        self._clock_time = message.clock.sec * 1_000_000_000 + message.clock.nanosec
+        self._clock_time = stamp_nanoseconds(message.clock)
         if self.server is not None:
             self.server.broadcast_time(self._clock_time)
 

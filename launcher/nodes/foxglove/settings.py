@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.node import Node
 from launcher.errors import LaunchError
 
@@ -34,7 +34,7 @@ def parameters() -> tuple[Param, ...]:
               "bytes queued for a client before it loses frames"),
         Param("use_sim_time", "bool", False, "the clients' time from /clock"),
         Param("capabilities", "string_array", list(CAPABILITIES),
-              "what clients may do: " + ", ".join(CAPABILITIES)),
+              "what clients may do: " + ", ".join(CAPABILITIES), choices=CAPABILITIES),
         Param("include_hidden", "bool", False, "serve hidden topics and services too"),
         Param("max_qos_depth", "int", 25, "the deepest history a channel subscribes with",
               minimum=1),
@@ -48,10 +48,7 @@ class Settings:
     """foxglove_bridge's parameters, as a ROS user sets them."""
 
     def __init__(self, node: Node) -> None:
-        try:
-            value = node.params.declare(parameters())
-        except ParameterError as exc:
-            raise LaunchError(f"foxglove_bridge: {exc}") from None
+        value = node.params.declare(parameters())
         self.port, self.address = value["port"], value["address"]
         self.topics = patterns(value["topic_whitelist"], "topic_whitelist")
         self.services = patterns(value["service_whitelist"], "service_whitelist")
@@ -64,10 +61,6 @@ class Settings:
         self.include_hidden, self.max_qos_depth = value["include_hidden"], value["max_qos_depth"]
         self.asset_allowlist = value["asset_uri_allowlist"]
         self.token = value["token"]
-        unknown = sorted(set(self.capabilities) - set(CAPABILITIES))
-        if unknown:
-            raise LaunchError(f"foxglove_bridge: unknown capabilities {unknown}; expected "
-                              f"some of {list(CAPABILITIES)}")
 
     @property
     def backlog(self) -> int:
