@@ -13,8 +13,8 @@ from launcher.description.actions.lifecycle import ChangeState
 from launcher.description.actions.timer import TimerAction
 from launcher.description.substitution import perform_text, to_text
 from launcher.errors import ExecutionError
+from launcher.lifecycle import NAMED
 from launcher.runtime.context import LaunchContext
-from launcher.runtime.lifecycle import TRANSITIONS
 
 
 # --- parameters ---------------------------------------------------------------------------
@@ -239,7 +239,7 @@ class LifecycleTransition(Action):
                  **kwargs: Any) -> None:
         self.condition, self.where = kwargs.get("condition"), None
         self.names = [to_text(name) for name in lifecycle_node_names]
-        self.transition_ids = [TRANSITIONS.get(str(t), t) if isinstance(t, str) else int(t)
+        self.transition_ids = [NAMED.get(str(t), t) if isinstance(t, str) else int(t)
                                for t in transition_ids]
 
     def execute(self, context: LaunchContext) -> None:

@@ -1,6 +1,7 @@
 """The base of every controller: a node of its own (named as the controller, in the manager's
 namespace, parameters from the manager's files and its `params_file`), ros2_control's
-lifecycle (unconfigured → inactive → active), the interfaces it asks for, and `update()`.
+lifecycle (unconfigured → inactive → active: the transitions of launcher/lifecycle.py), the
+interfaces it asks for, and `update()`.
 
 A controller that refuses (a missing or wrong parameter) raises ControllerError; the manager
 answers the request with `ok: false` and logs the reason, as controller_manager does.
@@ -11,11 +12,13 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.types import registry
 from launcher.bus.wire import split_time
-from launcher.control.resources import ACTIVE, INACTIVE, UNCONFIGURED, Handle
-from launcher.errors import LaunchError
+from launcher.control.resources import Handle
+from launcher.control.yaml_places import Places
+from launcher.errors import LaunchError, ParameterError
+from launcher.lifecycle import ACTIVE, CONFIGURE, INACTIVE, TRANSITIONS, UNCONFIGURED, reached
 
 CONTROLLER_BASE = "controller_interface::ControllerInterface"
 _CLASSES: dict[str, type] = {}
@@ -26,19 +29,36 @@ class ControllerError(LaunchError):
 
 
 class Controller:
-    type_name = ""
-    base_class = CONTROLLER_BASE
-    PARAMETERS: tuple[Param, ...] = ()  # what it reads, declared (bus/declarations.py)
+    """`type_name` is its type as the manager's parameters name it
+    (`joint_trajectory_controller/JointTrajectoryController`), `places` where its settings
+    are written (its messages point there)."""
 
-    def __init__(self, name: str, node: Any, where: str = "") -> None:
-        self.name, self.node = name, node
-        self.where = where  # file:line of its parameters, when known
+    base_class = CONTROLLER_BASE
+    # what it reads, declared (bus/declarations.py): controller_interface's own, then each
+    # controller's (`PARAMETERS = (*Controller.PARAMETERS, …)`)
+    PARAMETERS: tuple[Param, ...] = (
+        Param("update_rate", "int", 0, "updates a second (Hz); 0: at the manager's "
+              "update_rate", minimum=0),
+    )
+
+    def __init__(self, name: str, node: Any, type_name: str, places: Places) -> None:
+        self.name, self.node, self.type_name, self.places = name, node, type_name, places
         self.state = UNCONFIGURED
         self.update_rate = 0  # Hz; 0: the manager's
         self.commands: list[Handle] = []  # claimed, in command_interfaces() order
         self.states: dict[str, Handle] = {}
         self.last_update: float | None = None
-        self.place_of: Any = lambda name: ""  # file:line:column of a parameter (the manager's)
+
+    def take(self, transition: int) -> None:
+        """Make a lifecycle transition (launcher/lifecycle.py's id): its callback's work, then
+        the state it reaches; InvalidTransition if it is not allowed from the state, and a
+        ControllerError from the work leaves it as it was. Its update_rate is read as it is
+        configured, before on_configure, as controller_interface reads it."""
+        goal, rate = reached(self.state, transition), self.update_rate
+        if transition == CONFIGURE:
+            rate = self.read_parameters("update_rate")["update_rate"]
+        getattr(self, TRANSITIONS[transition].callback)()
+        self.state, self.update_rate = goal, rate
 
     # --- what a controller declares --------------------------------------------------------
     def on_init(self) -> None:
@@ -63,6 +83,9 @@ class Controller:
     def on_cleanup(self) -> None:
         pass
 
+    def on_shutdown(self) -> None:
+        pass
+
     def update(self, time: float, period: float) -> None:
         pass
 
@@ -72,13 +95,12 @@ class Controller:
         with their defaults; a bad one is refused at its line in the parameter file."""
         try:
             return self.node.params.declare(self.PARAMETERS, only)
-        except ParameterError as exc:
-            name = exc.name
-            place = self.place_of(name) if name in self.node.parameters else ""
-            raise ControllerError(self._at(f"controller '{self.name}': {exc}", place)) from None
+        except ParameterError as exc:  # (it names the controller's node)
+            place = self.places.key(exc.name) if exc.name in self.node.parameters else ""
+            raise ControllerError(self._at(str(exc), place)) from None
 
     def _at(self, message: str, place: str = "") -> str:
-        place = place or self.where
+        place = place or self.places.block
         return f"{place}: {message}" if place else message
 
     # --- helpers ---------------------------------------------------------------------------

@@ -17,27 +17,47 @@ from __future__ import annotations
 
 from typing import Any
 
-from launcher.bus.declarations import Param, ParameterError
+from launcher.bus.declarations import Param
 from launcher.bus.node import Node
 from launcher.control.controller import Controller, ControllerError
 from launcher.control.controllers import TYPES, controller_class
-from launcher.control.resources import (
+from launcher.control.resources import Component, Resources
+from launcher.control.yaml_places import Places, key_place, params_files
+from launcher.errors import LaunchError, ParameterError, did_you_mean
+from launcher.lifecycle import (
+    ACTIVATE,
     ACTIVE,
-    FINALIZED,
+    CLEANUP,
+    CONFIGURE,
     INACTIVE,
-    STATE_LABELS,
+    INACTIVE_SHUTDOWN,
+    LABELS,
+    MACHINE,
     UNCONFIGURED,
-    Component,
-    Resources,
+    UNCONFIGURED_SHUTDOWN,
 )
-from launcher.control.yaml_places import block_place, key_place, params_files, value_place
-from launcher.errors import LaunchError, did_you_mean
 
 BEST_EFFORT, STRICT, AUTO, FORCE_AUTO = 1, 2, 3, 4
 PARAMETERS = (  # controller_manager's own (a controller's <name>.type and .params_file too)
     Param("update_rate", "int", 100, "control cycles a second: read the hardware, update "
           "the active controllers, write (Hz)", minimum=1),
 )
+
+
+# what a request makes of a controller: the lifecycle transitions (launcher/lifecycle.py) of
+# the first path that the table allows from the controller's state, and controller_manager's
+# words when it allows none (configured again: cleaned up first; an active one is unloaded by
+# none of them)
+REQUESTS: dict[str, tuple[tuple[tuple[int, ...], ...], str]] = {
+    "configure": (((CONFIGURE,), (CLEANUP, CONFIGURE)),
+                  "Controller '{name}' can not be configured from '{state}' state."),
+    "cleanup": (((CLEANUP,),), "Controller '{name}' can not be cleaned-up from '{state}' state."),
+    "unload": (((UNCONFIGURED_SHUTDOWN,), (INACTIVE_SHUTDOWN,)),
+               "Could not unload controller with name '{name}' because it is still active"),
+}
+SAID = {CONFIGURE: "Configuring controller: '{name}'",  # (logged as a transition begins)
+        UNCONFIGURED_SHUTDOWN: "Unloading controller: '{name}'",
+        INACTIVE_SHUTDOWN: "Unloading controller: '{name}'"}
 
 
 def missing(name: str, doing: str) -> str:
@@ -63,10 +83,9 @@ class ControllerManager:
         """The manager's own parameters, checked; a bad one refused at its line."""
         try:
             return node.params.declare(PARAMETERS)
-        except ParameterError as exc:
+        except ParameterError as exc:  # (it names the manager's node)
             place = key_place(self.files, node.name, exc.name)
-            raise LaunchError(f"{place + ': ' if place else ''}controller_manager: {exc}") \
-                from None
+            raise (LaunchError(f"{place}: {exc}") if place else exc) from None
 
     # --- the cycle -------------------------------------------------------------------------
     def update(self, time: float) -> None:
@@ -97,7 +116,8 @@ class ControllerManager:
         parameters = self.node.parameters
         type_name = parameters.get(f"{name}.type")
         files = self._files_of(name)
-        where = block_place(files, name, self.node.namespace or "/")
+        places = Places.find(files, name, self.node.namespace or "/")
+        where = places.block
         if not type_name:
             at = f"{where}: " if where else ""
             return False, (f"{at}The 'type' param was not defined for '{name}' (give it "
@@ -112,9 +132,7 @@ class ControllerManager:
                            f"{did_you_mean(str(type_name), TYPES)}")
         self.log.info(f"Loading controller : '{name}' of type '{type_name}'")
         controller_node = self._node_for(name, files)
-        controller = cls(name, controller_node, where)
-        controller.type_name = str(type_name)
-        controller.place_of = lambda key: key_place(files, name, key)
+        controller = cls(name, controller_node, str(type_name), places)
         try:
             controller.on_init()
         except ControllerError as exc:
@@ -136,45 +154,35 @@ class ControllerManager:
         return node
 
     def configure(self, name: str) -> tuple[bool, str]:
-        controller = self.controllers.get(name)
-        if controller is None:
-            return False, missing(name, "configure")
-        if controller.state == ACTIVE:
-            return False, f"Controller '{name}' can not be configured from 'active' state."
-        if controller.state == INACTIVE:
-            controller.on_cleanup()
-            controller.state = UNCONFIGURED
-        self.log.info(f"Configuring controller: '{name}'")
-        try:
-            controller.on_configure()
-        except ControllerError as exc:
-            return False, str(exc)
-        controller.update_rate = int(controller.node.parameters.get("update_rate", 0) or 0)
-        controller.state = INACTIVE
-        return True, ""
+        return self._request(name, "configure")
 
     def cleanup(self, name: str) -> tuple[bool, str]:
-        controller = self.controllers.get(name)
-        if controller is None:
-            return False, missing(name, "cleanup")
-        if controller.state != INACTIVE:
-            return False, f"Controller '{name}' can not be cleaned-up from " \
-                          f"'{STATE_LABELS[controller.state]}' state."
-        controller.on_cleanup()
-        controller.state = UNCONFIGURED
-        return True, ""
+        return self._request(name, "cleanup")
 
     def unload(self, name: str) -> tuple[bool, str]:
+        done = self._request(name, "unload")
+        if done[0]:
+            controller = self.controllers.pop(name)
+            controller.node.destroy_node()
+        return done
+
+    def _request(self, name: str, doing: str) -> tuple[bool, str]:
+        """Take controller `name` along the path REQUESTS gives for `doing` from its state;
+        a ControllerError stops it where it is."""
         controller = self.controllers.get(name)
         if controller is None:
-            return False, missing(name, "unload")
-        if controller.state == ACTIVE:
-            return False, f"Could not unload controller with name '{name}' because it is " \
-                          f"still active"
-        self.log.info(f"Unloading controller: '{name}'")
-        controller.state = FINALIZED
-        del self.controllers[name]
-        controller.node.destroy_node()
+            return False, missing(name, doing)
+        paths, refused = REQUESTS[doing]
+        path = next((p for p in paths if MACHINE.allows(controller.state, p[0])), None)
+        if path is None:
+            return False, refused.format(name=name, state=LABELS[controller.state])
+        try:
+            for transition in path:
+                if transition in SAID:
+                    self.log.info(SAID[transition].format(name=name))
+                controller.take(transition)
+        except ControllerError as exc:
+            return False, str(exc)
         return True, ""
 
     def switch(self, activate: list[str], deactivate: list[str],
@@ -236,8 +244,7 @@ class ControllerManager:
         """`file:line:column: ` of the setting that asked for `interface` (its joint, else its
         interface name) in the controller's parameters, or ""."""
         joint, _, kind = interface.rpartition("/")
-        place = value_place(self._files_of(controller.name), controller.name,
-                            [interface, joint, kind], self.node.namespace or "/")
+        place = controller.places.value([interface, joint, kind])
         return f"{place}: " if place else ""
 
     def _cannot_activate(self, controller: Controller, stopping: list[Controller],
@@ -282,13 +289,12 @@ class ControllerManager:
                                                    controller.command_interfaces())
         controller.last_update = None
         try:
-            controller.on_activate()
+            controller.take(ACTIVATE)
         except Exception as exc:
             self.log.error(f"Could not activate controller : '{controller.name}': {exc}")
             self.resources.release(controller.name)
             controller.commands = []
             return
-        controller.state = ACTIVE
         self.active.append(controller)
 
     def _deactivate(self, controller: Controller) -> None:

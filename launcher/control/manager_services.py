@@ -8,7 +8,7 @@ from typing import Any
 
 from launcher.control.controllers import TYPES, controller_class
 from launcher.control.manager import ControllerManager
-from launcher.control.resources import STATE_LABELS, UNCONFIGURED
+from launcher.lifecycle import LABELS, STATES, UNCONFIGURED
 
 SRV = "controller_manager_msgs/srv/"
 
@@ -66,7 +66,7 @@ class ManagerServices:
         message, claimed = self.manager.node.message, self.manager.resources.claimed
         response.controller = [message(
             "controller_manager_msgs/msg/ControllerState", name=c.name,
-            state=STATE_LABELS[c.state], type=c.type_name, is_async=False,
+            state=LABELS[c.state], type=c.type_name, is_async=False,
             update_rate=c.update_rate or self.manager.update_rate,
             claimed_interfaces=[i for i, o in claimed.items() if o == c.name],
             required_command_interfaces=c.command_interfaces() if c.state != UNCONFIGURED
@@ -98,17 +98,16 @@ class ManagerServices:
             "controller_manager_msgs/msg/HardwareComponentState", name=c.info.name,
             type=c.info.type, is_async=False, rw_rate=self.manager.update_rate,
             plugin_name=c.info.plugin,
-            state=make("lifecycle_msgs/msg/State", id=c.state, label=STATE_LABELS[c.state]),
+            state=make("lifecycle_msgs/msg/State", id=c.state, label=LABELS[c.state]),
             command_interfaces=self._interfaces(list(c.commands), True),
             state_interfaces=self._interfaces(list(c.states), False))
             for c in self.manager.resources.components]
         return response
 
     def on_component_state(self, request: Any, response: Any) -> Any:
-        target = request.target_state.id or {v: k for k, v in STATE_LABELS.items()}.get(
-            request.target_state.label, 0)
+        target = request.target_state.id or STATES.get(request.target_state.label, 0)
         response.ok = self.manager.set_component_state(request.name, target)
         if response.ok:
             response.state = self.manager.node.message("lifecycle_msgs/msg/State", id=target,
-                                                       label=STATE_LABELS[target])
+                                                       label=LABELS[target])
         return response

@@ -15,11 +15,7 @@ from typing import Any
 
 from launcher.control.description import Hardware
 from launcher.errors import LaunchError
-
-# lifecycle_msgs/State ids and labels, as hardware components and controllers report them
-UNCONFIGURED, INACTIVE, ACTIVE, FINALIZED = 1, 2, 3, 4
-STATE_LABELS = {UNCONFIGURED: "unconfigured", INACTIVE: "inactive", ACTIVE: "active",
-                FINALIZED: "finalized"}
+from launcher.lifecycle import ACTIVE, INACTIVE
 
 
 class Handle:
@@ -33,7 +29,8 @@ class Handle:
 
 
 class Component:
-    """What every hardware component offers the manager (see hardware.py)."""
+    """What every hardware component offers the manager (see hardware.py); `state` is its
+    lifecycle state (launcher/lifecycle.py)."""
 
     def __init__(self, info: Hardware) -> None:
         self.info = info

@@ -1,10 +1,36 @@
 """Where a node's block is in ROS parameter files (file:line), for messages about it, and the
-`params_file` values spawner gives the manager (a path, a list, or a list written as text)."""
+`params_file` values spawner gives the manager (a path, a list, or a list written as text).
+Places keeps what a controller needs to find its own settings there."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import Any
+
+
+@dataclass(frozen=True)
+class Places:
+    """Where a node's settings are in its parameter files: its block (`file:line`, found
+    once), and a key or a value, found when a message asks for one."""
+
+    files: tuple[str, ...] = ()
+    node: str = ""
+    namespace: str = "/"
+    block: str = ""
+
+    @classmethod
+    def find(cls, files: list[str], node: str, namespace: str = "/") -> Places:
+        return cls(tuple(files), node, namespace, block_place(files, node, namespace))
+
+    def key(self, dotted: str) -> str:
+        """`file:line` of parameter `dotted` (key_place), or ""."""
+        return key_place(list(self.files), self.node, dotted)
+
+    def value(self, wanted: list[str]) -> str:
+        """`file:line:column` of the first of `wanted` written as a value (value_place), or
+        ""."""
+        return value_place(list(self.files), self.node, wanted, self.namespace)
 
 
 def block_place(files: list[str], node: str, namespace: str = "/") -> str:

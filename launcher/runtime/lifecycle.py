@@ -14,12 +14,9 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 from launcher.errors import ExecutionError, LaunchError
+from launcher.lifecycle import TRANSITIONS
 from launcher.runtime.events import Event
 from launcher.runtime.loop import EventLoop
-
-# lifecycle_msgs/msg/Transition's ids
-TRANSITIONS = {"configure": 1, "cleanup": 2, "activate": 3, "deactivate": 4,
-               "unconfigured_shutdown": 5, "inactive_shutdown": 6, "active_shutdown": 7}
 
 
 class StateTransition(Event):
@@ -101,8 +98,8 @@ class LifecycleRequests:
 
     def _done(self, node: str, transitions: list[int], error: str, where: Any) -> None:
         self.out = max(0, self.out - 1)
-        name = next((k for k, v in TRANSITIONS.items() if v == transitions[0]),
-                    str(transitions[0]))
+        known = TRANSITIONS.get(transitions[0])
+        name = known.name if known else str(transitions[0])
         if error and not self.cancelled:
             self.report(ExecutionError(f"lifecycle node {node}: transition '{name}' failed: "
                                        f"{error}", where))

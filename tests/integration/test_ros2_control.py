@@ -9,7 +9,7 @@ import time
 
 import pytest
 
-from tests.conftest import shared
+from tests.support.environment import shared
 from tests.support.nodes import stop
 from tests.support.waiting import wait_until
 
@@ -384,11 +384,11 @@ def test_bad_controller_configurations_are_refused_with_where_and_why(arm):
 def test_a_controller_parameter_of_the_wrong_type_is_refused_at_its_line(arm):
     yaml = str(arm.root / "arm_controllers.yaml")
     assert spawner(arm, "bad_rate").returncode == 1
-    out = arm.wait_for_output("parameter 'action_monitor_rate' is 'fast'", 10, "sim.out")
+    out = arm.wait_for_output("parameter 'action_monitor_rate': expected", 10, "sim.out")
     lines = (arm.root / "arm_controllers.yaml").read_text().splitlines()
     row = lines.index("    action_monitor_rate: fast") + 1
-    assert f"{yaml}:{row}: controller 'bad_rate': parameter 'action_monitor_rate' is 'fast'; " \
-           f"expected a number" in out, out
+    assert f"{yaml}:{row}: /bad_rate: parameter 'action_monitor_rate': expected a number, " \
+           f"got 'fast'" in out, out
 
 
 def test_a_controllers_parameters_are_listed_with_defaults_and_described(arm):

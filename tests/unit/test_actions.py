@@ -16,6 +16,7 @@ from builtin_interfaces.msg import Time  # noqa: E402
 from unique_identifier_msgs.msg import UUID  # noqa: E402
 
 from launcher.bus.actions import status_array_cdr, statuses  # noqa: E402
+from launcher.machines import InvalidTransition  # noqa: E402
 
 
 def test_the_status_array_written_directly_is_the_type_stores():
@@ -89,7 +90,7 @@ def test_a_goal_moves_only_as_rcl_action_lets_it():
     assert actions.statuses(said[-1]) == [(bytes([1] * 16), actions.EXECUTING)]
     try:
         table.move(goal, actions.GoalEvent.CANCELED)
-    except actions.InvalidTransition as exc:
+    except InvalidTransition as exc:
         assert "from state EXECUTING with event CANCELED" in str(exc)
     else:
         raise AssertionError("EXECUTING -> CANCELED was allowed")
@@ -145,13 +146,13 @@ ACTIONLIB_TABLE = """
 from launcher.compat import finder
 finder.install()
 from actionlib import status as S
-from launcher.bus import actions
+from launcher.machines import InvalidTransition
 assert S.MACHINE.move(S.PENDING, S.Event.CANCEL) == S.RECALLED
 assert S.MACHINE.move(S.ACTIVE, S.Event.CANCEL_REQUEST) == S.PREEMPTING
 assert S.MACHINE.move(S.PREEMPTING, S.Event.SUCCEED) == S.SUCCEEDED
 try:
     S.MACHINE.move(S.SUCCEEDED, S.Event.ABORT)
-except actions.InvalidTransition as exc:
+except InvalidTransition as exc:
     print(exc)
 """
 

@@ -15,9 +15,9 @@ from launcher.control.controllers.trajectory import Point, Trajectory, validate
 from launcher.control.description import parse
 from launcher.control.hardware import GenericSystem
 from launcher.control.manager import BEST_EFFORT, STRICT, ControllerManager
-from launcher.control.resources import ACTIVE, INACTIVE
-from launcher.control.yaml_places import block_place, params_files, value_place
+from launcher.control.yaml_places import Places, block_place, params_files, value_place
 from launcher.errors import LaunchError
+from launcher.lifecycle import ACTIVE, FINALIZED, INACTIVE, UNCONFIGURED
 
 URDF = """<robot name="r">
   <link name="a"/><link name="b"/><link name="c"/>
@@ -113,11 +113,12 @@ class StandIn:
         self.get_logger = lambda: log
         self.create_service = lambda *a, **k: None
         self.message = lambda type_name, **fields: SimpleNamespace(**fields)
+        self.destroy_node = lambda: None
 
 
 class Servo(Controller):
-    def __init__(self, name: str, interfaces: list[str]) -> None:
-        super().__init__(name, StandIn({}))
+    def __init__(self, name: str, interfaces: list[str], parameters: dict | None = None) -> None:
+        super().__init__(name, StandIn(parameters or {}), "test/Servo", Places())
         self.wanted = interfaces
         self.state = INACTIVE
 
@@ -142,8 +143,8 @@ def test_the_managers_update_rate_is_refused_at_its_line_when_it_is_not_a_whole_
     with pytest.raises(LaunchError) as caught:
         ControllerManager(StandIn({"update_rate": "fast"}), [GenericSystem(hardware)],
                           [str(params)])
-    assert str(caught.value) == (f"{params}:3: controller_manager: parameter 'update_rate' is "
-                                 "'fast'; expected an integer")
+    assert str(caught.value) == (f"{params}:3: controller_manager: parameter 'update_rate': "
+                                 "expected a whole number, got 'fast'")
 
 
 def test_a_claimed_interface_is_never_claimed_twice_and_the_running_one_keeps_running():
@@ -164,6 +165,49 @@ def test_a_claimed_interface_is_never_claimed_twice_and_the_running_one_keeps_ru
     assert "did you mean 'j1/position'" in message
     ok, message = manager.switch(["zz"], [], STRICT)
     assert not ok and "no controller with this name exists" in message
+
+
+def test_requests_move_a_controller_only_as_the_lifecycle_table_allows():
+    manager = _manager()
+    servo = manager.controllers["a"]
+    assert manager.cleanup("a") == (True, "") and servo.state == UNCONFIGURED
+    assert manager.cleanup("a") == (
+        False, "Controller 'a' can not be cleaned-up from 'unconfigured' state.")
+    assert manager.configure("a") == (True, "") and servo.state == INACTIVE
+    assert manager.configure("a") == (True, "")  # again: cleaned up first
+    assert manager.switch(["a"], [])[0] and servo.state == ACTIVE
+    assert manager.configure("a") == (
+        False, "Controller 'a' can not be configured from 'active' state.")
+    assert manager.unload("a") == (
+        False, "Could not unload controller with name 'a' because it is still active")
+    assert manager.switch([], ["a"])[0]
+    assert manager.unload("a") == (True, "") and "a" not in manager.controllers
+    assert servo.state == FINALIZED
+    assert manager.unload("a") == (False, "Could not unload controller with name 'a' because "
+                                          "no controller with this name exists")
+
+
+def test_a_controllers_update_rate_is_declared_and_read_as_it_is_configured():
+    manager = _manager()
+    manager.controllers["e"] = Servo("e", [], {"update_rate": 50})
+    manager.controllers["f"] = Servo("f", [], {"update_rate": "fast"})
+    for servo in (manager.controllers["e"], manager.controllers["f"]):
+        servo.state = UNCONFIGURED
+    assert manager.configure("e") == (True, "") and manager.controllers["e"].update_rate == 50
+    ok, message = manager.configure("f")
+    assert not ok and "parameter 'update_rate'" in message
+    assert manager.controllers["f"].state == UNCONFIGURED
+    assert manager.controllers["f"].update_rate == 0
+
+
+def test_a_controller_is_made_with_its_type_name_and_places(tmp_path):
+    params = tmp_path / "controllers.yaml"
+    params.write_text("arm:\n  ros__parameters:\n    joints: [j1]\n")
+    places = Places.find([str(params)], "arm")
+    servo = Controller("arm", StandIn({}), "test/Servo", places)
+    assert servo.type_name == "test/Servo" and places.block == f"{params}:1"
+    assert places.key("joints") == f"{params}:3"
+    assert places.value(["j1"]) == f"{params}:3:14"
 
 
 def test_params_file_values_and_controller_blocks_are_found(tmp_path):

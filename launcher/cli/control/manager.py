@@ -8,6 +8,7 @@ from collections.abc import Callable
 
 from launcher.bus.node import Node
 from launcher.errors import LaunchError
+from launcher.lifecycle import ACTIVE, INACTIVE, LABELS, UNCONFIGURED
 from launcher.nodes.spawner import Manager
 
 CM_WAIT = 5.0
@@ -67,6 +68,6 @@ def add_manager_option(parser: argparse.ArgumentParser) -> None:
 def add_state_arguments(parser: argparse.ArgumentParser, name: str, what: str) -> None:
     """NAME STATE [-c MANAGER]: what to take to which lifecycle state."""
     parser.add_argument(name, help=what)
-    parser.add_argument("state", choices=("unconfigured", "inactive", "active"),
+    parser.add_argument("state", choices=[LABELS[s] for s in (UNCONFIGURED, INACTIVE, ACTIVE)],
                         help="the state to take it to")
     add_manager_option(parser)

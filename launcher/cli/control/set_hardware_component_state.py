@@ -6,6 +6,7 @@ import argparse
 
 from launcher.cli.control.manager import add_state_arguments, on_manager
 from launcher.errors import LaunchError
+from launcher.lifecycle import STATES
 from launcher.nodes.spawner import Manager
 
 
@@ -15,12 +16,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 @on_manager
 def run(manager: Manager, args: argparse.Namespace) -> int:
-    ids = {"unconfigured": 1, "inactive": 2, "active": 3}
     make = manager.node.message
     response = manager.call("set_hardware_component_state",
                             name=args.hardware_component_name,
                             target_state=make("lifecycle_msgs/msg/State",
-                                              id=ids[args.state], label=args.state))
+                                              id=STATES[args.state], label=args.state))
     if not response.ok:
         raise LaunchError(f"Error setting {args.hardware_component_name} to {args.state}, "
                           f"check controller_manager logs")

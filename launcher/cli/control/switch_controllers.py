@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from launcher.bus.wire import split_time
 from launcher.cli.control.manager import add_manager_option, on_manager
 from launcher.errors import LaunchError
 from launcher.nodes.spawner import Manager
@@ -26,13 +27,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 @on_manager
 def run(manager: Manager, args: argparse.Namespace) -> int:
-    sec = int(args.switch_timeout)
+    sec, nanosec = split_time(args.switch_timeout)
     response = manager.call(
         "switch_controller", activate_controllers=args.activate,
         deactivate_controllers=args.deactivate, strictness=1 if args.best_effort else 2,
         activate_asap=args.activate_asap, timeout=manager.node.message(
-            "builtin_interfaces/msg/Duration", sec=sec,
-            nanosec=int((args.switch_timeout - sec) * 1e9)))
+            "builtin_interfaces/msg/Duration", sec=sec, nanosec=nanosec))
     if not response.ok:
         raise LaunchError(f"Error switching controllers, check controller_manager logs"
                           f"{': ' + response.message if response.message else ''}")

@@ -21,7 +21,7 @@ from collections import deque
 from typing import Any
 
 from launcher.bus.declarations import REQUIRED, Param
-from launcher.control.controller import Controller, ControllerError
+from launcher.control.controller import Controller
 from launcher.control.controllers import odometry
 
 
@@ -68,6 +68,7 @@ class Limit:
 
 class DiffDriveController(Controller):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("left_wheel_names", "string_array", REQUIRED, "the left wheels' joints",
               non_empty=True),
         Param("right_wheel_names", "string_array", REQUIRED, "the right wheels' joints",
@@ -75,8 +76,8 @@ class DiffDriveController(Controller):
         Param("position_feedback", "bool", True,
               "odometry from the wheels' positions (false: their velocities)"),
         Param("wheel_separation", "double", REQUIRED,
-              "the distance between the left and right wheels, m"),
-        Param("wheel_radius", "double", REQUIRED, "the wheels' radius, m"),
+              "the distance between the left and right wheels, m", above=0.0),
+        Param("wheel_radius", "double", REQUIRED, "the wheels' radius, m", above=0.0),
         Param("wheels_per_side", "int", 0, "accepted: every named wheel is driven"),
         Param("wheel_separation_multiplier", "double", 1.0, "corrects wheel_separation"),
         Param("left_wheel_radius_multiplier", "double", 1.0, "corrects the left radius"),
@@ -119,9 +120,6 @@ class DiffDriveController(Controller):
     def on_configure(self) -> None:
         p = self.read_parameters()
         separation, radius = p["wheel_separation"], p["wheel_radius"]
-        if separation <= 0 or radius <= 0:
-            raise ControllerError(self._at(f"controller '{self.name}': wheel_separation and "
-                                           f"wheel_radius must be positive"))
         self.separation = separation * p["wheel_separation_multiplier"]
         self.left_radius = radius * p["left_wheel_radius_multiplier"]
         self.right_radius = radius * p["right_wheel_radius_multiplier"]

@@ -17,6 +17,7 @@ from launcher.control.controller import Controller
 class ForwardCommandController(Controller):
     interface = ""  # fixed by the JointGroup types
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("joints", "string_array", REQUIRED, "the commanded joints, in the commands' order",
               non_empty=True),
         Param("interface_name", "string", REQUIRED,

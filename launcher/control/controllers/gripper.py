@@ -18,8 +18,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.bus.action_server import ActionServer, Goal
 from launcher.bus.declarations import REQUIRED, Param
-from launcher.control.action_server import ActionServer, Goal
 from launcher.control.controller import Controller
 
 
@@ -27,6 +27,7 @@ class GripperActionController(Controller):
     action_type = "control_msgs/action/GripperCommand"
     command_kind = "position"
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("joint", "string", REQUIRED, "the commanded joint"),
         Param("action_monitor_rate", "double", 20.0, "goal checks a second", minimum=0.1),
         Param("goal_tolerance", "double", 0.01, "how near the command a goal succeeds",

@@ -23,6 +23,7 @@ NAN = float("nan")
 
 class JointStateBroadcaster(Controller):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("joints", "string_array", [], "only these joints (with interfaces)"),
         Param("interfaces", "string_array", [], "only these interfaces (with joints)"),
         Param("use_local_topics", "bool", False, "publish under ~/ (the controller's name)"),

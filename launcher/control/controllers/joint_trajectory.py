@@ -20,8 +20,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from launcher.bus.action_server import ActionServer, Goal
 from launcher.bus.declarations import REQUIRED, Param
-from launcher.control.action_server import ActionServer, Goal
+from launcher.bus.wire import stamp_seconds
 from launcher.control.controller import Controller, ControllerError
 from launcher.control.controllers.trajectory import Point, Trajectory, validate
 
@@ -33,6 +34,7 @@ ALLOWED = {"position", "velocity", "acceleration", "effort"}
 
 class JointTrajectoryController(Controller):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("joints", "string_array", REQUIRED, "the joints the trajectories name",
               non_empty=True, read_only=True),
         Param("command_joints", "string_array", [],
@@ -144,7 +146,7 @@ class JointTrajectoryController(Controller):
         points = []
         for point in message.points:
             duration = point.time_from_start
-            points.append(Point(duration.sec + duration.nanosec * 1e-9, list(point.positions),
+            points.append(Point(stamp_seconds(duration), list(point.positions),
                                 list(point.velocities) or None,
                                 list(point.accelerations) or None))
         return names, points
@@ -170,7 +172,7 @@ class JointTrajectoryController(Controller):
 
     def _start(self, message: Any, names: list[str], points: list[Point]) -> None:
         stamp = message.header.stamp
-        start = stamp.sec + stamp.nanosec * 1e-9 if (stamp.sec or stamp.nanosec) else self.now
+        start = stamp_seconds(stamp) if (stamp.sec or stamp.nanosec) else self.now
         if not points:  # an empty trajectory: stop where the joints are
             self.trajectory = None
             self.hold = list(self.reference[0])
@@ -229,7 +231,7 @@ class JointTrajectoryController(Controller):
                     into[self.joints.index(tolerance.name)] = max(tolerance.position, 0.0) \
                         if tolerance.position > 0 else 0.0
         duration = request.goal_time_tolerance
-        goal_time = duration.sec + duration.nanosec * 1e-9 or self.goal_time
+        goal_time = stamp_seconds(duration) or self.goal_time
         return path, goal, goal_time
 
     def _result(self, code: int, text: str) -> Any:

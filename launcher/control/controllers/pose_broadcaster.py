@@ -15,6 +15,7 @@ INTERFACES = ("position.x", "position.y", "position.z",
 
 class PoseBroadcaster(Controller):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("pose_name", "string", REQUIRED, "the pose sensor of the ros2_control block"),
         Param("frame_id", "string", REQUIRED, "the frame the pose is in"),
         Param("tf.enable", "bool", True, "publish the pose as a transform on /tf"),

@@ -19,6 +19,7 @@ FT_INTERFACES = ("force.x", "force.y", "force.z", "torque.x", "torque.y", "torqu
 
 class IMUSensorBroadcaster(Controller):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("sensor_name", "string", REQUIRED, "the <sensor> of the ros2_control block"),
         Param("frame_id", "string", REQUIRED, "the messages' frame"),
         *(Param(f"static_covariance_{part}", "double_array", [0.0] * 9,
@@ -63,6 +64,7 @@ class IMUSensorBroadcaster(Controller):
 
 class ForceTorqueSensorBroadcaster(Controller):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("sensor_name", "string", "", "the <sensor> of the ros2_control block"),
         Param("frame_id", "string", REQUIRED, "the messages' frame"),
         *(Param(f"interface_names.{i}", "string", "",

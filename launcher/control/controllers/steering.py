@@ -89,10 +89,12 @@ class _Steered(Controller):
 
 class TricycleController(_Steered):
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("traction_joint_name", "string", REQUIRED, "the driven wheel's joint (velocity)"),
         Param("steering_joint_name", "string", REQUIRED, "the steering joint (position)"),
-        Param("wheel_radius", "double", REQUIRED, "the driven wheel's radius, m"),
-        Param("wheelbase", "double", REQUIRED, "from the steered wheel to the rear axle, m"),
+        Param("wheel_radius", "double", REQUIRED, "the driven wheel's radius, m", above=0.0),
+        Param("wheelbase", "double", REQUIRED, "from the steered wheel to the rear axle, m",
+              above=0.0),
         Param("traction.max_velocity", "double", math.inf, "the wheel's largest speed, rad/s"),
         Param("steering.max_position", "double", math.pi / 2,
               "the largest steering angle, rad"),
@@ -114,9 +116,6 @@ class TricycleController(_Steered):
     def on_configure(self) -> None:
         p = self.read_parameters()
         self.radius, self.wheelbase = p["wheel_radius"], p["wheelbase"]
-        if self.radius <= 0 or self.wheelbase <= 0:
-            raise ControllerError(self._at(f"controller '{self.name}': wheel_radius and "
-                                           f"wheelbase must be positive"))
         self.max_speed = p["traction.max_velocity"]
         self.max_angle = p["steering.max_position"]
         self._common(p, p["cmd_vel_timeout"] / 1000.0)
@@ -150,6 +149,7 @@ class AckermannSteeringController(_Steered):
     odom_topic, tf_topic = "~/odometry", "~/tf_odometry"
 
     PARAMETERS = (
+        *Controller.PARAMETERS,
         Param("rear_wheels_names", "string_array", REQUIRED,
               "the rear wheels' joints, left then right (velocity)", non_empty=True),
         Param("front_wheels_names", "string_array", REQUIRED,

@@ -1,5 +1,5 @@
 """actionlib_msgs/GoalStatus's states, the moves between them as actionlib's server goal
-handles make them (a table of launcher's one kind of state machine, bus/actions.py), the
+handles make them (a table of launcher's one kind of state machine, machines.py), the
 action's message classes, and how actionlib reads its timeouts and queue size parameters."""
 
 from __future__ import annotations
@@ -8,7 +8,7 @@ import enum
 from typing import Any
 
 from actionlib.exceptions import ActionException
-from launcher.bus.actions import StateMachine
+from launcher.machines import StateMachine
 
 PENDING, ACTIVE, PREEMPTED, SUCCEEDED, ABORTED, REJECTED, PREEMPTING, RECALLING, RECALLED, \
     LOST = range(10)

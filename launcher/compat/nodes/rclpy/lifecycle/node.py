@@ -1,15 +1,31 @@
 """rclpy.lifecycle's node: rcl_lifecycle's state machine with the user's on_configure,
 on_activate, … callbacks, its services (`~/get_state`, `~/change_state`,
 `~/get_available_states`, `~/get_available_transitions`, `~/get_transition_graph`) and
-`~/transition_event`. A transition that is not allowed from the current state is refused
+`~/transition_event`, over launcher's one table of the states and transitions
+(launcher/lifecycle.py). A transition that is not allowed from the current state is refused
 (ChangeState's `success` false) and logged with the transitions that are."""
 
 from __future__ import annotations
 
 import threading
 import time
-from typing import Any, TypedDict
+from typing import Any, NoReturn, TypedDict
 
+from launcher.lifecycle import (
+    ACTIVATE,
+    CLEANUP,
+    CONFIGURE,
+    DEACTIVATE,
+    ERRORPROCESSING,
+    LABELS,
+    MACHINE,
+    TRANSITIONS,
+    UNCONFIGURED,
+    UNCONFIGURED_SHUTDOWN,
+    Transition,
+    allowed,
+    labelled,
+)
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - the names rclpy's module offers
 from rclpy.lifecycle.managed_entity import ManagedEntity, TransitionCallbackReturn
 from rclpy.lifecycle.publisher import LifecyclePublisher
@@ -26,46 +42,6 @@ class LifecycleState:
 
     def __repr__(self) -> str:
         return f"LifecycleState(label='{self.label}', state_id={self.state_id})"
-
-
-# lifecycle_msgs/msg/State
-UNCONFIGURED, INACTIVE, ACTIVE, FINALIZED = 1, 2, 3, 4
-CONFIGURING, CLEANINGUP, SHUTTINGDOWN, ACTIVATING, DEACTIVATING, ERRORPROCESSING = \
-    10, 11, 12, 13, 14, 15
-LABELS = {0: "unknown", 1: "unconfigured", 2: "inactive", 3: "active", 4: "finalized",
-          10: "configuring", 11: "cleaningup", 12: "shuttingdown", 13: "activating",
-          14: "deactivating", 15: "errorprocessing"}
-# the transitions a user asks for: id → (label, from, through, on success, callback)
-PRIMARY = {
-    1: ("configure", UNCONFIGURED, CONFIGURING, INACTIVE, "on_configure"),
-    2: ("cleanup", INACTIVE, CLEANINGUP, UNCONFIGURED, "on_cleanup"),
-    3: ("activate", INACTIVE, ACTIVATING, ACTIVE, "on_activate"),
-    4: ("deactivate", ACTIVE, DEACTIVATING, INACTIVE, "on_deactivate"),
-    5: ("shutdown", UNCONFIGURED, SHUTTINGDOWN, FINALIZED, "on_shutdown"),
-    6: ("shutdown", INACTIVE, SHUTTINGDOWN, FINALIZED, "on_shutdown"),
-    7: ("shutdown", ACTIVE, SHUTTINGDOWN, FINALIZED, "on_shutdown"),
-}
-# the transitions out of a transition state: (state, outcome) → (id, label, goal)
-OUTCOMES = {
-    (CONFIGURING, 97): (10, "transition_success", INACTIVE),
-    (CONFIGURING, 98): (11, "transition_failure", UNCONFIGURED),
-    (CONFIGURING, 99): (12, "transition_error", ERRORPROCESSING),
-    (CLEANINGUP, 97): (20, "transition_success", UNCONFIGURED),
-    (CLEANINGUP, 98): (21, "transition_failure", INACTIVE),
-    (CLEANINGUP, 99): (22, "transition_error", ERRORPROCESSING),
-    (ACTIVATING, 97): (30, "transition_success", ACTIVE),
-    (ACTIVATING, 98): (31, "transition_failure", INACTIVE),
-    (ACTIVATING, 99): (32, "transition_error", ERRORPROCESSING),
-    (DEACTIVATING, 97): (40, "transition_success", INACTIVE),
-    (DEACTIVATING, 98): (41, "transition_failure", ACTIVE),
-    (DEACTIVATING, 99): (42, "transition_error", ERRORPROCESSING),
-    (SHUTTINGDOWN, 97): (50, "transition_success", FINALIZED),
-    (SHUTTINGDOWN, 98): (51, "transition_failure", FINALIZED),
-    (SHUTTINGDOWN, 99): (52, "transition_error", ERRORPROCESSING),
-    (ERRORPROCESSING, 97): (60, "transition_success", UNCONFIGURED),
-    (ERRORPROCESSING, 98): (61, "transition_failure", FINALIZED),
-    (ERRORPROCESSING, 99): (62, "transition_error", FINALIZED),
-}
 
 
 class LifecycleNodeArgs(TypedDict, total=False):
@@ -185,45 +161,48 @@ class LifecycleNodeMixin:
     # --- transitions -----------------------------------------------------------------------
     def trigger_configure(self) -> TransitionCallbackReturn:
         """Run the configure transition now; its callback's return."""
-        return self._trigger(1)
+        return self._trigger(CONFIGURE)
 
     def trigger_cleanup(self) -> TransitionCallbackReturn:
         """Run the cleanup transition now; its callback's return."""
-        return self._trigger(2)
+        return self._trigger(CLEANUP)
 
     def trigger_activate(self) -> TransitionCallbackReturn:
         """Run the activate transition now; its callback's return."""
-        return self._trigger(3)
+        return self._trigger(ACTIVATE)
 
     def trigger_deactivate(self) -> TransitionCallbackReturn:
         """Run the deactivate transition now; its callback's return."""
-        return self._trigger(4)
+        return self._trigger(DEACTIVATE)
 
     def trigger_shutdown(self) -> TransitionCallbackReturn:
         """Run the shutdown transition now; its callback's return."""
-        return self._trigger({UNCONFIGURED: 5, INACTIVE: 6, ACTIVE: 7}.get(self._state_id, 5))
-
-    def _allowed(self) -> list[int]:
-        return [tid for tid, (_, start, *_rest) in PRIMARY.items() if start == self._state_id]
+        found = labelled(self._state_id, "shutdown")
+        return self._trigger(found.id if found else UNCONFIGURED_SHUTDOWN)
 
     def _trigger(self, transition: int) -> TransitionCallbackReturn:
         with self._transition_lock:
-            if transition not in self._allowed():
-                label = PRIMARY[transition][0] if transition in PRIMARY else str(transition)
-                allowed = ", ".join(f"{PRIMARY[t][0]} [{t}]" for t in self._allowed()) or \
-                    "none"
-                self.get_logger().error(  # type: ignore[attr-defined]
-                    f"Unable to start transition {label} [{transition}] from current state "
-                    f"{LABELS[self._state_id]}: it is not allowed there (allowed: {allowed})")
-                raise TransitionNotAllowed(label, LABELS[self._state_id], allowed)
-            label, start, through, _, method = PRIMARY[transition]
+            start = self._state_id
+            if transition not in TRANSITIONS or not MACHINE.allows(start, transition):
+                self._refuse(transition)
+            through = MACHINE.move(start, transition)
             self._move(start, through)
-            outcome = self._call(method, through, start)
+            outcome = self._call(TRANSITIONS[transition].callback, through, start)
             goal = self._finish(through, outcome)
             if goal == ERRORPROCESSING:
                 error = self._call("on_error", ERRORPROCESSING, through)
                 self._finish(ERRORPROCESSING, error)
             return outcome
+
+    def _refuse(self, transition: int) -> NoReturn:
+        """Log, then raise, that `transition` is not allowed from the current state."""
+        label = TRANSITIONS[transition].label if transition in TRANSITIONS else str(transition)
+        state = LABELS[self._state_id]
+        choices = ", ".join(f"{t.label} [{t.id}]" for t in allowed(self._state_id)) or "none"
+        self.get_logger().error(  # type: ignore[attr-defined]
+            f"Unable to start transition {label} [{transition}] from current state "
+            f"{state}: it is not allowed there (allowed: {choices})")
+        raise TransitionNotAllowed(label, state, choices)
 
     def _call(self, method: str, through: int, previous: int) -> TransitionCallbackReturn:
         # (rclpy hands the callback the state the transition started from)
@@ -242,7 +221,7 @@ class LifecycleNodeMixin:
         return TransitionCallbackReturn(int(outcome))
 
     def _finish(self, through: int, outcome: int) -> int:
-        transition, label, goal = OUTCOMES[(through, int(outcome))]
+        goal = MACHINE.move(through, int(outcome))
         self._move(through, goal)
         return goal
 
@@ -269,8 +248,8 @@ class LifecycleNodeMixin:
     def _on_change_state(self, request: Any, response: Any) -> Any:
         transition = request.transition.id
         if transition == 0 and request.transition.label:  # by label, as ros2 lifecycle asks
-            named = [t for t in self._allowed() if PRIMARY[t][0] == request.transition.label]
-            transition = named[0] if named else -1
+            found = labelled(self._state_id, request.transition.label)
+            transition = found.id if found else -1
         try:
             outcome = self._trigger(transition)
         except TransitionNotAllowed:
@@ -285,21 +264,22 @@ class LifecycleNodeMixin:
         response.available_states = [State(id=i, label=label) for i, label in LABELS.items()]
         return response
 
-    def _describe(self, transitions: list[int]) -> list[Any]:
-        from lifecycle_msgs.msg import State, Transition, TransitionDescription
+    def _describe(self, transitions: list[Transition]) -> list[Any]:
+        """TransitionDescriptions, each going into its transition state, as rcl lists them."""
+        from lifecycle_msgs import msg
 
-        return [TransitionDescription(
-            transition=Transition(id=t, label=PRIMARY[t][0]),
-            start_state=State(id=PRIMARY[t][1], label=LABELS[PRIMARY[t][1]]),
-            goal_state=State(id=PRIMARY[t][2], label=LABELS[PRIMARY[t][2]]))
+        return [msg.TransitionDescription(
+            transition=msg.Transition(id=t.id, label=t.label),
+            start_state=msg.State(id=t.start, label=LABELS[t.start]),
+            goal_state=msg.State(id=t.through, label=LABELS[t.through]))
             for t in transitions]
 
     def _on_transitions(self, request: Any, response: Any) -> Any:
-        response.available_transitions = self._describe(self._allowed())
+        response.available_transitions = self._describe(allowed(self._state_id))
         return response
 
     def _on_graph(self, request: Any, response: Any) -> Any:
-        response.available_transitions = self._describe(list(PRIMARY))
+        response.available_transitions = self._describe(list(TRANSITIONS.values()))
         return response
 
     @property
