@@ -10,9 +10,10 @@ from md_tables import code
 
 NODES = Path(__file__).resolve().parents[2] / "launcher" / "compat" / "nodes"
 # the modules whose public surface is documented (tests/unit/test_compat_docs.py keeps it so)
-MODULES = ["rclpy/__init__.py", "rclpy/node.py", "rclpy/executors.py", "rclpy/publisher.py",
-           "rclpy/subscription.py", "rclpy/client.py", "rclpy/service.py", "rclpy/timer.py",
-           "rclpy/task.py", "rclpy/parameter.py", "rclpy/context.py", "rclpy/utilities.py",
+MODULES = ["rclpy/__init__.py", "rclpy/node.py", "rclpy/node_parameters.py",
+           "rclpy/executors.py", "rclpy/publisher.py", "rclpy/subscription.py",
+           "rclpy/client.py", "rclpy/service.py", "rclpy/timer.py", "rclpy/task.py",
+           "rclpy/parameter.py", "rclpy/context.py", "rclpy/utilities.py",
            "rclpy/clock.py", "rclpy/time.py", "rclpy/duration.py", "rclpy/callback_groups.py",
            "rclpy/qos.py", "rclpy/logging.py", "rclpy/guard_condition.py",
            "rclpy/parameter_client.py", "rclpy/lifecycle/node.py",

@@ -3,9 +3,9 @@ three services and two topics, the goal states and the moves between them, and t
 goals a server keeps (each result kept RESULT_KEEP seconds after its goal ends, cancel requests
 resolved as rcl_action resolves them, the status array published at each change).
 
-rclpy's ActionServer and ActionClient (compat), the controllers' action servers
-(control/action_server.py) and `launcher action` use it; ROS 1's actionlib keeps its own
-states through the same kind of table (compat/nodes/actionlib/status.py)."""
+The one action server (bus/action_server.py: the controllers', the sim's and, under its own
+classes, rclpy's), rclpy's ActionClient and `launcher action` use it; ROS 1's actionlib keeps
+its own states through the same kind of table (compat/nodes/actionlib/status.py)."""
 
 from __future__ import annotations
 
@@ -14,6 +14,9 @@ import struct
 import threading
 import time
 from typing import Any
+
+from launcher.bus.wire import stamp_nanoseconds
+from launcher.machines import StateMachine
 
 # --- names (rcl_action's: `<action>/_action/<part>`, typed `<action type>_<Part>`) ------------
 SEND_GOAL, CANCEL_GOAL, GET_RESULT = "send_goal", "cancel_goal", "get_result"
@@ -58,42 +61,20 @@ TRANSITIONS = {
     (CANCELING, GoalEvent.ABORT): ABORTED,
     (CANCELING, GoalEvent.CANCELED): CANCELED,
 }
+GOAL_STATES = StateMachine(TRANSITIONS, STATE_NAMES)  # rcl_action's (machines.py)
 
 # action_msgs/srv/CancelGoal's return codes
 ERROR_NONE, ERROR_REJECTED, ERROR_UNKNOWN_GOAL_ID, ERROR_GOAL_TERMINATED = range(4)
 
 
-class InvalidTransition(RuntimeError):
-    """A move the state machine does not have (rclpy raises it as its RCLError)."""
-
-
-class StateMachine:
-    """A goal's states and the events that move it: rcl_action's (`GOAL_STATES`) and ROS 1
-    actionlib's (compat/nodes/actionlib/status.py) are both tables of this one kind."""
-
-    def __init__(self, transitions: dict[tuple[int, Any], int], names: dict[int, str]) -> None:
-        self.transitions, self.names = transitions, names
-
-    def move(self, state: int, event: Any) -> int:
-        """The state after `event`; InvalidTransition (with rcl_action's message) if the
-        machine has no such move."""
-        new = self.transitions.get((state, event))
-        if new is None:
-            raise InvalidTransition(
-                f"Failed to update goal state: goal_handle attempted invalid transition from "
-                f"state {self.names[state]} with event {event.name}")
-        return new
-
-    def allows(self, state: int, event: Any) -> bool:
-        return (state, event) in self.transitions
-
-
-GOAL_STATES = StateMachine(TRANSITIONS, STATE_NAMES)  # rcl_action's
-
-
 def uuid_key(goal_id: Any) -> bytes:
     """A goal id (unique_identifier_msgs/UUID) as a dict key."""
     return bytes(goal_id.uuid)
+
+
+def uuid_text(goal_id: Any) -> str:
+    """A goal id as rclpy prints it in its logs."""
+    return str(list(bytes(goal_id.uuid)))
 
 
 class Goal:
@@ -114,7 +95,7 @@ class Goal:
 
     @property
     def stamp_ns(self) -> int:
-        return self.stamp.sec * 1_000_000_000 + self.stamp.nanosec
+        return stamp_nanoseconds(self.stamp)
 
     def status_cdr(self) -> bytes:
         """Its entry of the status array, made again only when its state moves."""
@@ -149,8 +130,8 @@ class GoalTable:
             self._goals[goal.key] = goal
 
     def move(self, goal: Goal, event: GoalEvent) -> None:
-        """The goal's state after `event`; InvalidTransition (with rcl_action's message) if
-        the state machine has no such move."""
+        """The goal's state after `event`; machines.InvalidTransition (with rcl_action's
+        message) if the state machine has no such move."""
         with self.lock:
             new = goal.state = GOAL_STATES.move(goal.state, event)
             if new in TERMINAL:

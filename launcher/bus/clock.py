@@ -12,6 +12,7 @@ from collections.abc import Callable
 from typing import Any
 
 from launcher.bus.qos import QoS
+from launcher.bus.wire import stamp_nanoseconds
 from launcher.records import dataclass
 
 
@@ -47,7 +48,7 @@ class Clock:
             self._follower = node.host.adopt(Follower(node.host))
 
     def _on_clock(self, message: Any) -> None:
-        self._sim_ns = message.clock.sec * 1_000_000_000 + message.clock.nanosec
+        self._sim_ns = stamp_nanoseconds(message.clock)
         if self._follower is not None:
             self._follower.clock(self._sim_ns)
 

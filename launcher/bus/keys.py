@@ -157,6 +157,13 @@ def servers_selector(domain: int, service: str, type_name: str, space: Space = R
                      service_part, dds_type(type_name), "**"])
 
 
+def endpoints_selector(domain: int, kind: str, topic: str, space: Space = ROS) -> str:
+    """The liveliness key expression of every endpoint of `kind` (PUBLISHER, SUBSCRIPTION) on
+    `topic`, of any node, type and QoS."""
+    return "/".join([space.liveliness, str(domain), "*", "*", "*", kind, "*", "*", "*",
+                     mangle(topic), "**"])
+
+
 def parse_liveliness(key: str) -> Entity | None:
     parts = fields(key)
     if parts is None:

@@ -5,6 +5,7 @@ sporadic heartbeats when reliable, so that a subscriber can tell it missed one."
 
 from __future__ import annotations
 
+import functools
 import itertools
 import os
 import threading
@@ -17,6 +18,7 @@ import zenoh.ext
 
 from launcher.bus import keys
 from launcher.bus.host import Host
+from launcher.bus.matching import MatchedStatus, MatchWatch
 from launcher.bus.qos import KEEP_ALL_DEPTH, QoS
 from launcher.bus.types import registry
 
@@ -69,6 +71,7 @@ class Publisher:
         # task needs that runtime to end (zenoh-python stops it holding the GIL): the
         # process hung, a container of robots past SIGINT and SIGTERM.
         self._listener: Any = None
+        self._matches: list[MatchWatch] = []
 
     @property
     def _matching(self) -> bool:
@@ -97,6 +100,14 @@ class Publisher:
             self._told = matching = self._matching
             self._watchers.append(callback)
             self._host.enqueue(callback, matching)
+
+    def watch_matches(self, callback: Callable[[MatchedStatus], None]) -> None:
+        """Call `callback(status)` on the executor each time a subscription on the graph
+        matches or leaves (those there already at once), until the publisher is destroyed:
+        the counts of rclpy's matched events (bus/matching.py)."""
+        self._matches.append(MatchWatch(self._host.session, self.topic, keys.SUBSCRIPTION,
+                                        functools.partial(self._host.enqueue, callback),
+                                        self.space))
 
     def recheck(self) -> None:
         """Tell the watchers what Zenoh says now where it differs from what they were told
@@ -134,6 +145,7 @@ class Publisher:
             return
         with self._lock:  # never while a put is under way: Zenoh says "Already borrowed"
             self._closed = True
-            for item in (self._listener, self._latched, self._publisher, self._token):
+            for item in (*self._matches, self._listener, self._latched, self._publisher,
+                         self._token):
                 if item is not None:
                     item.undeclare()

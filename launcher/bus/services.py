@@ -139,7 +139,7 @@ class Client:
         self._token = host.announce(keys.CLIENT, name, type_name, types.service_hash(type_name),
                                     QoS().key(), self.space)
         self._sequence = itertools.count(1)
-        self._gid = os.urandom(16)
+        self.gid = os.urandom(16)  # its calls' source (service introspection tells it)
 
     def call(self, request: Any, timeout: float = 5.0) -> Any:
         """The response, waiting up to `timeout`. A query that no server matched ends at once
@@ -155,7 +155,7 @@ class Client:
         deadline = time.monotonic() + timeout
         while True:
             left = deadline - time.monotonic()
-            attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
+            attachment = keys.attachment(next(self._sequence), time.time_ns(), self.gid)
             replies = self._host.session.get(self._key, payload=payload, attachment=attachment,
                                              timeout=max(left, 0.001))
             for reply in replies:
@@ -176,7 +176,7 @@ class Client:
         first one after start, or wait for the service first)."""
         types = registry()
         payload = types.serialize(request, self.request_type)
-        attachment = keys.attachment(next(self._sequence), time.time_ns(), self._gid)
+        attachment = keys.attachment(next(self._sequence), time.time_ns(), self.gid)
         answered: list[bool] = []
 
         def on_reply(reply: Any) -> None:

@@ -11,6 +11,7 @@ so other callbacks (and the sim's physics) still get theirs."""
 
 from __future__ import annotations
 
+import functools
 import threading
 from collections import deque
 from collections.abc import Callable
@@ -22,6 +23,7 @@ import zenoh.ext
 from launcher.bus import keys
 from launcher.bus.host import Host
 from launcher.bus.lockstep import LEDGER
+from launcher.bus.matching import MatchedStatus, MatchWatch
 from launcher.bus.qos import QoS
 from launcher.bus.types import registry
 
@@ -60,6 +62,15 @@ class Subscription:
             self._subscriber = host.session.declare_subscriber(key, self._on_sample)
         self._token = host.announce(keys.SUBSCRIPTION, topic, self.type_name,
                                     types.type_hash(self.type_name), qos.key(), self.space)
+        self._matches: list[MatchWatch] = []
+
+    def watch_matches(self, callback: Callable[[MatchedStatus], None]) -> None:
+        """Call `callback(status)` on the executor each time a publisher on the graph matches
+        or leaves (those there already at once), until the subscription is destroyed: the
+        counts of rclpy's matched events (bus/matching.py)."""
+        self._matches.append(MatchWatch(self._host.session, self.topic, keys.PUBLISHER,
+                                        functools.partial(self._host.enqueue, callback),
+                                        self.space))
 
     def _on_sample(self, sample: zenoh.Sample) -> None:
         if self._own is not None:
@@ -110,7 +121,7 @@ class Subscription:
     def destroy(self) -> None:
         if self._host.forget(self):
             LEDGER.unsubscribe(self.key)
-            for item in (self._subscriber, self._token):
+            for item in (*self._matches, self._subscriber, self._token):
                 item.undeclare()
 
 

@@ -28,6 +28,21 @@ def split_time(seconds: float) -> tuple[int, int]:
     return divmod(int(round(seconds * 1e9)), 1_000_000_000)
 
 
+def fill_stamp(stamp: Any, seconds: float) -> None:
+    """Set a builtin_interfaces Time or Duration (`sec`, `nanosec`) to `seconds`."""
+    stamp.sec, stamp.nanosec = split_time(seconds)
+
+
+def stamp_seconds(stamp: Any) -> float:
+    """A builtin_interfaces Time or Duration (`sec`, `nanosec`) in seconds."""
+    return stamp.sec + stamp.nanosec * 1e-9
+
+
+def stamp_nanoseconds(stamp: Any) -> int:
+    """A builtin_interfaces Time or Duration (`sec`, `nanosec`) in nanoseconds, exactly."""
+    return stamp.sec * 1_000_000_000 + stamp.nanosec
+
+
 def clock_cdr(sim: float, real: float, paused: bool, iterations: int) -> bytes:
     """mujoco_sim/msg/Clock as CDR, packed directly: it goes out after every step."""
     return _CLOCK.pack(CDR_HEADER, *split_time(sim), *split_time(real), paused, iterations)

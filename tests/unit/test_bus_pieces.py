@@ -1,9 +1,11 @@
-"""The bus's pure parts: names, --ros-args, params files, keys, messages and types."""
+"""The bus's pure parts: names, --ros-args, params files, keys, messages and types, and the
+action server over a faked node."""
 
 from __future__ import annotations
 
 import subprocess
 import sys
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -13,7 +15,7 @@ from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.qos import QoS
 from launcher.bus.types import UnknownType, registry
 from launcher.errors import LaunchError
-from tests.conftest import REPO
+from tests.support.environment import REPO
 
 
 @pytest.mark.parametrize("name, expected", [
@@ -296,3 +298,80 @@ def test_a_later_sample_counts_for_an_earlier_one_dropped_on_the_way():
     assert ledger.landed([["k", gid.hex(), 5]])
     ledger.unsubscribe("k")
     assert ledger.landed([["k", gid.hex(), 99]])  # no longer subscribed: not waited for
+
+
+class _Endpoint:
+    """A bus service or publisher of a faked node: what the action server uses of them."""
+
+    def __init__(self, callback=None) -> None:
+        self.callback, self.sent, self.listened = callback, [], False
+
+    def new_response(self):
+        return SimpleNamespace()
+
+    def publish_raw(self, payload) -> None:
+        self.sent.append(payload)
+
+    def publish(self, message) -> None:
+        self.sent.append(message)
+
+    def get_subscription_count(self) -> int:
+        return int(self.listened)
+
+
+class _Reply:
+    def __init__(self, said: list) -> None:
+        self.said = said
+
+    def new_response(self):
+        return SimpleNamespace()
+
+    def send(self, response) -> None:
+        self.said.append(("answered", response))
+
+
+def _faked_node() -> SimpleNamespace:
+    endpoints: dict[str, _Endpoint] = {}
+
+    def make(type_name, name, callback=None, qos=None):
+        endpoints[name.rpartition("/")[2]] = endpoint = _Endpoint(callback)
+        return endpoint
+    return SimpleNamespace(create_service=make, create_publisher=make, endpoints=endpoints,
+                           message=lambda type_name, **fields: SimpleNamespace(**fields))
+
+
+def test_the_action_server_answers_first_and_cancels_only_what_can_be_canceled():
+    """The controllers' way (every goal executes at once, every cancel is taken): the goal's
+    request is answered before its owner hears of it, a second cancel of a canceling goal is
+    refused, and its result waits for the owner to end it."""
+    from launcher.bus import actions
+    from launcher.bus.action_server import ActionServer
+
+    said: list = []
+    node = _faked_node()
+    server = ActionServer(node, "control_msgs/action/GripperCommand", "~/gripper_cmd",
+                          lambda goal: goal == "close", lambda goal: said.append("accepted"),
+                          lambda goal: said.append("canceling"),
+                          lambda: SimpleNamespace(sec=1, nanosec=0))
+    goal_id = SimpleNamespace(uuid=bytes([1] * 16))
+    send, cancel = node.endpoints["send_goal"].callback, node.endpoints["cancel_goal"].callback
+    send(SimpleNamespace(goal_id=SimpleNamespace(uuid=bytes([2] * 16)), goal="open"),
+         _Reply(said))
+    send(SimpleNamespace(goal_id=goal_id, goal="close"), _Reply(said))
+    assert [s if isinstance(s, str) else s[1].accepted for s in said] == [False, True, "accepted"]
+    assert actions.statuses(node.endpoints["status"].sent[-1]) == [(bytes([1] * 16),
+                                                                    actions.EXECUTING)]
+    every_goal = SimpleNamespace(goal_info=SimpleNamespace(
+        goal_id=SimpleNamespace(uuid=bytes(16)), stamp=SimpleNamespace(sec=0, nanosec=0)))
+    first = cancel(every_goal, SimpleNamespace())
+    assert first.return_code == actions.ERROR_NONE and said[-1] == "canceling"
+    assert [g.goal_id for g in first.goals_canceling] == [goal_id]
+    assert cancel(every_goal, SimpleNamespace()).return_code == actions.ERROR_REJECTED
+    waiting: list = []
+    node.endpoints["get_result"].callback(SimpleNamespace(goal_id=goal_id), _Reply(waiting))
+    assert waiting == []
+    goal = server.goals.goals()[0].handle
+    goal.feedback("unheard")
+    assert node.endpoints["feedback"].sent == []
+    goal.canceled("let go")
+    assert [(r.status, r.result) for _, r in waiting] == [(actions.CANCELED, "let go")]

@@ -107,3 +107,23 @@ def test_rclpys_named_profiles_are_the_bus_vocabularys():
 
     for name in ("sensor_data", "parameters", "action_status_default", "rosout_default"):
         assert getattr(rclpy.qos, f"qos_profile_{name}").to_launcher() == PROFILES[name], name
+
+
+def test_qos_compatibility_follows_rmws_rules():
+    from rclpy.qos import LivelinessPolicy, QoSCompatibility, qos_check_compatible
+
+    plain = QoSProfile(depth=10)
+    assert qos_check_compatible(plain, plain) == (QoSCompatibility.OK, "")
+    best_effort = QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
+    assert qos_check_compatible(best_effort, plain) == (
+        QoSCompatibility.ERROR, "ERROR: Best effort publisher and reliable subscription;")
+    latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL,
+                         deadline=Duration(seconds=1))
+    level, reason = qos_check_compatible(plain, latched)
+    assert level == QoSCompatibility.ERROR and reason == (
+        "ERROR: Volatile publisher and transient local subscription; "
+        "ERROR: Subscription has a deadline, but publisher does not;")
+    manual = QoSProfile(depth=10, liveliness=LivelinessPolicy.MANUAL_BY_TOPIC)
+    assert qos_check_compatible(plain, manual) == (
+        QoSCompatibility.WARNING,
+        "WARNING: Publisher liveliness is SYSTEM_DEFAULT and subscription is MANUAL_BY_TOPIC;")

@@ -96,7 +96,7 @@ def create_node(node_name: str, **kwargs: Any) -> Any:
 
 
 def _executor_for(node: Any, executor: Any) -> Any:
-    from rclpy.node import check_alive
+    from rclpy.custody import check_alive
 
     executor = executor or get_global_executor()
     check_alive(node)
@@ -106,7 +106,7 @@ def _executor_for(node: Any, executor: Any) -> Any:
 
 def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
     """Run one ready callback of `node`, waiting up to `timeout_sec`."""
-    from rclpy.node import check_alive
+    from rclpy.custody import check_alive
 
     executor = executor or get_global_executor()
     if type(executor).spin_once is _plain_spin_once():  # (not a subclass's own spin_once)

@@ -13,6 +13,7 @@ from typing import Any
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
 from rclpy.clock import Clock  # noqa: F401
 from rclpy.context import Context
+from rclpy.custody import live_host
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service import ServiceNames
 from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
@@ -45,8 +46,7 @@ class Client(ServiceNames):
             from rclpy.service_introspection import Introspection
 
             found = self.__dict__["_introspection_made"] = Introspection(
-                self._node, self._bus.name, self.srv_type, getattr(self._bus, "_gid",
-                                                                   bytes(16)))
+                self._node, self._bus.name, self.srv_type, self._bus.gid)
         return found
 
     def configure_introspection(self, clock: Any, service_event_qos_profile: Any,
@@ -74,8 +74,6 @@ class Client(ServiceNames):
         payload = self._check(request)
         future = Future(executor=self._node.executor)
         self._pending.add(future)
-        from rclpy.node import live_host
-
         host = live_host(self._node)
 
         def finish(method: Any, value: Any) -> None:

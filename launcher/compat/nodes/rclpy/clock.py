@@ -8,7 +8,7 @@ from collections.abc import Callable
 from typing import Any
 
 from rclpy.clock_type import ClockType
-from rclpy.context import Context  # noqa: F401 - as rclpy's module offers it
+from rclpy.context import Context, get_default_context  # noqa: F401 - as rclpy's offers it
 from rclpy.duration import Duration
 from rclpy.exceptions import NotInitializedException  # noqa: F401
 from rclpy.jumps import (  # noqa: F401 - as rclpy's module offers them
@@ -20,7 +20,6 @@ from rclpy.jumps import (  # noqa: F401 - as rclpy's module offers them
     jump,
 )
 from rclpy.time import Time
-from rclpy.utilities import get_default_context
 
 __all__ = ["Clock", "ClockType", "ROSClock"]
 
@@ -81,10 +80,13 @@ class ROSClock(Clock):
     """ROS time: the node's `/clock` when use_sim_time is true, else the system time. A clock
     of no node follows the time a TimeSource sets while ROS time is active."""
 
-    def __init__(self, source: Any = None, *, node: Any = None) -> None:
+    def __init__(self, source: Any = None, *,
+                 follow: Callable[[ROSClock], Any] | None = None) -> None:
+        """`source`: launcher's node clock; `follow(clock)`: what makes the clock follow its
+        node's /clock once jump callbacks are asked of it (the node's TimeSource)."""
         super().__init__(clock_type=ClockType.ROS_TIME)
-        self._source = source  # launcher's node clock
-        self._node = node  # whose /clock a TimeSource follows when jumps are asked for
+        self._source = source
+        self._follow = follow
         self._active: bool | None = None  # None: as the source says
         self._set_ns: int | None = None
         self._time_source: Any = None
@@ -136,9 +138,6 @@ class ROSClock(Clock):
         """As Clock's; a node's clock starts following its /clock for them."""
         handle = super().create_jump_callback(threshold, pre_callback=pre_callback,
                                               post_callback=post_callback)
-        if self._node is not None and self._time_source is None:
-            from rclpy.time_source import TimeSource  # only when jumps are asked for
-
-            self._time_source = TimeSource(node=self._node)
-            self._time_source.attach_clock(self)
+        if self._follow is not None and self._time_source is None:
+            self._time_source = self._follow(self)
         return handle

@@ -105,6 +105,17 @@ class Context:
         self.try_shutdown()
 
 
+# The process' context: rclpy.utilities offers it (rclpy's module global); made here, below
+# the modules that take it as their default (guard conditions, clocks, timers) and the signals
+# module that utilities' shutdown reaches.
+g_default_context = Context()
+
+
+def get_default_context(*, shutting_down: bool = False) -> Context:
+    """The process' context, made at first use."""
+    return g_default_context
+
+
 def _logging_done() -> None:
     global g_logging_ref_count
     g_logging_ref_count = max(g_logging_ref_count - 1, 0)

@@ -128,6 +128,13 @@ class ParameterUninitializedException(ParameterException):
             self, f"The parameter '{parameter_name}' is not initialized", parameter_name)
 
 
+class ExternalShutdownException(Exception):
+    """The context was shut down (a signal, or another thread) while spinning (rclpy.executors
+    offers it; it is here, below the signals and timers that raise it too)."""
+
+    __module__ = "rclpy.executors"  # where rclpy has it: a traceback names it so
+
+
 class ROSInterruptException(Exception):
     """Raised when an operation is canceled by rclpy shutting down."""
 

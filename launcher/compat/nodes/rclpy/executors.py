@@ -16,12 +16,16 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
-import rclpy.node
 from rclpy.callback_groups import is_custom
 from rclpy.client import Client  # noqa: F401 - the names rclpy's module offers
 from rclpy.clock import Clock, ClockType  # noqa: F401
 from rclpy.context import Context  # noqa: F401
-from rclpy.exceptions import InvalidHandle, TimerCancelledError  # noqa: F401
+from rclpy.custody import caught_up, check_alive, live_host
+from rclpy.exceptions import (  # noqa: F401
+    ExternalShutdownException,
+    InvalidHandle,
+    TimerCancelledError,
+)
 from rclpy.guard_condition import GuardCondition  # noqa: F401
 from rclpy.service import Service  # noqa: F401
 from rclpy.signals import SignalHandlerGuardCondition  # noqa: F401
@@ -34,10 +38,6 @@ from rclpy.waitable import NumberOfEntities, Waitable  # noqa: F401
 
 BELL_LOST = 0.1  # s: the longest an executor waits without looking (see _next_work)
 HELD_BACK = 0.01  # s: how soon a timer its group held back is offered again
-
-
-class ExternalShutdownException(Exception):
-    """The context was shut down (a signal, or another thread) while spinning."""
 
 
 class ShutdownException(Exception):
@@ -86,7 +86,7 @@ class Executor:
     # --- nodes ------------------------------------------------------------------------------
     def add_node(self, node: Any) -> bool:
         """Spin `node` too; False if it was added already."""
-        rclpy.node.check_alive(node)
+        check_alive(node)
         with self._lock:
             if node in self._nodes:
                 return False
@@ -166,12 +166,12 @@ class Executor:
                     if until is not None:  # (None: on sim time, woken by the /clock)
                         soonest = now + until if soonest is None else min(soonest, now + until)
             for node in nodes:  # then waiting work
-                host = rclpy.node.live_host(node)
+                host = live_host(node)
                 work = host.next_work(0) if host is not None else None
                 if work is not None:
                     return node, work[0], work[1]
             for node in nodes:  # idle: all that was due has run
-                rclpy.node.caught_up(node)
+                caught_up(node)
             ends = [t for t in (deadline, soonest) if t is not None]
             wait = min(ends) - now if ends else None
             if deadline is not None and now >= deadline:

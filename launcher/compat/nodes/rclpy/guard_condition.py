@@ -5,8 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
-from rclpy.context import Context  # noqa: F401
-from rclpy.utilities import get_default_context
+from rclpy.context import Context, get_default_context  # noqa: F401
 
 
 class GuardCondition:

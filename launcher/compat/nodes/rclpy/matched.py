@@ -1,17 +1,15 @@
 """Matched events (PublisherEventCallbacks(matched=…), SubscriptionEventCallbacks(matched=…)):
-the endpoints of the other kind on the same topic, counted from the graph's liveliness tokens
-as they come and go, and handed to the callback on the node's executor as rclpy's
-QoSPublisherMatchedInfo / QoSSubscriptionMatchedInfo (total and current counts, and their
-changes since the last event)."""
+the bus counts an endpoint's matches on the graph (launcher/bus/matching.py, rmw's matched
+status: total and current counts, and their changes since the last event); each change reaches
+the callback on the node's executor as rclpy's QoSPublisherMatchedInfo /
+QoSSubscriptionMatchedInfo."""
 
 from __future__ import annotations
 
-import threading
+from collections.abc import Callable
 from typing import Any
 
-import zenoh
-
-from launcher.bus import keys
+from launcher.bus.matching import MatchedStatus
 from launcher.records import dataclass
 
 
@@ -32,43 +30,11 @@ class QoSSubscriptionMatchedInfo(MatchedCounts):
     """A subscription's matched publishers."""
 
 
-class MatchWatcher:
-    """Watches the tokens of `kind` (keys.SUBSCRIPTION for a publisher, keys.PUBLISHER for a
-    subscription) on `topic`; each change is one event."""
-
-    def __init__(self, node: Any, topic: str, kind: str, callback: Any, info: type) -> None:
-        self._node, self._callback, self._info = node, callback, info
-        self._alive: set[str] = set()
-        self._total = self._reported_total = self._reported_current = 0
-        self._lock = threading.Lock()
-        key = (f"{keys.ROS.liveliness}/{keys.DOMAIN}/*/*/*/{kind}/*/*/*/"
-               f"{keys.mangle(topic)}/**")
-        self._subscriber = node.handle.session.liveliness().declare_subscriber(
-            key, zenoh.handlers.Callback(self._on_token, indirect=False), history=True)
-
-    def _on_token(self, sample: Any) -> None:
-        name = str(sample.key_expr)
-        with self._lock:
-            if sample.kind == zenoh.SampleKind.PUT:
-                if name in self._alive:
-                    return
-                self._alive.add(name)
-                self._total += 1
-            elif name in self._alive:
-                self._alive.discard(name)
-            else:
-                return
-            current = len(self._alive)
-            info = self._info(total_count=self._total,
-                              total_count_change=self._total - self._reported_total,
-                              current_count=current,
-                              current_count_change=current - self._reported_current)
-            self._reported_total, self._reported_current = self._total, current
-        from rclpy.node import live_host
-
-        host = live_host(self._node)
-        if host is not None:
-            host.enqueue(self._callback, info)
-
-    def destroy(self) -> None:
-        self._subscriber.undeclare()
+def watch(endpoint: Any, info: type[MatchedCounts], callback: Callable[[Any], Any]) -> None:
+    """`callback(info)` on the executor at each change of the bus endpoint's matches."""
+    def told(status: MatchedStatus) -> None:
+        callback(info(total_count=status.total_count,
+                      total_count_change=status.total_count_change,
+                      current_count=status.current_count,
+                      current_count_change=status.current_count_change))
+    endpoint.watch_matches(told)

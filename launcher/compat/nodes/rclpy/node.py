@@ -2,16 +2,17 @@
 
 Each Node owns one launcher bus node (its Zenoh session, graph tokens and parameter
 services). Its entities' callbacks go on the node's queue; the executor it is spun by runs
-them (see executors.py). Parameters follow rclpy: declared before use unless
-`allow_undeclared_parameters`, overrides from `--ros-args -p` and params files win over
-defaults, `add_on_set_parameters_callback` may refuse a change.
+them (see executors.py). What the node holds of its own (whether it lives, its entities and
+callback groups) is its Custody (custody.py), which the rest of this rclpy asks; its
+parameters, as rclpy has them, are a part of their own that it mixes in (node_parameters.py).
 """
 
 from __future__ import annotations
 
 import functools
+import sys
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from typing import Any
 
 from launcher.bus import components, graph, keys
@@ -23,12 +24,12 @@ from rclpy.callback_groups import (  # noqa: F401 - the names rclpy's module off
     CallbackGroup,
     MutuallyExclusiveCallbackGroup,
     ReentrantCallbackGroup,
-    is_custom,
 )
 from rclpy.client import Client
 from rclpy.clock import Clock, ROSClock  # noqa: F401
 from rclpy.constants import S_TO_NS
 from rclpy.context import Context  # noqa: F401
+from rclpy.custody import Custody, grouped
 from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks  # noqa: F401
 from rclpy.exceptions import (  # noqa: F401
     InvalidHandle,
@@ -46,6 +47,9 @@ from rclpy.exceptions import (  # noqa: F401
 from rclpy.expand_topic_name import expand_topic_name  # noqa: F401
 from rclpy.guard_condition import GuardCondition
 from rclpy.logging import RcutilsLogger, get_logger  # noqa: F401
+from rclpy.matched import QoSPublisherMatchedInfo, QoSSubscriptionMatchedInfo
+from rclpy.matched import watch as watch_matched
+from rclpy.node_parameters import ParametersMixin
 from rclpy.parameter import PARAMETER_SEPARATOR_STRING, Parameter  # noqa: F401
 from rclpy.publisher import Publisher
 from rclpy.qos import QoSProfile, qos_profile_services_default, to_launcher
@@ -56,6 +60,7 @@ from rclpy.service_introspection import (
     Introspection,
 )
 from rclpy.subscription import ContentFilterOptions, MessageInfo, Subscription  # noqa: F401
+from rclpy.time_source import TimeSource
 from rclpy.timer import Rate, Timer, TimerInfo  # noqa: F401
 from rclpy.timer import bind as bind_timer
 from rclpy.topic_endpoint_info import TopicEndpointInfo  # noqa: F401
@@ -73,10 +78,10 @@ from rclpy.validate_topic_name import validate_topic_name  # noqa: F401
 from rclpy.waitable import Waitable  # noqa: F401
 
 HIDDEN_NODE_PREFIX = "_"
-# What rclpy's module offers from modules that import this one, or that a node needs only
-# when asked: looked up at first use.
+# What rclpy's module offers that a node needs only when asked (their modules cost at import):
+# looked up at first use.
 _ON_USE = {"Executor": "rclpy.executors", "LoggingService": "rclpy.logging_service",
-           "ParameterService": "rclpy.parameter_service", "TimeSource": "rclpy.time_source",
+           "ParameterService": "rclpy.parameter_service",
            "TypeDescriptionService": "rclpy.type_description_service",
            "QoSOverridingOptions": "rclpy.qos_overriding_options"}
 
@@ -84,11 +89,8 @@ _ON_USE = {"Executor": "rclpy.executors", "LoggingService": "rclpy.logging_servi
 class NodeNameNonExistentError(RuntimeError):
     """Raised when a graph query names a node that is not on the graph."""
 
-EMPTY_AFTER_PRE_SET = ("parameter list cannot be empty, this might be due to "
-                       "pre_set_parameters_callback modifying the original parameters list.")
 
-
-class Node:
+class Node(ParametersMixin):
     PARAM_REL_TOL = 1e-6
 
     def __init__(self, node_name: str, *, context: Any = None, cli_args: list[str] | None = None,
@@ -105,8 +107,6 @@ class Node:
             raise NotInitializedException("cannot create node")
         argv: list[str] = []
         if use_global_arguments:
-            import sys
-
             given = self._context.args
             argv += list(sys.argv[1:] if given is None else given[1:])
         argv += list(cli_args or [])
@@ -116,39 +116,20 @@ class Node:
         except LaunchError as exc:
             raise _invalid_name(node_name, namespace or "", str(exc)) from None
         self._bus.owner = self
-        self._host = self._bus.host
-        self._host.ring_with(self._context.bell)  # its work wakes whichever executor spins it
-        self._destroyed = False
+        self._bus.host.ring_with(self._context.bell)  # its work wakes whichever executor spins it
         self.executor: Any = None
         self._timers: list[Timer] = []
-        self._entities: list[Any] = []
         self.default_callback_group = MutuallyExclusiveCallbackGroup()
-        self._callback_groups = [self.default_callback_group]
+        self._custody = Custody(self, self._bus, self.default_callback_group)
         self._logger = RcutilsLogger(
             f"{self._bus.namespace.strip('/').replace('/', '.')}.{self._bus.name}"
             if self._bus.namespace.strip("/") else self._bus.name)
-        self._allow_undeclared = allow_undeclared_parameters
-        self._overrides: dict[str, Any] = self._bus.parameters
-        for parameter in parameter_overrides or []:
-            self._overrides[parameter.name] = parameter.value
-        self._declared: dict[str, Parameter] = {}
-        self._descriptors: dict[str, Any] = {}
-        self._set_callbacks: list[Callable[[list[Parameter]], Any]] = []
-        self._pre_set_callbacks: list[Callable[[list[Parameter]], Any]] = []
-        self._post_set_callbacks: list[Callable[[list[Parameter]], None]] = []
-        self._pending_post: list[Parameter] | None = None
-        self._bus.params.drop_all()  # what is declared, as rclpy lists it
-        self._declare_now("use_sim_time", self._overrides.get("use_sim_time", False))
-        if automatically_declare_parameters_from_overrides:
-            for name, value in self._overrides.items():
-                if name not in self._declared:
-                    self._declare_now(name, value)
-        self._bus.add_on_set_parameters_callback(self._on_bus_set)
-        self._bus.params.gate, self._bus.params.describer = self._gate, self._describe_for_bus
-        self._clock = ROSClock(self._bus.get_clock(), node=self)
+        self._init_parameters(parameter_overrides, allow_undeclared_parameters,
+                              automatically_declare_parameters_from_overrides)
+        self._clock = ROSClock(self._bus.get_clock(),
+                               follow=functools.partial(_time_source, self))
         self._context.track_node(self)
-        self._events: Any = None  # ParameterEvents, made at the first change after start
-        self._started = True
+        self._start_announcing()
         if enable_logger_service:
             from rclpy.logging_service import LoggingService  # only when asked
 
@@ -207,44 +188,11 @@ class Node:
     @property
     def callback_groups(self) -> list[CallbackGroup]:
         """The callback groups the node's entities run in, the default one first."""
-        return list(self._callback_groups)
+        return list(self._custody.groups)
 
     def add_waitable(self, waitable: Any) -> None:
         """Waitables are not supported: raises NotImplementedError."""
         raise NotImplementedError("waitables are not supported by launcher's rclpy")
-
-    def _host_or_none(self) -> Any:
-        return None if self._destroyed else self._host
-
-    def _check_alive(self) -> None:
-        if self._destroyed:
-            from rclpy.exceptions import InvalidHandle
-
-            raise InvalidHandle("cannot use Destroyable because destruction was requested")
-
-    def _grouped(self, group: CallbackGroup | None, callback: Callable[..., Any],
-                 entity: Callable[[], Any] = lambda: None) -> Callable[..., Any]:
-        """The callback as its group runs it: under the group's lock if mutually exclusive;
-        a group of the program's own (rclpy's CallbackGroup subclassed) is asked, as rclpy's
-        executor asks it, beginning_execution(entity) before (False: it does not run) and
-        told ending_execution(entity) after; its can_execute holds a timer back
-        (Executor._next_work)."""
-        group = group or self.default_callback_group
-        if group not in self._callback_groups:
-            self._callback_groups.append(group)
-        if isinstance(group, MutuallyExclusiveCallbackGroup):
-            return functools.partial(group.run, callback)
-        if is_custom(group):
-            def asked(*args: Any) -> Any:
-                who = entity()
-                if not group.beginning_execution(who):
-                    return None
-                try:
-                    return callback(*args)
-                finally:
-                    group.ending_execution(who)
-            return asked
-        return callback
 
     # --- endpoints --------------------------------------------------------------------------
     def create_publisher(self, msg_type: Any, topic: str, qos_profile: QoSProfile | int,
@@ -261,16 +209,15 @@ class Node:
             come and go).
         :return: the Publisher.
         """
-        self._check_alive()
+        self._custody.check_alive()
         if qos_overriding_options is not None:
             qos_profile = self._overridden(qos_profile, "publisher", topic,
                                            qos_overriding_options)
         qos = to_launcher(qos_profile)
         bus = self._bus.create_publisher(rosidl.type_name_of(msg_type), topic, qos)
         publisher = publisher_class(bus, msg_type, topic, qos_profile, event_callbacks)
-        self._entities.append(publisher)
-        self._watch_matches(event_callbacks, bus.topic, keys.SUBSCRIPTION, callback_group,
-                            publisher)
+        self._custody.entities.append(publisher)
+        self._watch_matches(event_callbacks, bus, QoSPublisherMatchedInfo, callback_group)
         return publisher
 
     def _overridden(self, qos_profile: QoSProfile | int, kind: str, topic: str,
@@ -283,27 +230,12 @@ class Node:
         return declare_qos_parameters(kind, self, self.resolve_topic_name(topic), qos_profile,
                                       options)
 
-    def _watch_matches(self, event_callbacks: Any, topic: str, kind: str, group: Any,
-                       entity: Any) -> None:
-        """A matched-event callback, if given: told as the other side comes and goes."""
+    def _watch_matches(self, event_callbacks: Any, bus: Any, info: type, group: Any) -> None:
+        """A matched-event callback, if given: told as the other side of the bus endpoint
+        comes and goes (until the endpoint is destroyed)."""
         matched = getattr(event_callbacks, "matched", None)
-        if matched is None:
-            return
-        from rclpy.matched import (
-            MatchWatcher,
-            QoSPublisherMatchedInfo,
-            QoSSubscriptionMatchedInfo,
-        )
-
-        info = QoSPublisherMatchedInfo if kind == keys.SUBSCRIPTION else \
-            QoSSubscriptionMatchedInfo
-        watcher = MatchWatcher(self, topic, kind, self._grouped(group, matched), info)
-        destroy = entity.destroy
-
-        def destroy_both() -> None:
-            watcher.destroy()
-            destroy()
-        entity.destroy = destroy_both
+        if matched is not None:
+            watch_matched(bus, info, grouped(self, group, matched))
 
     def create_subscription(self, msg_type: Any, topic: str, callback: Callable[[Any], Any],
                             qos_profile: QoSProfile | int, *, callback_group: Any = None,
@@ -321,13 +253,13 @@ class Node:
         :param raw: hand the callback the serialized message.
         :return: the Subscription.
         """
-        self._check_alive()
+        self._custody.check_alive()
         if qos_overriding_options is not None:
             qos_profile = self._overridden(qos_profile, "subscription", topic,
                                            qos_overriding_options)
         type_name = rosidl.type_name_of(msg_type)
         made: list[Any] = []
-        run = self._grouped(callback_group, callback, lambda: made[0] if made else None)
+        run = grouped(self, callback_group, callback, lambda: made[0] if made else None)
         if not raw:
             rosidl.message_class(type_name)  # made now, not on the first message
         bus = self._bus.create_subscription(type_name, topic, run, to_launcher(qos_profile),
@@ -335,9 +267,8 @@ class Node:
         subscription = Subscription(bus, msg_type, topic, callback, callback_group,
                                     qos_profile, raw, event_callbacks)
         made.append(subscription)
-        self._entities.append(subscription)
-        self._watch_matches(event_callbacks, bus.topic, keys.PUBLISHER, callback_group,
-                            subscription)
+        self._custody.entities.append(subscription)
+        self._watch_matches(event_callbacks, bus, QoSSubscriptionMatchedInfo, callback_group)
         return subscription
 
     def create_service(self, srv_type: Any, srv_name: str,
@@ -353,7 +284,7 @@ class Node:
         :param callback_group: the group the callback runs in.
         :return: the Service.
         """
-        self._check_alive()
+        self._custody.check_alive()
         type_name = rosidl.type_name_of(srv_type)
 
         introspection = Introspection(self, self._bus.resolve(srv_name, "service name"),
@@ -368,11 +299,11 @@ class Node:
             introspection.say(RESPONSE_SENT, sequence, response=result)
             return result
         bus = self._bus.create_service(type_name, srv_name,
-                                       self._grouped(callback_group, answer),
+                                       grouped(self, callback_group, answer),
                                        make=rosidl.make, new_response=srv_type.Response)
         service = Service(bus, srv_type, srv_name, callback, callback_group, qos_profile)
         service._introspection = introspection
-        self._entities.append(service)
+        self._custody.entities.append(service)
         return service
 
     def create_client(self, srv_type: Any, srv_name: str, *,
@@ -386,13 +317,13 @@ class Node:
         :param callback_group: the group its done callbacks run in.
         :return: the Client.
         """
-        self._check_alive()
+        self._custody.check_alive()
         bus = self._bus.create_client(rosidl.type_name_of(srv_type), srv_name,
                                       make=rosidl.make)
         rosidl.service_class(rosidl.type_name_of(srv_type))
         client = Client(self._context, bus, srv_type, srv_name, qos_profile, callback_group,
                         node=self)
-        self._entities.append(client)
+        self._custody.entities.append(client)
         return client
 
     def create_timer(self, timer_period_sec: float, callback: Callable[[], Any],
@@ -408,12 +339,12 @@ class Node:
         :param autostart: start it now (false: it waits for reset()).
         :return: the Timer.
         """
-        self._check_alive()
+        self._custody.check_alive()
         if timer_period_sec <= 0:
             raise ValueError(f"timer period must be > 0, got {timer_period_sec}")
         timer = Timer(callback, callback_group, int(timer_period_sec * 1e9), clock or
                       self._clock, context=self._context, autostart=autostart)
-        bind_timer(timer, self._grouped(callback_group, callback, lambda: timer))
+        bind_timer(timer, grouped(self, callback_group, callback, lambda: timer))
         self._timers.append(timer)
         if self.executor is not None:
             self.executor.wake()
@@ -441,15 +372,15 @@ class Node:
         :param callback_group: the group it runs in.
         :return: the GuardCondition.
         """
-        guard = GuardCondition(callback, callback_group, self._context, host=self._host,
-                               run=self._grouped(callback_group, callback))
-        self._entities.append(guard)
+        guard = GuardCondition(callback, callback_group, self._context, host=self._bus.host,
+                               run=grouped(self, callback_group, callback))
+        self._custody.entities.append(guard)
         return guard
 
     # --- destroying -------------------------------------------------------------------------
     def _destroy_entity(self, entity: Any) -> bool:
-        if entity in self._entities:
-            self._entities.remove(entity)
+        if entity in self._custody.entities:
+            self._custody.entities.remove(entity)
             entity.destroy()
             return True
         return False
@@ -490,26 +421,26 @@ class Node:
         """Destroy the node and all its entities; it leaves the graph. A second call does
         nothing.
         """
-        if self._destroyed:
+        if not self._custody.alive:
             return
-        self._destroyed = True
+        self._custody.alive = False
         if self.executor is not None:
             self.executor.remove_node(self)
         for timer in self._timers:
             timer.destroy()
         self._timers.clear()
-        self._entities.clear()
+        self._custody.entities.clear()
         self._bus.destroy_node()
 
     @property
     def publishers(self) -> list[Publisher]:
         """The node's publishers."""
-        return [e for e in self._entities if isinstance(e, Publisher)]
+        return [e for e in self._custody.entities if isinstance(e, Publisher)]
 
     @property
     def subscriptions(self) -> list[Subscription]:
         """The node's subscriptions."""
-        return [e for e in self._entities if isinstance(e, Subscription)]
+        return [e for e in self._custody.entities if isinstance(e, Subscription)]
 
     @property
     def timers(self) -> list[Timer]:
@@ -519,16 +450,16 @@ class Node:
     @property
     def clients(self) -> list[Client]:
         """The node's service clients."""
-        return [e for e in self._entities if isinstance(e, Client)]
+        return [e for e in self._custody.entities if isinstance(e, Client)]
 
     @property
     def services(self) -> list[Service]:
         """The node's services."""
-        return [e for e in self._entities if isinstance(e, Service)]
+        return [e for e in self._custody.entities if isinstance(e, Service)]
 
     # --- the graph --------------------------------------------------------------------------
     def _entities_on_graph(self) -> list[keys.Entity]:
-        self._check_alive()
+        self._custody.check_alive()
         return graph.entities(self._bus.graph_session(), 0.5)
 
     def count_publishers(self, topic_name: str) -> int:
@@ -630,292 +561,14 @@ class Node:
             time.sleep(0.1)
         return False
 
-    # --- parameters -------------------------------------------------------------------------
-    def _declare_now(self, name: str, value: Any) -> Parameter:
-        parameter = Parameter(name, value=_plain(value))
-        self._declared[name] = parameter
-        self._bus.params.keep(name, parameter.value)
-        return parameter
 
-    def declare_parameter(self, name: str, value: Any = None, descriptor: Any = None,
-                          ignore_override: bool = False) -> Parameter:
-        """Declare a parameter: an override from the command line or a params file wins
-        over `value`.
-
-        :param name: the parameter's name.
-        :param value: its default (or a Parameter.Type, for a parameter with no default).
-        :param descriptor: a ParameterDescriptor (its type, read_only, ranges, description).
-        :param ignore_override: take `value` even when an override was given.
-        :return: the declared Parameter.
-        """
-        if isinstance(value, Parameter.Type):  # declare_parameter(name, Parameter.Type.X)
-            value = None
-        if name in self._declared:
-            raise ParameterAlreadyDeclaredException([name])
-        if not name:
-            from rclpy.exceptions import InvalidParameterException
-
-            raise InvalidParameterException(name)
-        chosen = value if ignore_override or name not in self._overrides else \
-            self._overrides[name]
-        if value is not None and chosen is not None and not ignore_override and \
-                name in self._overrides and _kind(value) != _kind(chosen) and \
-                not (descriptor is not None and getattr(descriptor, "dynamic_typing", False)):
-            raise InvalidParameterTypeException(Parameter(name, value=_plain(chosen)),
-                                                Parameter(name, value=_plain(value)).type_.name)
-        if descriptor is not None:
-            self._descriptors[name] = descriptor
-        declared = self._declare_now(name, chosen)
-        self._announce(new=[declared])
-        return declared
-
-    def declare_parameters(self, namespace: str, parameters: Sequence[Any],
-                           ignore_override: bool = False) -> list[Parameter]:
-        """Declare several parameters under `namespace` (each (name, value[, descriptor])).
-
-        :return: the declared Parameters, in order.
-        """
-        declared = []
-        for entry in parameters:
-            name, *rest = entry if isinstance(entry, tuple) else (entry,)
-            full = f"{namespace}.{name}" if namespace else name
-            declared.append(self.declare_parameter(full, *rest[:2],
-                                                   ignore_override=ignore_override))
-        return declared
-
-    def undeclare_parameter(self, name: str) -> None:
-        """Undeclare a parameter (ParameterNotDeclaredException if it was not declared)."""
-        if name not in self._declared:
-            raise ParameterNotDeclaredException(name)
-        self._announce(deleted=[self._declared.pop(name)])
-        self._bus.params.drop(name)
-
-    def has_parameter(self, name: str) -> bool:
-        """Whether the parameter is declared."""
-        return name in self._declared
-
-    def get_parameter(self, name: str) -> Parameter:
-        """The declared parameter (ParameterNotDeclaredException if it is not, unless the
-        node allows undeclared parameters).
-        """
-        if name in self._declared:
-            return self._declared[name]
-        if self._allow_undeclared:
-            return Parameter(name, Parameter.Type.NOT_SET, None)
-        raise ParameterNotDeclaredException(name)
-
-    def get_parameter_or(self, name: str, alternative_value: Parameter | None = None
-                         ) -> Parameter:
-        """The parameter, or `alternative_value` when it is not declared."""
-        if alternative_value is None:
-            alternative_value = Parameter(name, Parameter.Type.NOT_SET)
-        return self._declared.get(name, alternative_value)
-
-    def get_parameters(self, names: list[str]) -> list[Parameter]:
-        """The parameters of `names`, in order (see get_parameter)."""
-        return [self.get_parameter(name) for name in names]
-
-    def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
-        """The parameters under `prefix.`, by their names after it."""
-        start = f"{prefix}." if prefix else ""
-        return {name[len(start):]: p for name, p in self._declared.items()
-                if name.startswith(start)}
-
-    @property
-    def parameters(self) -> dict[str, Parameter]:
-        """The declared parameters by name."""
-        return dict(self._declared)
-
-    def describe_parameter(self, name: str) -> Any:
-        """The parameter's ParameterDescriptor (its declared one, else its name and type)."""
-        from rcl_interfaces.msg import ParameterDescriptor
-
-        if name not in self._declared:
-            raise ParameterNotDeclaredException(name)
-        return self._descriptors.get(name) or ParameterDescriptor(
-            name=name, type=self._declared[name].type_.value)
-
-    def add_on_set_parameters_callback(self, callback: Callable[[list[Parameter]], Any]
-                                       ) -> Callable[[list[Parameter]], Any]:
-        """Add a callback asked before parameters are set: it returns a
-        SetParametersResult, and `successful=False` refuses the change.
-
-        :return: the callback (to remove it later).
-        """
-        self._set_callbacks.insert(0, callback)
-        return callback
-
-    def remove_on_set_parameters_callback(self, callback: Any) -> None:
-        """Remove a callback added by add_on_set_parameters_callback."""
-        self._set_callbacks.remove(callback)
-
-    def set_parameters(self, parameter_list: list[Parameter]) -> list[Any]:
-        """Set parameters one at a time: a SetParametersResult for each."""
-        return [self.set_parameters_atomically([p]) for p in parameter_list]
-
-    def set_parameters_atomically(self, parameter_list: list[Parameter]) -> Any:
-        """Set parameters all together or none: one SetParametersResult."""
-        from rcl_interfaces.msg import SetParametersResult
-
-        parameter_list = self._pre_set(list(parameter_list))
-        if not parameter_list:
-            return SetParametersResult(successful=False, reason=EMPTY_AFTER_PRE_SET)
-        for parameter in parameter_list:
-            if parameter.name not in self._declared and not self._allow_undeclared:
-                raise ParameterNotDeclaredException(parameter.name)
-        for callback in self._set_callbacks:
-            result = callback(list(parameter_list))
-            if result is not None and not result.successful:
-                return result
-        known = set(self._declared)
-        for parameter in parameter_list:
-            self._declared[parameter.name] = parameter
-            self._bus.params.keep(parameter.name, parameter.value)
-        self._announce(new=[p for p in parameter_list if p.name not in known],
-                       changed=[p for p in parameter_list if p.name in known])
-        self._post_set(parameter_list)
-        return SetParametersResult(successful=True)
-
-    # --- rclpy's pre-set (may change the list) and post-set (told what was set) callbacks ---
-    def add_pre_set_parameters_callback(self, callback: Callable[[list[Parameter]], Any]
-                                        ) -> Callable[[list[Parameter]], Any]:
-        """Add a callback that may change the list of parameters about to
-        be set (it returns the list to set).
-
-        :return: the callback.
-        """
-        self._pre_set_callbacks.insert(0, callback)
-        return callback
-
-    def remove_pre_set_parameters_callback(self, callback: Any) -> None:
-        """Remove a callback added by add_pre_set_parameters_callback."""
-        self._pre_set_callbacks.remove(callback)
-
-    def add_post_set_parameters_callback(self, callback: Callable[[list[Parameter]], None]
-                                         ) -> Callable[[list[Parameter]], None]:
-        """Add a callback told of the parameters once they are set.
-
-        :return: the callback.
-        """
-        self._post_set_callbacks.insert(0, callback)
-        return callback
-
-    def remove_post_set_parameters_callback(self, callback: Any) -> None:
-        """Remove a callback added by add_post_set_parameters_callback."""
-        self._post_set_callbacks.remove(callback)
-
-    def _pre_set(self, parameters: list[Parameter]) -> list[Parameter]:
-        for callback in self._pre_set_callbacks:
-            parameters = list(callback(list(parameters)) or [])
-        return parameters
-
-    def _post_set(self, parameters: list[Parameter]) -> None:
-        for callback in self._post_set_callbacks:
-            callback(list(parameters))
-
-    def _gate(self, name: str, value: Any) -> str | None:
-        """A set or delete asked from outside, checked as rclcpp/rclpy check it (the declared
-        type, read_only, the set callbacks); the reason it is refused, or None."""
-        descriptor = self._descriptors.get(name)
-        if name not in self._declared and not self._allow_undeclared:
-            return f"parameter '{name}' cannot be set because it was not declared"
-        if descriptor is not None and descriptor.read_only:
-            return f"parameter '{name}' cannot be set because it is read-only"
-        dynamic = descriptor is not None and descriptor.dynamic_typing
-        if value is None:
-            if name in self._declared and not dynamic and not self._allow_undeclared:
-                return "cannot undeclare a statically typed parameter"
-            gone = self._declared.pop(name, None)
-            self._announce(deleted=[gone] if gone is not None else [])
-            return None
-        parameters = self._pre_set([Parameter(name, value=_plain(value))])
-        if not parameters:
-            return EMPTY_AFTER_PRE_SET
-        for parameter in parameters:
-            old = self._declared.get(parameter.name)
-            described = self._descriptors.get(parameter.name)
-            loose = described is not None and described.dynamic_typing
-            if parameter.name not in self._declared and not self._allow_undeclared:
-                return (f"parameter '{parameter.name}' cannot be set because it was not "
-                        "declared")
-            if old is not None and old.type_ != Parameter.Type.NOT_SET and not loose and \
-                    old.type_ != parameter.type_:
-                return (f"Wrong parameter type, parameter {{{parameter.name}}} is of type "
-                        f"{{{old.type_.name.lower()}}}, setting it to "
-                        f"{{{parameter.type_.name.lower()}}} is not allowed.")
-        for callback in self._set_callbacks:
-            result = callback(list(parameters))
-            if result is not None and not result.successful:
-                return result.reason or "refused by the node's parameter callback"
-        self._announce(new=[p for p in parameters if p.name not in self._declared],
-                       changed=[p for p in parameters if p.name in self._declared])
-        for parameter in parameters:
-            self._declared[parameter.name] = parameter
-            if parameter.name != name:  # one a pre-set callback added: set here
-                self._bus.params.keep(parameter.name, parameter.value)
-        self._pending_post = parameters
-        return None
-
-    def _announce(self, **parameters: list[Parameter]) -> None:
-        """A change after start, on /parameter_events (parameter_events.py)."""
-        if not getattr(self, "_started", False) or not any(parameters.values()):
-            return
-        if self._events is None:
-            from rclpy.parameter_events import ParameterEvents  # at the first change
-
-            self._events = ParameterEvents(self)
-        self._events.announce(**parameters)
-
-    def _describe_for_bus(self, name: str) -> dict[str, Any]:
-        """The descriptor as plain fields, with its name and the declared type filled in
-        (a ParameterDescriptor made in the node often has neither)."""
-        if name not in self._declared:
-            return {"name": name, "type": 0}
-        fields = _fields(self.describe_parameter(name))
-        fields["name"] = fields.get("name") or name
-        fields["type"] = fields.get("type") or self._declared[name].type_.value
-        return fields
-
-    def _on_bus_set(self, name: str, value: Any) -> None:
-        """`launcher param set` (or ros2 param) changed one: the callbacks hear of it."""
-        parameter = Parameter(name, value=_plain(value))
-        pending, self._pending_post = self._pending_post, None
-        if pending is not None and any(p.name == name for p in pending):
-            self._post_set(pending)  # (gated: validated and stored already)
-            return
-        if self._declared.get(name) == parameter:
-            return
-        self._announce(new=[] if name in self._declared else [parameter],
-                       changed=[parameter] if name in self._declared else [])
-        self._declared[name] = parameter
-        for callback in self._set_callbacks:
-            callback([parameter])
+def _time_source(node: Node, clock: ROSClock) -> TimeSource:
+    """What makes the node's clock follow its /clock once jump callbacks are asked of it."""
+    source = TimeSource(node=node)
+    source.attach_clock(clock)
+    return source
 
 
-def _fields(message: Any) -> Any:
-    """A message of rclpy's classes as plain data (dicts and lists)."""
-    if hasattr(message, "get_fields_and_field_types"):
-        return {f: _fields(getattr(message, f)) for f in message.get_fields_and_field_types()}
-    if hasattr(message, "tolist"):
-        return message.tolist()
-    if isinstance(message, list | tuple):
-        return [_fields(m) for m in message]
-    return message
-
-
-def _plain(value: Any) -> Any:
-    return list(value) if isinstance(value, tuple) else value
-
-
-def _kind(value: Any) -> Any:
-    try:
-        return Parameter.Type.from_parameter_value(_plain(value))
-    except TypeError:
-        return None
-
-
-# --- what the rest of this rclpy (its executors, clients, action servers and clients) asks
-# of a node, in one place: the Node class keeps rclpy's own surface ------------------------
 def _invalid_name(node_name: str, namespace: str, text: str) -> Exception:
     """rclpy's exception for a node name or namespace the bus refused (`text` says why)."""
     if "namespace" in text:
@@ -923,40 +576,6 @@ def _invalid_name(node_name: str, namespace: str, text: str) -> Exception:
         fault = name_rules.full_topic_name(full, "namespace") or (text, 0)
         return InvalidNamespaceException(namespace, *fault)
     return InvalidNodeNameException(node_name, *(name_rules.node_name(node_name) or (text, 0)))
-
-
-def check_alive(node: Node) -> None:
-    """rclpy's InvalidHandle once the node is destroyed."""
-    node._check_alive()
-
-
-def live_host(node: Node) -> Any:
-    """The bus host that queues the node's work; None once the node is destroyed."""
-    return node._host_or_none()
-
-
-def caught_up(node: Node) -> None:
-    """The executor has nothing left to do for the node (a sim in lockstep is told so)."""
-    if node._host_or_none() is not None:
-        node._bus.get_clock().caught_up()
-
-
-def grouped(node: Node, group: CallbackGroup | None, callback: Callable[..., Any],
-            entity: Callable[[], Any] = lambda: None) -> Callable[..., Any]:
-    """`callback` as `group` (None: the node's default) runs it; see Node._grouped."""
-    return node._grouped(group, callback, entity)
-
-
-def adopt(node: Node, entity: Any) -> None:
-    """An entity made outside the node (an action server or client) that it destroys with
-    itself."""
-    node._entities.append(entity)
-
-
-def forget(node: Node, entity: Any) -> None:
-    """The entity, destroyed by itself, is no longer the node's."""
-    if entity in node._entities:
-        node._entities.remove(entity)
 
 
 def __getattr__(name: str) -> Any:

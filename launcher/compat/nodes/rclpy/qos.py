@@ -8,6 +8,7 @@ from enum import Enum, IntEnum
 from typing import Any
 
 from launcher.bus.qos import KEEP_ALL_DEPTH, PROFILES, QoS
+from rclpy import qos_compatibility
 from rclpy.duration import Duration
 
 
@@ -236,6 +237,5 @@ def qos_check_compatible(publisher_qos: QoSProfile,
                          subscription_qos: QoSProfile) -> tuple[QoSCompatibility, str]:
     """Whether a publisher and a subscription with these profiles can communicate, and why
     not, by rmw's rules (WARNING where a system default or unknown policy leaves it open)."""
-    from rclpy.qos_compatibility import check
-
-    return check(publisher_qos, subscription_qos)
+    level, reason = qos_compatibility.check(publisher_qos, subscription_qos)
+    return QoSCompatibility(level), reason

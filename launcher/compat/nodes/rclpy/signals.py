@@ -11,7 +11,10 @@ import weakref
 from enum import IntEnum
 from typing import Any
 
-from rclpy.exceptions import InvalidHandle  # noqa: F401 - rclpy.signals offers it
+from rclpy.exceptions import (
+    ExternalShutdownException,
+    InvalidHandle,  # noqa: F401 - rclpy.signals offers it
+)
 from rclpy.guard_condition import GuardCondition
 
 
@@ -74,8 +77,6 @@ def _handle(number: int, frame: Any) -> None:
     if callable(before):
         before(number, frame)
     elif number == signal.SIGTERM and before in (signal.SIG_DFL, None):
-        from rclpy.executors import ExternalShutdownException
-
         raise ExternalShutdownException()
 
 

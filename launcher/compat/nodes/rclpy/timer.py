@@ -14,7 +14,11 @@ from launcher.bus.timer import Grid
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
 from rclpy.clock import Clock, ClockType  # noqa: F401
 from rclpy.context import Context  # noqa: F401
-from rclpy.exceptions import InvalidHandle, ROSInterruptException  # noqa: F401
+from rclpy.exceptions import (  # noqa: F401
+    ExternalShutdownException,
+    InvalidHandle,
+    ROSInterruptException,
+)
 from rclpy.time import Time
 from rclpy.utilities import get_default_context  # noqa: F401
 
@@ -156,8 +160,6 @@ class Rate:
 
     def sleep(self) -> None:
         """Sleep out the rest of the period (ExternalShutdownException at shutdown)."""
-        from rclpy.executors import ExternalShutdownException
-
         sim = _on_sim_time(self._clock)
         while True:
             left = self._grid.until(_seconds(self._clock), True)

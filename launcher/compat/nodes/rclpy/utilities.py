@@ -6,14 +6,12 @@ import sys
 from typing import Any
 
 from rclpy.constants import S_TO_NS  # noqa: F401 - as rclpy's module offers it
-from rclpy.context import Context
-
-g_default_context = Context()  # the process' context (rclpy's module global)
-
-
-def get_default_context(*, shutting_down: bool = False) -> Context:
-    """The process' context, made at first use."""
-    return g_default_context
+from rclpy.context import (  # noqa: F401 - rclpy's module offers them
+    Context,
+    g_default_context,
+    get_default_context,
+)
+from rclpy.signals import uninstall_signal_handlers
 
 
 def ok(*, context: Context | None = None) -> bool:
@@ -39,8 +37,6 @@ def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | N
 def _uninstall(context: Context | None, uninstall_handlers: bool | None) -> None:
     if uninstall_handlers or uninstall_handlers is None and \
             context in (None, g_default_context):
-        from rclpy.signals import uninstall_signal_handlers
-
         uninstall_signal_handlers()
 
 

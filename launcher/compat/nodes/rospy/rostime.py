@@ -125,8 +125,6 @@ class Time(_Arithmetic, _TimeMessage):
     @classmethod
     def now(cls) -> Time:
         """The node's current time (sim time when use_sim_time is set)."""
-        from rospy import get_rostime
-
         return get_rostime()
 
     def __add__(self, other: Any) -> Any:

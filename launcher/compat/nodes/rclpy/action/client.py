@@ -21,8 +21,8 @@ from launcher.bus.qos import QoS
 from launcher.compat import rosidl
 from rclpy.action import names
 from rclpy.clock import Clock  # noqa: F401 - the names rclpy's module offers
+from rclpy.custody import adopt, check_alive, forget, grouped, live_host
 from rclpy.executors import await_or_execute  # noqa: F401
-from rclpy.node import adopt, check_alive, forget, grouped, live_host
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.task import Future, has_executor, wake_on_done

@@ -1,5 +1,5 @@
 """What rclpy's action modules add to the protocol (launcher/bus/actions.py): an action
-class's type name, and a goal id as rclpy prints it."""
+class's type name."""
 
 from __future__ import annotations
 
@@ -15,8 +15,3 @@ def action_type_name(action_type: Any) -> str:
         raise TypeError(f"expected an action type, got {name}")
     rosidl.action_class(name)
     return name
-
-
-def uuid_text(goal_id: Any) -> str:
-    """As rclpy prints a goal id in its logs."""
-    return str(list(bytes(goal_id.uuid)))

@@ -8,7 +8,9 @@ that returns with the goal still active aborts it, with rclpy's warning. A cance
 `cancel_callback` (reject by default) for each goal it names. A result request is answered
 when the goal ends (at once for an ended or unknown one); results are kept `result_timeout`
 seconds after their goal ends. The goals' states go out on the status topic at each change.
-The protocol itself (names, states, the goal table) is launcher's bus/actions.py.
+The protocol itself (names, states, the goal table) is launcher's bus/actions.py, and the
+server's services, topics and requests are bus/action_server.py's (the one action server, the
+controllers' too), here with rclpy's classes, callback group and callbacks (_Server).
 """
 
 from __future__ import annotations
@@ -17,14 +19,14 @@ import enum
 import inspect
 from typing import Any
 
-from launcher.bus import actions
+from launcher.bus import action_server, actions
 from launcher.bus.actions import GoalEvent
-from launcher.bus.qos import QoS
 from launcher.compat import rosidl
+from launcher.machines import InvalidTransition
 from rclpy.action import names
 from rclpy.clock import Clock  # noqa: F401 - the names rclpy's module offers
+from rclpy.custody import adopt, check_alive, forget, grouped
 from rclpy.executors import await_or_execute  # noqa: F401
-from rclpy.node import adopt, check_alive, forget, grouped
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.task import Future, Task  # noqa: F401
@@ -49,7 +51,7 @@ class CancelResponse(enum.Enum):
     ACCEPT = 2
 
 
-RCLError = actions.InvalidTransition  # rclpy's error for what rcl refuses (a goal's bad move)
+RCLError = InvalidTransition  # rclpy's error for what rcl refuses (a goal's bad move)
 
 
 def default_goal_callback(goal_request: Any) -> GoalResponse:
@@ -159,34 +161,8 @@ class ActionServer:
         self.register_cancel_callback(cancel_callback)
         self.register_execute_callback(execute_callback)
         self.callback_group = callback_group or node.default_callback_group
-        bus, impl, name = node.handle, self._action_type.Impl, action_name
-        self._send_goal = bus.create_service(
-            actions.send_goal_type(self._type_name), actions.endpoint(name, actions.SEND_GOAL),
-            grouped(node, self.callback_group, self._on_goal), make=rosidl.make,
-            new_response=impl.SendGoalService.Response)
-        self._send_goal.deferred = True
-        self._cancel = bus.create_service(
-            actions.CANCEL_TYPE, actions.endpoint(name, actions.CANCEL_GOAL),
-            grouped(node, self.callback_group, self._on_cancel), make=rosidl.make,
-            new_response=impl.CancelGoalService.Response)
-        self._get_result = bus.create_service(
-            actions.get_result_type(self._type_name), actions.endpoint(name, actions.GET_RESULT),
-            self._on_result_request, make=rosidl.make,
-            new_response=impl.GetResultService.Response)
-        # a result request runs none of the user's code: answered (or kept for the goal's
-        # end) on Zenoh's thread, a hand-over to the executor less on every goal's way
-        self._get_result.deferred = self._get_result.inline = True
-        self._feedback = bus.create_publisher(actions.feedback_type(self._type_name),
-                                              actions.endpoint(name, actions.FEEDBACK),
-                                              QoS(depth=10))
-        self._status = bus.create_publisher(actions.STATUS_TYPE,
-                                            actions.endpoint(name, actions.STATUS),
-                                            QoS(depth=1, transient_local=True))
-        self._goals = actions.GoalTable(self._status.publish_raw, result_timeout)
+        self._server = _Server(self, result_timeout)
         adopt(node, self)
-        from action_msgs.msg import GoalInfo
-
-        self._goal_info = GoalInfo
 
     # --- callbacks the user gives -------------------------------------------------------------
     def register_goal_callback(self, goal_callback: Any) -> None:
@@ -216,47 +192,33 @@ class ActionServer:
             raise TypeError("Failed to register execute callback: not callable")
         self._execute_callback = execute_callback
 
-    # --- goal requests ------------------------------------------------------------------------
-    def _on_goal(self, request: Any, reply: Any) -> None:
-        self._goals.expire()
-        response = reply.new_response()
-        if actions.uuid_key(request.goal_id) in self._goals:
-            self._node.get_logger().warning(f"Received goal request with duplicate ID: "
-                                            f"{names.uuid_text(request.goal_id)}")  # (rejected)
-            response.accepted = False
-            reply.send(response)
-            return
-        verdict = _resolve(self._goal_callback(request.goal))
-        if verdict != GoalResponse.ACCEPT:
-            response.accepted = False
-            reply.send(response)
-            return
-        stamp = self._node.get_clock().now().to_msg()
-        goal = actions.Goal(request.goal_id, stamp)
-        goal.handle = ServerGoalHandle(self, goal, request.goal)
-        response.accepted, response.stamp = True, stamp
-        self._goals.add(goal)
-        reply.send(response)  # answered first, then said and handed on (as rclpy does)
-        self._goals.announce()
-        self._handle_accepted_callback(goal.handle)
+    # --- what the server (_Server) asks of the user's callbacks ----------------------------------
+    def _accepts(self, goal_request: Any) -> bool:
+        return _resolve(self._goal_callback(goal_request)) == GoalResponse.ACCEPT
 
+    def _accepts_cancel(self, handle: ServerGoalHandle) -> bool:
+        return _resolve(self._cancel_callback(handle)) == CancelResponse.ACCEPT
+
+    def _accepted(self, handle: ServerGoalHandle) -> None:
+        self._handle_accepted_callback(handle)
+
+    # --- a goal's handle ------------------------------------------------------------------------
     def accept(self, goal: actions.Goal) -> None:
         """Keep a goal made outside the send_goal service (a ServerGoalHandle made by hand)
         and say so on the status topic."""
-        self._goals.add(goal)
-        self._goals.announce()
+        self._server.goals.add(goal)
+        self._server.goals.announce()
 
     def move(self, handle: ServerGoalHandle, event: GoalEvent) -> None:
         """A goal's move (its handle's execute, succeed, abort, canceled)."""
-        self._goals.move(handle._goal, event)
+        self._server.goals.move(handle._goal, event)
 
     def publish_feedback(self, handle: ServerGoalHandle, feedback: Any) -> None:
         """Send feedback for a goal (ServerGoalHandle.publish_feedback)."""
         if not isinstance(feedback, self._action_type.Feedback):
             raise TypeError(f"Expected type {self._action_type.Feedback}, got "
                             f"{type(feedback)}")
-        self._feedback.publish(self._action_type.Impl.FeedbackMessage(
-            goal_id=handle.goal_id, feedback=feedback))
+        self._server.publish_feedback(handle._goal, feedback)
 
     def run(self, handle: ServerGoalHandle, execute_callback: Any) -> None:
         """Run a goal's execute callback as a task of the node's executor."""
@@ -280,50 +242,45 @@ class ActionServer:
                 self.move(handle, GoalEvent.ABORT)
         if handle.is_active:
             logger.warning(f"Goal state not set, assuming aborted. Goal ID: "
-                           f"{names.uuid_text(handle.goal_id)}")
+                           f"{actions.uuid_text(handle.goal_id)}")
             self.move(handle, GoalEvent.ABORT)
         if result is None:
             result = self._action_type.Result()
-        response = self._action_type.Impl.GetResultService.Response(status=handle.status,
-                                                                     result=result)
-        handle._result_future.set_result(response)
-        self._goals.finish(handle._goal, response)
-
-    # --- result requests (answered when the goal ends) ------------------------------------
-    def _on_result_request(self, request: Any, reply: Any) -> None:
-        def unknown() -> Any:
-            self._node.get_logger().debug(f"Sending result response for unknown or expired "
-                                          f"goal ID: {names.uuid_text(request.goal_id)}")
-            return self._action_type.Impl.GetResultService.Response(status=actions.UNKNOWN)
-
-        self._goals.result_request(actions.uuid_key(request.goal_id), reply, unknown)
-
-    # --- cancel requests --------------------------------------------------------------------
-    def _on_cancel(self, request: Any, response: Any) -> Any:
-        info = request.goal_info
-        code, candidates = self._goals.cancel_candidates(
-            actions.uuid_key(info.goal_id), info.stamp.sec * 1_000_000_000 + info.stamp.nanosec)
-        canceling = []
-        for goal in candidates:
-            if goal.state not in (actions.ACCEPTED, actions.EXECUTING):
-                continue
-            if _resolve(self._cancel_callback(goal.handle)) == CancelResponse.ACCEPT:
-                try:
-                    self._goals.move(goal, GoalEvent.CANCEL_GOAL)
-                except actions.InvalidTransition:
-                    continue
-                canceling.append(self._goal_info(goal_id=goal.goal_id, stamp=goal.stamp))
-        response.goals_canceling = canceling
-        response.return_code = code if code != actions.ERROR_NONE else \
-            actions.ERROR_NONE if canceling else actions.ERROR_REJECTED
-        return response
+        handle._result_future.set_result(self._server.finish(handle._goal, result))
 
     def destroy(self) -> None:
         """Take the action's services and topics off the graph."""
-        for entity in (self._send_goal, self._cancel, self._get_result, self._feedback,
-                       self._status):
-            entity.destroy()
+        self._server.destroy()
         forget(self._node, self)
+
+
+class _Server(action_server.ActionServer):
+    """The bus's action server as rclpy's: rclpy's message classes, the goal and cancel
+    requests run in the server's callback group, the user's callbacks decide, and an accepted
+    goal waits for its handle's execute()."""
+
+    executes_at_once = False
+
+    def __init__(self, owner: ActionServer, result_timeout: float) -> None:
+        node = self._node = owner._node  # (what the hooks use, before the services are made)
+        self._owner, self._group, self.logger = owner, owner.callback_group, node.get_logger()
+        super().__init__(node.handle, owner._type_name, owner._action_name, owner._accepts,
+                         owner._accepted, lambda handle: None,
+                         lambda: node.get_clock().now().to_msg(), result_timeout)
+
+    def serve(self, type_name: str, name: str, callback: Any, owners_code: bool = True) -> Any:
+        run = grouped(self._node, self._group, callback) if owners_code else callback
+        return self.node.create_service(type_name, name, run, make=rosidl.make,
+                                        new_response=rosidl.service_class(type_name).Response)
+
+    def message(self, type_name: str, **fields: Any) -> Any:
+        return rosidl.message_class(type_name)(**fields)
+
+    def handle(self, record: actions.Goal, request: Any) -> ServerGoalHandle:
+        return ServerGoalHandle(self._owner, record, request)
+
+    def accept_cancel(self, handle: Any) -> bool:
+        return self._owner._accepts_cancel(handle)
 
 
 def _resolve(value: Any) -> Any:
