@@ -1,5 +1,6 @@
-"""The parameters reference: each controller type launcher provides and each built-in node that
-declares its parameters as data (bus/declarations.py), as `ros2 param describe` tells them."""
+"""The parameters reference: each controller type launcher provides, each built-in node and each
+mujoco_ros2_control plugin that declares its parameters as data (bus/declarations.py), as
+`ros2 param describe` tells them."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ import math
 
 from md_tables import code, table
 
-from launcher.bus.declarations import REQUIRED
+from launcher.bus.declarations import REQUIRED, Param
 from launcher.control.controllers import TYPES, controller_class
 from launcher.control.manager import PARAMETERS as manager_parameters
 from launcher.nodes.foxglove.settings import parameters as foxglove_parameters
@@ -15,6 +16,7 @@ from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
 from launcher.nodes.parameter_bridge import PARAMETERS as bridge_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
 from launcher.nodes.teleop_twist_keyboard import PARAMETERS as teleop_parameters
+from launcher.sim.mujoco_control.ros_plugins import TYPES as PLUGIN_TYPES
 
 TITLE = """# Parameters of controllers and nodes
 
@@ -26,6 +28,16 @@ at the controller's block. Every parameter is listed by `ros2 param list` with i
 controller takes effect when it is configured again, as with ros2_controllers. A built-in node
 reads its parameters when it starts. `{joints}` in a
 name stands for each name of the `joints` parameter (`{joint}`: the one joint).
+"""
+
+PLUGINS = """## mujoco_ros2_control plugins
+
+The plugins of `mujoco_ros2_control_node`, each made from its `mujoco_plugins.<name>.type`
+parameter and reading its own under `mujoco_plugins.{name}.` (the camera and 3D lidar plugins
+under a prefix of their own, whatever their name), when the node starts: a wrong value is
+refused at its line in the parameter file. `{camera}` stands for each camera of the MJCF,
+`{lidar}` for each lidar of its rangefinders (named `<lidar>-NN`), `{sensor}` for each of its
+lidar sensors.
 """
 
 
@@ -45,12 +57,15 @@ def page() -> str:
     parts.append("## Nodes\n")
     for name, declared in NODES.items():
         parts += [f"### {code(name)}\n", _table(declared)]
+    parts.append(PLUGINS)
+    for type_name, plugin in PLUGIN_TYPES.items():
+        parts += [f"### {code(type_name)}\n", _table(plugin.PARAMETERS, plugin.scope("{name}"))]
     return "\n".join(parts)
 
 
-def _table(declared: tuple) -> str:
-    rows = [(code(p.name), p.type, _default(p.default), _bounds(p.minimum, p.maximum),
-             p.description) for p in declared]
+def _table(declared: tuple, prefix: str = "") -> str:
+    rows = [(code(prefix + p.name), p.type, _default(p.default), _bounds(p), p.description)
+            for p in declared]
     return table(("parameter", "type", "default", "bounds", "what it is"), rows)
 
 
@@ -73,7 +88,9 @@ def _yaml(value: object) -> str:
     return repr(value)
 
 
-def _bounds(low: float | None, high: float | None) -> str:
-    if low is None and high is None:
-        return ""
-    return f"{'' if low is None else f'{low:g} ≤ '}value{'' if high is None else f' ≤ {high:g}'}"
+def _bounds(param: Param) -> str:
+    low = "" if param.minimum is None else f"{param.minimum:g} ≤ "
+    low = low if param.above is None else f"{param.above:g} < "
+    high = "" if param.maximum is None else f" ≤ {param.maximum:g}"
+    high = high if param.below is None else f" < {param.below:g}"
+    return f"{low}value{high}" if low or high else ""

@@ -106,9 +106,9 @@ def run(argv: list[str]) -> int:
         started = _start_state(world, block)
         speed = float(block.params.get("sim_speed_factor", "-1") or -1)
         server = SimServer(world, node, speed if speed > 0 else 1.0, True)
-        server.add_ros_clock()
-        install_signal_handlers(server)
-        plugin = MujocoRos2Control(world, server, blocks, ros, PluginConfig(
+        server.runner.clocks.add_ros_clock()
+        install_signal_handlers(server.runner)
+        plugin = MujocoRos2Control(world, server.runner, blocks, ros, PluginConfig(
             "mujoco_ros2_control", block.plugin, _element(), block.where, text), started)
         world.plugins.add(plugin, world.model, world.data)
         headless = block.params.get("headless", "false").strip().lower() in ("true", "1")
@@ -116,9 +116,9 @@ def run(argv: list[str]) -> int:
         if not headless:
             view = start_view(_view_args(), log, None, world)
             if view is not None:
-                server.show(view)
+                server.services.show(view)
         log.info(f"MuJoCo model {path}: world '{world.world_name}', timestep "
-                 f"{world.model.opt.timestep} s, real-time factor {server.pacer.rtf:g}")
+                 f"{world.model.opt.timestep} s, real-time factor {server.runner.pacer.rtf:g}")
         server.run()
     finally:
         node.destroy_node()

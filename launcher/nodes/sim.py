@@ -236,13 +236,14 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         if lockstep is not None:
             rtf = 0.0
         server = SimServer(world, node, rtf, args.run, args.state_rate, lockstep)
-        install_signal_handlers(server)  # (before the viewer's URL: a stop after it is clean)
+        # (before the viewer's URL: a stop after it is clean)
+        install_signal_handlers(server.runner)
         log = node.get_logger()
-        server.start_view = lambda port: start_view(args, log, port, world)
+        server.services.start_view = lambda port: start_view(args, log, port, world)
         if args.gui:
             view = start_view(args, log, args.gui_port, world)
             if view is not None:
-                server.show(view)
+                server.services.show(view)
         node.get_logger().info(
             f"world '{world.world_name}' from {path}: timestep {timestep} s, "
             f"{'running' if args.run else 'paused'}, "
@@ -250,7 +251,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         server.run(args.iterations)
     finally:
         node.destroy_node()
-    if server.view is not None:
+    if server.runner.view is not None:
         # Studio's native threads can outlive its close() by a moment and crash the
         # interpreter's teardown (SIGSEGV): with a viewer, the sim ends here, its output
         # flushed and its session closed already

@@ -11,6 +11,7 @@ from typing import Any
 import mujoco
 
 from launcher.sim.plugin_host import PluginHost
+from launcher.sim.schedule import SLACK
 
 UNSTABLE = (mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL,
             mujoco.mjtWarning.mjWARN_BADQACC)
@@ -39,7 +40,8 @@ class Physics:
         due = min(p.next_update for p in self.plugins.post) - self.data.time
         if due == math.inf:  # (a sensor whose system the world lacks: never)
             return max(1, limit)
-        return max(1, min(limit, math.ceil(due / self.model.opt.timestep - 1e-9)))
+        # the steps until a step's time is on the due time (within schedule.SLACK)
+        return max(1, min(limit, math.ceil((due - SLACK) / self.model.opt.timestep)))
 
     def step(self, count: int = 1) -> None:
         """Step `count` times; pre_step hooks run before, post_step hooks that are due after."""
@@ -55,7 +57,7 @@ class Physics:
         if warnings[_QPOS].number + warnings[_QVEL].number + warnings[_QACC].number != \
                 self._unstable_total:
             self._check_unstable()
-        now = data.time + 1e-9
+        now = data.time + SLACK  # (schedule.is_due, for each plugin, without a call)
         for plugin in self.plugins.post:
             if plugin.next_update <= now:
                 try:

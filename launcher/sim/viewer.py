@@ -11,12 +11,13 @@ control path (`on_action`); nothing else done in the page reaches the simulation
 has a copy of the world's data, and a state dragged, a model dropped onto the page or physics
 options changed there are dropped (viewer_page.py). When Studio cannot start (an older MuJoCo,
 the port taken), `start()` raises ViewerError with the reason and the sim runs on headless.
+Studio itself is reached through its adapter alone (studio.py: the one place that knows its
+internals).
 """
 
 from __future__ import annotations
 
 import contextlib
-import logging
 import time
 from collections.abc import Callable
 from typing import Any
@@ -40,8 +41,7 @@ class WebView:
         self.camera_name, self.track = camera, track  # the view asked for, if any
         self._period = 1.0 / min(max(rate, 1.0), MAX_RATE)
         self._next = 0.0
-        self._handle: Any = None  # Studio's ViewerHandle, the sim's side of the viewer
-        self._page: Any = None  # its PageViewer, the viewer thread's side
+        self._studio: Any = None  # Studio's viewer thread (studio.py), the sim's side of it
         self._camera: Any = None  # the viewer's camera, framed on a new model
         self._model: Any = None  # the world's model the viewer shows
         self._data: Any = None  # the viewer's copy of the world's data
@@ -66,10 +66,8 @@ class WebView:
         `token` (None: no check)."""
         try:
             import mujoco
-            from mujoco.studio import launch_thread, viewer_protocol
-            from mujoco.studio.web import web_server
 
-            from launcher.sim import viewer_gate, viewer_page
+            from launcher.sim import studio
         except ImportError as exc:
             version = _mujoco_version()
             raise ViewerError(f"the web viewer needs MuJoCo Studio (mujoco>=4); this is "
@@ -77,37 +75,13 @@ class WebView:
         listener, port = _listen(host, port)
         view = cls(port, host, rate, camera, track, token)
         view._camera = mujoco.MjvCamera()
-        config = viewer_protocol.ViewerConfig(gfx="web", http_port=port, open_browser=False,
-                                              title="launcher sim")
-
-        def serve(endpoint: Any) -> None:  # Studio's launch_web.launch, with our parts
-            view._page = viewer_page.PageViewer(config, endpoint, camera=view._camera,
-                                                plugins=[viewer_page.Panel()])
-            viewer_protocol.run_viewer_loop(view._page)
-
-        _route_studio_log(log)
-
-        bind, loopback, websockets_serve = (web_server.bind_public_socket,
-                                            web_server.bind_loopback_socket, web_server.serve)
-        # Studio binds "::" (every interface) with no way to say otherwise: it is handed the
-        # socket made here, on `host`, listening already (a port another sim has is found
-        # taken here, not in Studio's server thread); its requests pass the token check and
-        # its internal port takes this user's connections alone (viewer_gate.py)
-        web_server.bind_public_socket = lambda _host, _port: listener
-        web_server.bind_loopback_socket = viewer_gate.own_user_listener
-        if token is not None:
-            web_server.serve = viewer_gate.guarded_serve(websockets_serve, token, port)
         try:
-            with contextlib.redirect_stdout(None):  # its banner names the wrong address
-                view._handle = launch_thread.launch_thread(
-                    serve, sim_plugins=[viewer_page.Controls(view._actions.append)])
-                _wait_until_serving(view._handle, view.url)
+            with studio.Studio.starting(listener, port, token, view._camera,
+                                        view._actions.append, log) as view._studio:
+                _wait_until_serving(view._studio, view.url)
         except BaseException:
             listener.close()
             raise
-        finally:
-            web_server.bind_public_socket, web_server.bind_loopback_socket = bind, loopback
-            web_server.serve = websockets_serve
         return view
 
     def follow(self, world: Any, paused: bool, now: float | None = None) -> None:
@@ -124,19 +98,15 @@ class WebView:
             self._data = mujoco.MjData(world.model)
             mujoco.mj_copyData(self._data, world.model, world.data)
             self._frame(world)
-            self._handle.set_model(world.model, data=self._data)  # (the viewer copies it)
-        elif self._page is None or not self._page.watched():
+            self._studio.set_model(world.model, self._data)  # (the viewer copies it)
+        elif not self._studio.watched():
             return  # no browser: nothing to send (the next one gets the state at once)
         else:
             mujoco.mj_copyData(self._data, world.model, world.data)
         if paused != self._paused:
-            from mujoco.studio import messages, sim
-
             self._paused = paused
-            self._handle.send_to_viewer(messages.StepControlSnapshot(
-                pause_state=sim.PauseState.NORMAL_PAUSED if paused else
-                sim.PauseState.UNPAUSED))
-        self._handle.sync(world.model, self._data)  # (the page's events come in here)
+            self._studio.say_paused(paused)
+        self._studio.sync(world.model, self._data)  # (the page's events come in here)
         actions, self._actions[:] = list(self._actions), []
         for action in actions:  # after sync: an action may call follow() again
             self.on_action(action)
@@ -188,35 +158,7 @@ class WebView:
 
     def close(self) -> None:
         with contextlib.suppress(Exception):  # the viewer's own failure is no reason to
-            self._handle.close()  # fail the sim's ending
-
-
-class _StudioLog(logging.Handler):
-    """Studio's web server's log (browsers coming and going), said as the sim's info."""
-
-    def __init__(self, log: Any) -> None:
-        super().__init__()
-        self._log = log
-
-    def emit(self, record: logging.LogRecord) -> None:
-        text = record.getMessage()
-        if text.startswith("["):  # "[StateWS] Browser connected (1 total)"
-            text = text.partition("] ")[2]
-        if record.exc_info and record.exc_info[1] is not None:  # (its traceback: --debug)
-            text = f"{text} ({type(record.exc_info[1]).__name__}: {record.exc_info[1]})"
-        say = self._log.warning if record.levelno >= logging.WARNING else self._log.info
-        say(f"web viewer: {text[:1].lower()}{text[1:]}")
-
-
-def _route_studio_log(log: Any) -> None:
-    """Studio's server prints its log on stdout in its own format, its viewer thread's errors
-    go to Python's last resort with a traceback: both go to the sim's log."""
-    for name in ("WebServer", "mujoco.studio"):
-        studio = logging.getLogger(name)
-        for handler in list(studio.handlers):
-            studio.removeHandler(handler)
-        studio.addHandler(_StudioLog(log) if log is not None else logging.NullHandler())
-        studio.propagate = False
+            self._studio.close()  # fail the sim's ending
 
 
 def _listen(host: str, port: int | None) -> tuple[Any, int]:
@@ -243,7 +185,7 @@ def _listen(host: str, port: int | None) -> tuple[Any, int]:
                       f"{DEFAULT_PORT + 19}: {error} (choose one with --gui=PORT)")
 
 
-def _wait_until_serving(handle: Any, url: str, timeout: float = 10.0) -> None:
+def _wait_until_serving(studio: Any, url: str, timeout: float = 10.0) -> None:
     """Studio binds and serves from its own thread: wait until its page answers, or its
     error comes."""
     import urllib.request
@@ -251,7 +193,7 @@ def _wait_until_serving(handle: Any, url: str, timeout: float = 10.0) -> None:
     deadline = time.monotonic() + timeout
     while True:
         try:
-            running = handle.is_running()  # re-raises the viewer thread's error
+            running = studio.is_running()  # re-raises the viewer thread's error
         except Exception as exc:  # noqa: BLE001 - Studio's (a RuntimeError for a taken port)
             raise ViewerError(f"the web viewer did not start: {exc}") from None
         if not running:
@@ -260,7 +202,7 @@ def _wait_until_serving(handle: Any, url: str, timeout: float = 10.0) -> None:
             if page.status == 200:
                 return
         if time.monotonic() > deadline:
-            handle.close()
+            studio.close()
             raise ViewerError(f"the web viewer did not answer at {url} within {timeout:g} s")
         time.sleep(0.05)
 

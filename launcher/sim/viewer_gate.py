@@ -1,5 +1,6 @@
 """The web viewer's gate: the graph's token on its page, its files and its streams, and only
-this user's processes on Studio's internal port.
+this user's processes on Studio's internal port (studio.py puts both in Studio's server while
+it starts).
 
 MuJoCo Studio's server has no authentication, and two TCP listeners (REFERENCE §10):
 - the page's port (HTTP and the /state, /ui and /drop WebSockets): every request passes the

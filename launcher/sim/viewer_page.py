@@ -1,11 +1,8 @@
 """What the page can do: the sim's controls in MuJoCo Studio's page, and nothing else.
 
-Imported by viewer.py once Studio is known to be there. Three parts, on Studio's two sides:
+Imported by studio.py (whose PageViewer takes no model dropped onto the page and draws only
+for a browser). Two parts, on Studio's two sides, through its plugin API:
 
-- `PageViewer` (the viewer thread) is Studio's web viewer that takes no model dropped onto the
-  page (the files are not kept), prints nothing of its own, and draws nothing while no
-  browser is connected (Studio draws its page 60 times a second whether one is or not); it
-  says whether one is watching, so that the sim sends nothing when none is.
 - `Panel` (the viewer thread) draws the sim's controls in the page: Pause or Run, Step and
   Reset, and whether the sim runs; each button sends Studio's own event for it.
 - `Controls` (the sim's side, in `ViewerHandle.sync`) takes those events as actions for the
@@ -16,12 +13,9 @@ Imported by viewer.py once Studio is known to be there. Three parts, on Studio's
 
 from __future__ import annotations
 
-import logging
-import threading
-import time
 from collections.abc import Callable
 
-from mujoco.studio import messages, plugin, sim, web_viewer
+from mujoco.studio import messages, plugin, sim
 from mujoco.studio.dear_imgui import dear_imgui as imgui
 
 PAUSED = sim.PauseState.NORMAL_PAUSED
@@ -32,70 +26,12 @@ BUTTON = (64.0, 26.0)
 GAP = 6.0
 PAD = 8.0
 BUTTONS = ("pause", "step", "reset")  # the first reads "Run" while the sim is paused
-WATCHED_FOR = 0.5  # s after the last frame drawn for a browser
 
 
 def button_centre(index: int) -> tuple[float, float]:
     """Where a button of the panel is on the page (its centre)."""
     x = PANEL_AT[0] + PAD + index * (BUTTON[0] + GAP) + BUTTON[0] / 2
     return x, PANEL_AT[1] + PAD + BUTTON[1] / 2
-
-
-class Browsers(logging.Filter):
-    """How many browsers Studio's server has (its log says each coming and going, with the
-    count; the server keeps its list to itself)."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.count = 0
-        self.came = threading.Event()  # set while there are some
-
-    def filter(self, record: logging.LogRecord) -> bool:
-        if str(record.msg).startswith("[StateWS] Browser") and record.args:
-            count = record.args[0] if isinstance(record.args, tuple) else None
-            if isinstance(count, int):
-                self.count = count
-                (self.came.set if count else self.came.clear)()
-        return True
-
-
-class PageViewer(web_viewer.WebViewer):
-    """Studio's web viewer, without model drops or prints, that draws only for a browser."""
-
-    last_frame = 0.0  # (monotonic) when a frame was last drawn for a browser
-
-    def __init__(self, *args, **kwargs) -> None:  # noqa: ANN002, ANN003 - Studio's own
-        self.browsers = Browsers()
-        logging.getLogger("WebServer").addFilter(self.browsers)
-        super().__init__(*args, **kwargs)
-
-    def watched(self) -> bool:
-        return time.monotonic() - self.last_frame < WATCHED_FOR
-
-    def _start_server(self) -> None:
-        self._drop_queue = None  # its server then reads a drop and keeps nothing of it
-        super()._start_server()
-
-    def get_drop_file(self) -> str:
-        return ""
-
-    def prepare_next_frame(self) -> bool:
-        if not self.browsers.count:  # nobody to draw for: wait for one (the loop still
-            self.browsers.came.wait(0.1)  # takes the sim's new models, 10 times a second)
-            return False
-        frame = super().prepare_next_frame()
-        if frame:
-            self.last_frame = time.monotonic()
-        return frame
-
-    def close(self) -> None:
-        logging.getLogger("WebServer").removeFilter(self.browsers)
-        super().close()
-
-    @messages.handler(priority=messages.Priority.INTERNAL)
-    def _on_post_model(self, event: messages.PostModelEvent) -> None:
-        del event  # (Studio's own prints that the page reloads)
-        self._update_model()
 
 
 class Panel(plugin.ViewerPlugin):

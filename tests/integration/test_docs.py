@@ -25,10 +25,11 @@ from launcher.nodes.joint_state_publisher import PARAMETERS as jsp_parameters
 from launcher.nodes.parameter_bridge import PARAMETERS as bridge_parameters
 from launcher.nodes.robot_state_publisher import PARAMETERS as rsp_parameters
 from launcher.nodes.teleop_twist_keyboard import PARAMETERS as teleop_parameters
-from tests.conftest import REPO
+from launcher.sim.mujoco_control.ros_plugins import TYPES as PLUGIN_TYPES
 from tests.fidelity.choices import CHOICES
 from tests.fidelity.corpus import cases
 from tests.fidelity.known import KNOWN_DIFFERENCES
+from tests.support.environment import REPO
 
 
 @pytest.fixture(scope="module")
@@ -115,6 +116,10 @@ def test_the_parameters_page_gives_every_controller_and_node_that_declares_them(
         assert name in page, name
         for parameter in parameters:
             assert parameter.name in page and parameter.description in page, parameter
+    for name, plugin in PLUGIN_TYPES.items():  # mujoco_ros2_control's, under their prefix
+        assert name in page, name
+        for parameter in plugin.PARAMETERS:
+            assert plugin.scope("{name}") + parameter.name in page, parameter
 
 
 def test_the_python_api_page_shows_the_documented_node_libraries(site):

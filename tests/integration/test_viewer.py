@@ -17,7 +17,7 @@ import urllib.request
 import psutil
 import pytest
 
-from tests.conftest import REPO, shared
+from tests.support.environment import REPO, shared
 from tests.support.waiting import free_port, wait_for
 
 ARTEFACTS = REPO / "test-artefacts" / "viewer"  # a failing browser test's screenshots
@@ -217,8 +217,8 @@ def test_a_model_dropped_onto_the_page_is_not_kept(tmp_path):
 
     view = WebView.start(free_port())
     try:
-        assert view._page._web_server.drop_queue is None
-        assert view._page.get_drop_file() == ""
+        assert view._studio.page._web_server.drop_queue is None
+        assert view._studio.page.get_drop_file() == ""
     finally:
         view.close()
 

@@ -164,7 +164,8 @@ CAR = """<?xml version="1.0"?><sdf version="1.9"><model name="car">
 </model></sdf>"""
 
 
-def test_ackermann_steering_drives_and_turns_the_way_it_is_told():
+def car(world, settings: str = "") -> None:
+    """The four-wheeled car, steered by AckermannSteering (`settings`: more of its own)."""
     sphere = "<sphere><radius>0.2</radius></sphere>"
     parts = ""
     for side, y in (("l", 0.5), ("r", -0.5)):
@@ -175,9 +176,14 @@ def test_ackermann_steering_drives_and_turns_the_way_it_is_told():
         parts += _link(f"r{side}_wheel", f"-0.6 {y} 0.2 -1.5708 0 0", sphere)
         parts += _joint(f"r{side}", "revolute", "chassis", f"r{side}_wheel", "0 0 1")
     chassis = _link("chassis", "0 0 0.6 0 0 0", "<box><size>1.6 0.6 0.2</size></box>", 5.0)
+    text = CAR.format(chassis=chassis, parts=parts).replace("</steer_p_gain>",
+                                                            f"</steer_p_gain>{settings}")
+    world.spawn(world.templates.from_string(text), "car", [0, 0, 0.02], IDENTITY)
+
+
+def test_ackermann_steering_drives_and_turns_the_way_it_is_told():
     world = make_world()
-    world.spawn(world.templates.from_string(CAR.format(chassis=chassis, parts=parts)), "car",
-                [0, 0, 0.02], IDENTITY)
+    car(world)
     world.transport.callbacks["/model/car/cmd_vel"](twist(x=1.0, yaw=0.4))
     run(world, 3.0)
     body = world.model.body("car/chassis").id
@@ -187,6 +193,13 @@ def test_ackermann_steering_drives_and_turns_the_way_it_is_told():
     assert odometry.header.frame_id == "car/odom"
     assert odometry.pose.position.x > 1.5 and odometry.pose.position.y > 0.2
     assert odometry.twist.angular.z > 0.1
+
+
+def test_a_drives_odometry_keeps_its_rate_on_the_grid_when_no_multiple_of_the_step():
+    world = make_world()
+    car(world, "<odom_publish_frequency>30</odom_publish_frequency>")
+    run(world, 3.0)
+    assert len(world.transport.published["/model/car/odometry"]) in (90, 91)  # late + 1/30: 89
 
 
 BATTERY = """<plugin filename="gz-sim-apply-joint-force-system"

@@ -18,7 +18,7 @@ from launcher.sim.loading import load_world_file
 from launcher.sim.resources import model_file
 from launcher.sim.templates import Templates
 from launcher.sim.world import World
-from tests.conftest import REPO, shared
+from tests.support.environment import REPO, shared
 from tests.support.robots import CLASSIC_ROBOT, WHEEL
 from tests.support.sim import Recorder
 
@@ -597,7 +597,7 @@ def test_a_model_sdf_file_spawns_by_path_too():
 
 
 def test_a_create_without_a_pose_puts_an_sdf_model_at_its_own_pose():
-    from launcher.sim.server import spawn_pose
+    from launcher.sim.world_services import spawn_pose
 
     template = Templates(environ={"GZ_SIM_RESOURCE_PATH": str(
         REPO / "packages" / "robot_gazebo" / "models")}).from_file("model://box_model")
@@ -625,7 +625,7 @@ def test_a_systems_parameters_are_declared_a_typo_warns_and_a_bad_value_is_an_er
     world, recorder = make_world(tmp_path, world_text(model.format(
         extra="<wheel_radius>-1</wheel_radius>")))
     error = next(m for m in recorder.messages("error") if "wheel_radius" in m)
-    assert "plugin gz::sim::systems::DiffDrive: wheel_radius: expected a number ≥ 1e-06, got -1" \
+    assert "plugin gz::sim::systems::DiffDrive: wheel_radius: expected a number > 0, got -1" \
         in error and "world.sdf:" in error
     assert world.entities["bot"].plugins == []  # the entity runs without it
     world, recorder = make_world(tmp_path, world_text(model.replace(

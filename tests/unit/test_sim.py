@@ -496,6 +496,100 @@ def test_the_world_state_plugin_and_mjcf_robots(world):
     assert world.data.xpos[world.entities["ball"].body][2] < 1.0
 
 
+# --- the loop and the world's services (runner.py, world_services.py) -------------------------
+class LoopNode:
+    """Stands in for the sim's node: its endpoints record, and each request a test queues runs
+    at a `spin_once` of the loop, as the bus's callbacks do; `on_idle` is told when the loop
+    would wait for more."""
+
+    def __init__(self, world) -> None:
+        self.logger = world.transport.logger
+        self.queue: list = []
+        self.on_idle = lambda: None
+        self.services: dict[str, object] = {}
+        self.published: dict[str, list] = {}
+
+    def get_logger(self):
+        return self.logger
+
+    def create_publisher(self, type_name, topic, qos=10, **_):
+        box = self.published.setdefault(topic, [])
+        return SimpleNamespace(get_subscription_count=lambda: 1, publish_raw=box.append,
+                               destroy=lambda: self.published.pop(topic, None))
+
+    def create_service(self, type_name, name, callback):
+        self.services[name] = callback
+        return SimpleNamespace(deferred=False, destroy=lambda: self.services.pop(name, None))
+
+    def message(self, type_name, **fields):  # (a request's fields have their defaults)
+        return control(**fields) if type_name.endswith("Control_Request") else \
+            SimpleNamespace(**fields)
+
+    def spin_once(self, timeout=None) -> bool:
+        if not self.queue:
+            if timeout:
+                self.on_idle()
+            return False
+        self.queue.pop(0)()
+        return True
+
+
+def control(**asked):
+    fields = dict(pause=False, step=False, multi_step=0, reset_all=False,
+                  reset_time_only=False, reset_model_only=False)
+    return SimpleNamespace(**{**fields, **asked})
+
+
+def a_sim(world, running=False):
+    from launcher.sim.runner import SimulationRunner
+    from launcher.sim.world_services import WorldServices
+
+    node = LoopNode(world)
+    runner = SimulationRunner(world, node, 0.0, running)
+    return node, runner, WorldServices(runner)
+
+
+def test_a_multi_step_is_stepped_by_the_loop_in_batches_after_its_answer(world):
+    node, runner, _ = a_sim(world)
+    answers = []
+    on_control = node.services["/world/empty/control"]
+    node.queue.append(lambda: answers.append(on_control(control(pause=True, multi_step=250),
+                                                        SimpleNamespace())))
+    node.on_idle = runner.stop  # (once the 250 are done, nothing else comes)
+    runner.run()
+    assert answers[0].message == "paused; stepping 250"
+    assert world.physics.iterations == 250 and runner.steps_to_go == 0 and runner.paused
+    assert len(node.published["/world/empty/clock"]) >= 4  # a clock after every batch
+
+
+def test_a_later_request_replaces_the_steps_still_to_go_and_a_reset_keeps_a_pause(world):
+    node, runner, services = a_sim(world)
+    told = []
+    runner.step_then(1000, told.append)
+    services.on_page_action("step")  # the page's Step: one step, in place of the 1000
+    assert told == [False] and runner.steps_to_go == 1 and runner.paused
+    assert services.on_control(control(reset_all=True), SimpleNamespace()).message == "paused"
+    assert runner.paused and runner.steps_to_go == 0
+    refused = services.on_control(control(pause=True, multi_step=10**9), SimpleNamespace())
+    assert not refused.success and "past the limit of 100,000,000" in refused.message
+    assert services.on_control(control(), SimpleNamespace()).message == "running"
+    assert not runner.paused
+
+
+def test_a_loaded_world_moves_the_services_and_clock_and_fails_the_spawns_waiting(world):
+    node, runner, services = a_sim(world)
+    followed, told = [], []
+    runner.on_load = lambda loaded, renamed: (services.follow(loaded, renamed),
+                                              followed.append(renamed))
+    runner.spawn_soon(None, told.append)
+    runner.load(make_world("<mujoco model='arena'><worldbody/></mujoco>"))
+    assert followed == [True] and runner.paused and runner.world.world_name == "arena"
+    assert isinstance(told[0], SpawnError) and "replaced" in str(told[0])
+    assert "/world/arena/control" in node.services and "/world/empty/control" not in node.services
+    assert "/world/arena/clock" in node.published and "/world/empty/clock" not in node.published
+    services.close()
+
+
 # --- pacing ------------------------------------------------------------------------------------
 def test_the_pacer_never_drifts_and_reanchors_after_a_stall():
     now = [0.0]

@@ -1,5 +1,5 @@
-"""The web viewer's parts (launcher/sim/viewer.py, viewer_page.py) with real MuJoCo and Studio's
-own message classes; Studio's viewer thread is replaced by a recording handle."""
+"""The web viewer's parts (launcher/sim/viewer.py, viewer_page.py, studio.py) with real MuJoCo
+and Studio's own message classes; Studio's viewer thread is replaced by a recording handle."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import mujoco
 import pytest
 from mujoco.studio import messages, plugin_registry, sim
 
-from launcher.sim import viewer_page
+from launcher.sim import studio, viewer_page
 from launcher.sim.viewer import WebView
 
 BOX = "<mujoco><worldbody><body><freejoint/><geom size='.1 .1 .1' type='box'/></body>" \
@@ -47,7 +47,7 @@ def test_the_pages_controls_become_actions_and_all_else_it_sends_is_dropped():
 
 
 def test_browsers_are_counted_from_the_servers_log():
-    browsers = viewer_page.Browsers()
+    browsers = studio.Browsers()
     logger = logging.getLogger("test-web-server")
     logger.addFilter(browsers)
     logger.propagate = False
@@ -82,9 +82,9 @@ class Handle:
 
 def a_view(watched: bool) -> tuple[WebView, Handle]:
     view = WebView(8080, "127.0.0.1", 30)
-    view._handle = handle = Handle()
+    handle = Handle()
+    view._studio = studio.Studio(handle, SimpleNamespace(watched=lambda: watched))
     view._camera = mujoco.MjvCamera()
-    view._page = SimpleNamespace(watched=lambda: watched)
     return view, handle
 
 

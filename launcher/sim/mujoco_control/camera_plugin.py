@@ -18,67 +18,71 @@ its own, never the stepping thread, and only for cameras someone watches.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
-from launcher.control.yaml_places import key_place
-from launcher.errors import LaunchError, did_you_mean
-from launcher.sim.mujoco_control.ros_plugin import RosPlugin
+from launcher.bus.declarations import Param
+from launcher.errors import did_you_mean
+from launcher.sim import schedule
+from launcher.sim.mujoco_control.ros_plugin import Context, RosPlugin
 from launcher.sim.sensors.mjcf_camera import MjcfCamera
 from launcher.sim.sensors.rendering import rendering_of
 
-PARAMETERS = "mujoco_plugins.mujoco_camera_plugin."
 POLICIES = ("streaming", "polled", "disabled")
+SETTINGS = ("policy", "frame_name", "image_topic", "depth_topic", "info_topic",
+            "trigger_service_name")  # each camera's
 
 
 class CameraPlugin(RosPlugin):
-    def __init__(self, *args: Any, files: list[str] | None = None) -> None:
-        super().__init__(*args)
-        params = {k[len(PARAMETERS):]: v for k, v in self.node.parameters.items()
-                  if k.startswith(PARAMETERS)}
-        self.rate = float(params.get("camera_publish_rate", 5.0))
-        if not (math.isfinite(self.rate) and self.rate > 0):
-            raise LaunchError(f"{self.where}: {PARAMETERS}camera_publish_rate must be a rate "
-                              f"in Hz above 0, got {self.rate}")
-        model = self.world.model
+    PARAMETERS = (
+        Param("camera_publish_rate", "double", 5.0, "pictures a second of sim time, every "
+              "streaming camera's (Hz)", above=0.0),
+        Param("{camera}.policy", "string", "streaming", "streaming: at the rate; polled: once "
+              "per call of its trigger service; disabled",
+              choices=POLICIES),
+        Param("{camera}.frame_name", "string", "{camera}_frame", "the frame of its pictures"),
+        Param("{camera}.image_topic", "string", "{camera}/color", "its colour images"),
+        Param("{camera}.depth_topic", "string", "{camera}/depth", "its aligned depth images"),
+        Param("{camera}.info_topic", "string", "{camera}/camera_info", "its camera_info"),
+        Param("{camera}.trigger_service_name", "string", "{camera}/trigger",
+              "a polled camera's std_srvs/Trigger"),
+    )
+    SCOPE = "mujoco_plugins.mujoco_camera_plugin."  # (fixed in the plugin's code)
+    RATE = "camera_publish_rate"
+
+    def __init__(self, context: Context, name: str) -> None:
+        model = context.world.model
         names = [model.camera(i).name for i in range(model.ncam)]
-        self._unknown(params, names, files or [])
+        super().__init__(context, name, camera=names)
+        self._unknown(names)
         self.rendering = rendering_of(self.world)
         self.cameras: list[MjcfCamera] = []
-        for index, name in enumerate(names):
-            config = {k[len(name) + 1:]: v for k, v in params.items()
-                      if k.startswith(f"{name}.")}
-            policy = str(config.get("policy", "streaming"))
-            if policy not in POLICIES:
-                raise LaunchError(f"{self.where}: {PARAMETERS}{name}.policy: '{policy}' is not "
-                                  f"a policy{did_you_mean(policy, list(POLICIES))} (expected "
-                                  f"{', '.join(POLICIES)})")
-            if policy == "disabled":
-                continue
-            camera = MjcfCamera(self.world.model, index, config, self.rate, self.topic)
-            self.cameras.append(camera)
-            self.rendering.add(camera)
-            if policy == "polled":
-                service = self.topic(str(config.get("trigger_service_name",
-                                                    f"{name}/trigger")))
-                self.node.create_service("std_srvs/srv/Trigger", service,
-                                         self._trigger(camera))
-            self.log.info(f"camera '{name}' ({policy}, {camera.width}x{camera.height}): "
-                          f"{camera.topics['image']}, {camera.topics['depth_image']}, "
-                          f"{camera.topics['camera_info']} in frame '{camera.frame}'")
-        self.period = 1.0 / self.rate
-        self.last = -math.inf
+        for index, camera_name in enumerate(names):
+            config = {key: self.values[f"{camera_name}.{key}"] for key in SETTINGS}
+            if config["policy"] != "disabled":
+                self._add(MjcfCamera(model, index, config, self.rate, self.topic), config)
 
-    def _unknown(self, params: dict[str, Any], names: list[str], files: list[str]) -> None:
+    def _add(self, camera: MjcfCamera, config: dict[str, Any]) -> None:
+        self.cameras.append(camera)
+        self.rendering.add(camera)
+        if camera.policy == "polled":
+            self.node.create_service("std_srvs/srv/Trigger",
+                                     self.topic(config["trigger_service_name"]),
+                                     self._trigger(camera))
+        self.log.info(f"camera '{camera.camera_name}' ({camera.policy}, {camera.width}x"
+                      f"{camera.height}): {camera.topics['image']}, "
+                      f"{camera.topics['depth_image']}, {camera.topics['camera_info']} in "
+                      f"frame '{camera.frame}'")
+
+    def _unknown(self, names: list[str]) -> None:
         """Settings for a camera the model does not have: said once each, with their place."""
-        for name in sorted({k.split(".")[0] for k in params if "." in k} - set(names)):
-            setting = next(k for k in params if k.startswith(f"{name}."))
-            place = key_place(files, "/**", f"{PARAMETERS}{setting}") or \
-                key_place(files, "mujoco_ros2_control_node", f"{PARAMETERS}{setting}") or \
-                self.where
-            self.log.warning(f"{place}: {PARAMETERS}{name}: the MuJoCo model has no camera "
-                             f"'{name}'{did_you_mean(name, names)} (its cameras: "
-                             f"{', '.join(names) or 'none'}); these settings are unused")
+        prefix = self.prefix
+        given = [k.removeprefix(prefix) for k in self.node.parameters if k.startswith(prefix)]
+        for name in sorted({k.split(".")[0] for k in given if "." in k} - set(names)):
+            setting = next(k for k in given if k.startswith(f"{name}."))
+            self.log.warning(f"{self.place(prefix + setting)}: {prefix}{name}: the MuJoCo "
+                             f"model has no camera '{name}'{did_you_mean(name, names)} (its "
+                             f"cameras: {', '.join(names) or 'none'}); these settings are "
+                             f"unused")
 
     def _trigger(self, camera: MjcfCamera) -> Any:
         def triggered(request: Any, response: Any) -> Any:
@@ -88,9 +92,8 @@ class CameraPlugin(RosPlugin):
         return triggered
 
     def update(self, model: Any, data: Any, now: float) -> None:
-        due = now - self.last >= self.period - 1e-9
-        if due:
-            self.last = now
+        """Every control cycle: a polled camera's request; the streaming ones when due."""
+        due = schedule.tick(self, now, self.rate)
         rendering = self.rendering
         drawn = []
         for camera in self.cameras:

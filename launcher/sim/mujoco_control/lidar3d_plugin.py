@@ -17,28 +17,39 @@ from typing import Any
 
 import numpy as np
 
-from launcher.sim.mujoco_control.ros_plugin import RosPlugin
+from launcher.bus.declarations import Param
+from launcher.bus.wire import fill_stamp
+from launcher.sim.mujoco_control.ros_plugin import Context, RosPlugin
 from launcher.sim.plugins.mjcf_lidar import MjcfLidar
 
-PARAMETERS = "mujoco_plugins.mujoco_3d_lidar_plugin."  # (fixed in the plugin's code)
 FLOAT32 = 7  # sensor_msgs/PointField
 
 
 class Mujoco3dLidar(RosPlugin):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
-        self.lidars = [p for p in self.world.plugins.world if isinstance(p, MjcfLidar)]
-        self.outputs = [self._output(lidar) for lidar in self.lidars]
-        if not self.lidars:
+    PARAMETERS = (
+        Param("{sensor}.frame_name", "string", "", "the frame of its messages (default: its "
+              "site's name)"),
+        Param("{sensor}.topic", "string", "", "where it is published (default: /scan for one "
+              "row of rays, /points for several)"),
+    )
+    SCOPE = "mujoco_plugins.mujoco_3d_lidar_plugin."  # (fixed in the plugin's code)
+
+    def __init__(self, context: Context, name: str) -> None:
+        lidars = [p for p in context.world.plugins.world if isinstance(p, MjcfLidar)]
+        defaults = {}
+        for lidar in lidars:
+            defaults[f"{lidar.label}.frame_name"] = lidar.site_name
+            defaults[f"{lidar.label}.topic"] = "/points" if _three_d(lidar) else "/scan"
+        super().__init__(context, name, defaults, sensor=[lidar.label for lidar in lidars])
+        self.lidars = lidars
+        self.outputs = [self._output(lidar) for lidar in lidars]
+        if not lidars:
             self.log.info("No lidar sensors found")
 
     def _output(self, lidar: MjcfLidar) -> tuple[Any, str, float]:
-        three_d = lidar.resolution[1] > 1
-        prefix = f"{PARAMETERS}{lidar.label}."
-        frame = str(self.node.parameters.get(f"{prefix}frame_name", lidar.site_name))
-        topic = str(self.node.parameters.get(f"{prefix}topic",
-                                             "/points" if three_d else "/scan"))
-        kind = "sensor_msgs/msg/PointCloud2" if three_d else "sensor_msgs/msg/LaserScan"
+        frame = self.values[f"{lidar.label}.frame_name"]
+        topic = self.values[f"{lidar.label}.topic"]
+        kind = "sensor_msgs/msg/PointCloud2" if _three_d(lidar) else "sensor_msgs/msg/LaserScan"
         publisher = self.node.create_publisher(kind, topic, 1)
         self.log.info(f"Adding lidar sensor: '{lidar.label}' ({lidar.resolution[0]} x "
                       f"{lidar.resolution[1]} rays) on {topic}, frame '{frame}'")
@@ -52,11 +63,9 @@ class Mujoco3dLidar(RosPlugin):
             self.outputs[index] = (publisher, frame, lidar.stamp)
             if not publisher.get_subscription_count():
                 continue
-            message = self._cloud(lidar) if lidar.resolution[1] > 1 else self._scan(lidar)
+            message = self._cloud(lidar) if _three_d(lidar) else self._scan(lidar)
             message.header.frame_id = frame
-            sec = math.floor(lidar.stamp)
-            message.header.stamp.sec = sec
-            message.header.stamp.nanosec = int((lidar.stamp - sec) * 1e9)
+            fill_stamp(message.header.stamp, lidar.stamp)
             publisher.publish(message)
 
     def _scan(self, lidar: MjcfLidar) -> Any:
@@ -82,3 +91,8 @@ class Mujoco3dLidar(RosPlugin):
             is_bigendian=False, point_step=12, row_step=12 * width, is_dense=False)
         cloud.data = points.astype("<f4").reshape(-1).view(np.uint8)
         return cloud
+
+
+def _three_d(lidar: MjcfLidar) -> bool:
+    """Several rows of rays: a point cloud (one: a scan)."""
+    return lidar.resolution[1] > 1

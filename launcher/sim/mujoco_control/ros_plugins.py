@@ -15,6 +15,8 @@ cycle before the controllers, as mujoco_ros2_control updates them.
   Mujoco3dLidarPlugin             the MJCF's lidar sensors as LaserScan or PointCloud2
                                   (lidar3d_plugin.py)
 
+Each declares its parameters as data (PARAMETERS, read under `mujoco_plugins.<name>.` when it
+is made: a wrong value is refused at its line in the parameter file; a rate must be above 0).
 A type launcher does not provide is refused at start, with the ones it does.
 """
 
@@ -27,27 +29,29 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from launcher.bus.declarations import REQUIRED, Param
+from launcher.bus.wire import fill_stamp
 from launcher.errors import LaunchError, did_you_mean
 from launcher.sim.mujoco_control.camera_plugin import CameraPlugin
 from launcher.sim.mujoco_control.lidar3d_plugin import Mujoco3dLidar
-from launcher.sim.mujoco_control.ros_plugin import RosPlugin
+from launcher.sim.mujoco_control.ros_plugin import Context, RosPlugin
 from launcher.sim.mujoco_control.wrench_plugin import ExternalWrench
 
 PREFIX = "mujoco_ros2_control_plugins/"
 
 
 class Heartbeat(RosPlugin):
+    PARAMETERS = (Param("update_rate", "double", 1.0, "heartbeats a second of sim time (Hz)",
+                        above=0.0),)
+    RATE = "update_rate"
+
     def __init__(self, *args: Any) -> None:
         super().__init__(*args)
-        self.period = 1.0 / float(self.param("update_rate", 1.0))
         self.publisher = self.node.create_publisher("std_msgs/msg/String",
                                                     self.topic("mujoco_heartbeat"), 10)
-        self.count, self.last = 0, -math.inf
+        self.count = 0
 
-    def update(self, model: Any, data: Any, now: float) -> None:
-        if now - self.last < self.period - 1e-9:
-            return
-        self.last = now
+    def publish(self, model: Any, data: Any, now: float) -> None:
         self.publisher.publish(self.node.message(
             "std_msgs/msg/String", data=f"MuJoCo ROS2 Control Heartbeat #{self.count} | "
                                          f"Simulation time: {data.time:.6f}s"))
@@ -61,32 +65,40 @@ def _free_bodies(model: Any) -> dict[str, int]:
 
 
 class FreeJointStates(RosPlugin):
+    PARAMETERS = (
+        Param("frame_id", "string", "", "the MuJoCo body whose frame poses and twists are in "
+              "(empty: the world)"),
+        Param("body_names", "string_array", [], "the free-joint bodies published (empty: "
+              "every one)"),
+        Param("topic", "string", "free_joint_states", "where they are published"),
+        Param("publish_rate", "double", 50.0, "messages a second of sim time (Hz)", above=0.0),
+    )
+    RATE = "publish_rate"
+
     def __init__(self, *args: Any) -> None:
         super().__init__(*args)
         model = self.world.model
         free = _free_bodies(model)
-        wanted = list(self.param("body_names", []) or [])
+        wanted = self.values["body_names"]
         for body in wanted:
             if body not in free:
-                raise LaunchError(f"{self.where}: mujoco_plugins.{self.name}.body_names: "
-                                  f"'{body}' is not a body with a free joint"
-                                  f"{did_you_mean(body, free)}")
+                raise LaunchError(f"{self.place(self.prefix + 'body_names')}: "
+                                  f"{self.prefix}body_names: '{body}' is not a body with a "
+                                  f"free joint{did_you_mean(body, free)}")
         self.bodies = wanted or list(free)
-        self.frame = str(self.param("frame_id", "") or "")
+        self.frame = self.values["frame_id"]
         if self.frame and mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.frame) < 0:
-            self.log.error(f"mujoco_plugins.{self.name}.frame_id: no body '{self.frame}'; "
+            self.log.error(f"{self.prefix}frame_id: no body '{self.frame}'; "
                            f"publishing in the world frame")
             self.frame = ""
-        self.period = 1.0 / float(self.param("publish_rate", 50.0))
         self.publisher = self.node.create_publisher(
-            "mujoco_ros2_control_msgs/msg/FreeJointStateArray",
-            self.topic(str(self.param("topic", "free_joint_states"))), 10)
-        self.last = -math.inf
+            "mujoco_ros2_control_msgs/msg/FreeJointStateArray", self.topic(self.values["topic"]),
+            10)
 
-    def update(self, model: Any, data: Any, now: float) -> None:
-        if now - self.last < self.period - 1e-9 or not self.publisher.get_subscription_count():
-            return
-        self.last = now
+    def wanted(self) -> bool:
+        return self.publisher.get_subscription_count() > 0
+
+    def publish(self, model: Any, data: Any, now: float) -> None:
         node, entries = self.node, []
         frame = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.frame) \
             if self.frame else -1
@@ -128,21 +140,32 @@ class FreeJointStates(RosPlugin):
 
 
 class BaseVelocity(RosPlugin):
+    PARAMETERS = (
+        Param("body", "string", REQUIRED, "the MJCF body driven: one with a <freejoint/>"),
+        Param("cmd_vel_topic", "string", "cmd_vel", "where the commands come"),
+        Param("use_stamped_twist", "bool", False, "the commands are TwistStamped (false: "
+              "Twist)"),
+        Param("max_linear_velocity", "double", math.inf, "the largest planar speed (m/s)"),
+        Param("max_yaw_rate", "double", math.inf, "the largest yaw rate (rad/s)"),
+        Param("cmd_timeout", "double", 0.5, "s without a command before it is taken as zero"),
+    )
+
     def __init__(self, *args: Any) -> None:
         super().__init__(*args)
         model = self.world.model
-        body = str(self.param("body", "") or "")
+        body = self.values["body"]
         free = _free_bodies(model)
         if body not in free:
-            raise LaunchError(f"{self.where}: mujoco_plugins.{self.name}.body: '{body}' is not "
-                              f"a body with a <freejoint/>{did_you_mean(body, free)}: the base "
-                              f"velocity plugin drives a free joint")
+            raise LaunchError(f"{self.place(self.prefix + 'body')}: {self.prefix}body: "
+                              f"'{body}' is not a body with a <freejoint/>"
+                              f"{did_you_mean(body, free)}: the base velocity plugin drives a "
+                              f"free joint")
         self.body, self.joint = body, free[body]
-        self.max_linear = float(self.param("max_linear_velocity", math.inf))
-        self.max_yaw = float(self.param("max_yaw_rate", math.inf))
-        self.timeout = float(self.param("cmd_timeout", 0.5))
-        stamped = bool(self.param("use_stamped_twist", False))
-        topic = self.topic(str(self.param("cmd_vel_topic", "cmd_vel")))
+        self.max_linear = self.values["max_linear_velocity"]
+        self.max_yaw = self.values["max_yaw_rate"]
+        self.timeout = self.values["cmd_timeout"]
+        stamped = self.values["use_stamped_twist"]
+        topic = self.topic(self.values["cmd_vel_topic"])
         self.command = (0.0, 0.0, 0.0)
         self.received = -math.inf
         self.node.create_subscription(
@@ -176,47 +199,40 @@ class BaseVelocity(RosPlugin):
 
 
 class RangefinderLidar(RosPlugin):
-    """The MJCF's rangefinders named `<lidar>-<index>`, one LaserScan per `<lidar>` (its
-    parameters `<lidar>.frame_name`, `.min_angle`, `.max_angle`, `.angle_increment`,
-    `.range_min`, `.range_max`, `.laserscan_topic`); a range outside the limits is -1, as
-    mujoco_ros2_control reports it."""
+    """The MJCF's rangefinders named `<lidar>-<index>`, one LaserScan per `<lidar>`; a range
+    outside the limits is -1, as mujoco_ros2_control reports it."""
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
-        model = self.world.model
-        groups: dict[str, dict[int, int]] = {}
-        for i in range(model.nsensor):
-            if int(model.sensor_type[i]) != int(mujoco.mjtSensor.mjSENS_RANGEFINDER):
-                continue
-            name, dash, index = model.sensor(i).name.rpartition("-")
-            if dash and index.isdigit():
-                groups.setdefault(name, {})[int(index)] = int(model.sensor_adr[i])
-        self.lidars = [self._lidar(name, found) for name, found in groups.items()]
-        self.period = 1.0 / float(self.param("lidar_publish_rate", 5.0))
-        self.last = -math.inf
+    PARAMETERS = (
+        Param("lidar_publish_rate", "double", 5.0, "scans a second of sim time (Hz)",
+              above=0.0),
+        Param("{lidar}.min_angle", "double", REQUIRED, "the first ray's angle (rad)"),
+        Param("{lidar}.max_angle", "double", REQUIRED, "the last ray's angle (rad)"),
+        Param("{lidar}.angle_increment", "double", REQUIRED, "the angle between rays (rad)"),
+        Param("{lidar}.range_min", "double", 0.0, "nearer is out of range (m)"),
+        Param("{lidar}.range_max", "double", math.inf, "farther is out of range (m)"),
+        Param("{lidar}.laserscan_topic", "string", "/scan", "where its scans are published"),
+        Param("{lidar}.frame_name", "string", "{lidar}", "the frame of its scans"),
+    )
+    RATE = "lidar_publish_rate"
+
+    def __init__(self, context: Context, name: str) -> None:
+        groups = _rangefinders(context.world.model)
+        super().__init__(context, name, lidar=list(groups))
+        self.lidars = [self._lidar(lidar, found) for lidar, found in groups.items()]
 
     def _lidar(self, name: str, found: dict[int, int]) -> tuple[Any, ...]:
-        config = {k[len(name) + 1:]: v for k, v in self.params.items()
-                  if k.startswith(f"{name}.")}
-        needed = ("min_angle", "max_angle", "angle_increment")
-        missing = [n for n in needed if n not in config]
-        if missing:
-            raise LaunchError(f"{self.where}: mujoco_plugins.{self.name}: the rangefinders "
-                              f"'{name}-NN' need {', '.join(f'{name}.{m}' for m in missing)}")
-        low, high = float(config["min_angle"]), float(config["max_angle"])
-        step = float(config["angle_increment"])
+        config = {key: self.values[f"{name}.{key}"] for key in (
+            "min_angle", "max_angle", "angle_increment", "range_min", "range_max",
+            "laserscan_topic", "frame_name")}
+        low, high, step = config["min_angle"], config["max_angle"], config["angle_increment"]
         count = int((high - low) / step) + 1 if step > 0 else 0
         addresses = [found.get(i, 0) for i in range(count)]
-        publisher = self.node.create_publisher(
-            "sensor_msgs/msg/LaserScan", str(config.get("laserscan_topic", "/scan")), 10)
-        limits = (float(config.get("range_min", 0.0)), float(config.get("range_max", math.inf)))
-        return (publisher, addresses, str(config.get("frame_name", name)), low, high, step,
-                limits)
+        publisher = self.node.create_publisher("sensor_msgs/msg/LaserScan",
+                                               config["laserscan_topic"], 10)
+        return (publisher, addresses, config["frame_name"], low, high, step,
+                (config["range_min"], config["range_max"]))
 
-    def update(self, model: Any, data: Any, now: float) -> None:
-        if now - self.last < self.period - 1e-9:
-            return
-        self.last = now
+    def publish(self, model: Any, data: Any, now: float) -> None:
         for publisher, addresses, frame, low, high, step, (near, far) in self.lidars:
             if not publisher.get_subscription_count():
                 continue
@@ -226,10 +242,20 @@ class RangefinderLidar(RosPlugin):
                 angle_increment=step, range_min=near, range_max=far,
                 ranges=[r if near <= r <= far else -1.0 for r in ranges])
             message.header.frame_id = frame
-            sec = int(now)
-            message.header.stamp.sec = sec
-            message.header.stamp.nanosec = int(round((now - sec) * 1e9)) % 1_000_000_000
+            fill_stamp(message.header.stamp, now)
             publisher.publish(message)
+
+
+def _rangefinders(model: Any) -> dict[str, dict[int, int]]:
+    """The rangefinders named `<lidar>-<index>`: each lidar's sensordata address by index."""
+    groups: dict[str, dict[int, int]] = {}
+    for i in range(model.nsensor):
+        if int(model.sensor_type[i]) != int(mujoco.mjtSensor.mjSENS_RANGEFINDER):
+            continue
+        name, dash, index = model.sensor(i).name.rpartition("-")
+        if dash and index.isdigit():
+            groups.setdefault(name, {})[int(index)] = int(model.sensor_adr[i])
+    return groups
 
 
 TYPES: dict[str, type[RosPlugin]] = {
@@ -239,8 +265,8 @@ TYPES: dict[str, type[RosPlugin]] = {
     f"{PREFIX}RangefinderLidarPlugin": RangefinderLidar,
     f"{PREFIX}ExternalWrenchPlugin": ExternalWrench,
     f"{PREFIX}Mujoco3dLidarPlugin": Mujoco3dLidar,
+    f"{PREFIX}CameraPlugin": CameraPlugin,
 }
-CAMERA = f"{PREFIX}CameraPlugin"
 
 
 def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = None
@@ -250,18 +276,14 @@ def load_plugins(node: Any, world: Any, where: str, files: list[str] | None = No
     names = sorted({k.split(".")[1] for k in node.parameters
                     if k.startswith("mujoco_plugins.") and k.endswith(".type")
                     and k.count(".") == 2})
+    context = Context(node, world, where, list(files or []))
     plugins: list[RosPlugin] = []
     for name in names:
         kind = str(node.parameters[f"mujoco_plugins.{name}.type"])
-        if kind == CAMERA:
-            plugins.append(CameraPlugin(node, world, name, where, files=files))
-            node.get_logger().info(f"mujoco plugin '{name}' (CameraPlugin) loaded")
-            continue
         cls = TYPES.get(kind)
         if cls is None:
-            known = [*TYPES, CAMERA]
             raise LaunchError(f"{where}: mujoco_plugins.{name}.type: unknown plugin '{kind}'"
-                              f"{did_you_mean(kind, known)} (known: {', '.join(known)})")
-        plugins.append(cls(node, world, name, where))
+                              f"{did_you_mean(kind, list(TYPES))} (known: {', '.join(TYPES)})")
+        plugins.append(cls(context, name))
         node.get_logger().info(f"mujoco plugin '{name}' ({kind.removeprefix(PREFIX)}) loaded")
     return plugins

@@ -22,6 +22,8 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from launcher.bus.declarations import Param
+from launcher.bus.wire import stamp_seconds
 from launcher.errors import did_you_mean
 from launcher.sim.mujoco_control.ros_plugin import RosPlugin
 
@@ -31,11 +33,12 @@ SHAFT, HEAD = 0.02, 0.04  # m: the arrows' diameters
 ARROW, ADD = 0, 0  # visualization_msgs/Marker
 
 
-def _seconds(duration: Any) -> float:
-    return duration.sec + duration.nanosec * 1e-9
-
-
 class ExternalWrench(RosPlugin):
+    PARAMETERS = (
+        Param("force_arrow_scale", "double", 0.01, "a force's arrow: metres per newton"),
+        Param("torque_arrow_scale", "double", 0.1, "a torque's arrow: metres per newton metre"),
+    )
+
     def __init__(self, *args: Any) -> None:
         super().__init__(*args)
         self.active: list[tuple[int, np.ndarray, np.ndarray, np.ndarray, float, float]] = []
@@ -44,8 +47,7 @@ class ExternalWrench(RosPlugin):
         service = self.node.create_service(SERVICE, self.topic("apply_wrench"), self.on_apply)
         service.deferred = True
         self.log.info(f"ExternalWrenchPlugin: {service.name}")
-        self.scales = (float(self.param("force_arrow_scale", 0.01)),
-                       float(self.param("torque_arrow_scale", 0.1)))
+        self.scales = (self.values["force_arrow_scale"], self.values["torque_arrow_scale"])
         self.markers = self.node.create_publisher(
             MARKERS, "~/wrench_markers", 10)
 
@@ -62,7 +64,8 @@ class ExternalWrench(RosPlugin):
         for wrench in wrenches:
             name = wrench.wrench.header.frame_id
             body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, name)
-            duration, ramp = _seconds(wrench.duration), _seconds(wrench.ramp_down_duration)
+            duration = stamp_seconds(wrench.duration)
+            ramp = stamp_seconds(wrench.ramp_down_duration)
             refused = (f"Body '{name}' not found in MuJoCo model{did_you_mean(name, bodies)}"
                        if body < 0 else f"body '{name}': ramp_down_duration {ramp:g} s is "
                        f"longer than duration {duration:g} s" if ramp > duration else "")

@@ -5,12 +5,12 @@ Parameters are gz-sim's, with its defaults: `left_joint`, `right_joint` (repeata
 driven wheels), `left_steering_joint`, `right_steering_joint`, `wheel_separation` (1.0),
 `kingpin_width` (0.8), `wheel_base` (1.0), `steering_limit` (0.5 rad), `wheel_radius` (0.2),
 `steer_p_gain` (1.0: each steering joint turns at gain × its angle error), `steering_only`,
-`odom_publish_frequency` (50 Hz), `topic` (`cmd_vel`), `sub_topic`, `odom_topic`
-(`odometry`), `tf_topic` (`tf`), `frame_id` (`<name>/odom`), `child_frame_id`
-(`<name>/<root link>`), and `min|max_velocity|acceleration` limits on the speed (jerk limits
-are accepted, not applied). Relative topics live under `/model/<name>/`. The wheels and the
-steering joints are held at their speeds as gz holds joint velocity commands; a command with
-NaN or an infinity is ignored (one warning).
+`sub_topic`, `min|max_velocity|acceleration` limits on the speed (jerk limits are accepted,
+not applied), and the command and odometry ones every drive has (odometry.py):
+`odom_publish_frequency` (50 Hz), `topic` (`cmd_vel`), `odom_topic` (`odometry`), `tf_topic`
+(`tf`), `frame_id` (`<name>/odom`), `child_frame_id` (`<name>/<root link>`). Relative topics
+live under `/model/<name>/`. The wheels and the steering joints are held at their speeds as gz
+holds joint velocity commands; a command with NaN or an infinity is ignored (one warning).
 """
 
 from __future__ import annotations
@@ -23,32 +23,32 @@ import mujoco
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
 from launcher.sim.plugins import Plugin, PluginError
-from launcher.sim.plugins.diff_drive import approach, publish_odometry
+from launcher.sim.plugins.diff_drive import approach
+from launcher.sim.plugins.odometry import (
+    OdometryParameters,
+    OdometrySchedule,
+    open_odometry,
+    publish_odometry,
+)
 
 CONTROL_PERIOD = 0.005  # s of sim time between updates of the wheel and steering commands
 SERVO_TIME = 0.005  # s: the joint velocity servos' settling time (gain from the inertia)
 
 
 @dataclass
-class Parameters:
+class Parameters(OdometryParameters):
     left_joint: list[str] = attr(Kind.NAMES, required=True)
     right_joint: list[str] = attr(Kind.NAMES, required=True)
     left_steering_joint: list[str] = attr(Kind.NAMES, required=True)
     right_steering_joint: list[str] = attr(Kind.NAMES, required=True)
-    wheel_separation: float = attr(Kind.FLOAT, 1.0, minimum=1e-6)
+    wheel_separation: float = attr(Kind.FLOAT, 1.0, above=0.0)
     kingpin_width: float = attr(Kind.FLOAT, 0.8, minimum=0.0)
-    wheel_base: float = attr(Kind.FLOAT, 1.0, minimum=1e-6)
-    steering_limit: float = attr(Kind.FLOAT, 0.5, minimum=1e-6)
-    wheel_radius: float = attr(Kind.FLOAT, 0.2, minimum=1e-6)
+    wheel_base: float = attr(Kind.FLOAT, 1.0, above=0.0)
+    steering_limit: float = attr(Kind.FLOAT, 0.5, above=0.0)
+    wheel_radius: float = attr(Kind.FLOAT, 0.2, above=0.0)
     steer_p_gain: float = attr(Kind.FLOAT, 1.0, minimum=0.0)
     steering_only: bool = attr(Kind.BOOL, False)
-    odom_publish_frequency: float = attr(Kind.FLOAT, 50.0, minimum=0.0)
-    topic: str = attr(Kind.TEXT, "")
     sub_topic: str = attr(Kind.TEXT, "")
-    odom_topic: str = attr(Kind.TEXT, "")
-    tf_topic: str = attr(Kind.TEXT, "")
-    frame_id: str = attr(Kind.TEXT, "")
-    child_frame_id: str = attr(Kind.TEXT, "")
     min_velocity: float = attr(Kind.FLOAT, -math.inf)
     max_velocity: float = attr(Kind.FLOAT, math.inf)
     min_acceleration: float = attr(Kind.FLOAT, -math.inf)
@@ -84,19 +84,16 @@ class AckermannSteering(Plugin):
         self.linear = self.angular = 0.0
         self.previous: float | None = None
         self.last_time: float | None = None
-        self.next_odom = self.next_update = 0.0
+        self.odometry = OdometrySchedule(self.params.odom_publish_frequency)
+        self.next_update = 0.0
 
     def load(self) -> None:
-        p, name, transport = self.params, self.entity.name, self.sim.transport
-        self.frame_id = p.frame_id or f"{name}/odom"
-        self.child_frame_id = p.child_frame_id or f"{name}/{self.root}"
+        p, name = self.params, self.entity.name
         command = f"/model/{name}/{p.sub_topic.lstrip('/')}" if p.sub_topic and not p.topic \
             else self.topic(p.topic or None, "cmd_vel")
-        self.cmd_sub = transport.subscribe("mujoco_sim/msg/Twist", command, self.on_cmd_vel)
-        self.odom_pub = transport.publisher("mujoco_sim/msg/Odometry",
-                                            self.topic(p.odom_topic or None, "odometry"))
-        self.tf_pub = transport.publisher("mujoco_sim/msg/PoseV",
-                                          self.topic(p.tf_topic or None, "tf"))
+        self.cmd_sub = self.sim.transport.subscribe("mujoco_sim/msg/Twist", command,
+                                                    self.on_cmd_vel)
+        open_odometry(self, p)
 
     def bind(self, model: Any, data: Any) -> None:
         prefix = f"{self.entity.name}/"
@@ -182,12 +179,9 @@ class AckermannSteering(Plugin):
         dt = now - self.last_time if self.last_time is not None else 0.0
         self._control(data, dt)
         self._integrate(data)
-        frequency = self.params.odom_publish_frequency
-        if frequency > 0 and now + 1e-9 >= self.next_odom:
-            self.next_odom = now + 1.0 / frequency
+        if self.odometry.due(now):
             self._publish(now)
-        self.next_update = min(now + CONTROL_PERIOD,
-                               self.next_odom if frequency > 0 else math.inf)
+        self.next_update = min(now + CONTROL_PERIOD, self.odometry.next)
 
     def _publish(self, now: float) -> None:
         publish_odometry(self, now, self.x, self.y, self.heading, self.linear, self.angular)

@@ -26,6 +26,7 @@ from typing import Any
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 PUBLISH_PERIOD = 1.0 / 50  # s of sim time: gz-sim advertises the state at 50 a second
@@ -48,7 +49,7 @@ class Parameters:
     power_draining_topic: list[str] = attr(Kind.NAMES)
     stop_power_draining_topic: list[str] = attr(Kind.NAMES)
     enable_recharge: bool = attr(Kind.BOOL, False)
-    charging_time: float = attr(Kind.FLOAT, 3.0, minimum=1e-9)
+    charging_time: float = attr(Kind.FLOAT, 3.0, above=0.0)
     recharge_by_topic: bool = attr(Kind.BOOL, False)
     invert_current_sign: bool = attr(Kind.BOOL, False)
     fix_issue_225: bool = attr(Kind.BOOL, False)
@@ -116,8 +117,8 @@ class LinearBattery(Plugin):
         self.last = now
         if dt > 0:
             self._update(dt)
-        if now + 1e-9 >= self.next_publish:
-            self.next_publish = now + PUBLISH_PERIOD
+        if schedule.is_due(now, self.next_publish):
+            self.next_publish = schedule.following(self.next_publish, now, PUBLISH_PERIOD)
             self._publish(now)
         self.next_update = min(now + UPDATE_PERIOD, self.next_publish)
 

@@ -21,9 +21,10 @@ from typing import Any
 
 from launcher.records import dataclass, replace
 from launcher.schema import Kind, attr
-from launcher.sim.plugins.diff_drive import DiffDrive, yaw_quat
+from launcher.sim.plugins.diff_drive import DiffDrive
 from launcher.sim.plugins.gazebo_ros import under
 from launcher.sim.plugins.joint_state import JointStatePublisher
+from launcher.sim.plugins.odometry import yaw_quat
 
 # the gz name each classic parameter feeds: (ROS 1, ROS 2) -> gz
 DIFF_DRIVE = {("leftJoint", "left_joint"): "left_joint",
@@ -40,8 +41,8 @@ class ClassicDiffDriveParameters:
 
     leftJoint: list[str] = attr(Kind.NAMES)  # noqa: N815 - ROS 1's spelling
     rightJoint: list[str] = attr(Kind.NAMES)  # noqa: N815
-    wheelSeparation: float | None = attr(Kind.FLOAT, None, minimum=1e-6)  # noqa: N815
-    wheelDiameter: float | None = attr(Kind.FLOAT, None, minimum=1e-6)  # noqa: N815
+    wheelSeparation: float | None = attr(Kind.FLOAT, None, above=0.0)  # noqa: N815
+    wheelDiameter: float | None = attr(Kind.FLOAT, None, above=0.0)  # noqa: N815
     torque: float | None = attr(Kind.FLOAT, None, minimum=0.0)
     wheelTorque: float | None = attr(Kind.FLOAT, None, minimum=0.0)  # noqa: N815
     wheelAcceleration: float | None = attr(Kind.FLOAT, None)  # noqa: N815

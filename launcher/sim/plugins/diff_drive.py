@@ -1,9 +1,10 @@
 """Differential drive: cmd_vel → wheel velocity actuators; odometry from the wheel joints.
 
 Parameters are Gazebo's (gz-sim-diff-drive-system): `left_joint`, `right_joint` (repeatable),
-`wheel_separation` (1.0), `wheel_radius` (0.2), `odom_publish_frequency` (50 Hz), `topic`
-(`cmd_vel`), `odom_topic` (`odometry`), `tf_topic` (`tf`), `frame_id` (`<name>/odom`),
-`child_frame_id` (`<name>/<root link>`), `max_linear_velocity`, `min_linear_velocity`,
+`wheel_separation` (1.0), `wheel_radius` (0.2), the command and odometry ones every drive
+has (odometry.py): `odom_publish_frequency` (50 Hz), `topic` (`cmd_vel`), `odom_topic`
+(`odometry`), `tf_topic` (`tf`), `frame_id` (`<name>/odom`), `child_frame_id`
+(`<name>/<root link>`); and `max_linear_velocity`, `min_linear_velocity`,
 `max_angular_velocity`, `min_angular_velocity`, `max_linear_acceleration`,
 `min_linear_acceleration`, `max_angular_acceleration`, `min_angular_acceleration`. Relative
 topics live under `/model/<name>/`. launcher's own: `cmd_vel_timeout` (seconds of sim time
@@ -23,26 +24,25 @@ import mujoco
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
-from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
+from launcher.sim.plugins.odometry import (
+    OdometryParameters,
+    OdometrySchedule,
+    open_odometry,
+    publish_odometry,
+)
 
 CONTROL_PERIOD = 0.01  # s of sim time between acceleration-limited control updates
 
 
 @dataclass
-class Parameters:
+class Parameters(OdometryParameters):
     """gz-sim-diff-drive-system's parameters, and launcher's own (see the module text)."""
 
     left_joint: list[str] = attr(Kind.NAMES, required=True)
     right_joint: list[str] = attr(Kind.NAMES, required=True)
-    wheel_separation: float = attr(Kind.FLOAT, 1.0, minimum=1e-6)
-    wheel_radius: float = attr(Kind.FLOAT, 0.2, minimum=1e-6)
-    odom_publish_frequency: float = attr(Kind.FLOAT, 50.0, minimum=0.0)
-    topic: str = attr(Kind.TEXT, "")
-    odom_topic: str = attr(Kind.TEXT, "")
-    tf_topic: str = attr(Kind.TEXT, "")
-    frame_id: str = attr(Kind.TEXT, "")
-    child_frame_id: str = attr(Kind.TEXT, "")
+    wheel_separation: float = attr(Kind.FLOAT, 1.0, above=0.0)
+    wheel_radius: float = attr(Kind.FLOAT, 0.2, above=0.0)
     max_linear_velocity: float = attr(Kind.FLOAT, math.inf)
     min_linear_velocity: float = attr(Kind.FLOAT, -math.inf)
     max_angular_velocity: float = attr(Kind.FLOAT, math.inf)
@@ -76,7 +76,6 @@ class DiffDrive(Plugin):
                 raise PluginError(f"{self.config.where}: plugin {self.label}: joint '{joint}' is "
                                   f"not in the model (joints: {', '.join(joints)})")
         self.separation, self.radius = p.wheel_separation, p.wheel_radius
-        self.frequency = p.odom_publish_frequency
         watchdog = 0.5 if self.config.filename == "diff_drive" else 0.0
         self.timeout = p.cmd_vel_timeout if p.cmd_vel_timeout is not None else watchdog
         self.kv, self.response, torque = p.wheel_kv, p.wheel_response_time, p.max_wheel_torque
@@ -93,17 +92,10 @@ class DiffDrive(Plugin):
         self.reset()
 
     def load(self) -> None:
-        name = self.entity.name
-        self.frame_id = self.params.frame_id or f"{name}/odom"
-        self.child_frame_id = self.params.child_frame_id or f"{name}/{self.root}"
-        transport = self.sim.transport
-        self.odom_pub = transport.publisher("mujoco_sim/msg/Odometry",
-                                            self.topic(self.params.odom_topic, "odometry"))
-        self.tf_pub = transport.publisher("mujoco_sim/msg/PoseV",
-                                          self.topic(self.params.tf_topic, "tf"))
-        self.cmd_sub = transport.subscribe("mujoco_sim/msg/Twist",
-                                           self.topic(self.params.topic, "cmd_vel"),
-                                           self.on_cmd_vel)
+        open_odometry(self, self.params)
+        self.cmd_sub = self.sim.transport.subscribe("mujoco_sim/msg/Twist",
+                                                    self.topic(self.params.topic, "cmd_vel"),
+                                                    self.on_cmd_vel)
 
     def bind(self, model: Any, data: Any) -> None:
         prefix = f"{self.entity.name}/"
@@ -127,7 +119,8 @@ class DiffDrive(Plugin):
         self.v = self.w = 0.0  # current (limited) command
         self.target = (0.0, 0.0)
         self.last_command = -math.inf
-        self.next_odom = self.next_update = 0.0
+        self.odometry = OdometrySchedule(self.params.odom_publish_frequency)
+        self.next_update = 0.0
         self.last_odom_time: float | None = None
         self.previous: tuple[float, float] | None = None
         self.linear = self.angular = 0.0  # measured speeds, from the wheels
@@ -176,11 +169,9 @@ class DiffDrive(Plugin):
         now = data.time
         self._control(now)
         self._integrate(data)
-        if self.frequency > 0 and schedule.is_due(now, self.next_odom):
-            self.next_odom = schedule.following(self.next_odom, now,
-                                                schedule.period(self.frequency))
+        if self.odometry.due(now):
             self._publish(now)
-        following = [self.next_odom if self.frequency > 0 else math.inf]
+        following = [self.odometry.next]
         if (self.v, self.w) != self.target:
             following.append(now + CONTROL_PERIOD)
         if self.timeout > 0 and self.target != (0.0, 0.0):
@@ -217,30 +208,6 @@ class DiffDrive(Plugin):
             item.destroy()
 
 
-def publish_odometry(plugin: Any, now: float, x: float, y: float, heading: float,
-                     linear: float, angular: float) -> None:
-    """gz-sim's odometry of a wheeled base: gz.msgs.Odometry on the plugin's `odom_pub` and its
-    pose as gz.msgs.Pose_V on `tf_pub`, each only while someone listens (DiffDrive,
-    AckermannSteering)."""
-    odom_wanted = plugin.odom_pub.get_subscription_count() > 0
-    tf_wanted = plugin.tf_pub.get_subscription_count() > 0
-    if not (odom_wanted or tf_wanted):
-        return
-    transport = plugin.sim.transport
-    header = transport.header(now, plugin.frame_id)
-    pose = transport.pose(x, y, 0.0, yaw_quat(heading))
-    if odom_wanted:
-        plugin.odom_pub.publish(transport.message(
-            "mujoco_sim/msg/Odometry", header=header, child_frame_id=plugin.child_frame_id,
-            pose=pose, twist=transport.message(
-                "geometry_msgs/msg/Twist", linear=transport.vector(linear, 0.0, 0.0),
-                angular=transport.vector(0.0, 0.0, angular))))
-    if tf_wanted:
-        plugin.tf_pub.publish(transport.message(
-            "mujoco_sim/msg/PoseV", header=header, name=[plugin.child_frame_id],
-            parent=[plugin.frame_id], pose=[pose]))
-
-
 def approach(current: float, target: float, dt: float, low: float, high: float) -> float:
     if math.isinf(low) and math.isinf(high):
         return target
@@ -248,8 +215,3 @@ def approach(current: float, target: float, dt: float, low: float, high: float) 
         return current
     change = min(max(target - current, low * dt), high * dt)
     return current + change
-
-
-def yaw_quat(theta: float) -> tuple[float, float, float, float]:
-    """(x, y, z, w), ROS order."""
-    return 0.0, 0.0, math.sin(theta / 2), math.cos(theta / 2)

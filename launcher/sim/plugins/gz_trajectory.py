@@ -21,6 +21,8 @@ from typing import Any
 
 import mujoco
 
+from launcher.bus.wire import stamp_seconds
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 CONTROL_PERIOD = 0.001  # s of sim time between updates of the integral terms
@@ -129,10 +131,10 @@ class JointTrajectoryController(Plugin):
                 target.append((pick(point.positions, previous[0]),
                                pick(point.velocities, 0.0), pick(point.effort, 0.0)))
             stamp = point.time_from_start
-            points.append((stamp.sec + stamp.nanosec * 1e-9, target))
+            points.append((stamp_seconds(stamp), target))
         stamp = message.header.stamp
         now = self.data.time
-        self.start = stamp.sec + stamp.nanosec * 1e-9 if self.header_time and \
+        self.start = stamp_seconds(stamp) if self.header_time and \
             (stamp.sec or stamp.nanosec) else now
         self.points, self.index = points, -1
         self.next_update = now
@@ -160,7 +162,8 @@ class JointTrajectoryController(Plugin):
         if self.points:
             elapsed = now - self.start
             index = self.index
-            while index + 1 < len(self.points) and self.points[index + 1][0] <= elapsed + 1e-9:
+            while index + 1 < len(self.points) and \
+                    schedule.is_due(elapsed, self.points[index + 1][0]):
                 index += 1
             if index != self.index and index >= 0:
                 self.index = index

@@ -28,6 +28,7 @@ import mujoco
 
 from launcher.records import dataclass
 from launcher.schema import Kind, attr
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 
@@ -201,7 +202,8 @@ class JointPositionController(_JointServo):
             self.last_time = now
             self.integral += (self.command - data.qpos[self.qpos]) * dt
             self._apply(data)
-        self.next_update = now + I_PERIOD if self.ki else math.inf
+        self.next_update = schedule.following(self.next_update, now, I_PERIOD) if self.ki \
+            else math.inf
 
     def reset(self) -> None:
         self.integral, self.last_time = 0.0, None
@@ -272,7 +274,7 @@ class JointVelocityController(_JointServo):
         self.last_time = now
         self.integral += (self.command - data.qvel[self.dof]) * dt
         self._apply(data)
-        self.next_update = now + I_PERIOD
+        self.next_update = schedule.following(self.next_update, now, I_PERIOD)
 
     def reset(self) -> None:
         self.integral, self.last_time = 0.0, None

@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from launcher.errors import did_you_mean
+from launcher.sim import schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 KEYS = ("resolution", "azimuth_range", "elevation_range", "max_range", "min_range",
@@ -60,7 +61,7 @@ class MjcfLidar(Plugin):
         rate = self._number("update_rate", 1.0)
         if rate < 0.0:
             self.fail("Lidar update rate must be greater than 0.0")
-        self.period = 1.0 / rate if rate > 0 else 0.0
+        self.period = schedule.period(rate)
         azimuths = np.linspace(*self.azimuth_range, self.resolution[0]) \
             if self.resolution[0] > 1 else np.zeros(1)
         elevations = np.linspace(*self.elevation_range, self.resolution[1]) \

@@ -22,7 +22,7 @@ from typing import Any
 from launcher.bus.messages import MessageError, build, to_data
 from launcher.bus.types import registry
 from launcher.errors import LaunchError
-from launcher.sim import gz_msgs, prototext
+from launcher.sim import gz_msgs, prototext, schedule
 from launcher.sim.plugins import Plugin, PluginError
 
 TOLERANCE = 1e-6  # floating-point fields compare equal within this
@@ -141,10 +141,10 @@ class TriggeredPublisher(Plugin):
 
     def post_step(self, model: Any, data: Any) -> None:
         now = data.time
-        due = [t for t in self.pending if t <= now + 1e-9]
+        due = [t for t in self.pending if schedule.is_due(now, t)]
         for _ in due:
             self._fire()
-        self.pending = [t for t in self.pending if t > now + 1e-9]
+        self.pending = [t for t in self.pending if not schedule.is_due(now, t)]
         self.next_update = min(self.pending) if self.pending else math.inf
 
     def reset(self) -> None:

@@ -75,7 +75,7 @@ class Sensor(Plugin):
                            f"step), got '{element.stripped if element is not None else rate}'",
                            element.location if element is not None else None)
         self.rng = generator(getattr(self.sim, "seed", 0), self.scoped_name)
-        self.period = 1.0 / rate if rate > 0 else 0.0
+        self.period = schedule.period(rate)
         try:
             self.configure()
         except SdfError as exc:  # say which sensor, wherever in it the mistake is

@@ -56,8 +56,8 @@ SPAWN_FORMATS = ["sdf", "urdf", "mjcf"]
 
 
 def serve(server: Any) -> Api:
-    """Serve the standard API for the world of `server` (sim/server.py), on a node of the
-    sim's process that the sim's loop spins."""
+    """Serve the standard API for the world of `server` (the sim's loop, sim/runner.py), on a
+    node of the sim's process that the loop spins."""
     node = Node(NODE, argv=[], session=server.node.session)
     node.spin_with(server.node)
     api = Api(node, server)

@@ -20,7 +20,7 @@ NO_WORLD_TEXT = "no world is loaded (UnloadWorld removed it): LoadWorld one firs
 @dataclass
 class Api:
     node: Any  # the `gzserver` node
-    server: Any  # the sim's server (sim/server.py): its world, pausing and stepping
+    server: Any  # the sim's loop (sim/runner.py): its world, pausing and stepping
 
     @property
     def world(self) -> Any:
@@ -76,6 +76,3 @@ def fill_vector(message: Any, values: Any) -> None:
     message.x, message.y, message.z = (float(v) for v in values)
 
 
-def stamp(message: Any, seconds: float) -> None:
-    nanoseconds = round(seconds * 1e9)
-    message.sec, message.nanosec = divmod(nanoseconds, 1_000_000_000)

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from launcher.bus.wire import fill_stamp
 from launcher.errors import did_you_mean
 from launcher.sim.placement import MAX_SPEED
 from launcher.sim.simulation_interfaces.common import (
@@ -34,7 +35,6 @@ from launcher.sim.simulation_interfaces.common import (
     fill_vector,
     pose_of,
     result,
-    stamp,
 )
 from launcher.sim.transform import rotate
 
@@ -153,7 +153,7 @@ class Entities:
         entity, data = world.entities[name], world.data
         state = self.api.node.message(f"{TYPES}/msg/EntityState")
         state.header.frame_id = "world"
-        stamp(state.header.stamp, float(data.time))
+        fill_stamp(state.header.stamp, float(data.time))
         fill_pose(state.pose, entity_pose(world, name))
         if entity.dof >= 0:
             turn = data.xmat[entity.body].reshape(3, 3)  # the body's frame → the world's

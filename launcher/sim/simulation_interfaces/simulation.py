@@ -12,8 +12,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from launcher.bus.action_server import ActionServer
 from launcher.bus.actions import CANCELING
-from launcher.control.action_server import ActionServer
+from launcher.bus.wire import fill_stamp
 from launcher.sim.simulation_interfaces.common import (
     FEATURE_UNSUPPORTED,
     NO_WORLD_TEXT,
@@ -22,7 +23,6 @@ from launcher.sim.simulation_interfaces.common import (
     TYPES,
     Api,
     result,
-    stamp,
 )
 
 STOPPED, PLAYING, PAUSED, QUITTING, NO_WORLD, LOADING_WORLD = range(6)
@@ -159,7 +159,7 @@ class Simulation:
 
     def _stamp(self) -> Any:
         time = self.api.node.message("builtin_interfaces/msg/Time")
-        stamp(time, float(self.server.world.data.time))
+        fill_stamp(time, float(self.server.world.data.time))
         return time
 
     # --- resets ------------------------------------------------------------------------------
