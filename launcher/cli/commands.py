@@ -1,10 +1,12 @@
 """Every command and verb of the command line, in one table: launcher's commands (which
-`ros2 VERB` runs too) and ROS 1's tools. A verb's module is named after it (cli/verbs.py
-builds the parsers, importing only the chosen verb's module)."""
+`ros2 VERB` runs too), ROS 1's tools, and the words that are other programs' (TOOLS: their
+words passed on as typed). A verb's module is named after it (cli/verbs.py builds the parsers,
+importing only the chosen verb's module)."""
 
 from __future__ import annotations
 
-from launcher.cli.verbs import Group, Verb
+from launcher.cli.ros1 import TOOLS as ROS1_TOOLS
+from launcher.cli.verbs import Group, Tool, Verb
 
 
 def verbs(package: str, helps: dict[str, str], **modules: str) -> dict[str, Verb | Group]:
@@ -13,7 +15,7 @@ def verbs(package: str, helps: dict[str, str], **modules: str) -> dict[str, Verb
             for name, text in helps.items()}
 
 
-LAUNCHER: dict[str, Verb | Group] = {
+LAUNCHER: dict[str, Verb | Group | Tool] = {
     "launch": Verb("launcher.cli.launch_command", "run a launch file"),
     "test": Verb("launcher.cli.test_command", "run a launch test (as launch_test does)"),
     "pkg": Group("packages: list, find, create", verbs("launcher.cli.pkg", {
@@ -124,13 +126,14 @@ LAUNCHER: dict[str, Verb | Group] = {
                            "package": "the types of one package",
                            "packages": "the packages that have types",
                        })),
-    "run": Verb("launcher.cli.run_command", "run an executable of a package (as ros2 run / "
-                                            "rosrun)"),
+    "run": Tool("launcher.cli.run_command", "run an executable of a package (as ros2 run / "
+                                            "rosrun)", name="run", debug="lead"),
     "router": Verb("launcher.cli.router_command", "run a standing router of the graph (other "
                                                   "hosts join with --listen)"),
-    "sim": Verb("launcher.cli.sim_command", "run the MuJoCo world server"),
-    "gz": Verb("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model) over "
-                                          "launcher's sim"),
+    "sim": Tool("launcher.cli.sim_command", "run the MuJoCo world server", name="sim",
+                debug="none"),
+    "gz": Tool("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model) over "
+                                          "launcher's sim", strip=True),
     "doctor": Verb("launcher.cli.doctor_command", "check the install and the workspace; say what "
                                                   "to fix"),
 }
@@ -194,4 +197,16 @@ ROS1: dict[str, Group] = {  # ROS 1's tools that have verbs (the others: cli/ros
                         "init": "mark the workspace",
                         "clean": "remove build/ and devel/",
                     }), strict=False),
+}
+
+# every word whose words after it are another program's, run by its tool (cli/main.py):
+# launcher's commands of that kind (sim's flags, -h included; run's executable's), and
+# ROS 2's `ros2` and colcon (compat/bin) and ROS 1's tools (cli/ros1), which `launcher -h`
+# does not list
+TOOLS: dict[str, Tool] = {
+    **{word: entry for word, entry in LAUNCHER.items() if isinstance(entry, Tool)},
+    "ros2": Tool("launcher.cli.ros2_command"),
+    "colcon": Tool("launcher.cli.colcon_command"),
+    **{word: Tool(module, strip=True) for word, module in ROS1_TOOLS.items()},
+    **{word: Tool(group=group, strip=True) for word, group in ROS1.items()},
 }

@@ -40,10 +40,11 @@ def _unraisable(info: "sys.UnraisableHookArgs") -> None:
     callback, as importing runs them; a __del__) is not lost with a printed traceback: it is
     sent again, from another thread so that it lands once this hook has returned (and again
     should it land in such a place again)."""
-    if isinstance(info.exc_value, _Interrupted):
-        import _thread
+    signum = getattr(info.exc_value, "signum", None)
+    if isinstance(info.exc_value, KeyboardInterrupt) and signum is not None:
+        import _thread  # (this one's, or the event loop's Interrupted: runtime/loop.py)
 
-        _thread.start_new_thread(os.kill, (os.getpid(), info.exc_value.signum))
+        _thread.start_new_thread(os.kill, (os.getpid(), signum))
         return
     sys.__unraisablehook__(info)
 

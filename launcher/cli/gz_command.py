@@ -11,24 +11,17 @@ import argparse
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Its words, described (a run takes them as typed: `main`)."""
     parser.description = ("Gazebo's commands over launcher's sim (see `launcher gz -h`).")
     parser.add_argument("arguments", nargs=argparse.REMAINDER)
 
 
-def run(args: argparse.Namespace) -> int:
-    return run_gz(args.arguments)
-
-
-def run_gz(argv: list[str]) -> int:
+def main(argv: list[str], prog: str = "") -> int:
+    """The words after `gz` (a tool: cli/commands.py)."""
     if argv[:1] == ["sim"]:
         from launcher.cli.sim_command import run_sim
 
         return run_sim(argv[1:], gz=True)
-    from launcher.nodes.gz import main
+    from launcher.nodes.gz import main as gz
 
-    return main(argv)
-
-
-def main(argv: list[str], prog: str = "") -> int:
-    """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
-    return run_gz(argv)
+    return gz(argv)

@@ -10,40 +10,14 @@ import argparse
 import importlib
 import os
 import sys
-from typing import NamedTuple
 
 from launcher import __version__
 from launcher.arguments import Parser
-from launcher.cli.commands import LAUNCHER, ROS1
-from launcher.cli.ros1 import TOOLS as ROS1_TOOLS
+from launcher.cli.commands import LAUNCHER, TOOLS
 from launcher.cli.verbs import add_entries, run_group
 from launcher.errors import reported
 
 COMMANDS = LAUNCHER  # (the table: cli/commands.py)
-
-
-class Tool(NamedTuple):
-    """A word that is a tool of its own: its module's `main(argv, prog)` (or, with no module,
-    the verbs of ROS1[word]) takes the words after it as they are. `debug`: where --debug asks
-    for tracebacks (any word, none: the tool's own flags, lead: the two words after it);
-    `strip`: --debug is taken out of its words."""
-    module: str
-    name: str = ""  # the reporter's name for its errors
-    debug: str = "any"
-    strip: bool = False
-
-
-# ROS 2's `ros2` and colcon (compat/bin), ROS 1's tools (cli/ros1), and launcher's commands
-# whose words after them are another program's (gz sim's flags, -h included; run's executable)
-TOOLS = {
-    "ros2": Tool("launcher.cli.ros2_command"),
-    "colcon": Tool("launcher.cli.colcon_command"),
-    **{name: Tool(module, strip=True) for name, module in ROS1_TOOLS.items()},
-    **{name: Tool("", strip=True) for name in ROS1},
-    "sim": Tool("launcher.cli.sim_command", "sim", debug="none"),
-    "run": Tool("launcher.cli.run_command", "run", debug="lead"),
-    "gz": Tool("launcher.cli.gz_command", strip=True),
-}
 
 
 def build_parser(words: list[str] | None, prog: str = "launcher") -> tuple[
@@ -69,12 +43,14 @@ def main(argv: list[str] | None = None, prog: str = "launcher") -> int:
 
 
 def run_tool(word: str, words: list[str]) -> int:
-    """The tool `word` on the words after it (see TOOLS), its errors through the reporter."""
+    """The tool `word` on the words after it (cli/commands.py's TOOLS), its errors through
+    the reporter."""
     tool = TOOLS[word]
     debug = {"any": "--debug" in words, "none": False, "lead": "--debug" in words[:2]}[tool.debug]
     given = [w for w in words if w != "--debug"] if tool.strip else words
-    if not tool.module:
-        return reported(lambda: run_group(ROS1[word], given, word), tool.name, debug)
+    if tool.group is not None:
+        group = tool.group
+        return reported(lambda: run_group(group, given, word), tool.name, debug)
     module = importlib.import_module(tool.module)
     return reported(lambda: module.main(given, word), tool.name, debug)
 

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.bus import graph
+from launcher.bus.wire import stamp_seconds
 from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
@@ -53,7 +54,7 @@ def _stamp(message: Any, received: float) -> float:
     header = getattr(message, "header", None)
     stamp = getattr(header, "stamp", None)
     if stamp is not None and (stamp.sec or stamp.nanosec):
-        return stamp.sec + stamp.nanosec / 1e9
+        return stamp_seconds(stamp)
     return received
 
 

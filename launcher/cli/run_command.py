@@ -21,8 +21,8 @@ USAGE = "usage: launcher run [--prefix PREFIX] [--debug] PACKAGE EXECUTABLE [ARG
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """The command's arguments for tab completion (a run itself is parsed by run_run, which
-    leaves every word after EXECUTABLE to it)."""
+    """Its words, described for the docs and tab completion (a run takes them as typed:
+    run_run leaves every word after EXECUTABLE to it)."""
     from launcher.cli import completion
 
     parser.add_argument("--prefix", metavar="PREFIX",
@@ -79,12 +79,5 @@ def run_run(argv: list[str]) -> int:
 
 
 def main(argv: list[str], prog: str = "") -> int:
-    """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
+    """The words after `run` (a tool: cli/commands.py)."""
     return run_run(argv)
-
-
-def run(args: argparse.Namespace) -> int:
-    """The parsed words (completion builds this parser; a run itself goes through main)."""
-    return run_run([*(["--prefix", args.prefix] if args.prefix else []),
-                    *(["--debug"] if args.debug else []),
-                    args.package, args.executable, *args.arguments])

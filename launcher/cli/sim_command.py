@@ -11,12 +11,14 @@ import os
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Its words, described (a run takes them as typed: `main`)."""
     parser.description = ("Run the MuJoCo world server (see `launcher sim -h`).")
     parser.add_argument("arguments", nargs=argparse.REMAINDER)
 
 
-def run(args: argparse.Namespace) -> int:
-    return run_sim(args.arguments)
+def main(argv: list[str], prog: str = "") -> int:
+    """The words after `sim` (a tool: cli/commands.py)."""
+    return run_sim(argv)
 
 
 def run_sim(argv: list[str], gz: bool = False) -> int:
@@ -31,8 +33,3 @@ def run_sim(argv: list[str], gz: bool = False) -> int:
     from launcher.nodes.sim import main
 
     return main(argv, gz=gz)
-
-
-def main(argv: list[str], prog: str = "") -> int:
-    """As a tool of its own (cli/main.py's TOOLS): the words after its name."""
-    return run_sim(argv)

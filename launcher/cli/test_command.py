@@ -7,9 +7,7 @@ from __future__ import annotations
 
 import argparse
 import sys
-import unittest
 from pathlib import Path
-from typing import Any
 
 from launcher.cli import positive_number
 from launcher.errors import LaunchError, UsageError
@@ -37,8 +35,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from launcher import compat
-    from launcher.cli.launch_command import launch_service, parse_assignments
+    from launcher.cli.launch_command import parse_assignments
     from launcher.cli.workspace import load_index
+    from launcher.compat.testing.junit import write
+    from launcher.compat.testing.loader import TestFileError, load_runs
+    from launcher.compat.testing.worker import run_once
     from launcher.frontend.python_loader import load_module
 
     path = Path(args.launch_test_file)
@@ -47,8 +48,6 @@ def run(args: argparse.Namespace) -> int:
     path = path.resolve()
     configurations = parse_assignments(args.launch_arguments)
     compat.enable_in_process()  # test files import launch, launch_testing, rclpy, …
-    from launch_testing.loader import TestFileError, load_runs
-
     name = args.package_name or path.stem
     module = load_module(path, name, "test file")
     try:
@@ -67,24 +66,13 @@ def run(args: argparse.Namespace) -> int:
         if len(runs) > 1:
             print(f"\nStarting test run {test_run}", file=sys.stderr)
         try:
-            results += _one_run(test_run, configurations, args, launch_service, load_index)
+            _worker, found = run_once(test_run, configurations, debug=args.verbose,
+                                      time_limit=args.timeout)
+            results += found
         except TestFileError as exc:
             raise LaunchError(str(exc)) from None
     if args.xmlpath:
-        from launcher.compat.junit import write
-
         write(Path(args.xmlpath), f"{name}.{path.stem}", results)
     return 0 if all(result.wasSuccessful() for result in results) else 1
 
 
-def _one_run(test_run: Any, configurations: dict[str, str], args: argparse.Namespace,
-             launch_service: Any, load_index: Any) -> list[unittest.TestResult]:
-    """One launch of the file on a graph of its own (its run folder private and temporary)."""
-    from launcher.cli.launch_tests.worker import Worker
-    from launcher.cli.own_graph import own_graph
-
-    def new_service() -> Any:
-        return launch_service(configurations, load_index(), debug=args.verbose)
-
-    with own_graph("launch-test-"):
-        return Worker(test_run, new_service, configurations, args.timeout).execute(sys.stderr)

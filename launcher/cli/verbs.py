@@ -3,7 +3,8 @@ table (cli/commands.py) with its help, so that a parser lists every verb and imp
 module of the one chosen.
 
 A verb's module holds `add_arguments(parser)` and `run(args) -> int | None`; a group holds
-verbs (or groups) under one word.
+verbs (or groups) under one word; a tool is a word whose words after it are another program's,
+passed on as typed (cli/main.py runs it).
 """
 
 from __future__ import annotations
@@ -29,6 +30,23 @@ class Group(NamedTuple):
     strict: bool = True  # False: words no verb knows are taken and unused (catkin_tools')
 
 
+class Tool(NamedTuple):
+    """A word whose words after it are another program's, passed on as typed (gz sim's flags,
+    -h included; run's executable's; ros2's verbs): its module's `main(argv, prog) -> int`
+    takes them, or, with no module, `group`'s chosen verb (ROS 1's rostopic, …). Where a tool
+    is one of launcher's commands, its module's add_arguments(parser) describes those words
+    for the help, completion and the docs; a run never parses them with it.
+
+    `debug`: where --debug asks for tracebacks: "any" word, "none" (the tool's own flags),
+    "lead" (the two words after it); `strip`: --debug is taken out of its words."""
+    module: str = ""
+    help: str = ""
+    name: str = ""  # the reporter's name for its errors
+    debug: str = "any"
+    strip: bool = False
+    group: Group | None = None
+
+
 EVERY = None  # `words` that build every verb's arguments (the docs, the help checks)
 
 
@@ -38,7 +56,7 @@ def chosen(words: list[str] | None) -> str | None:
         if words is not None else None
 
 
-def add_entries(parser: argparse.ArgumentParser, table: dict[str, Verb | Group],
+def add_entries(parser: argparse.ArgumentParser, table: dict[str, Verb | Group | Tool],
                 words: list[str] | None, dest: str = "verb",
                 metavar: str = "VERB") -> argparse._SubParsersAction:
     """`table`'s words under `parser`; the arguments of the one `words` chooses (of all with
@@ -54,16 +72,18 @@ def add_entries(parser: argparse.ArgumentParser, table: dict[str, Verb | Group],
     return entries
 
 
-def add_entry(parser: argparse.ArgumentParser, entry: Verb | Group,
+def add_entry(parser: argparse.ArgumentParser, entry: Verb | Group | Tool,
               words: list[str] | None) -> None:
-    """One entry's arguments: a verb's own, or a group's verbs."""
+    """One entry's arguments: a verb's own, a group's verbs, or the words a tool describes
+    (a tool is run before any parse: cli/main.py)."""
     if isinstance(entry, Group):
         add_entries(parser, entry.verbs, words, metavar=entry.metavar)
         parser.set_defaults(**entry.defaults)
         return
     module = importlib.import_module(entry.module)
     module.add_arguments(parser)
-    parser.set_defaults(run=module.run)
+    if isinstance(entry, Verb):
+        parser.set_defaults(run=module.run)
 
 
 def group_parser(group: Group, prog: str, words: list[str] | None) -> Parser:

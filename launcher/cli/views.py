@@ -64,9 +64,9 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int, loops: bool
                 yield depth, item, f"not resolved statically: {exc.message}"
                 continue
             yield depth, item, included
-            context.push_file(included.file)
+            context.files.push(included.file)
             yield from _walk(included.actions, context, depth + 1, loops)
-            context.pop_file()
+            context.files.pop()
         else:
             yield depth, item, None
             yield from _walk(list(item.sub_actions()), context, depth + 1, loops)
@@ -75,7 +75,7 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int, loops: bool
 def show_arguments(description: LaunchDescription, configurations: dict[str, str],
                    index: Any = None) -> str:
     context = _context(dict(configurations), index)
-    context.push_file(description.file)
+    context.files.push(description.file)
     sections: dict[str, list[DeclareLaunchArgument]] = {str(description.file): []}
     current = [str(description.file)]
     notes: list[str] = []
@@ -110,7 +110,7 @@ def show_arguments(description: LaunchDescription, configurations: dict[str, str
 def print_tree(description: LaunchDescription, configurations: dict[str, str],
                index: Any = None) -> str:
     context = _context(dict(configurations), index)
-    context.push_file(description.file)
+    context.files.push(description.file)
     lines = [f"LaunchDescription {description.file}"]
     for depth, item, extra in _walk(description.actions, context, 0):
         text = "  " * (depth + 1) + _describe(item)

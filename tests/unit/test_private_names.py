@@ -29,7 +29,7 @@ LIBRARY_NAMES = {
 # Third-party internals that launcher patches or must call, each in one place with the reason
 PATCHED = {
     ("packages/xacro.py", "_eval_dict"): "xacro's $(find) table, pointed at the package index",
-    ("cli/launch_tests/launch_pytest_plugin.py", "_genfunctions"):
+    ("compat/testing/launch_pytest/plugin.py", "_genfunctions"):
         "pytest's making of a test's items (one per parameter), for the coroutine and generator "
         "tests launch_pytest collects, as launch_pytest's own plugin does",
 }

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from launcher.cli.commands import LAUNCHER, ROS1
-from launcher.cli.verbs import Group, group_parser, run_group
+from launcher.cli.commands import LAUNCHER, ROS1, TOOLS
+from launcher.cli.verbs import Group, Tool, group_parser, run_group
 
 CLI = Path(__file__).resolve().parents[2] / "launcher" / "cli"
 
@@ -29,8 +29,18 @@ VERBS = [*every_verb(LAUNCHER, "launcher"), *every_verb(ROS1, "")]
 
 @pytest.mark.parametrize(("words", "verb"), VERBS, ids=[w.strip() for w, _ in VERBS])
 def test_every_verb_in_the_table_is_a_module_with_its_arguments_and_its_run(words, verb):
+    """A verb's module runs its parsed arguments; a tool's (sim, run, gz) takes its words as
+    typed, and describes them."""
     module = importlib.import_module(verb.module)
-    assert callable(module.add_arguments) and callable(module.run), words
+    run = module.main if isinstance(verb, Tool) else module.run
+    assert callable(module.add_arguments) and callable(run), words
+
+
+@pytest.mark.parametrize("word", sorted(TOOLS))
+def test_every_tool_is_a_module_that_takes_its_words_or_a_group(word):
+    tool = TOOLS[word]
+    assert bool(tool.module) != (tool.group is not None), word  # one or the other
+    assert tool.group is not None or callable(importlib.import_module(tool.module).main), word
 
 
 def test_every_verb_module_is_named_by_the_table():

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.api import Action, OnProcessExit, RegisterEventHandler
-from launcher.compat.junit import RESULTS_FLAG
+from launcher.compat.testing.junit import RESULTS_FLAG
 from launcher.description.action import Replay
 from launcher.description.actions.rostest import CollectedTest
 from launcher.description.substitution import to_text

@@ -9,6 +9,7 @@ from typing import Any
 
 from launcher.bus.qos import PROFILES
 from launcher.bus.session import open_session
+from launcher.bus.wire import stamp_seconds
 from launcher.cli import completion, positive_count
 from launcher.cli.graph_options import add_sim_option, space_of
 from launcher.cli.topic.lookup import topic_name, type_of
@@ -44,7 +45,7 @@ def run(args: argparse.Namespace) -> int:
     def arrived(message: Any) -> None:
         stamp = message.header.stamp
         delays.append(node.get_clock().now().nanoseconds / 1e9 -
-                      (stamp.sec + stamp.nanosec / 1e9))
+                      stamp_seconds(stamp))
 
     node.create_subscription(type_name, topic, arrived, PROFILES["best_available"])
     shown = 0

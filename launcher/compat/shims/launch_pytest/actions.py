@@ -1,5 +1,5 @@
-"""launch_pytest.actions: ReadyToTest (launch_testing's)."""
+"""launch_pytest.actions (launcher.compat.testing)."""
 
-from launch_testing.actions import ReadyToTest
+from launcher.compat.testing.actions import ReadyToTest
 
 __all__ = ["ReadyToTest"]

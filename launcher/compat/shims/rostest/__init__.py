@@ -10,7 +10,7 @@ import unittest
 from pathlib import Path
 from typing import Any
 
-from launcher.compat.junit import RESULTS_FLAG, RecordingResult, write
+from launcher.compat.testing.junit import RESULTS_FLAG, RecordingResult, write
 
 XML_OUTPUT_FLAG = RESULTS_FLAG  # (gtest's flag, which rostest took)
 

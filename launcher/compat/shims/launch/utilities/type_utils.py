@@ -7,7 +7,7 @@ lists) and performed, then coerced, when it runs.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any, List, Union  # noqa: UP035 (launch's types are typing.List[...])
 
 import yaml
@@ -184,13 +184,21 @@ def normalize_typed_substitution(value: Any, data_type: Any) -> Any:
                         f"scalars and substitutions. Got `value={value}` of type "
                         f"`{type(value)}`. ")
     kinds = {_item_kind(x, value) for x in value}
-    is_list = True
-    if data_type is not None:
-        data_type, is_list = extract_type(data_type)
-    if not is_list:
-        raise TypeError("The provided value resolves to a list, though the required type is a "
-                        f"scalar. Got value='{value}', data_type='{data_type}'.")
+    data_type = _item_type(data_type, lambda scalar: TypeError(
+        "The provided value resolves to a list, though the required type is a scalar. Got "
+        f"value='{value}', data_type='{scalar}'."))
     return _normalize_list(list(value), kinds, data_type)
+
+
+def _item_type(data_type: Any, refusal: Callable[[Any], Exception]) -> Any:
+    """The type of the items of a list that `data_type` asks for (None: any);
+    `refusal(the scalar type)` is raised when it asks for a scalar."""
+    if data_type is None:
+        return None
+    scalar, is_list = extract_type(data_type)
+    if not is_list:
+        raise refusal(scalar)
+    return scalar
 
 
 def _item_kind(x: Any, value: Any) -> type:
@@ -235,12 +243,9 @@ def perform_typed_substitution(context: LaunchContext, value: Any, data_type: An
     if not isinstance(value, list):
         raise TypeError(f"Input value is not an acceptable 'NormalizedValueType'.Got "
                         f"value='{value}'")
-    scalar = None
-    if data_type is not None:
-        scalar, is_list = extract_type(data_type)
-        if not is_list:
-            raise ValueError("The input value is a list, cannot convert it to a scalar. Got "
-                             f"value='{value}', expected type {scalar}.")
+    scalar = _item_type(data_type, lambda scalar: ValueError(
+        "The input value is a list, cannot convert it to a scalar. Got "
+        f"value='{value}', expected type {scalar}."))
     out = [coerce_to_type(perform_substitutions(context, x), scalar)
            if is_normalized_substitution(x) else x for x in value]
     if not is_instance_of(out, data_type):

@@ -1,7 +1,7 @@
-"""launch_pytest.tools: waiting for a process's start, output and exit (process)."""
+"""launch_pytest.tools (launcher.compat.testing)."""
 
 from launch_pytest.tools import process
-from launch_pytest.tools.process import (
+from launcher.compat.testing.launch_pytest.tools import (
     assert_output,
     assert_output_sync,
     assert_stderr,
@@ -16,7 +16,8 @@ from launch_pytest.tools.process import (
     wait_for_stderr_sync,
 )
 
-__all__ = ["assert_output", "assert_output_sync", "assert_stderr", "assert_stderr_sync",
-           "process", "wait_for_exit", "wait_for_exit_sync", "wait_for_output",
-           "wait_for_output_sync", "wait_for_start", "wait_for_start_sync", "wait_for_stderr",
-           "wait_for_stderr_sync"]
+__all__ = [
+    "assert_output", "assert_output_sync", "assert_stderr", "assert_stderr_sync", "process",
+    "wait_for_exit", "wait_for_exit_sync", "wait_for_output", "wait_for_output_sync",
+    "wait_for_start", "wait_for_start_sync", "wait_for_stderr", "wait_for_stderr_sync"
+]

@@ -1,22 +1,5 @@
-"""launch_testing.actions.GTest: a GoogleTest program run as a Test."""
+"""launch_testing.actions.gtest (launcher.compat.testing)."""
 
-from __future__ import annotations
-
-from typing import Any
-
-from launch_testing.actions.test import Test
-
-
-class GTest(Test):
-    """Runs the program at `path` (Test's and ExecuteProcess's other arguments)."""
-
-    def __init__(self, *, path: Any, **kwargs: Any) -> None:
-        super().__init__(cmd=[path], **kwargs)
-        self._path = path
-
-    @property
-    def path(self) -> Any:
-        return self._path
-
+from launcher.compat.testing.actions import GTest, Test
 
 __all__ = ["GTest", "Test"]

@@ -1,24 +1,5 @@
-"""launch_testing.actions.PyTest: `python -m pytest PATH` run as a Test."""
+"""launch_testing.actions.pytest (launcher.compat.testing)."""
 
-from __future__ import annotations
-
-import sys
-from typing import Any
-
-from launch_testing.actions.test import Test
-
-
-class PyTest(Test):
-    """Runs pytest on `path` with this interpreter (Test's and ExecuteProcess's other
-    arguments)."""
-
-    def __init__(self, *, path: Any, **kwargs: Any) -> None:
-        super().__init__(cmd=[sys.executable, "-m", "pytest", path], **kwargs)
-        self._path = path
-
-    @property
-    def path(self) -> Any:
-        return self._path
-
+from launcher.compat.testing.actions import PyTest, Test
 
 __all__ = ["PyTest", "Test"]

@@ -1,5 +1,5 @@
-"""launch_testing.event_handlers: StdoutReadyListener."""
+"""launch_testing.event_handlers (launcher.compat.testing)."""
 
-from launch_testing.event_handlers.stdout_ready_listener import StdoutReadyListener
+from launcher.compat.testing.event_handlers import StdoutReadyListener
 
 __all__ = ["StdoutReadyListener"]

@@ -1,12 +1,13 @@
-"""launch_testing.tools: matching expected output (text.py, output.py) and starting a process
-from an active test (process.py)."""
+"""launch_testing.tools (launcher.compat.testing)."""
 
-from launch_testing.tools.output import (
+from launcher.compat.testing.tools.output import (
     basic_output_filter,
     expect_output,
     expected_output_from_file,
 )
-from launch_testing.tools.process import ProcessProxy, launch_process
+from launcher.compat.testing.tools.process import ProcessProxy, launch_process
 
-__all__ = ["ProcessProxy", "basic_output_filter", "expect_output", "expected_output_from_file",
-           "launch_process"]
+__all__ = [
+    "ProcessProxy", "basic_output_filter", "expect_output", "expected_output_from_file",
+    "launch_process"
+]

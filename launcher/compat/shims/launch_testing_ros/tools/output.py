@@ -6,19 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-
-def get_rmw_output_filter(rmw_implementation: str, filter_type: str) -> list[str]:
-    """The `filter_type` ('prefixes' or 'patterns') lines the implementation registered."""
-    if filter_type not in ("prefixes", "patterns"):
-        raise TypeError(f'Unsupported filter_type "{filter_type}". Supported types: '
-                        "['prefixes', 'patterns']")
-    import ament_index_python
-
-    resource = f"rmw_output_{filter_type}"
-    if not ament_index_python.has_resource(resource, rmw_implementation):
-        return []
-    content, _ = ament_index_python.get_resource(resource, rmw_implementation)
-    return content.splitlines()
+from launcher.compat.testing.tools.output import rmw_output_filter as get_rmw_output_filter
 
 
 def basic_output_filter(filtered_prefixes: list[str] | None = None,

@@ -1,9 +1,11 @@
 """One run of a launch test: the description launched in this thread (the launch service
 handles the signals), the active tests in another once ReadyToTest is visited, the launch
-shut down when they are done, then the post-shutdown tests."""
+shut down when they are done, then the post-shutdown tests. `run_once` gives the run a graph
+of its own (`launcher test` and launch_testing's runner)."""
 
 from __future__ import annotations
 
+import sys
 import threading
 import unittest
 from collections.abc import Callable
@@ -16,7 +18,11 @@ from launcher.api import (
     OnProcessStart,
     RegisterEventHandler,
 )
-from launcher.compat.junit import RecordingResult
+from launcher.compat.testing.io_handler import ActiveIoHandler
+from launcher.compat.testing.junit import RecordingResult
+from launcher.compat.testing.loader import bind
+from launcher.compat.testing.proc_info_handler import ActiveProcInfoHandler
+from launcher.compat.testing.records import ProcessInfo, ProcessOutput
 from launcher.runtime.service import LaunchService
 
 FOREVER = 365 * 24 * 3600.0  # s: the timer that keeps a keep_alive launch up
@@ -53,8 +59,6 @@ class Worker:
         """`new_service` makes the launch service once the description is known good (none is
         started for a test file that cannot run); `time_limit`: seconds the active tests may
         take (none: no limit, as launch_test)."""
-        from launch_testing import ActiveIoHandler, ActiveProcInfoHandler
-
         self.run, self.new_service, self.arguments = run, new_service, arguments
         self.service: Any = None
         self.time_limit = time_limit
@@ -65,8 +69,6 @@ class Worker:
 
     def execute(self, stream: Any) -> list[unittest.TestResult]:
         """The results of the active tests and of the post-shutdown tests."""
-        from launch_testing.loader import bind
-
         description, context = self.run.description(self.ready.set)
         self.service = self.new_service()
         proxy = ServiceProxy(self.service)
@@ -111,8 +113,6 @@ class Worker:
 
     def _recorders(self) -> list[Any]:
         """Event handlers that record each process's start, output and exit for the tests."""
-        from launch_testing.records import ProcessInfo, ProcessOutput
-
         def started(event: Any, _context: Any) -> None:
             self.proc_output.track(event.origin)
             self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.cmd),
@@ -129,6 +129,22 @@ class Worker:
         return [RegisterEventHandler(OnProcessStart(on_start=started)),
                 RegisterEventHandler(OnProcessExit(on_exit=exited)),
                 RegisterEventHandler(OnProcessIO(on_stdout=printed, on_stderr=printed))]
+
+
+def run_once(run: Any, configurations: dict[str, str], *, debug: bool = False,
+             time_limit: float | None = None) -> tuple[Worker, list[unittest.TestResult]]:
+    """One launch of `run` (a TestRun) on a graph of its own (its run folder private and
+    temporary), its tests printing on stderr: the worker, and the results."""
+    from launcher.cli.launch_command import launch_service
+    from launcher.cli.own_graph import own_graph
+    from launcher.cli.workspace import load_index
+
+    def new_service() -> LaunchService:
+        return launch_service(configurations, load_index(), debug=debug)
+
+    worker = Worker(run, new_service, configurations, time_limit)
+    with own_graph("launch-test-"):
+        return worker, worker.execute(sys.stderr)
 
 
 def failed(run: Any, reason: str) -> unittest.TestResult:

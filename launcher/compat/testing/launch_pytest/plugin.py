@@ -2,7 +2,7 @@
 `@pytest.mark.launch(fixture=F)` runs while the launch F describes is running (F is a
 `@launch_pytest.fixture`), or after it has ended with `shutdown=True`; a generator test runs
 up to its `yield` beside the launch and the rest after it; coroutines run on the `event_loop`
-fixture's loop. The launch runs in a thread of its own (compat/threaded_launch.py) on a graph
+fixture's loop. The launch runs in a thread of its own (threaded_launch.py) on a graph
 of its own for the pytest session (a private run folder, its router and nodes gone with it).
 
 Where a real launch_pytest is installed, its own plugin runs the tests and this one stands
@@ -17,8 +17,16 @@ from typing import Any
 import pytest
 
 from launcher import compat
-from launcher.compat import launch_fixtures
-from launcher.compat.launch_fixtures import OPTIONS
+from launcher.api import LaunchDescription
+from launcher.compat.testing.actions import ReadyToTest
+from launcher.compat.testing.launch_pytest.fixture import (
+    NEW_SERVICE,
+    OPTIONS,
+    get_event_loop_fixture,
+    get_launch_context_fixture,
+    get_launch_service_fixture,
+)
+from launcher.compat.testing.loader import ready_actions
 
 MARK = "launch"
 READY_TIMEOUT = "launch_pytest_ready_timeout"  # the ini option: s a launch is given to be ready
@@ -36,11 +44,11 @@ def pytest_configure(config: Any) -> None:
         return
     config.addinivalue_line("markers", f"{MARK}(fixture, shutdown=False): a test run beside "
                                        "the launch its launch_pytest fixture describes")
-    config.stash[launch_fixtures.NEW_SERVICE] = _SessionGraph()
+    config.stash[NEW_SERVICE] = _SessionGraph()
 
 
 def pytest_unconfigure(config: Any) -> None:
-    graph = config.stash.get(launch_fixtures.NEW_SERVICE, None)
+    graph = config.stash.get(NEW_SERVICE, None)
     if isinstance(graph, _SessionGraph):
         graph.close()
 
@@ -93,9 +101,9 @@ def _imports(path: Any, name: str) -> bool:
 
 # --- the fixtures: a function's scope unless a launch fixture widens them ------------------
 if ACTIVE:
-    launch_service = launch_fixtures.get_launch_service_fixture(overridable=False)
-    launch_context = launch_fixtures.get_launch_context_fixture(overridable=False)
-    event_loop = launch_fixtures.get_event_loop_fixture(overridable=False)
+    launch_service = get_launch_service_fixture(overridable=False)
+    launch_context = get_launch_context_fixture(overridable=False)
+    event_loop = get_event_loop_fixture(overridable=False)
 
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)
@@ -121,8 +129,6 @@ def pytest_fixture_setup(fixturedef: Any, request: Any) -> Any:
 
 
 def _description(value: Any, where: str) -> Any:
-    from launcher.api import LaunchDescription
-
     description = value[0] if isinstance(value, Sequence) and value else value
     if not isinstance(description, LaunchDescription):
         pytest.fail(f"{where}: return value must be either a launch description or a sequence "
@@ -133,9 +139,6 @@ def _description(value: Any, where: str) -> Any:
 
 def _ready_action(description: Any, where: str) -> Any:
     """Its one ReadyToTest; one is added at its end when it has none."""
-    from launch_testing.actions import ReadyToTest
-    from launch_testing.loader import ready_actions
-
     found = list(ready_actions(description.actions))
     if len(found) > 1:
         pytest.fail(f"{where}: launch_pytest fixtures must return a LaunchDescription "

@@ -16,13 +16,14 @@ from typing import Any
 
 import pytest
 
+from launcher import compat
+from launcher.compat.testing.launch_pytest.fixture import CONFIGS
+
 MARKERS = ("launch_test", "rostest")  # launch_testing's, and launch_testing_ros's
 
 
 def _real_launch_testing() -> bool:
     """A launch_testing that is not launcher's shim is importable (its plugin then runs)."""
-    from launcher import compat
-
     return compat.installed_apart("launch_testing")
 
 
@@ -34,19 +35,15 @@ def pytest_addoption(parser: Any) -> None:
 
 
 def pytest_configure(config: Any) -> None:
-    from launcher.compat import launch_fixtures
-
-    launch_fixtures.CONFIGS.append(config)  # (launch_pytest's launch_service reads it)
+    CONFIGS.append(config)  # (launch_pytest's launch_service reads it)
     for marker in MARKERS:
         config.addinivalue_line("markers", f"{marker}: a generate_test_description function "
                                            "that is a launch test's entry point")
 
 
 def pytest_unconfigure(config: Any) -> None:
-    from launcher.compat import launch_fixtures
-
-    if config in launch_fixtures.CONFIGS:
-        launch_fixtures.CONFIGS.remove(config)
+    if config in CONFIGS:
+        CONFIGS.remove(config)
 
 
 def pytest_pycollect_makemodule(module_path: Path, parent: Any) -> Any:
