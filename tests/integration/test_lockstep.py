@@ -12,12 +12,14 @@ import time
 
 import pytest
 
-from tests.conftest import REPO, launcher_argv
+from tests.support.environment import REPO
+from tests.support.processes import launcher_argv
 
 BRIDGE = REPO / "packages" / "robot_bringup" / "config" / "bridge.yaml"
 
 # The demo's robot, spawned while time stands still (no node on sim time yet); the driver
-# starts once it is there, so a run's every step is the same.
+# starts once it is there and the recorder hears odometry, so a run's every step is the same
+# and the recorder (no lockstep member: it is not on sim time) misses none of them.
 SCENARIO = """
 launch:
   - executable:
@@ -36,25 +38,55 @@ launch:
       exec: create
       args: "-entity my_robot -topic robot_description"
       on_exit:
-        - node: {{pkg: robot_application, exec: driver, output: screen,
-                 param: [{{name: use_sim_time, value: true}}]}}
+        - executable:
+            cmd: "{python} wait_ready.py"
+            on_exit:
+              - node: {{pkg: robot_application, exec: driver, output: screen,
+                       param: [{{name: use_sim_time, value: true}}]}}
   - executable: {{cmd: "{python} recorder.py", output: screen, on_exit: shutdown}}
 """
 
-# Where odometry says the robot is at whole seconds of sim time, to the last bit.
+# Where odometry says the robot is at whole seconds of sim time, to the last bit. It says
+# it is ready once it has found the odometry's publisher.
 RECORDER = """
-from launcher.bus.node import Node
-node = Node("recorder")
+from pathlib import Path
+
+import rclpy
+from nav_msgs.msg import Odometry
+
+rclpy.init()
+node = rclpy.create_node("recorder")
+done = []
+
+
 def on_odom(message):
     stamp = round(message.header.stamp.sec + message.header.stamp.nanosec / 1e9, 3)
     if stamp in (1.0, 2.0, 3.0):
         p = message.pose.pose.position
         print(f"AT {stamp} {p.x!r} {p.y!r}", flush=True)
-        if stamp == 3.0:
-            node.shutdown()
-node.create_subscription("nav_msgs/msg/Odometry", "/odom", on_odom)
-node.spin()
+        done.append(stamp == 3.0)
+
+
+node.create_subscription(Odometry, "/odom", on_odom, 1000)  # (none dropped)
+while not node.count_publishers("/odom"):
+    rclpy.spin_once(node, timeout_sec=0.05)
+Path("recorder.ready").touch()
+while not any(done):
+    rclpy.spin_once(node, timeout_sec=0.1)
 node.destroy_node()
+rclpy.shutdown()
+"""
+
+WAIT_READY = """
+import sys
+import time
+from pathlib import Path
+
+deadline = time.monotonic() + 60
+while not Path("recorder.ready").exists():
+    if time.monotonic() > deadline:
+        sys.exit("the recorder never found the odometry")
+    time.sleep(0.02)
 """
 
 
@@ -62,6 +94,7 @@ node.destroy_node()
 def scenario(ws):
     ws.own_bus().env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
     ws.write("recorder.py", RECORDER)
+    ws.write("wait_ready.py", WAIT_READY)
     ws.write("scenario.launch.yaml", SCENARIO.format(bridge=BRIDGE, python=sys.executable))
     return ws
 
