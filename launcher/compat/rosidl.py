@@ -28,6 +28,7 @@ from typing import Any
 from launcher.bus import kinds
 from launcher.bus.message_class import assigner
 from launcher.bus.types import normalize, registry
+from launcher.bus.wire import stamp_nanoseconds, stamp_seconds
 
 _INT_RANGES = {"byte": (0, 255), "char": (0, 255), "octet": (0, 255),
                "int8": (-2**7, 2**7 - 1), "uint8": (0, 255),
@@ -361,8 +362,8 @@ def _set_nsecs(self: Any, value: int) -> None:
 
 _ROS1_TIME = {
     "secs": property(_secs, _set_secs), "nsecs": property(_nsecs, _set_nsecs),
-    "to_sec": lambda self: self.sec + self.nanosec / 1e9,
-    "to_nsec": lambda self: self.sec * 1_000_000_000 + self.nanosec,
+    "to_sec": stamp_seconds,
+    "to_nsec": stamp_nanoseconds,
 }
 
 

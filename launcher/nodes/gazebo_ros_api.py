@@ -27,6 +27,7 @@ from typing import Any
 from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
+from launcher.bus.wire import fill_stamp
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes.create import SimNotFound, find_world
 from launcher.nodes.running import run_node
@@ -125,9 +126,7 @@ class GazeboApi:
     def on_get_model_state(self, request: Any, response: Any) -> Any:
         state, poses = self._poses()
         response.header.frame_id = request.relative_entity_name or "world"
-        seconds = state.sim_time
-        response.header.stamp.sec = int(seconds)
-        response.header.stamp.nanosec = int((seconds - int(seconds)) * 1e9)
+        fill_stamp(response.header.stamp, state.sim_time)
         found = poses.get(request.model_name)
         if found is None:
             response.success = False

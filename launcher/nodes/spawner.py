@@ -18,10 +18,12 @@ import os
 import signal
 import sys
 import time
+from collections.abc import Callable
 from typing import Any
 
 from launcher.bus import ros_args
 from launcher.bus.node import Node
+from launcher.bus.wire import split_time
 from launcher.control.yaml_places import block_place
 from launcher.errors import LaunchError, UsageError, reported
 
@@ -102,7 +104,7 @@ class Manager:
         return bool(result.successful)
 
     def switch(self, activate: list[str], deactivate: list[str], timeout: float) -> Any:
-        sec, nanosec = int(timeout), int((timeout % 1) * 1e9)
+        sec, nanosec = split_time(timeout)
         return self.call("switch_controller", activate_controllers=activate,
                          deactivate_controllers=deactivate, strictness=STRICT,
                          activate_asap=True, timeout=self.node.message(
@@ -130,12 +132,7 @@ def type_from(files: list[str], controller: str, namespace: str) -> tuple[str, s
     return "", ""
 
 
-def spawn(argv: list[str]) -> int:
-    parsed = ros_args.parse(argv)
-    try:
-        args = _parser("spawner").parse_args(parsed.user_args)
-    except SystemExit as exc:
-        return int(exc.code or 0)
+def spawn(args: argparse.Namespace, argv: list[str]) -> int:
     for path in args.param_file or []:
         if not os.path.isfile(path):
             raise UsageError(f"spawner: parameter file '{path}' does not exist")
@@ -146,10 +143,7 @@ def spawn(argv: list[str]) -> int:
         namespace = args.namespace or node.namespace or "/"
         if not namespace.startswith("/"):
             namespace = f"/{namespace}"
-        name = args.controller_manager
-        if not name.startswith("/"):
-            name = f"{namespace.rstrip('/')}/{name}"
-        manager = Manager(node, name, args.controller_manager_timeout,
+        manager = Manager(node, _manager_name(args, namespace), args.controller_manager_timeout,
                           args.service_call_timeout)
         to_activate = []
         for controller in args.controller_names:
@@ -219,19 +213,11 @@ def spawn(argv: list[str]) -> int:
         node.destroy_node()
 
 
-def unspawn(argv: list[str]) -> int:
-    parsed = ros_args.parse(argv)
-    try:
-        args = _parser("unspawner").parse_args(parsed.user_args)
-    except SystemExit as exc:
-        return int(exc.code or 0)
+def unspawn(args: argparse.Namespace, argv: list[str]) -> int:
     node = Node(f"unspawner_{args.controller_names[0]}", argv=argv)
     try:
-        namespace = node.namespace or "/"
-        name = args.controller_manager
-        if not name.startswith("/"):
-            name = f"{namespace.rstrip('/')}/{name}"
-        manager = Manager(node, name, 0.0, args.service_call_timeout)
+        manager = Manager(node, _manager_name(args, node.namespace or "/"), 0.0,
+                          args.service_call_timeout)
         log = node.get_logger()
         response = manager.switch([], list(args.controller_names), args.switch_timeout)
         if not response.ok:
@@ -256,14 +242,34 @@ def _signals() -> None:
     signal.signal(signal.SIGTERM, stop)
 
 
-def main() -> int:
+def _manager_name(args: argparse.Namespace, namespace: str) -> str:
+    """The controller manager's full name: `-c NAME`, in `namespace` unless absolute."""
+    name = args.controller_manager
+    return name if name.startswith("/") else f"{namespace.rstrip('/')}/{name}"
+
+
+def _script(prog: str, command: Callable[[argparse.Namespace, list[str]], int]) -> int:
+    """spawner's or unspawner's script: `command(its arguments, argv)`; argparse's exit
+    (--help, a mistake) is the script's exit status, as in controller_manager's."""
     _signals()
-    return reported(lambda: spawn(sys.argv[1:]), "spawner")
+    argv = sys.argv[1:]
+
+    def run() -> int:
+        try:
+            args = _parser(prog).parse_args(ros_args.parse(argv).user_args)
+        except SystemExit as exc:
+            return int(exc.code or 0)
+        return command(args, argv)
+
+    return reported(run, prog)
+
+
+def main() -> int:
+    return _script("spawner", spawn)
 
 
 def unspawner_main() -> int:
-    _signals()
-    return reported(lambda: unspawn(sys.argv[1:]), "unspawner")
+    return _script("unspawner", unspawn)
 
 
 if __name__ == "__main__":

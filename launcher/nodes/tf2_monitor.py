@@ -11,6 +11,7 @@ from typing import Any
 
 from launcher.bus.node import Node
 from launcher.bus.tf_tree import BufferCore, TransformException
+from launcher.bus.wire import stamp_seconds
 from launcher.errors import UsageError, reported
 from launcher.nodes.tf_feed import feed
 
@@ -28,7 +29,7 @@ def run(argv: list[str]) -> int:
         tree = BufferCore()
 
         def arrived(t: Any, static: bool) -> None:
-            stamp = t.header.stamp.sec + t.header.stamp.nanosec / 1e9
+            stamp = stamp_seconds(t.header.stamp)
             arrivals[t.child_frame_id].append((time.monotonic(),
                                                0.0 if static else _seconds(node) - stamp))
         feed(node, tree, "tf2_monitor", arrived)

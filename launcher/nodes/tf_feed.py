@@ -8,6 +8,7 @@ from typing import Any
 
 from launcher.bus.qos import QoS
 from launcher.bus.tf_tree import BufferCore, TransformException
+from launcher.bus.wire import stamp_nanoseconds
 
 
 def feed(node: Any, tree: BufferCore, authority: str,
@@ -23,8 +24,7 @@ def feed(node: Any, tree: BufferCore, authority: str,
                 v, r = t.transform.translation, t.transform.rotation
                 try:
                     tree.set_transform(t.child_frame_id, t.header.frame_id,
-                                       t.header.stamp.sec * 1_000_000_000 +
-                                       t.header.stamp.nanosec,
+                                       stamp_nanoseconds(t.header.stamp),
                                        ((v.x, v.y, v.z), (r.x, r.y, r.z, r.w)),
                                        authority, static)
                 except TransformException:
