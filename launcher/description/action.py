@@ -192,12 +192,12 @@ class _PushFile(_Internal):
         self.path = path
 
     def execute(self, context: LaunchContext) -> None:
-        context.push_file(self.path)
+        context.files.push(self.path)
 
 
 class _PopFile(_Internal):
     def execute(self, context: LaunchContext) -> None:
-        context.pop_file()
+        context.files.pop()
 
 
 class PushScope(_Internal):

@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any, NamedTuple, Protocol, runtime_checkable
 
 from launcher.records import dataclass
+from launcher.runtime.files_read import FilesRead
 
 
 @dataclass
@@ -114,7 +115,7 @@ class LaunchContext:
         self._saved: list[tuple[str, dict[str, str]]] = []  # Push/Pop Environment, …
         self.argv = list(argv or [])  # launch's LaunchContext.argv (the LaunchService's)
         self.noninteractive = noninteractive
-        self._files: list[Path | None] = []
+        self.files = FilesRead(lambda: self.locals)  # the launch files being read
         self.service = service
         self.log_dir = log_dir
         self.anonymous_names: dict[str, str] = {}
@@ -267,31 +268,6 @@ class LaunchContext:
         if self.service is not None:
             self.service.unregister_handler(event_handler)
 
-    # --- the file being read, for $(dirname) and $(filename) -----------------------------
-    @property
-    def current_file(self) -> Path | None:
-        return self._files[-1] if self._files else None
-
-    @property
-    def open_files(self) -> list[Path | None]:
-        return list(self._files)
-
-    def push_file(self, path: Path | None) -> None:
-        self._files.append(path)
-        self._file_locals()
-
-    def pop_file(self) -> None:
-        self._files.pop()
-        self._file_locals()
-
-    def _file_locals(self) -> None:
-        """launch's context.locals.current_launch_file_path and …_directory: the file
-        being read."""
-        path = self.current_file
-        if path is not None:
-            self.locals.update(current_launch_file_path=str(path),
-                               current_launch_file_directory=str(path.parent))
-
     def log(self, level: str, message: str) -> None:
         """A message from an action or substitution: to the run's output and log."""
         if self.service is not None:
@@ -301,18 +277,18 @@ class LaunchContext:
 
     # --- deferred work ------------------------------------------------------------------
     def snapshot(self) -> Snapshot:
-        return Snapshot(self.scope.copy(), dict(self.locals), self.current_file)
+        return Snapshot(self.scope.copy(), dict(self.locals), self.files.current)
 
     def enter(self, snapshot: Snapshot) -> None:
         """Push a scope, loop variables and file equal to the snapshot's (undo with leave)."""
         self._scopes.append(snapshot.scope.copy())
         self._locals.append(Locals(snapshot.locals))
-        self._files.append(snapshot.file)
+        self.files.enter(snapshot.file)
 
     def leave(self) -> None:
         self._scopes.pop()
         self._locals.pop()
-        self._files.pop()
+        self.files.leave()
 
 
 def _replace(target: MutableMapping[str, str], source: Mapping[str, str]) -> None:

@@ -80,7 +80,7 @@ class LaunchService:
         self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
                                   self.run_log, self.log, self.emit,
                                   lambda: bool(self.handlers.registered),
-                                  self._check_idle, on_graph and self._graph_hook(on_graph),
+                                  self._check_idle, on_graph and reporting(on_graph, self.report),
                                   lambda done: self.gate.helper_over(done))
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
         self.coroutines = Coroutines(self.loop.call_soon_threadsafe, self._coroutine_failed,
@@ -141,15 +141,6 @@ class LaunchService:
             return
         self.table.look_for_orphans()
         self.loop.call_later(TICK, self._tick)
-
-    def _graph_hook(self, on_graph: Callable[[], None]) -> Callable[[], None]:
-        def graph_needed() -> None:
-            try:
-                on_graph()
-            except LaunchError as exc:
-                self.report(exc)
-
-        return graph_needed
 
     # --- visiting actions -------------------------------------------------------------------
     def schedule(self, actions: Sequence[Any]) -> None:
@@ -329,6 +320,19 @@ class LaunchService:
 
     def _check_idle(self) -> None:
         self.ending.check()
+
+
+def reporting(run: Callable[[], None],
+              report: Callable[[LaunchError], None]) -> Callable[[], None]:
+    """`run`, with its LaunchError reported instead of raised (the graph's start: a launch
+    whose router cannot start goes on to say so, and ends with status 1)."""
+    def reported() -> None:
+        try:
+            run()
+        except LaunchError as exc:
+            report(exc)
+
+    return reported
 
 
 def unexpected(exc: Exception, where: Any) -> LaunchError:

@@ -5,7 +5,7 @@ import pytest
 
 from launcher.errors import LaunchError, ParseError, SubstitutionError
 from launcher.runtime.context import LaunchContext
-from tests.unit.helpers import evaluate
+from tests.support.launch_text import evaluate
 
 
 def ctx(configurations=None, environment=None):
@@ -146,7 +146,7 @@ def test_command_not_found():
 def test_files(tmp_path):
     (tmp_path / "value.txt").write_text("content")
     context = ctx()
-    context.push_file(tmp_path / "a.launch.yaml")
+    context.files.push(tmp_path / "a.launch.yaml")
     assert evaluate("$(dirname)", context) == str(tmp_path)
     assert evaluate("$(filename)", context) == str(tmp_path / "a.launch.yaml")
     assert evaluate("$(file-content value.txt)", context) == "content"

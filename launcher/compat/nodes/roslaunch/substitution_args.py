@@ -60,7 +60,7 @@ def _launch_context(context: dict[str, Any], filename: str | None) -> Any:
     launch.anonymous_names = context.setdefault("anon", {})  # (shared: the same on each call)
     name = filename or context.get("filename")
     if name:
-        launch.push_file(Path(os.path.abspath(name)))
+        launch.files.push(Path(os.path.abspath(name)))
     return launch
 
 

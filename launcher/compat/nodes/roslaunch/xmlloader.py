@@ -206,5 +206,5 @@ def node_of(spec: Any, context: Any) -> Node | None:
                           and k != "ROS_NAMESPACE"],
                 output="screen" if "screen" in spec.stdout_to else "log",
                 required=bool(getattr(origin, "on_exit", None)),
-                filename=str(context.current_file or "<unknown>"))
+                filename=str(context.files.current or "<unknown>"))
 
