@@ -5,7 +5,7 @@ ExecuteLocal (ExecuteProcess with its process described apart)."""
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, ClassVar
 
 from launcher.description import made_by_code
 from launcher.description.action import Action
@@ -20,28 +20,33 @@ class _Plain(Action):
         self.condition, self.where = kwargs.get("condition"), None
 
 
-class PushEnvironment(_Plain):
+class _Step(_Plain):
+    """One of the context's own steps: `_step`, a LaunchContext method."""
+
+    _step: ClassVar[Callable[[LaunchContext], None]]
+
+    def execute(self, context: LaunchContext) -> None:
+        type(self)._step(context)
+
+
+class PushEnvironment(_Step):
     """Save the environment of the processes to come (PopEnvironment restores it)."""
 
-    def execute(self, context: LaunchContext) -> None:
-        context.push_environment()
+    _step = LaunchContext.push_environment
 
 
-class PopEnvironment(_Plain):
-    def execute(self, context: LaunchContext) -> None:
-        context.pop_environment()
+class PopEnvironment(_Step):
+    _step = LaunchContext.pop_environment
 
 
-class PushLaunchConfigurations(_Plain):
+class PushLaunchConfigurations(_Step):
     """Save the launch configurations (PopLaunchConfigurations restores them)."""
 
-    def execute(self, context: LaunchContext) -> None:
-        context.push_configurations()
+    _step = LaunchContext.push_configurations
 
 
-class PopLaunchConfigurations(_Plain):
-    def execute(self, context: LaunchContext) -> None:
-        context.pop_configurations()
+class PopLaunchConfigurations(_Step):
+    _step = LaunchContext.pop_configurations
 
 
 class UnsetLaunchConfiguration(_Plain):

@@ -11,6 +11,7 @@ launch extensions (the `launch.frontend.launch_extension` group) come in the sam
 
 from __future__ import annotations
 
+import functools
 import importlib
 import warnings
 from collections.abc import Iterable
@@ -157,11 +158,7 @@ def _load_extension(point: Any) -> Any:
         return None
 
 
-_default: Registry | None = None
-
-
+@functools.cache
 def default_registry() -> Registry:
-    global _default
-    if _default is None:
-        _default = Registry()
-    return _default
+    """The process's registry (made on first use)."""
+    return Registry()

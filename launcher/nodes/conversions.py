@@ -32,6 +32,7 @@ SIM_SERVICES = {("WorldControl", "Boolean"): f"{SIM}/srv/Control",
                 ("Pose", "Boolean"): f"{SIM}/srv/SetPose"}
 
 Convert = Callable[[bytes], bytes]
+Build = Callable[[Any], dict[str, Any]]  # a message read as objects → the other's fields
 
 
 def gz_short_name(name: str) -> str:
@@ -211,65 +212,6 @@ def _odometry_objects_to_sim(payload: bytes) -> bytes:
     return _via("nav_msgs/msg/Odometry", f"{SIM}/msg/Odometry", _odometry_to_sim)(payload)
 
 
-def conversions() -> dict[tuple[str, str], Conversion]:
-    m = f"{SIM}/msg"
-    same = Conversion(_same, _same)
-    return {
-        ("rosgraph_msgs/msg/Clock", f"{m}/Clock"): Conversion(_clock, _clock_to_sim),
-        ("geometry_msgs/msg/Twist", f"{m}/Twist"): same,
-        ("geometry_msgs/msg/TwistStamped", f"{m}/Twist"): Conversion(
-            _via(f"{m}/Twist", "geometry_msgs/msg/TwistStamped", lambda t: {"twist": _twist(t)}),
-            _via("geometry_msgs/msg/TwistStamped", f"{m}/Twist", lambda t: _twist(t.twist))),
-        ("nav_msgs/msg/Odometry", f"{m}/Odometry"): Conversion(_odometry_bytes_to_ros,
-                                                              _odometry_bytes_to_sim),
-        ("tf2_msgs/msg/TFMessage", f"{m}/PoseV"): Conversion(
-            _via(f"{m}/PoseV", "tf2_msgs/msg/TFMessage", _tf), None),
-        ("sensor_msgs/msg/JointState", f"{m}/Model"): Conversion(
-            _via(f"{m}/Model", "sensor_msgs/msg/JointState", _joint_state), None),
-        ("geometry_msgs/msg/Pose", f"{m}/Pose"): Conversion(
-            _via(f"{m}/Pose", "geometry_msgs/msg/Pose", lambda p: _pose(p.pose)),
-            _via("geometry_msgs/msg/Pose", f"{m}/Pose", lambda p: {"pose": _pose(p)})),
-        ("geometry_msgs/msg/PoseStamped", f"{m}/Pose"): Conversion(
-            _via(f"{m}/Pose", "geometry_msgs/msg/PoseStamped",
-                 lambda p: {"header": _header(p.header), "pose": _pose(p.pose)}),
-            _via("geometry_msgs/msg/PoseStamped", f"{m}/Pose",
-                 lambda p: {"header": _header(p.header), "pose": _pose(p.pose)})),
-        ("std_msgs/msg/Float64", f"{m}/Double"): same,
-        ("std_msgs/msg/Float32", f"{m}/Float"): same,
-        ("std_msgs/msg/Bool", f"{m}/Boolean"): same,
-        ("std_msgs/msg/Int32", f"{m}/Int32"): same,
-        ("std_msgs/msg/String", f"{m}/StringMsg"): same,
-        ("std_msgs/msg/Empty", f"{m}/Empty"): same,
-        # sensors (the sim's types are laid out as ROS's: the bytes pass through)
-        ("sensor_msgs/msg/Imu", f"{m}/IMU"): same,
-        ("sensor_msgs/msg/MagneticField", f"{m}/Magnetometer"): same,
-        ("sensor_msgs/msg/FluidPressure", f"{m}/FluidPressure"): same,
-        ("sensor_msgs/msg/BatteryState", f"{m}/BatteryState"): same,
-        ("trajectory_msgs/msg/JointTrajectory", f"{m}/JointTrajectory"): same,
-        ("sensor_msgs/msg/LaserScan", f"{m}/LaserScan"): Conversion(
-            _via(f"{m}/LaserScan", "sensor_msgs/msg/LaserScan", _scan_to_ros),
-            _via("sensor_msgs/msg/LaserScan", f"{m}/LaserScan", _scan_to_sim)),
-        ("sensor_msgs/msg/PointCloud2", f"{m}/PointCloudPacked"): same,
-        ("sensor_msgs/msg/Image", f"{m}/Image"): same,
-        ("sensor_msgs/msg/CameraInfo", f"{m}/CameraInfo"): same,
-        ("ros_gz_interfaces/msg/Altimeter", f"{m}/Altimeter"): same,
-        ("ros_gz_interfaces/msg/Contacts", f"{m}/Contacts"): same,
-        ("ros_gz_interfaces/msg/AirSpeed", f"{m}/AirSpeedSensor"): same,
-        ("geometry_msgs/msg/WrenchStamped", f"{m}/Wrench"): same,
-        ("geometry_msgs/msg/Wrench", f"{m}/Wrench"): Conversion(
-            _via(f"{m}/Wrench", "geometry_msgs/msg/Wrench", lambda w: _wrench(w.wrench)),
-            _via("geometry_msgs/msg/Wrench", f"{m}/Wrench", lambda w: {"wrench": _wrench(w)})),
-        ("sensor_msgs/msg/NavSatFix", f"{m}/NavSat"): Conversion(
-            _via(f"{m}/NavSat", "sensor_msgs/msg/NavSatFix", _nav_sat_fix),
-            _via("sensor_msgs/msg/NavSatFix", f"{m}/NavSat", lambda f: {
-                "header": _header(f.header), "latitude_deg": f.latitude,
-                "longitude_deg": f.longitude, "altitude": f.altitude})),
-        ("gps_msgs/msg/GPSFix", f"{m}/NavSat"): Conversion(
-            _via(f"{m}/NavSat", "gps_msgs/msg/GPSFix", _gps_fix),
-            _via("gps_msgs/msg/GPSFix", f"{m}/NavSat", _nav_sat_of_gps_fix)),
-    }
-
-
 def _nav_sat_fix(n: Any) -> dict[str, Any]:
     """gz.msgs.NavSat as ros_gz_bridge writes NavSatFix: a fix from GPS, its covariance
     unknown."""
@@ -292,12 +234,76 @@ def _gps_fix(n: Any) -> dict[str, Any]:
             "position_covariance_type": 0}
 
 
+def _nav_sat_of_fix(f: Any) -> dict[str, Any]:
+    return {"header": _header(f.header), "latitude_deg": f.latitude,
+            "longitude_deg": f.longitude, "altitude": f.altitude}
+
+
 def _nav_sat_of_gps_fix(g: Any) -> dict[str, Any]:
     track = math.radians(g.track)
     return {"header": _header(g.header), "latitude_deg": g.latitude,
             "longitude_deg": g.longitude, "altitude": g.altitude,
             "velocity_east": math.sin(track) * g.speed,
             "velocity_north": math.cos(track) * g.speed, "velocity_up": g.climb}
+
+
+def _stamped_pose(p: Any) -> dict[str, Any]:
+    return {"header": _header(p.header), "pose": _pose(p.pose)}
+
+
+# (ROS type, the sim's type's short name) → how one becomes the other: on the bytes (a
+# Conversion; _SAME: the layouts are the same, the bytes pass through), or through plain
+# objects, (to ROS, to the sim) each building the other's fields (None: one way only)
+_SAME = Conversion(_same, _same)
+_TABLE: dict[tuple[str, str], Conversion | tuple[Build, Build | None]] = {
+    ("rosgraph_msgs/msg/Clock", "Clock"): Conversion(_clock, _clock_to_sim),
+    ("geometry_msgs/msg/Twist", "Twist"): _SAME,
+    ("geometry_msgs/msg/TwistStamped", "Twist"): (lambda t: {"twist": _twist(t)},
+                                                  lambda t: _twist(t.twist)),
+    ("nav_msgs/msg/Odometry", "Odometry"): Conversion(_odometry_bytes_to_ros,
+                                                      _odometry_bytes_to_sim),
+    ("tf2_msgs/msg/TFMessage", "PoseV"): (_tf, None),
+    ("sensor_msgs/msg/JointState", "Model"): (_joint_state, None),
+    ("geometry_msgs/msg/Pose", "Pose"): (lambda p: _pose(p.pose), lambda p: {"pose": _pose(p)}),
+    ("geometry_msgs/msg/PoseStamped", "Pose"): (_stamped_pose, _stamped_pose),
+    ("std_msgs/msg/Float64", "Double"): _SAME,
+    ("std_msgs/msg/Float32", "Float"): _SAME,
+    ("std_msgs/msg/Bool", "Boolean"): _SAME,
+    ("std_msgs/msg/Int32", "Int32"): _SAME,
+    ("std_msgs/msg/String", "StringMsg"): _SAME,
+    ("std_msgs/msg/Empty", "Empty"): _SAME,
+    # sensors
+    ("sensor_msgs/msg/Imu", "IMU"): _SAME,
+    ("sensor_msgs/msg/MagneticField", "Magnetometer"): _SAME,
+    ("sensor_msgs/msg/FluidPressure", "FluidPressure"): _SAME,
+    ("sensor_msgs/msg/BatteryState", "BatteryState"): _SAME,
+    ("trajectory_msgs/msg/JointTrajectory", "JointTrajectory"): _SAME,
+    ("sensor_msgs/msg/LaserScan", "LaserScan"): (_scan_to_ros, _scan_to_sim),
+    ("sensor_msgs/msg/PointCloud2", "PointCloudPacked"): _SAME,
+    ("sensor_msgs/msg/Image", "Image"): _SAME,
+    ("sensor_msgs/msg/CameraInfo", "CameraInfo"): _SAME,
+    ("ros_gz_interfaces/msg/Altimeter", "Altimeter"): _SAME,
+    ("ros_gz_interfaces/msg/Contacts", "Contacts"): _SAME,
+    ("ros_gz_interfaces/msg/AirSpeed", "AirSpeedSensor"): _SAME,
+    ("geometry_msgs/msg/WrenchStamped", "Wrench"): _SAME,
+    ("geometry_msgs/msg/Wrench", "Wrench"): (lambda w: _wrench(w.wrench),
+                                             lambda w: {"wrench": _wrench(w)}),
+    ("sensor_msgs/msg/NavSatFix", "NavSat"): (_nav_sat_fix, _nav_sat_of_fix),
+    ("gps_msgs/msg/GPSFix", "NavSat"): (_gps_fix, _nav_sat_of_gps_fix),
+}
+
+
+def conversions() -> dict[tuple[str, str], Conversion]:
+    """(ROS type, the sim's type) → its Conversion, for each pair the bridge converts."""
+    found = {}
+    for (ros, short), way in _TABLE.items():
+        sim = f"{SIM}/msg/{short}"
+        if not isinstance(way, Conversion):
+            to_ros, to_sim = way
+            way = Conversion(_via(sim, ros, to_ros),
+                             None if to_sim is None else _via(ros, sim, to_sim))
+        found[(ros, sim)] = way
+    return found
 
 
 def known_ros_type(name: str) -> str:

@@ -6,10 +6,10 @@ rostest asked (`--gtest_output=xml:PATH`), as rostest.rosrun writes it."""
 
 from __future__ import annotations
 
-import sys
 import time
 import unittest
-from typing import Any
+
+from launcher.nodes.rostest_node import published_type, run, start_node
 
 NAME = "hztest"
 
@@ -18,9 +18,7 @@ class HzTest(unittest.TestCase):
     def test_hz(self) -> None:
         import rospy
 
-        rospy.init_node(NAME, anonymous=True)
-        topic = rospy.get_param("~topic", None)
-        self.assertTrue(topic, "hztest needs the private parameter ~topic")
+        topic = start_node(self, NAME, "~topic", "hztest needs the private parameter ~topic")
         expected = float(rospy.get_param("~hz"))
         error = float(rospy.get_param("~hzerror", 0.0))
         duration = float(rospy.get_param("~test_duration", 5.0))
@@ -45,25 +43,8 @@ class HzTest(unittest.TestCase):
                              f"{topic}: {rate:.2f} Hz, expected {expected:g} ± {error:g} Hz")
 
 
-def published_type(rospy: Any, topic: str, wait: float) -> Any:
-    """The message class of `topic` once someone publishes it (None if none does in time)."""
-    import importlib
-
-    name = rospy.resolve_name(topic)
-    deadline = time.monotonic() + wait
-    while time.monotonic() < deadline:
-        found = dict(rospy.get_published_topics()).get(name)
-        if found:
-            package, kind = found.split("/")[0], found.split("/")[-1]
-            return getattr(importlib.import_module(f"{package}.msg"), kind)
-        time.sleep(0.1)
-    return None
-
-
-def main(argv: list[str] | None = None) -> Any:
-    import rostest
-
-    rostest.rosrun("rostest", NAME, HzTest, sys.argv if argv is None else argv)
+def main(argv: list[str] | None = None) -> None:
+    run(NAME, HzTest, argv)
 
 
 if __name__ == "__main__":

@@ -5,10 +5,10 @@ as rostest's: `~param_name_target` (required), `~param_value_expected`, `~wait_t
 
 from __future__ import annotations
 
-import sys
 import time
 import unittest
-from typing import Any
+
+from launcher.nodes.rostest_node import run, start_node
 
 NAME = "paramtest"
 
@@ -17,9 +17,8 @@ class ParamTest(unittest.TestCase):
     def test_param(self) -> None:
         import rospy
 
-        rospy.init_node(NAME, anonymous=True)
-        target = rospy.get_param("~param_name_target", None)
-        self.assertTrue(target, "paramtest needs the private parameter ~param_name_target")
+        target = start_node(self, NAME, "~param_name_target",
+                            "paramtest needs the private parameter ~param_name_target")
         wait = float(rospy.get_param("~wait_time", 20.0))
         deadline = time.monotonic() + wait
         while not rospy.has_param(target) and time.monotonic() < deadline:
@@ -32,10 +31,8 @@ class ParamTest(unittest.TestCase):
                              f"parameter {target}")
 
 
-def main(argv: list[str] | None = None) -> Any:
-    import rostest
-
-    rostest.rosrun("rostest", NAME, ParamTest, sys.argv if argv is None else argv)
+def main(argv: list[str] | None = None) -> None:
+    run(NAME, ParamTest, argv)
 
 
 if __name__ == "__main__":

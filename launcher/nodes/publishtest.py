@@ -4,11 +4,9 @@
 
 from __future__ import annotations
 
-import sys
 import unittest
-from typing import Any
 
-from launcher.nodes.hztest import published_type
+from launcher.nodes.rostest_node import published_type, run, start_node
 
 NAME = "publishtest"
 
@@ -17,10 +15,8 @@ class PublishTest(unittest.TestCase):
     def test_publish(self) -> None:
         import rospy
 
-        rospy.init_node(NAME, anonymous=True)
-        topics = rospy.get_param("~topics", None)
-        self.assertTrue(topics, "publishtest needs the private parameter ~topics: a list of "
-                                "{name: TOPIC, timeout: SECONDS, negative: false}")
+        topics = start_node(self, NAME, "~topics", "publishtest needs the private parameter "
+                            "~topics: a list of {name: TOPIC, timeout: SECONDS, negative: false}")
         for topic in topics:
             name, timeout = topic["name"], float(topic.get("timeout", 10.0))
             negative = bool(topic.get("negative", False))
@@ -31,10 +27,8 @@ class PublishTest(unittest.TestCase):
                 self.assertTrue(heard, f"{name} was not published within {timeout:g} s")
 
 
-def main(argv: list[str] | None = None) -> Any:
-    import rostest
-
-    rostest.rosrun("rostest", NAME, PublishTest, sys.argv if argv is None else argv)
+def main(argv: list[str] | None = None) -> None:
+    run(NAME, PublishTest, argv)
 
 
 if __name__ == "__main__":

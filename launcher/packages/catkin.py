@@ -22,6 +22,7 @@ from pathlib import Path
 from launcher.errors import LaunchError, Location
 from launcher.packages.manifest import Package, read_manifest
 
+_CMAKE_LISTS = "CMakeLists.txt"
 SKIPPED = {"build", "devel", "install", "log", ".git", "__pycache__"}
 _TARGET = re.compile(r"\b(add_executable|add_library)\s*\(\s*([^\s)]+)([^)]*)\)", re.I)
 _INSTALL_PYTHON = re.compile(r"\bcatkin_install_python\s*\(\s*PROGRAMS([^)]*)\)", re.I)
@@ -47,31 +48,31 @@ def packages(source: Path) -> list[Package]:
     return sorted(found, key=lambda p: p.name)
 
 
+def _cmake_lists(package: Package) -> str:
+    """The text of the package's CMakeLists.txt ('' where it has none)."""
+    cmake = package.path / _CMAKE_LISTS
+    return cmake.read_text(encoding="utf-8", errors="replace") if cmake.is_file() else ""
+
+
 def cxx_targets(package: Package) -> list[tuple[Location, str, str]]:
     """(where, command, target) for each C++ target the package's CMakeLists.txt makes."""
-    cmake = package.path / "CMakeLists.txt"
-    if not cmake.is_file():
-        return []
-    text = cmake.read_text(encoding="utf-8", errors="replace")
+    text = _cmake_lists(package)
     found = []
     for match in _TARGET.finditer(text):
         rest = match.group(3).split()
         if rest[:1] and rest[0].upper() in ("IMPORTED", "ALIAS", "INTERFACE"):
             continue
         line = text.count("\n", 0, match.start()) + 1
-        found.append((Location(str(cmake), line), match.group(1).lower(), match.group(2)))
+        found.append((Location(str(package.path / _CMAKE_LISTS), line),
+                      match.group(1).lower(), match.group(2)))
     return found
 
 
 def rostests(package: Package) -> list[tuple[Path, list[str]]]:
     """The package's `add_rostest(FILE [ARGS name:=value …])`: each .test file and its
     arguments, as `catkin_make run_tests` runs them."""
-    cmake = package.path / "CMakeLists.txt"
-    if not cmake.is_file():
-        return []
-    text = cmake.read_text(encoding="utf-8", errors="replace")
     found = []
-    for match in _ROSTEST.finditer(text):
+    for match in _ROSTEST.finditer(_cmake_lists(package)):
         words = match.group(2).split()
         arguments = words[words.index("ARGS") + 1:] if "ARGS" in words else []
         found.append((package.path / match.group(1), [w for w in arguments if ":=" in w]))
@@ -81,16 +82,13 @@ def rostests(package: Package) -> list[tuple[Path, list[str]]]:
 def python_scripts(package: Package) -> list[Path]:
     """`scripts/*.py` and what `catkin_install_python(PROGRAMS …)` names."""
     found = sorted((package.path / "scripts").glob("*.py"))
-    cmake = package.path / "CMakeLists.txt"
-    if cmake.is_file():
-        text = cmake.read_text(encoding="utf-8", errors="replace")
-        for match in _INSTALL_PYTHON.finditer(text):
-            for word in match.group(1).split():
-                if word.upper() == "DESTINATION":
-                    break
-                path = package.path / word
-                if path.is_file() and path not in found:
-                    found.append(path)
+    for match in _INSTALL_PYTHON.finditer(_cmake_lists(package)):
+        for word in match.group(1).split():
+            if word.upper() == "DESTINATION":
+                break
+            path = package.path / word
+            if path.is_file() and path not in found:
+                found.append(path)
     return found
 
 

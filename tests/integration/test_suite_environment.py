@@ -1,5 +1,5 @@
-"""The suite builds the environment it checks (tests/environment.py): a real ROS or Gazebo
-tool on the machine is never what a test reaches."""
+"""The suite builds the environment it checks (tests/support/environment.py): a real ROS or
+Gazebo tool on the machine is never what a test reaches."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from tests import environment
-from tests.environment import REAL_TOOLS, REPO, clean_path, real_tools_in
+from tests.support import environment
+from tests.support.environment import REAL_TOOLS, REPO, clean_path, real_tools_in
 
 MARKER = "FAKE-REAL-ROSPARAM-REACHED"
 

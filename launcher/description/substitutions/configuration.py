@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
+from launcher.description.substitutions.lookup import Lookup
 from launcher.errors import did_you_mean
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
@@ -12,49 +14,37 @@ from launcher.runtime.context import LaunchContext
 
 @substitution("var")
 @dataclass(frozen=True)
-class LaunchConfiguration(Substitution):
+class LaunchConfiguration(Lookup):
     """The value of a launch argument or `let` (roslaunch's `$(arg)` is read as it)."""
 
-    name: Text_
-    default: Text_ | None = None
+    def _values(self, context: LaunchContext) -> Mapping[str, str]:
+        return context.configurations
 
-    def perform(self, context: LaunchContext) -> str:
-        name = perform_text(context, self.name)
-        if name in context.configurations:
-            return context.configurations[name]
-        if self.default is not None:
-            return perform_text(context, self.default)
-        hint = did_you_mean(name, context.configurations)
-        raise self.fail(
-            f"launch configuration '{name}' is not set{hint}; declare it with an 'arg' or "
-            f"'let', pass {name}:=VALUE, or give a default: $(var {name} DEFAULT)"
-        )
+    def _unset(self, name: str, values: Mapping[str, str]) -> str:
+        return (f"launch configuration '{name}' is not set{did_you_mean(name, values)}; "
+                f"declare it with an 'arg' or 'let', pass {name}:=VALUE, or give a default: "
+                f"$(var {name} DEFAULT)")
+
+
+_LOOP = "for:"  # (a loop variable's key among the context's locals)
 
 
 def loop_key(name: str) -> str:
-    return f"for:{name}"
+    return _LOOP + name
 
 
 @substitution("for-var")
 @dataclass(frozen=True)
-class ForEachVar(Substitution):
+class ForEachVar(Lookup):
     """A value of the current `for_each` iteration."""
 
-    name: Text_
-    default: Text_ | None = None
+    def _values(self, context: LaunchContext) -> Mapping[str, str]:
+        return {key[len(_LOOP):]: value for key, value in context.locals.items()
+                if key.startswith(_LOOP)}
 
-    def perform(self, context: LaunchContext) -> str:
-        name = perform_text(context, self.name)
-        key = loop_key(name)
-        if key in context.locals:
-            return context.locals[key]
-        if self.default is not None:
-            return perform_text(context, self.default)
-        known = [k[4:] for k in context.locals if k.startswith("for:")]
-        raise self.fail(
-            f"loop variable '{name}' is not set{did_you_mean(name, known)}; "
-            "$(for-var) works inside a 'for_each' (or 'for') block"
-        )
+    def _unset(self, name: str, values: Mapping[str, str]) -> str:
+        return (f"loop variable '{name}' is not set{did_you_mean(name, values)}; "
+                "$(for-var) works inside a 'for_each' (or 'for') block")
 
 
 @substitution("index")

@@ -19,9 +19,9 @@ from launcher.user_files import read_text
 
 
 def _current_file(sub: Substitution, context: LaunchContext) -> Path:
-    if context.current_file is None:
+    if context.files.current is None:
         raise sub.fail(f"{sub.names[0]} is only known inside a launch file")
-    return context.current_file
+    return context.files.current
 
 
 @substitution("dirname")
@@ -52,8 +52,8 @@ class FileContent(Substitution):
     def perform(self, context: LaunchContext) -> str:
         raw = perform_text(context, self.path)
         path = Path(raw)
-        if not path.is_absolute() and context.current_file is not None:
-            path = context.current_file.parent / path
+        if not path.is_absolute() and context.files.current is not None:
+            path = context.files.current.parent / path
         try:
             return read_text(path)
         except FileNotFoundError:

@@ -6,6 +6,8 @@ booleans, as numbers when both are numbers, else as text. Results are `true`/`fa
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from launcher.description.condition import evaluate_condition_text
 from launcher.description.substitution import (
     Substitution,
@@ -41,13 +43,18 @@ class NotSubstitution(Substitution):
         return _text(not _bool(self, context, self.value))
 
 
-@substitution("and")
 @dataclass(frozen=True)
-class AndSubstitution(Substitution):
-    """`true` when both are true."""
+class _Connective(Substitution):
+    """Two truths joined (`and`, `or`)."""
 
     left: Text_
     right: Text_
+
+
+@substitution("and")
+@dataclass(frozen=True)
+class AndSubstitution(_Connective):
+    """`true` when both are true."""
 
     def perform(self, context: LaunchContext) -> str:
         return _text(_bool(self, context, self.left) and _bool(self, context, self.right))
@@ -55,11 +62,8 @@ class AndSubstitution(Substitution):
 
 @substitution("or")
 @dataclass(frozen=True)
-class OrSubstitution(Substitution):
+class OrSubstitution(_Connective):
     """`true` when either is true."""
-
-    left: Text_
-    right: Text_
 
     def perform(self, context: LaunchContext) -> str:
         return _text(_bool(self, context, self.left) or _bool(self, context, self.right))
@@ -120,23 +124,19 @@ class EqualsSubstitution(Substitution):
 
     left: Text_
     right: Text_
+    _negated: ClassVar[bool] = False  # (not-equals)
 
     def perform(self, context: LaunchContext) -> str:
-        return _text(texts_equal(perform_text(context, self.left),
-                                 perform_text(context, self.right)))
+        equal = texts_equal(perform_text(context, self.left), perform_text(context, self.right))
+        return _text(equal != self._negated)
 
 
 @substitution("not-equals")
 @dataclass(frozen=True)
-class NotEqualsSubstitution(Substitution):
-    """The opposite of `equals`."""
+class NotEqualsSubstitution(EqualsSubstitution):
+    """The opposite of `equals` (launch's is an EqualsSubstitution too)."""
 
-    left: Text_
-    right: Text_
-
-    def perform(self, context: LaunchContext) -> str:
-        return _text(not texts_equal(perform_text(context, self.left),
-                                     perform_text(context, self.right)))
+    _negated = True
 
 
 @substitution("if")

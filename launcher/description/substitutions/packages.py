@@ -5,9 +5,12 @@ set_parameter)."""
 from __future__ import annotations
 
 import shlex
+from collections.abc import Mapping
+from typing import ClassVar
 
 from launcher.description.parameters import global_parameters
 from launcher.description.substitution import Substitution, Text_, perform_text, substitution
+from launcher.description.substitutions.lookup import Lookup
 from launcher.errors import LaunchError
 from launcher.packages.executables import find_executable
 from launcher.records import dataclass
@@ -20,34 +23,35 @@ def _index(sub: Substitution, context: LaunchContext):
     return context.packages
 
 
-def _lookup(sub: Substitution, context: LaunchContext, what: str, package: Text_) -> str:
-    """`share` or `prefix` of the package, with errors placed at the substitution."""
-    try:
-        return str(getattr(_index(sub, context), what)(perform_text(context, package)))
-    except LaunchError as exc:
-        raise exc.at(sub.where) from None
+@dataclass(frozen=True)
+class _PackageFolder(Substitution):
+    """A folder of the package: the index's `share` or `prefix` of it."""
+
+    package: Text_
+    _folder: ClassVar[str]
+
+    def perform(self, context: LaunchContext) -> str:
+        find = getattr(_index(self, context), self._folder)
+        try:
+            return str(find(perform_text(context, self.package)))
+        except LaunchError as exc:
+            raise exc.at(self.where) from None
 
 
 @substitution("find-pkg-share")
 @dataclass(frozen=True)
-class FindPackageShare(Substitution):
+class FindPackageShare(_PackageFolder):
     """The package's folder (packages are used in place)."""
 
-    package: Text_
-
-    def perform(self, context: LaunchContext) -> str:
-        return _lookup(self, context, "share", self.package)
+    _folder = "share"
 
 
 @substitution("find-pkg-prefix")
 @dataclass(frozen=True)
-class FindPackagePrefix(Substitution):
+class FindPackagePrefix(_PackageFolder):
     """A prefix whose share/<package> is the package."""
 
-    package: Text_
-
-    def perform(self, context: LaunchContext) -> str:
-        return _lookup(self, context, "prefix", self.package)
+    _folder = "prefix"
 
 
 @substitution("exec-in-pkg")
@@ -69,19 +73,13 @@ class ExecutableInPackage(Substitution):
 
 @substitution("param")
 @dataclass(frozen=True)
-class Parameter(Substitution):
+class Parameter(Lookup):
     """A global parameter set earlier with set_parameter."""
 
-    name: Text_
-    default: Text_ | None = None
+    def _values(self, context: LaunchContext) -> Mapping[str, str]:
+        return {name: str(value).lower() if isinstance(value, bool) else str(value)
+                for name, value in global_parameters(context).items()}
 
-    def perform(self, context: LaunchContext) -> str:
-        name = perform_text(context, self.name)
-        parameters = dict(global_parameters(context))
-        if name in parameters:
-            value = parameters[name]
-            return str(value).lower() if isinstance(value, bool) else str(value)
-        if self.default is not None:
-            return perform_text(context, self.default)
-        raise self.fail(f"parameter '{name}' is not set; set it with set_parameter or give a "
-                        f"default: $(param {name} DEFAULT)")
+    def _unset(self, name: str, values: Mapping[str, str]) -> str:
+        return (f"parameter '{name}' is not set; set it with set_parameter or give a "
+                f"default: $(param {name} DEFAULT)")

@@ -35,21 +35,21 @@ endmacro()
 cmake_language(SET_DEPENDENCY_PROVIDER launcher_provide_dependency
   SUPPORTED_METHODS FIND_PACKAGE)
 
-function(_launcher_no_cxx command name)
-  message(FATAL_ERROR "launcher: ${command}(${name}): package '${PROJECT_NAME}' compiles "
-    "C/C++, which launcher's builds do not (no compiler is used, and C++ nodes and Gazebo "
-    "plugins do not run on launcher): write the node in Python (rclpy, rospy), or drive the "
-    "sim through its services and Python plugins")
+# A target that compiles nothing (its first argument IMPORTED, ALIAS, …: `compiles_nothing`)
+# passes; any other stops the build.
+function(_launcher_no_cxx command name first compiles_nothing)
+  if(NOT "${first}" MATCHES "^(${compiles_nothing})$")
+    message(FATAL_ERROR "launcher: ${command}(${name}): package '${PROJECT_NAME}' compiles "
+      "C/C++, which launcher's builds do not (no compiler is used, and C++ nodes and Gazebo "
+      "plugins do not run on launcher): write the node in Python (rclpy, rospy), or drive the "
+      "sim through its services and Python plugins")
+  endif()
 endfunction()
 function(add_executable name)
-  if(NOT "${ARGV1}" MATCHES "^(IMPORTED|ALIAS)$")
-    _launcher_no_cxx(add_executable ${name})
-  endif()
+  _launcher_no_cxx(add_executable "${name}" "${ARGV1}" "IMPORTED|ALIAS")
   _add_executable(${ARGV})
 endfunction()
 function(add_library name)
-  if(NOT "${ARGV1}" MATCHES "^(IMPORTED|ALIAS|INTERFACE)$")
-    _launcher_no_cxx(add_library ${name})
-  endif()
+  _launcher_no_cxx(add_library "${name}" "${ARGV1}" "IMPORTED|ALIAS|INTERFACE")
   _add_library(${ARGV})
 endfunction()

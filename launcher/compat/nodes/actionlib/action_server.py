@@ -159,19 +159,13 @@ class ActionServer:
     def publish_result(self, status: Any, result: Any) -> None:
         """The goal's result on `<ns>/result`, then the status list."""
         with self.lock:
-            message = self.ActionResult(status=status, result=result)
-            message.header.stamp = rospy.Time.now()
-            if not rospy.is_shutdown():
-                self.result_pub.publish(message)
+            _send(self.result_pub, self.ActionResult(status=status, result=result))
             self.publish_status()
 
     def publish_feedback(self, status: Any, feedback: Any) -> None:
         """A goal's feedback on `<ns>/feedback`, with its status."""
         with self.lock:
-            message = self.ActionFeedback(status=status, feedback=feedback)
-            message.header.stamp = rospy.Time.now()
-            if not rospy.is_shutdown():
-                self.feedback_pub.publish(message)
+            _send(self.feedback_pub, self.ActionFeedback(status=status, feedback=feedback))
 
     def publish_status_async(self, event: Any) -> None:
         """The status timer's callback (nothing before start())."""
@@ -185,11 +179,17 @@ class ActionServer:
             now = rospy.Time.now()
             self.status_list = [tracker for tracker in self.status_list
                                 if not _expired(tracker, self.status_list_timeout, now)]
-            array = GoalStatusArray(status_list=[tracker.status
-                                                 for tracker in self.status_list])
-            array.header.stamp = now
-            if not rospy.is_shutdown():
-                self.status_pub.publish(array)
+            _send(self.status_pub,
+                  GoalStatusArray(status_list=[tracker.status for tracker in self.status_list]),
+                  now)
+
+
+def _send(publisher: Any, message: Any, stamp: Any = None) -> None:
+    """Publish the message stamped `stamp` (now, by default); nothing once rospy is shut
+    down."""
+    message.header.stamp = rospy.Time.now() if stamp is None else stamp
+    if not rospy.is_shutdown():
+        publisher.publish(message)
 
 
 def _covers(cancel: Any, goal_id: Any) -> bool:

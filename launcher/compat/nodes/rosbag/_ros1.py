@@ -14,6 +14,7 @@ class from the bag's definition.
 from __future__ import annotations
 
 import array
+import functools
 from collections.abc import Callable
 from typing import Any
 
@@ -92,37 +93,22 @@ class Ros1Types:
         return name, bytes(self.store.serialize_ros1(theirs, name))
 
     def _to_rosbags(self, message: Any, name: str) -> Any:
-        values = []
-        for field, (kind, detail) in self._fields(name):
-            value = getattr(message, field)
-            if kind == kinds.NAME:
-                value = self._to_rosbags(value, detail)
-            elif kind in (kinds.ARRAY, kinds.SEQUENCE):
-                (inner, inner_detail), _ = detail
-                if inner == kinds.NAME:
-                    value = [self._to_rosbags(item, inner_detail) for item in value]
-                elif inner_detail[0] in TYPECODES:
-                    value = numpy.asarray(value, dtype=_DTYPES.get(inner_detail[0],
-                                                                   inner_detail[0]))
-                else:
-                    value = list(value)
-            values.append(value)
+        def numbers(value: Any, _kind: int, code: str) -> Any:
+            if code in TYPECODES:
+                return numpy.asarray(value, dtype=_DTYPES.get(code, code))
+            return list(value)
+
+        values = _field_values(message, self._fields(name), self._to_rosbags, numbers)
         return self.store.types[name](*values)
 
     def _from_rosbags(self, theirs: Any, name: str) -> Any:
-        values = []
-        for field, (kind, detail) in self.store.fielddefs[name][1]:
-            value = getattr(theirs, field)
-            if kind == kinds.NAME:
-                value = self._from_rosbags(value, detail)
-            elif kind in (kinds.ARRAY, kinds.SEQUENCE):
-                (inner, inner_detail), _ = detail
-                if inner == kinds.NAME:
-                    value = [self._from_rosbags(item, inner_detail) for item in value]
-                elif inner_detail[0] in TYPECODES and kind == kinds.SEQUENCE:
-                    value = array.array(TYPECODES[inner_detail[0]], value.tobytes())
-            values.append(value)
-        return self._make(name, values)
+        def numbers(value: Any, kind: int, code: str) -> Any:
+            if code in TYPECODES and kind == kinds.SEQUENCE:
+                return array.array(TYPECODES[code], value.tobytes())
+            return value
+
+        fields = self.store.fielddefs[name][1]
+        return self._make(name, _field_values(theirs, fields, self._from_rosbags, numbers))
 
     # --- reading ----------------------------------------------------------------------------
     def reader(self, type_name: str, md5sum: str, msgdef: str) -> tuple[Reader, Any]:
@@ -166,12 +152,25 @@ class Ros1Types:
         return store
 
 
-_types: Ros1Types | None = None
+def _field_values(message: Any, fields: list[tuple[str, Any]],
+                  nested: Callable[[Any, Any], Any],
+                  numbers: Callable[[Any, int, str], Any]) -> list[Any]:
+    """Each of the `fields` of `message`, converted: a message within by `nested` (each one of
+    an array too), any other array by `numbers(value, its kind, the items' type)`."""
+    values = []
+    for field, (kind, detail) in fields:
+        value = getattr(message, field)
+        if kind == kinds.NAME:
+            value = nested(value, detail)
+        elif kind in (kinds.ARRAY, kinds.SEQUENCE):
+            (inner, inner_detail), _ = detail
+            value = ([nested(item, inner_detail) for item in value] if inner == kinds.NAME
+                     else numbers(value, kind, inner_detail[0]))
+        values.append(value)
+    return values
 
 
+@functools.cache
 def ros1_types() -> Ros1Types:
     """The process's ROS 1 types (made on first use)."""
-    global _types
-    if _types is None:
-        _types = Ros1Types()
-    return _types
+    return Ros1Types()
