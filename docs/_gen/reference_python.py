@@ -54,10 +54,20 @@ def page() -> str:
                 parts.append(f"### {code(node.name)}\n")
                 if ast.get_docstring(node):
                     parts.append(ast.get_docstring(node) + "\n")
-                parts += [text for f in node.body
-                          if isinstance(f, ast.FunctionDef | ast.AsyncFunctionDef) and
-                          public(f.name) and (text := entry(f, "####"))]
+                parts += [text for f in node.body if (text := member(f))]
     return "\n".join(parts)
+
+
+def member(node: ast.stmt) -> str:
+    """A class member's entry: a public method, or a property made by rclpy's properties.py
+    (`name = readonly(path, doc)`, `stored(attr, doc, …)`); "" for anything else."""
+    if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+        return entry(node, "####") if public(node.name) else ""
+    if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call) and \
+            ast.unparse(node.value.func) in ("readonly", "stored") and \
+            isinstance(node.targets[0], ast.Name) and public(node.targets[0].id):
+        return f"#### {code(node.targets[0].id)}\n\n{ast.literal_eval(node.value.args[1])}\n"
+    return ""
 
 
 def public(name: str) -> bool:

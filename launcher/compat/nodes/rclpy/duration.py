@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 from rclpy.constants import S_TO_NS  # noqa: F401 - as rclpy's module offers it
+from rclpy.properties import readonly
 
 _S = 1_000_000_000
 
 
+@functools.total_ordering
 class Duration:
     __slots__ = ("_nanoseconds",)
 
@@ -18,10 +21,7 @@ class Duration:
             raise OverflowError("Total nanoseconds value is too large to store in C duration.")
         self._nanoseconds = total
 
-    @property
-    def nanoseconds(self) -> int:
-        """The duration in nanoseconds."""
-        return self._nanoseconds
+    nanoseconds = readonly("_nanoseconds", "The duration in nanoseconds.")
 
     def __repr__(self) -> str:
         return f"Duration(nanoseconds={self._nanoseconds})"
@@ -35,16 +35,9 @@ class Duration:
         return NotImplemented
 
     def __lt__(self, other: Duration) -> bool:
-        return self._nanoseconds < _ns(other)
-
-    def __le__(self, other: Duration) -> bool:
-        return self._nanoseconds <= _ns(other)
-
-    def __gt__(self, other: Duration) -> bool:
-        return self._nanoseconds > _ns(other)
-
-    def __ge__(self, other: Duration) -> bool:
-        return self._nanoseconds >= _ns(other)
+        if not isinstance(other, Duration):
+            raise TypeError("Can't compare duration with object of type: ", type(other))
+        return self._nanoseconds < other._nanoseconds
 
     def __hash__(self) -> int:
         return hash(self._nanoseconds)
@@ -79,12 +72,6 @@ class Duration:
     def get_c_duration(self) -> Duration:
         """The duration itself (rclpy hands its C object here)."""
         return self
-
-
-def _ns(other: Any) -> int:
-    if not isinstance(other, Duration):
-        raise TypeError("Can't compare duration with object of type: ", type(other))
-    return other._nanoseconds
 
 
 Infinite = Duration(nanoseconds=2**63 - 1)

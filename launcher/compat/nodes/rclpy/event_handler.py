@@ -14,7 +14,11 @@ from launcher.records import dataclass
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
 from rclpy.exceptions import RCLError
 from rclpy.logging import get_logger  # noqa: F401
-from rclpy.matched import QoSPublisherMatchedInfo, QoSSubscriptionMatchedInfo  # noqa: F401
+from rclpy.matched import (  # noqa: F401 - QoS…MatchedInfo as rclpy's module offers them
+    QoSPublisherMatchedInfo,
+    QoSSubscriptionMatchedInfo,
+    StatusCounts,
+)
 from rclpy.qos import qos_policy_name_from_kind  # noqa: F401
 from rclpy.waitable import NumberOfEntities, Waitable
 
@@ -40,10 +44,8 @@ class QoSSubscriptionEventType(IntEnum):
     RCL_SUBSCRIPTION_MATCHED = 5
 
 
-@dataclass
-class QoSRequestedDeadlineMissedInfo:
-    total_count: int = 0
-    total_count_change: int = 0
+class QoSRequestedDeadlineMissedInfo(StatusCounts):
+    """Deadlines missed."""
 
 
 QoSOfferedDeadlineMissedInfo = QoSRequestedDeadlineMissedInfo
@@ -57,32 +59,25 @@ class QoSLivelinessChangedInfo:
     not_alive_count_change: int = 0
 
 
-@dataclass
-class QoSLivelinessLostInfo:
-    total_count: int = 0
-    total_count_change: int = 0
+class QoSLivelinessLostInfo(StatusCounts):
+    """Liveliness lost."""
+
+
+class QoSMessageLostInfo(StatusCounts):
+    """Messages lost."""
 
 
 @dataclass
-class QoSMessageLostInfo:
-    total_count: int = 0
-    total_count_change: int = 0
-
-
-@dataclass
-class QoSRequestedIncompatibleQoSInfo:
-    total_count: int = 0
-    total_count_change: int = 0
+class QoSRequestedIncompatibleQoSInfo(StatusCounts):
+    """Incompatible QoS met, and the last policy at fault."""
     last_policy_kind: int = 0
 
 
 QoSOfferedIncompatibleQoSInfo = QoSRequestedIncompatibleQoSInfo
 
 
-@dataclass
-class IncompatibleTypeInfo:
-    total_count: int = 0
-    total_count_change: int = 0
+class IncompatibleTypeInfo(StatusCounts):
+    """Incompatible types met."""
 
 
 class UnsupportedEventTypeError(RCLError):

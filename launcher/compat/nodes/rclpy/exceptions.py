@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 
@@ -36,32 +37,37 @@ class NameValidationException(Exception):
                                  f"{' ' * invalid_index}^")
 
 
+def _invalid(name_type: str) -> Callable[..., None]:
+    """The __init__ of the NameValidationException for one kind of name (rclpy's classes
+    keep NameValidationException as their base, so the kind is given here, not by a base)."""
+    def __init__(self: NameValidationException, name: str, error_msg: str,
+                 invalid_index: int) -> None:
+        NameValidationException.__init__(self, name_type, name, error_msg, invalid_index)
+    return __init__
+
+
 class InvalidNamespaceException(NameValidationException):
     """Raised when a namespace is invalid."""
 
-    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
-        NameValidationException.__init__(self, "namespace", name, error_msg, invalid_index)
+    __init__ = _invalid("namespace")
 
 
 class InvalidNodeNameException(NameValidationException):
     """Raised when a node name is invalid."""
 
-    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
-        NameValidationException.__init__(self, "node name", name, error_msg, invalid_index)
+    __init__ = _invalid("node name")
 
 
 class InvalidTopicNameException(NameValidationException):
     """Raised when a topic name is invalid."""
 
-    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
-        NameValidationException.__init__(self, "topic name", name, error_msg, invalid_index)
+    __init__ = _invalid("topic name")
 
 
 class InvalidServiceNameException(NameValidationException):
     """Raised when a service name is invalid."""
 
-    def __init__(self, name: str, error_msg: str, invalid_index: int) -> None:
-        NameValidationException.__init__(self, "service name", name, error_msg, invalid_index)
+    __init__ = _invalid("service name")
 
 
 class ParameterException(Exception):

@@ -12,6 +12,7 @@ from enum import IntEnum
 from typing import Any, TypedDict
 
 from rclpy.duration import Duration
+from rclpy.properties import readonly
 
 
 class ClockChange(IntEnum):
@@ -56,15 +57,8 @@ class TimeJump:
         self._clock_change = clock_change
         self._delta = delta
 
-    @property
-    def clock_change(self) -> ClockChange:
-        """How the clock changed."""
-        return self._clock_change
-
-    @property
-    def delta(self) -> Duration:
-        """How far the time moved."""
-        return self._delta
+    clock_change = readonly("_clock_change", "How the clock changed.")
+    delta = readonly("_delta", "How far the time moved.")
 
 
 class TimeJumpDictionary(TypedDict):

@@ -14,10 +14,16 @@ from launcher.records import dataclass
 
 
 @dataclass
-class MatchedCounts:
-    """How many endpoints match, in all and now, and the change since the last event."""
+class StatusCounts:
+    """An rmw event status's counts: in all, and the change since the last event (the event
+    infos of rclpy.event_handler are these, some with more)."""
     total_count: int = 0
     total_count_change: int = 0
+
+
+@dataclass
+class MatchedCounts(StatusCounts):
+    """How many endpoints match, in all and now, and the change since the last event."""
     current_count: int = 0
     current_count_change: int = 0
 

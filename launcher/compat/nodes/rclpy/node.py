@@ -51,6 +51,7 @@ from rclpy.matched import QoSPublisherMatchedInfo, QoSSubscriptionMatchedInfo
 from rclpy.matched import watch as watch_matched
 from rclpy.node_parameters import ParametersMixin
 from rclpy.parameter import PARAMETER_SEPARATOR_STRING, Parameter  # noqa: F401
+from rclpy.properties import readonly
 from rclpy.publisher import Publisher
 from rclpy.qos import QoSProfile, qos_profile_services_default, to_launcher
 from rclpy.service import Service
@@ -136,15 +137,10 @@ class Node(ParametersMixin):
             LoggingService(self)
 
     # --- identity ---------------------------------------------------------------------------
-    @property
-    def context(self) -> Any:
-        """The context the node belongs to (rclpy.init's, unless one was given)."""
-        return self._context
-
-    @property
-    def handle(self) -> Any:
-        """The launcher bus node under this node: its graph tokens, entities and services."""
-        return self._bus
+    context = readonly("_context", "The context the node belongs to (rclpy.init's, unless "
+                                   "one was given).")
+    handle = readonly("_bus", "The launcher bus node under this node: its graph tokens, "
+                              "entities and services.")
 
     def get_name(self) -> str:
         """The node's name, after any `__node:=` remap."""

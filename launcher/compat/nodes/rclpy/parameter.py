@@ -6,6 +6,8 @@ import array
 from enum import Enum
 from typing import Any
 
+from rclpy.properties import readonly
+
 __all__ = ["PARAMETER_SEPARATOR_STRING", "Parameter", "get_parameter_value",
            "parameter_dict_from_yaml_file", "parameter_value_to_python"]
 
@@ -76,20 +78,9 @@ class Parameter:
             raise ValueError(f"Type '{type_}' and value '{value}' do not agree")
         self._name, self._type_, self._value = name, type_, value
 
-    @property
-    def name(self) -> str:
-        """The parameter's name."""
-        return self._name
-
-    @property
-    def type_(self) -> _Type:
-        """The parameter's Parameter.Type."""
-        return self._type_
-
-    @property
-    def value(self) -> Any:
-        """The parameter's value."""
-        return self._value
+    name = readonly("_name", "The parameter's name.")
+    type_ = readonly("_type_", "The parameter's Parameter.Type.")
+    value = readonly("_value", "The parameter's value.")
 
     def __repr__(self) -> str:
         return f"Parameter(name={self._name!r}, type_={self._type_}, value={self._value!r})"

@@ -7,6 +7,7 @@ from typing import Any
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
 from rclpy.duration import Duration  # noqa: F401
 from rclpy.event_handler import EventHandler, PublisherEventCallbacks  # noqa: F401
+from rclpy.properties import readonly
 from rclpy.qos import QoSProfile  # noqa: F401
 
 
@@ -18,20 +19,10 @@ class Publisher:
         self.event_callbacks, self.callback_group = event_callbacks, callback_group
         self._serialize = publisher_impl.publish
 
-    @property
-    def topic_name(self) -> str:
-        """The topic's fully qualified name."""
-        return self._bus.topic
-
-    @property
-    def topic(self) -> str:
-        """The topic's fully qualified name."""
-        return self._bus.topic
-
-    @property
-    def qos_profile(self) -> Any:
-        """The publisher's QoSProfile."""
-        return self._qos_profile
+    topic_name = readonly("_bus.topic", "The topic's fully qualified name (`topic` too).")
+    topic = topic_name
+    qos_profile = readonly("_qos_profile", "The publisher's QoSProfile.")
+    handle = readonly("_bus", "The launcher bus publisher under this one.")
 
     def publish(self, msg: Any) -> None:
         """Publish a message of the publisher's type (or its serialized bytes)."""
@@ -57,8 +48,3 @@ class Publisher:
     def destroy(self) -> None:
         """Take the publisher off the graph."""
         self._bus.destroy()
-
-    @property
-    def handle(self) -> Any:
-        """The launcher bus publisher under this one."""
-        return self._bus

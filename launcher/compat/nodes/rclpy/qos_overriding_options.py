@@ -14,6 +14,7 @@ from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy import qos as qos_module
 from rclpy.duration import Duration
 from rclpy.exceptions import ParameterAlreadyDeclaredException
+from rclpy.properties import readonly
 from rclpy.qos import QoSPolicyKind, QoSProfile
 
 __all__ = ["InvalidQosOverridesError", "QoSOverridingOptions", "QosCallbackResult",
@@ -43,20 +44,9 @@ class QoSOverridingOptions:
         self._callback = callback
         self._entity_id = entity_id
 
-    @property
-    def policy_kinds(self) -> Iterable[QoSPolicyKind]:
-        """The policies that get a parameter."""
-        return self._policy_kinds
-
-    @property
-    def callback(self) -> QosCallbackType | None:
-        """The validating callback, if any."""
-        return self._callback
-
-    @property
-    def entity_id(self) -> str | None:
-        """The entity's id, if any."""
-        return self._entity_id
+    policy_kinds = readonly("_policy_kinds", "The policies that get a parameter.")
+    callback = readonly("_callback", "The validating callback, if any.")
+    entity_id = readonly("_entity_id", "The entity's id, if any.")
 
     @classmethod
     def with_default_policies(cls, *, callback: QosCallbackType | None = None,

@@ -6,6 +6,7 @@ from typing import Any
 
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
 from rclpy.clock import Clock  # noqa: F401
+from rclpy.properties import readonly
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.type_support import Srv  # noqa: F401
@@ -15,15 +16,9 @@ class ServiceNames:
     """The names a service and its clients answer to, as rclpy's."""
     _bus: Any
 
-    @property
-    def service_name(self) -> str:
-        """The service's fully qualified name."""
-        return self._bus.name
-
-    @property
-    def srv_name(self) -> str:
-        """The service's fully qualified name (rclpy's older spelling)."""
-        return self._bus.name
+    service_name = readonly("_bus.name", "The service's fully qualified name (`srv_name` "
+                                         "too, rclpy's older spelling).")
+    srv_name = service_name
 
 
 class Service(ServiceNames):
@@ -32,6 +27,8 @@ class Service(ServiceNames):
         """`service_impl`: launcher's bus service (Node.create_service makes both)."""
         self._bus, self.srv_type, self.callback = service_impl, srv_type, callback
         self.callback_group, self.qos_profile = callback_group, qos_profile
+
+    handle = readonly("_bus", "The launcher bus service under this one.")
 
     _introspection: Any = None
 
@@ -45,8 +42,3 @@ class Service(ServiceNames):
         """Take the service off the graph."""
         self._introspection.configure(None, None, 0)
         self._bus.destroy()
-
-    @property
-    def handle(self) -> Any:
-        """The launcher bus service under this one."""
-        return self._bus

@@ -7,6 +7,7 @@ from typing import Any, TypedDict
 from rclpy.callback_groups import CallbackGroup  # noqa: F401 - as rclpy's module offers it
 from rclpy.event_handler import SubscriptionEventCallbacks  # noqa: F401
 from rclpy.exceptions import RCLError  # noqa: F401
+from rclpy.properties import readonly
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.subscription_content_filter_options import ContentFilterOptions  # noqa: F401
 
@@ -30,21 +31,10 @@ class Subscription:
         self.callback_group, self._qos_profile, self.raw = callback_group, qos_profile, raw
         self.event_callbacks = event_callbacks
 
-    @property
-    def topic_name(self) -> str:
-        """The topic's fully qualified name."""
-        return self._bus.topic
-
-    @property
-    def qos_profile(self) -> Any:
-        """The subscription's QoSProfile."""
-        return self._qos_profile
+    topic_name = readonly("_bus.topic", "The topic's fully qualified name.")
+    qos_profile = readonly("_qos_profile", "The subscription's QoSProfile.")
+    handle = readonly("_bus", "The launcher bus subscription under this one.")
 
     def destroy(self) -> None:
         """Take the subscription off the graph."""
         self._bus.destroy()
-
-    @property
-    def handle(self) -> Any:
-        """The launcher bus subscription under this one."""
-        return self._bus

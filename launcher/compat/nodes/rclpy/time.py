@@ -2,15 +2,18 @@
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 from rclpy.clock_type import ClockType
 from rclpy.constants import S_TO_NS  # noqa: F401 - as rclpy's module offers it
 from rclpy.duration import Duration
+from rclpy.properties import readonly
 
 _S = 1_000_000_000
 
 
+@functools.total_ordering
 class Time:
     __slots__ = ("_nanoseconds", "_clock_type")
 
@@ -27,15 +30,8 @@ class Time:
             raise TypeError("Clock type must be a ClockType enum")
         self._nanoseconds, self._clock_type = total, clock_type
 
-    @property
-    def nanoseconds(self) -> int:
-        """The time in nanoseconds."""
-        return self._nanoseconds
-
-    @property
-    def clock_type(self) -> ClockType:
-        """The ClockType the time is of."""
-        return self._clock_type
+    nanoseconds = readonly("_nanoseconds", "The time in nanoseconds.")
+    clock_type = readonly("_clock_type", "The ClockType the time is of.")
 
     def seconds_nanoseconds(self) -> tuple[int, int]:
         """(seconds, nanoseconds past them)."""
@@ -79,15 +75,6 @@ class Time:
 
     def __lt__(self, other: Time) -> bool:
         return self._compare(other) < 0
-
-    def __le__(self, other: Time) -> bool:
-        return self._compare(other) <= 0
-
-    def __gt__(self, other: Time) -> bool:
-        return self._compare(other) > 0
-
-    def __ge__(self, other: Time) -> bool:
-        return self._compare(other) >= 0
 
     def __hash__(self) -> int:
         return hash((self._nanoseconds, self._clock_type))

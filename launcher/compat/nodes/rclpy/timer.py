@@ -19,6 +19,7 @@ from rclpy.exceptions import (  # noqa: F401
     InvalidHandle,
     ROSInterruptException,
 )
+from rclpy.properties import readonly
 from rclpy.time import Time
 from rclpy.utilities import get_default_context  # noqa: F401
 
@@ -38,15 +39,8 @@ class TimerInfo:
         self._expected = Time(nanoseconds=expected_call_time, clock_type=clock_type)
         self._actual = Time(nanoseconds=actual_call_time, clock_type=clock_type)
 
-    @property
-    def expected_call_time(self) -> Time:
-        """When the call was due."""
-        return self._expected
-
-    @property
-    def actual_call_time(self) -> Time:
-        """When the call came."""
-        return self._actual
+    expected_call_time = readonly("_expected", "When the call was due.")
+    actual_call_time = readonly("_actual", "When the call came.")
 
 
 class Timer:

@@ -2,17 +2,24 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from enum import IntEnum
 from typing import Any
 
+from rclpy.properties import stored
 from rclpy.qos import QoSHistoryPolicy, QoSPresetProfiles, QoSProfile
-from rclpy.type_hash import TypeHash, TypeHashDictionary
+from rclpy.type_hash import TypeHash, TypeHashDictionary  # noqa: F401 - as rclpy offers it
 
 
 class TopicEndpointTypeEnum(IntEnum):
     INVALID = 0
     PUBLISHER = 1
     SUBSCRIPTION = 2
+
+
+def _made(kind: type) -> Callable[[Any], Any]:
+    """A `kind` as it is, or made of its fields' dictionary (as rclpy's C layer gives it)."""
+    return lambda value: value if isinstance(value, kind) else kind(**value)
 
 
 class TopicEndpointInfo:
@@ -33,45 +40,14 @@ class TopicEndpointInfo:
         self.endpoint_gid = list(endpoint_gid)
         self.qos_profile = qos_profile
 
-    node_name = property(lambda self: self._node_name,
-                         lambda self, value: setattr(self, "_node_name", value),
-                         doc="The endpoint's node's name.")
-    node_namespace = property(lambda self: self._node_namespace,
-                              lambda self, value: setattr(self, "_node_namespace", value),
-                              doc="The endpoint's node's namespace.")
-    topic_type = property(lambda self: self._topic_type,
-                          lambda self, value: setattr(self, "_topic_type", value),
-                          doc="The topic's type name (`std_msgs/msg/String`).")
-    endpoint_gid = property(lambda self: self._endpoint_gid,
-                            lambda self, value: setattr(self, "_endpoint_gid", list(value)),
-                            doc="The endpoint's global id, as bytes' values.")
-
-    @property
-    def topic_type_hash(self) -> TypeHash:
-        """The topic type's hash."""
-        return self._topic_type_hash
-
-    @topic_type_hash.setter
-    def topic_type_hash(self, value: TypeHash | TypeHashDictionary) -> None:
-        self._topic_type_hash = value if isinstance(value, TypeHash) else TypeHash(**value)
-
-    @property
-    def endpoint_type(self) -> TopicEndpointTypeEnum:
-        """PUBLISHER or SUBSCRIPTION."""
-        return self._endpoint_type
-
-    @endpoint_type.setter
-    def endpoint_type(self, value: Any) -> None:
-        self._endpoint_type = TopicEndpointTypeEnum(value)
-
-    @property
-    def qos_profile(self) -> QoSProfile:
-        """The endpoint's QoS profile."""
-        return self._qos_profile
-
-    @qos_profile.setter
-    def qos_profile(self, value: QoSProfile | dict[str, Any]) -> None:
-        self._qos_profile = value if isinstance(value, QoSProfile) else QoSProfile(**value)
+    node_name = stored("_node_name", "The endpoint's node's name.")
+    node_namespace = stored("_node_namespace", "The endpoint's node's namespace.")
+    topic_type = stored("_topic_type", "The topic's type name (`std_msgs/msg/String`).")
+    topic_type_hash = stored("_topic_type_hash", "The topic type's hash.", _made(TypeHash))
+    endpoint_type = stored("_endpoint_type", "PUBLISHER or SUBSCRIPTION.",
+                           TopicEndpointTypeEnum)
+    endpoint_gid = stored("_endpoint_gid", "The endpoint's global id, as bytes' values.", list)
+    qos_profile = stored("_qos_profile", "The endpoint's QoS profile.", _made(QoSProfile))
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, TopicEndpointInfo) and all(

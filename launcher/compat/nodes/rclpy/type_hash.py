@@ -2,9 +2,21 @@
 
 from __future__ import annotations
 
-from typing import TypedDict
+from collections.abc import Callable
+from typing import Any, TypedDict
+
+from rclpy.properties import stored
 
 _TYPE_HASH_SIZE = 32
+
+
+def _checked(kind: type, message: str) -> Callable[[Any], Any]:
+    """The value itself, or TypeError(message) when it is not a `kind`."""
+    def check(value: Any) -> Any:
+        if not isinstance(value, kind):
+            raise TypeError(message)
+        return value
+    return check
 
 
 class TypeHashDictionary(TypedDict):
@@ -20,27 +32,9 @@ class TypeHash:
     def __init__(self, version: int = -1, value: bytes = bytes(_TYPE_HASH_SIZE)) -> None:
         self.version, self.value = version, value
 
-    @property
-    def version(self) -> int:
-        """The hashing scheme's version (1 for RIHS01; -1 when unset)."""
-        return self._version
-
-    @version.setter
-    def version(self, value: int) -> None:
-        if not isinstance(value, int):
-            raise TypeError("version must be an int")
-        self._version = value
-
-    @property
-    def value(self) -> bytes:
-        """The hash's bytes."""
-        return self._value
-
-    @value.setter
-    def value(self, value: bytes) -> None:
-        if not isinstance(value, bytes):
-            raise TypeError("value must be bytes")
-        self._value = value
+    version = stored("_version", "The hashing scheme's version (1 for RIHS01; -1 when unset).",
+                     _checked(int, "version must be an int"))
+    value = stored("_value", "The hash's bytes.", _checked(bytes, "value must be bytes"))
 
     @classmethod
     def from_text(cls, text: str) -> TypeHash:
@@ -51,8 +45,8 @@ class TypeHash:
         return cls(int(prefix[4:]), bytes.fromhex(digits))
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, TypeHash) and (self._version, self._value) == \
-            (other._version, other._value)
+        return isinstance(other, TypeHash) and (self.version, self.value) == \
+            (other.version, other.value)
 
     __hash__ = None  # type: ignore[assignment] - mutable, as rclpy's
 

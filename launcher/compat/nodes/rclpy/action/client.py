@@ -23,6 +23,7 @@ from rclpy.action import names
 from rclpy.clock import Clock  # noqa: F401 - the names rclpy's module offers
 from rclpy.custody import adopt, check_alive, forget, grouped, live_host
 from rclpy.executors import await_or_execute  # noqa: F401
+from rclpy.properties import readonly
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.task import Future, has_executor, wake_on_done
@@ -64,25 +65,14 @@ class ClientGoalHandle:
         return f"ClientGoalHandle <id={self.goal_id.uuid}, accepted={self.accepted}, " \
                f"status={self.status}>"
 
-    @property
-    def goal_id(self) -> Any:
-        """The goal's id (unique_identifier_msgs/UUID)."""
-        return self._goal_id
-
-    @property
-    def stamp(self) -> Any:
-        """When the server accepted the goal."""
-        return self._goal_response.stamp
+    goal_id = readonly("_goal_id", "The goal's id (unique_identifier_msgs/UUID).")
+    stamp = readonly("_goal_response.stamp", "When the server accepted the goal.")
+    status = readonly("_status", "The goal's state as the server's status topic last said it.")
 
     @property
     def accepted(self) -> bool:
         """Whether the server accepted the goal."""
         return bool(self._goal_response.accepted)
-
-    @property
-    def status(self) -> int:
-        """The goal's state as the server's status topic last said it."""
-        return self._status
 
     def cancel_goal(self) -> Any:
         """Ask the server to cancel the goal, waiting for its answer

@@ -27,6 +27,7 @@ from rclpy.action import names
 from rclpy.clock import Clock  # noqa: F401 - the names rclpy's module offers
 from rclpy.custody import adopt, check_alive, forget, grouped
 from rclpy.executors import await_or_execute  # noqa: F401
+from rclpy.properties import readonly
 from rclpy.qos import QoSProfile  # noqa: F401
 from rclpy.service_introspection import ServiceIntrospectionState  # noqa: F401
 from rclpy.task import Future, Task  # noqa: F401
@@ -88,30 +89,16 @@ class ServerGoalHandle:
     def __hash__(self) -> int:
         return hash(self._goal.key)
 
-    @property
-    def request(self) -> Any:
-        """The goal as the client sent it."""
-        return self._goal_request
-
-    @property
-    def goal_id(self) -> Any:
-        """The goal's id (unique_identifier_msgs/UUID)."""
-        return self._goal.goal_id
-
-    @property
-    def is_active(self) -> bool:
-        """Whether the goal has not ended (accepted, executing or canceling)."""
-        return self._goal.active
+    request = readonly("_goal_request", "The goal as the client sent it.")
+    goal_id = readonly("_goal.goal_id", "The goal's id (unique_identifier_msgs/UUID).")
+    is_active = readonly("_goal.active", "Whether the goal has not ended (accepted, executing "
+                                         "or canceling).")
+    status = readonly("_goal.state", "The goal's state (action_msgs/msg/GoalStatus's numbers).")
 
     @property
     def is_cancel_requested(self) -> bool:
         """Whether a cancel was accepted: the goal is canceling."""
         return self._goal.state == actions.CANCELING
-
-    @property
-    def status(self) -> int:
-        """The goal's state (action_msgs/msg/GoalStatus's numbers)."""
-        return self._goal.state
 
     def execute(self, execute_callback: Any = None) -> None:
         # An accepted goal starts executing; one canceled before it started only runs its

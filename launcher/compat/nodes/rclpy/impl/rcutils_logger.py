@@ -140,23 +140,32 @@ class LoggingFilter:
         return True
 
 
-class Once(LoggingFilter):
-    """Log the first call only."""
+class _FirstCall(LoggingFilter):
+    """A filter that tells a call site's first call from the rest, by a flag its context
+    keeps under `_key`: it logs the first call only (`_first`), or all but it."""
 
-    params: ClassVar[dict[str, Any]] = {"once": None}
+    _key: ClassVar[str]
+    _first: ClassVar[bool]
 
     @classmethod
     def initialize_context(cls, context: Any, **kwargs: Any) -> None:
-        """Not logged yet."""
+        """No call yet."""
         super().initialize_context(context, **kwargs)
-        context["has_been_logged_once"] = False
+        context[cls._key] = False
 
-    @staticmethod
-    def should_log(context: Any) -> bool:
-        """True the first time only."""
-        first = not context["has_been_logged_once"]
-        context["has_been_logged_once"] = True
-        return first
+    @classmethod
+    def should_log(cls, context: Any) -> bool:
+        """Whether this call is the first, for Once; whether it is not, for SkipFirst."""
+        first = not context[cls._key]
+        context[cls._key] = True
+        return first == cls._first
+
+
+class Once(_FirstCall):
+    """Log the first call only."""
+
+    params: ClassVar[dict[str, Any]] = {"once": None}
+    _key, _first = "has_been_logged_once", True
 
 
 class SteadyClock:
@@ -197,23 +206,11 @@ class Throttle(LoggingFilter):
         return True
 
 
-class SkipFirst(LoggingFilter):
+class SkipFirst(_FirstCall):
     """Log every call but the first."""
 
     params: ClassVar[dict[str, Any]] = {"skip_first": None}
-
-    @classmethod
-    def initialize_context(cls, context: Any, **kwargs: Any) -> None:
-        """Nothing skipped yet."""
-        super().initialize_context(context, **kwargs)
-        context["first_has_been_skipped"] = False
-
-    @staticmethod
-    def should_log(context: Any) -> bool:
-        """False the first time only."""
-        skipped = context["first_has_been_skipped"]
-        context["first_has_been_skipped"] = True
-        return skipped
+    _key, _first = "first_has_been_skipped", False
 
 
 FILTERS: dict[str, type[LoggingFilter]] = {"throttle": Throttle, "skip_first": SkipFirst,

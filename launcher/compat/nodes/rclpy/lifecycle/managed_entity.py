@@ -15,29 +15,39 @@ class TransitionCallbackReturn(enum.IntEnum):
 
 
 class ManagedEntity:
+    """A callback per transition of a lifecycle node, which a subclass overrides: an entity
+    the node manages is told of each; the node itself (LifecycleNodeMixin is one) does the
+    transition's work there. Each returns TransitionCallbackReturn SUCCESS, FAILURE or ERROR;
+    by default an entity's SUCCESS, and a node's its managed entities' (the first that is not
+    SUCCESS)."""
+
     def on_configure(self, state: Any) -> Any:
-        """Told of the node's `configure` transition; SUCCESS by default."""
-        return TransitionCallbackReturn.SUCCESS
+        """The `configure` transition's work; SUCCESS by default."""
+        return self._by_default("on_configure", state)
 
     def on_cleanup(self, state: Any) -> Any:
-        """Told of the node's `cleanup` transition; SUCCESS by default."""
-        return self.on_configure(state)
+        """The `cleanup` transition's work; SUCCESS by default."""
+        return self._by_default("on_cleanup", state)
 
     def on_shutdown(self, state: Any) -> Any:
-        """Told of the node's `shutdown` transition; SUCCESS by default."""
-        return self.on_configure(state)
+        """The `shutdown` transition's work; SUCCESS by default."""
+        return self._by_default("on_shutdown", state)
 
     def on_activate(self, state: Any) -> Any:
-        """Told of the node's `activate` transition; SUCCESS by default."""
-        return self.on_configure(state)
+        """The `activate` transition's work; SUCCESS by default."""
+        return self._by_default("on_activate", state)
 
     def on_deactivate(self, state: Any) -> Any:
-        """Told of the node's `deactivate` transition; SUCCESS by default."""
-        return self.on_configure(state)
+        """The `deactivate` transition's work; SUCCESS by default."""
+        return self._by_default("on_deactivate", state)
 
     def on_error(self, state: Any) -> Any:
-        """Told of the node's `error` transition; SUCCESS by default."""
-        return self.on_configure(state)
+        """The `error` transition's work; SUCCESS by default."""
+        return self._by_default("on_error", state)
+
+    def _by_default(self, callback: str, state: Any) -> Any:
+        """What `callback` does unless overridden (a lifecycle node asks its entities)."""
+        return TransitionCallbackReturn.SUCCESS
 
 
 class SimpleManagedEntity(ManagedEntity):

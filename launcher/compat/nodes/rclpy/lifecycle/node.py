@@ -59,9 +59,10 @@ class CreateLifecyclePublisherArgs(TypedDict, total=False):
     publisher_class: type[LifecyclePublisher]
 
 
-class LifecycleNodeMixin:
+class LifecycleNodeMixin(ManagedEntity):
     """The lifecycle state machine, its services and transition events, mixed into a Node
-    (made before the mixin's __init__ runs)."""
+    (made before the mixin's __init__ runs). Its transition callbacks (on_configure, …) are
+    ManagedEntity's: by default they call its managed entities' own."""
 
     def __init__(self, *, enable_communication_interface: bool = True,
                  callback_group: CallbackGroup | None = None) -> None:
@@ -95,52 +96,11 @@ class LifecycleNodeMixin:
                                     qos_profile=qos_profile_services_default,
                                     callback_group=callback_group)
 
-    # --- the callbacks users override ------------------------------------------------------
-    def on_configure(self, state: LifecycleState) -> TransitionCallbackReturn:
-        """The `configure` transition's work (subclasses): returns
-        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
-        configure and SUCCESS.
-        """
-        return self._entities_call("on_configure", state)
-
-    def on_cleanup(self, state: LifecycleState) -> TransitionCallbackReturn:
-        """The `cleanup` transition's work (subclasses): returns
-        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
-        cleanup and SUCCESS.
-        """
-        return self._entities_call("on_cleanup", state)
-
-    def on_shutdown(self, state: LifecycleState) -> TransitionCallbackReturn:
-        """The `shutdown` transition's work (subclasses): returns
-        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
-        shutdown and SUCCESS.
-        """
-        return self._entities_call("on_shutdown", state)
-
-    def on_activate(self, state: LifecycleState) -> TransitionCallbackReturn:
-        """The `activate` transition's work (subclasses): returns
-        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
-        activate and SUCCESS.
-        """
-        return self._entities_call("on_activate", state)
-
-    def on_deactivate(self, state: LifecycleState) -> TransitionCallbackReturn:
-        """The `deactivate` transition's work (subclasses): returns
-        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
-        deactivate and SUCCESS.
-        """
-        return self._entities_call("on_deactivate", state)
-
-    def on_error(self, state: LifecycleState) -> TransitionCallbackReturn:
-        """The `error` transition's work (subclasses): returns
-        TransitionCallbackReturn SUCCESS, FAILURE or ERROR; by default its managed entities'
-        error and SUCCESS.
-        """
-        return self._entities_call("on_error", state)
-
-    def _entities_call(self, method: str, state: LifecycleState) -> TransitionCallbackReturn:
+    # --- the callbacks users override (ManagedEntity's) -------------------------------------
+    def _by_default(self, callback: str, state: Any) -> TransitionCallbackReturn:
+        """The managed entities' `callback`s, up to the first that does not succeed."""
         for entity in self._managed_entities:
-            outcome = getattr(entity, method)(state)
+            outcome = getattr(entity, callback)(state)
             if outcome != TransitionCallbackReturn.SUCCESS:
                 return outcome
         return TransitionCallbackReturn.SUCCESS
