@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import threading
+from operator import attrgetter
 from typing import Any
 
 _LOCAL = "ros_adapter"
@@ -16,11 +17,11 @@ class ROSAdapter:
     """An rclpy context, a node and an executor spinning in a thread."""
 
     def __init__(self, *, argv: list[str] | None = None, autostart: bool = True) -> None:
-        self.__argv = list(argv or [])
-        self.__context: Any = None
-        self.__node: Any = None
-        self.__executor: Any = None
-        self.__thread: threading.Thread | None = None
+        self._argv = list(argv or [])
+        self._context: Any = None
+        self._node: Any = None
+        self._executor: Any = None
+        self._thread: threading.Thread | None = None
         if autostart:
             self.setup()
 
@@ -28,40 +29,32 @@ class ROSAdapter:
         import rclpy
         from rclpy.executors import SingleThreadedExecutor
 
-        self.__context = rclpy.Context()
-        rclpy.init(args=self.__argv, context=self.__context)
-        self.__node = rclpy.create_node(f"launch_ros_{os.getpid()}", context=self.__context)
-        self.__executor = SingleThreadedExecutor(context=self.__context)
-        self.__executor.add_node(self.__node)
-        self.__thread = threading.Thread(target=self._spin, daemon=True, name="launch_ros")
-        self.__thread.start()
+        self._context = rclpy.Context()
+        rclpy.init(args=self._argv, context=self._context)
+        self._node = rclpy.create_node(f"launch_ros_{os.getpid()}", context=self._context)
+        self._executor = SingleThreadedExecutor(context=self._context)
+        self._executor.add_node(self._node)
+        self._thread = threading.Thread(target=self._spin, daemon=True, name="launch_ros")
+        self._thread.start()
 
     def _spin(self) -> None:
         import contextlib
 
         with contextlib.suppress(Exception):  # (its end is the context's shutdown)
-            while self.__context.ok():
-                self.__executor.spin_once(timeout_sec=0.1)
+            while self._context.ok():
+                self._executor.spin_once(timeout_sec=0.1)
 
     def shutdown(self) -> None:
-        if self.__context is None:
+        if self._context is None:
             return
-        self.__context.try_shutdown()
-        if self.__thread is not None:
-            self.__thread.join(timeout=5)
-        self.__node.destroy_node()
+        self._context.try_shutdown()
+        if self._thread is not None:
+            self._thread.join(timeout=5)
+        self._node.destroy_node()
 
-    @property
-    def ros_context(self) -> Any:
-        return self.__context
-
-    @property
-    def ros_node(self) -> Any:
-        return self.__node
-
-    @property
-    def ros_executor(self) -> Any:
-        return self.__executor
+    ros_context = property(attrgetter("_context"))
+    ros_node = property(attrgetter("_node"))
+    ros_executor = property(attrgetter("_executor"))
 
 
 def get_ros_adapter(context: Any) -> ROSAdapter:

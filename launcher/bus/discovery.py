@@ -93,19 +93,9 @@ def sweep_peer_sockets(folder: Path) -> None:
     """Remove the socket files of peers that died without closing them (SIGKILL)."""
     for path in folder.glob(f"{PEER_PREFIX}*.sock*"):
         pid = path.name[len(PEER_PREFIX):].split("-", 1)[0]
-        if pid.isdigit() and not _alive(int(pid)):
+        if pid.isdigit() and not lineage.alive(int(pid)):
             with contextlib.suppress(OSError):
                 path.unlink()
-
-
-def _alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
 
 
 def check_endpoint(text: str, where: str) -> str:

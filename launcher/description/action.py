@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from operator import attrgetter
 from pathlib import Path
 from typing import Any
 
@@ -142,9 +143,7 @@ class LaunchDescription(Action):
         self.where = where
         self.condition = None
 
-    @property
-    def entities(self) -> list[Action]:
-        return self.actions
+    entities = property(attrgetter("actions"))
 
     def __str__(self) -> str:  # (launch's: the object, not its contents)
         return object.__repr__(self)

@@ -1,11 +1,11 @@
 """Events the runtime emits, shaped as launch's (launch.events…): a handler of the user's
 own reads the same fields it reads under ros2 launch (`event.returncode`, `event.action`,
-`event.text` as bytes, …). `origin` and `label` are the same action and process name under
-launcher's own names, and `line` is an output event's text as the line launcher read."""
+`event.text` as bytes, …); `line` is an output event's text as the line launcher read."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from operator import attrgetter
 from typing import Any, Protocol
 
 
@@ -25,17 +25,7 @@ class RunningProcessEvent(Event):
         self.action, self.process_name = action, name
         self.cmd, self.cwd, self.env, self.pid = cmd, cwd, env, pid
 
-    @property
-    def execute_process_action(self) -> Any:
-        return self.action
-
-    @property
-    def origin(self) -> Any:
-        return self.action
-
-    @property
-    def label(self) -> str:
-        return self.process_name
+    execute_process_action = property(attrgetter("action"))  # (launch has both names)
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}(name={self.process_name!r}, pid={self.pid})"

@@ -33,10 +33,6 @@ class StateTransition(Event):
         self.start_state, self.goal_state = start_state, goal_state
 
     @property
-    def origin(self) -> Any:
-        return self.action
-
-    @property
     def transition(self) -> str:
         """The transition's label (configure, on_configure_success, …), as the message has
         it."""

@@ -25,6 +25,8 @@ class BaseEventHandler:
     `handle_once` unregisters it after the first."""
 
     snapshot: Snapshot | None = None  # the scope it was registered in
+    handler_description: str | None = None  # (a subclass says what it answers, and when)
+    matcher_description: str | None = None
 
     def __init__(self, *, matcher: Callable[[Any], bool], handle_once: bool = False) -> None:
         self.__matcher = matcher
@@ -33,14 +35,6 @@ class BaseEventHandler:
     @property
     def handle_once(self) -> bool:
         return self.__handle_once
-
-    @property
-    def handler_description(self) -> str | None:
-        return None
-
-    @property
-    def matcher_description(self) -> str | None:
-        return None
 
     def matches(self, event: Any) -> bool:
         return bool(self.__matcher(event))
@@ -121,15 +115,11 @@ class OnActionEventBase(BaseEventHandler):
         return f"{self.on_event}"
 
     def describe(self) -> tuple[str, list[Any]]:
-        entities = [] if callable(self.on_event) and not isinstance(self.on_event, Action) \
-            else _entities(self.on_event)
         return (f"{type(self).__name__}(matcher='{self.matcher_description}', "
-                f"handler='{self.handler_description}')", entities)
+                f"handler='{self.handler_description}')", _listed(self.on_event))
 
     def reaction(self, event: Any, context: LaunchContext) -> Any:
-        if callable(self.on_event) and not isinstance(self.on_event, Action):
-            return self.on_event(event, context)
-        return self.on_event
+        return _answer(self.on_event, event, context)
 
 
 class OnProcessStart(OnActionEventBase):
@@ -195,16 +185,11 @@ class OnShutdown(BaseEventHandler):
         self.on_shutdown = on_shutdown
 
     def describe(self) -> tuple[str, list[Any]]:
-        entities = [] if callable(self.on_shutdown) and not isinstance(self.on_shutdown,
-                                                                        Action) \
-            else _entities(self.on_shutdown)
         return ("OnShutdown(matcher='event issubclass of launch.events.Shutdown', "
-                f"handler={self.on_shutdown})", entities)
+                f"handler={self.on_shutdown})", _listed(self.on_shutdown))
 
     def reaction(self, event: Any, context: LaunchContext) -> Any:
-        if callable(self.on_shutdown) and not isinstance(self.on_shutdown, Action):
-            return self.on_shutdown(event, context)
-        return self.on_shutdown
+        return _answer(self.on_shutdown, event, context)
 
 
 class OnIncludeLaunchDescription(EventHandler):
@@ -227,6 +212,21 @@ def gen_handler(entities: Any) -> Callable[[Any, Any], Any]:
 def event_named(name: str) -> Callable[[Any], bool]:
     """launch.event_handlers.event_named: a matcher of the events of that type name."""
     return lambda event: getattr(event, "name", None) == name
+
+
+def _is_function(reaction: Any) -> bool:
+    """Whether a handler's reaction is a function of the event and the context (an action
+    is callable too, and is an entity)."""
+    return callable(reaction) and not isinstance(reaction, Action)
+
+
+def _answer(reaction: Any, event: Any, context: LaunchContext) -> Any:
+    return reaction(event, context) if _is_function(reaction) else reaction
+
+
+def _listed(reaction: Any) -> list[Action]:
+    """The entities a handler's describe() lists: none for a function."""
+    return [] if _is_function(reaction) else _entities(reaction)
 
 
 def _entities(value: Any) -> list[Action]:

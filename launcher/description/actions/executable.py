@@ -241,7 +241,7 @@ class _LabelHandler:
     inner: Any
 
     def matches(self, event: Any) -> bool:
-        return self.inner.matches(event) and getattr(event, "label", None) == self.label
+        return self.inner.matches(event) and getattr(event, "process_name", None) == self.label
 
     def handle(self, event: Any, context: LaunchContext) -> Any:
         return self.inner.handle(event, context)

@@ -13,6 +13,7 @@ such a node is one error and the rest of the launch runs (ROS 2 would end the wh
 from __future__ import annotations
 
 import os
+from operator import attrgetter
 from pathlib import Path
 from typing import Any
 
@@ -242,13 +243,8 @@ class Node(ExecuteProcess):
         expanded = getattr(self, "_expanded", None)
         return UNSPECIFIED_SPACE if expanded is None else expanded[0]
 
-    @property
-    def node_package(self) -> Any:
-        return self.package
-
-    @property
-    def node_executable(self) -> Any:
-        return self.executable
+    node_package = property(attrgetter("package"))
+    node_executable = property(attrgetter("executable"))
 
     def is_node_name_fully_specified(self) -> bool:
         return UNSPECIFIED_NAME not in self.node_name and UNSPECIFIED_SPACE not in self.node_name

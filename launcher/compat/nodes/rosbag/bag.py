@@ -13,6 +13,7 @@ import collections
 import io
 import time
 from collections.abc import Callable, Iterator
+from operator import attrgetter
 from pathlib import Path
 from typing import Any
 
@@ -201,20 +202,9 @@ class Bag:
         """The bag options: compression and chunk_threshold."""
         return {"compression": self._compression, "chunk_threshold": self._chunk_threshold}
 
-    @property
-    def filename(self) -> str | None:
-        """The file's name (None for a stream)."""
-        return self._filename
-
-    @property
-    def version(self) -> int | None:
-        """The format's version, 200 for 2.0."""
-        return self._version
-
-    @property
-    def mode(self) -> str:
-        """'r', 'w' or 'a'."""
-        return self._mode
+    filename = property(attrgetter("_filename"), doc="The file's name (None for a stream).")
+    version = property(attrgetter("_version"), doc="The format's version, 200 for 2.0.")
+    mode = property(attrgetter("_mode"), doc="'r', 'w' or 'a'.")
 
     @property
     def size(self) -> int:
@@ -226,28 +216,21 @@ class Bag:
         handle.seek(position)
         return size
 
-    @property
-    def compression(self) -> str:
-        """The compression of chunks written from now on."""
-        return self._compression
-
-    @compression.setter
-    def compression(self, compression: str) -> None:
+    def _set_compression(self, compression: str) -> None:
         self._compression = _check_compression(compression)
         if self._recording is not None:
             self._recording.set_compression(compression)
 
-    @property
-    def chunk_threshold(self) -> int:
-        """The uncompressed size at which a chunk is written."""
-        return self._chunk_threshold
-
-    @chunk_threshold.setter
-    def chunk_threshold(self, chunk_threshold: int) -> None:
+    def _set_chunk_threshold(self, chunk_threshold: int) -> None:
         self._chunk_threshold = _check_threshold(chunk_threshold)
         if self._recording is not None:
             self.flush()
             self._recording.writer.chunk_threshold = chunk_threshold
+
+    compression = property(attrgetter("_compression"), _set_compression,
+                           doc="The compression of chunks written from now on.")
+    chunk_threshold = property(attrgetter("_chunk_threshold"), _set_chunk_threshold,
+                               doc="The uncompressed size at which a chunk is written.")
 
     # --- reading --------------------------------------------------------------------------
     def read_messages(self, topics: Any = None, start_time: Any = None, end_time: Any = None,
