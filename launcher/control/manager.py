@@ -15,6 +15,7 @@ interface is never claimed twice, and a refused switch leaves the running contro
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from typing import Any
 
 from launcher.bus.declarations import Param
@@ -259,11 +260,7 @@ class ControllerManager:
         resources = self.resources
         for interface in controller.command_interfaces():
             if not resources.available(interface, command=True):
-                return (f"{self._place_of(controller, interface)}Unable to activate "
-                        f"controller '{name}' since the command interface "
-                        f"'{interface}' is not available (the hardware exports: "
-                        f"{', '.join(sorted(resources.commands)) or 'none'})"
-                        f"{did_you_mean(interface, resources.commands)}")
+                return self._unavailable(controller, interface, "command", resources.commands)
             if interface in resources.claimed and interface not in freed:
                 return (f"Unable to activate controller '{name}' since the command interface "
                         f"'{interface}' is currently claimed by another controller "
@@ -274,12 +271,17 @@ class ControllerManager:
                         f"activated.")
         for interface in controller.state_interfaces() or []:
             if not resources.available(interface, command=False):
-                return (f"{self._place_of(controller, interface)}Unable to activate "
-                        f"controller '{name}' since the state interface "
-                        f"'{interface}' is not available (the hardware exports: "
-                        f"{', '.join(sorted(resources.states)) or 'none'})"
-                        f"{did_you_mean(interface, resources.states)}")
+                return self._unavailable(controller, interface, "state", resources.states)
         return ""
+
+    def _unavailable(self, controller: Controller, interface: str, kind: str,
+                     exported: Collection[str]) -> str:
+        """Why `controller` cannot activate: its `kind` interface is not among those the
+        hardware exports."""
+        return (f"{self._place_of(controller, interface)}Unable to activate controller "
+                f"'{controller.name}' since the {kind} interface '{interface}' is not available "
+                f"(the hardware exports: {', '.join(sorted(exported)) or 'none'})"
+                f"{did_you_mean(interface, exported)}")
 
     def _activate(self, controller: Controller) -> None:
         wanted = controller.state_interfaces()

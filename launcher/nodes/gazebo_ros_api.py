@@ -27,6 +27,7 @@ from typing import Any
 from launcher.bus import keys
 from launcher.bus.node import Node
 from launcher.bus.qos import QoS
+from launcher.bus.service_table import create_services
 from launcher.bus.wire import fill_stamp
 from launcher.errors import LaunchError, UsageError
 from launcher.nodes.create import SimNotFound, find_world
@@ -55,15 +56,14 @@ class GazeboApi:
                               ("reset_simulation", {"reset_all": True}),
                               ("reset_world", {"reset_model_only": True})):
             node.create_service(EMPTY, f"~/{name}", self.controlling(control))
-        for name, type_name, callback in (
-                ("get_model_state", "GetModelState", self.on_get_model_state),
-                ("set_model_state", "SetModelState", self.on_set_model_state),
-                ("spawn_urdf_model", "SpawnModel", self.on_spawn),
-                ("spawn_sdf_model", "SpawnModel", self.on_spawn),
-                ("delete_model", "DeleteModel", self.on_delete),
-                ("get_physics_properties", "GetPhysicsProperties", self.on_physics),
-                ("get_world_properties", "GetWorldProperties", self.on_world)):
-            node.create_service(f"gazebo_msgs/srv/{type_name}", f"~/{name}", callback)
+        create_services(node, "gazebo_msgs", (
+            ("get_model_state", "GetModelState", self.on_get_model_state),
+            ("set_model_state", "SetModelState", self.on_set_model_state),
+            ("spawn_urdf_model", "SpawnModel", self.on_spawn),
+            ("spawn_sdf_model", "SpawnModel", self.on_spawn),
+            ("delete_model", "DeleteModel", self.on_delete),
+            ("get_physics_properties", "GetPhysicsProperties", self.on_physics),
+            ("get_world_properties", "GetWorldProperties", self.on_world)))
         # transient local: a latched publisher's message (ROS 1's `rostopic pub`, which the
         # course uses) reaches it whenever that publisher appears, as ROS 1 latching does
         node.create_subscription("gazebo_msgs/msg/ModelState", "~/set_model_state",

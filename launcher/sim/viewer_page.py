@@ -14,6 +14,7 @@ for a browser). Two parts, on Studio's two sides, through its plugin API:
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 from mujoco.studio import messages, plugin, sim
 from mujoco.studio.dear_imgui import dear_imgui as imgui
@@ -69,6 +70,16 @@ class Panel(plugin.ViewerPlugin):
         imgui.End()
 
 
+def _dropping(kind: type[messages.Message]) -> Callable[[Any, Any], bool]:
+    """A handler that takes the page's messages of `kind` first, and lets them go no further
+    (Studio reads the type a handler takes from its annotation)."""
+    def drop(self: Any, _: Any) -> bool:
+        return True
+
+    drop.__annotations__ = {"_": kind, "return": bool}
+    return messages.handler(drop, priority=messages.Priority.CRITICAL)
+
+
 class Controls(plugin.SimPlugin):
     """The page's events, on the sim's side: the controls become actions, the rest goes."""
 
@@ -91,30 +102,10 @@ class Controls(plugin.SimPlugin):
         return True
 
     # what else a page could send: none of it reaches the world
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_load(self, _: messages.LoadModelEvent) -> bool:
-        return True
-
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_state(self, _: messages.StateEvent) -> bool:
-        return True
-
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_perturb(self, _: messages.PerturbSnapshot) -> bool:
-        return True
-
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_options(self, _: messages.MjOptionSnapshot) -> bool:
-        return True
-
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_keyframe(self, _: messages.KeyframeEvent) -> bool:
-        return True
-
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_threads(self, _: messages.ThreadPoolEvent) -> bool:
-        return True
-
-    @messages.handler(priority=messages.Priority.CRITICAL)
-    def _drop_step_control(self, _: messages.StepControlSnapshot) -> bool:
-        return True
+    _drop_load = _dropping(messages.LoadModelEvent)
+    _drop_state = _dropping(messages.StateEvent)
+    _drop_perturb = _dropping(messages.PerturbSnapshot)
+    _drop_options = _dropping(messages.MjOptionSnapshot)
+    _drop_keyframe = _dropping(messages.KeyframeEvent)
+    _drop_threads = _dropping(messages.ThreadPoolEvent)
+    _drop_step_control = _dropping(messages.StepControlSnapshot)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from launcher.bus.service_table import create_services
 from launcher.errors import LaunchError
 from launcher.sim.runner import SimulationRunner
 from launcher.sim.snapshot import Camera
@@ -40,15 +41,13 @@ class WorldServices:
         create = node.create_service("mujoco_sim/srv/Create", f"/world/{name}/create",
                                      self.on_create)
         create.deferred = True
-        self._named = [create] + [node.create_service(
-            f"mujoco_sim/srv/{kind}", f"/world/{name}/{service}", callback)
-            for kind, service, callback in (
-                ("Control", "control", self.on_control),
-                ("Remove", "remove", self.on_remove),
-                ("SetPose", "set_pose", self.on_set_pose),
-                ("State", "state", self.on_state),
-                ("Snapshot", "snapshot", self.on_snapshot),
-                ("Gui", "gui", self.on_gui))]
+        self._named = [create, *create_services(node, "mujoco_sim", (
+            ("control", "Control", self.on_control),
+            ("remove", "Remove", self.on_remove),
+            ("set_pose", "SetPose", self.on_set_pose),
+            ("state", "State", self.on_state),
+            ("snapshot", "Snapshot", self.on_snapshot),
+            ("gui", "Gui", self.on_gui)), f"/world/{name}")]
 
     def follow(self, world: World, renamed: bool) -> None:
         """A world loaded in place of the last: the services follow its name, the snapshots

@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.control.manager import add_manager_option, on_manager
+from launcher.cli.control.hardware import add_hardware_arguments, availability, command_interface
+from launcher.cli.control.manager import on_manager
 from launcher.nodes.spawner import Manager
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("-v", "--verbose", action="store_true",
-                        help="with the state interfaces and data types")
-    add_manager_option(parser)
+    add_hardware_arguments(parser, verbose="with the state interfaces and data types")
 
 
 @on_manager
@@ -24,13 +23,9 @@ def run(manager: Manager, args: argparse.Namespace) -> int:
               f"\tis_async: {c.is_async}\n"
               f"\tcommand interfaces")
         for item in c.command_interfaces:
-            kind = f" [{item.data_type}]" if args.verbose else ""
-            print(f"\t\t{item.name}{kind} "
-                  f"{'[available]' if item.is_available else '[unavailable]'} "
-                  f"{'[claimed]' if item.is_claimed else '[unclaimed]'}")
+            print(f"\t\t{command_interface(item, args.verbose)}")
         if args.verbose:
             print("\tstate interfaces")
             for item in c.state_interfaces:
-                print(f"\t\t{item.name} [{item.data_type}] "
-                      f"{'[available]' if item.is_available else '[unavailable]'}")
+                print(f"\t\t{item.name} [{item.data_type}] {availability(item)}")
     return 0

@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.control.manager import add_manager_option, on_manager
+from launcher.cli.control.hardware import add_hardware_arguments, command_interface
+from launcher.cli.control.manager import on_manager
 from launcher.nodes.spawner import Manager
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("-v", "--verbose", action="store_true",
-                        help="with each interface's data type")
-    add_manager_option(parser)
+    add_hardware_arguments(parser, verbose="with each interface's data type")
 
 
 @on_manager
@@ -19,10 +18,7 @@ def run(manager: Manager, args: argparse.Namespace) -> int:
     response = manager.call("list_hardware_interfaces")
     print("command interfaces")
     for item in sorted(response.command_interfaces, key=lambda i: i.name):
-        kind = f" [{item.data_type}]" if args.verbose else ""
-        availability = "[available]" if item.is_available else "[unavailable]"
-        claim = "[claimed]" if item.is_claimed else "[unclaimed]"
-        print(f"\t{item.name}{kind} {availability} {claim}")
+        print(f"\t{command_interface(item, args.verbose)}")
     print("state interfaces")
     for item in sorted(response.state_interfaces, key=lambda i: i.name):
         kind = f" [{item.data_type}]" if args.verbose else ""

@@ -9,11 +9,14 @@ from typing import Any
 
 
 class Active:
-    """The record `handler`, behind a condition the tests wait on."""
+    """The record a `_record` class makes, behind a condition the tests wait on (each kind
+    names it as launch_testing does: `io_event = CONDITION`)."""
 
-    def __init__(self, handler: Any) -> None:
+    _record: type
+
+    def __init__(self) -> None:
         self._changed = threading.Condition()
-        self._handler = handler
+        self._handler = self._record()
 
     def append(self, item: Any) -> None:
         with self._changed:
@@ -41,3 +44,10 @@ class Active:
     def snapshot(self) -> Any:
         """The record itself, for the post-shutdown tests."""
         return self._handler
+
+
+def _condition(active: Active) -> threading.Condition:
+    return active._changed
+
+
+CONDITION = property(_condition, doc="The condition the tests wait on for a change.")

@@ -3,11 +3,10 @@
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Iterator
 from typing import Any
 
-from launcher.compat.testing.active import Active
+from launcher.compat.testing.active import CONDITION, Active
 from launcher.compat.testing.asserts import assertInStream
 from launcher.compat.testing.records import ProcessOutput
 from launcher.compat.testing.util import NoMatchingProcessException, resolveProcesses
@@ -51,12 +50,8 @@ class IoHandler:
 class ActiveIoHandler(Active):
     """An IoHandler that the launch fills while the active tests wait on it."""
 
-    def __init__(self) -> None:
-        super().__init__(IoHandler())
-
-    @property
-    def io_event(self) -> threading.Condition:
-        return self._changed
+    _record = IoHandler
+    io_event = CONDITION
 
     def track(self, action: Any) -> None:
         with self._changed:

@@ -3,11 +3,10 @@ ActiveProcInfoHandler (what the active tests get: it can wait for a process)."""
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Iterator
 from typing import Any
 
-from launcher.compat.testing.active import Active
+from launcher.compat.testing.active import CONDITION, Active
 from launcher.compat.testing.records import ProcessInfo
 from launcher.compat.testing.util import NoMatchingProcessException, resolveProcesses
 
@@ -45,12 +44,8 @@ class ProcInfoHandler:
 class ActiveProcInfoHandler(Active):
     """A ProcInfoHandler that the launch fills while the active tests wait on it."""
 
-    def __init__(self) -> None:
-        super().__init__(ProcInfoHandler())
-
-    @property
-    def proc_event(self) -> threading.Condition:
-        return self._changed
+    _record = ProcInfoHandler
+    proc_event = CONDITION
 
     def _wait(self, process: Any, cmd_args: Any, timeout: float, exited: bool) -> bool:
         def seen() -> bool:

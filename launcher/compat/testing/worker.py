@@ -114,16 +114,16 @@ class Worker:
     def _recorders(self) -> list[Any]:
         """Event handlers that record each process's start, output and exit for the tests."""
         def started(event: Any, _context: Any) -> None:
-            self.proc_output.track(event.origin)
-            self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.cmd),
+            self.proc_output.track(event.action)
+            self.proc_info.append(ProcessInfo(event.action, event.process_name, list(event.cmd),
                                               event.pid))
 
         def exited(event: Any, _context: Any) -> None:
-            self.proc_info.append(ProcessInfo(event.origin, event.label, list(event.cmd),
+            self.proc_info.append(ProcessInfo(event.action, event.process_name, list(event.cmd),
                                               event.pid, event.returncode))
 
         def printed(event: Any) -> None:  # (launch gives an output handler the event alone)
-            self.proc_output.append(ProcessOutput(event.origin, event.label, event.text,
+            self.proc_output.append(ProcessOutput(event.action, event.process_name, event.text,
                                                   event.stream))
 
         return [RegisterEventHandler(OnProcessStart(on_start=started)),

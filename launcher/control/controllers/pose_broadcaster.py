@@ -7,15 +7,15 @@ ros2_controllers' does."""
 from __future__ import annotations
 
 from launcher.bus.declarations import REQUIRED, Param
-from launcher.control.controller import Controller
-
-INTERFACES = ("position.x", "position.y", "position.z",
-              "orientation.x", "orientation.y", "orientation.z", "orientation.w")
+from launcher.control.controllers.sensor_broadcasters import SensorBroadcaster
 
 
-class PoseBroadcaster(Controller):
+class PoseBroadcaster(SensorBroadcaster):
+    SENSOR_PARAMETER = "pose_name"
+    INTERFACES = ("position.x", "position.y", "position.z",
+                  "orientation.x", "orientation.y", "orientation.z", "orientation.w")
     PARAMETERS = (
-        *Controller.PARAMETERS,
+        *SensorBroadcaster.PARAMETERS,
         Param("pose_name", "string", REQUIRED, "the pose sensor of the ros2_control block"),
         Param("frame_id", "string", REQUIRED, "the frame the pose is in"),
         Param("tf.enable", "bool", True, "publish the pose as a transform on /tf"),
@@ -24,17 +24,10 @@ class PoseBroadcaster(Controller):
               minimum=0.0),
     )
 
-    def on_init(self) -> None:
-        p = self.read_parameters("pose_name", "frame_id")
-        self.pose_name, self.frame_id = p["pose_name"], p["frame_id"]
-
-    def state_interfaces(self) -> list[str]:
-        return [f"{self.pose_name}/{i}" for i in INTERFACES]
-
     def on_configure(self) -> None:
         p = self.read_parameters()
         self.tf_enabled = p["tf.enable"]
-        self.child = p["tf.child_frame_id"] or self.pose_name
+        self.child = p["tf.child_frame_id"] or self.sensor
         rate = p["tf.publish_rate"]
         self.tf_period = 1.0 / rate if rate > 0 else 0.0
         self.last_tf: float | None = None
@@ -47,9 +40,6 @@ class PoseBroadcaster(Controller):
         self.publisher.destroy()
         if self.tf_pub is not None:
             self.tf_pub.destroy()
-
-    def on_activate(self) -> None:
-        self.handles = [self.states[name] for name in self.state_interfaces()]
 
     def update(self, time: float, period: float) -> None:
         make = self.make

@@ -17,7 +17,26 @@ IMU_INTERFACES = ("orientation.x", "orientation.y", "orientation.z", "orientatio
 FT_INTERFACES = ("force.x", "force.y", "force.z", "torque.x", "torque.y", "torque.z")
 
 
-class IMUSensorBroadcaster(Controller):
+class SensorBroadcaster(Controller):
+    """A broadcaster of one ros2_control sensor's state interfaces, `<name>/<interface>` for
+    each of INTERFACES in the message's order; SENSOR_PARAMETER is the parameter that names it."""
+
+    SENSOR_PARAMETER = "sensor_name"
+    INTERFACES: tuple[str, ...] = ()
+
+    def on_init(self) -> None:
+        p = self.read_parameters(self.SENSOR_PARAMETER, "frame_id")
+        self.sensor, self.frame_id = p[self.SENSOR_PARAMETER], p["frame_id"]
+
+    def state_interfaces(self) -> list[str]:
+        return [f"{self.sensor}/{i}" for i in self.INTERFACES]
+
+    def on_activate(self) -> None:
+        self.handles = [self.states[name] for name in self.state_interfaces()]
+
+
+class IMUSensorBroadcaster(SensorBroadcaster):
+    INTERFACES = IMU_INTERFACES
     PARAMETERS = (
         *Controller.PARAMETERS,
         Param("sensor_name", "string", REQUIRED, "the <sensor> of the ros2_control block"),
@@ -26,13 +45,6 @@ class IMUSensorBroadcaster(Controller):
                 f"the {part.replace('_', ' ')} covariance (9 numbers)")
           for part in ("orientation", "angular_velocity", "linear_acceleration")),
     )
-
-    def on_init(self) -> None:
-        p = self.read_parameters("sensor_name", "frame_id")
-        self.sensor, self.frame_id = p["sensor_name"], p["frame_id"]
-
-    def state_interfaces(self) -> list[str]:
-        return [f"{self.sensor}/{i}" for i in IMU_INTERFACES]
 
     def on_configure(self) -> None:
         p = self.read_parameters()
@@ -43,9 +55,6 @@ class IMUSensorBroadcaster(Controller):
 
     def on_cleanup(self) -> None:
         self.publisher.destroy()
-
-    def on_activate(self) -> None:
-        self.handles = [self.states[name] for name in self.state_interfaces()]
 
     def update(self, time: float, period: float) -> None:
         if not self.publisher.get_subscription_count():

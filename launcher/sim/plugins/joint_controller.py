@@ -76,6 +76,8 @@ class _JointServo(Plugin):
             actuator.forcerange = [low if math.isfinite(low) else -1e9,
                                    high if math.isfinite(high) else 1e9]
         self.command = self.initial()
+        self.integral = 0.0
+        self.last_time: float | None = None
 
     def configure(self, actuator: Any) -> None:
         raise NotImplementedError
@@ -84,9 +86,14 @@ class _JointServo(Plugin):
         raise NotImplementedError
 
     def limits(self) -> tuple[float, float]:
+        """The actuator's force range (infinite: none)."""
+        raise NotImplementedError
+
+    def bounds(self, default: float) -> tuple[float, float]:
+        """cmd_min and cmd_max, ±`default` where not given."""
         p = self.params
-        return (p.cmd_min if p.cmd_min is not None else -math.inf,
-                p.cmd_max if p.cmd_max is not None else math.inf)
+        return (p.cmd_min if p.cmd_min is not None else -default,
+                p.cmd_max if p.cmd_max is not None else default)
 
     def command_topic(self) -> str:
         """gz-sim's rule: <topic> as given, <sub_topic> under the model, else the default."""
@@ -111,6 +118,32 @@ class _JointServo(Plugin):
         self.index = model.actuator(f"{self.entity.name}/{self.actuator_name}").id
         data.ctrl[self.index] = self.command
         self.data = data
+        self.dof = int(model.joint(f"{self.entity.name}/{self.joint}").dofadr[0])
+
+    def gain_from_inertia(self, model: Any, fallback: float) -> float:
+        """A velocity servo's gain that settles the joint in about SERVO_TIME (`fallback` for
+        a joint with no inertia), set on its actuator."""
+        gain = float(model.dof_M0[self.dof]) / SERVO_TIME or fallback
+        model.actuator_gainprm[self.index, 0] = gain
+        model.actuator_biasprm[self.index, 2] = -gain
+        return gain
+
+    def _apply(self, data: Any) -> None:
+        """The servo's target: the command, and what the kind adds to it."""
+        data.ctrl[self.index] = self.command
+
+    def integrate(self, now: float, error: float) -> None:
+        """The integral term over the sim time since the last update."""
+        dt = now - self.last_time if self.last_time is not None else 0.0
+        self.last_time = now
+        self.integral += error * dt
+
+    def integral_and_offset(self, gain: float) -> float:
+        """The I term within [i_min, i_max] and the offset, as a shift of a servo of `gain`'s
+        target."""
+        p = self.params
+        extra = min(max(self.ki * self.integral, p.i_min), p.i_max) + p.cmd_offset
+        return extra / gain if gain else 0.0
 
     def on_command(self, message: Any) -> None:
         if not math.isfinite(message.data):
@@ -119,9 +152,10 @@ class _JointServo(Plugin):
                            "once")
             return
         self.command = message.data
-        self.data.ctrl[self.index] = message.data
+        self._apply(self.data)
 
     def reset(self) -> None:
+        self.integral, self.last_time = 0.0, None
         self.command = self.initial()
         if hasattr(self, "data"):
             self.data.ctrl[self.index] = self.command
@@ -147,27 +181,20 @@ class JointPositionController(_JointServo):
             actuator.set_to_velocity(kv=1.0)  # the gain is set from the joint at bind
         else:
             actuator.set_to_position(kp=self.kp, kv=kd)
-        self.integral = 0.0
-        self.last_time: float | None = None
 
     def limits(self) -> tuple[float, float]:
         if self.params.use_velocity_commands:  # cmd_max bounds the speed, not the force
             return -math.inf, math.inf
-        p = self.params
-        return (p.cmd_min if p.cmd_min is not None else -1000.0,
-                p.cmd_max if p.cmd_max is not None else 1000.0)
+        return self.bounds(1000.0)
 
     def initial(self) -> float:
         return self.params.initial_position
 
     def bind(self, model: Any, data: Any) -> None:
         super().bind(model, data)
-        joint = model.joint(f"{self.entity.name}/{self.joint}")
-        self.qpos, self.dof = int(joint.qposadr[0]), int(joint.dofadr[0])
+        self.qpos = int(model.joint(f"{self.entity.name}/{self.joint}").qposadr[0])
         if self.by_velocity:
-            gain = float(model.dof_M0[self.dof]) / 0.005 or 200.0
-            model.actuator_gainprm[self.index, 0] = gain
-            model.actuator_biasprm[self.index, 2] = -gain
+            self.gain_from_inertia(model, 200.0)
         self._apply(data)
 
     def _apply(self, data: Any) -> None:
@@ -181,14 +208,7 @@ class JointPositionController(_JointServo):
                 speed = math.copysign(top, speed)
             data.ctrl[self.index] = speed
             return
-        extra = min(max(self.ki * self.integral, self.params.i_min), self.params.i_max) + \
-            self.params.cmd_offset
-        data.ctrl[self.index] = self.command + (extra / self.kp if self.kp else 0.0)
-
-    def on_command(self, message: Any) -> None:
-        super().on_command(message)
-        if math.isfinite(message.data):
-            self._apply(self.data)
+        data.ctrl[self.index] = self.command + self.integral_and_offset(self.kp)
 
     def post_step(self, model: Any, data: Any) -> None:
         self.model_timestep = model.opt.timestep
@@ -198,16 +218,10 @@ class JointPositionController(_JointServo):
             self.next_update = now  # every step, as gz's velocity mode
             return
         if self.ki:
-            dt = now - self.last_time if self.last_time is not None else 0.0
-            self.last_time = now
-            self.integral += (self.command - data.qpos[self.qpos]) * dt
+            self.integrate(now, self.command - data.qpos[self.qpos])
             self._apply(data)
         self.next_update = schedule.following(self.next_update, now, I_PERIOD) if self.ki \
             else math.inf
-
-    def reset(self) -> None:
-        self.integral, self.last_time = 0.0, None
-        super().reset()
 
     model_timestep = 0.001
 
@@ -231,54 +245,31 @@ class JointVelocityController(_JointServo):
         self.ki = (p.i_gain or 0.0) if self.force_mode else 0.0
         self.from_inertia = not (self.force_mode or self.short_name)
         actuator.set_to_velocity(kv=self.kv)
-        self.integral, self.last_time = 0.0, None
 
     def limits(self) -> tuple[float, float]:
-        p = self.params
-        if not self.force_mode:
-            return super().limits()
-        return (p.cmd_min if p.cmd_min is not None else -1000.0,
-                p.cmd_max if p.cmd_max is not None else 1000.0)
+        return self.bounds(1000.0 if self.force_mode else math.inf)
 
     def initial(self) -> float:
         return self.params.initial_velocity
 
     def bind(self, model: Any, data: Any) -> None:
         super().bind(model, data)
-        joint = model.joint(f"{self.entity.name}/{self.joint}")
-        self.dof = int(joint.dofadr[0])
         if self.from_inertia:
-            self.kv = float(model.dof_M0[self.dof]) / SERVO_TIME or self.kv
-            model.actuator_gainprm[self.index, 0] = self.kv
-            model.actuator_biasprm[self.index, 2] = -self.kv
+            self.kv = self.gain_from_inertia(model, self.kv)
         self._apply(data)
 
     def _apply(self, data: Any) -> None:
-        extra = 0.0
-        if self.force_mode:
-            extra = min(max(self.ki * self.integral, self.params.i_min), self.params.i_max) + \
-                self.params.cmd_offset
-        data.ctrl[self.index] = self.command + (extra / self.kv if self.kv else 0.0)
-
-    def on_command(self, message: Any) -> None:
-        super().on_command(message)
-        if math.isfinite(message.data):
-            self._apply(self.data)
+        extra = self.integral_and_offset(self.kv) if self.force_mode else 0.0
+        data.ctrl[self.index] = self.command + extra
 
     def post_step(self, model: Any, data: Any) -> None:
         if not (self.ki or self.params.cmd_offset) or not self.force_mode:
             self.next_update = math.inf
             return
         now = data.time
-        dt = now - self.last_time if self.last_time is not None else 0.0
-        self.last_time = now
-        self.integral += (self.command - data.qvel[self.dof]) * dt
+        self.integrate(now, self.command - data.qvel[self.dof])
         self._apply(data)
         self.next_update = schedule.following(self.next_update, now, I_PERIOD)
-
-    def reset(self) -> None:
-        self.integral, self.last_time = 0.0, None
-        super().reset()
 
 
 SERVO_TIME = 0.005  # s: how fast a velocity servo with a gain from the joint's inertia settles

@@ -63,6 +63,17 @@ class RosOutput:
     options: dict[str, Any] = field(default_factory=dict)
 
 
+@dataclass(frozen=True)
+class _Site:
+    """A plugin where it stands: what each family reads its outputs from."""
+    plugin: Any  # its element
+    node: RosNode
+    frame: str
+    label: str
+    warn: Any
+    sensor: Any  # the <sensor> element it is in
+
+
 def classic_outputs(element: Any, kind: str, link: str, label: str, warn: Any,
                     entity_namespace: str = "") -> list[RosOutput]:
     """The ROS outputs of the gazebo_ros plugins in a `<sensor>` element; a plugin launcher
@@ -87,41 +98,42 @@ def classic_outputs(element: Any, kind: str, link: str, label: str, warn: Any,
         frame = plugin.value("frame_name") or plugin.value("frameName") or \
             link.rsplit("::", 1)[-1]
         try:
-            outputs.extend(_FAMILIES[family](plugin, node, frame, label, warn, element))
+            outputs.extend(_FAMILIES[family](_Site(plugin, node, frame, label, warn,
+                                                    element)))
         except InvalidName as exc:
             warn(plugin, f"{label}: plugin '{filename}': {exc}; it is left out")
     return outputs
 
 
-def _ray(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
-         sensor: Any) -> list[RosOutput]:
+def _ray(site: _Site) -> list[RosOutput]:
+    plugin = site.plugin
     written = plugin.value("output_type") or "sensor_msgs/PointCloud2"
     if written.replace("/msg/", "/") not in RAY_OUTPUTS:
-        warn(plugin.find("output_type"), f"{label}: <output_type> '{written}' is not one of "
-             f"{', '.join(RAY_OUTPUTS)}{did_you_mean(written, list(RAY_OUTPUTS))}; the plugin "
-             "is left out")
+        site.warn(plugin.find("output_type"), f"{site.label}: <output_type> '{written}' is not "
+                  f"one of {', '.join(RAY_OUTPUTS)}{did_you_mean(written, list(RAY_OUTPUTS))}; "
+                  "the plugin is left out")
         return []
     stream, type_name = RAY_OUTPUTS[written.replace("/msg/", "/")]
     radiation = (plugin.value("radiation_type") or "infrared").strip().lower()
-    return [RosOutput(stream, type_name, node.topic("~/out"), frame, {
+    return [RosOutput(stream, type_name, site.node.topic("~/out"), site.frame, {
         "radiation_type": RADIATION.get(radiation, 1),
         "min_intensity": float(plugin.value("min_intensity") or 0.0)})]
 
 
-def _laser(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
-           sensor: Any) -> list[RosOutput]:
-    topic = plugin.value("topicName") or "scan"
-    return [RosOutput("laserscan", "sensor_msgs/msg/LaserScan", node.topic(topic), frame)]
+def _laser(site: _Site) -> list[RosOutput]:
+    topic = site.plugin.value("topicName") or "scan"
+    return [RosOutput("laserscan", "sensor_msgs/msg/LaserScan", site.node.topic(topic),
+                      site.frame)]
 
 
-def _camera(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
-            sensor: Any) -> list[RosOutput]:
+def _camera(site: _Site) -> list[RosOutput]:
+    plugin, frame = site.plugin, site.frame
     name = plugin.value("camera_name") or plugin.value("cameraName") or \
-        sensor.get("name", "camera")
+        site.sensor.get("name", "camera")
 
     def topic(ros1: str, default: str) -> str:
         given = plugin.value(ros1)
-        return node.topic(given if given else f"{name}/{default}")
+        return site.node.topic(given if given else f"{name}/{default}")
 
     image, info = "sensor_msgs/msg/Image", "sensor_msgs/msg/CameraInfo"
     return [RosOutput("image", image, topic("imageTopicName", "image_raw"), frame),
@@ -134,24 +146,23 @@ def _camera(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
                       topic("pointCloudTopicName", "points"), frame)]
 
 
-def _imu(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
-         sensor: Any) -> list[RosOutput]:
-    topic = plugin.value("topicName") or "~/out"
-    return [RosOutput("imu", "sensor_msgs/msg/Imu", node.topic(topic), frame)]
+def _imu(site: _Site) -> list[RosOutput]:
+    topic = site.plugin.value("topicName") or "~/out"
+    return [RosOutput("imu", "sensor_msgs/msg/Imu", site.node.topic(topic), site.frame)]
 
 
-def _gps(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
-         sensor: Any) -> list[RosOutput]:
+def _gps(site: _Site) -> list[RosOutput]:
+    node, frame = site.node, site.frame
     return [RosOutput("navsatfix", "sensor_msgs/msg/NavSatFix", node.topic("~/out"), frame),
             RosOutput("velocity", "geometry_msgs/msg/Vector3Stamped", node.topic("~/vel"),
                       frame)]
 
 
-def _bumper(plugin: Any, node: RosNode, frame: str, label: str, warn: Any,
-            sensor: Any) -> list[RosOutput]:
+def _bumper(site: _Site) -> list[RosOutput]:
+    plugin = site.plugin
     topic = plugin.value("bumperTopicName") or "bumper_states"
     world = plugin.value("frame_name") or plugin.value("frameName") or "world"
-    return [RosOutput("contacts_state", "gazebo_msgs/msg/ContactsState", node.topic(topic),
+    return [RosOutput("contacts_state", "gazebo_msgs/msg/ContactsState", site.node.topic(topic),
                       world)]
 
 

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from launcher.bus.service_table import create_services
 from launcher.bus.wire import fill_stamp
 from launcher.errors import did_you_mean
 from launcher.sim.placement import MAX_SPEED
@@ -81,16 +82,14 @@ def info_of(entity: Any) -> Info:
 class Entities:
     def __init__(self, api: Api) -> None:
         self.api = api
-        node = api.node
-        for name, type_name, callback in (
-                ("get_entities", "GetEntities", self.on_get_entities),
-                ("get_entities_states", "GetEntitiesStates", self.on_get_states),
-                ("get_entity_state", "GetEntityState", self.on_get_state),
-                ("set_entity_state", "SetEntityState", self.on_set_state),
-                ("get_entity_info", "GetEntityInfo", self.on_get_info),
-                ("set_entity_info", "SetEntityInfo", self.on_set_info),
-                ("get_entity_bounds", "GetEntityBounds", self.on_get_bounds)):
-            node.create_service(f"{TYPES}/srv/{type_name}", f"~/{name}", callback)
+        create_services(api.node, TYPES, (
+            ("get_entities", "GetEntities", self.on_get_entities),
+            ("get_entities_states", "GetEntitiesStates", self.on_get_states),
+            ("get_entity_state", "GetEntityState", self.on_get_state),
+            ("set_entity_state", "SetEntityState", self.on_set_state),
+            ("get_entity_info", "GetEntityInfo", self.on_get_info),
+            ("set_entity_info", "SetEntityInfo", self.on_set_info),
+            ("get_entity_bounds", "GetEntityBounds", self.on_get_bounds)))
 
     # --- finding -----------------------------------------------------------------------------
     def entity(self, name: str) -> Any:

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher.bus.names import InvalidName, check_namespace
+from launcher.bus.service_table import create_services
 from launcher.errors import LaunchError
 from launcher.sim.entity import NameInvalid, NameTaken, Spawn, SpawnError
 from launcher.sim.resources import ResourceNotFound, resolve_uri, resource_dirs
@@ -42,15 +43,13 @@ ENTITIES_SPAWN_FAILED = 150
 class Spawning:
     def __init__(self, api: Api, entities: Entities) -> None:
         self.api, self.entities = api, entities
-        node = api.node
-        for name, type_name, callback in (("spawn_entity", "SpawnEntity", self.on_spawn),
-                                          ("spawn_entities", "SpawnEntities",
-                                           self.on_spawn_all)):
-            node.create_service(f"{TYPES}/srv/{type_name}", f"~/{name}", callback).deferred = \
-                True
-        node.create_service(f"{TYPES}/srv/DeleteEntity", "~/delete_entity", self.on_delete)
-        node.create_service(f"{TYPES}/srv/GetSpawnables", "~/get_spawnables",
-                            self.on_spawnables)
+        for service in create_services(api.node, TYPES, (
+                ("spawn_entity", "SpawnEntity", self.on_spawn),
+                ("spawn_entities", "SpawnEntities", self.on_spawn_all))):
+            service.deferred = True
+        create_services(api.node, TYPES, (
+            ("delete_entity", "DeleteEntity", self.on_delete),
+            ("get_spawnables", "GetSpawnables", self.on_spawnables)))
 
     # --- spawning ----------------------------------------------------------------------------
     def request(self, asked: Any) -> Spawn:

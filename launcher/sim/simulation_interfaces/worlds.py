@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from launcher.bus.service_table import create_services
 from launcher.errors import did_you_mean
 from launcher.sim.resources import BUILTIN_WORLDS, builtin_worlds, resource_entries
 from launcher.sim.simulation_interfaces.common import (
@@ -30,13 +31,11 @@ WORLD_FILES = (".sdf", ".world")
 class Worlds:
     def __init__(self, api: Api, loading: WorldLoading) -> None:
         self.api, self.loading = api, loading
-        node = api.node
-        for name, type_name, callback in (
-                ("get_current_world", "GetCurrentWorld", self.on_current),
-                ("get_available_worlds", "GetAvailableWorlds", self.on_available),
-                ("get_named_poses", "GetNamedPoses", self.on_named_poses),
-                ("get_named_pose_bounds", "GetNamedPoseBounds", self.on_named_pose_bounds)):
-            node.create_service(f"{TYPES}/srv/{type_name}", f"~/{name}", callback)
+        create_services(api.node, TYPES, (
+            ("get_current_world", "GetCurrentWorld", self.on_current),
+            ("get_available_worlds", "GetAvailableWorlds", self.on_available),
+            ("get_named_poses", "GetNamedPoses", self.on_named_poses),
+            ("get_named_pose_bounds", "GetNamedPoseBounds", self.on_named_pose_bounds)))
 
     def on_current(self, request: Any, response: Any) -> Any:
         if self.api.server.no_world:

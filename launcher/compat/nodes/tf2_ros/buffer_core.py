@@ -8,10 +8,10 @@ from launcher.bus.tf_tree import (
     LookupException,
     TimeoutException,
     TransformException,
-    inverse,
-    multiply,
+    inverse,  # noqa: F401 (launcher's transform arithmetic, for Buffer and tf2_geometry_msgs)
+    multiply,  # noqa: F401
 )
 
 __all__ = ["BufferCore", "ConnectivityException", "ExtrapolationException",
            "InvalidArgumentException", "LookupException", "TimeoutException",
-           "TransformException", "inverse", "multiply"]
+           "TransformException"]

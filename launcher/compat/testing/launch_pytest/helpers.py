@@ -8,6 +8,7 @@ import asyncio
 import functools
 import inspect
 from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
 from typing import Any
 
 import pytest
@@ -149,86 +150,91 @@ def wrap_func(func: Callable[..., Any], event_loop: Any, before_test: Any) -> An
     return inner
 
 
-def _one_more(step: Callable[[], Any], stop: type[BaseException], what: str) -> None:
-    """The part after a generator's yield: it must end there."""
-    try:
-        step()
-    except stop:
-        return
-    pytest.fail(f"launch tests using {what} must stop iteration after yielding once",
-                pytrace=False)
+@dataclass(frozen=True)
+class _Steps:
+    """How a kind of generator is stepped on the loop: `start` runs it up to its yield;
+    `resume`, after the launch's end, must end it by raising `stop`."""
+    start: Callable[[Any], None]
+    resume: Callable[[Any], None]
+    stop: type[BaseException]
+    what: str  # in the message when it yields again
+
+    def finish(self, generator: Any) -> None:
+        """The part after the yield: it must end there."""
+        try:
+            self.resume(generator)
+        except self.stop:
+            return
+        pytest.fail(f"launch tests using {self.what} must stop iteration after yielding once",
+                    pytrace=False)
 
 
-def wrap_generator(func: Callable[..., Any], event_loop: Any,
-                   on_shutdown: Callable[[], Any]) -> tuple[Any, Any]:
-    """The generator `func` as two tests: up to its yield, and after the launch's end."""
-    started: list[Any] = []
-
-    def shutdown() -> None:
-        if not started:
-            pytest.skip("shutdown test skipped because the test failed before")
-        on_shutdown()
-        _one_more(lambda: next(started[0]), StopIteration, "a generator function")
-    shutdown._launch_pytest_wrapped = True  # type: ignore[attr-defined]
-    shutdown.__name__ = f"{func.__name__}[shutdown]"
-
-    @functools.wraps(func)
-    def inner(**kwargs: Any) -> None:
-        generator = func(**kwargs)
-        run_until_complete(event_loop, event_loop.run_in_executor(None, next, generator))
-        started.append(generator)
-    return inner, shutdown
+def _generator_steps(event_loop: Any) -> _Steps:
+    return _Steps(lambda generator: run_until_complete(
+                      event_loop, event_loop.run_in_executor(None, next, generator)),
+                  next, StopIteration, "a generator function")
 
 
-def wrap_generator_fscope(func: Callable[..., Any], event_loop: Any,
-                          on_shutdown: Callable[[], Any]) -> Any:
-    """The generator `func` as one test: up to its yield, the launch's end, the rest."""
-    @functools.wraps(func)
-    def inner(**kwargs: Any) -> None:
-        generator = func(**kwargs)
-        run_until_complete(event_loop, event_loop.run_in_executor(None, next, generator))
-        on_shutdown()
-        _one_more(lambda: next(generator), StopIteration, "a generator function")
-    return inner
+def _asyncgen_steps(event_loop: Any) -> _Steps:
+    def step(agen: Any) -> None:
+        run_until_complete(event_loop, asyncio.ensure_future(agen.__anext__(), loop=event_loop))
+    return _Steps(step, step, StopAsyncIteration, "an async gen function")
 
 
-def _anext(event_loop: Any, agen: Any) -> None:
-    run_until_complete(event_loop, asyncio.ensure_future(agen.__anext__(), loop=event_loop))
-
-
-def wrap_asyncgen(func: Callable[..., Any], event_loop: Any,
-                  on_shutdown: Callable[[], Any]) -> tuple[Any, Any]:
-    """The async generator `func` as two tests, as wrap_generator."""
+def _two_tests(func: Callable[..., Any], steps: _Steps,
+               on_shutdown: Callable[[], Any]) -> tuple[Any, Any]:
+    """`func`'s generator as two tests: up to its yield, and after the launch's end."""
     started: list[Any] = []
 
     def shutdown(**kwargs: Any) -> None:
         if not started:
             pytest.skip("shutdown test skipped because the test failed before")
         on_shutdown()
-        _one_more(lambda: _anext(event_loop, started[0]), StopAsyncIteration,
-                  "an async gen function")
-    shutdown.__name__ = f"{func.__name__}[shutdown]"
+        steps.finish(started[0])
     shutdown._launch_pytest_wrapped = True  # type: ignore[attr-defined]
+    shutdown.__name__ = f"{func.__name__}[shutdown]"
 
     @functools.wraps(func)
     def inner(**kwargs: Any) -> None:
-        agen = func(**kwargs)
-        _anext(event_loop, agen)
-        started.append(agen)
+        generator = func(**kwargs)
+        steps.start(generator)
+        started.append(generator)
     return inner, shutdown
+
+
+def _one_test(func: Callable[..., Any], steps: _Steps, on_shutdown: Callable[[], Any]) -> Any:
+    """`func`'s generator as one test: up to its yield, the launch's end, the rest."""
+    @functools.wraps(func)
+    def inner(**kwargs: Any) -> None:
+        generator = func(**kwargs)
+        steps.start(generator)
+        on_shutdown()
+        steps.finish(generator)
+    return inner
+
+
+def wrap_generator(func: Callable[..., Any], event_loop: Any,
+                   on_shutdown: Callable[[], Any]) -> tuple[Any, Any]:
+    """The generator `func` as two tests: up to its yield, and after the launch's end."""
+    return _two_tests(func, _generator_steps(event_loop), on_shutdown)
+
+
+def wrap_generator_fscope(func: Callable[..., Any], event_loop: Any,
+                          on_shutdown: Callable[[], Any]) -> Any:
+    """The generator `func` as one test: up to its yield, the launch's end, the rest."""
+    return _one_test(func, _generator_steps(event_loop), on_shutdown)
+
+
+def wrap_asyncgen(func: Callable[..., Any], event_loop: Any,
+                  on_shutdown: Callable[[], Any]) -> tuple[Any, Any]:
+    """The async generator `func` as two tests, as wrap_generator."""
+    return _two_tests(func, _asyncgen_steps(event_loop), on_shutdown)
 
 
 def wrap_asyncgen_fscope(func: Callable[..., Any], event_loop: Any,
                          on_shutdown: Callable[[], Any]) -> Any:
     """The async generator `func` as one test, as wrap_generator_fscope."""
-    @functools.wraps(func)
-    def inner(**kwargs: Any) -> None:
-        agen = func(**kwargs)
-        _anext(event_loop, agen)
-        on_shutdown()
-        _one_more(lambda: _anext(event_loop, agen), StopAsyncIteration,
-                  "an async gen function")
-    return inner
+    return _one_test(func, _asyncgen_steps(event_loop), on_shutdown)
 
 
 launch_service = get_launch_service_fixture(overridable=False)

@@ -79,10 +79,10 @@ class LaunchWatch:
         """Event handlers that keep the record. Output wakes the waiters once every handler
         has seen it (the action's own cache among them), on the loop's next turn."""
         def started(event: Any, _context: Any) -> None:
-            self._note(self._started, event.origin)
+            self._note(self._started, event.action)
 
         def exited(event: Any, _context: Any) -> None:
-            self._note(self._exited, event.origin)
+            self._note(self._exited, event.action)
 
         def printed(_event: Any, _context: Any = None) -> None:  # (launch: the event alone)
             self.launch.service.loop.call_soon(self._wake)

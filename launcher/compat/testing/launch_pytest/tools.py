@@ -11,6 +11,11 @@ import functools
 from collections.abc import Callable, Iterator
 from typing import Any
 
+# the tools (launch_pytest.tools and .process give them; register_event_handler is .process's)
+__all__ = ["assert_output", "assert_output_sync", "assert_stderr", "assert_stderr_sync",
+           "wait_for_exit", "wait_for_exit_sync", "wait_for_output", "wait_for_output_sync",
+           "wait_for_start", "wait_for_start_sync", "wait_for_stderr", "wait_for_stderr_sync"]
+
 
 @contextlib.contextmanager
 def register_event_handler(context: Any, event_handler: Any) -> Iterator[None]:

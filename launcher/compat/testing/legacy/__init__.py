@@ -82,8 +82,8 @@ class LaunchTestService:
                     if isinstance(exit_allowed, list | tuple | set) else bool(exit_allowed)
                 if _shutting_down(context) or allowed:
                     return None
-                self._processes_rc[event.label] = event.returncode or 1
-                return [Shutdown(reason=f"{event.label} fixture process died!")]
+                self._processes_rc[event.process_name] = event.returncode or 1
+                return [Shutdown(reason=f"{event.process_name} fixture process died!")]
 
             launch_description.add_action(RegisterEventHandler(
                 OnProcessExit(target_action=action, on_exit=fixture_exited)))
@@ -96,8 +96,8 @@ class LaunchTestService:
         if isinstance(action, ExecuteProcess):
             def test_exited(event: Any, _context: Any) -> list[Any]:
                 if event.returncode != 0:
-                    self._processes_rc[event.label] = event.returncode
-                    return self._fail(test_name, reason=f"{event.label} test failed!")
+                    self._processes_rc[event.process_name] = event.returncode
+                    return self._fail(test_name, reason=f"{event.process_name} test failed!")
                 return self._succeed(test_name)
 
             launch_description.add_action(RegisterEventHandler(

@@ -1,23 +1,7 @@
 """launch_pytest.tools (launcher.compat.testing)."""
 
 from launch_pytest.tools import process
-from launcher.compat.testing.launch_pytest.tools import (
-    assert_output,
-    assert_output_sync,
-    assert_stderr,
-    assert_stderr_sync,
-    wait_for_exit,
-    wait_for_exit_sync,
-    wait_for_output,
-    wait_for_output_sync,
-    wait_for_start,
-    wait_for_start_sync,
-    wait_for_stderr,
-    wait_for_stderr_sync,
-)
+from launcher.compat.testing.launch_pytest import tools as _tools
+from launcher.compat.testing.launch_pytest.tools import *  # noqa: F403
 
-__all__ = [
-    "assert_output", "assert_output_sync", "assert_stderr", "assert_stderr_sync", "process",
-    "wait_for_exit", "wait_for_exit_sync", "wait_for_output", "wait_for_output_sync",
-    "wait_for_start", "wait_for_start_sync", "wait_for_stderr", "wait_for_stderr_sync"
-]
+__all__ = ["process", *_tools.__all__]
