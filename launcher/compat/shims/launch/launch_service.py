@@ -22,6 +22,7 @@ class LaunchService:
         self.__running = threading.Event()
         self.__ran = False
         self.__shutdown_asked: str | None = None
+        self.__async_loop: Any = None  # the asyncio loop awaiting run_async, while it does
 
     @property
     def context(self) -> Any:
@@ -51,8 +52,20 @@ class LaunchService:
         elif type(event).__name__ == "Shutdown":
             self.__shutdown_asked = getattr(event, "reason", "shutdown requested")
 
-    def shutdown(self, force_sync: bool = False) -> None:
-        """End the launch (its processes stopped as on Ctrl-C); before it runs: at once."""
+    def shutdown(self, force_sync: bool = False) -> Any:
+        """End the launch (its processes stopped as on Ctrl-C); before it runs: at once.
+        Called from within the asyncio loop that awaits `run_async`, it returns a coroutine
+        that does it when awaited, as launch's does (one never awaited ends nothing)."""
+        if not force_sync and self.__async_loop is not None and \
+                _running_loop() is self.__async_loop:
+            return self._shutdown_awaited()
+        self._shutdown_now()
+        return None
+
+    async def _shutdown_awaited(self) -> None:
+        self._shutdown_now()
+
+    def _shutdown_now(self) -> None:
         if self.__running.is_set():
             self.__service.loop.call_soon_threadsafe(self.__service.shutdown,
                                                      "LaunchService.shutdown() called")
@@ -93,8 +106,12 @@ class LaunchService:
         """`run`, awaited: the launch runs in a thread of its own beside the asyncio loop."""
         import asyncio
 
-        return await asyncio.get_running_loop().run_in_executor(
-            None, lambda: self.run(shutdown_when_idle=shutdown_when_idle))
+        self.__async_loop = asyncio.get_running_loop()
+        try:
+            return await self.__async_loop.run_in_executor(
+                None, lambda: self.run(shutdown_when_idle=shutdown_when_idle))
+        finally:
+            self.__async_loop = None
 
     def _service(self) -> Any:
         if self.__service is None:
@@ -106,6 +123,15 @@ class LaunchService:
             self.__service.context.argv = self.__argv
             self.__service.context.noninteractive = self.__noninteractive
         return self.__service
+
+
+def _running_loop() -> Any:
+    import asyncio
+
+    try:
+        return asyncio.get_running_loop()
+    except RuntimeError:
+        return None
 
 
 from launcher.compat.finder import rest_from_layout  # noqa: E402
