@@ -4,6 +4,7 @@ driver processes on a real Zenoh router; the worlds are SDF, found through the h
 
 from __future__ import annotations
 
+import collections
 import queue
 import random
 import re
@@ -44,11 +45,14 @@ def wait_for_driving(ws, timeout: float = 90) -> None:
 
 
 def first_line_with(ws, args: list[str], needle: str, timeout: float = 60) -> str:
-    """Run `launcher ARGS` until a line holds `needle`; that line ("" if none came within
-    `timeout` seconds: the test fails, it does not wait for ever)."""
+    """Run `launcher ARGS` until a line holds `needle`; that line. None within `timeout`
+    seconds fails the test, saying what the command printed (its errors too) and whether it
+    had ended."""
     proc = subprocess.Popen([*launcher_argv(), *args], cwd=ws.root, env=ws.env,
-                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     lines: queue.Queue[str] = queue.Queue()
+    seen: collections.deque[str] = collections.deque(maxlen=12)
+    count = 0
 
     def read() -> None:  # (ends with the output)
         for line in proc.stdout:
@@ -64,7 +68,13 @@ def first_line_with(ws, args: list[str], needle: str, timeout: float = 60) -> st
                 break
             if needle in line:
                 return line
-        return ""
+            seen.append(line)
+            count += 1
+        ended = proc.poll()
+        raise AssertionError(
+            f"no line with {needle!r} from `launcher {' '.join(args)}` in {timeout:g} s: "
+            f"{count} other lines, the command {'running' if ended is None else f'ended ({ended})'};"
+            f" its last lines:\n{''.join(seen)}")
     finally:
         proc.send_signal(signal.SIGINT)
         proc.wait(30)
