@@ -215,14 +215,18 @@ _NOTHING = object()
 
 
 def _inside_standard_import() -> bool:
-    """Whether a standard library module is being imported: its optional imports (copy's
-    `org.python.core`) are never interface packages, and looking them up would import modules
-    that need it whole (ElementTree needs copy.deepcopy)."""
-    for name, module in list(sys.modules.items()):
-        spec = getattr(module, "__spec__", None)
-        if getattr(spec, "_initializing", False) and \
-                name.partition(".")[0] in sys.stdlib_module_names:
+    """Whether this thread is importing a standard library module: its optional imports
+    (copy's `org.python.core`) are never interface packages, and looking them up would import
+    modules that need it whole (ElementTree needs copy.deepcopy). This thread's own: a module
+    another thread imports meanwhile (a container loading two components at once) must not
+    hide `rcl_interfaces` from this one."""
+    frame = sys._getframe(1)
+    while frame is not None:
+        if frame.f_code.co_name == "<module>" and \
+                str(frame.f_globals.get("__name__", "")).partition(".")[0] in \
+                sys.stdlib_module_names:
             return True
+        frame = frame.f_back
     return False
 
 

@@ -237,3 +237,33 @@ def test_a_default_value_that_does_not_fit_its_type_is_said_at_its_line(tmp_path
         parse_msg("int32 plain\nint32 count seven\n", "my_msgs/msg/Bad", Path("Bad.msg"))
     assert str(raised.value) == ("Bad.msg:2: invalid default value 'seven' for int32 count "
                                  "(expected a whole number)")
+
+
+def test_another_threads_standard_import_hides_no_interface_package():
+    """A standard library module that another thread is importing (a container loading two
+    components at once) does not make this thread's `rcl_interfaces` unknown: only this
+    thread's own standard imports are passed over."""
+    import importlib
+    import types
+
+    busy = types.ModuleType("xml.being_imported")
+    busy.__spec__ = importlib.machinery.ModuleSpec("xml.being_imported", None)
+    busy.__spec__._initializing = True  # as importlib marks a module it is executing
+    sys.modules[busy.__name__] = busy
+    gone = {name: sys.modules.pop(name) for name in list(sys.modules)
+            if name.partition(".")[0] == "diagnostic_msgs"}
+    try:
+        assert importlib.import_module("diagnostic_msgs.msg").KeyValue().key == ""
+    finally:
+        del sys.modules[busy.__name__]
+        sys.modules.update(gone)
+
+
+def test_this_threads_standard_import_is_passed_over():
+    """copy's `from org.python.core import …` and the like: an optional import made while a
+    standard library module runs is never looked up in the type store."""
+    found = {}
+    exec(compile("found['inside'] = inside()", "<standard>", "exec"),
+         {"__name__": "copy", "found": found, "inside": finder._inside_standard_import})
+    assert found["inside"] is True
+    assert finder._inside_standard_import() is False
