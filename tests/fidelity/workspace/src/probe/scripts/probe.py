@@ -10,6 +10,7 @@ does); under launcher, rospy is launcher's. Then it exits, or sleeps while PROBE
 
 import json
 import os
+import signal
 import sys
 import time
 
@@ -24,6 +25,14 @@ def parameter_files(argv):
             except OSError as error:
                 found[value] = f"<unreadable: {error.strerror}>"
     return found
+
+
+STOPPED = []  # the stop signal that came while the start was being recorded
+
+
+def _stopped(signum, _frame):
+    STOPPED.append(signum)
+    raise KeyboardInterrupt  # (as Python's own handler: the probe ends by SIGINT)
 
 
 def ros1_parameters():
@@ -51,6 +60,8 @@ def record_start():
         try:
             record["parameters"] = ros1_parameters()
         except Exception as error:  # recorded, not raised: the record says what failed
+            if STOPPED:  # a start cut short by the launch's end (numpy's import turns the
+                raise KeyboardInterrupt from None  # interruption into an ImportError)
             record["parameters"] = {"<error>": repr(error)}
     out = os.environ["PROBE_OUT"]
     name = f"{time.monotonic_ns()}-{os.getpid()}.json"
@@ -60,6 +71,7 @@ def record_start():
 
 
 def main():
+    signal.signal(signal.SIGINT, _stopped)
     record_start()
     time.sleep(float(os.environ.get("PROBE_SLEEP", "0")))
     sys.exit(int(os.environ.get("PROBE_EXIT", "0")))
