@@ -77,9 +77,11 @@ class NodeParameters:
     def declare(self, declared: tuple[Param, ...], only: tuple[str, ...] = ()) -> dict[str, Any]:
         """Parameters declared as data (those named in `only`, else all): checked against
         their declarations, their defaults kept as values (listed, as a ROS node lists what it
-        declares) and described by `describe`. A ParameterError, naming the node, for the
-        first bad one."""
-        self._declared = declared
+        declares) and described by `describe`. Declarations add up, as a ROS node's do (a
+        name declared again takes its new declaration). A ParameterError, naming the node, for
+        the first bad one."""
+        names = {param.name for param in declared}
+        self._declared = (*(p for p in self._declared if p.name not in names), *declared)
         found = declarations.read(declared, self._values, only, self.owner)
         for name, value in found.items():
             self._values.setdefault(name, value)

@@ -42,3 +42,14 @@ def test_a_read_only_declared_parameter_is_refused_from_outside_and_described_so
         "parameter 'joints' cannot be set because it is read-only"
     assert params.get("joints") == ["a"] and params.describe("joints")["read_only"]
     assert params.request("rate", 2.0) is None and params.get("rate") == 2.0
+
+
+def test_declarations_add_up_as_a_ros_nodes_do():
+    """A node whose parts declare their own (the controller manager, then each mujoco plugin)
+    describes every part's parameters, and a name declared again takes its new declaration."""
+    params = NodeParameters({}, "/n")
+    params.declare((Param("update_rate", "int", 100, "Hz"), Param("a", "double", 1.0, "old")))
+    params.declare((Param("plugin.rate", "double", 30.0, "Hz"), Param("a", "double", 1.0, "new")))
+    assert params.describe("update_rate")["description"] == "Hz"  # (the first part's)
+    assert params.describe("plugin.rate")["type"] == 3  # (PARAMETER_DOUBLE)
+    assert params.describe("a")["description"] == "new"

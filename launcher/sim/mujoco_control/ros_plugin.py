@@ -12,7 +12,7 @@ from typing import Any
 from launcher.bus.declarations import PLACEHOLDER, Param
 from launcher.control.yaml_places import key_place
 from launcher.errors import LaunchError, ParameterError
-from launcher.records import dataclass, field
+from launcher.records import dataclass
 from launcher.sim import schedule
 
 ROOT = "mujoco_plugins."
@@ -27,8 +27,6 @@ class Context:
     world: Any
     where: str  # the hardware's place: for a message with no better one
     files: list[str]  # the node's parameter files: where a setting is written
-    # the declarations of the node's plugins so far: the node keeps one set (node.params.declare)
-    declared: list[Param] = field(default_factory=list)
 
 
 class RosPlugin:
@@ -56,14 +54,13 @@ class RosPlugin:
         return cls.SCOPE or f"{ROOT}{name}."
 
     def _declare(self, mine: tuple[Param, ...]) -> dict[str, Any]:
-        """`mine` read through the node's params.declare, with the declarations of its other
-        plugins (so `ros2 param describe` tells every one); a bad value refused at its line."""
+        """`mine` read through the node's params.declare (which adds them to the node's
+        declarations: `ros2 param describe` tells every plugin's); a bad value refused at its
+        line."""
         if not mine:
             return {}
-        self.context.declared += mine
         try:
-            found = self.node.params.declare(tuple(self.context.declared),
-                                             tuple(p.name for p in mine))
+            found = self.node.params.declare(mine)
         except ParameterError as exc:  # (it names the node)
             raise LaunchError(f"{self.place(exc.name)}: {exc}") from None
         return {name.removeprefix(self.prefix): value for name, value in found.items()}
