@@ -35,7 +35,7 @@ class MatchWatch:
                  report: Callable[[MatchedStatus], None], space: keys.Space = keys.ROS) -> None:
         self._report = report
         self._alive: set[str] = set()
-        self._total = self._reported_total = self._reported_current = 0
+        self._total = 0
         self._lock = threading.Lock()  # (the changes are counted and reported in their order)
         self._subscriber = session.liveliness().declare_subscriber(
             keys.endpoints_selector(keys.DOMAIN, kind, topic, space),
@@ -44,20 +44,17 @@ class MatchWatch:
     def _on_token(self, sample: Any) -> None:
         name = str(sample.key_expr)
         with self._lock:
-            if sample.kind == zenoh.SampleKind.PUT:
-                if name in self._alive:
-                    return
+            came = sample.kind == zenoh.SampleKind.PUT
+            if came == (name in self._alive):  # (a token told twice, or one never seen)
+                return
+            if came:
                 self._alive.add(name)
                 self._total += 1
-            elif name in self._alive:
-                self._alive.discard(name)
             else:
-                return
-            current = len(self._alive)
-            status = MatchedStatus(self._total, self._total - self._reported_total, current,
-                                   current - self._reported_current)
-            self._reported_total, self._reported_current = self._total, current
-            self._report(status)
+                self._alive.discard(name)
+            # each status is one endpoint's coming (+1 to both counts) or going (-1 now)
+            self._report(MatchedStatus(self._total, int(came), len(self._alive),
+                                       1 if came else -1))
 
     def undeclare(self) -> None:
         self._subscriber.undeclare()

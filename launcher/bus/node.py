@@ -117,6 +117,7 @@ class Node:
         self.session = self.host.session
         self._timers: list[Timer] = []
         self._watched: list[Any] = []  # publishers whose subscribers it watches (recheck)
+        self._rechecks: Any = None  # the timer that looks again
         self._token = self.host.announce(keys.NODE)
         self._shutdown = self.session.declare_queryable(
             keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self.host.node_id),
@@ -204,13 +205,12 @@ class Node:
         RECHECK seconds: a word of Zenoh's that never came, or came out of order, heals
         there (a lazy node left believing nobody listens never publishes again)."""
         publisher.watch_subscribers(callback)
-        if not self._watched:
-            self.create_timer(RECHECK, self._recheck)
+        if self._rechecks is None:
+            self._rechecks = self.create_timer(RECHECK, self._recheck)
         self._watched.append(publisher)
 
     def _recheck(self) -> None:
-        for publisher in self._watched:
-            publisher.recheck()
+        self._watched = [publisher for publisher in self._watched if publisher.recheck()]
 
     def create_timer(self, period: float, callback: Callable[[], None],
                      clock: Clock | None = None) -> Timer:

@@ -109,18 +109,20 @@ class Publisher:
                                         functools.partial(self._host.enqueue, callback),
                                         self.space))
 
-    def recheck(self) -> None:
+    def recheck(self) -> bool:
         """Tell the watchers what Zenoh says now where it differs from what they were told
-        (Node.watch_subscribers calls this on a timer)."""
+        (Node.watch_subscribers calls this on a timer); False once destroyed (no more to
+        look at)."""
         with self._watching:
             if self._closed or not self._watchers:
-                return
+                return not self._closed
             matching = self._matching
             if matching == self._told:
-                return
+                return True
             self._told = matching
             for watcher in self._watchers:
                 self._host.enqueue(watcher, matching)
+            return True
 
     def publish(self, message: Any) -> None:
         self.publish_raw(self._write(message))

@@ -30,12 +30,14 @@ from launcher.lifecycle import (
     ACTIVE,
     CLEANUP,
     CONFIGURE,
+    DEACTIVATE,
     INACTIVE,
     INACTIVE_SHUTDOWN,
     LABELS,
     MACHINE,
     UNCONFIGURED,
     UNCONFIGURED_SHUTDOWN,
+    reached,
 )
 
 BEST_EFFORT, STRICT, AUTO, FORCE_AUTO = 1, 2, 3, 4
@@ -308,7 +310,7 @@ class ControllerManager:
         finally:
             self.resources.release(controller.name)
             controller.commands = []
-            controller.state = INACTIVE
+            controller.state = reached(ACTIVE, DEACTIVATE)  # (raised or not)
             if controller in self.active:
                 self.active.remove(controller)
 
