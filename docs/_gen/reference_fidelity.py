@@ -11,6 +11,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 from tests.fidelity.choices import CHOICES  # noqa: E402
 from tests.fidelity.corpus import cases  # noqa: E402
+from tests.fidelity.extensions import EXTENSIONS  # noqa: E402
 from tests.fidelity.known import KNOWN_DIFFERENCES  # noqa: E402
 from tests.fidelity.left_out import LEFT_OUT  # noqa: E402
 from tests.fidelity.surface_check import GAPS, sizes  # noqa: E402
@@ -70,7 +71,24 @@ def page() -> str:
               "the list: the test fails on an unexpected pass).", ""]
     lines += [f"- `{name}`" for name in known] or \
         ["None: every case agrees with the real tool, or differs on purpose (above)."]
-    return "\n".join(lines + surface()) + "\n"
+    return "\n".join(lines + extensions() + surface()) + "\n"
+
+
+EXTENSIONS_INTRO = """## launcher's extensions
+
+What a ROS 2 launch file may say beyond ROS 2's own launch. Real `ros2 launch` refuses a file
+that uses one, so such a file says so once: in XML `<launch extensions="launcher">`, in YAML
+`extensions: [launcher]` beside `launch:` (the same tags and attributes as XML), in Python by
+importing from `launcher.api.extensions` (not from `launch` or `launch_ros`, which stay
+ROS's). Without it, the tag or attribute is an error that names the opt-in.
+"""
+
+
+def extensions() -> list[str]:
+    lines = ["", EXTENSIONS_INTRO, "| extension | XML (and YAML) | Python | why |",
+             "| --- | --- | --- | --- |"]
+    lines += [f"| {e.what} | {e.xml} | {e.python} | {e.why} |" for e in EXTENSIONS]
+    return lines
 
 
 SURFACE_INTRO = """## The Python API, against the real packages

@@ -42,9 +42,9 @@ BUILTINS: dict[str, dict[str, str]] = {
         "lifecycle_node": _ACTIONS + "lifecycle",
         **dict.fromkeys(("node_container", "load_composable_node"), _ACTIONS + "composition"),
         **dict.fromkeys(("push_ros_namespace", "push-ros-namespace", "set_parameter",
-                         "set_parameters_from_file", "set_remap", "set_use_sim_time",
-                         "roslaunch_machine"),
+                         "set_parameters_from_file", "set_remap", "set_use_sim_time"),
                         _ACTIONS + "ros"),
+        **dict.fromkeys(("machine", "roslaunch_machine"), _ACTIONS + "machine"),
     },
     "substitution": {
         **dict.fromkeys(("var", "for-var", "index", "anon"), _SUBS + "configuration"),
@@ -61,11 +61,16 @@ BUILTINS: dict[str, dict[str, str]] = {
 }
 
 
-def action(*tags: str):
-    """Mark a class as the action for the frontend tags `tags`; the registry collects it."""
+EXTENSION = "extension"  # a declared field's metadata key: launcher's own field, not ROS 2's
+
+
+def action(*tags: str, extension: bool = False):
+    """Mark a class as the action for the frontend tags `tags`; the registry collects it.
+    `extension`: launcher's own, beyond ROS 2's launch (a file uses it once it says so)."""
 
     def mark(cls: type) -> type:
         cls.tags = tags
+        cls.extension = extension
         return cls
 
     return mark

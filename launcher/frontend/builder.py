@@ -14,7 +14,7 @@ from launcher.description.action import Action, LaunchDescription
 from launcher.description.condition import TextCondition
 from launcher.description.fields import Kind, coerce, declared_fields, frontend_name
 from launcher.description.parameters import Written
-from launcher.description.registry import Registry, default_registry
+from launcher.description.registry import EXTENSION, Registry, default_registry
 from launcher.description.substitution import Substitution, Text, Text_, is_literal
 from launcher.errors import LaunchError, Location, ParseError, did_you_mean
 from launcher.frontend.entity import Attribute, Entity
@@ -27,8 +27,69 @@ _CONDITIONS = ("if", "unless")
 def build_description(root: Entity, path: Path, registry: Registry | None = None) -> \
         LaunchDescription:
     registry = registry or default_registry()
+    if not _opted_in(root):
+        _refuse_extensions(root, registry)
     actions = [build_action(child, registry) for child in root.children]
     return LaunchDescription(actions, file=path, where=root.location)
+
+
+# --- launcher's extensions: a ROS 2 file that uses them says so once ----------------------
+EXTENSIONS = ("launcher",)  # what `<launch extensions="…">` (YAML `extensions: […]`) takes
+
+
+def _opted_in(root: Entity) -> bool:
+    given = root.attributes.get("extensions")
+    if given is None:
+        return False
+    words = str(given.value).replace(",", " ").split()
+    for word in words:
+        if word not in EXTENSIONS:
+            raise ParseError(f"extensions: expected {', '.join(EXTENSIONS)} (launcher's own), "
+                             f"got '{word}'{did_you_mean(word, EXTENSIONS)}", given.location)
+    return "launcher" in words
+
+
+def _refuse_extensions(root: Entity, registry: Registry) -> None:
+    """A tag or attribute of launcher's own, in a file that does not say it uses them (real
+    ros2 launch refuses such a file): an error at it, naming the opt-in. roslaunch's own
+    (a ROS 1 file's machine=) are no extension."""
+    actions = registry.known("action")
+    for entity in _entities(root):
+        cls = registry.find_action(entity.tag) if entity.tag in actions else None
+        if cls is None:
+            continue
+        if getattr(cls, "extension", False):
+            raise ParseError(_no_opt_in(f"<{entity.tag}>", root), entity.location)
+        for name in _extension_names(cls):
+            given = entity.attributes.get(name)
+            if given is not None and not given.roslaunch:
+                raise ParseError(_no_opt_in(f"{entity.tag}'s {name}=", root),
+                                 given.name_location)
+
+
+def _entities(entity: Entity):
+    """The entity and every one nested in it, as children or in attributes (YAML's)."""
+    yield entity
+    for child in entity.children:
+        yield from _entities(child)
+    for attribute in entity.attributes.values():
+        if isinstance(attribute.value, list):
+            for nested in attribute.value:
+                yield from _entities(nested)
+
+
+def _extension_names(cls: type) -> list[str]:
+    if not hasattr(cls, "__dataclass_fields__"):  # (a ROS 2 extension's own class)
+        return []
+    return [n for f, s in declared_fields(cls) if f.metadata.get(EXTENSION)
+            for n in (frontend_name(f, s), *s.aliases)]
+
+
+def _no_opt_in(what: str, root: Entity) -> str:
+    how = '<launch extensions="launcher">' if root.nested_in_children else \
+        "'extensions: [launcher]' beside 'launch:'"
+    return (f"{what} is launcher's extension, which ROS 2's launch lacks: say so once with "
+            f"{how} (ros2 launch refuses this file either way)")
 
 
 def build_action(entity: Entity, registry: Registry) -> Action:

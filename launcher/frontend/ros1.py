@@ -16,20 +16,22 @@ ROS 1 → launcher:
 - `group ns` → `group` with `push_ros_namespace`; `include file ns pass_all_args` with `arg`
   children → `include` (its arguments kept apart, as roslaunch scopes them per file).
 - `remap` and `env` outside a node → `set_remap`, `set_env` (scoped by `group`).
-- `machine` on this host is accepted (a node sent to another host is refused); `test` is
-  rostest's, which roslaunch does not run.
+- `machine name address user ssh-port env-loader timeout default` → `roslaunch_machine`
+  (a node's `machine=` names one; `password=`, `ros-*=` and `<env>` in it are refused); `test`
+  is rostest's, which roslaunch does not run.
 """
 
 from __future__ import annotations
 
 import re
 
+from launcher.description.actions.machine import DEFAULTS, password_refusal
 from launcher.description.parameters import ROS1_TYPES
 from launcher.errors import Location, ParseError, did_you_mean
 from launcher.frontend.entity import Attribute, Entity
 
 # What only ROS 1 says, and what only ROS 2 says (a tag, or an attribute of a tag).
-ROS1_TAGS = {"rosparam": "<rosparam>", "machine": "<machine>", "test": "<test>"}
+ROS1_TAGS = {"rosparam": "<rosparam>", "test": "<test>"}  # (and <machine>: see dialect)
 ROS2_TAGS = {"let", "set_env", "unset_env", "push_ros_namespace", "push-ros-namespace",
              "executable", "composable_node", "node_container", "load_composable_node",
              "set_parameter", "set_remap", "set_parameters_from_file", "set_use_sim_time",
@@ -39,12 +41,21 @@ WARN = "[WARN] [launch]"
 
 def dialect(root: Entity, default: str = "ros2") -> str:
     """'ros1' or 'ros2' for an XML launch tree (`default` when nothing tells: ROS 1 for a
-    `.launch` file); a file that mixes them is an error naming a line of each."""
-    ros1 = ros2 = None
+    `.launch` file); a file that mixes them is an error naming a line of each. A file that
+    opts in to launcher's extensions is a ROS 2 file; `<machine>` tells ROS 1 only when
+    nothing tells ROS 2 (a ROS 2 file's is launcher's extension)."""
+    ros1 = ros2 = machine = None
+    extended = root.attributes.get("extensions")
+    if extended is not None:
+        ros2 = ("`extensions=` on <launch>", extended.location)
     for entity in _walk(root):
+        if entity.tag == "machine":  # (a ROS 2 file's is launcher's: builder.py says so)
+            machine = machine or ("<machine>", entity.location)
+            continue
         one, two = _signs(entity)
         ros1 = ros1 or one
         ros2 = ros2 or two
+    ros1 = ros1 or (None if ros2 else machine)
     if ros1 and ros2:
         raise ParseError(f"this file mixes roslaunch (ROS 1) and ROS 2 launch XML: "
                          f"{ros1[0]} at line {ros1[1].line} is ROS 1, {ros2[0]} at line "
@@ -90,7 +101,6 @@ def translate(root: Entity) -> Entity:
     _unique_names(root.children, "", {})
     _args_once(root.children, {})
     _one_condition(root)
-    _local_machines(root)
     out = Entity("launch", root.location, nested_in_children=True)
     _WARNINGS.clear()
     deprecated = root.attributes.get("deprecated")
@@ -131,34 +141,6 @@ def _one_condition(root: Entity) -> None:
             raise ParseError(f"<{entity.tag}> has both if= and unless=: roslaunch takes one "
                              "of them on a tag (nest a <group> for the other)",
                              entity.attributes["unless"].location)
-
-
-LOCAL_ADDRESSES = {"localhost", "127.0.0.1", "::1"}
-
-
-def _local_machines(root: Entity) -> None:
-    """roslaunch's `<machine>`: one on this host is accepted; a node sent to another host is
-    an error (launcher runs every node here), said at the node, naming the machine."""
-    import socket
-
-    here = LOCAL_ADDRESSES | {socket.gethostname(), socket.getfqdn()}
-    remote: dict[str, str] = {}
-    for entity in _walk(root):
-        if entity.tag == "machine":
-            name, address = _literal(entity, "name"), _literal(entity, "address")
-            if name and address and address not in here:
-                remote[name] = address
-            for child in entity.children:
-                raise ParseError(f"<machine> takes no <{child.tag}> (roslaunch refuses <env> "
-                                 "in <machine> since ROS Fuerte); put the <env> in the "
-                                 "<node>, or around it", child.location)
-    for entity in _walk(root):
-        machine = _literal(entity, "machine") if entity.tag in ("node", "test") else None
-        if machine and machine in remote:
-            raise ParseError(f"machine='{machine}' is {remote[machine]}, another host: "
-                             "launcher runs every node on this host (remote machines are "
-                             "not supported); leave machine= out, or point the <machine> at "
-                             "localhost", entity.attributes["machine"].location)
 
 
 def _literal(entity: Entity, name: str) -> str | None:
@@ -285,13 +267,70 @@ def _entity(entity: Entity) -> list[Entity]:
     if tag == "env":
         _known(entity, {"name", "value"})
         return [_copy(entity, "set_env", {"name": "name", "value": "value"})]
-    if tag == "machine":  # this host's (a remote one is refused at its nodes)
-        _known(entity, {"name", "address", "env-loader", "ssh-port", "user", "password",
-                        "default", "timeout"})
-        return [_copy(entity, "roslaunch_machine", {"name": "name"})]
+    if tag == "machine":
+        return [_machine(entity)]
     return [_warning(f"{entity.location}: roslaunch has no tag <{tag}>; it is ignored, as "
                      "roslaunch ignores it (ROS 1's tags: arg, node, param, rosparam, group, "
                      "include, remap, env, machine, test)", entity.location)]
+
+
+MACHINE_ATTRS = ("name", "address", "env-loader", "ssh-port", "user", "default", "timeout")
+ROS_ATTRS = ("ros-root", "ros-package-path", "ros-ip", "ros-hostname")
+
+
+def _machine(entity: Entity) -> Entity:
+    """xmlloader._machine_tag's checks of what is written out (what substitutions make is
+    checked as the machine is declared), at the attribute."""
+    for name in ROS_ATTRS:
+        if name in entity.attributes:
+            raise ParseError("<machine>: ros-* attributes are not supported since ROS Fuerte. "
+                             "Please use env-loader instead",
+                             entity.attributes[name].name_location)
+    password = entity.attributes.get("password")
+    if password is not None:
+        user, address = _literal(entity, "user"), _literal(entity, "address")
+        raise ParseError(password_refusal(f"{user}@{address}" if user and address else
+                                          address or "HOST"), password.name_location)
+    for child in entity.children:
+        raise ParseError(f"<machine> takes no <{child.tag}> (roslaunch refuses <env> in "
+                         "<machine> since ROS Fuerte); put the <env> in the <node>, or "
+                         "around it", child.location)
+    _known(entity, set(MACHINE_ATTRS))
+    for needed in ("name", "address"):
+        if needed not in entity.attributes:
+            raise ParseError(f"<machine> tag is missing required attribute: {needed}",
+                             entity.location)
+    _machine_values(entity)
+    return _copy(entity, "roslaunch_machine", {name: name for name in MACHINE_ATTRS})
+
+
+def _machine_values(entity: Entity) -> None:
+    """default= (any case, as roslaunch lowers it), timeout= and ssh-port=, as written."""
+    default = entity.attributes.get("default")
+    word = _literal(entity, "default")
+    if default is not None and word is not None:
+        if word.strip().lower() not in DEFAULTS:
+            raise ParseError(f"<machine default='{word}'>: expected true, false or never"
+                             f"{did_you_mean(word.lower(), DEFAULTS)}", default.location)
+        entity.attributes["default"] = Attribute(word.strip().lower(), default.location)
+    timeout = _literal(entity, "timeout")
+    if "timeout" in entity.attributes and timeout is not None and not _number(timeout, 0.0):
+        raise ParseError(f"<machine timeout='{timeout}'>: expected a number of seconds > 0",
+                         entity.attributes["timeout"].location)
+    port = _literal(entity, "ssh-port")
+    if "ssh-port" in entity.attributes and port is not None and \
+            not (port.strip().isdigit() and 1 <= int(port) <= 65535):
+        raise ParseError(f"<machine ssh-port='{port}'>: expected a port number, 1 to 65535",
+                         entity.attributes["ssh-port"].location)
+
+
+def _number(text: str, above: float) -> bool:
+    """Whether `text` is a finite number > `above`."""
+    try:
+        value = float(text)
+    except ValueError:
+        return False
+    return value > above and value != float("inf")
 
 
 def _ns_given(entity: Entity) -> None:

@@ -59,7 +59,8 @@ def load_xml(data: bytes, file: str) -> Entity:
     root = roots[0]
     if root.tag != "launch":
         raise ParseError(f"the root element is <{root.tag}>; expected <launch>", root.location)
-    unexpected = sorted(set(root.attributes) - {"version", "deprecated"})  # (roslaunch's)
+    # (version, deprecated: roslaunch's; extensions: launcher's, see builder.py)
+    unexpected = sorted(set(root.attributes) - {"version", "deprecated", "extensions"})
     if unexpected:
         raise ParseError(f"<launch> takes no attribute '{unexpected[0]}'", root.location)
     return root

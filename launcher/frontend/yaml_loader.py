@@ -42,14 +42,36 @@ def load_yaml(text: str, file: str) -> Entity:
         raise ParseError(f"malformed YAML: {exc}", Location(file)) from None
     if root is None:
         raise ParseError("the file is empty; expected a 'launch:' root", Location(file, 1, 1))
-    if not isinstance(root, yaml.MappingNode) or len(root.value) != 1:
+    if not isinstance(root, yaml.MappingNode) or not root.value:
         raise ParseError("expected a single 'launch:' root key", _where(file, root))
-    key, body = root.value[0]
-    if key.value != "launch":
-        raise ParseError(f"the root key is '{key.value}'; expected 'launch'", _where(file, key))
+    keys = {str(key.value): (key, body) for key, body in root.value}
+    for key, _ in root.value:
+        if key.value not in ROOT_KEYS:
+            raise ParseError(f"the root key is '{key.value}'; expected 'launch' (and, for "
+                             "launcher's extensions, 'extensions' beside it)",
+                             _where(file, key))
+    if "launch" not in keys or len(keys) != len(root.value):
+        raise ParseError("expected a single 'launch:' root key", _where(file, root))
+    key, body = keys["launch"]
     entity = Entity("launch", _where(file, key))
     entity.children = _children(file, body, "launch")
+    if "extensions" in keys:
+        entity.attributes["extensions"] = _extensions(file, *keys["extensions"])
     return entity
+
+
+ROOT_KEYS = ("launch", "extensions")
+
+
+def _extensions(file: str, key: yaml.Node, node: yaml.Node) -> Attribute:
+    """`extensions: [launcher]` (or one word): the words, as XML's `extensions=` has them."""
+    items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+    if not all(isinstance(item, yaml.ScalarNode) for item in items):
+        raise ParseError("'extensions' expects a list of names: extensions: [launcher]",
+                         _where(file, node))
+    made = Attribute(" ".join(str(item.value) for item in items), _where(file, node))
+    made.key_location = _where(file, key)
+    return made
 
 
 def _children(file: str, node: yaml.Node, parent: str) -> list[Entity]:

@@ -16,6 +16,7 @@ from typing import Any, NamedTuple, Protocol, runtime_checkable
 
 from launcher.records import dataclass
 from launcher.runtime.files_read import FilesRead
+from launcher.runtime.machine import Machine
 
 
 @dataclass
@@ -130,7 +131,10 @@ class LaunchContext:
         self.graph_parameters: dict[str, Any] = {}
         # roslaunch's `rosparam delete|dump` ([command, name(, file)]), run before they are set
         self.graph_commands: list[list[str]] = []
-        self.machines: set[str] = set()  # roslaunch's <machine> names
+        self.machines: dict[str, Machine] = {}  # the machines declared so far, by name
+        # roslaunch's <machine default="true">: for its later nodes without machine=, in
+        # document order whatever the group or include (not scoped: xmlloader._recurse_load)
+        self.default_machine: Machine | None = None
         # what is checked once the launch files being read are read (each may raise a
         # LaunchError: the launch fails before the processes waiting for that start)
         self.loaded_checks: list[Callable[[], None]] = []

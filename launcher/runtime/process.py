@@ -21,6 +21,7 @@ from typing import Any, NamedTuple
 
 from launcher.records import dataclass, field
 from launcher.runtime.loop import EventLoop, Timer
+from launcher.runtime.machine import Machine, RemoteStart
 from launcher.runtime.output import Record
 from launcher.runtime.system import Processes, System
 
@@ -77,6 +78,18 @@ class ProcessSpec:
     # it is done fails the launch.
     helper_done_line: str = ""
 
+    # Where it runs: None, or a machine on this host, here; another host's over ssh, where
+    # `remote` says how it starts (its argv then lacks the executable's own words)
+    machine: Machine | None = None
+    remote: RemoteStart | None = None
+
+    @property
+    def program(self) -> str:
+        """What it runs, as errors name it: on another host, the executable found there."""
+        if self.remote is not None and self.remote.executable:
+            return self.remote.executable
+        return self.argv[0] if self.argv else self.label
+
 
 class ProcessHooks(NamedTuple):
     """What a process tells its supervisor; all called on the loop."""
@@ -123,6 +136,12 @@ class ManagedProcess:
         return self.spec.label
 
     @property
+    def shown(self) -> str:
+        """Its name on the screen and in the log: `talker-1@robot2` on another host."""
+        machine = self.spec.machine
+        return self.label if machine is None or machine.local else f"{self.label}@{machine.name}"
+
+    @property
     def leader_running(self) -> bool:
         """Its process (the group's leader) has not been collected yet."""
         return self.pid is not None and not self._leader_gone
@@ -137,7 +156,7 @@ class ManagedProcess:
         self.state = new
 
     def _log(self, level: str, message: str) -> None:
-        self.hooks.log(level, self.label, message)
+        self.hooks.log(level, self.shown, message)
 
     # --- starting ---------------------------------------------------------------------------
     def spawn(self) -> None:
@@ -185,7 +204,7 @@ class ManagedProcess:
     def _emit(self, stream: str, raw: bytes) -> None:
         text = raw.decode("utf-8", errors="replace").rstrip("\r")
         targets = self.spec.stdout_to if stream == "stdout" else self.spec.stderr_to
-        self.hooks.line(self, Record(self.label, text, stream), targets)
+        self.hooks.line(self, Record(self.shown, text, stream), targets)
 
     def _close_stream(self, fd: int) -> None:
         if fd in self._streams:

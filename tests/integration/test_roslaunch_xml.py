@@ -412,8 +412,8 @@ def test_rosparam_bad_input(ros1, args, expected):
 def test_required_test_and_machine(ros1):
     """roslaunch: a node with required="true" ends the launch when it exits; <test> is
     rostest's, which roslaunch ignores (roslaunch/xmlloader.py runs tests only for rostest);
-    a <machine> on this host is accepted, and a node sent to another host is refused (launcher
-    runs every node here)."""
+    a <machine> on this host runs its nodes here, and a machine= no <machine> declares is
+    refused at its node."""
     ros1.write("req.launch", """<launch>
   <machine name="here" address="localhost"/>
   <machine name="far" address="10.0.0.2"/>
@@ -428,12 +428,13 @@ def test_required_test_and_machine(ros1):
     assert "REPORT" in result.stdout and "process stopped" in result.stdout
     ros1.write("far.launch", """<launch>
   <machine name="far" address="10.0.0.2"/>
-  <node name="remote" pkg="tools" type="report" machine="far"/>
+  <node name="remote" pkg="tools" type="report" machine="fra"/>
 </launch>
 """)
     far = ros1.run("launch", "far.launch", timeout=60)
     assert far.returncode == 1
-    assert "far.launch:3:3: machine='far' is 10.0.0.2, another host" in far.stderr, far.stderr
+    said = far.stdout + far.stderr
+    assert "far.launch:3:3: unknown machine 'fra' (did you mean 'far'?)" in said, said
     ros1.write("test.launch", """<launch>
   <test test-name="reports" pkg="tools" type="report"/>
   <node name="plain" pkg="tools" type="report" output="screen"/>

@@ -9,8 +9,8 @@
   * xmlloader.py: a tag under a false if=/unless= is skipped whole (so an arg may be
     declared under opposite conditions); <test> is rostest's (roslaunch does not run it);
   * substitution_args.py resolve_args: $(eval …) is evaluated only when the attribute starts
-    with '$(eval ' and ends with ')';
-  * <machine>: launcher runs every node on this host (a remote one is refused at its node)."""
+    with '$(eval ' and ends with ')'.
+(<machine>'s rules: test_machines.py.)"""
 
 from __future__ import annotations
 
@@ -95,20 +95,6 @@ def test_a_test_tag_is_not_run_by_roslaunch(tmp_path):
 
     assert started("node")  # the same entry as a node is run
     assert not started("test")
-
-
-def test_a_node_on_a_remote_machine_is_refused_a_local_one_runs(tmp_path):
-    remote = launch(tmp_path, '<launch>\n<machine name="far" address="10.1.2.3"/>\n'
-                              '<machine name="near" address="localhost"/>\n'
-                              '<node name="n" pkg="p" type="t" machine="far"/>\n</launch>\n')
-    with pytest.raises(ParseError, match="machine='far' is 10.1.2.3, another host") as caught:
-        load_file(remote)
-    assert caught.value.location.line == 4
-    local = launch(tmp_path, '<launch>\n<machine name="near" address="localhost"/>\n'
-                             '<machine name="far" address="10.1.2.3"/>\n'
-                             '<node name="n" pkg="p" type="t" machine="near"/>\n</launch>\n',
-                   "local.launch")
-    load_file(local)  # a remote machine no node uses is no error, as in roslaunch
 
 
 @pytest.mark.parametrize("condition", ['if="yes"', 'unless="maybe"', 'if=""'])

@@ -9,6 +9,13 @@ from typing import Any
 from launcher.description.action import Action
 from launcher.description.actions.entries import NameValue
 from launcher.description.actions.event_handlers import OnProcessExit, OnProcessStart
+from launcher.description.actions.machine import (
+    HERE,
+    Placement,
+    lookup,
+    machine_attr,
+    scoped,
+)
 from launcher.description.actions.shutdown import Shutdown
 from launcher.description.command_line import join_command, split_command
 from launcher.description.condition import entry_applies, if_attr, unless_attr
@@ -18,6 +25,7 @@ from launcher.description.substitution import Substitution, Text_, perform_text,
 from launcher.errors import ExecutionError, did_you_mean
 from launcher.records import dataclass, field
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.machine import Machine, RemoteStart
 from launcher.runtime.process import ProcessSpec
 
 # output mode -> (where stdout goes, where stderr goes), as in ROS 2
@@ -66,6 +74,9 @@ class ExecuteProcess(Action):
     on_start: Any = attr(Kind.ACTIONS, doc="Actions to run each time the process starts.")
     additional_env: list[EnvEntry] = attr(Kind.ENTRIES, name="env", entry=EnvEntry,
                                           doc="Environment variables for this process.")
+    machine: Any = machine_attr("The machine it runs on, one a <machine> declares "
+                                "(roslaunch's machine=; in ROS 2 files launcher's extension); "
+                                "default: its group's, else this host.")
     # the Python API's env=: the whole environment instead of the launch's (as ROS 2's)
     env: dict[Any, Any] | None = field(default=None, repr=False)
     # the Python API's cached_output=: keep the output for get_stdout()/get_stderr() (tests)
@@ -134,17 +145,30 @@ class ExecuteProcess(Action):
         argv = self.command_line(context)
         base = perform_text(context, self.name) if self.name is not None else \
             os.path.basename(argv[0]) if argv else ""
-        return self.process_spec(context, argv, self.environment(context), base)
+        machine = self.machine_of(context)
+        placement = Placement(machine, None if machine is None or machine.local else
+                              RemoteStart(None, None))  # (its command, run there as is)
+        return self.process_spec(context, argv, self.environment(context), base,
+                                 placement=placement)
+
+    def machine_of(self, context: LaunchContext) -> Machine | None:
+        """The machine it runs on: the one it names, else its scope's (None: here)."""
+        if self.machine is not None:
+            return lookup(context, perform_text(context, self.machine))
+        return scoped(context)
 
     def process_spec(self, context: LaunchContext, argv: list[str], env: dict[str, str],
-                     base: str, cwd: str | None = None) -> ProcessSpec:
+                     base: str, cwd: str | None = None,
+                     placement: Placement = HERE) -> ProcessSpec:
         """The process to start, from its command line, environment and label base (and its
-        working folder, when the action decides it otherwise than by `cwd`)."""
+        working folder, when the action decides it otherwise than by `cwd`; and where it
+        runs: a process on another host is checked there, not here)."""
         if not argv:
             raise ExecutionError("the command line is empty")
         if cwd is None and self.cwd is not None:
             cwd = perform_text(context, self.cwd)
-        program = _check_runnable(argv[0], env, cwd)
+        remote = placement.remote is not None
+        program = argv[0] if remote else check_runnable(argv[0], env, cwd)
         mode = resolve(context, self.output or "log", Kind.TEXT, "output",
                        _field_spec(self, "output"))
         stdout_to, stderr_to = OUTPUT_MODES[mode]
@@ -154,7 +178,7 @@ class ExecuteProcess(Action):
 
         return ProcessSpec(
             label=context.service.next_label(base), argv=argv, env=env, cwd=cwd,
-            joins_graph=_may_join_graph(program),
+            joins_graph=remote or _may_join_graph(program),
             emulate_tty=resolve(context, self.emulate_tty, Kind.BOOL, "emulate_tty"),
             stdout_to=frozenset(stdout_to), stderr_to=frozenset(stderr_to),
             sigterm_timeout=num("sigterm_timeout", Kind.FLOAT),
@@ -162,6 +186,7 @@ class ExecuteProcess(Action):
             respawn=resolve(context, self.respawn, Kind.BOOL, "respawn"),
             respawn_delay=num("respawn_delay", Kind.FLOAT),
             respawn_max_retries=num("respawn_max_retries", Kind.INT), origin=self,
+            machine=placement.machine, remote=placement.remote,
         )
 
     def execute(self, context: LaunchContext) -> Sequence[Action] | None:
@@ -175,7 +200,7 @@ class ExecuteProcess(Action):
         try:
             context.service.start_process(spec, lambda process: self._spawned(context, process))
         except OSError as exc:
-            raise ExecutionError(f"cannot start '{spec.argv[0]}': {exc.strerror or exc}") from None
+            raise ExecutionError(f"cannot start '{spec.program}': {exc.strerror or exc}") from None
         return None
 
     def _spawned(self, context: LaunchContext, process: Any) -> None:
@@ -274,7 +299,7 @@ def _may_join_graph(program: str) -> bool:
     return folder not in SYSTEM_FOLDERS or name.startswith("python")
 
 
-def _check_runnable(program: str, env: dict[str, str], cwd: str | None) -> str:
+def check_runnable(program: str, env: dict[str, str], cwd: str | None) -> str:
     """The program's path; clear errors for the usual mistakes, before trying to spawn."""
     if cwd is not None and not os.path.isdir(cwd):
         raise ExecutionError(f"cwd '{cwd}' does not exist or is not a folder")

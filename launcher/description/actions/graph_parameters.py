@@ -89,3 +89,6 @@ class _Helper(ExecuteProcess):
         spec = super().spec(context)
         spec.helper_done_line = DONE_LINE
         return spec
+
+    def machine_of(self, context: LaunchContext) -> None:
+        return None  # (the launch's own: here, whatever machine its scope names)

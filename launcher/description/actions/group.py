@@ -1,4 +1,5 @@
-"""`group`: children in a scope of their own (configurations and environment)."""
+"""`group`: children in a scope of their own (configurations and environment), on a machine
+of their own if it names one."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ from typing import Any
 
 from launcher.description.action import Action, PopScope, PushScope
 from launcher.description.actions.arguments import KeepEntry, kept_configurations
+from launcher.description.actions.machine import PushMachine, machine_attr
 from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.substitution import to_text
@@ -23,6 +25,8 @@ class GroupAction(Action):
                            doc="The group sees the configurations set outside it.")
     keep: list[Any] = attr(Kind.ENTRIES, entry=KeepEntry,
                            doc="With forwarding false: configurations still passed in.")
+    machine: Any = machine_attr("The machine its processes run on, one a <machine> declares "
+                                "(launcher's extension; a process's own machine= wins).")
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -30,11 +34,14 @@ class GroupAction(Action):
             self.keep = [KeepEntry(to_text(k), to_text(v)) for k, v in self.keep.items()]
 
     def execute(self, context: LaunchContext) -> Sequence[Action]:
+        actions = list(self.actions)
+        if self.machine is not None:
+            actions.insert(0, PushMachine(name=self.machine, where=self.where))
         if not resolve(context, self.scoped, Kind.BOOL, "scoped"):
-            return list(self.actions)
+            return actions
         keep = kept_configurations(context, self.keep)
         forwarding = resolve(context, self.forwarding, Kind.BOOL, "forwarding")
-        return [PushScope(forwarding=forwarding, keep=keep), *self.actions, PopScope()]
+        return [PushScope(forwarding=forwarding, keep=keep), *actions, PopScope()]
 
     def sub_actions(self) -> Sequence[Action]:
         return self.actions

@@ -18,8 +18,9 @@ from pathlib import Path
 from typing import Any
 
 from launcher.description import parameters as params
-from launcher.description.actions.executable import ExecuteProcess
+from launcher.description.actions.executable import ExecuteProcess, check_runnable
 from launcher.description.actions.graph_parameters import to_graph
+from launcher.description.actions.machine import Placement, lookup, params_files
 from launcher.description.actions.param_entry import (
     ParamEntry,
     parameter_groups,
@@ -31,12 +32,14 @@ from launcher.description.fields import Kind, attr, resolve
 from launcher.description.registry import action
 from launcher.description.ros_names import check_namespace, check_node_name
 from launcher.description.substitution import Text_, perform_text, to_text
-from launcher.errors import ExecutionError, did_you_mean
+from launcher.errors import ExecutionError, LaunchError
 from launcher.lineage import NODE_PARAMETERS
 from launcher.packages.executables import Executable, find_executable
 from launcher.packages.index import PackageNotFound
 from launcher.records import dataclass
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.machine import Machine, RemoteStart
+from launcher.runtime.process import ProcessSpec
 
 GUI_TOOLS = ("rqt", "rqt_gui", "rqt_graph", "rqt_plot", "rqt_console",
              "rqt_image_view", "rqt_robot_steering", "joint_state_publisher_gui", "gzclient")
@@ -92,8 +95,6 @@ class Node(ExecuteProcess):
     ros1: Any = attr(Kind.BOOL, False, doc="roslaunch's command line: ARGS, then FROM:=TO, "
                                            "__name:=, __ns:= and __log:=, the namespace also "
                                            "in ROS_NAMESPACE (no --ros-args).")
-    machine: Any = attr(Kind.TEXT, doc="roslaunch's machine=: one a <machine> of the launch "
-                                       "declares (roslaunch_machine).")
     home: Any = attr(Kind.TEXT, doc="roslaunch's cwd word: ROS_HOME (the default: the node "
                                     "runs in $ROS_HOME, else ~/.ros) or node (its "
                                     "executable's folder).")
@@ -121,12 +122,10 @@ class Node(ExecuteProcess):
     def spec(self, context: LaunchContext):  # type: ignore[override]
         if context.packages is None:
             raise ExecutionError("node needs the package index, which this run lacks")
-        if self.package is None:  # launch_ros: the executable is run as a command
-            command = perform_text(context, self.executable)
-            found = Executable(os.path.basename(command), (command,))
-        else:
-            package = context.packages.get(perform_text(context, self.package))
-            found = find_executable(package, perform_text(context, self.executable))
+        ros1 = resolve(context, self.ros1, Kind.BOOL, "ros1")
+        machine, later = self._machine(context, ros1)
+        remote = later is not None or (machine is not None and not machine.local)
+        found = self._executable(context, remote)
         node = self._node_name(context)
         space = self._namespace(context)
         if self.given_name is not None:
@@ -135,7 +134,6 @@ class Node(ExecuteProcess):
         own = [(perform_text(context, r.source), perform_text(context, r.target))
                for r in self.remappings if entry_applies(context, r)]
         words = self._parameter_arguments(context, node, space, node or found.name)
-        ros1 = resolve(context, self.ros1, Kind.BOOL, "ros1")
         if ros1:  # roslaunch's LoaderContext.remap_args: one per `from`, the latest, in order
             remaps: list[tuple[str, str]] = []
             for source, target in [*params.remaps(context), *own]:
@@ -143,12 +141,11 @@ class Node(ExecuteProcess):
         else:  # launch_ros's Node: its scope's (SetRemap), then its own; rcl takes the
             remaps = [*params.remaps(context), *own]  # first match, so the scope's win
         if ros1:  # roslaunch splits args= and launch-prefix= once substituted
-            argv = [*self.run_prefix(context), *self._ros1_words(context, self.prefix),
-                    *found.argv,
-                    *self._ros1_words(context, self.arguments)]
+            head = [*self.run_prefix(context), *self._ros1_words(context, self.prefix)]
+            argv = [*head, *found.argv, *self._ros1_words(context, self.arguments)]
         else:
-            argv = [*self.launch_prefix(context), *found.argv,
-                    *self._words(context, self.arguments)]
+            head = self.launch_prefix(context)
+            argv = [*head, *found.argv, *self._words(context, self.arguments)]
         if ros1:  # as roslaunch's node_args.create_local_process_args builds it
             argv += [f"{source}:={target}" for source, target in remaps]
             argv += [f"__name:={node}"] if node else []  # the namespace: ROS_NAMESPACE alone
@@ -178,8 +175,11 @@ class Node(ExecuteProcess):
                 import json  # (ROS 1 alone: start-up time)
 
                 env[NODE_PARAMETERS] = json.dumps(words)
-        cwd = self._ros1_cwd(context, argv[0], env) if ros1 else None
-        spec = self.process_spec(context, argv, env, base, cwd)
+        home = self._home(context) if ros1 else ""
+        cwd = self._ros1_cwd(home, argv[0], env) if ros1 and not remote else None
+        placement = Placement(machine, self._remote_start(context, len(head), argv, words)
+                              if remote else None)
+        spec = self.process_spec(context, argv, env, base, cwd, placement)
         if ros1:  # nodeprocess: the log file is named after the node's full name
             stem = "-".join(p for p in (*space.split("/"), spec.label) if p)
             import tempfile
@@ -189,21 +189,62 @@ class Node(ExecuteProcess):
         self.name = spec.label  # (launch_ros's Node.name: its process's, once it has run)
         spec.joins_graph = True
         spec.after_loading = ros1  # roslaunch: once every file is read and its parameters set
-        if self.machine is not None:
-            self._check_machine(context, perform_text(context, self.machine))
+        if later is not None:
+            context.loaded_checks.append(lambda: self._place(context, spec, later, home))
         return spec
 
-    def _check_machine(self, context: LaunchContext, machine: str) -> None:
-        """roslaunch's assign_machines: a machine= no <machine> declares is an error."""
-        where = self.where
+    # --- where it runs ----------------------------------------------------------------------
+    def _machine(self, context: LaunchContext, ros1: bool) -> tuple[Machine | None, str | None]:
+        """The machine it runs on; for a ROS 1 node naming one not declared yet, its name
+        instead (roslaunch's assign_machines takes a machine declared anywhere in the
+        launch: the node is placed once the launch files are read)."""
+        if ros1 and self.machine is not None:
+            name = perform_text(context, self.machine)
+            if name not in context.machines:
+                return None, name
+        machine = self.machine_of(context)
+        if machine is None and ros1:  # roslaunch's <machine default="true"> before it
+            machine = context.default_machine
+        return machine, None
 
-        def declared() -> None:
-            if machine not in context.machines:
-                raise ExecutionError(f"unknown machine '{machine}'"
-                                     f"{did_you_mean(machine, context.machines)}: declare it "
-                                     "with <machine name=… address=\"localhost\"/> (launcher "
-                                     "runs every node on this host)", where)
-        context.loaded_checks.append(declared)
+    def _executable(self, context: LaunchContext, remote: bool) -> Executable:
+        """What runs it: a command (no package, as launch_ros has it), or the package's
+        executable, found here; one on another host is found there (its words are not
+        known here)."""
+        if self.package is None:  # launch_ros: the executable is run as a command
+            command = perform_text(context, self.executable)
+            return Executable(os.path.basename(command), (command,))
+        name = perform_text(context, self.executable)
+        if remote:
+            return Executable(name, ())
+        return find_executable(context.packages.get(perform_text(context, self.package)), name)
+
+    def _remote_start(self, context: LaunchContext, at: int, argv: list[str],
+                      words: list[str]) -> RemoteStart:
+        """How it starts on another host: its package's executable found there, its words
+        at `at`, and its parameter files sent along (a ROS 1 node's are in its environment)."""
+        if self.package is None:
+            return RemoteStart(None, None, files=params_files(argv, words))
+        return RemoteStart(perform_text(context, self.package),
+                           perform_text(context, self.executable), at,
+                           params_files(argv, words))
+
+    def _place(self, context: LaunchContext, spec: ProcessSpec, name: str, home: str) -> None:
+        """A ROS 1 node whose machine was declared after it, placed once the launch files
+        are read: on another host as made, or, on this host after all, found here."""
+        try:
+            spec.machine = lookup(context, name)
+            if spec.machine.local and spec.remote is not None:
+                start, spec.remote = spec.remote, None
+                if start.package is not None:
+                    found = find_executable(context.packages.get(start.package),
+                                            start.executable or "")
+                    spec.argv[start.at:start.at] = found.argv
+                    spec.env = found.environment(spec.env)
+                spec.cwd = self._ros1_cwd(home, spec.argv[0], spec.env)
+                check_runnable(spec.argv[0], spec.env, spec.cwd)
+        except LaunchError as exc:
+            raise exc.at(self.where) from None
 
     def _ros1_words(self, context: LaunchContext, value: Any) -> list[str]:
         """roslaunch's node args and launch-prefix: the text, substituted, then split as a
@@ -218,10 +259,14 @@ class Node(ExecuteProcess):
         except ValueError as exc:
             raise ExecutionError(f"cannot split '{text}' into words: {exc}") from None
 
-    def _ros1_cwd(self, context: LaunchContext, program: str, env: dict[str, str]) -> str:
+    def _home(self, context: LaunchContext) -> str:
+        """roslaunch's cwd word: ROS_HOME or node."""
+        return perform_text(context, self.home) if self.home is not None else "ROS_HOME"
+
+    @staticmethod
+    def _ros1_cwd(word: str, program: str, env: dict[str, str]) -> str:
         """nodeprocess.LocalProcess.start: the node's folder for cwd="node", else ROS home
         (made when missing)."""
-        word = perform_text(context, self.home) if self.home is not None else "ROS_HOME"
         if word == "node":
             return os.path.dirname(program) or "."
         home = env.get("ROS_HOME") or os.path.join(os.path.expanduser("~"), ".ros")

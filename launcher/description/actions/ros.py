@@ -119,19 +119,6 @@ class SetParameter(Action):
                              params_folder(context))
 
 
-@action("roslaunch_machine")
-@dataclass(kw_only=True, eq=False)
-class RoslaunchMachine(Action):
-    """roslaunch's `<machine>` (a ROS 1 file's, on this host): its name, which a node's
-    `machine=` may give; a name no `<machine>` of the launch declares is refused once the
-    launch files are read, before any node starts, as roslaunch refuses it."""
-
-    name: Any = attr(Kind.TEXT, required=True, doc="The machine's name.")
-
-    def execute(self, context: LaunchContext) -> None:
-        context.machines.add(perform_text(context, self.name))
-
-
 @action("set_parameters_from_file")
 @dataclass(kw_only=True, eq=False)
 class SetParametersFromFile(Action):
