@@ -130,6 +130,8 @@ LAUNCHER: dict[str, Verb | Group | Tool] = {
                                             "rosrun)", name="run", debug="lead"),
     "router": Verb("launcher.cli.router_command", "run a standing router of the graph (other "
                                                   "hosts join with --listen)"),
+    "remote-supervisor": Verb("launcher.cli.remote_supervisor_command",
+                              "(internal) what a launch runs on another host over ssh"),
     "sim": Tool("launcher.cli.sim_command", "run the MuJoCo world server", name="sim",
                 debug="none"),
     "gz": Tool("launcher.cli.gz_command", "Gazebo's commands (sim, topic, service, model) over "

@@ -1,4 +1,5 @@
-"""A small single-threaded event loop over `selectors`: file readers, timers and signals.
+"""A small single-threaded event loop over `selectors`: file readers and writers, timers and
+signals.
 
 The launcher uses this rather than asyncio because importing asyncio alone takes ~75 ms on
 the reference machine, most of the 0.10 s budget for having ten processes running; this
@@ -42,6 +43,7 @@ class EventLoop:
     def __init__(self, clock: Callable[[], float] = time.monotonic) -> None:
         self.time = clock
         self._selector = selectors.DefaultSelector()
+        self._watched = self._selector.get_map()  # (a live view: fd → key)
         self._timers: list[tuple[float, int, Timer]] = []
         self._sequence = itertools.count()
         self._signals: dict[int, Callable[[int], None]] = {}
@@ -94,11 +96,36 @@ class EventLoop:
             callback(*args)
 
     def add_reader(self, fd: int, callback: Callable[..., Any], *args: Any) -> None:
-        self._selector.register(fd, selectors.EVENT_READ, (callback, args))
+        self._watch(fd, selectors.EVENT_READ, (callback, args))
 
     def remove_reader(self, fd: int) -> None:
+        self._watch(fd, selectors.EVENT_READ, None)
+
+    def add_writer(self, fd: int, callback: Callable[..., Any], *args: Any) -> None:
+        """`callback(*args)` whenever `fd` can take more (a non-blocking writer's queue)."""
+        self._watch(fd, selectors.EVENT_WRITE, (callback, args))
+
+    def remove_writer(self, fd: int) -> None:
+        self._watch(fd, selectors.EVENT_WRITE, None)
+
+    def _watch(self, fd: int, event: int, handler: tuple | None) -> None:
+        """Set (or, with None, drop) the handler of one event of `fd`; an fd may have a
+        reader and a writer, each an entry of its key's {event: handler}."""
+        try:
+            handlers = dict(self._selector.get_key(fd).data)
+        except (KeyError, ValueError):  # (ValueError: a closed fd, or not one)
+            handlers = {}
+        if handler is None:
+            handlers.pop(event, None)
+        else:
+            handlers[event] = handler
+        mask = 0
+        for each in handlers:
+            mask |= each
         with contextlib.suppress(KeyError, ValueError):
             self._selector.unregister(fd)
+        if mask:
+            self._selector.register(fd, mask, handlers)
 
     # --- signals --------------------------------------------------------------------------
     def add_signal_handler(self, sig: int, callback: Callable[[int], None]) -> None:
@@ -178,11 +205,14 @@ class EventLoop:
         timeout = None
         if self._timers:
             timeout = max(0.0, self._timers[0][0] - self.time())
-        for key, _ in self._selector.select(timeout):
-            callback, args = key.data
-            callback(*args)
-            if self._stopped:
-                return
+        for key, ready in self._selector.select(timeout):
+            for event in (selectors.EVENT_READ, selectors.EVENT_WRITE):
+                # (looked up again: the reader's callback may have dropped the writer)
+                handler = key.data.get(event) if ready & event else None
+                if handler is not None and self._watched.get(key.fd) is key:
+                    handler[0](*handler[1])
+                    if self._stopped:
+                        return
         now = self.time()
         while self._timers and self._timers[0][0] <= now and not self._stopped:
             _, _, timer = heapq.heappop(self._timers)

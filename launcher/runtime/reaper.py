@@ -54,8 +54,8 @@ class Launch:
             self.pids |= lineage.marked(self.mark)
         return self.groups, self.pids
 
-    def clean_up(self) -> None:
-        """End everything of the launch: SIGTERM, then SIGKILL after the grace period."""
+    def clean_up(self, grace: float = GRACE_SECONDS) -> None:
+        """End everything of the launch: SIGTERM, then SIGKILL `grace` seconds later."""
         if self.ended and not lineage.live_groups({g for g in self.groups if group_alive(g)}):
             return  # the launcher looked last: nothing of the launch was left
         quiet = 0
@@ -67,7 +67,7 @@ class Launch:
                 continue
             quiet = 0
             _signal(groups, pids, signal.SIGTERM)
-            deadline = time.monotonic() + GRACE_SECONDS
+            deadline = time.monotonic() + grace
             while time.monotonic() < deadline and any(self.live()):
                 time.sleep(0.02)
             _signal(*self.live(), signal.SIGKILL)
@@ -99,6 +99,20 @@ def watch(fd: int, mark: str | None) -> None:
     launch.clean_up()
 
 
+def _let_go_of_streams(keep: int) -> None:
+    """Close every inherited fd but `keep`, the standard ones onto /dev/null: a launcher
+    whose stdout is a pipe (the remote supervisor's: ssh's channel) is seen to end when that
+    closes, which a watchdog holding a copy would put off until its own end."""
+    null = os.open(os.devnull, os.O_RDWR)
+    for fd in (0, 1, 2):
+        if fd != null:
+            os.dup2(null, fd)
+    for name in os.listdir("/proc/self/fd"):
+        if int(name) > 2 and int(name) != keep:
+            with contextlib.suppress(OSError):  # (listdir's own fd, closed already)
+                os.close(int(name))
+
+
 def fork_watchdog(mark: str | None = None) -> tuple[int, int]:
     """Start the watchdog; return (its pid, the fd to write to). Call before any thread."""
     read, write = os.pipe()
@@ -107,7 +121,7 @@ def fork_watchdog(mark: str | None = None) -> tuple[int, int]:
         code = 0
         try:
             os.setsid()
-            os.close(write)
+            _let_go_of_streams(read)
             watch(read, mark)
         except BaseException:  # noqa: BLE001 - nothing to report to; still clean up
             code = 1
