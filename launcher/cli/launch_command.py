@@ -13,6 +13,7 @@ from launcher.bus import discovery
 from launcher.cli import completion
 from launcher.cli.components import BusLoader
 from launcher.cli.lifecycle_bus import BusLifecycle
+from launcher.cli.remote_graph import RemoteGraph
 from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
 from launcher.description.actions.arguments import check_required
@@ -132,6 +133,7 @@ def launch_service(configurations: dict[str, str], index: PackageIndex, *, debug
         # is spawned (so it starts while that one imports); a launch of system programs needs
         # none, and a node that opens its session sooner starts it itself
         on_graph=lambda: discovery.start(environment, wait=False),
+        remote_graph=RemoteGraph(environment, custody.stamp),
     )
 
 

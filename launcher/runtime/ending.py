@@ -89,6 +89,10 @@ class Ending:
         if self.table.alive():  # helpers alone, their work done
             self.shutdown("only the launch's helpers are left")
             return
+        hosts = self.table.hosts
+        if hosts is not None and hosts.open:  # each other host ends what is left there
+            hosts.close(then=self.check)
+            return
         if self._sweep is None:
             left = self.custody.leftovers()
             if left:

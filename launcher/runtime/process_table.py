@@ -9,8 +9,10 @@ from typing import Any
 
 from launcher.runtime import events
 from launcher.runtime.custody import Custody
+from launcher.runtime.hosts import Hosts
 from launcher.runtime.logs import RunLog
 from launcher.runtime.loop import EventLoop
+from launcher.runtime.machine import RemoteStart
 from launcher.runtime.output import Printer, Record
 from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec
 from launcher.runtime.system import Processes
@@ -21,19 +23,24 @@ class ProcessTable:
                  run_log: RunLog | None, log: Callable[[str, str, str], None],
                  emit: Callable[[events.Event], None], listened: Callable[[], bool],
                  changed: Callable[[], None], on_graph: Callable[[], None] | None,
-                 helper_over: Callable[[bool], None] = lambda done: None) -> None:
+                 helper_over: Callable[[bool], None] = lambda done: None,
+                 hosts: Hosts | None = None) -> None:
         """`emit` hands events to the handlers (`listened`: whether any would hear a line);
         `changed` is called when a process exits or a helper is done; `on_graph` once, when
         the first process that may join the graph is spawned; `helper_over(done)` when a
-        helper says its work is done, or ends before it has (see ProcessSpec)."""
+        helper says its work is done, or ends before it has (see ProcessSpec); `hosts` starts
+        the processes sent to other hosts."""
         self.loop, self.system, self.custody = loop, system, custody
         self.printer, self.run_log, self.log = printer, run_log, log
         self.emit, self.listened, self.changed = emit, listened, changed
         self.on_graph, self.helper_over = on_graph, helper_over
         self.processes: list[ManagedProcess] = []
         self._count = 0
+        self.hosts = hosts
         self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
                                    exited=self._on_exited, log=log, group=custody.group)
+        # (a group on another host is that host's to watch: its number means nothing here)
+        self._remote_hooks = self._hooks._replace(group=lambda pgid, alive: None)
 
     def next_label(self, base: str) -> str:
         """`base-N`, N counting every process of this run (as ROS 2 numbers them)."""
@@ -43,7 +50,12 @@ class ProcessTable:
     def start(self, spec: ProcessSpec) -> ManagedProcess:
         """Spawn now; OSError (not found, not executable, bad cwd) goes to the caller."""
         spec.env = self.custody.stamp(spec.env)
-        process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
+        machine = spec.machine
+        if machine is not None and not machine.local and self.hosts is not None:
+            system = self.hosts.system_for(machine, spec.remote or RemoteStart(None, None))
+            process = ManagedProcess(spec, self._remote_hooks, self.loop, system=system)
+        else:
+            process = ManagedProcess(spec, self._hooks, self.loop, system=self.system)
         # Ctrl-C in between would leave a running process that the shutdown does not know
         # (and that respawns for ever): the signal waits until it is recorded
         with self.loop.shielded():
@@ -81,7 +93,9 @@ class ProcessTable:
 
     def look_for_orphans(self) -> None:
         """Custody notes what the launch's processes left below the launcher."""
-        self.custody.tick({p.pid for p in self.processes if p.leader_running and p.pid})
+        owned = {p.pid for p in self.processes
+                 if p.leader_running and p.pid and not _remote(p.spec)}
+        self.custody.tick(owned | (self.hosts.pids() if self.hosts else set()))
 
     # --- hooks of each process ---------------------------------------------------------------
     def _on_line(self, process: ManagedProcess, record: Record, targets: frozenset[str]) -> None:
@@ -102,7 +116,7 @@ class ProcessTable:
                                     record.text, process.spec.argv, process.pid))
 
     def _on_started(self, process: ManagedProcess) -> None:
-        self.log("INFO", process.label, f"process started with pid [{process.pid}]")
+        self.log("INFO", process.shown, f"process started with pid [{process.pid}]")
         spec = process.spec
         self.emit(events.ProcessStarted(action=spec.origin, name=process.label,
                                         cmd=spec.argv, cwd=spec.cwd, env=spec.env,
@@ -119,6 +133,10 @@ class ProcessTable:
         if not respawn_pending:
             self.emit(events.ExecutionComplete(action=spec.origin))
         self.changed()
+
+
+def _remote(spec: ProcessSpec) -> bool:
+    return spec.machine is not None and not spec.machine.local
 
 
 def spec_timeouts(table: ProcessTable) -> tuple[float, float]:

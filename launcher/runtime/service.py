@@ -27,6 +27,7 @@ from launcher.runtime.coroutines import Coroutines
 from launcher.runtime.custody import TICK, Custody
 from launcher.runtime.ending import Ending
 from launcher.runtime.handlers import Handlers
+from launcher.runtime.hosts import Graph, Hosts
 from launcher.runtime.lifecycle import Lifecycle, LifecycleRequests
 from launcher.runtime.logs import RunLog
 from launcher.runtime.loop import EventLoop, Timer
@@ -57,9 +58,11 @@ class LaunchService:
         loader: Loader | None = None,
         on_graph: Callable[[], None] | None = None,
         lifecycle: Lifecycle | None = None,
+        remote_graph: Graph | None = None,
     ) -> None:
         """`on_graph` runs once, when the first process that may join the graph is spawned
-        (`launcher launch` starts the graph's router there)."""
+        (`launcher launch` starts the graph's router there); `remote_graph(address)` says how
+        another host, which reaches this one at `address`, joins the launch's graph."""
         self.printer = printer or Printer()
         self.run_log = RunLog(log_root) if log_root is not None else None
         self.context = LaunchContext(
@@ -77,11 +80,13 @@ class LaunchService:
         self._given = set(configurations or {})  # the command line's name:=value names
         self.handlers = Handlers(self.context, self._guarded, self.schedule)
         self.timers = LaunchTimers(self.loop, self._check_idle)
+        hosts = Hosts(self.loop, self.context.environment, self.custody.stamp, self.log,
+                      os.urandom(8).hex(), remote_graph)
         self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
                                   self.run_log, self.log, self.emit,
                                   lambda: bool(self.handlers.registered),
                                   self._check_idle, on_graph and reporting(on_graph, self.report),
-                                  lambda done: self.gate.helper_over(done))
+                                  lambda done: self.gate.helper_over(done), hosts)
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
         self.coroutines = Coroutines(self.loop.call_soon_threadsafe, self._coroutine_failed,
                                      self._check_idle)

@@ -65,8 +65,12 @@ class StartGate:
         for spec, started in held:
             if self._shutting_down():
                 return
+            where = getattr(spec.origin, "where", None)
             try:
                 self._start(spec, started)
+            except LaunchError as exc:  # (another host that cannot be reached)
+                self._fail(exc.at(where))
+                return
             except OSError as exc:
-                self._report(ExecutionError(f"cannot start '{spec.argv[0]}': "
-                                            f"{exc.strerror or exc}"))
+                self._report(ExecutionError(f"cannot start '{spec.program}': "
+                                            f"{exc.strerror or exc}", where))
