@@ -45,6 +45,7 @@ from launcher.private import open_private, private_folder
 
 LINGER = 3.0  # seconds a started router waits with nothing connected before it stops
 LINGER_VARIABLE = "LAUNCHER_ROUTER_LINGER"  # sets that
+JOINED_VARIABLE = "LAUNCHER_ROUTER_JOINED"  # "1": a router started for a bridge (bridge.py)
 PEER_PREFIX = "peer-"
 PEER_NAME_MAX = len(f"{PEER_PREFIX}4194304-00000000.sock")  # (Linux's largest pid)
 _ENDPOINT = re.compile(r"(?P<protocol>tcp|udp|tls|quic|ws)/(?P<host>\[[0-9a-fA-F:.]+\]|[^/:\s"

@@ -1,4 +1,5 @@
-"""What is on the bus: nodes, topics and their types, from liveliness tokens."""
+"""What is on the bus: nodes, topics and their types, and the hosts they run on, from
+liveliness tokens."""
 
 from __future__ import annotations
 
@@ -53,3 +54,15 @@ def topics(session: zenoh.Session, space: keys.Space = keys.ROS) -> dict[str, To
 
 def nodes(session: zenoh.Session) -> list[keys.Entity]:
     return [e for e in entities(session) if e.kind == keys.NODE]
+
+
+def hosts(session: zenoh.Session, timeout: float = 1.0) -> dict[str, str]:
+    """Which host each session runs on (its zid → the host's name), as launcher's sessions
+    say (keys.host_key); a session of another program (rmw_zenoh's) says nothing."""
+    found = {}
+    for reply in session.liveliness().get(keys.hosts_selector(keys.DOMAIN), timeout=timeout):
+        if reply.ok is not None:
+            said = keys.parse_host_key(str(reply.ok.key_expr))
+            if said is not None:
+                found[said[0]] = said[1]
+    return found

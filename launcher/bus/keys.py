@@ -18,6 +18,11 @@ rmw_publisher_data.cpp, rmw_subscription_data.cpp, attachment_helpers.cpp).
 The simulator's own topics and services (Gazebo's gz-transport side) use the same layout
 under other first chunks, `@sim/<domain>/…` and `@sim_lv/…`, so that they stay off the ROS
 graph (`@` chunks match no wildcard) and the bridge and the `gz` tools find them (SIM).
+
+Which host a session runs on is launcher's own token, off the ROS graph too (no tool of ROS 2
+lists it, nor does zenoh-ros2-sdk):
+
+    host           @launcher_lv/<domain>/<zid>/host/<host name>
 """
 
 from __future__ import annotations
@@ -181,6 +186,28 @@ def shutdown_key(domain: int, zid: str, node_id: int) -> str:
     """Where a node hears `rosnode kill` (launcher's own key, off the ROS graph: no tool of
     ROS 2 lists it)."""
     return f"launcher_control/{domain}/shutdown/{zid}/{node_id}"
+
+
+HOSTS = "@launcher_lv"  # launcher's own tokens' first chunk
+_KEY_SPECIALS = "*$?#/"  # what a chunk of a key expression cannot hold
+
+
+def host_key(domain: int, zid: str, host: str) -> str:
+    """The token that says which host the session `zid` runs on."""
+    chunk = "".join("_" if c in _KEY_SPECIALS else c for c in host) or "_"
+    return f"{HOSTS}/{domain}/{zid}/host/{chunk}"
+
+
+def hosts_selector(domain: int) -> str:
+    return f"{HOSTS}/{domain}/*/host/*"
+
+
+def parse_host_key(key: str) -> tuple[str, str] | None:
+    """(zid, host name) of a host token; None if it is not one."""
+    parts = key.split("/")
+    if len(parts) != 5 or parts[0] != HOSTS or parts[3] != "host":
+        return None
+    return parts[2], parts[4]
 
 
 def attachment(sequence: int, timestamp_ns: int, gid: bytes) -> bytes:

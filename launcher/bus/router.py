@@ -4,8 +4,9 @@ Started by discovery (`--lock-fd`): it listens on the domain's socket, lets the 
 and stops once nothing has been connected for `--linger` seconds. Run by `launcher router`
 (standing): it serves the domain's socket itself, unless a router already does, and with
 `--listen` it is also the gateway for other hosts: a second router session, joined to the
-local one, listening there and admitting only those who present the user's credentials.
-It runs until SIGINT or SIGTERM. Both sweep the socket files of peers that died.
+local one, listening there and admitting only those who present the user's credentials;
+with `--join` it is the other end, a bridge from this host's router to such a one elsewhere
+(bridge.py). It runs until SIGINT or SIGTERM. Both sweep the socket files of peers that died.
 The router that serves the domain's socket also hosts the graph's parameter server
 (graph_parameters.py), as roscore's master does. A started router's server forgets what it
 was given once nothing is connected (the launch, or the roscore, that used it has ended), as
@@ -30,13 +31,25 @@ from typing import Any
 import zenoh
 
 from launcher.arguments import Parser
-from launcher.bus import credentials, discovery
-from launcher.bus.session import config
-from launcher.errors import LaunchError, reported
+from launcher.bus import bridge, credentials, discovery
+from launcher.bus.session import config, declare_host
+from launcher.errors import LaunchError, UsageError, reported
 from launcher.private import open_private, private_folder
 
 POLL = 0.25  # seconds between two looks at what is connected
 SWEEP = 10.0  # seconds between two sweeps of dead peers' socket files (standing)
+
+
+def run(listen: list[str], join: str | None, stop: threading.Event) -> int:
+    """A standing router (`launcher router`): serving this host's graph, or with `join` a
+    bridge from it to another host's router; its exit status."""
+    if join is None:
+        return serve(listen, None, None, stop)
+    if listen:
+        raise UsageError(f"--join {join} and --listen {listen[0]}: --listen lets other hosts "
+                         "join this one, --join joins this one to another; run one router "
+                         "for each")
+    return bridge.join(join, stop)
 
 
 def serve(listen: list[str], linger: float | None, lock_fd: int | None,
@@ -59,6 +72,7 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
             else:
                 session, hosted = made
                 sessions.append(session)
+                _token = declare_host(session)  # (held: its parameter server is this host's)
         if remote:  # checks credentials, which the local router cannot ask of its peers
             try:
                 sessions.append(zenoh.open(config("router", remote,
@@ -88,7 +102,7 @@ def serve(listen: list[str], linger: float | None, lock_fd: int | None,
 
 
 def _local_router(sock: os.PathLike,
-                  lock_fd: int | None) -> tuple[zenoh.Session, Any] | None:
+                  lock_fd: int | None) -> tuple[zenoh.Session, Any | None] | None:
     """The router on the domain's socket, hosting the graph's parameter server (as roscore's
     master holds it; graph_parameters.Hosted); the start lock is held until both are there,
     so whoever finds the router finds the server. None when a standing router finds, once it
@@ -104,7 +118,9 @@ def _local_router(sock: os.PathLike,
             with contextlib.suppress(FileNotFoundError):
                 os.unlink(sock)
         session = zenoh.open(config("router", [f"unixsock-stream/{sock}"], []))
-        hosted = graph_parameters.host(session)
+        # (one joined to another host's graph by a launch's bridge: that graph's master serves)
+        hosted = None if os.environ.get(discovery.JOINED_VARIABLE) == "1" else \
+            graph_parameters.host(session)
     if lock_fd is not None:
         os.close(lock_fd)  # listening: whoever waits to connect may go on
     return session, hosted
@@ -170,16 +186,20 @@ def _until_idle(session: zenoh.Session, linger: float, stop: threading.Event,
 def main(argv: list[str] | None = None) -> int:
     parser = Parser(prog="launcher router", description=(
         "Run the graph's router for ROS_DOMAIN_ID until Ctrl-C; --listen lets other hosts "
-        "join (they set LAUNCHER_ROUTER to that endpoint and hold a copy of "
-        "~/.launcher/credentials: every link is authenticated)."))
+        "join (they set LAUNCHER_ROUTER to that endpoint, or run --join there, and hold a "
+        "copy of ~/.launcher/credentials: every link is authenticated)."))
     parser.add_argument("--listen", action="append", default=[], metavar="ENDPOINT",
                         help="also listen here, e.g. tcp/0.0.0.0:7447")
+    parser.add_argument("--join", metavar="ENDPOINT", default=None,
+                        help="join this host's graph to the router listening there")
     parser.add_argument("--linger", type=float, default=None, help=argparse.SUPPRESS)
     parser.add_argument("--lock-fd", type=int, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     stop = threading.Event()
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda *_: stop.set())
+    if args.join is not None:
+        return reported(lambda: run(args.listen, args.join, stop), "router")
     return reported(lambda: serve(args.listen, args.linger, args.lock_fd, stop), "router")
 
 

@@ -7,6 +7,9 @@ on a Unix socket of its own in the same 0700 run folder, where other peers link 
 for data; CLI tools connect as clients. Through a router on another host (LAUNCHER_ROUTER with
 a TCP endpoint), every process is a client of that router and presents the user's credentials
 (credentials.py), which the router checks.
+
+A session that holds nodes (a peer's) says which host it runs on, in one token of launcher's
+own (keys.host_key): on a graph that spans hosts, `node list` shows where each node runs.
 """
 
 from __future__ import annotations
@@ -18,12 +21,15 @@ from pathlib import Path
 
 import zenoh
 
-from launcher.bus import credentials, discovery
+from launcher.bus import credentials, discovery, keys
 from launcher.bus.discovery import NoRouter
 from launcher.bus.zenoh_settings import json5, settings
 from launcher.private import write_private
 
-__all__ = ["NoRouter", "config", "open_session", "settings", "write_session_config"]
+__all__ = ["NoRouter", "config", "declare_host", "open_session", "settings",
+           "write_session_config"]
+
+_host_tokens: dict[str, zenoh.LivelinessToken] = {}  # (a token lives as long as it is held)
 
 
 def config(mode: str, listen: list[str], connect: list[str],
@@ -62,13 +68,14 @@ def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
     env = os.environ if environ is None else environ
     discovery.domain_id(env)  # a bad ROS_DOMAIN_ID is said before anything else
     wait = discovery.timeout(env)
+    holds_nodes = mode == "peer"
     with discovery.router(env) as endpoints:
         if not all(discovery.is_local(e) for e in endpoints):
             mode = "client"
         if listen is None:
             listen = [discovery.peer_endpoint(env)] if mode == "peer" else []
         try:
-            return zenoh.open(config(mode, listen, endpoints, wait, env))
+            session = zenoh.open(config(mode, listen, endpoints, wait, env))
         except zenoh.ZError as exc:
             place, reason = ",".join(endpoints), str(exc).split(" at /")[0]
             raise NoRouter(
@@ -76,3 +83,12 @@ def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
                 + ("" if all(discovery.is_local(e) for e in endpoints) else
                    f", and does it hold the same credentials as {credentials.path(env)}")
                 + f"? ({discovery.TIMEOUT_VARIABLE} sets the wait)") from None
+    if holds_nodes:
+        _host_tokens[str(session.zid())] = declare_host(session)
+    return session
+
+
+def declare_host(session: zenoh.Session) -> zenoh.LivelinessToken:
+    """The token saying which host `session` runs on (held by the caller: dropped, it goes)."""
+    return session.liveliness().declare_token(
+        keys.host_key(keys.DOMAIN, str(session.zid()), os.uname().nodename))
