@@ -50,6 +50,21 @@ if [ "${1:-}" = test ] && ! { command -v ip && command -v setpriv && command -v 
     fi
 fi
 
+# The tests of nodes on other hosts log in over ssh to real OpenSSH servers, each in a network
+# namespace of its own (Debian's sshd, and the ssh client with ssh-keygen).
+if [ "${1:-}" = test ] && ! { [ -x /usr/sbin/sshd ] && command -v ssh && command -v ssh-keygen; \
+    } >/dev/null 2>&1; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        say "installing openssh-server and openssh-client (sshd, ssh): the tests start nodes" \
+            "on other hosts over ssh, each host an sshd in a network namespace of its own"
+        apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+            openssh-server openssh-client >/dev/null
+    else
+        echo "note: the tests of nodes on other hosts need sshd and ssh: apt-get install" \
+            "openssh-server openssh-client" >&2
+    fi
+fi
+
 # The viewer's test looks at the page in a real browser: Debian's Chromium, driven headless
 # through its chromedriver (selenium comes with the test extras).
 if [ "${1:-}" = test ] && ! { command -v chromium && command -v chromedriver; } >/dev/null 2>&1

@@ -22,6 +22,7 @@ import pytest
 
 from tests.support.environment import clean_path
 from tests.support.processes import describe, end_lingering_routers
+from tests.support.sshd import SshHosts, require
 from tests.support.workspace import Workspace
 
 # A suite started in the background of a script (`pytest &`) inherits SIGINT ignored, and so
@@ -65,3 +66,13 @@ def ws(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory)
         except OSError:
             proc.kill()
     assert not left, "processes left behind: " + ", ".join(describe(p) for p in left)
+
+
+@pytest.fixture(scope="module")
+def ssh_hosts(tmp_path_factory: pytest.TempPathFactory):
+    """robot1, robot2 and robot3: real OpenSSH hosts, each in a network namespace of its own,
+    and a launching host to run ssh (and launcher) in (tests/support/sshd.py). Skips without
+    root or OpenSSH."""
+    require()
+    with SshHosts(tmp_path_factory.mktemp("ssh")) as hosts:
+        yield hosts
