@@ -145,8 +145,18 @@ def ResetLaunchConfigurations(launch_configurations: dict | None = None, **kw: A
     return _arguments.ResetLaunchConfigurations(keep=keep, **kw)
 
 
+def _no_machine(kw: dict[str, Any], name: str) -> None:
+    """launch's and launch_ros's own classes take no machine= (ROS 2 has no multi-host
+    launch): a file that says it would not run under ros2 launch either."""
+    if "machine" in kw:
+        raise TypeError(f"{name}() got an unexpected keyword argument 'machine' (a machine is "
+                        "launcher's extension: from launcher.api.extensions import PushMachine,"
+                        f" and put PushMachine('…') before the {name} in a GroupAction)")
+
+
 def GroupAction(actions: Sequence[Any], *, scoped: bool = True, forwarding: bool = True,  # noqa: N802
                 launch_configurations: dict | None = None, **kw: Any) -> Any:
+    _no_machine(kw, "GroupAction")
     return _group.GroupAction(actions=list(actions), scoped=scoped, forwarding=forwarding,
                               keep=dict(launch_configurations or {}), **kw)
 
@@ -193,6 +203,7 @@ def Node(*, executable: Any, package: Any = None, name: Any = None, namespace: A
          exec_name: Any = None, parameters: Sequence[Any] = (), remappings: Sequence[Any] = (),
          arguments: Sequence[Any] = (), ros_arguments: Sequence[Any] = (),
          _kind: type = _node.Node, **kw: Any) -> Any:
+    _no_machine(kw, "Node")
     return _kind(package=package, executable=executable, given_name=name,
                  namespace=namespace, exec_name=exec_name, parameters=_parameters(parameters),
                  remappings=list(remappings), arguments=list(arguments) or None,

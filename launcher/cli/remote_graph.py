@@ -36,7 +36,13 @@ class RemoteGraph:
 
     def _start(self, address: str) -> tuple[subprocess.Popen[bytes], str]:
         host = f"[{address}]" if ":" in address else address
-        port = _free_port(address)
+        try:
+            port = _free_port(address)
+        except OSError as exc:  # (an address not of this host: NAT, a jump host)
+            raise LaunchError(f"the graph cannot be offered to a host that reached this one as "
+                              f"{address} ({exc.strerror or exc}): NAT or a jump host between "
+                              "them? The hosts of a launch must reach each other directly") \
+                from None
         endpoint = f"tcp/{host}:{port}"
         env = self._stamp(dict(self._environment))
         gateway = subprocess.Popen([sys.executable, "-m", "launcher", "router", "--listen",

@@ -188,7 +188,7 @@ class Hosts:
         link = HostLink(machine, self.loop, os.path.join(self._control, "%C"), self.base,
                         self.stamp, lambda level, text: self.log(level, machine.name, text))
         ready = link.open({"t": "hello", "launch": self.launch_id, "ping": PING,
-                           "silence": link.silence})
+                           "silence": link.silence, "domain": self._domain()})
         facing = str(ready.get("ssh", "")).split(" ")[0]
         if self.graph is not None and facing:
             try:
@@ -203,6 +203,11 @@ class Hosts:
                                        f"'{ready.get('host', '?')}', supervisor pid "
                                        f"{ready.get('pid', '?')}")
         return host
+
+    def _domain(self) -> int:
+        """The launch's ROS_DOMAIN_ID, which its processes there are on too."""
+        text = self.base.get("ROS_DOMAIN_ID", "").strip()
+        return int(text) if text.isdigit() else 0
 
     @property
     def open(self) -> bool:

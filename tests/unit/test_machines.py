@@ -358,3 +358,14 @@ def test_the_fidelity_page_lists_every_extension_the_registry_marks():
                   for f, s in declared_fields(cls) if f.metadata.get(EXTENSION)}
     assert tags == {tag for e in EXTENSIONS for tag in e.tags}
     assert attributes == {pair for e in EXTENSIONS for pair in e.attributes}
+
+
+@pytest.mark.parametrize("make", [
+    lambda api: api.Node(package="demo", executable="talker", machine="robot2"),
+    lambda api: api.GroupAction([], machine="robot2"),
+])
+def test_launch_ros_own_classes_take_no_machine_as_ros_2s_do(make):
+    import launcher.api as api
+
+    with pytest.raises(TypeError, match="unexpected keyword argument 'machine'.*PushMachine"):
+        make(api)
