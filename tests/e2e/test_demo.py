@@ -74,10 +74,26 @@ def first_line_with(ws, args: list[str], needle: str, timeout: float = 60) -> st
         raise AssertionError(
             f"no line with {needle!r} from `launcher {' '.join(args)}` in {timeout:g} s: "
             f"{count} other lines, the command {'running' if ended is None else f'ended ({ended})'};"
-            f" its last lines:\n{''.join(seen)}")
+            f" its last lines:\n{''.join(seen)}{_diagnose(ws, lines)}")
     finally:
         proc.send_signal(signal.SIGINT)
         proc.wait(30)
+
+
+def _diagnose(ws, lines: queue.Queue) -> str:
+    """What the graph says when a topic stays silent: who publishes it, and whether the sim
+    sends what the bridges and robot_state_publisher turn into /tf (a chain woken only by a
+    subscriber: which link is asleep). Then whether the silent echo has heard anything since."""
+    said = []
+    for command in (["topic", "info", "/tf", "-v"],
+                    ["topic", "echo", "/robot_2/joint_states", "--once", "--timeout", "5"],
+                    ["topic", "echo", "--sim", "/model/robot_2/tf", "--once", "--timeout", "5"]):
+        done = ws.run(*command, timeout=30)
+        said.append(f"$ launcher {' '.join(command)} (exit {done.returncode})\n"
+                    f"{done.stdout[-1500:]}{done.stderr[-800:]}")
+    time.sleep(3)
+    said.append(f"lines from the silent echo since: {lines.qsize()}")
+    return "\n" + "\n".join(said)
 
 
 def sim_seconds(ws) -> float:

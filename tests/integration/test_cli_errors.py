@@ -274,7 +274,7 @@ def test_colour_follows_force_color_and_no_color(ws):
     (["topic", "echo", "/x", "--onec"], "error: launcher topic echo: unrecognized arguments: "
                                         "--onec (did you mean '--once'?)"),
     (["router", "--lisen"], "error: launcher router: unrecognized arguments: --lisen "
-                            "(did you mean '--listen'?)"),
+                            "(did you mean '--listen'"),
     (["sim", "--gui-rte", "5"], "[sim] error: sim: unrecognized arguments: --gui-rte "
                                 "(did you mean '--gui-rate' or"),
     (["sim", "--gui-rate", "500"], "[sim] error: sim: --gui-rate must be between 1 and"),
