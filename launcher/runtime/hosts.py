@@ -13,8 +13,10 @@ from __future__ import annotations
 import errno
 import itertools
 import os
+import selectors
 import shutil
 import tempfile
+import time
 from collections.abc import Callable, Mapping
 from typing import Any, Protocol
 
@@ -88,9 +90,6 @@ class RemoteHost:
 
     def _wait_answer(self, process: RemoteProcess) -> dict[str, Any]:
         """Read the link until the host answers this start (frames for others are kept)."""
-        import selectors
-        import time
-
         deadline = time.monotonic() + SPAWN_WAIT
         fd = self.link.stdout_fd
         with selectors.DefaultSelector() as selector:

@@ -32,6 +32,8 @@ def argv(machine: Machine, control_path: str, environ: Mapping[str, str]) -> lis
     timeout = max(1, round(machine.timeout))
     options = ["-T", "-x", "-e", "none",
                "-o", "BatchMode=yes",
+               # (never a key accepted for the user, whatever a config file's "accept-new")
+               "-o", "StrictHostKeyChecking=yes",
                "-o", "ControlMaster=auto", "-o", f"ControlPath={control_path}",
                "-o", "ControlPersist=no",
                "-o", f"ConnectTimeout={timeout}",
