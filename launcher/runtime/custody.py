@@ -67,9 +67,8 @@ class Custody:
         keep = owned | ({self.watchdog[0]} if self.watchdog else set())
         for pid in lineage.children(os.getpid()) - keep:
             if not lineage.alive(pid):
-                if lineage.reap(pid) and pid in self.adopted:
-                    self.adopted.discard(pid)
-                    self._tell(f"p-{pid}")
+                if lineage.reap(pid):
+                    self._collected(pid)
             elif pid not in self.adopted and not lineage.is_detached(pid):
                 self.adopted.add(pid)
                 self._tell(f"p+{pid}")
@@ -82,9 +81,16 @@ class Custody:
         if self.watchdog is not None:
             found.discard(self.watchdog[0])
         for pid in lineage.children(os.getpid()) - found:  # exited adopted children
-            if self.watchdog is None or pid != self.watchdog[0]:
-                lineage.reap(pid)
+            if (self.watchdog is None or pid != self.watchdog[0]) and lineage.reap(pid):
+                self._collected(pid)
         return found
+
+    def _collected(self, pid: int) -> None:
+        """An adopted child is collected: its number may now be another process's, which the
+        watchdog must never end for the launch's."""
+        if pid in self.adopted:
+            self.adopted.discard(pid)
+            self._tell(f"p-{pid}")
 
     # --- the end ----------------------------------------------------------------------------
     def end(self, nothing_left: bool = False) -> None:
