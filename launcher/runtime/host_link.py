@@ -33,6 +33,7 @@ PING = 0.25  # s between two signs of life, each way
 SILENCE_VARIABLE = "LAUNCHER_LINK_TIMEOUT"
 SILENCE = 0.75  # s without a frame after which a link is taken as lost
 STDERR_KEPT = 8192  # bytes of ssh's own stderr kept to explain a failure
+SLICE = 0.05  # s: the longest a wait on a link goes without looking at signals
 
 
 def silence(environ: Mapping[str, str]) -> float:
@@ -96,7 +97,7 @@ class HostLink:
         self.send(hello)
         try:
             self.ready = self._wait_ready(time.monotonic() + self.machine.timeout)
-        except LaunchError:
+        except BaseException:  # (a failure, or Ctrl-C while it connects: no ssh left)
             self._kill()
             raise
         self._heard = self.loop.time()
@@ -119,7 +120,9 @@ class HostLink:
                     raise LaunchError(self._failure(
                         f"{ssh.describe(self.machine)}: did not answer within "
                         f"{self.machine.timeout:g} s (timeout=)"))
-                for key, _ in selector.select(left):
+                # (in slices: a signal taken by another thread runs its handler here only
+                # when this thread next runs Python, and Ctrl-C must not wait for `timeout`)
+                for key, _ in selector.select(min(left, SLICE)):
                     data = _read(key.fd)
                     if key.fd == err:
                         self._stderr += data or b""

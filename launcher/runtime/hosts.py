@@ -23,7 +23,7 @@ from typing import Any, Protocol
 from launcher.errors import LaunchError
 from launcher.lineage import MARK_PREFIX
 from launcher.runtime import ssh
-from launcher.runtime.host_link import PING, HostLink
+from launcher.runtime.host_link import PING, SLICE, HostLink
 from launcher.runtime.loop import EventLoop
 from launcher.runtime.machine import Machine, RemoteStart
 from launcher.runtime.remote_system import SPAWN_WAIT, RemoteProcess, RemoteSystem, shipped_files
@@ -102,7 +102,7 @@ class RemoteHost:
                 if left <= 0:
                     raise OSError(errno.ETIMEDOUT, f"machine '{self.name}' did not answer "
                                                    f"within {SPAWN_WAIT:g} s")
-                if selector.select(min(left, PING)):
+                if selector.select(min(left, SLICE)):  # (slices: see HostLink's wait)
                     self.link.read_now()
         return process.answer
 

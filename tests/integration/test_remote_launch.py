@@ -265,3 +265,20 @@ def test_after_the_launch_no_router_or_bridge_is_left_on_either_host(far):
     while far.processes() and time.monotonic() < deadline:
         time.sleep(0.05)
     assert [" ".join(p.cmdline()) for p in far.processes()] == []
+
+
+def test_ctrl_c_while_a_host_is_connected_ends_the_launch_at_once(far):
+    """A host that takes the connection and never answers: Ctrl-C does not wait for its
+    timeout (a signal another thread of the launcher took runs its handler within 50 ms)."""
+    far.write("far.launch.yaml", "extensions: [launcher]\nlaunch:\n"
+                                 "  - machine: {name: robot9, address: robot9.silent,"
+                                 " timeout: 60}\n"
+                                 "  - executable: {cmd: \"sleep 60\", name: near}\n"
+                                 "  - executable: {cmd: \"sleep 5\", name: far, machine: robot9}\n")
+    proc = far.start("launch", "far.launch.yaml", output="out.txt")
+    far.wait_for_output("[near-1]: process started", 60, "out.txt")
+    time.sleep(0.5)  # (connecting to robot9 now)
+    proc.send_signal(signal.SIGINT)
+    started = time.monotonic()
+    assert proc.wait(30) == 130
+    assert time.monotonic() - started < 5

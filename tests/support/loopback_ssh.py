@@ -20,6 +20,10 @@ def main(argv: list[str]) -> int:
     if at < len(words) and words[at] == "--":
         at += 1
     address, command = words[at], " ".join(words[at + 1:])
+    if address.endswith(".silent"):  # (a host that takes the connection and never answers)
+        import time
+        time.sleep(120)
+        return 255
     if address.endswith(".unreachable"):  # (what a host that never answers looks like)
         print(f"ssh: connect to host {address} port 22: Connection timed out", file=sys.stderr)
         return 255
