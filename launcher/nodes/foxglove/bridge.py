@@ -32,6 +32,7 @@ from launcher.nodes.foxglove.parameters import SERVICE_WAIT, NodeParameters
 from launcher.nodes.foxglove.settings import Settings, allowed
 
 SYNC_PERIOD = 1.0  # s between looks at the graph's topics and services
+QOS_LOOKUP = 5.0  # s a lookup of a topic's publishers (their QoS) may take
 
 
 class Bridge:
@@ -182,7 +183,11 @@ class Bridge:
         """Transient local where a publisher latches (robot_description, tf_static), the
         deepest publisher's depth up to max_qos_depth."""
         latched, depth = False, 1
-        for entity in graph.entities(self.node.graph_session()):
+        # (the topic's publishers alone, given time: a reply cut short by a busy machine
+        # read a latched topic as volatile, and its one message was never seen)
+        for entity in graph.entities(self.node.graph_session(), QOS_LOOKUP,
+                                     selector=keys.endpoints_selector(keys.DOMAIN,
+                                                                      keys.PUBLISHER, topic)):
             if entity.kind == keys.PUBLISHER and entity.topic == topic:
                 parsed = keys.parse_qos_key(entity.qos)
                 if parsed is not None:
