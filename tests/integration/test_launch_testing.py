@@ -126,7 +126,10 @@ import launch_testing.tools
 import launch_testing_ros.tools
 
 HERE = os.path.dirname(__file__)
-TALK = "print('pid 42'); print('hello 1'); print('noise'); print('hello 2', flush=True)"
+# (it goes on, as a node does: one that ended before the test finished would fail the run, as
+# launch_testing says "Processes under test stopped before tests completed")
+TALK = ("import time; print('pid 42'); print('hello 1'); print('noise'); "
+        "print('hello 2', flush=True); time.sleep(60)")
 
 
 def generate_test_description():

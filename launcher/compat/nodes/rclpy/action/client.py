@@ -36,7 +36,9 @@ from rclpy.type_support import (  # noqa: F401
 )
 from rclpy.waitable import NumberOfEntities, Waitable  # noqa: F401
 
-CALL_TIMEOUT = 10.0  # s: a goal or cancel request's answer
+# s: a goal or cancel request's answer (rclpy waits for ever; a server busy on a loaded
+# machine, a sim stepping, took more than 10 s)
+CALL_TIMEOUT = 60.0
 RESULT_TIMEOUT = 365 * 24 * 3600.0  # s: a result comes when the goal ends, however long
 
 
