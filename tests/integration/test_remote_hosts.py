@@ -14,6 +14,7 @@ import subprocess
 import sys
 import time
 
+import psutil
 import pytest
 
 from tests.support.packages import make_tree, manifest
@@ -172,19 +173,29 @@ def run(ws, hosts, *args: str, timeout: float = 90) -> subprocess.CompletedProce
                           env=ws.env, capture_output=True, text=True, timeout=timeout)
 
 
+def running(hosts, name: str) -> list[tuple[str, str]]:
+    """(name, command line) of what runs on the host; one that ends while it is looked at (a
+    zombie, or gone) is not running."""
+    found = []
+    for proc in hosts.processes_in(name):
+        try:
+            found.append((proc.name(), " ".join(proc.cmdline())))
+        except psutil.Error:
+            continue
+    return found
+
+
 def launched_on(hosts, name: str) -> list[str]:
     """What runs on the host but its sshd's own processes (a cut connection's sshd waits for
     TCP to give up, as sshd's ClientAliveInterval says: the server's, not the launch's)."""
-    return [" ".join(p.cmdline()) for p in hosts.processes_in(name)
-            if not p.name().startswith("sshd")]
+    return [line for process, line in running(hosts, name) if not process.startswith("sshd")]
 
 
 def nothing_left(hosts, within: float = LEFT_WAIT) -> dict[str, list[str]]:
     """What is still running on each host after `within` seconds (empty lists: nothing)."""
     deadline = time.monotonic() + within
     while True:
-        left = {name: [" ".join(p.cmdline()) for p in hosts.processes_in(name)]
-                for name in HOSTS}
+        left = {name: [line for _, line in running(hosts, name)] for name in HOSTS}
         if not any(left.values()) or time.monotonic() > deadline:
             return left
         time.sleep(0.05)
