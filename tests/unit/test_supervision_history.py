@@ -4,7 +4,6 @@ history runs in milliseconds (the real-process tests are in tests/integration)."
 
 from __future__ import annotations
 
-import heapq
 import itertools
 import signal
 
@@ -12,49 +11,7 @@ import pytest
 
 from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec, State
 from launcher.runtime.system import Started
-
-
-class FakeTimer:
-    def __init__(self) -> None:
-        self.cancelled = False
-
-    def cancel(self) -> None:
-        self.cancelled = True
-
-
-class FakeLoop:
-    """Timers on a clock the test moves; readers the test makes ready."""
-
-    def __init__(self) -> None:
-        self.now = 0.0
-        self._timers: list = []
-        self._order = itertools.count()
-        self.readers: dict[int, tuple] = {}
-
-    def call_later(self, delay, callback, *args):
-        timer = FakeTimer()
-        heapq.heappush(self._timers, (self.now + max(delay, 0.0), next(self._order), timer,
-                                      callback, args))
-        return timer
-
-    def add_reader(self, fd, callback, *args):
-        self.readers[fd] = (callback, args)
-
-    def remove_reader(self, fd):
-        self.readers.pop(fd, None)
-
-    def advance(self, seconds: float) -> None:
-        end = self.now + seconds
-        while self._timers and self._timers[0][0] <= end:
-            when, _, timer, callback, args = heapq.heappop(self._timers)
-            self.now = when
-            if not timer.cancelled:
-                callback(*args)
-        self.now = end
-
-    def ready(self, fd: int) -> None:
-        callback, args = self.readers[fd]
-        callback(*args)
+from tests.support.fake_loop import FakeLoop
 
 
 class FakeSystem:

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import contextlib
 import errno
-import heapq
 import itertools
 import os
 import stat
@@ -17,63 +16,13 @@ import pytest
 from launcher.errors import LaunchError
 from launcher.runtime import remote_frames as frames
 from launcher.runtime.custody import Custody
-from launcher.runtime.loop import EventLoop, Timer
+from launcher.runtime.loop import EventLoop
 from launcher.runtime.remote_children import Children, StartRequest
 from launcher.runtime.remote_files import LaunchFolder, rewrite, sweep_stale
 from launcher.runtime.remote_frames import Decoder, Message, Output, ProtocolError
 from launcher.runtime.supervisor import HIGH_WATER, Host, Outbox, Supervisor
 from launcher.runtime.system import Started
-
-
-class FakeLoop:
-    """Timers on a clock the test moves; readers the test makes ready."""
-
-    def __init__(self) -> None:
-        self.now = 0.0
-        self._timers: list = []
-        self._order = itertools.count()
-        self.readers: dict[int, tuple] = {}
-
-    def time(self) -> float:
-        return self.now
-
-    def call_later(self, delay, callback, *args):
-        timer = Timer(self.now + max(delay, 0.0), callback, args)
-        heapq.heappush(self._timers, (self.now + max(delay, 0.0), next(self._order), timer,
-                                      callback, args))
-        return timer
-
-    def add_reader(self, fd, callback, *args):
-        self.readers[fd] = (callback, args)
-
-    def remove_reader(self, fd):
-        self.readers.pop(fd, None)
-
-    def add_writer(self, fd, callback, *args):
-        pass  # (the test flushes the outbox itself)
-
-    def remove_writer(self, fd):
-        pass
-
-    def close(self):
-        pass
-
-    @contextlib.contextmanager
-    def shielded(self):
-        yield
-
-    def advance(self, seconds: float) -> None:
-        end = self.now + seconds
-        while self._timers and self._timers[0][0] <= end:
-            when, _, timer, callback, args = heapq.heappop(self._timers)
-            self.now = when
-            if not timer.cancelled:
-                callback(*args)
-        self.now = end
-
-    def ready(self, fd: int) -> None:
-        callback, args = self.readers[fd]
-        callback(*args)
+from tests.support.fake_loop import FakeLoop
 
 
 class FakeSystem:
