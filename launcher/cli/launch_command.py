@@ -10,16 +10,13 @@ from pathlib import Path
 
 from launcher import compat
 from launcher.bus import discovery
-from launcher.cli import completion
+from launcher.cli import completion, launch_stops, positive_number
 from launcher.cli.components import BusLoader
 from launcher.cli.lifecycle_bus import BusLifecycle
 from launcher.cli.remote_graph import RemoteGraph
 from launcher.cli.workspace import find_launch_file, hooked_environment, load_index
 from launcher.description.action import LaunchDescription
 from launcher.description.actions.arguments import check_required
-from launcher.description.actions.shutdown import Shutdown
-from launcher.description.actions.timer import TimerAction
-from launcher.description.substitution import to_text
 from launcher.errors import DEBUG_VARIABLE, UsageError
 from launcher.frontend.builder import parse_file_text
 from launcher.frontend.loader import load_file
@@ -54,6 +51,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="run without a terminal: no colours")
     parser.add_argument("--duration", type=float, default=None, metavar="SECONDS",
                         help="shut the launch down cleanly after this many seconds")
+    parser.add_argument("--sim-duration", type=positive_number, default=None,
+                        metavar="SECONDS",
+                        help="stop the sims at this many seconds of sim time, then shut the "
+                             "launch down cleanly (sets LAUNCHER_SIM_STOP_AT, and "
+                             "LAUNCHER_SIM_REPORT_DIR to the log folder's sim/)")
+    parser.add_argument("--until", default=None, metavar="NAME",
+                        help="shut the launch down when the process of this node name, "
+                             "executable or label exits: exit status 0 when it exited with "
+                             "0, else 1")
 
 
 def parse_assignments(words: list[str]) -> dict[str, str]:
@@ -103,15 +109,21 @@ def launch(args: argparse.Namespace, description: LaunchDescription,
     check_required(description.actions, configurations)
     root: list = [description]
     if args.duration is not None:
-        if args.duration < 0:
-            raise UsageError(f"--duration: expected a number ≥ 0, got {args.duration:g}")
-        root.append(TimerAction(period=args.duration, actions=[Shutdown(
-            reason=to_text(f"--duration {args.duration:g} s elapsed"))]))
+        root += launch_stops.duration_stop(args.duration)
     service = launch_service(configurations, index, debug=args.debug,
                              noninteractive=args.noninteractive,
                              launch_prefix=args.launch_prefix)
     service.context.argv = [f"{name}:={value}" for name, value in configurations.items()]
-    return service.run(LaunchDescription(root))
+    if args.sim_duration is not None:  # (the log folder is the service's)
+        root += launch_stops.sim_duration_stop(args.sim_duration, service.context.environment,
+                                               service.context.log_dir or log_root())
+    until = launch_stops.UntilStop(args.until) if args.until is not None else None
+    if until is not None:
+        root += until.actions()
+    code = service.run(LaunchDescription(root))
+    if until is not None:
+        until.check(code)
+    return code
 
 
 def launch_service(configurations: dict[str, str], index: PackageIndex, *, debug: bool = False,

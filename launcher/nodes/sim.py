@@ -15,6 +15,9 @@ verbosity (0 quiet … 4 debug; default 2, warnings). WORLD is an SDF or MJCF fi
 file in a resource folder (MUJOCO_SIM_RESOURCE_PATH, GZ_SIM_RESOURCE_PATH, …) or a built-in
 world (default: empty.sdf); `.j2` worlds are rendered with `--world-arg NAME=VALUE`.
 `--keyframe NAME` starts from an MJCF keyframe, and resets return to it.
+`--seed N` seeds the sensors' noise (default: LAUNCHER_SIM_SEED, else 0).
+LAUNCHER_SIM_STOP_AT (s of sim time) ends the sim at the first step on or past it (exit 0);
+with LAUNCHER_SIM_REPORT_DIR, the sim writes its report there as it exits (sim/report.py).
 `--headless-rendering` and `--render-engine` are accepted.
 """
 
@@ -23,15 +26,22 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from typing import Any
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from launcher.arguments import Parser
 from launcher.errors import UsageError, reported
 from launcher.sim import viewer
 
+if TYPE_CHECKING:
+    from launcher.sim.report import SimReport
+
 VERBOSITY = {0: 60, 1: 40, 2: 30, 3: 20, 4: 10}
 LOCKSTEP_TICK = 0.01  # s of sim time a lockstep tick steps
 LOCKSTEP_VARIABLE = "LAUNCHER_SIM_LOCKSTEP"  # as --lockstep, from a launch file's set_env
+SEED_VARIABLE = "LAUNCHER_SIM_SEED"  # --seed's default (what a batch's job is given)
+STOP_AT_VARIABLE = "LAUNCHER_SIM_STOP_AT"  # s of sim time at which the sim ends
+REPORT_DIR_VARIABLE = "LAUNCHER_SIM_REPORT_DIR"  # where the sim writes its report at exit
 
 
 def build_parser() -> Parser:
@@ -94,9 +104,9 @@ def build_parser() -> Parser:
     parser.add_argument("--keyframe", default="", metavar="NAME",
                         help="start from this MJCF keyframe (<key name=NAME>); a reset "
                              "returns to it")
-    parser.add_argument("--seed", type=int, default=0, metavar="N",
-                        help="seed of the sensors' noise: the same seed, the same readings "
-                             "(default 0)")
+    parser.add_argument("--seed", type=int, default=None, metavar="N",
+                        help=f"seed of the sensors' noise: the same seed, the same readings "
+                             f"(default ${SEED_VARIABLE}, else 0)")
     parser.add_argument("--state-rate", type=float, default=50.0, metavar="HZ",
                         help="rate of pose/info and model_states in sim time")
     return parser
@@ -118,6 +128,49 @@ def lockstep_from_environment(unpaced_by_flags: bool) -> float | None:
         raise UsageError(f"{LOCKSTEP_VARIABLE}='{value}': expected true, false or a tick in "
                          "seconds (> 0)")
     return tick
+
+
+def seed_from_environment() -> int:
+    """SEED_VARIABLE, --seed's default."""
+    value = os.environ.get(SEED_VARIABLE, "").strip()
+    try:
+        return int(value) if value else 0
+    except ValueError:
+        raise UsageError(f"{SEED_VARIABLE}='{value}': expected an integer seed (as --seed)"
+                         ) from None
+
+
+def stop_at_from_environment() -> float | None:
+    """STOP_AT_VARIABLE: the sim time at which the sim ends, or None."""
+    value = os.environ.get(STOP_AT_VARIABLE, "").strip()
+    if not value:
+        return None
+    try:
+        seconds = float(value)
+    except ValueError:
+        seconds = 0.0
+    if not 0 < seconds < float("inf"):
+        raise UsageError(f"{STOP_AT_VARIABLE}='{value}': expected seconds of sim time (> 0)")
+    return seconds
+
+
+def report_from_environment(world: Path, seed: int,
+                            lockstep: float | None) -> SimReport | None:
+    """The report REPORT_DIR_VARIABLE asks for (sim/report.py), its folder made now, so that
+    a folder that cannot be is said at the start, not at the exit; None when not asked."""
+    from launcher.sim.report import SimReport  # (as the sim's other parts, in run: start-up)
+
+    value = os.environ.get(REPORT_DIR_VARIABLE, "")
+    if not value:
+        return None
+    folder = Path(value).expanduser()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise UsageError(f"{REPORT_DIR_VARIABLE}='{value}': cannot make the folder "
+                         f"({exc.strerror or exc}); expected a folder the sim can write in"
+                         ) from None
+    return SimReport(folder, str(world), seed, lockstep)
 
 
 def pacing(rtf: float, lockstep: float | None) -> str:
@@ -223,10 +276,13 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
     values = world_values(args.world_arg)
     lockstep = args.lockstep_tick if args.lockstep else \
         lockstep_from_environment(args.rate is None and args.rtf is None)
+    seed = seed_from_environment() if args.seed is None else args.seed
+    stop_at = stop_at_from_environment()
+    report = report_from_environment(path, seed, lockstep)
     node = Node("sim", argv=ros, space=keys.SIM)  # off the ROS graph, as gz sim is
     node.get_logger().threshold = VERBOSITY[args.verbose]
     try:
-        world = World.from_path(path, BusTransport(node), values, seed=args.seed)
+        world = World.from_path(path, BusTransport(node), values, seed=seed)
         if args.keyframe:
             world.start_from(args.keyframe)
         timestep = world.model.opt.timestep
@@ -236,6 +292,7 @@ def run(args: argparse.Namespace, ros: list[str]) -> int:
         if lockstep is not None:
             rtf = 0.0
         server = SimServer(world, node, rtf, args.run, args.state_rate, lockstep)
+        server.runner.stop_at, server.runner.report = stop_at, report
         # (before the viewer's URL: a stop after it is clean)
         install_signal_handlers(server.runner)
         log = node.get_logger()

@@ -9,7 +9,9 @@ flood is the latest command, not a backlog). A request for steps (`step_then`, `
 stepped by the loop in batches, the bus served between them: a later request (pause, run,
 reset, another step) replaces the steps still to go. With `--lockstep` the loop steps one tick
 at a time, unpaced, each once the nodes on sim time and the bridges have handled the one
-before (bus/lockstep.py).
+before (bus/lockstep.py). With a stop time (`stop_at`), the loop ends at the first step (in
+lockstep: the first tick) whose sim time is on or past it; `tally` counts the steps and the wall
+time they took, for the sim's `report` (report.py), written as the loop ends however it ends.
 
 What runs on the bus acts on the world through this object, from the loop's own thread (the
 callbacks run inside `node.spin_once`): pausing and stepping (`set_paused`, `step_then`,
@@ -20,6 +22,7 @@ viewer, if one is shown, follows the world.
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from collections.abc import Callable
@@ -29,6 +32,8 @@ from launcher.bus.lockstep import Leader
 from launcher.errors import LaunchError
 from launcher.sim.clocks import Clocks
 from launcher.sim.pacing import Pacer
+from launcher.sim.report import SimReport, Tally
+from launcher.sim.schedule import SLACK
 from launcher.sim.world import Spawn, SpawnError, World
 
 MAX_BATCH = 100  # steps between two looks at the bus when running unpaced
@@ -47,6 +52,10 @@ class SimulationRunner:
         self.view: Any = None  # the web viewer (viewer.py), following the world when shown
         self.paused = not running
         self.stopped = False
+        self.stop_at: float | None = None  # s of sim time at which the loop ends
+        self.stop_reached = False  # it ended so (not on a signal)
+        self.tally = Tally()
+        self.report: SimReport | None = None  # written as the loop ends
         self.no_world = False  # the world unloaded (simulation_interfaces' UnloadWorld)
         self.steps_to_go = 0  # of a request for steps
         self._when_stepped: Any = None  # told (True) when steps_to_go is done, or (False) not
@@ -97,6 +106,8 @@ class SimulationRunner:
             for _, done in self._spawns:  # (their callers are not left waiting)
                 done(SpawnError("the sim stopped before it could add the entity"))
             self._spawns = []
+            if self.report is not None:  # (on a stop, a signal or an error alike)
+                self.report.write(self.world, self.tally, self.stop_reached)
             if self.leader is not None:
                 self.leader.close()
 
@@ -136,15 +147,29 @@ class SimulationRunner:
             pacer.stepped(self._step(world, min(due, MAX_BATCH), iterations))
             self.publish_clock()
 
-    @staticmethod
-    def _step(world: World, batch: int, iterations: int | None) -> int:
-        """Step at most `batch` steps, no further than `iterations` nor past the next step
-        a plugin has work at; the steps stepped."""
+    def _step(self, world: World, batch: int, iterations: int | None) -> int:
+        """Step at most `batch` steps, no further than `iterations`, the stop time, nor past
+        the next step a plugin has work at; the steps stepped."""
         if iterations is not None:
             batch = min(batch, iterations - world.physics.iterations)
+        if self.stop_at is not None:
+            batch = min(batch, max(1, math.ceil((self.stop_at - world.data.time - SLACK) /
+                                                world.model.opt.timestep)))
         batch = world.physics.steps_until_update(batch)
-        world.physics.step(batch)
+        self._advance(world, batch)
+        self._stop_if_due(world)
         return batch
+
+    def _advance(self, world: World, count: int) -> None:
+        began = time.monotonic()
+        world.physics.step(count)
+        self.tally.stepped(count, began, time.monotonic())
+
+    def _stop_if_due(self, world: World) -> None:
+        """End the loop once the sim time is on or past the stop time (within SLACK: the
+        float sums of the timestep)."""
+        if self.stop_at is not None and world.data.time + SLACK >= self.stop_at:
+            self.stopped = self.stop_reached = True
 
     def _step_asked(self, world: World, iterations: int | None) -> None:
         """The next batch of the steps asked for while paused (the bus served first)."""
@@ -181,9 +206,10 @@ class SimulationRunner:
             left = min(left, iterations - world.physics.iterations)
         while left > 0 and not self.stopped:
             batch = world.physics.steps_until_update(left)
-            world.physics.step(batch)
+            self._advance(world, batch)
             left -= batch
         self.publish_clock()
+        self._stop_if_due(world)  # (a whole tick: the nodes heard each one)
 
     def serve(self) -> None:
         """Run the callbacks that are ready, for up to CALLBACK_BUDGET."""

@@ -21,8 +21,10 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import hashlib
 import math
 import re
+import struct
 from collections.abc import Collection, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -303,6 +305,15 @@ class World:
         rendering = getattr(self, "rendering", None)
         if rendering is not None:
             rendering.retire()
+
+    def state_digest(self) -> str:
+        """The first 16 hex digits of a sha256 over the sim time and what MuJoCo steps (qpos,
+        qvel, act): the same world, seed and commands give the same digest at the same time,
+        on machines of the same architecture and versions."""
+        digest = hashlib.sha256(struct.pack("<d", self.data.time))
+        for values in (self.data.qpos, self.data.qvel, self.data.act):
+            digest.update(values.tobytes())
+        return digest.hexdigest()[:16]
 
     def entity(self, name: str) -> Entity:
         if name not in self.entities:
