@@ -102,11 +102,11 @@ fi
 # puts the repo on sys.path with a plain .pth entry: no import hook, faster start-up.
 if [ ! -f .venv/.installed ] || [ pyproject.toml -nt .venv/.installed ]; then
     say "installing launcher into .venv with its dependencies from PyPI (MuJoCo, Zenoh," \
-        "rosbags, xacro, matplotlib for launcher plot, OpenCV for cv_bridge, the tests'" \
-        "pytest, mcap, selenium, and MkDocs for the docs site the tests build): about a" \
-        "minute the first time, seconds after"
+        "rosbags, xacro, matplotlib for launcher plot, OpenCV for cv_bridge, Ray for" \
+        "launcher batch, the tests' pytest, mcap, selenium, and MkDocs for the docs site the" \
+        "tests build): a minute or two the first time, seconds after"
     .venv/bin/python -m pip install --quiet --disable-pip-version-check \
-        --config-settings editable_mode=compat -e ".[test,docs,plot,vision]"
+        --config-settings editable_mode=compat -e ".[test,docs,plot,vision,cluster]"
     touch .venv/.installed
 else
     say ".venv is up to date"
@@ -148,7 +148,8 @@ case "${1:-}" in
         # start (2 cores: 3 workers, about 11 minutes; one at a time, 24).
         workers=$(( $(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1) + 1 ))
         say "running the tests, $workers at a time (about 11 minutes on 2 cores):" \
-            "python -m pytest -n $workers tests"
-        exec .venv/bin/python -m pytest -n "$workers" tests "$@" ;;
+            "python -m pytest -n $workers --dist loadgroup tests"
+        # (--dist loadgroup: the tests of one Ray cluster share one worker, one at a time)
+        exec .venv/bin/python -m pytest -n "$workers" --dist loadgroup tests "$@" ;;
     *) echo "usage: sh hooks/bootstrap.sh demo|test" >&2; exit 2 ;;
 esac

@@ -19,7 +19,7 @@ from collections.abc import Callable, Mapping
 from typing import Any, NamedTuple, Protocol, TypeVar
 
 from launcher import records
-from launcher.errors import ParseError, did_you_mean
+from launcher.errors import Location, ParseError, did_you_mean
 
 
 class Kind(enum.Enum):
@@ -194,9 +194,22 @@ def value_of(kind: Kind, value: Any, what: str, spec: Attr | None = None) -> Any
 
 
 def build(cls: type[R], values: Mapping[str, Any], where: str = "", *,
-          unknown: str = "error", warn: Callable[[str], None] | None = None) -> R:
+          unknown: str = "error", warn: Callable[[str], None] | None = None,
+          places: Mapping[str, tuple[Location, Location]] | None = None,
+          at: Location | None = None) -> R:
     """A `cls` record from `values` keyed by the spellings users write. `unknown`: "error"
-    refuses a key that is not declared, "warn" tells `warn` and goes on, "ignore" skips it."""
+    refuses a key that is not declared, "warn" tells `warn` and goes on, "ignore" skips it.
+    `places` (key → where the key is, where its value is) puts an error at its place: an
+    unknown key at the key, a bad value at the value; a missing key at `at`."""
+    try:
+        return _build(cls, values, where, unknown, warn, places or {})
+    except ParseError as exc:
+        raise exc.at(at) from None
+
+
+def _build(cls: type[R], values: Mapping[str, Any], where: str, unknown: str,
+           warn: Callable[[str], None] | None,
+           places: Mapping[str, tuple[Location, Location]]) -> R:
     prefix = f"{where}: " if where else ""
     fields = declared_fields(cls)
     spellings = {}
@@ -214,9 +227,12 @@ def build(cls: type[R], values: Mapping[str, Any], where: str = "", *,
             if unknown == "warn" and warn is not None:
                 warn(f"{message}; it is ignored")
                 continue
-            raise ParseError(message)
+            raise ParseError(message, places[key][0] if key in places else None)
         f, spec = spellings[key]
-        kwargs[f.name] = value_of(spec.kind, value, f"{prefix}{key}", spec)
+        try:
+            kwargs[f.name] = value_of(spec.kind, value, f"{prefix}{key}", spec)
+        except ParseError as exc:
+            raise exc.at(places[key][1] if key in places else None) from None
     for f, spec in fields:
         if f.name not in kwargs:
             _checked(None, f"{prefix}{frontend_name(f, spec)}", spec)

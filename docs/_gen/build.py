@@ -11,6 +11,7 @@ import mkdocs_gen_files
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import performance  # noqa: E402
+import reference_batch  # noqa: E402
 import reference_cli  # noqa: E402
 import reference_fidelity  # noqa: E402
 import reference_launch  # noqa: E402
@@ -21,7 +22,7 @@ import reference_types  # noqa: E402
 for name, module in (("cli", reference_cli), ("launch-files", reference_launch),
                      ("types", reference_types), ("fidelity", reference_fidelity),
                      ("parameters", reference_parameters),
-                     ("python-apis", reference_python)):
+                     ("python-apis", reference_python), ("batch-file", reference_batch)):
     with mkdocs_gen_files.open(f"reference/{name}.md", "w") as page:
         page.write(module.page())
 

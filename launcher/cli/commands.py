@@ -18,6 +18,8 @@ def verbs(package: str, helps: dict[str, str], **modules: str) -> dict[str, Verb
 LAUNCHER: dict[str, Verb | Group | Tool] = {
     "launch": Verb("launcher.cli.launch_command", "run a launch file"),
     "test": Verb("launcher.cli.test_command", "run a launch test (as launch_test does)"),
+    "batch": Verb("launcher.cli.batch_command", "run launch tests and launch files over a "
+                  "matrix of arguments and seeds, here or on a Ray cluster"),
     "pkg": Group("packages: list, find, create", verbs("launcher.cli.pkg", {
         "list": "every package, with where it is",
         "prefix": "the install prefix of a package",

@@ -72,6 +72,22 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int, loops: bool
             yield from _walk(list(item.sub_actions()), context, depth + 1, loops)
 
 
+def argument_names(description: LaunchDescription, configurations: dict[str, str],
+                   index: Any = None) -> tuple[list[str], list[str]]:
+    """The launch arguments the file and what it includes declare (as `--show-args` lists
+    them), and why an include's could not be listed."""
+    context = _context(dict(configurations), index)
+    context.files.push(description.file)
+    names: list[str] = []
+    unresolved: list[str] = []
+    for _depth, item, extra in _walk(description.actions, context, 0, loops=True):
+        if isinstance(item, DeclareLaunchArgument) and item.name not in names:
+            names.append(item.name)
+        elif isinstance(item, IncludeLaunchDescription) and isinstance(extra, str):
+            unresolved.append(f"include at {item.where}: {extra}")
+    return names, unresolved
+
+
 def show_arguments(description: LaunchDescription, configurations: dict[str, str],
                    index: Any = None) -> str:
     context = _context(dict(configurations), index)

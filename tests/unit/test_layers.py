@@ -26,7 +26,12 @@ ALLOWED = {
     "frontend": {"records", "user_files", "private", "schema", "frontend", "description", "runtime",
                  "errors", "compat"},
     "cli": {"records", "user_files", "schema", "arguments", "cli", "frontend", "description", "runtime",
-            "packages", "errors", "compat", "api", "bus", "nodes", "control", "lifecycle"},
+            "packages", "errors", "compat", "api", "bus", "nodes", "control", "lifecycle",
+            "batch"},
+    # launcher batch: the batch file, its jobs, the job host, Ray and the reports; the job
+    # host reuses the launch's process helpers (lineage, the watchdog)
+    "batch": {"batch", "records", "errors", "schema", "user_files", "private", "lineage",
+              "dispositions", "runtime"},
     "bus": {"records", "user_files", "private", "lineage", "schema", "arguments", "bus", "errors",
             "packages", "machines"},
     "control": {"records", "schema", "control", "bus", "errors", "lifecycle"},

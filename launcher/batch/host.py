@@ -1,0 +1,147 @@
+"""The job host (`python -m launcher.batch.host`): runs one job on a node, as a Ray task asks.
+
+It reads the job's spec as one JSON line on stdin, and keeps stdin as its lifeline: a line
+`stop <why>` or the end of stdin (the task's worker died) stops the job. It owns the job: its
+folder, its private graph, its time limit, the stop of its whole tree, and a watchdog (forked
+first, on the job's mark) that ends everything the job started even if the host is killed.
+At the end it prints one JSON line: the job's result and where its packed folder is.
+Standard library and launcher's process helpers only: every job pays for these imports."""
+
+from __future__ import annotations
+
+import json
+import os
+import select
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from launcher import lineage
+from launcher.batch import archive
+from launcher.batch.job import JOB_MARK_PREFIX, JobFolder, JobSpec, command, environment
+from launcher.batch.outcome import Ending, judge
+from launcher.batch.stopping import Escalation, sweep
+from launcher.dispositions import reset_for_children
+from launcher.runtime import reaper
+
+POLL = 0.05  # seconds between looks at the job, stdin and the clock
+
+
+class JobHost:
+    def __init__(self, spec: JobSpec, mark: str, lifeline: Lifeline,
+                 watchdog_fd: int | None = None) -> None:
+        self.spec = spec
+        self.lifeline = lifeline
+        self.mark = mark
+        self.watchdog_fd = watchdog_fd
+        self.folder = JobFolder(Path(tempfile.mkdtemp(prefix=f"lnb-{spec.id}-")))
+        self.run_dir = tempfile.mkdtemp(prefix="lng-")  # the job's graph: a short socket path
+        self.stopped_for: str | None = None
+        self.escalation: Escalation | None = None
+        self.signalled: list[str] = []
+
+    def run(self) -> Ending:
+        """Start the job and follow it to its end."""
+        self.folder.make()
+        root = Path(self.spec.root) if self.spec.root else Path.cwd()
+        argv = command(self.spec, self.folder, sys.executable, root)
+        env = environment(self.spec, dict(os.environ), self.folder, self.run_dir, root,
+                          self.mark)
+        started, clock = time.time(), time.monotonic()
+        with open(self.folder.console, "wb") as console:
+            child = subprocess.Popen(argv, cwd=root, env=env, stdin=subprocess.DEVNULL,
+                                     stdout=console, stderr=subprocess.STDOUT,
+                                     start_new_session=True)
+        self._tell(f"+{child.pid}")
+        self.escalation = Escalation(child.pid)
+        code = self._follow(child, clock + self.spec.timeout)
+        wall = time.monotonic() - clock
+        left = sweep(self.mark)
+        self._tell(f"-{child.pid}")
+        shutil.rmtree(self.run_dir, ignore_errors=True)
+        return Ending(code, self.stopped_for, wall, started, left)
+
+    def _follow(self, child: subprocess.Popen[bytes], deadline: float) -> int:
+        while (code := child.poll()) is None:
+            if time.monotonic() > deadline:
+                self.stop("timeout")
+            if self.signalled:
+                self.stop(self.signalled[0])
+            if self.stopped_for is not None:
+                self.escalation.poll()  # type: ignore[union-attr]
+            for line in self.lifeline.lines(POLL):
+                self.stop(line[4:].strip().decode() or "cancelled" if line.startswith(b"stop")
+                          else "")
+            if self.lifeline.closed:
+                self.stop("lost")  # the worker that started the host is gone
+        return code
+
+    def stop(self, why: str) -> None:
+        if self.stopped_for is None and why:
+            self.stopped_for = why
+
+    def _tell(self, line: str) -> None:
+        if self.watchdog_fd is not None:
+            os.write(self.watchdog_fd, f"{line}\n".encode())
+
+
+class Lifeline:
+    """stdin, read raw: the spec's line, then `stop` lines; its end means the worker died."""
+
+    def __init__(self, fd: int = 0) -> None:
+        self.fd = fd
+        self.pending = b""
+        self.closed = False
+
+    def first_line(self) -> bytes:
+        while b"\n" not in self.pending and not self.closed:
+            self._read()
+        line, _, self.pending = self.pending.partition(b"\n")
+        return line
+
+    def lines(self, wait: float) -> list[bytes]:
+        """Whole lines that came within `wait` seconds."""
+        if self.closed:
+            time.sleep(wait)
+            return []
+        if select.select([self.fd], [], [], wait)[0]:
+            self._read()
+        *lines, self.pending = self.pending.split(b"\n")
+        return [line for line in lines if line.strip()]
+
+    def _read(self) -> None:
+        chunk = os.read(self.fd, 4096)
+        self.closed = not chunk
+        self.pending += chunk
+
+
+def main() -> int:
+    # A Ray worker starts its children with SIGINT blocked; a job starts as it does from a
+    # shell, where Ctrl-C reaches every process of it.
+    signal.pthread_sigmask(signal.SIG_SETMASK, set())
+    lifeline = Lifeline()
+    spec = JobSpec.from_json(lifeline.first_line().decode())
+    mark = JOB_MARK_PREFIX + os.urandom(8).hex()
+    lineage.become_subreaper()
+    _pid, watchdog_fd = reaper.fork_watchdog(mark)  # first: before any thread or child
+    host = JobHost(spec, mark, lifeline, watchdog_fd)
+    for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        signal.signal(signum, lambda n, _f: host.signalled.append(signal.Signals(n).name))
+    reset_for_children()  # SIGQUIT too, if the worker ignored it
+    ending = host.run()
+    result = judge(spec, host.folder, ending)
+    (host.folder.root / "result.json").write_text(json.dumps(result.to_json()))
+    packed = archive.pack(host.folder.root)
+    shutil.rmtree(host.folder.root, ignore_errors=True)
+    sys.stdout.write(json.dumps({"result": result.to_json(), "archive": str(packed)}) + "\n")
+    sys.stdout.flush()
+    os.write(watchdog_fd, b"=\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

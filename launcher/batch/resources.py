@@ -1,0 +1,88 @@
+"""What a job asks of a node: sizes in words, Ray's options, and whether any node can meet
+it (Ray itself waits for ever on a task no node can take)."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from launcher import records
+from launcher.batch.spec import Resources
+from launcher.errors import ParseError
+
+_UNITS = {"": 1, "b": 1, "k": 10**3, "kb": 10**3, "m": 10**6, "mb": 10**6, "g": 10**9,
+          "gb": 10**9, "t": 10**12, "tb": 10**12, "kib": 2**10, "mib": 2**20, "gib": 2**30,
+          "tib": 2**40}
+_SIZE = re.compile(r"^\s*(\d+(?:\.\d+)?)\s*([a-zA-Z]*)\s*$")
+RAY_OWN = ("CPU", "GPU", "memory", "object_store_memory")
+
+
+def parse_bytes(text: str, what: str) -> int:
+    found = _SIZE.match(str(text))
+    unit = found.group(2).lower() if found else ""
+    if not found or unit not in _UNITS or float(found.group(1)) <= 0:
+        raise ParseError(f"{what}: expected bytes or a size like 2GiB, got '{text}'")
+    return int(float(found.group(1)) * _UNITS[unit])
+
+
+def parse_resources(doc: Any, node: Any, what: str) -> Resources:
+    """Resources from a mapping node of a batch file (None: the defaults)."""
+    if node is None:
+        return Resources()
+    made, nested, places = doc.record(Resources, node, what)
+    if made.memory is not None:
+        try:
+            parse_bytes(made.memory, f"{what}.memory")
+        except ParseError as exc:
+            raise exc.at(places.get("memory")) from None
+    custom = {}
+    if "custom" in nested:
+        for name, (key, value) in doc.pairs(nested["custom"], f"{what}.custom").items():
+            if name in RAY_OWN or name.startswith("node:"):
+                raise ParseError(f"{what}.custom: '{name}' is Ray's own; say cpus, gpus or "
+                                 "memory, or name a resource of your nodes", doc.at(key))
+            amount = doc.construct(value)
+            if isinstance(amount, bool) or not isinstance(amount, int | float) or amount <= 0:
+                raise ParseError(f"{what}.custom.{name}: expected a number > 0, got "
+                                 f"{amount!r}", doc.at(value))
+            custom[name] = float(amount)
+    return records.replace(made, custom=custom)
+
+
+def ray_options(r: Resources) -> dict[str, Any]:
+    options: dict[str, Any] = {"num_cpus": r.cpus, "num_gpus": r.gpus}
+    if r.memory is not None:
+        options["memory"] = parse_bytes(r.memory, "memory")
+    if r.custom:
+        options["resources"] = dict(r.custom)
+    return options
+
+
+@records.dataclass(frozen=True)
+class NodeOffer:
+    """What one live node of the cluster has in all."""
+
+    address: str
+    cpus: float
+    gpus: float
+    memory: float
+    custom: dict[str, float]
+
+    def describe(self) -> str:
+        gpus = f"{self.gpus:g} GPU" if self.gpus else "no GPU"
+        return f"{self.address}: {self.cpus:g} CPU, {self.memory / 2**30:.1f} GiB, {gpus}"
+
+
+def unmet(r: Resources, nodes: list[NodeOffer], where: str = "the cluster") -> str | None:
+    """Why no node of `where` can run a job asking `r`, or None when one can."""
+    need = ray_options(r)
+    for node in nodes:
+        if node.cpus >= r.cpus and node.gpus >= r.gpus and \
+                node.memory >= need.get("memory", 0) and \
+                all(node.custom.get(k, 0) >= v for k, v in r.custom.items()):
+            return None
+    asks = [f"{r.cpus:g} CPU"] + ([f"{r.gpus:g} GPU"] if r.gpus else []) + \
+        ([f"{r.memory} of memory"] if r.memory else []) + \
+        [f"{v:g} {k}" for k, v in r.custom.items()]
+    offers = "; ".join(n.describe() for n in nodes) or "no live node"
+    return f"each job asks for {', '.join(asks)}; no node of {where} can give that ({offers})"
