@@ -55,8 +55,14 @@ class Cluster:
     @classmethod
     def join(cls, address: str, runtime_env: dict[str, Any] | None) -> Cluster:
         """The running cluster at `address` (ray://… for Ray Client)."""
+        import logging
+
         import ray
 
+        # (joined from a thread, to bound the wait: Ray then says it set no SIGTERM handler,
+        # which the batch sets itself)
+        logging.getLogger("ray").addFilter(
+            lambda record: "SIGTERM handler is not set" not in record.getMessage())
         limit = float(os.environ.get(CONNECT_VARIABLE, "30"))
         failure: list[BaseException] = []
 

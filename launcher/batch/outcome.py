@@ -107,9 +107,14 @@ def _tail(console: Path, size: int = 65536) -> list[str]:
 
 
 def _error_line(console: Path) -> str:
-    """launcher's reporter's last `error: …` line."""
-    found = [line for line in _tail(console) if line.startswith("error: ")]
-    return found[-1][len("error: "):] if found else ""
+    """launcher's reporter's last `error: …` line, else the launch's first error (a launch
+    file that fails as it runs: a package not found on this node)."""
+    lines = _tail(console)
+    found = [line for line in lines if line.startswith("error: ")]
+    if found:
+        return found[-1][len("error: "):]
+    launch = [line for line in lines if line.startswith("[ERROR] [launch]: ")]
+    return launch[0][len("[ERROR] [launch]: "):] if launch else ""
 
 
 def _last_line(console: Path) -> str:

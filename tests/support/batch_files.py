@@ -59,8 +59,11 @@ class TestChatter(unittest.TestCase):
             rclpy.spin_once(node, timeout_sec=0.05)
         node.destroy_node()
         rclpy.shutdown()
-        with open(os.path.join(os.environ["LAUNCHER_BATCH_OUTPUT"], "heard.txt"), "w") as f:
+        output = os.environ["LAUNCHER_BATCH_OUTPUT"]
+        with open(os.path.join(output, "heard.txt"), "w") as f:
             f.write(" ".join(sorted(set(heard))))
+        with open(os.path.join(output, "where.txt"), "w") as f:
+            f.write(HERE)
         self.assertEqual(set(heard), {os.environ["LAUNCHER_BATCH_SEED"]})
 """
 

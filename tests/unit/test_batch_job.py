@@ -105,6 +105,14 @@ def test_a_test_that_could_not_run_is_an_error_with_launchers_words(tmp_path):
     assert (result.status, result.reason) == (Status.ERROR, "t.py:3:1: bad launch file")
 
 
+def test_a_launch_that_fails_as_it_runs_is_an_error_with_its_first_error(tmp_path):
+    folder = folder_with(tmp_path, console="[ERROR] [launch]: x.yaml:3:1: package 'p' not "
+                                           "found\n[INFO] [gz-1]: process stopped\n")
+    result = judge(spec(kind="launch"), folder, ending(1))
+    assert (result.status, result.reason) == (Status.ERROR,
+                                              "x.yaml:3:1: package 'p' not found")
+
+
 def test_a_test_file_with_no_test_is_an_error(tmp_path):
     result = judge(spec(), folder_with(tmp_path), ending(0))
     assert result.status is Status.ERROR and "no test ran" in result.reason
@@ -183,3 +191,20 @@ def test_an_archive_cannot_write_above_its_folder(tmp_path):
 def test_an_absolute_member_lands_inside_the_folder(tmp_path):
     archive.unpack(packed_member("/etc/outside"), tmp_path / "in")
     assert (tmp_path / "in" / "etc" / "outside").read_bytes() == b"x"
+
+
+def test_a_node_with_another_launcher_says_so_and_runs_nothing():
+    from launcher.batch.task import run_job
+
+    told = run_job(spec(launcher_version="0.0.1").to_json())
+    assert told["setup"] and "runs launcher" in told["result"]["reason"]
+    assert "install the same launcher[cluster] on every node" in told["result"]["reason"]
+
+
+def test_a_shared_workspace_missing_on_a_node_says_so(tmp_path):
+    from launcher import __version__
+    from launcher.batch.task import run_job
+
+    told = run_job(spec(root=str(tmp_path / "nowhere"), launcher_version=__version__).to_json())
+    assert told["setup"] and f"the workspace is not at {tmp_path / 'nowhere'} there" in \
+        told["result"]["reason"]
