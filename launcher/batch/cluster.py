@@ -101,7 +101,7 @@ class Cluster:
                                    **options).remote(spec.to_json())
 
     def wait(self, refs: list[Any], timeout: float) -> tuple[list[Any], list[Any]]:
-        return self.ray.wait(refs, num_returns=min(len(refs), 16), timeout=timeout)
+        return self.ray.wait(refs, num_returns=1, timeout=timeout)
 
     def outcome(self, ref: Any, job_id: str) -> tuple[JobResult, bytes]:
         """A finished task's result, or Ray's failure in words."""

@@ -43,6 +43,7 @@ class JobHost:
         self.stopped_for: str | None = None
         self.escalation: Escalation | None = None
         self.signalled: list[str] = []
+        self.exited_fd: int | None = None  # the job's pidfd: the loop wakes as it exits
 
     def run(self) -> Ending:
         """Start the job and follow it to its end."""
@@ -58,7 +59,10 @@ class JobHost:
                                      start_new_session=True)
         self._tell(f"+{child.pid}")
         self.escalation = Escalation(child.pid)
+        self.exited_fd = _pidfd(child.pid)
         code = self._follow(child, clock + self.spec.timeout)
+        if self.exited_fd is not None:
+            os.close(self.exited_fd)
         wall = time.monotonic() - clock
         left = sweep(self.mark)
         self._tell(f"-{child.pid}")
@@ -73,7 +77,7 @@ class JobHost:
                 self.stop(self.signalled[0])
             if self.stopped_for is not None:
                 self.escalation.poll()  # type: ignore[union-attr]
-            for line in self.lifeline.lines(POLL):
+            for line in self.lifeline.lines(POLL, self.exited_fd):
                 self.stop(line[4:].strip().decode() or "cancelled" if line.startswith(b"stop")
                           else "")
             if self.lifeline.closed:
@@ -87,6 +91,13 @@ class JobHost:
     def _tell(self, line: str) -> None:
         if self.watchdog_fd is not None:
             os.write(self.watchdog_fd, f"{line}\n".encode())
+
+
+def _pidfd(pid: int) -> int | None:
+    try:
+        return os.pidfd_open(pid)
+    except (AttributeError, OSError):  # no pidfd here: the loop's poll finds the exit
+        return None
 
 
 class Lifeline:
@@ -103,12 +114,12 @@ class Lifeline:
         line, _, self.pending = self.pending.partition(b"\n")
         return line
 
-    def lines(self, wait: float) -> list[bytes]:
-        """Whole lines that came within `wait` seconds."""
-        if self.closed:
-            time.sleep(wait)
-            return []
-        if select.select([self.fd], [], [], wait)[0]:
+    def lines(self, wait: float, also: int | None = None) -> list[bytes]:
+        """Whole lines that came within `wait` seconds (less when `also` is readable first:
+        the job's pidfd, readable once it exits)."""
+        watched = ([] if self.closed else [self.fd]) + ([also] if also is not None else [])
+        ready = select.select(watched, [], [], wait)[0] if watched else time.sleep(wait)
+        if ready and self.fd in ready:
             self._read()
         *lines, self.pending = self.pending.split(b"\n")
         return [line for line in lines if line.strip()]
@@ -134,12 +145,14 @@ def main() -> int:
     reset_for_children()  # SIGQUIT too, if the worker ignored it
     ending = host.run()
     result = judge(spec, host.folder, ending)
+    nothing_left = not lineage.marked(mark)  # (else the watchdog looks, and ends it)
     (host.folder.root / "result.json").write_text(json.dumps(result.to_json()))
     packed = archive.pack(host.folder.root)
     shutil.rmtree(host.folder.root, ignore_errors=True)
     sys.stdout.write(json.dumps({"result": result.to_json(), "archive": str(packed)}) + "\n")
     sys.stdout.flush()
-    os.write(watchdog_fd, b"=\n")
+    if nothing_left:
+        os.write(watchdog_fd, b"=\n")
     return 0
 
 

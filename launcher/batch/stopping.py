@@ -40,27 +40,29 @@ class Escalation:
 
 def sweep(mark: str, grace: float = 1.0, limit: float = 5.0, settle: float = 1.0
           ) -> list[str]:
-    """End every process carrying `mark` that has not gone by itself within `settle` seconds
-    (a job's router leaves just after its launch): SIGTERM, SIGKILL after `grace`; looked for
-    again until a look finds nothing. The names of what had to be ended."""
+    """End every process carrying `mark` that has not gone by itself within `settle` seconds:
+    SIGTERM, SIGKILL after `grace`; looked for again until a look finds nothing. The names of
+    what had to be ended. The job's router (detached, on the job's private graph) is told to
+    go at once and not waited for: the watchdog sees it gone."""
+    def left() -> set[int]:
+        return {pid for pid in lineage.marked(mark) if not lineage.is_detached(pid)}
+
+    lineage.signal_all(lineage.marked(mark) - left(), signal.SIGTERM)
     until = time.monotonic() + settle
-    while lineage.marked(mark) and time.monotonic() < until:
+    while left() and time.monotonic() < until:
         _reap_any()
-        time.sleep(0.05)
+        time.sleep(0.02)
     found: dict[int, str] = {}
     deadline = time.monotonic() + limit
-    while time.monotonic() < deadline:
-        left = lineage.marked(mark)
-        if not left:
-            break
-        for pid in left - found.keys():
+    while time.monotonic() < deadline and (pids := left()):
+        for pid in pids - found.keys():
             found[pid] = _name(pid)
-        lineage.signal_all(left, signal.SIGTERM)
+        lineage.signal_all(pids, signal.SIGTERM)
         until = time.monotonic() + grace
-        while time.monotonic() < until and lineage.marked(mark):
+        while time.monotonic() < until and left():
             _reap_any()
             time.sleep(0.05)
-        lineage.signal_all(lineage.marked(mark), signal.SIGKILL)
+        lineage.signal_all(left(), signal.SIGKILL)
         _reap_any()
     return [f"{name} ({pid})" for pid, name in sorted(found.items())]
 

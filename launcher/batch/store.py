@@ -48,15 +48,16 @@ class ResultsStore:
             archive.unpack(packed, self.folder / where)
         return records.replace(result, log=str(where))
 
-    def finish(self, plans: list[JobPlan], results: dict[str, JobResult],
-               summary: str) -> list[str]:
+    def finish(self, plans: list[JobPlan], results: dict[str, JobResult], summary: str,
+               wall_s: float) -> list[str]:
         """Every report; the notes of what could not be written."""
         assert self.folder is not None
         jobs = [{"label": p.label, "title": p.title, "arguments": p.arguments,
                  "seed": p.seed, "repeat": p.repeat, **results[p.id].to_json()}
                 for p in plans if p.id in results]
         write_private(self.folder / "results.json", json.dumps(
-            {"batch": str(self.batch.path.resolve()), "jobs": jobs}, indent=1))
+            {"batch": str(self.batch.path.resolve()), "wall_s": round(wall_s, 3),
+             "jobs": jobs}, indent=1))
         write_csv(self.folder / "results.csv", plans, results)
         write_junit(self.folder / "junit.xml", self.batch.title, plans, results,
                     self.folder)

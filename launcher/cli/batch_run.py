@@ -50,8 +50,9 @@ def run_batch(batch: BatchFile, jobs: list[tuple[JobPlan, JobSpec, dict[str, Any
         interactive = sys.stderr.isatty() and not args.noninteractive
         runner = BatchRunner(cluster, store, Progress(sys.stderr, interactive))
         results = runner.run(jobs, batch.resources)
-        summary = summary_line(list(results.values()), time.monotonic() - started, len(nodes))
-        notes = store.finish(plans, results, summary)
+        wall = time.monotonic() - started
+        summary = summary_line(list(results.values()), wall, len(nodes))
+        notes = store.finish(plans, results, summary, wall)
         print(matrix_table(batch, plans, results).rstrip("\n"))
         print(summary)
         for note in notes:
