@@ -125,6 +125,24 @@ def test_a_node_lost_mid_batch_has_its_jobs_run_again_on_the_other(bws):
         bws.cluster.restart("w1")
 
 
+def test_a_node_lost_with_no_retries_left_is_an_error_with_the_reason(bws):
+    bws.write("jobs:\n  - test: chatter_test.py\nseeds: 2\ntimeout: 120\n"
+              "resources: {custom: {batch_w1: 1}}\n", CHATTER_LISTEN="8")
+    batch = bws.start()
+    deadline = time.monotonic() + 90
+    while not bws.jobs_on("w1"):
+        assert time.monotonic() < deadline and batch.poll() is None, batch.stderr.read()
+        time.sleep(0.2)
+    bws.cluster.kill_raylet("w1")
+    try:
+        out, err = batch.communicate(timeout=120)
+        assert batch.returncode == 1, out + err
+        lost = [r for r in bws.results() if r["status"] == "error"]
+        assert lost and all("died" in r["reason"] for r in lost), bws.results()
+    finally:
+        bws.cluster.restart("w1")
+
+
 def test_ctrl_c_cancels_the_jobs_on_every_node_and_leaves_nothing(bws):
     bws.write("jobs:\n  - test: stuck_test.py\nseeds: 4\n")
     batch = bws.start()
@@ -170,7 +188,9 @@ def test_two_jobs_on_one_node_do_not_hear_each_other(bws):
 def test_a_resource_no_node_has_is_said_at_once_naming_each_node(bws):
     bws.write("jobs:\n  - test: chatter_test.py\nresources: {gpus: 1}\n")
     started = time.monotonic()
-    done = bws.run(timeout=60)
+    bws.env["RAY_ADDRESS"] = bws.cluster.address  # (as Ray's users name a cluster too)
+    done = subprocess.run(bws.argv()[:-2], env=bws.env, capture_output=True, text=True,
+                          timeout=60)
     assert done.returncode == 1
     assert f"no node of the cluster at {bws.cluster.address} can give that" in done.stderr
     assert bws.cluster.node_address("w1") in done.stderr

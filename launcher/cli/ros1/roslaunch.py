@@ -67,7 +67,7 @@ def main(argv: list[str], prog: str = "roslaunch") -> int:
     launch = argparse.Namespace(file=str(paths[0]), arguments=assignments,
                                 show_args=args.show_args, print=False, debug=args.debug,
                                 launch_prefix="", noninteractive=False,
-                                duration=args.duration)
+                                duration=args.duration, sim_duration=None, until=None)
     if len(paths) == 1 or args.show_args:
         return launch_command.run(launch)
     return launch_command.launch(launch, combined(paths), configurations, index)
