@@ -23,8 +23,10 @@ CONNECT_VARIABLE = "LAUNCHER_BATCH_CONNECT_TIMEOUT"  # seconds joining a cluster
 class Cluster:
     """One Ray session of the driver."""
 
-    def __init__(self, ray: Any, where: str, private: Path | None) -> None:
+    def __init__(self, ray: Any, where: str, private: Path | None,
+                 runtime_env: dict[str, Any] | None = None) -> None:
         self.ray = ray
+        self.runtime_env = runtime_env  # the workspace's upload, given with each task
         self.where = where  # "this machine" or "the cluster at ADDR"
         self.private = private  # the embedded cluster's folder (token, Ray's temp dir)
         from launcher.batch.task import run_job
@@ -46,10 +48,14 @@ class Cluster:
         os.environ.pop("RAY_ADDRESS", None)
         import ray
 
-        ray.init(address="local", num_cpus=cpus, include_dashboard=False,
-                 log_to_driver=False, logging_level="warning", namespace="launcher-batch",
-                 object_store_memory=256 * 2**20, _temp_dir=str(private / "ray"),
-                 _system_config={"task_oom_retries": 0})
+        try:
+            ray.init(address="local", num_cpus=cpus, include_dashboard=False,
+                     log_to_driver=False, logging_level="warning", namespace="launcher-batch",
+                     object_store_memory=256 * 2**20, _temp_dir=str(private / "ray"),
+                     _system_config={"task_oom_retries": 0})
+        except BaseException:
+            shutil.rmtree(private, ignore_errors=True)
+            raise
         return cls(ray, "this machine", private)
 
     @classmethod
@@ -68,8 +74,8 @@ class Cluster:
 
         def connect() -> None:
             try:
-                ray.init(address=address, runtime_env=runtime_env, log_to_driver=False,
-                         logging_level="warning", namespace="launcher-batch")
+                ray.init(address=address, log_to_driver=False, logging_level="warning",
+                         namespace="launcher-batch")
             except BaseException as exc:  # noqa: BLE001 - handed to the waiting thread
                 failure.append(exc)
 
@@ -81,7 +87,7 @@ class Cluster:
                               f"cluster within {limit:g} s")
         if failure:
             raise LaunchError(_worded(address, failure[0])) from None
-        return cls(ray, f"the cluster at {address}", None)
+        return cls(ray, f"the cluster at {address}", None, runtime_env)
 
     def nodes(self) -> list[NodeOffer]:
         offers = []
@@ -97,8 +103,16 @@ class Cluster:
         return offers
 
     def submit(self, spec: JobSpec, options: dict[str, Any]) -> Any:
-        return self.remote.options(scheduling_strategy="SPREAD", retry_exceptions=False,
-                                   **options).remote(spec.to_json())
+        """The job's task (its workspace uploaded with the first: Ray packs it once)."""
+        if self.runtime_env is not None:
+            options = {**options, "runtime_env": self.runtime_env}
+        try:
+            return self.remote.options(scheduling_strategy="SPREAD", retry_exceptions=False,
+                                       **options).remote(spec.to_json())
+        except ValueError as exc:  # Ray's limit on the upload, in its words
+            raise LaunchError(f"the workspace could not be sent to the cluster: {exc}; leave "
+                              "large files out (.rayignore, .gitignore or exclude:), or share "
+                              "it (shared_workspace: true)") from None
 
     def wait(self, refs: list[Any], timeout: float) -> tuple[list[Any], list[Any]]:
         return self.ray.wait(refs, num_returns=1, timeout=timeout)

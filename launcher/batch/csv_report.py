@@ -16,8 +16,9 @@ AFTER = ("seed", "repeat", "status", "reason", "node", "wall_s", "sim_s", "rtf",
 
 
 def columns(plans: list[JobPlan]) -> list[str]:
-    """Every matrix key of every entry, in the order first seen, between the job and seed."""
-    return [*BEFORE, *dict.fromkeys(k for p in plans for k in p.varied), *AFTER]
+    """Every launch argument of every job (the matrix's and the fixed ones), in the order
+    first seen, between the job and seed."""
+    return [*BEFORE, *dict.fromkeys(k for p in plans for k in p.arguments), *AFTER]
 
 
 def write_csv(path: Path, plans: list[JobPlan], results: dict[str, JobResult]) -> None:
@@ -31,7 +32,7 @@ def write_csv(path: Path, plans: list[JobPlan], results: dict[str, JobResult]) -
 
 def _row(plan: JobPlan, result: JobResult | None) -> dict[str, str]:
     row = {"id": plan.id, "job": plan.label, "kind": plan.entry.kind, "file": plan.entry.file,
-           **plan.varied, "seed": str(plan.seed), "repeat": str(plan.repeat)}
+           **plan.arguments, "seed": str(plan.seed), "repeat": str(plan.repeat)}
     if result is None:
         return row  # not run: the rest left empty
     started = (datetime.fromtimestamp(result.started, UTC).isoformat(timespec="seconds")

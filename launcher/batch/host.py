@@ -22,7 +22,14 @@ from pathlib import Path
 
 from launcher import lineage
 from launcher.batch import archive
-from launcher.batch.job import JOB_MARK_PREFIX, JobFolder, JobSpec, command, environment
+from launcher.batch.job import (
+    JOB_MARK_PREFIX,
+    SCRATCH_VARIABLE,
+    JobFolder,
+    JobSpec,
+    command,
+    environment,
+)
 from launcher.batch.outcome import Ending, judge
 from launcher.batch.stopping import Escalation, sweep
 from launcher.dispositions import reset_for_children
@@ -44,6 +51,7 @@ class JobHost:
         self.escalation: Escalation | None = None
         self.signalled: list[str] = []
         self.exited_fd: int | None = None  # the job's pidfd: the loop wakes as it exits
+        self.lost = False  # the lifeline closed
 
     def run(self) -> Ending:
         """Start the job and follow it to its end."""
@@ -80,8 +88,11 @@ class JobHost:
             for line in self.lifeline.lines(POLL, self.exited_fd):
                 self.stop(line[4:].strip().decode() or "cancelled" if line.startswith(b"stop")
                           else "")
-            if self.lifeline.closed:
-                self.stop("lost")  # the worker that started the host is gone
+            if self.lifeline.closed and not self.lost:
+                self.lost = True  # the worker that started the host is gone (or was ended
+                if self.stopped_for is not None:  # by a second Ctrl-C): no more waiting
+                    self.escalation.hurry()  # type: ignore[union-attr]
+                self.stop("lost")
         return code
 
     def stop(self, why: str) -> None:
@@ -144,16 +155,31 @@ def main() -> int:
         signal.signal(signum, lambda n, _f: host.signalled.append(signal.Signals(n).name))
     reset_for_children()  # SIGQUIT too, if the worker ignored it
     ending = host.run()
+    if host.lost:  # no one to answer: leave nothing behind
+        _clear(host)
+        return 0
     result = judge(spec, host.folder, ending)
     nothing_left = not lineage.marked(mark)  # (else the watchdog looks, and ends it)
     (host.folder.root / "result.json").write_text(json.dumps(result.to_json()))
     packed = archive.pack(host.folder.root)
     shutil.rmtree(host.folder.root, ignore_errors=True)
-    sys.stdout.write(json.dumps({"result": result.to_json(), "archive": str(packed)}) + "\n")
-    sys.stdout.flush()
+    try:
+        sys.stdout.write(json.dumps({"result": result.to_json(), "archive": str(packed)}) +
+                         "\n")
+        sys.stdout.flush()
+    except BrokenPipeError:  # the task is gone after all
+        packed.unlink(missing_ok=True)
+        _clear(host)
     if nothing_left:
         os.write(watchdog_fd, b"=\n")
     return 0
+
+
+def _clear(host: JobHost) -> None:
+    """Remove what the job left in this node's temporary folders."""
+    shutil.rmtree(host.folder.root, ignore_errors=True)
+    if os.environ.get(SCRATCH_VARIABLE):  # the task's folder for the job, which is gone
+        shutil.rmtree(os.environ[SCRATCH_VARIABLE], ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -15,8 +15,10 @@ JOB_MARK_PREFIX = "LAUNCHER_BATCH_JOB_"  # kept by `detached()` processes (a job
 SEED_VARIABLE = "LAUNCHER_BATCH_SEED"
 JOB_VARIABLE = "LAUNCHER_BATCH_JOB"
 OUTPUT_VARIABLE = "LAUNCHER_BATCH_OUTPUT"
+SCRATCH_VARIABLE = "LAUNCHER_BATCH_SCRATCH"  # the task's folder for the job (removed after)
 # what a node's environment must not hand a job: another graph, Ray's own settings
 _NOT_PASSED = ("LAUNCHER_ROUTER", "LAUNCHER_RUN_DIR", "RAY_ADDRESS", "ROS_LOG_DIR",
+               "LAUNCHER_BATCH_SCRATCH",
                "LAUNCHER_LOG_DIR", "LAUNCHER_SIM_STOP_AT", "LAUNCHER_SIM_REPORT_DIR")
 
 

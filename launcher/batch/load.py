@@ -75,10 +75,15 @@ class _Doc:
 def load_batch(path: Path) -> BatchFile:
     """The batch file at `path`, checked."""
     doc = _Doc(path)
+    if not path.is_file():
+        raise ParseError(f"batch file '{path}' does not exist"
+                         f"{' (it is a folder)' if path.is_dir() else ''}")
     try:
         text = read_text(path)
     except UnicodeDecodeError:
         raise ParseError(f"{path}: not UTF-8 text") from None
+    except OSError as exc:
+        raise ParseError(f"{path}: cannot be read: {exc.strerror}") from None
     check_yaml_depth(text, str(path))
     try:
         root = doc.yaml.compose(text, Loader=doc.yaml.SafeLoader)
@@ -149,9 +154,15 @@ def _seeds(doc: _Doc, node: Any) -> list[int]:
     raise ParseError(f"seeds: {expected}, got {value!r}", doc.at(node))
 
 
+GRAPH_OWN = ("LAUNCHER_RUN_DIR", "LAUNCHER_ROUTER", "LAUNCHER_LOG_DIR", "ROS_LOG_DIR")
+
+
 def _strings(doc: _Doc, node: Any, what: str) -> dict[str, str]:
     out = {}
-    for name, (_, value) in doc.pairs(node, what).items():
+    for name, (key, value) in doc.pairs(node, what).items():
+        if what.endswith("env") and name in GRAPH_OWN:
+            raise ParseError(f"{what}: {name} is each job's own (its graph and its logs, "
+                             "which come back with its results)", doc.at(key))
         text = doc.text(value, f"{what}.{name}")
         out[name] = text.lower() if value.tag.endswith(":bool") else text
     return out
@@ -220,7 +231,8 @@ def _check_file(entry: Entry, what: str, batch: BatchFile) -> None:
     file = batch.path.parent / entry.file
     if file.is_file():
         return
-    beside = [str(p.relative_to(batch.path.parent)) for p in file.parent.glob("*")
+    head = entry.file.rpartition("/")[0]  # the folder as written: candidates keep it
+    beside = [f"{head}/{p.name}" if head else p.name for p in file.parent.glob("*")
               if p.is_file()] if file.parent.is_dir() else []
     raise ParseError(f"{key}: '{entry.file}' does not exist"
                      f"{did_you_mean(entry.file, beside)}", entry.places.get(key))

@@ -54,10 +54,13 @@ def label_of(entry: Entry) -> str:
     return entry.name or entry.file.rsplit("/", 1)[-1].split(".")[0]
 
 
-def job_id(entry: Entry, arguments: Mapping[str, str], seed: int, repeat: int) -> str:
-    what = {"kind": entry.kind, "file": entry.file, "package": entry.package,
-            "stop": records.asdict(entry.stop), "arguments": dict(sorted(arguments.items())),
-            "seed": seed, "repeat": repeat}
+def job_id(entry: Entry, number: int, arguments: Mapping[str, str], seed: int,
+           repeat: int) -> str:
+    """Stable while the entry and its place stay: two entries of one file differ."""
+    what = {"number": number, "kind": entry.kind, "file": entry.file,
+            "package": entry.package, "name": entry.name, "lockstep": entry.lockstep,
+            "env": entry.env, "stop": records.asdict(entry.stop),
+            "arguments": dict(sorted(arguments.items())), "seed": seed, "repeat": repeat}
     return hashlib.sha1(json.dumps(what, sort_keys=True).encode()).hexdigest()[:10]
 
 
@@ -71,15 +74,16 @@ def expand(batch: BatchFile, overrides: Overrides) -> list[JobPlan]:
                   for values in itertools.product(*matrix.values())]
         per_entry.append((number, entry, combos))
     total = sum(len(c) for _, _, c in per_entry) * len(batch.seeds) * batch.repeats
-    if total > MOST_JOBS:
+    if total > 10 * MOST_JOBS:
         raise UsageError(f"the batch makes {total:,} jobs; at most {MOST_JOBS:,} are run at "
-                         "once: narrow it with --only, or split the matrix")
+                         "once: split the matrix")
     plans = []
     for repeat, seed in itertools.product(range(batch.repeats), batch.seeds):
         for number, entry, combos in per_entry:
             for varied in combos:
                 arguments = {**entry.arguments, **varied, **overrides.fixed}
-                plans.append(JobPlan(job_id(entry, arguments, seed, repeat), label_of(entry),
+                plans.append(JobPlan(job_id(entry, number, arguments, seed, repeat),
+                                     label_of(entry),
                                      number, entry, arguments, varied, seed, repeat))
     return plans
 
@@ -119,4 +123,8 @@ def select(plans: list[JobPlan], only: Mapping[str, set[str]],
             raise UsageError(f"--only {name}={value}: not a value of {name} "
                              f"({', '.join(sorted(known))})")
     kept = [p for p in plans if all(_facet(p, n) in vs for n, vs in only.items())]
-    return kept if rerun is None else [p for p in kept if p.id in rerun]
+    kept = kept if rerun is None else [p for p in kept if p.id in rerun]
+    if len(kept) > MOST_JOBS:
+        raise UsageError(f"the batch makes {len(kept):,} jobs; at most {MOST_JOBS:,} are run "
+                         "at once: narrow it with --only, or split the matrix")
+    return kept

@@ -26,6 +26,10 @@ class Escalation:
     def begun(self) -> bool:
         return self.step >= 0
 
+    def hurry(self) -> None:
+        """The next signal now (the stop was asked again: a second Ctrl-C)."""
+        self.next_at = 0.0
+
     def poll(self) -> None:
         """Send the next signal when its time has come (the first at once)."""
         now = self.clock()  # type: ignore[operator]

@@ -79,8 +79,13 @@ class ResultsStore:
         if not found.is_file():
             raise UsageError(f"--rerun-failed: no earlier run of '{self.batch.title}' in "
                              f"{self.root}")
-        told = json.loads(found.read_text())
+        try:
+            told = json.loads(found.read_text())
+            statuses = {job["id"]: job["status"] for job in told["jobs"]}
+        except (ValueError, KeyError, TypeError):
+            raise UsageError(f"--rerun-failed: {found} is not a run's results (was it "
+                             "edited?)") from None
         if told.get("batch") != str(self.batch.path.resolve()):
             raise UsageError(f"--rerun-failed: the last run in {self.root} was of "
                              f"{told.get('batch')}, not of {self.batch.path}")
-        return {job["id"] for job in told["jobs"] if job["status"] != Status.PASS.value}
+        return {job for job, status in statuses.items() if status != Status.PASS.value}

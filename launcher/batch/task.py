@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
+import signal
 import socket
 import subprocess
 import sys
@@ -15,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from launcher import __version__
-from launcher.batch.job import PROTOCOL, JobSpec
+from launcher.batch.job import PROTOCOL, SCRATCH_VARIABLE, JobSpec
 
 GRACE = 15.0  # seconds a cancelled job has to stop before the task gives up on it
 WEDGED = 30.0  # seconds past the job's time limit after which the host itself is ended
@@ -32,52 +34,74 @@ def node_address() -> str:
 
 def run_job(spec_json: str) -> dict[str, Any]:
     """The job's result (as JSON), its packed folder (bytes) and the node it ran on."""
-    spec = JobSpec.from_json(spec_json)
+    import json
+
+    told = json.loads(spec_json)  # (read raw: a spec of another shape is said, not raised)
     node = node_address()
-    if spec.protocol != PROTOCOL or spec.launcher_version != __version__:
-        return {"node": node, "archive": b"", "setup": True, "result": {
-            "id": spec.id, "status": "error", "node": node,
-            "reason": f"node {node} runs launcher {__version__} (batch protocol {PROTOCOL}), "
-                      f"the batch's machine {spec.launcher_version} (protocol "
-                      f"{spec.protocol}): install the same launcher[cluster] on every node"}}
+    if told.get("protocol") != PROTOCOL or told.get("launcher_version") != __version__:
+        return _setup_error(told, node, (
+            f"node {node} runs launcher {__version__} (batch protocol {PROTOCOL}), the batch's "
+            f"machine {told.get('launcher_version')} (protocol {told.get('protocol')}): "
+            "install the same launcher[cluster] on every node"))
+    spec = JobSpec.from_json(spec_json)
     if spec.root and not (Path(spec.root) / spec.file).is_file():
-        return {"node": node, "archive": b"", "setup": True, "result": {
-            "id": spec.id, "status": "error", "node": node,
-            "reason": f"node {node}: the workspace is not at {spec.root} there (no "
-                      f"{spec.file}): share it at the same path, or let it be uploaded"}}
-    return _host(spec, spec_json, node)
+        return _setup_error(told, node, (
+            f"node {node}: the workspace is not at {spec.root} there (no {spec.file}): share "
+            "it at the same path, or let it be uploaded"))
+    scratch = tempfile.mkdtemp(prefix="lnb-")  # everything of the job's on this node
+    try:
+        return _host(spec, spec_json, node, scratch)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
 
 
-def _host(spec: JobSpec, spec_json: str, node: str) -> dict[str, Any]:
-    with tempfile.TemporaryFile() as errors:
+def _setup_error(told: dict[str, Any], node: str, reason: str) -> dict[str, Any]:
+    """A node that can run no job of the batch: the batch stops."""
+    return {"node": node, "archive": b"", "setup": True,
+            "result": {"id": told.get("id", "?"), "status": "error", "node": node,
+                       "reason": reason}}
+
+
+def _host(spec: JobSpec, spec_json: str, node: str, scratch: str) -> dict[str, Any]:
+    env = dict(os.environ, TMPDIR=scratch, **{SCRATCH_VARIABLE: scratch})
+    with tempfile.TemporaryFile(dir=scratch) as errors:
         host = subprocess.Popen([sys.executable, "-m", "launcher.batch.host"],
                                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=errors,
-                                start_new_session=True)
+                                env=env, start_new_session=True)
         assert host.stdin is not None and host.stdout is not None
         host.stdin.write(spec_json.encode() + b"\n")
         host.stdin.flush()
         try:
-            _wait(host, spec.timeout + WEDGED)
+            wedged = _wait(host, spec.timeout + WEDGED)
         except KeyboardInterrupt:  # Ray's cancel: the job is stopped, then the task ends
             host.stdin.write(b"stop cancelled\n")
             host.stdin.flush()
             _wait(host, GRACE)
             raise
+        if wedged:
+            return {"node": node, "archive": b"", "result": {
+                "id": spec.id, "status": "timeout", "node": node,
+                "reason": f"the job did not end {WEDGED:g} s past its time limit of "
+                          f"{spec.timeout:g} s; ended with everything it started"}}
         line = host.stdout.readline()
         host.stdin.close()
         errors.seek(0)
         return _reply(line, errors.read(), node, spec)
 
 
-def _wait(host: subprocess.Popen[bytes], limit: float) -> None:
+def _wait(host: subprocess.Popen[bytes], limit: float) -> bool:
     """Wait in short steps (a cancel lands between them); past `limit`, end the host's
-    session: its watchdog then ends the job."""
+    session (its watchdog then ends the job): True then."""
     deadline = time.monotonic() + limit
     while host.poll() is None:
         if time.monotonic() > deadline:
-            os.killpg(host.pid, 9)
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(host.pid, signal.SIGKILL)
+            host.wait()
+            return True
         with contextlib.suppress(subprocess.TimeoutExpired):
             host.wait(0.1)
+    return False
 
 
 def _reply(line: bytes, errors: bytes, node: str, spec: JobSpec) -> dict[str, Any]:
@@ -90,7 +114,5 @@ def _reply(line: bytes, errors: bytes, node: str, spec: JobSpec) -> dict[str, An
         return {"node": node, "archive": b"", "result": {
             "id": spec.id, "status": "error", "node": node,
             "reason": f"the job host on {node} failed: {why[0]}"}}
-    archive = Path(told["archive"])
-    data = archive.read_bytes()
-    archive.unlink()
+    data = Path(told["archive"]).read_bytes()
     return {"node": node, "archive": data, "result": {**told["result"], "node": node}}

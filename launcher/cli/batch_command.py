@@ -19,12 +19,14 @@ from launcher.batch.checks import check_entries
 from launcher.batch.job import JobSpec
 from launcher.batch.load import load_batch
 from launcher.batch.matrix import JobPlan, Overrides, expand, parse_only, select
-from launcher.batch.resources import ray_options
-from launcher.batch.spec import BatchFile, Entry
+from launcher.batch.runner import Job
+from launcher.batch.spec import BatchFile
 from launcher.batch.store import ResultsStore
 from launcher.batch.workspace import Workspace, plan_workspace
 from launcher.cli.launch_command import parse_assignments
 from launcher.errors import LaunchError, UsageError
+
+INSPECT_SECONDS = 120.0  # for reading what the job files declare
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -71,8 +73,8 @@ def run(args: argparse.Namespace) -> int:
         return 0
     plans = select(expand(batch, overrides), parse_only(args.only), rerun)
     if not plans:
-        raise UsageError("no job is left to run (--only and --rerun-failed together keep "
-                         "none)")
+        raise UsageError("no job is left to run: --only keeps none"
+                         + (" of the last run's failures" if rerun else ""))
     if args.list:
         for plan in plans:
             print(f"{plan.id}  {plan.title}")
@@ -80,8 +82,7 @@ def run(args: argparse.Namespace) -> int:
     _need_ray()
     address = args.address or os.environ.get("RAY_ADDRESS") or None
     workspace = plan_workspace(batch, remote=address is not None)
-    jobs = [(plan, _spec(batch, plan, facts[plan.number], workspace),
-             _options(batch, plan.entry)) for plan in plans]
+    jobs = [_job(batch, plan, facts[plan.number], workspace) for plan in plans]
     from launcher.cli.batch_run import run_batch
 
     return run_batch(batch, jobs, store, address, workspace, args)
@@ -101,9 +102,14 @@ def _inspect(batch: BatchFile) -> list[dict[str, Any]]:
     """What each entry's file declares, read by a child (launcher.cli.batch_inspect)."""
     requests = [{"path": str(batch.path.parent / e.file) if not e.package else e.file,
                  "test": e.kind == "test", "package": e.package} for e in batch.jobs]
-    done = subprocess.run([sys.executable, "-m", "launcher.cli.batch_inspect"],
-                          input=json.dumps(requests), capture_output=True, text=True,
-                          check=False)
+    try:
+        done = subprocess.run([sys.executable, "-m", "launcher.cli.batch_inspect"],
+                              input=json.dumps(requests), capture_output=True, text=True,
+                              check=False, timeout=INSPECT_SECONDS)
+    except subprocess.TimeoutExpired:
+        raise LaunchError(f"the job files could not be read within {INSPECT_SECONDS:g} s "
+                          "(a test module that waits as it is imported?): "
+                          f"{', '.join(e.file for e in batch.jobs)}") from None
     try:
         return json.loads(done.stdout)
     except ValueError:
@@ -150,7 +156,7 @@ def _spec(batch: BatchFile, plan: JobPlan, fact: dict[str, Any],
         root=workspace.spec_root, launcher_version=__version__)
 
 
-def _options(batch: BatchFile, entry: Entry) -> dict[str, Any]:
-    resources = entry.resources or batch.resources
-    retries = entry.retries if entry.retries is not None else batch.retries
-    return {**ray_options(resources), "max_retries": retries}
+def _job(batch: BatchFile, plan: JobPlan, fact: dict[str, Any], workspace: Workspace) -> Job:
+    entry = plan.entry
+    return Job(plan, _spec(batch, plan, fact, workspace), entry.resources or batch.resources,
+               entry.retries if entry.retries is not None else batch.retries)

@@ -57,9 +57,9 @@ def run_tool(word: str, words: list[str]) -> int:
 
 def _parse_and_run(argv: list[str], prog: str = "launcher") -> int | None:
     parser, commands = build_parser(argv, prog)
-    if argv[:1] == ["launch"]:
+    if argv[:1] in (["launch"], ["batch"]):
         # `name:=value` may come before or after options (`--duration 10 drive:=false`)
-        args = commands.choices["launch"].parse_intermixed_args(argv[1:])
+        args = commands.choices[argv[0]].parse_intermixed_args(argv[1:])
     else:
         args = parser.parse_args_strictly(argv)
     return args.run(args)

@@ -232,3 +232,19 @@ def test_ray_not_installed_says_which_extra_to_install(batch_ws):
     assert done.returncode == 1
     assert "launcher batch runs its jobs on Ray, which is not installed for" in done.stderr
     assert "pip install 'launcher[cluster]'" in done.stderr
+
+
+def test_a_fixed_argument_may_follow_the_options(batch_ws):
+    batch_ws.write("c.batch.yaml", CHATTER)
+    done = batch_ws.run("batch", "c.batch.yaml", "--list", "rate:=7")
+    assert done.returncode == 0, done.stderr
+    assert {line.split("  ")[1] for line in done.stdout.splitlines()} == \
+        {"chatter_test[seed=0]", "chatter_test[seed=1]"}
+
+
+def test_a_results_folder_that_cannot_be_made_is_said(batch_ws):
+    batch_ws.write("c.batch.yaml", CHATTER)
+    (batch_ws.root / "taken").write_text("a file, not a folder\n")
+    done = batch_ws.run("batch", "c.batch.yaml", "--results", "taken/runs", timeout=90)
+    assert done.returncode == 1
+    assert "error: the results cannot be kept in taken/runs" in done.stderr

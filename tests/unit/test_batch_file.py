@@ -113,3 +113,19 @@ BAD = [
 @pytest.mark.parametrize(("text", "said"), [b[1:] for b in BAD], ids=[b[0] for b in BAD])
 def test_a_mistake_is_said_at_its_place(tmp_path, text, said):
     assert said in refused(tmp_path, text)
+
+
+def test_a_batch_file_that_does_not_exist_is_said(tmp_path):
+    with pytest.raises(ParseError, match="batch file '.*nope.yaml' does not exist"):
+        load_batch(tmp_path / "nope.yaml")
+
+
+def test_a_misspelt_absolute_job_file_is_said_with_the_file_beside_it(tmp_path):
+    (tmp_path / "drive_test.py").write_text("#\n")
+    said = refused(tmp_path, f"jobs:\n  - test: {tmp_path}/drive_tset.py\n")
+    assert f"(did you mean '{tmp_path}/drive_test.py'" in said
+
+
+def test_an_env_that_would_take_a_jobs_graph_is_refused(tmp_path):
+    said = refused(tmp_path, "jobs:\n  - test: drive_test.py\nenv: {LAUNCHER_RUN_DIR: /x}\n")
+    assert said.startswith("b:3:7: env: LAUNCHER_RUN_DIR is each job's own")

@@ -60,10 +60,18 @@ def test_matrix_on_the_command_line_adds_a_key():
     assert [p.varied for p in plans] == [{"w": "a", "speed": "1"}, {"w": "a", "speed": "2"}]
 
 
-def test_too_many_jobs_are_refused():
+def test_too_many_jobs_are_refused_after_only_has_narrowed_them():
+    plans = expand(batch(matrix={"a": [str(i) for i in range(MOST_JOBS)]}, seeds=[0, 1]),
+                   Overrides())
+    assert len(select(plans, parse_only(["seed=0"]))) == MOST_JOBS
     with pytest.raises(UsageError, match="at most 100,000"):
-        expand(batch(matrix={"a": [str(i) for i in range(MOST_JOBS)]}, seeds=[0, 1]),
-               Overrides())
+        select(plans, {})
+
+
+def test_two_entries_of_one_file_are_different_jobs():
+    plans = expand(batch(jobs=[Entry(test="t.py"), Entry(test="t.py", env={"A": "1"})]),
+                   Overrides())
+    assert len({p.id for p in plans}) == 2
 
 
 def test_only_keeps_the_jobs_of_a_value():
