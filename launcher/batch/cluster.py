@@ -23,10 +23,8 @@ CONNECT_VARIABLE = "LAUNCHER_BATCH_CONNECT_TIMEOUT"  # seconds joining a cluster
 class Cluster:
     """One Ray session of the driver."""
 
-    def __init__(self, ray: Any, where: str, private: Path | None,
-                 runtime_env: dict[str, Any] | None = None) -> None:
+    def __init__(self, ray: Any, where: str, private: Path | None) -> None:
         self.ray = ray
-        self.runtime_env = runtime_env  # the workspace's upload, given with each task
         self.where = where  # "this machine" or "the cluster at ADDR"
         self.private = private  # the embedded cluster's folder (token, Ray's temp dir)
         from launcher.batch.task import run_job
@@ -74,8 +72,8 @@ class Cluster:
 
         def connect() -> None:
             try:
-                ray.init(address=address, log_to_driver=False, logging_level="warning",
-                         namespace="launcher-batch")
+                ray.init(address=address, runtime_env=runtime_env, log_to_driver=False,
+                         logging_level="warning", namespace="launcher-batch")
             except BaseException as exc:  # noqa: BLE001 - handed to the waiting thread
                 failure.append(exc)
 
@@ -84,10 +82,11 @@ class Cluster:
         thread.join(limit)
         if thread.is_alive():
             raise LaunchError(f"--address {address}: it answered but did not act as a Ray "
-                              f"cluster within {limit:g} s")
+                              f"cluster within {limit:g} s (the workspace's upload counts: "
+                              f"{CONNECT_VARIABLE} sets the limit)")
         if failure:
             raise LaunchError(_worded(address, failure[0])) from None
-        return cls(ray, f"the cluster at {address}", None, runtime_env)
+        return cls(ray, f"the cluster at {address}", None)
 
     def nodes(self) -> list[NodeOffer]:
         offers = []
@@ -103,16 +102,8 @@ class Cluster:
         return offers
 
     def submit(self, spec: JobSpec, options: dict[str, Any]) -> Any:
-        """The job's task (its workspace uploaded with the first: Ray packs it once)."""
-        if self.runtime_env is not None:
-            options = {**options, "runtime_env": self.runtime_env}
-        try:
-            return self.remote.options(scheduling_strategy="SPREAD", retry_exceptions=False,
-                                       **options).remote(spec.to_json())
-        except ValueError as exc:  # Ray's limit on the upload, in its words
-            raise LaunchError(f"the workspace could not be sent to the cluster: {exc}; leave "
-                              "large files out (.rayignore, .gitignore or exclude:), or share "
-                              "it (shared_workspace: true)") from None
+        return self.remote.options(scheduling_strategy="SPREAD", retry_exceptions=False,
+                                   **options).remote(spec.to_json())
 
     def wait(self, refs: list[Any], timeout: float) -> tuple[list[Any], list[Any]]:
         return self.ray.wait(refs, num_returns=1, timeout=timeout)
@@ -158,6 +149,10 @@ def _lost(exc: BaseException) -> str:
 
 def _worded(address: str, exc: BaseException) -> str:
     text = str(exc)
+    if isinstance(exc, ValueError) and ("working_dir" in text or "package" in text.lower()):
+        return (f"the workspace could not be sent to the cluster at {address}: "
+                f"{text.splitlines()[0]}; leave large files out (.rayignore, .gitignore or "
+                "exclude:), or share it (shared_workspace: true)")
     if "auth" in text.lower() or "token" in text.lower():
         return (f"the Ray cluster at {address} uses token authentication and refused this "
                 "machine: set RAY_AUTH_TOKEN or RAY_AUTH_TOKEN_PATH (ray get-auth-token)")

@@ -70,7 +70,8 @@ class NodeOffer:
 
     def describe(self) -> str:
         gpus = f"{self.gpus:g} GPU" if self.gpus else "no GPU"
-        return f"{self.address}: {self.cpus:g} CPU, {self.memory / 2**30:.1f} GiB, {gpus}"
+        own = "".join(f", {amount:g} {name}" for name, amount in sorted(self.custom.items()))
+        return f"{self.address}: {self.cpus:g} CPU, {self.memory / 2**30:.1f} GiB, {gpus}{own}"
 
 
 def unmet(r: Resources, nodes: list[NodeOffer], where: str = "the cluster") -> str | None:

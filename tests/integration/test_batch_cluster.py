@@ -137,8 +137,13 @@ def test_a_node_lost_with_no_retries_left_is_an_error_with_the_reason(bws):
     try:
         out, err = batch.communicate(timeout=120)
         assert batch.returncode == 1, out + err
-        lost = [r for r in bws.results() if r["status"] == "error"]
-        assert lost and all("died" in r["reason"] for r in lost), bws.results()
+        reasons = [(r["status"], r["reason"]) for r in bws.results()]
+        # the one running died with its node; the one queued behind it asked for what only
+        # that node had
+        assert {status for status, _ in reasons} == {"error"}, reasons
+        assert any("the node running it died" in why for _, why in reasons), reasons
+        assert all("died" in why or "no live node can run it any more" in why
+                   for _, why in reasons), reasons
     finally:
         bws.cluster.restart("w1")
 
@@ -153,6 +158,7 @@ def test_ctrl_c_cancels_the_jobs_on_every_node_and_leaves_nothing(bws):
     batch.send_signal(signal.SIGINT)
     batch.communicate(timeout=60)
     assert batch.returncode == 130
+    assert {r["status"] for r in bws.results()} == {"cancelled"}
     deadline = time.monotonic() + 20
     while (bws.jobs_on("head") or bws.jobs_on("w1")) and time.monotonic() < deadline:
         time.sleep(0.2)

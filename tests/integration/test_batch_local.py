@@ -17,6 +17,7 @@ import pytest
 
 from tests.support.batch_files import write_jobs, write_lockstep
 from tests.support.environment import REPO
+from tests.support.processes import launcher_argv
 
 pytestmark = [
     pytest.mark.xdist_group("ray"),  # one Ray at a time on the machine
@@ -143,13 +144,18 @@ def test_a_run_in_lockstep_repeats_each_jobs_state(batch_ws):
 
 
 def test_ctrl_c_cancels_every_job_and_leaves_nothing(batch_ws):
+    """Ctrl-C as a terminal sends it: to the whole foreground group (Ray's own processes
+    started by the batch are in it)."""
     batch_ws.write("s.batch.yaml", "jobs:\n  - test: jobs/stuck_test.py\nseeds: 3\n")
-    batch = batch_ws.start("batch", "s.batch.yaml", "-n")
+    with open(batch_ws.root / "stderr.txt", "w") as err:
+        batch = subprocess.Popen(launcher_argv() + ["batch", "s.batch.yaml", "-n"],
+                                 cwd=batch_ws.root, env=batch_ws.env, stdout=subprocess.DEVNULL,
+                                 stderr=err, start_new_session=True)
     deadline = time.monotonic() + 60
     while len([p for p in batch_ws.processes() if "stuck_test" in " ".join(p.cmdline())]) < 2:
         assert time.monotonic() < deadline, batch_ws.output("stderr.txt")
         time.sleep(0.2)
-    batch.send_signal(signal.SIGINT)
+    os.killpg(batch.pid, signal.SIGINT)
     assert batch.wait(60) == 130
     assert {j["status"] for j in results(batch_ws, "s")} == {"cancelled"}
 

@@ -146,7 +146,7 @@ def test_a_gpu_no_node_has_is_said_with_what_each_node_has():
     why = unmet(Resources(gpus=1), NODES)
     assert why == ("each job asks for 1 CPU, 1 GPU; no node of the cluster can give that "
                    "(10.0.0.1: 1 CPU, "
-                   "3.0 GiB, no GPU; 10.0.0.2: 1 CPU, 3.0 GiB, no GPU)")
+                   "3.0 GiB, no GPU, 1000 batch_head; 10.0.0.2: 1 CPU, 3.0 GiB, no GPU)")
 
 
 def test_more_cpus_than_any_one_node_has_is_unmet():
