@@ -38,4 +38,21 @@ def unpack(data: bytes, into: Path) -> None:
     """Unpack a job's archive into `into` (made 0700): regular files only, inside it."""
     into.mkdir(mode=0o700, parents=True, exist_ok=True)
     with tarfile.open(fileobj=io.BytesIO(data), mode="r:gz") as tar:
-        tar.extractall(into, filter="data")
+        if hasattr(tarfile, "data_filter"):  # Python 3.11.4 and later
+            tar.extractall(into, filter="data")
+            return
+        for member in tar.getmembers():  # (earlier 3.11: the same checks, by hand)
+            tar.extract(_checked(member, into), into)
+
+
+def _checked(member: tarfile.TarInfo, into: Path) -> tarfile.TarInfo:
+    """A member as the "data" filter lets it through: a regular file or folder, its leading
+    slashes dropped, inside `into`; else tarfile's own error."""
+    if not (member.isfile() or member.isdir()):
+        raise tarfile.TarError(f"{member.name}: not a regular file")
+    member.name = member.name.lstrip("/")
+    target = (into / member.name).resolve()
+    if not target.is_relative_to(into.resolve()):
+        raise tarfile.TarError(f"{member.name}: outside the folder it is unpacked in")
+    member.mode = 0o600 if member.isfile() else 0o700
+    return member

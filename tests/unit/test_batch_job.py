@@ -208,3 +208,13 @@ def test_a_shared_workspace_missing_on_a_node_says_so(tmp_path):
     told = run_job(spec(root=str(tmp_path / "nowhere"), launcher_version=__version__).to_json())
     assert told["setup"] and f"the workspace is not at {tmp_path / 'nowhere'} there" in \
         told["result"]["reason"]
+
+
+def test_without_tarfiles_data_filter_the_same_checks_hold(tmp_path, monkeypatch):
+    """Python before 3.11.4 (Debian 12's 3.11.2) has no "data" filter."""
+    monkeypatch.delattr(tarfile, "data_filter", raising=False)
+    with pytest.raises(tarfile.TarError):
+        archive.unpack(packed_member("../outside"), tmp_path / "in")
+    archive.unpack(packed_member("/etc/outside"), tmp_path / "in")
+    assert (tmp_path / "in" / "etc" / "outside").read_bytes() == b"x"
+    assert not (tmp_path / "outside").exists()

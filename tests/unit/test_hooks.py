@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import random
 from pathlib import Path
 
 import pytest
@@ -154,6 +155,9 @@ def test_a_shell_hook_that_fails_or_never_ends_is_located_and_leaves_nothing(
     (bash gives the line; Debian's sh has no $LINENO, so the command is found in the file)."""
     import psutil
 
+    # (a number of this test's own: the other cases, on other workers, sleep too)
+    seconds = str(random.randint(10_000, 99_999))
+    text = text.replace("987", seconds)
     ws = make_tree(tmp_path / "ws", {"p/package.xml": manifest("p"), f"p/hooks/{name}": text})
     with pytest.raises(LaunchError) as info:
         apply_hooks(index_for(ws, tmp=tmp_path), {"PATH": "/usr/bin:/bin",
@@ -161,7 +165,8 @@ def test_a_shell_hook_that_fails_or_never_ends_is_located_and_leaves_nothing(
     assert expected in str(info.value)
     assert str(info.value).startswith(str(ws / "p" / "hooks" / name))
     assert "\x1f" not in str(info.value)  # the shell's trace is not shown as the hook's words
-    left = [p for p in psutil.process_iter(["cmdline"]) if p.info["cmdline"] == ["sleep", "987"]]
+    left = [p for p in psutil.process_iter(["cmdline"])
+            if p.info["cmdline"] == ["sleep", seconds]]
     assert not left
 
 
