@@ -2,10 +2,11 @@
 the same run.
 
 - 40 short launch tests (the demo driven 2 m in lockstep, bench/lockstep_launch_test.py, over
-  4 worlds × 10 seeds: launch_files/demo.batch.yaml): `launcher batch` on Ray started for the
-  batch (its start counted) against `launcher test … world_name:=W` forty times in a row. The
-  bound 2 cores allow is printed beside it: one job alone keeps C cores busy (the CPU time of
-  the serial runs over their wall time), so two at once are at most 2/C times faster.
+  4 worlds × 10 seeds, as launch_files/demo.batch.yaml has them): `launcher batch` on Ray
+  started for the batch (its start counted) against `launcher test … world_name:=W` forty
+  times in a row. The bound 2 cores allow is printed beside it: one job alone keeps C cores
+  busy (the CPU time of the serial runs over their wall time), so two at once are at most 2/C
+  times faster.
 - Ray's overhead per job: 5 jobs, one at a time (each asks for both cores), the batch's time
   per job (Ray's start apart) against the job alone (median of 5).
 - The same 20 jobs on a two-node Ray cluster (1 CPU a node, each node in a network namespace:
@@ -15,14 +16,17 @@ the same run.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import resource
+import shutil
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 from _harness import launcher_cmd, table
@@ -106,8 +110,8 @@ def on_clusters(folder: Path) -> list[tuple[str, str, str]]:
         return [("20 jobs: 2 nodes vs 1", "reported", "not run: needs root (namespaces)")]
     walls = {}
     for nodes in ((NodeSpec("head", 1),), (NodeSpec("head", 1), NodeSpec("w1", 1))):
-        root = Path(tempfile.mkdtemp(prefix="lnb", dir="/tmp"))
-        with RayCluster(root, nodes) as cluster:
+        root = Path(tempfile.mkdtemp(prefix="lnc", dir="/tmp"))  # (short: Ray's sockets)
+        with RayCluster(root, nodes) as cluster, _removed(root):
             path = batch_file(folder, WORLDS, 5, 1)
             path.write_text(path.read_text() + "shared_workspace: true\n")  # (one machine)
             _, told = run_cluster(cluster, path, folder / f"c{len(nodes)}",
@@ -129,10 +133,19 @@ def run_cluster(cluster, path: Path, results: Path, env: dict[str, str]) -> tupl
                                                    "results.json").read_text())
 
 
+@contextlib.contextmanager
+def _removed(folder: Path) -> Iterator[None]:
+    try:
+        yield
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
 def main() -> None:
     folder = Path(tempfile.mkdtemp(prefix="launcher-bench-batch-"))
     os.environ["LAUNCHER_LOG_DIR"] = str(folder / "log")
-    rows = serial_and_batch(folder) + overhead(folder) + on_clusters(folder)
+    with _removed(folder):
+        rows = serial_and_batch(folder) + overhead(folder) + on_clusters(folder)
     table("launcher batch (Ray): many scenarios at once", rows)
 
 
