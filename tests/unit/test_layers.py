@@ -268,3 +268,38 @@ def imports_from_tests(path: Path) -> set[str]:
         elif isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.startswith("tests"))
     return found
+
+
+def _imports_anywhere(path: Path) -> set[str]:
+    """The top-level names of every module `path` imports, wherever the import stands."""
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            found |= {a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            found.add(node.module.split(".")[0])
+    return found
+
+
+@pytest.mark.parametrize(("library", "allowed"), [
+    ("ray", {"batch/cluster.py", "batch/task.py"}),
+    ("matplotlib", {"batch/picture.py", "cli/plot_command.py"}),
+], ids=["ray", "matplotlib"])
+def test_a_heavy_optional_library_is_imported_by_its_own_modules_alone(library, allowed):
+    """Ray (the cluster extra) and matplotlib (the plot extra) are optional: only the modules
+    that need them import them, so every other command runs without them."""
+    importers = {str(p.relative_to(ROOT)) for p in ROOT.rglob("*.py")
+                 if library in _imports_anywhere(p)}
+    assert importers <= allowed, sorted(importers - allowed)
+
+
+def test_the_job_host_imports_nothing_heavy():
+    """Every job of a batch pays for the job host's imports."""
+    import subprocess
+    import sys
+
+    heavy = ("ray", "yaml", "zenoh", "mujoco", "numpy")
+    done = subprocess.run([sys.executable, "-c", "import sys, launcher.batch.host; print(' '.join("
+                           f"m for m in {heavy!r} if m in sys.modules))"],
+                          capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == ""
