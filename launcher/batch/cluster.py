@@ -18,6 +18,31 @@ from launcher.batch.results import JobResult, Status
 from launcher.errors import LaunchError
 
 CONNECT_VARIABLE = "LAUNCHER_BATCH_CONNECT_TIMEOUT"  # seconds joining a cluster may take
+PRIVATE_PREFIX = "lnray-"  # the folder of a cluster started for a batch (Ray's, the token, jobs')
+OWNER = "owner"  # in it: the pid of the batch that made it
+
+
+def sweep_stale(where: Path) -> list[Path]:
+    """Remove the folders of clusters whose batch is gone without removing them (a SIGKILL):
+    this user's, whose owner no longer runs."""
+    removed = []
+    for folder in where.glob(f"{PRIVATE_PREFIX}*"):
+        try:
+            if folder.stat().st_uid != os.getuid():
+                continue
+            pid = int((folder / OWNER).read_text())
+        except (OSError, ValueError):
+            continue
+        try:
+            os.kill(pid, 0)
+            continue  # (still running: its batch's)
+        except ProcessLookupError:
+            pass
+        except PermissionError:
+            continue
+        shutil.rmtree(folder, ignore_errors=True)
+        removed.append(folder)
+    return removed
 
 
 class Cluster:
@@ -37,12 +62,17 @@ class Cluster:
     def local(cls, cpus: int) -> Cluster:
         """A cluster of this machine for the batch alone: token authentication with a private
         token, no dashboard, no usage reports; gone with the batch."""
-        private = Path(tempfile.mkdtemp(prefix="lnray-"))  # short: Ray's socket paths
+        sweep_stale(Path(tempfile.gettempdir()))
+        private = Path(tempfile.mkdtemp(prefix=PRIVATE_PREFIX))  # short: Ray's socket paths
+        (private / OWNER).write_text(str(os.getpid()))
+        (private / "tmp").mkdir()
         token = private / "token"
         token.write_text(secrets.token_hex(32))
         token.chmod(0o600)
+        # (TMPDIR: the jobs' folders go inside, so a batch ended by SIGKILL leaves one folder,
+        # which the next batch removes)
         os.environ.update(RAY_AUTH_MODE="token", RAY_AUTH_TOKEN_PATH=str(token),
-                          RAY_USAGE_STATS_ENABLED="0")
+                          RAY_USAGE_STATS_ENABLED="0", TMPDIR=str(private / "tmp"))
         os.environ.pop("RAY_ADDRESS", None)
         import ray
 

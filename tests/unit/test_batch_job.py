@@ -4,6 +4,7 @@ its folder packed for the way back."""
 from __future__ import annotations
 
 import io
+import os
 import tarfile
 from pathlib import Path
 
@@ -218,3 +219,14 @@ def test_without_tarfiles_data_filter_the_same_checks_hold(tmp_path, monkeypatch
     archive.unpack(packed_member("/etc/outside"), tmp_path / "in")
     assert (tmp_path / "in" / "etc" / "outside").read_bytes() == b"x"
     assert not (tmp_path / "outside").exists()
+
+
+def test_a_clusters_folder_whose_batch_is_gone_is_removed_by_the_next(tmp_path):
+    from launcher.batch.cluster import OWNER, PRIVATE_PREFIX, sweep_stale
+
+    gone, running = tmp_path / f"{PRIVATE_PREFIX}a", tmp_path / f"{PRIVATE_PREFIX}b"
+    for folder, pid in ((gone, 2**22 + 1), (running, os.getpid())):  # (above pid_max: gone)
+        folder.mkdir()
+        (folder / OWNER).write_text(str(pid))
+    assert sweep_stale(tmp_path) == [gone]
+    assert running.exists() and not gone.exists()
