@@ -7,8 +7,8 @@ from pathlib import Path
 from typing import Any
 
 from launcher import records
-from launcher.batch.resources import parse_resources
-from launcher.batch.spec import BatchFile, Entry
+from launcher.batch.resources import RAY_OWN, parse_bytes
+from launcher.batch.spec import BatchFile, Entry, Resources
 from launcher.errors import Location, ParseError, did_you_mean
 from launcher.schema import Kind, build, declared_fields
 from launcher.user_files import check_yaml_depth, read_text
@@ -166,6 +166,30 @@ def _strings(doc: _Doc, node: Any, what: str) -> dict[str, str]:
         text = doc.text(value, f"{what}.{name}")
         out[name] = text.lower() if value.tag.endswith(":bool") else text
     return out
+
+
+def parse_resources(doc: _Doc, node: Any, what: str) -> Resources:
+    """Resources from a mapping node of a batch file (None: the defaults)."""
+    if node is None:
+        return Resources()
+    made, nested, places = doc.record(Resources, node, what)
+    if made.memory is not None:
+        try:
+            parse_bytes(made.memory, f"{what}.memory")
+        except ParseError as exc:
+            raise exc.at(places.get("memory")) from None
+    custom = {}
+    if "custom" in nested:
+        for name, (key, value) in doc.pairs(nested["custom"], f"{what}.custom").items():
+            if name in RAY_OWN or name.startswith("node:"):
+                raise ParseError(f"{what}.custom: '{name}' is Ray's own; say cpus, gpus or "
+                                 "memory, or name a resource of your nodes", doc.at(key))
+            amount = doc.construct(value)
+            if isinstance(amount, bool) or not isinstance(amount, int | float) or amount <= 0:
+                raise ParseError(f"{what}.custom.{name}: expected a number > 0, got "
+                                 f"{amount!r}", doc.at(value))
+            custom[name] = float(amount)
+    return records.replace(made, custom=custom)
 
 
 def _jobs(doc: _Doc, node: Any, batch: BatchFile) -> list[Entry]:

@@ -88,15 +88,20 @@ def expand(batch: BatchFile, overrides: Overrides) -> list[JobPlan]:
     return plans
 
 
-def parse_only(items: Iterable[str]) -> dict[str, set[str]]:
-    """`--only NAME=VALUE` …: repeated NAME = any of its values."""
-    only: dict[str, set[str]] = {}
+def parse_pairs(items: Iterable[str], option: str) -> dict[str, list[str]]:
+    """A repeatable `OPTION NAME=VALUE`: each NAME's values, in the order given."""
+    pairs: dict[str, list[str]] = {}
     for item in items:
         name, sep, value = item.partition("=")
         if not sep or not name:
-            raise UsageError(f"--only {item}: expected NAME=VALUE (world=empty.sdf)")
-        only.setdefault(name, set()).add(value)
-    return only
+            raise UsageError(f"{option} {item}: expected NAME=VALUE (world=empty.sdf)")
+        pairs.setdefault(name, []).append(value)
+    return pairs
+
+
+def parse_only(items: Iterable[str]) -> dict[str, set[str]]:
+    """`--only NAME=VALUE` …: repeated NAME = any of its values."""
+    return {name: set(values) for name, values in parse_pairs(items, "--only").items()}
 
 
 def _facet(plan: JobPlan, name: str) -> str | None:

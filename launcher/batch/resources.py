@@ -25,30 +25,6 @@ def parse_bytes(text: str, what: str) -> int:
     return int(float(found.group(1)) * _UNITS[unit])
 
 
-def parse_resources(doc: Any, node: Any, what: str) -> Resources:
-    """Resources from a mapping node of a batch file (None: the defaults)."""
-    if node is None:
-        return Resources()
-    made, nested, places = doc.record(Resources, node, what)
-    if made.memory is not None:
-        try:
-            parse_bytes(made.memory, f"{what}.memory")
-        except ParseError as exc:
-            raise exc.at(places.get("memory")) from None
-    custom = {}
-    if "custom" in nested:
-        for name, (key, value) in doc.pairs(nested["custom"], f"{what}.custom").items():
-            if name in RAY_OWN or name.startswith("node:"):
-                raise ParseError(f"{what}.custom: '{name}' is Ray's own; say cpus, gpus or "
-                                 "memory, or name a resource of your nodes", doc.at(key))
-            amount = doc.construct(value)
-            if isinstance(amount, bool) or not isinstance(amount, int | float) or amount <= 0:
-                raise ParseError(f"{what}.custom.{name}: expected a number > 0, got "
-                                 f"{amount!r}", doc.at(value))
-            custom[name] = float(amount)
-    return records.replace(made, custom=custom)
-
-
 def ray_options(r: Resources) -> dict[str, Any]:
     options: dict[str, Any] = {"num_cpus": r.cpus, "num_gpus": r.gpus}
     if r.memory is not None:

@@ -9,6 +9,7 @@ import signal
 import time
 
 from launcher import lineage
+from launcher.runtime.custody import describe
 
 STOP_STEPS = ((signal.SIGINT, 10.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 0.0))
 
@@ -56,11 +57,11 @@ def sweep(mark: str, grace: float = 1.0, limit: float = 5.0, settle: float = 1.0
     while left() and time.monotonic() < until:
         _reap_any()
         time.sleep(0.02)
-    found: dict[int, str] = {}
+    found: dict[int, str] = {}  # pid → what it was
     deadline = time.monotonic() + limit
     while time.monotonic() < deadline and (pids := left()):
         for pid in pids - found.keys():
-            found[pid] = _name(pid)
+            found[pid] = describe(pid)
         lineage.signal_all(pids, signal.SIGTERM)
         until = time.monotonic() + grace
         while time.monotonic() < until and left():
@@ -68,15 +69,7 @@ def sweep(mark: str, grace: float = 1.0, limit: float = 5.0, settle: float = 1.0
             time.sleep(0.05)
         lineage.signal_all(left(), signal.SIGKILL)
         _reap_any()
-    return [f"{name} ({pid})" for pid, name in sorted(found.items())]
-
-
-def _name(pid: int) -> str:
-    try:
-        with open(f"/proc/{pid}/comm") as comm:
-            return comm.read().strip()
-    except OSError:
-        return "?"
+    return [found[pid] for pid in sorted(found)]
 
 
 def _reap_any() -> None:

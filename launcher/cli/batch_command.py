@@ -18,7 +18,7 @@ from launcher import __version__
 from launcher.batch.checks import check_entries
 from launcher.batch.job import JobSpec
 from launcher.batch.load import load_batch
-from launcher.batch.matrix import JobPlan, Overrides, expand, parse_only, select
+from launcher.batch.matrix import JobPlan, Overrides, expand, parse_only, parse_pairs, select
 from launcher.batch.runner import Job
 from launcher.batch.spec import BatchFile
 from launcher.batch.store import ResultsStore
@@ -60,7 +60,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     batch = load_batch(Path(args.file))
-    overrides = Overrides(parse_assignments(args.assignments), _matrix_options(args.matrix))
+    overrides = Overrides(parse_assignments(args.assignments), parse_pairs(args.matrix, "--matrix"))
     facts = _inspect(batch)
     for warning in check_entries(batch, overrides, facts):
         print(f"warning: {warning}", file=sys.stderr)
@@ -86,16 +86,6 @@ def run(args: argparse.Namespace) -> int:
     from launcher.cli.batch_run import run_batch
 
     return run_batch(batch, jobs, store, address, workspace, args)
-
-
-def _matrix_options(items: list[str]) -> dict[str, list[str]]:
-    matrix: dict[str, list[str]] = {}
-    for item in items:
-        name, sep, value = item.partition("=")
-        if not sep or not name:
-            raise UsageError(f"--matrix {item}: expected NAME=VALUE (world=empty.sdf)")
-        matrix.setdefault(name, []).append(value)
-    return matrix
 
 
 def _inspect(batch: BatchFile) -> list[dict[str, Any]]:

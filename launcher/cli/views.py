@@ -72,24 +72,11 @@ def _walk(actions: list[Action], context: LaunchContext, depth: int, loops: bool
             yield from _walk(list(item.sub_actions()), context, depth + 1, loops)
 
 
-def argument_names(description: LaunchDescription, configurations: dict[str, str],
-                   index: Any = None) -> tuple[list[str], list[str]]:
-    """The launch arguments the file and what it includes declare (as `--show-args` lists
-    them), and why an include's could not be listed."""
-    context = _context(dict(configurations), index)
-    context.files.push(description.file)
-    names: list[str] = []
-    unresolved: list[str] = []
-    for _depth, item, extra in _walk(description.actions, context, 0, loops=True):
-        if isinstance(item, DeclareLaunchArgument) and item.name not in names:
-            names.append(item.name)
-        elif isinstance(item, IncludeLaunchDescription) and isinstance(extra, str):
-            unresolved.append(f"include at {item.where}: {extra}")
-    return names, unresolved
-
-
-def show_arguments(description: LaunchDescription, configurations: dict[str, str],
-                   index: Any = None) -> str:
+def argument_sections(description: LaunchDescription, configurations: dict[str, str],
+                      index: Any = None) -> tuple[dict[str, list[DeclareLaunchArgument]],
+                                                  list[str]]:
+    """The launch arguments the file and each file it includes declare (by file, as
+    `--show-args` lists them), and why an include's could not be listed."""
     context = _context(dict(configurations), index)
     context.files.push(description.file)
     sections: dict[str, list[DeclareLaunchArgument]] = {str(description.file): []}
@@ -106,7 +93,22 @@ def show_arguments(description: LaunchDescription, configurations: dict[str, str
                 depth_files[depth + 1] = str(extra.file)
                 sections.setdefault(str(extra.file), [])
             elif extra:
-                notes.append(f"  include at {item.where}: {extra}")
+                notes.append(f"include at {item.where}: {extra}")
+    return sections, notes
+
+
+def argument_names(description: LaunchDescription, configurations: dict[str, str],
+                   index: Any = None) -> tuple[list[str], list[str]]:
+    """Every launch argument's name (`launcher batch` checks its matrix against them), and
+    why an include's could not be listed."""
+    sections, notes = argument_sections(description, configurations, index)
+    names = [arg.name for args in sections.values() for arg in args]
+    return list(dict.fromkeys(names)), notes
+
+
+def show_arguments(description: LaunchDescription, configurations: dict[str, str],
+                   index: Any = None) -> str:
+    sections, notes = argument_sections(description, configurations, index)
     lines = ["Arguments (pass arguments as '<name>:=<value>'):"]
     for file, args in sections.items():
         title = "" if file == str(description.file) else f"\n  from included {file}:"
@@ -119,7 +121,8 @@ def show_arguments(description: LaunchDescription, configurations: dict[str, str
             lines.append(f"        {arg.description}")
             lines.append(f"        ({arg.describe_default()})")
     if notes:
-        lines += ["", "Includes whose arguments could not be listed:", *notes]
+        lines += ["", "Includes whose arguments could not be listed:",
+                  *(f"  {note}" for note in notes)]
     return "\n".join(lines) + "\n"
 
 

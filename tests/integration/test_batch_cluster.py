@@ -66,6 +66,13 @@ class Batch:
         return json.loads((self.folder / "batch-results" / "b" / "latest" /
                            "results.json").read_text())["jobs"]
 
+    def wait_for_jobs(self, batch: subprocess.Popen, *nodes: str) -> None:
+        """Until a job runs on each of `nodes` (the batch still running)."""
+        deadline = time.monotonic() + 90
+        while not all(self.jobs_on(node) for node in nodes):
+            assert time.monotonic() < deadline and batch.poll() is None, batch.stderr.read()
+            time.sleep(0.2)
+
     def jobs_on(self, node: str) -> list:
         """The job hosts running on a node."""
         return [p for p in self.cluster.processes(node)
@@ -108,10 +115,7 @@ def test_a_node_lost_mid_batch_has_its_jobs_run_again_on_the_other(bws):
     bws.write("jobs:\n  - test: chatter_test.py\nseeds: 4\nretries: 1\ntimeout: 120\n",
               CHATTER_LISTEN="8")
     batch = bws.start()
-    deadline = time.monotonic() + 90
-    while not bws.jobs_on("w1"):
-        assert time.monotonic() < deadline and batch.poll() is None, batch.stderr.read()
-        time.sleep(0.2)
+    bws.wait_for_jobs(batch, "w1")
     bws.cluster.kill_raylet("w1")
     try:
         out, err = batch.communicate(timeout=240)
@@ -129,10 +133,7 @@ def test_a_node_lost_with_no_retries_left_is_an_error_with_the_reason(bws):
     bws.write("jobs:\n  - test: chatter_test.py\nseeds: 2\ntimeout: 120\n"
               "resources: {custom: {batch_w1: 1}}\n", CHATTER_LISTEN="8")
     batch = bws.start()
-    deadline = time.monotonic() + 90
-    while not bws.jobs_on("w1"):
-        assert time.monotonic() < deadline and batch.poll() is None, batch.stderr.read()
-        time.sleep(0.2)
+    bws.wait_for_jobs(batch, "w1")
     bws.cluster.kill_raylet("w1")
     try:
         out, err = batch.communicate(timeout=120)
@@ -151,10 +152,7 @@ def test_a_node_lost_with_no_retries_left_is_an_error_with_the_reason(bws):
 def test_ctrl_c_cancels_the_jobs_on_every_node_and_leaves_nothing(bws):
     bws.write("jobs:\n  - test: stuck_test.py\nseeds: 4\n")
     batch = bws.start()
-    deadline = time.monotonic() + 90
-    while not (bws.jobs_on("head") and bws.jobs_on("w1")):
-        assert time.monotonic() < deadline and batch.poll() is None, batch.stderr.read()
-        time.sleep(0.2)
+    bws.wait_for_jobs(batch, "head", "w1")
     batch.send_signal(signal.SIGINT)
     batch.communicate(timeout=60)
     assert batch.returncode == 130
