@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import json
 import os
-import select
 import shutil
 import signal
 import subprocess
@@ -34,23 +33,24 @@ from launcher.batch.outcome import Ending, judge
 from launcher.batch.stopping import Escalation, sweep
 from launcher.dispositions import reset_for_children
 from launcher.runtime import reaper
+from launcher.runtime.loop import EventLoop
 
-POLL = 0.05  # seconds between looks at the job, stdin and the clock
+POLL = 0.05  # seconds between looks at the job where the system has no pidfd
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 
 
 class JobHost:
-    def __init__(self, spec: JobSpec, mark: str, lifeline: Lifeline,
+    def __init__(self, spec: JobSpec, mark: str, lifeline: Lifeline, loop: EventLoop,
                  watchdog_fd: int | None = None) -> None:
         self.spec = spec
         self.lifeline = lifeline
+        self.loop = loop
         self.mark = mark
         self.watchdog_fd = watchdog_fd
         self.folder = JobFolder(Path(tempfile.mkdtemp(prefix=f"lnb-{spec.id}-")))
         self.run_dir = tempfile.mkdtemp(prefix="lng-")  # the job's graph: a short socket path
         self.stopped_for: str | None = None
         self.escalation: Escalation | None = None
-        self.signalled: list[str] = []
-        self.exited_fd: int | None = None  # the job's pidfd: the loop wakes as it exits
         self.lost = False  # the lifeline closed
 
     def run(self) -> Ending:
@@ -66,38 +66,57 @@ class JobHost:
                                      stdout=console, stderr=subprocess.STDOUT,
                                      start_new_session=True)
         self._tell(f"+{child.pid}")
-        self.escalation = Escalation(child.pid)
-        self.exited_fd = _pidfd(child.pid)
-        code = self._follow(child, clock + self.spec.timeout)
-        if self.exited_fd is not None:
-            os.close(self.exited_fd)
+        self.escalation = Escalation(child.pid, self.loop)
+        code = self._follow(child)
         wall = time.monotonic() - clock
         left = sweep(self.mark)
         self._tell(f"-{child.pid}")
         shutil.rmtree(self.run_dir, ignore_errors=True)
         return Ending(code, self.stopped_for, wall, started, left)
 
-    def _follow(self, child: subprocess.Popen[bytes], deadline: float) -> int:
-        while (code := child.poll()) is None:
-            if time.monotonic() > deadline:
-                self.stop("timeout")
-            if self.signalled:
-                self.stop(self.signalled[0])
+    def _follow(self, child: subprocess.Popen[bytes]) -> int:
+        """The loop until the job exits: its lifeline, its time limit, signals."""
+        exited = _pidfd(child.pid)
+        if exited is not None:
+            self.loop.add_reader(exited, self.loop.stop)
+        else:
+            self._poll(child)
+        self.loop.add_reader(self.lifeline.fd, self._on_lifeline)
+        limit = self.loop.call_later(self.spec.timeout, self.stop, "timeout")
+        for signum in STOP_SIGNALS:
+            self.loop.add_signal_handler(signum,
+                                         lambda n: self.stop(signal.Signals(n).name))
+        try:
+            self.loop.run()
+            return child.wait()
+        finally:
+            limit.cancel()
+            if exited is not None:
+                self.loop.remove_reader(exited)
+                os.close(exited)
+
+    def _poll(self, child: subprocess.Popen[bytes]) -> None:
+        if child.poll() is None:
+            self.loop.call_later(POLL, self._poll, child)
+        else:
+            self.loop.stop()
+
+    def _on_lifeline(self) -> None:
+        for line in self.lifeline.read():
+            if line.startswith(b"stop"):
+                self.stop(line[4:].strip().decode() or "cancelled")
+        if self.lifeline.closed:  # the worker that started the host is gone (or was ended
+            self.loop.remove_reader(self.lifeline.fd)  # by a second Ctrl-C): no more waiting
+            self.lost = True
             if self.stopped_for is not None:
-                self.escalation.poll()  # type: ignore[union-attr]
-            for line in self.lifeline.lines(POLL, self.exited_fd):
-                self.stop(line[4:].strip().decode() or "cancelled" if line.startswith(b"stop")
-                          else "")
-            if self.lifeline.closed and not self.lost:
-                self.lost = True  # the worker that started the host is gone (or was ended
-                if self.stopped_for is not None:  # by a second Ctrl-C): no more waiting
-                    self.escalation.hurry()  # type: ignore[union-attr]
-                self.stop("lost")
-        return code
+                self.escalation.hurry()  # type: ignore[union-attr]
+            self.stop("lost")
 
     def stop(self, why: str) -> None:
-        if self.stopped_for is None and why:
+        """Stop the job, for `why` (the first reason is the one told)."""
+        if self.stopped_for is None:
             self.stopped_for = why
+            self.escalation.start()  # type: ignore[union-attr]
 
     def _tell(self, line: str) -> None:
         if self.watchdog_fd is not None:
@@ -107,7 +126,7 @@ class JobHost:
 def _pidfd(pid: int) -> int | None:
     try:
         return os.pidfd_open(pid)
-    except (AttributeError, OSError):  # no pidfd here: the loop's poll finds the exit
+    except (AttributeError, OSError):  # no pidfd here: the loop polls for the exit
         return None
 
 
@@ -125,13 +144,9 @@ class Lifeline:
         line, _, self.pending = self.pending.partition(b"\n")
         return line
 
-    def lines(self, wait: float, also: int | None = None) -> list[bytes]:
-        """Whole lines that came within `wait` seconds (less when `also` is readable first:
-        the job's pidfd, readable once it exits)."""
-        watched = ([] if self.closed else [self.fd]) + ([also] if also is not None else [])
-        ready = select.select(watched, [], [], wait)[0] if watched else time.sleep(wait)
-        if ready and self.fd in ready:
-            self._read()
+    def read(self) -> list[bytes]:
+        """What came (the fd is readable): its whole lines."""
+        self._read()
         *lines, self.pending = self.pending.split(b"\n")
         return [line for line in lines if line.strip()]
 
@@ -150,9 +165,7 @@ def main() -> int:
     mark = JOB_MARK_PREFIX + os.urandom(8).hex()
     lineage.become_subreaper()
     _pid, watchdog_fd = reaper.fork_watchdog(mark)  # first: before any thread or child
-    host = JobHost(spec, mark, lifeline, watchdog_fd)
-    for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
-        signal.signal(signum, lambda n, _f: host.signalled.append(signal.Signals(n).name))
+    host = JobHost(spec, mark, lifeline, EventLoop(), watchdog_fd)
     reset_for_children()  # SIGQUIT too, if the worker ignored it
     ending = host.run()
     if host.lost:  # no one to answer: leave nothing behind

@@ -7,40 +7,43 @@ import contextlib
 import os
 import signal
 import time
+from typing import Any
 
 from launcher import lineage
 from launcher.runtime.custody import describe
+from launcher.runtime.loop import EventLoop
 
 STOP_STEPS = ((signal.SIGINT, 10.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 0.0))
 
 
 class Escalation:
-    """The stop steps for one process group, stepped by the host's loop."""
+    """The stop steps for one process group, each after the last one's wait, on the loop."""
 
-    def __init__(self, pgid: int, clock: object = time.monotonic) -> None:
+    def __init__(self, pgid: int, loop: EventLoop) -> None:
         self.pgid = pgid
-        self.clock = clock
-        self.step = -1
-        self.next_at = 0.0
+        self.loop = loop
+        self.step = 0  # the next one
+        self.timer: Any = None
 
-    @property
-    def begun(self) -> bool:
-        return self.step >= 0
+    def start(self) -> None:
+        """The first signal now, the others after their waits (idempotent)."""
+        if self.step == 0:
+            self._next()
 
     def hurry(self) -> None:
         """The next signal now (the stop was asked again: a second Ctrl-C)."""
-        self.next_at = 0.0
+        if self.timer is not None:
+            self.timer.cancel()
+        self._next()
 
-    def poll(self) -> None:
-        """Send the next signal when its time has come (the first at once)."""
-        now = self.clock()  # type: ignore[operator]
-        if self.step + 1 >= len(STOP_STEPS) or (self.begun and now < self.next_at):
+    def _next(self) -> None:
+        if self.step >= len(STOP_STEPS):
             return
-        self.step += 1
         sig, wait = STOP_STEPS[self.step]
+        self.step += 1
         with contextlib.suppress(ProcessLookupError, PermissionError):
             os.killpg(self.pgid, sig)
-        self.next_at = now + wait
+        self.timer = self.loop.call_later(wait, self._next)
 
 
 def sweep(mark: str, grace: float = 1.0, limit: float = 5.0, settle: float = 1.0
