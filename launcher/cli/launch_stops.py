@@ -16,12 +16,6 @@ from pathlib import Path
 from typing import Any
 
 from launcher.description.action import Action
-from launcher.description.actions.event_handlers import (
-    OnProcessExit,
-    OnProcessStart,
-    RegisterEventHandler,
-)
-from launcher.description.actions.node import UNSPECIFIED_NAME, Node
 from launcher.description.actions.shutdown import Shutdown
 from launcher.description.actions.timer import TimerAction
 from launcher.description.substitution import perform_text, to_text
@@ -52,6 +46,8 @@ def sim_duration_stop(seconds: float, environment: dict[str, str],
     environment.setdefault(STOP_AT_VARIABLE, repr(seconds))
     folder = Path(environment.setdefault(REPORT_DIR_VARIABLE, str(log_dir / "sim")))
     reason = f"--sim-duration {seconds:g} s of sim time reached"
+    # (the event handlers' and the node's modules only when asked for: a launch's start-up)
+    from launcher.description.actions.event_handlers import OnProcessExit, RegisterEventHandler
 
     def on_exit(event: Any, _context: LaunchContext) -> list[Action] | None:
         return [ending(reason)] if stopped_at_its_time(folder, event.pid) else None
@@ -87,6 +83,8 @@ def names_of(label: str, argv: Sequence[str], node_name: str = "",
 
 def process_names(event: Any, context: LaunchContext) -> list[str]:
     """`names_of` the process an event is about."""
+    from launcher.description.actions.node import UNSPECIFIED_NAME, Node  # (see above)
+
     action, node_name, executable = event.action, "", ""
     if isinstance(action, Node):
         with contextlib.suppress(RuntimeError):  # (not run yet: no name)
@@ -120,6 +118,12 @@ class UntilStop:
         self.started: list[list[str]] = []  # the names of each process started, in order
 
     def actions(self) -> list[Action]:
+        from launcher.description.actions.event_handlers import (  # (see sim_duration_stop)
+            OnProcessExit,
+            OnProcessStart,
+            RegisterEventHandler,
+        )
+
         return [RegisterEventHandler(OnProcessStart(on_start=self.on_start)),
                 RegisterEventHandler(OnProcessExit(on_exit=self.on_exit))]
 
