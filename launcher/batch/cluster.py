@@ -12,37 +12,13 @@ import threading
 from pathlib import Path
 from typing import Any
 
-from launcher.batch.job import JobSpec
+from launcher.batch.job import OWNER, JobSpec, sweep_stale
 from launcher.batch.resources import NodeOffer
 from launcher.batch.results import JobResult, Status
 from launcher.errors import LaunchError
 
 CONNECT_VARIABLE = "LAUNCHER_BATCH_CONNECT_TIMEOUT"  # seconds joining a cluster may take
 PRIVATE_PREFIX = "lnray-"  # the folder of a cluster started for a batch (Ray's, the token, jobs')
-OWNER = "owner"  # in it: the pid of the batch that made it
-
-
-def sweep_stale(where: Path) -> list[Path]:
-    """Remove the folders of clusters whose batch is gone without removing them (a SIGKILL):
-    this user's, whose owner no longer runs."""
-    removed = []
-    for folder in where.glob(f"{PRIVATE_PREFIX}*"):
-        try:
-            if folder.stat().st_uid != os.getuid():
-                continue
-            pid = int((folder / OWNER).read_text())
-        except (OSError, ValueError):
-            continue
-        try:
-            os.kill(pid, 0)
-            continue  # (still running: its batch's)
-        except ProcessLookupError:
-            pass
-        except PermissionError:
-            continue
-        shutil.rmtree(folder, ignore_errors=True)
-        removed.append(folder)
-    return removed
 
 
 class Cluster:
@@ -62,7 +38,7 @@ class Cluster:
     def local(cls, cpus: int) -> Cluster:
         """A cluster of this machine for the batch alone: token authentication with a private
         token, no dashboard, no usage reports; gone with the batch."""
-        sweep_stale(Path(tempfile.gettempdir()))
+        sweep_stale(Path(tempfile.gettempdir()), PRIVATE_PREFIX)
         private = Path(tempfile.mkdtemp(prefix=PRIVATE_PREFIX))  # short: Ray's socket paths
         (private / OWNER).write_text(str(os.getpid()))
         (private / "tmp").mkdir()

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
@@ -16,6 +17,8 @@ SEED_VARIABLE = "LAUNCHER_BATCH_SEED"
 JOB_VARIABLE = "LAUNCHER_BATCH_JOB"
 OUTPUT_VARIABLE = "LAUNCHER_BATCH_OUTPUT"
 SCRATCH_VARIABLE = "LAUNCHER_BATCH_SCRATCH"  # the task's folder for the job (removed after)
+SCRATCH_PREFIX = "lnb-"  # (a task's folder, which the next task removes if its worker died)
+OWNER = "owner"  # in such a folder: the pid of the process that made it
 # what a node's environment must not hand a job: another graph, Ray's own settings
 _NOT_PASSED = ("LAUNCHER_ROUTER", "LAUNCHER_RUN_DIR", "RAY_ADDRESS", "ROS_LOG_DIR",
                "LAUNCHER_BATCH_SCRATCH",
@@ -124,3 +127,26 @@ def environment(spec: JobSpec, base: dict[str, str], folder: JobFolder, run_dir:
         env["PYTHONHASHSEED"] = "0"  # a repeatable run needs a fixed hash order
     env.update(spec.env)
     return env
+
+
+def sweep_stale(where: Path, prefix: str) -> list[Path]:
+    """Remove the folders `prefix*` in `where` whose owner is gone without removing them (a
+    SIGKILL): this user's, whose owner's pid (the file OWNER in it) no longer runs."""
+    removed = []
+    for folder in where.glob(f"{prefix}*"):
+        try:
+            if folder.stat().st_uid != os.getuid():
+                continue
+            pid = int((folder / OWNER).read_text())
+        except (OSError, ValueError):
+            continue
+        try:
+            os.kill(pid, 0)
+            continue  # (still running: its batch's)
+        except ProcessLookupError:
+            pass
+        except PermissionError:
+            continue
+        shutil.rmtree(folder, ignore_errors=True)
+        removed.append(folder)
+    return removed

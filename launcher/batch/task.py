@@ -17,7 +17,14 @@ from pathlib import Path
 from typing import Any
 
 from launcher import __version__
-from launcher.batch.job import PROTOCOL, SCRATCH_VARIABLE, JobSpec
+from launcher.batch.job import (
+    OWNER,
+    PROTOCOL,
+    SCRATCH_PREFIX,
+    SCRATCH_VARIABLE,
+    JobSpec,
+    sweep_stale,
+)
 
 GRACE = 15.0  # seconds a cancelled job has to stop before the task gives up on it
 WEDGED = 30.0  # seconds past the job's time limit after which the host itself is ended
@@ -48,7 +55,10 @@ def run_job(spec_json: str) -> dict[str, Any]:
         return _setup_error(told, node, (
             f"node {node}: the workspace is not at {spec.root} there (no {spec.file}): share "
             "it at the same path, or let it be uploaded"))
-    scratch = tempfile.mkdtemp(prefix="lnb-")  # everything of the job's on this node
+    # everything of the job's on this node; a folder a killed worker left is removed here
+    sweep_stale(Path(tempfile.gettempdir()), SCRATCH_PREFIX)
+    scratch = tempfile.mkdtemp(prefix=SCRATCH_PREFIX)
+    Path(scratch, OWNER).write_text(str(os.getpid()))
     try:
         return _host(spec, spec_json, node, scratch)
     finally:

@@ -222,11 +222,12 @@ def test_without_tarfiles_data_filter_the_same_checks_hold(tmp_path, monkeypatch
 
 
 def test_a_clusters_folder_whose_batch_is_gone_is_removed_by_the_next(tmp_path):
-    from launcher.batch.cluster import OWNER, PRIVATE_PREFIX, sweep_stale
+    from launcher.batch.cluster import PRIVATE_PREFIX
+    from launcher.batch.job import OWNER, sweep_stale
 
     gone, running = tmp_path / f"{PRIVATE_PREFIX}a", tmp_path / f"{PRIVATE_PREFIX}b"
     for folder, pid in ((gone, 2**22 + 1), (running, os.getpid())):  # (above pid_max: gone)
         folder.mkdir()
         (folder / OWNER).write_text(str(pid))
-    assert sweep_stale(tmp_path) == [gone]
+    assert sweep_stale(tmp_path, PRIVATE_PREFIX) == [gone]
     assert running.exists() and not gone.exists()
