@@ -5,8 +5,12 @@ The handlers come first, before any other import (`_signal` is the C module: `si
 import enum first). Until the command is done, either signal raises a KeyboardInterrupt
 wherever the launcher is (importing, loading, evaluating); `launcher launch` takes them over
 once its event loop runs. After the command, they end the process at once with that status.
-(A signal in the interpreter's own first milliseconds, before this module runs, ends it by the
-signal itself: the shell shows the same 130 or 143.)
+A signal in the interpreter's own first milliseconds, before this module runs, is Python's:
+SIGTERM ends it by the signal itself (the shell shows the same 143); a SIGINT raises Python's
+KeyboardInterrupt where the interpreter is. One place swallows it: the check whether argv[0] (this
+script) is an import path entry prints the KeyboardInterrupt and runs the script all the same
+(CPython's pymain_get_importer). The interpreter keeps what it printed in `sys.last_value`, so the
+first lines below see it and exit with 130, as if the signal had come a moment later.
 """
 
 import _signal
@@ -30,9 +34,13 @@ def _interrupt(signum: int, _frame: object) -> None:
 _signal.signal(_signal.SIGINT, _interrupt)
 _signal.signal(_signal.SIGTERM, _interrupt)
 
-import atexit  # noqa: E402 - after the handlers, on purpose
+import sys  # noqa: E402 - after the handlers, on purpose (a built-in module: no import runs)
+
+if isinstance(getattr(sys, "last_value", None), KeyboardInterrupt):  # Ctrl-C the interpreter
+    posix._exit(128 + _signal.SIGINT)  # printed and went on from (see above)
+
+import atexit  # noqa: E402
 import os  # noqa: E402
-import sys  # noqa: E402
 
 
 def _unraisable(info: "sys.UnraisableHookArgs") -> None:

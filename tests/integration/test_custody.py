@@ -17,7 +17,7 @@ import psutil
 import pytest
 
 from tests.support.packages import make_tree, manifest
-from tests.support.processes import tagged_processes
+from tests.support.processes import launcher_argv, tagged_processes
 from tests.support.workspace import Workspace
 
 PY = sys.executable
@@ -246,6 +246,40 @@ def test_a_signal_during_start_up_exits_cleanly(ws):
         text = launcher_text(ws)
         assert "Traceback" not in text and "KeyboardInterrupt" not in text, text
         no_leftovers(ws)
+
+
+# Python's SIGINT handler raising where the interpreter checks whether argv[0] (the `launcher`
+# script) is an import path entry, as a Ctrl-C in its first milliseconds does: made to land
+# there every time by a path hook that sitecustomize puts first.
+CTRL_C_AT_ARGV0 = """
+import sys
+def hook(path):
+    if path == sys.argv[0] and hook.armed:
+        hook.armed = False
+        raise KeyboardInterrupt
+    raise ImportError
+hook.armed = True
+sys.path_hooks.insert(0, hook)
+"""
+
+
+def test_a_ctrl_c_the_interpreter_swallows_at_start_up_still_ends_the_launch(ws):
+    """CPython prints a KeyboardInterrupt raised while it looks at argv[0] and runs the script
+    all the same: the launch must not then start and run on as if nothing was pressed."""
+    script = launcher_argv()[0]
+    if not script.endswith("launcher"):
+        pytest.skip("the launcher runs as `python -m launcher` here, not as a script")
+    ws.write("hook/sitecustomize.py", CTRL_C_AT_ARGV0)
+    ws.write("long.launch.yaml", """
+    launch:
+      - executable: {cmd: "sleep 120"}
+    """)
+    result = subprocess.run([script, "launch", "long.launch.yaml"], cwd=ws.root, timeout=30,
+                            env={**ws.env, "PYTHONPATH": str(ws.root / "hook")},
+                            capture_output=True, text=True)
+    assert result.returncode == 130, result.stdout + result.stderr
+    assert "process started" not in result.stdout
+    no_leftovers(ws)
 
 
 MID_SPAWN = """
