@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import enum
 import math
+import re
 from collections.abc import Callable, Mapping
 from typing import Any, NamedTuple, Protocol, TypeVar
 
@@ -237,3 +238,18 @@ def _build(cls: type[R], values: Mapping[str, Any], where: str, unknown: str,
         if f.name not in kwargs:
             _checked(None, f"{prefix}{frontend_name(f, spec)}", spec)
     return cls(**kwargs)
+
+
+_UNITS = {"": 1, "b": 1, "k": 10**3, "kb": 10**3, "m": 10**6, "mb": 10**6, "g": 10**9,
+          "gb": 10**9, "t": 10**12, "tb": 10**12, "kib": 2**10, "mib": 2**20, "gib": 2**30,
+          "tib": 2**40}
+_SIZE = re.compile(r"^\s*(\d+(?:\.\d+)?)\s*([a-zA-Z]*)\s*$")
+
+
+def parse_bytes(text: str, what: str) -> int:
+    """A size in bytes from words like `2GiB`, `100MB`, `512k` or `4096` (> 0)."""
+    found = _SIZE.match(str(text))
+    unit = found.group(2).lower() if found else ""
+    if not found or unit not in _UNITS or float(found.group(1)) <= 0:
+        raise ParseError(f"{what}: expected bytes or a size like 2GiB, got '{text}'")
+    return int(float(found.group(1)) * _UNITS[unit])

@@ -7,10 +7,10 @@ from pathlib import Path
 from typing import Any
 
 from launcher import records
-from launcher.batch.resources import RAY_OWN, parse_bytes
+from launcher.batch.resources import RAY_OWN
 from launcher.batch.spec import BatchFile, Entry, Resources
 from launcher.errors import Location, ParseError, did_you_mean
-from launcher.schema import Kind, build, declared_fields
+from launcher.schema import Kind, build, declared_fields, parse_bytes
 from launcher.user_files import check_yaml_depth, read_text
 
 STOP_KEYS = ("duration", "sim_duration", "until")

@@ -3,26 +3,13 @@ it (Ray itself waits for ever on a task no node can take)."""
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
 from launcher import records
 from launcher.batch.spec import Resources
-from launcher.errors import ParseError
+from launcher.schema import parse_bytes
 
-_UNITS = {"": 1, "b": 1, "k": 10**3, "kb": 10**3, "m": 10**6, "mb": 10**6, "g": 10**9,
-          "gb": 10**9, "t": 10**12, "tb": 10**12, "kib": 2**10, "mib": 2**20, "gib": 2**30,
-          "tib": 2**40}
-_SIZE = re.compile(r"^\s*(\d+(?:\.\d+)?)\s*([a-zA-Z]*)\s*$")
 RAY_OWN = ("CPU", "GPU", "memory", "object_store_memory")
-
-
-def parse_bytes(text: str, what: str) -> int:
-    found = _SIZE.match(str(text))
-    unit = found.group(2).lower() if found else ""
-    if not found or unit not in _UNITS or float(found.group(1)) <= 0:
-        raise ParseError(f"{what}: expected bytes or a size like 2GiB, got '{text}'")
-    return int(float(found.group(1)) * _UNITS[unit])
 
 
 def ray_options(r: Resources) -> dict[str, Any]:

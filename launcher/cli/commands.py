@@ -20,6 +20,12 @@ LAUNCHER: dict[str, Verb | Group | Tool] = {
     "test": Verb("launcher.cli.test_command", "run a launch test (as launch_test does)"),
     "batch": Verb("launcher.cli.batch_command", "run launch tests and launch files over a "
                   "matrix of arguments and seeds, here or on a Ray cluster"),
+    "ps": Verb("launcher.cli.ps_command", "list the processes of the running launches"),
+    "stop": Verb("launcher.cli.process_command", "stop one process of a running launch"),
+    "start": Verb("launcher.cli.process_command", "start a stopped process of a running launch"),
+    "restart": Verb("launcher.cli.process_command", "restart one process of a running launch"),
+    "logs": Verb("launcher.cli.logs_command", "print one process's output from a running "
+                 "launch"),
     "pkg": Group("packages: list, find, create", verbs("launcher.cli.pkg", {
         "list": "every package, with where it is",
         "prefix": "the install prefix of a package",

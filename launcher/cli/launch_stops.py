@@ -9,8 +9,6 @@ from __future__ import annotations
 
 import contextlib
 import json
-import os
-import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
@@ -21,6 +19,7 @@ from launcher.description.actions.timer import TimerAction
 from launcher.description.substitution import perform_text, to_text
 from launcher.errors import LaunchError, UsageError, did_you_mean
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.control import names_of
 
 # what the sim reads (nodes/sim.py), named here too: the launch does not import the sim
 STOP_AT_VARIABLE = "LAUNCHER_SIM_STOP_AT"
@@ -65,20 +64,6 @@ def stopped_at_its_time(folder: Path, pid: int | None) -> bool:
     except (OSError, ValueError):
         return False
     return isinstance(report, dict) and report.get("stopped") is True
-
-
-def label_base(label: str) -> str:
-    """A process's label without the number the launch gave it (`driver-3`: driver)."""
-    return re.sub(r"-\d+$", "", label)
-
-
-def names_of(label: str, argv: Sequence[str], node_name: str = "",
-             executable: str = "") -> list[str]:
-    """The names a process goes by, its label's first: the label without its number, the
-    node's name, its package executable, and its program's file name."""
-    program = os.path.basename(argv[0]) if argv else ""
-    found = [label_base(label), node_name.rsplit("/", 1)[-1], executable, program]
-    return list(dict.fromkeys(name for name in found if name))
 
 
 def process_names(event: Any, context: LaunchContext) -> list[str]:

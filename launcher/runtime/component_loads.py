@@ -1,6 +1,7 @@
 """Composable nodes a launch asks containers to load: each answer is logged, a failure
 reported (the launch goes on, its exit status becomes 1); the launch does not end while one is
-out."""
+out. What each container was asked to load is kept, and asked again when the user starts that
+container anew (`launcher restart`): its nodes went with its process."""
 
 from __future__ import annotations
 
@@ -19,6 +20,8 @@ class ComponentLoads:
         self.answered = answered
         self.out = 0  # asked for and not answered yet
         self.cancelled = False
+        self.asked: dict[str, list[tuple[list[LoadRequest], dict[str, str],
+                                         Callable[[], bool] | None]]] = {}
 
     def load(self, container: str, requests: list[LoadRequest], environment: dict[str, str],
              alive: Callable[[], bool] | None) -> None:
@@ -28,6 +31,18 @@ class ComponentLoads:
                                  "(run it with `launcher launch`)")
         if not requests or self.cancelled:
             return
+        self.asked.setdefault(container, []).append((requests, environment, alive))
+        self._send(container, requests, environment, alive)
+
+    def reload(self, container: str) -> None:
+        """Ask `container` again for every node it was asked to load (it started anew)."""
+        for requests, environment, alive in self.asked.get(container, []):
+            if not self.cancelled:
+                self._send(container, requests, environment, alive)
+
+    def _send(self, container: str, requests: list[LoadRequest], environment: dict[str, str],
+              alive: Callable[[], bool] | None) -> None:
+        assert self.loader is not None
         self.loop.open_posting()
         self.out += len(requests)
 

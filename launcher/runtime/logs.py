@@ -2,6 +2,10 @@
 
 LOG_ROOT is `$LAUNCHER_LOG_DIR`, else `~/.launcher/log`. The folder holds `launch.log` and
 the `own_log` files of processes; `LOG_ROOT/latest` points at the newest run.
+
+Each file rotates when it reaches its limit (`--log-max-size`, 100 MiB unless set): `launch.log`
+becomes `launch.log.1`, the one before `.2`, and so on; KEEP of them are kept. Lines are
+written whole, never cut at a rotation.
 """
 
 from __future__ import annotations
@@ -15,6 +19,43 @@ from typing import TextIO
 from launcher.private import open_private, private_folder
 from launcher.runtime.output import Record, plain
 
+DEFAULT_LIMIT = 100 << 20  # bytes a log file holds before it rotates
+KEEP = 5  # rotated files kept of each
+
+
+class LogFile:
+    """One log file that rotates at `limit` bytes."""
+
+    def __init__(self, path: Path, limit: int) -> None:
+        self.path, self.limit = path, limit
+        self.handle: TextIO = open_private(path, "a", encoding="utf-8")
+        self.size = path.stat().st_size
+        self.written = 0  # bytes written in all (rotated ones too)
+
+    def write(self, line: str) -> None:
+        size = len(line.encode()) if not line.isascii() else len(line)
+        if self.size and self.size + size > self.limit:
+            self._rotate()
+        self.handle.write(line)
+        self.size += size
+        self.written += size
+
+    def _rotate(self) -> None:
+        self.handle.close()
+        for n in range(KEEP - 1, 0, -1):
+            older = self.path.with_name(f"{self.path.name}.{n}")
+            if older.exists():
+                older.replace(self.path.with_name(f"{self.path.name}.{n + 1}"))
+        self.path.replace(self.path.with_name(f"{self.path.name}.1"))
+        self.handle = open_private(self.path, "a", encoding="utf-8")
+        self.size = 0
+
+    def flush(self) -> None:
+        self.handle.flush()
+
+    def close(self) -> None:
+        self.handle.close()
+
 
 def log_root(environ: dict[str, str] | None = None) -> Path:
     env = os.environ if environ is None else environ
@@ -24,7 +65,8 @@ def log_root(environ: dict[str, str] | None = None) -> Path:
 
 
 class RunLog:
-    def __init__(self, root: Path) -> None:
+    def __init__(self, root: Path, limit: int = DEFAULT_LIMIT) -> None:
+        self.limit = limit
         now = time.time()
         stamp = time.strftime("%Y-%m-%d-%H-%M-%S", time.localtime(now))
         micros = int(now % 1 * 1_000_000)
@@ -35,8 +77,8 @@ class RunLog:
             if latest.is_symlink() or latest.exists():
                 latest.unlink()
             latest.symlink_to(name)
-        self._launch_log = open_private(self.folder / "launch.log", "a", encoding="utf-8")
-        self._own: dict[str, TextIO] = {}
+        self._launch_log = LogFile(self.folder / "launch.log", limit)
+        self._own: dict[str, LogFile] = {}
 
     def write(self, record: Record) -> None:
         self._launch_log.write(plain(record) + "\n")
@@ -46,7 +88,7 @@ class RunLog:
         for suffix in (record.stream, "stdout_stderr"):
             key = f"{record.source}-{suffix}"
             if key not in self._own:
-                self._own[key] = open_private(self.folder / f"{key}.log", "a", encoding="utf-8")
+                self._own[key] = LogFile(self.folder / f"{key}.log", self.limit)
             self._own[key].write(record.text + "\n")
 
     def flush(self) -> None:

@@ -7,7 +7,9 @@ loop does what supervision needs (readers, monotonic timers, signals through a w
 about a hundred lines. Signal handlers only hand the signal to the loop, except inside
 `interruptible()`: there the signal raises `Interrupted` at once, so that a long evaluation or
 a `$(command)` being waited for does not hold up Ctrl-C (the loop then does not see that
-signal a second time). A handled signal is counted by the handler itself; the wakeup fd only
+signal a second time). A signal raised as `Interrupted` is counted until the code that acts on
+it says it `took` it; one that something else swallowed is handed to the loop's handler at the
+loop's next turn. A handled signal is counted by the handler itself; the wakeup fd only
 wakes the loop (its bytes can be dropped when it is full: a storm of SIGCHLD must not cost a
 SIGTERM), and signals that came together are handled together (SIGCHLD once).
 """
@@ -51,6 +53,7 @@ class EventLoop:
         self._wakeup: tuple[int, int] | None = None
         self._busy = 0  # depth of interruptible() sections
         self._pending: Counter[int] = Counter()  # signals for the loop's handlers
+        self._raised: Counter[int] = Counter()  # raised as Interrupted, not yet taken
         self._stopped = False
         self._posted: deque[tuple[Callable[..., Any], tuple]] = deque()  # from other threads
         self._post_pipe: tuple[int, int] | None = None
@@ -174,6 +177,7 @@ class EventLoop:
 
     def _on_signal(self, signum: int, _frame: Any) -> None:
         if self._busy and signum in (signal.SIGINT, signal.SIGTERM):
+            self._raised[signum] += 1  # (until taken: code that swallows it loses nothing)
             raise Interrupted(signum)
         self._pending[signum] += 1
         if self._wakeup is not None:  # (the interpreter's byte may have been read already)
@@ -191,6 +195,18 @@ class EventLoop:
             for _ in range(count if number in (signal.SIGINT, signal.SIGTERM) else 1):
                 handler(number)
 
+    def took(self, signum: int) -> None:
+        """An Interrupted raised for `signum` reached the code that acts on it."""
+        if self._raised[signum] > 0:
+            self._raised[signum] -= 1
+
+    def _recover(self) -> None:
+        """Signals raised as Interrupted that nothing took (a library's `except
+        BaseException`, a __del__) are handed to their handlers as if just received."""
+        raised, self._raised = self._raised, Counter()
+        self._pending.update(+raised)
+        self._on_signals()
+
     # --- running --------------------------------------------------------------------------
     def stop(self) -> None:
         self._stopped = True
@@ -202,6 +218,10 @@ class EventLoop:
             self._run_once()
 
     def _run_once(self) -> None:
+        if self._raised and not self._busy:
+            self._recover()
+            if self._stopped:
+                return
         timeout = None
         if self._timers:
             timeout = max(0.0, self._timers[0][0] - self.time())

@@ -4,6 +4,7 @@
         │                    │  └──exited, no respawn──▶ EXITED
         └─spawn failed─▶ FATAL   └──stop()──▶ STOPPING ──group gone──▶ EXITED
                                   BACKOFF ──stop()──▶ EXITED
+    EXITED, FATAL ──start_again() (the user's `launcher start`)──▶ STARTING
 
 Each process runs in its own session, so it leads its own process group. Stopping sends
 SIGINT to the whole group, SIGTERM after `sigterm_timeout`, SIGKILL after `sigkill_timeout`
@@ -48,7 +49,13 @@ _EDGES = {
     (State.STOPPING, State.EXITED),  # its group is gone (or SIGKILL did not help in time)
     (State.BACKOFF, State.STARTING),  # respawn delay over
     (State.BACKOFF, State.EXITED),  # stopped while waiting to respawn
+    (State.EXITED, State.STARTING),  # started again by the user
+    (State.FATAL, State.STARTING),  # … after it could not start
 }
+STABLE = 5.0  # seconds a process must run for its next respawn not to count as a quick one
+STORM = 3  # quick respawns in a row that make a storm: its respawns back off from there
+BACKOFF_CAP = 30.0  # seconds: the longest wait the back-off of quick respawns reaches
+BACKOFF_FIRST = 0.1  # seconds: where it starts when the respawn delay is shorter
 
 
 @dataclass
@@ -66,6 +73,7 @@ class ProcessSpec:
     respawn: bool = False
     respawn_delay: float = 0.0
     respawn_max_retries: int = -1
+    node_name: str = ""  # its node's full name, when it is a ROS node with one
     origin: Any = None  # the action that asked for this process (for event handlers)
     joins_graph: bool = False  # it may be a ROS node (the launch then starts the router)
     # roslaunch's order: it starts once the launch files being read are read and the
@@ -121,6 +129,10 @@ class ManagedProcess:
     pid: int | None = None
     returncode: int | None = None
     respawns: int = 0
+    restarts: int = 0  # starts after the first: respawns, and the user's start and restart
+    started_at: float = 0.0  # the loop's time of its latest start
+    held: bool = False  # stopped by the user: not an exit, and it may be started again
+    quick: int = 0  # respawns in a row of a process that ran less than STABLE seconds
     failed: bool = False  # it exited with a non-zero code that the launcher did not cause
     helper_done: bool = False  # a helper that has said its work is done (see ProcessSpec)
     system: Processes = field(default_factory=System, repr=False)
@@ -164,6 +176,7 @@ class ManagedProcess:
         spec = self.spec
         started = self.system.spawn(spec.argv, spec.env, spec.cwd, spec.emulate_tty)
         self.pid, self.returncode, self._leader_gone = started.pid, None, False
+        self.started_at = self.loop.time()
         self.hooks.group(self.pid, True)
         self._streams = [started.stdout, started.stderr]
         for fd, stream in ((started.stdout, "stdout"), (started.stderr, "stderr")):
@@ -236,20 +249,46 @@ class ManagedProcess:
         if spec.respawn and retries_left and not self._stop_requested:
             self._to(State.BACKOFF)
             self.respawns += 1
-            total = "" if spec.respawn_max_retries < 0 else f" of {spec.respawn_max_retries}"
-            self._log("WARN" if code else "INFO",
-                      f"process {describe_exit(code)}; respawning in {spec.respawn_delay:g} s "
-                      f"(attempt {self.respawns}{total})")
+            delay = self._respawn_delay()
+            if self.quick < STORM:  # (a storm is said once, when it begins: _respawn_delay)
+                total = "" if spec.respawn_max_retries < 0 else f" of {spec.respawn_max_retries}"
+                self._log("WARN" if code else "INFO",
+                          f"process {describe_exit(code)}; respawning in {delay:g} s "
+                          f"(attempt {self.respawns}{total})")
             self._gone(respawn=True)
-            self._timer = self.loop.call_later(spec.respawn_delay, self._respawn)
+            self._timer = self.loop.call_later(delay, self._respawn)
             return
-        if code == 0:
+        if spec.respawn and not retries_left and not self._stop_requested:
+            self._log("ERROR", f"process {describe_exit(code)}; not respawning: it was "
+                               f"respawned {self.respawns} times, its respawn_max_retries")
+        elif code == 0:
             self._log("INFO", f"process has finished cleanly [pid {self.pid}]")
         else:
             self._log("ERROR", f"process {describe_exit(code)} "
                                f"[pid {self.pid}, cmd '{' '.join(spec.argv)}']")
         self._to(State.EXITED)
         self._gone(respawn=False)
+
+    def _respawn_delay(self) -> float:
+        """Its respawn_delay, as launch has it; but once a process has exited within STABLE
+        seconds of its start STORM times in a row (a respawn storm), a back-off that doubles
+        from its delay (from BACKOFF_FIRST when shorter) up to BACKOFF_CAP: the storm is slowed
+        and said once, not looped at full speed with a line each time."""
+        delay = self.spec.respawn_delay
+        if self.loop.time() - self.started_at >= STABLE:
+            self.quick = 0
+            return delay
+        self.quick += 1
+        if self.quick < STORM:
+            return delay
+        backed = min(BACKOFF_CAP, max(delay, BACKOFF_FIRST) * 2 ** (self.quick - STORM))
+        if self.quick == STORM:
+            self._log("WARN", f"process {describe_exit(self.returncode)} within {STABLE:g} s "
+                              f"of its start {STORM} times in a row: respawning with a "
+                              f"back-off (up "
+                              f"to {BACKOFF_CAP:g} s between attempts); its respawns are not "
+                              f"said again until it runs {STABLE:g} s")
+        return max(delay, backed)
 
     def _gone(self, respawn: bool) -> None:
         if self.pid is not None:
@@ -258,14 +297,36 @@ class ManagedProcess:
 
     def _respawn(self) -> None:
         self._timer = None
+        self._start_over("respawn")
+
+    def _start_over(self, what: str) -> bool:
+        """Spawn it again (a respawn, the user's start); False when it could not start."""
         self._signalled.clear()
         self._to(State.STARTING)
+        self.restarts += 1
         try:
             self.spawn()
         except OSError as exc:
             self._to(State.FATAL)
-            self._log("ERROR", f"could not respawn: {exc}")
+            self._log("ERROR", f"could not {what}: {exc.strerror or exc}")
             self.hooks.exited(self, False)
+            return False
+        return True
+
+    # --- the user's hand (launcher stop, start, restart) -------------------------------------
+    def hold(self) -> None:
+        """Stop it as the launch stops it, for the user: not an exit of its own, no respawn;
+        it stays stopped until start_again()."""
+        self.held = True
+        self.stop()
+
+    def start_again(self) -> bool:
+        """Start an exited or held process anew (same command, environment and rules);
+        False when it could not start (said in the log)."""
+        if self.state not in (State.EXITED, State.FATAL):
+            raise RuntimeError(f"{self.label}: cannot start from {self.state.name}")
+        self.held, self._stop_requested, self.quick = False, False, 0
+        return self._start_over("start")
 
     # --- stopping ---------------------------------------------------------------------------
     def stop(self) -> None:

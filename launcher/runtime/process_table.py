@@ -15,6 +15,7 @@ from launcher.runtime.loop import EventLoop
 from launcher.runtime.machine import RemoteStart
 from launcher.runtime.output import Printer, Record
 from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec
+from launcher.runtime.recent import Recent
 from launcher.runtime.system import Processes
 
 
@@ -24,19 +25,23 @@ class ProcessTable:
                  emit: Callable[[events.Event], None], listened: Callable[[], bool],
                  changed: Callable[[], None], on_graph: Callable[[], None] | None,
                  helper_over: Callable[[bool], None] = lambda done: None,
-                 hosts: Hosts | None = None) -> None:
+                 hosts: Hosts | None = None, recent: Recent | None = None) -> None:
         """`emit` hands events to the handlers (`listened`: whether any would hear a line);
         `changed` is called when a process exits or a helper is done; `on_graph` once, when
         the first process that may join the graph is spawned; `helper_over(done)` when a
         helper says its work is done, or ends before it has (see ProcessSpec); `hosts` starts
-        the processes sent to other hosts."""
+        the processes sent to other hosts; `recent` keeps each one's latest lines."""
         self.loop, self.system, self.custody = loop, system, custody
         self.printer, self.run_log, self.log = printer, run_log, log
         self.emit, self.listened, self.changed = emit, listened, changed
         self.on_graph, self.helper_over = on_graph, helper_over
         self.processes: list[ManagedProcess] = []
         self._count = 0
+        self.closing = False  # the launch stops them all: held processes no longer keep it
+        self._restarting: set[int] = set()  # (ids of) processes to start again once gone
+        self.started_again: Callable[[ManagedProcess], None] = lambda process: None
         self.hosts = hosts
+        self.recent = recent
         self._hooks = ProcessHooks(line=self._on_line, started=self._on_started,
                                    exited=self._on_exited, log=log, group=custody.group)
         # (a group on another host is that host's to watch: its number means nothing here)
@@ -68,8 +73,10 @@ class ProcessTable:
 
     # --- what the launch asks of them all ---------------------------------------------------
     def working(self) -> bool:
-        """Whether any process runs that is not a helper whose work is done."""
-        return any(p.alive and not p.helper_done for p in self.processes)
+        """Whether any process runs that is not a helper whose work is done, or one the user
+        stopped may be started again (the launch runs on until it is stopped)."""
+        return any((p.alive and not p.helper_done) or (p.held and not self.closing)
+                   for p in self.processes)
 
     def alive(self) -> bool:
         return any(p.alive for p in self.processes)
@@ -84,8 +91,31 @@ class ProcessTable:
                 process.stop()
 
     def stop(self) -> None:
+        self.closing = True
+        self._restarting.clear()
         for process in self.processes:
             process.stop()
+
+    # --- the user's hand (runtime/control.py) ------------------------------------------------
+    def hold(self, process: ManagedProcess) -> None:
+        """Stop it for the user: no exit event, no respawn; it waits to be started again."""
+        process.hold()
+
+    def start_again(self, process: ManagedProcess) -> bool:
+        """Start a stopped or exited process anew; False when it could not start."""
+        with self.loop.shielded():
+            started = process.start_again()
+        if started:
+            self.started_again(process)
+        return started
+
+    def restart(self, process: ManagedProcess) -> None:
+        """Stop it (its own signal sequence), then start it anew once its group is gone."""
+        if not process.alive:
+            self.start_again(process)
+            return
+        self._restarting.add(id(process))
+        process.hold()
 
     def escalate(self) -> None:
         for process in self.processes:
@@ -104,6 +134,8 @@ class ProcessTable:
             process.helper_done = True
             self.loop.call_soon(self.helper_over, True)
             self.loop.call_soon(self.changed)
+        if self.recent is not None:
+            self.recent.add(process.label, record.stream, record.text)
         if "screen" in targets:
             self.printer.emit(record)
         if self.run_log is not None:
@@ -123,6 +155,12 @@ class ProcessTable:
                                         pid=process.pid or 0))
 
     def _on_exited(self, process: ManagedProcess, respawn_pending: bool) -> None:
+        if process.held:  # the user's stop: not an exit of its own, nothing to tell handlers
+            if id(process) in self._restarting:
+                self._restarting.discard(id(process))
+                self.loop.call_soon(self.start_again, process)
+            self.changed()
+            return
         if process.spec.helper_done_line and not process.helper_done:
             process.helper_done = True  # (over: it cannot be done later)
             self.helper_over(False)

@@ -23,20 +23,25 @@ from launcher.runtime import events
 from launcher.runtime.component_loads import ComponentLoads
 from launcher.runtime.composition import Loader, LoadRequest
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.control import ProcessControl
 from launcher.runtime.coroutines import Coroutines
 from launcher.runtime.custody import TICK, Custody
 from launcher.runtime.ending import Ending
+from launcher.runtime.figures import Figures
 from launcher.runtime.handlers import Handlers
 from launcher.runtime.hosts import Graph, Hosts
 from launcher.runtime.lifecycle import Lifecycle, LifecycleRequests
-from launcher.runtime.logs import RunLog
+from launcher.runtime.logs import DEFAULT_LIMIT, RunLog
 from launcher.runtime.loop import EventLoop, Timer
 from launcher.runtime.output import Printer, Record
 from launcher.runtime.process import ManagedProcess, ProcessSpec
 from launcher.runtime.process_table import ProcessTable
+from launcher.runtime.recent import Recent
 from launcher.runtime.start_gate import StartGate
 from launcher.runtime.system import Processes, System
 from launcher.runtime.timers import LaunchTimers
+
+CONTROL_AFTER = 1.0  # seconds into a launch at which it answers on the graph (launcher ps)
 
 
 class LaunchService:
@@ -59,12 +64,17 @@ class LaunchService:
         on_graph: Callable[[], None] | None = None,
         lifecycle: Lifecycle | None = None,
         remote_graph: Graph | None = None,
+        serve_control: Callable[[ProcessControl], Callable[[], None]] | None = None,
+        log_limit: int = DEFAULT_LIMIT,
     ) -> None:
         """`on_graph` runs once, when the first process that may join the graph is spawned
         (`launcher launch` starts the graph's router there); `remote_graph(address)` says how
-        another host, which reaches this one at `address`, joins the launch's graph."""
+        another host, which reaches this one at `address`, joins the launch's graph;
+        `serve_control(control)` puts the user's hand on the launch (`launcher ps`, …) on the
+        graph, and returns what ends that; `log_limit`: the size in bytes at which each log
+        file rotates (no log files at all without `log_root`)."""
         self.printer = printer or Printer()
-        self.run_log = RunLog(log_root) if log_root is not None else None
+        self.run_log = RunLog(log_root, log_limit) if log_root is not None else None
         self.context = LaunchContext(
             environment, configurations, service=self,
             log_dir=self.run_log.folder if self.run_log else None,
@@ -82,12 +92,16 @@ class LaunchService:
         self.timers = LaunchTimers(self.loop, self._check_idle)
         hosts = Hosts(self.loop, self.context.environment, self.custody.stamp, self.log,
                       os.urandom(8).hex(), remote_graph)
+        self.recent = Recent()
         self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
                                   self.run_log, self.log, self.emit,
                                   lambda: bool(self.handlers.registered),
                                   self._check_idle, on_graph and reporting(on_graph, self.report),
-                                  lambda done: self.gate.helper_over(done), hosts)
+                                  lambda done: self.gate.helper_over(done), hosts, self.recent)
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
+        self.table.started_again = self._started_again
+        self._serve_control = serve_control
+        self.control: ProcessControl | None = None
         self.coroutines = Coroutines(self.loop.call_soon_threadsafe, self._coroutine_failed,
                                      self._check_idle)
         self.lifecycles = LifecycleRequests(self.loop, lifecycle, self.emit, self.log,
@@ -116,6 +130,15 @@ class LaunchService:
                                          .look_for_orphans())
         if self.custody.subreaper:  # and look anyway
             self.loop.call_later(TICK, self._tick)
+        self.control = ProcessControl(self.table, self.loop, Figures(
+            self.run_log.folder if self.run_log else None), self.recent, self.log)
+        end_control = None
+        if self._serve_control is not None:  # (on the graph after a moment: a launch over
+            # sooner, as a test's `true`, never pays for it)
+            opened: list[Callable[[], None]] = []
+            self.loop.call_later(CONTROL_AFTER, lambda: opened.append(
+                self._serve_control(self.control)))  # type: ignore[misc,arg-type]
+            end_control = opened
         try:
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
@@ -123,6 +146,9 @@ class LaunchService:
             self.schedule([description])
             self.loop.run()
         finally:
+            self.control.close()
+            for end in end_control or ():
+                end()
             self.loads.close()
             self.lifecycles.close()
             self.coroutines.close()
@@ -136,6 +162,12 @@ class LaunchService:
     @property
     def exit_code(self) -> int:
         return self.ending.exit_code
+
+    def _started_again(self, process: ManagedProcess) -> None:
+        """The user started a process anew: a container's composable nodes load again."""
+        container = getattr(process.spec.origin, "fqn", "")
+        if container:
+            self.loads.reload(container)
 
     @property
     def processes(self) -> list[ManagedProcess]:
@@ -181,6 +213,7 @@ class LaunchService:
             with self.loop.interruptible():
                 return run()
         except Interrupted as exc:  # Ctrl-C while evaluating: stop at once
+            self.loop.took(exc.signum)
             self.ending.on_signal(exc.signum)
         except LaunchError as exc:
             self.fail(exc)

@@ -29,6 +29,14 @@ def tagged_processes(tag: str) -> list[psutil.Process]:
     return found
 
 
+def is_router(proc: psutil.Process) -> bool:
+    """The graph's router: started detached, the one process meant to outlive launches."""
+    try:
+        return "launcher.bus.router" in proc.cmdline()
+    except psutil.Error:
+        return False
+
+
 def end_lingering_routers(processes: list[psutil.Process]) -> None:
     """The graph's router outlives its last user by LAUNCHER_ROUTER_LINGER, on purpose (the
     next command of a shell finds it up; test_bus checks that it then goes by itself). The

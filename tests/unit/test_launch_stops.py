@@ -12,8 +12,6 @@ from launcher.cli import launch_command
 from launcher.cli.launch_stops import (
     UntilStop,
     duration_stop,
-    label_base,
-    names_of,
     never_started,
     sim_duration_stop,
     stopped_at_its_time,
@@ -23,6 +21,7 @@ from launcher.description.substitution import perform_text
 from launcher.errors import UsageError
 from launcher.runtime import events
 from launcher.runtime.context import LaunchContext
+from launcher.runtime.control import label_base, names_of
 
 
 def parse(*words: str):

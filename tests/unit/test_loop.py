@@ -1,3 +1,4 @@
+import contextlib
 import os
 import signal
 
@@ -102,13 +103,30 @@ def test_a_signal_inside_a_shielded_section_waits_for_the_loop():
             with_raise = False
             try:
                 os.kill(os.getpid(), signal.SIGINT)  # interruptible again: raises
-            except Interrupted:
+            except Interrupted as exc:
+                loop.took(exc.signum)
                 with_raise = True
         loop.run()  # the shielded one's byte reaches the handler; the raised one's does not
     finally:
         loop.close()
     assert with_raise
     assert got == ["recorded", signal.SIGINT]
+
+
+def test_a_signal_raised_where_something_swallows_it_still_reaches_the_loop():
+    """Raised as Interrupted inside code that catches everything (a library's `except
+    BaseException: pass`, a __del__): the loop hands it to its handler at its next turn."""
+    loop = EventLoop()
+    got = []
+    loop.add_signal_handler(signal.SIGTERM, lambda sig: (got.append(sig), loop.stop()))
+    try:
+        with loop.interruptible(), contextlib.suppress(BaseException):  # (what a careless
+            os.kill(os.getpid(), signal.SIGTERM)  # library does)
+        loop.call_later(5.0, loop.stop)  # (the test's own bound)
+        loop.run()
+    finally:
+        loop.close()
+    assert got == [signal.SIGTERM]
 
 
 def test_a_sigterm_is_not_lost_when_a_storm_of_sigchld_has_filled_the_wakeup_pipe():

@@ -4,68 +4,20 @@ history runs in milliseconds (the real-process tests are in tests/integration)."
 
 from __future__ import annotations
 
-import itertools
 import signal
 
 import pytest
 
-from launcher.runtime.process import ManagedProcess, ProcessHooks, ProcessSpec, State
-from launcher.runtime.system import Started
+from launcher.runtime.process import (
+    BACKOFF_CAP,
+    STABLE,
+    ManagedProcess,
+    ProcessHooks,
+    ProcessSpec,
+    State,
+)
 from tests.support.fake_loop import FakeLoop
-
-
-class FakeSystem:
-    """Records spawns and signals; the test says when a process writes, exits, and whether
-    its group still holds anything."""
-
-    def __init__(self, fail_spawns: int = 0) -> None:
-        self.pids = itertools.count(100)
-        self.fds = itertools.count(10)
-        self.spawned: list[int] = []
-        self.signals: list[tuple[int, int]] = []
-        self.group: dict[int, bool] = {}
-        self.exits: dict[int, object] = {}
-        self.output: dict[int, list[bytes]] = {}
-        self.closed: list[int] = []
-        self.fail_spawns = fail_spawns
-        self.loop: FakeLoop | None = None
-
-    def spawn(self, argv, env, cwd, tty):
-        if self.fail_spawns:
-            self.fail_spawns -= 1
-            raise FileNotFoundError(2, "No such file or directory", argv[0])
-        pid = next(self.pids)
-        self.spawned.append(pid)
-        self.group[pid] = True
-        started = Started(pid, next(self.fds), next(self.fds))
-        self.output[started.stdout], self.output[started.stderr] = [], []
-        self.streams = started
-        return started
-
-    def watch_exit(self, pid, loop, exited):
-        self.exits[pid] = exited
-
-    def read(self, fd):
-        chunks = self.output[fd]
-        return chunks.pop(0) if chunks else b""
-
-    def close(self, fd):
-        self.closed.append(fd)
-
-    def kill_group(self, pgid, sig):
-        self.signals.append((pgid, sig))
-
-    def group_alive(self, pgid):
-        return self.group.get(pgid, False)
-
-    # --- what the test makes happen ---------------------------------------------------------
-    def leader_exits(self, loop: FakeLoop, pid: int, code: int, group_empty: bool = True):
-        """The leader ends with `code`: its output reaches its end, then it is reaped."""
-        self.group[pid] = not group_empty
-        for fd in (self.streams.stdout, self.streams.stderr):
-            if fd in loop.readers:
-                loop.ready(fd)
-        self.exits.pop(pid)(code)
+from tests.support.fake_system import FakeSystem
 
 
 class Recorder:
@@ -119,6 +71,7 @@ def test_respawn_with_a_delay_and_a_limit_then_exited():
                                            respawn_max_retries=2)
     history = []
     for _ in range(3):
+        loop.advance(STABLE)  # (each ran long enough: no back-off)
         system.leader_exits(loop, system.spawned[-1], 1)
         history.append(process.state)
         loop.advance(0.99)
@@ -130,7 +83,40 @@ def test_respawn_with_a_delay_and_a_limit_then_exited():
     messages = [m for _, m in recorder.logs]
     assert "respawning in 1 s (attempt 1 of 2)" in messages[0]
     assert "respawning in 1 s (attempt 2 of 2)" in messages[1]
+    assert "not respawning: it was respawned 2 times, its respawn_max_retries" in messages[2]
     assert recorder.exited == [True, True, False]
+
+
+def respawned(loop, system) -> float:
+    """Move the clock until the next spawn; how long that took (in 0.01 s steps)."""
+    began, before = loop.now, len(system.spawned)
+    while len(system.spawned) == before:
+        loop.advance(0.01)
+    return loop.now - began
+
+
+def test_a_respawn_storm_backs_off_doubling_up_to_its_cap_and_is_said_once():
+    process, loop, system, recorder = make(respawn=True, respawn_delay=0.0)
+    waits = []
+    for _ in range(12):
+        system.leader_exits(loop, system.spawned[-1], 1)  # at once: a storm
+        waits.append(respawned(loop, system))
+    # (its own 0 s twice, then 0.1 s doubling)
+    assert waits[:7] == pytest.approx([0.0, 0.0, 0.1, 0.2, 0.4, 0.8, 1.6], abs=0.02)
+    assert max(waits) == pytest.approx(BACKOFF_CAP, abs=0.02)
+    said = [m for _, m in recorder.logs]
+    assert len(said) == 3 and "within 5 s of its start 3 times in a row" in said[2]
+
+
+def test_a_process_that_ran_its_stable_time_respawns_without_back_off_again():
+    process, loop, system, recorder = make(respawn=True, respawn_delay=0.5)
+    for _ in range(4):
+        system.leader_exits(loop, system.spawned[-1], 1)
+        respawned(loop, system)
+    assert process.quick == 4
+    loop.advance(STABLE)
+    system.leader_exits(loop, system.spawned[-1], 1)
+    assert process.quick == 0 and "respawning in 0.5 s" in recorder.logs[-1][1]
 
 
 def test_stop_escalates_sigint_sigterm_sigkill_on_the_group_with_their_timeouts():

@@ -64,13 +64,22 @@ def main(argv: list[str], prog: str = "roslaunch") -> int:
     configurations = launch_command.parse_assignments(assignments)
     if any(getattr(args, view) for view in roslaunch_views.VIEWS):
         return roslaunch_views.show(args, combined(paths), configurations, index)
-    launch = argparse.Namespace(file=str(paths[0]), arguments=assignments,
-                                show_args=args.show_args, print=False, debug=args.debug,
-                                launch_prefix="", noninteractive=False,
-                                duration=args.duration, sim_duration=None, until=None)
+    launch = launch_options(paths[0])  # (launch's defaults: its options as it has them)
+    launch.arguments, launch.show_args = assignments, args.show_args
+    launch.debug, launch.duration = args.debug, args.duration
     if len(paths) == 1 or args.show_args:
         return launch_command.run(launch)
     return launch_command.launch(launch, combined(paths), configurations, index)
+
+
+def launch_options(path: Path) -> argparse.Namespace:
+    """`launcher launch PATH`'s options, each at its default."""
+    from launcher.arguments import Parser
+    from launcher.cli import launch_command
+
+    options = Parser(prog="launcher launch")
+    launch_command.add_arguments(options)
+    return options.parse_args([str(path)])
 
 
 def combined(paths: list[Path]) -> Any:

@@ -180,6 +180,8 @@ class Node(ExecuteProcess):
         placement = Placement(machine, self._remote_start(context, len(head), argv, words)
                               if remote else None)
         spec = self.process_spec(context, argv, env, base, cwd, placement)
+        if node:
+            spec.node_name = f"{space.rstrip('/')}/{node}"
         if ros1:  # nodeprocess: the log file is named after the node's full name
             stem = "-".join(p for p in (*space.split("/"), spec.label) if p)
             import tempfile
