@@ -123,7 +123,10 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
         else:
             outcome = f"exited {code}: not as documented"
             details = err[-2000:]
-    except subprocess.TimeoutExpired:
+    except BaseException as exc:
+        if not isinstance(exc, subprocess.TimeoutExpired):  # the bench stopped while it
+            proc.kill()  # waited: the launch goes with it
+            raise
         outcome = "lost (still running)"
         details = (f"signal {signal.Signals(sig).name} at {delay:.3f} s\n"
                    f"{signal_state(proc.pid)}\n{stacks(proc.pid)}")
@@ -149,6 +152,7 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=56)
     args = parser.parse_args()
     signal.signal(signal.SIGINT, signal.default_int_handler)  # (see above; exec resets it)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # (its hogs and launch go too)
     folder = Path(tempfile.mkdtemp(prefix="launcher-bench-signals-"))
     (folder / "s.launch.yaml").write_text(LAUNCH)
     env = {**os.environ, "LAUNCHER_LOG_DIR": str(folder / "log"),

@@ -16,12 +16,10 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from launcher.bus.launches import CONTROL, LIST, OUTPUT
 from launcher.errors import LaunchError
 from launcher.runtime.control import ProcessControl, Refused
 
-LIST = "launcher_interfaces/srv/ListProcesses"
-CONTROL = "launcher_interfaces/srv/ControlProcess"
-OUTPUT = "launcher_interfaces/srv/ProcessOutput"
 ANSWER_WAIT = 5.0  # seconds a request waits for the launch's loop
 CLOSE_WAIT = 2.0  # seconds the launch's end waits for the node's thread
 MOST_LINES = 5000  # lines one output answer carries at most

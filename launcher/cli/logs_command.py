@@ -7,7 +7,7 @@ import argparse
 import sys
 import time
 
-from launcher.cli.launches import Launches
+from launcher.bus.launches import Launches
 
 FOLLOW = 0.2  # seconds between asks of -f
 

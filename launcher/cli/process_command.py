@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from launcher.cli.launches import Launches
+from launcher.bus.launches import Launches
 
 HELP = {"stop": "Stop one process of a running launch, as the launch stops it (SIGINT, then "
                 "SIGTERM and SIGKILL after its timeouts). It is not a crash: no respawn, and a "

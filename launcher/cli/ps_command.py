@@ -7,7 +7,7 @@ import sys
 import time
 from typing import Any
 
-from launcher.cli.launches import Launch, Launches
+from launcher.bus.launches import Launch, Launches
 
 REFRESH = 1.0  # seconds between the tables of -w
 

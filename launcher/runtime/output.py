@@ -6,20 +6,30 @@ writing to a terminal, or as the environment says (`color_wanted`); `Printer.emi
 A launcher message of several lines (a command's stderr, a value with a newline in it) has its
 further lines indented, and carriage returns shown as `\r`, so no text the user controls can
 pass for a line of the launcher's own.
+
+A launch's printer is `queued` (`start()`): its lines go to a thread that writes them, so a
+screen slower than the processes' output (a terminal, a pipe read slowly) never holds up the
+launch. At most SCREEN_BACKLOG bytes wait; past that, the processes' lines are not shown (the
+log files have them, whole) and, once the screen has caught up, one line says how many were
+not. The launcher's own messages are never dropped.
 """
 
 from __future__ import annotations
 
 import os
 import sys
+import threading
 import time
 import zlib
+from collections import deque
 from collections.abc import Mapping
 from typing import NamedTuple, TextIO
 
 from launcher.records import dataclass, field
 
 LEVELS = ("DEBUG", "INFO", "WARN", "ERROR")
+SCREEN_BACKLOG = 4 << 20  # bytes of lines waiting for the screen, past which lines are dropped
+FLUSH_WAIT = 5.0  # seconds the end of a launch waits for the screen to take what waits
 
 
 class Record(NamedTuple):
@@ -47,14 +57,77 @@ _COLORS = (31, 32, 33, 34, 35, 36, 91, 92, 93, 94, 95, 96)
 _LEVEL_COLORS = {"DEBUG": 2, "INFO": 0, "WARN": 33, "ERROR": 31}
 
 
+class ScreenQueue:
+    """Lines for `out`, written by a thread of their own (see the module's words)."""
+
+    def __init__(self, out: TextIO) -> None:
+        self.out = out
+        self._lines: deque[str] = deque()
+        self._size = 0
+        self.dropped = 0  # lines not shown since the last word about it
+        self.dropped_all = 0
+        self._ready = threading.Condition()
+        self._closing = False
+        self._thread = threading.Thread(target=self._write_all, name="screen", daemon=True)
+        self._thread.start()
+
+    def put(self, line: str, keep: bool) -> None:
+        with self._ready:
+            if not keep and self._size > SCREEN_BACKLOG:
+                self.dropped += 1
+                self.dropped_all += 1
+                return
+            self._lines.append(line)
+            self._size += len(line)
+            self._ready.notify()
+
+    def _write_all(self) -> None:
+        while True:
+            with self._ready:
+                while not self._lines and not self._closing:
+                    self._ready.wait()
+                if not self._lines:
+                    return
+                batch = "".join(self._lines)
+                self._lines.clear()
+                self._size = 0
+                dropped, self.dropped = self.dropped, 0
+            if dropped:
+                batch += (f"[launch] {dropped} lines were not shown: the screen could not keep "
+                          "up (the log files have them)\n")
+            try:
+                self.out.write(batch)
+                self.out.flush()
+            except (BrokenPipeError, ValueError, OSError):  # stdout closed: quietly on
+                pass
+
+    def close(self) -> None:
+        with self._ready:
+            self._closing = True
+            self._ready.notify()
+        self._thread.join(FLUSH_WAIT)
+
+
 @dataclass
 class Printer:
     out: TextIO = field(default_factory=lambda: sys.stdout)
     color: bool | None = None  # None: as color_wanted() says for `out`
+    queue: ScreenQueue | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         if self.color is None:
             self.color = color_wanted(self.out)
+
+    def start(self) -> None:
+        """From here on, lines are written by the screen's thread (a launch's printer)."""
+        if self.queue is None:
+            self.queue = ScreenQueue(self.out)
+
+    def close(self) -> None:
+        """Write what waits (up to FLUSH_WAIT), and write directly again."""
+        queue, self.queue = self.queue, None
+        if queue is not None:
+            queue.close()
 
     def format(self, record: Record) -> str:
         if record.level is not None:
@@ -68,6 +141,10 @@ class Printer:
         return f"{label} {record.text}"
 
     def emit(self, record: Record) -> None:
+        queue = self.queue
+        if queue is not None:
+            queue.put(self.format(record) + "\n", keep=record.level is not None)
+            return
         try:
             self.out.write(self.format(record) + "\n")
             self.out.flush()

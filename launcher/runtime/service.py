@@ -130,6 +130,7 @@ class LaunchService:
                                          .look_for_orphans())
         if self.custody.subreaper:  # and look anyway
             self.loop.call_later(TICK, self._tick)
+        self.printer.start()
         self.control = ProcessControl(self.table, self.loop, Figures(
             self.run_log.folder if self.run_log else None), self.recent, self.log)
         end_control = None
@@ -157,6 +158,7 @@ class LaunchService:
             self.custody.end(nothing_left=self.ending.swept_all)
             if self.run_log is not None:
                 self.run_log.close()
+            self.printer.close()
         return self.exit_code
 
     @property

@@ -29,6 +29,7 @@ from mujoco.studio import launch_thread, messages, sim, viewer_protocol, web_vie
 from mujoco.studio.web import web_server
 
 from launcher.sim import viewer_gate, viewer_page
+from launcher.sim.processes_page import ProcessesPage
 
 WATCHED_FOR = 0.5  # s after the last frame drawn for a browser
 
@@ -68,7 +69,8 @@ class Studio:
         web_server.bind_public_socket = lambda _host, _port: listener
         web_server.bind_loopback_socket = viewer_gate.own_user_listener
         if token is not None:
-            web_server.serve = viewer_gate.guarded_serve(websockets_serve, token, port)
+            web_server.serve = viewer_gate.guarded_serve(websockets_serve, token, port,
+                                                         ProcessesPage().respond)
         try:
             with contextlib.redirect_stdout(None):  # its banner names the wrong address
                 studio._handle = launch_thread.launch_thread(

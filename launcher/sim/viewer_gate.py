@@ -5,8 +5,9 @@ it starts).
 MuJoCo Studio's server has no authentication, and two TCP listeners (REFERENCE §10):
 - the page's port (HTTP and the /state, /ui and /drop WebSockets): every request passes the
   token check (bus/listen_token.py) before Studio sees it; without the token, a 403 page
-  and no handshake. A browser that opened the printed URL (`?token=…`) gets the cookie, so
-  the page's own files and streams carry it;
+  and no handshake. The processes page (processes_page.py) is answered here too, after the
+  check, and only where there is a token. A browser that opened the printed URL
+  (`?token=…`) gets the cookie, so the page's own files and streams carry it;
 - the loopback port Studio's headless UI client connects to from inside this process (its
   commands are the page's buttons: pause, step, reset). That client cannot present a token,
   so the port takes only connections whose other end belongs to this user (the kernel's
@@ -24,8 +25,11 @@ from typing import Any
 from launcher.bus import listen_token
 
 
-def guarded_serve(serve: Callable[..., Any], token: str, port: int) -> Callable[..., Any]:
-    """Studio's `serve` (websockets'), its requests checked for the token first."""
+def guarded_serve(serve: Callable[..., Any], token: str, port: int,
+                  pages: Callable[[str], tuple[int, str, bytes] | None] | None = None
+                  ) -> Callable[..., Any]:
+    """Studio's `serve` (websockets'), its requests checked for the token first; a request
+    `pages(path)` answers ((status, content type, body)) never reaches Studio."""
     from websockets.datastructures import Headers
     from websockets.http11 import Response
 
@@ -45,6 +49,12 @@ def guarded_serve(serve: Callable[..., Any], token: str, port: int) -> Callable[
                     page)
             if in_url:
                 came_in_url.add(id(request))
+            answered = pages(request.path) if pages is not None else None
+            if answered is not None:
+                status, kind, body = answered
+                return Response(status, http.HTTPStatus(status).phrase, Headers(
+                    [("Content-Type", kind), ("Content-Length", str(len(body))),
+                     ("Cache-Control", "no-store")]), body)
             return process_request(connection, request) if process_request else None
 
         def answer(connection: Any, request: Any, response: Any) -> Any:

@@ -518,3 +518,52 @@ def test_no_token_serves_anyone_and_says_so(view_ws):
     finally:
         stop(proc)
     assert proc.returncode == 0
+
+
+TICKER = "import time\nwhile True:\n    print('tick', flush=True)\n    time.sleep(0.2)\n"
+
+
+def test_in_a_real_browser_the_processes_page_lists_the_launch_and_restarts_one(view_ws,
+                                                                                browser):
+    """The viewer's processes page, behind its token: the launch's processes live (as
+    `launcher ps`), and a restart button that restarts one."""
+    from selenium.common.exceptions import StaleElementReferenceException
+    from selenium.webdriver.common.by import By
+
+    view_ws.write("void.sdf", '<sdf version="1.9"><world name="void"></world></sdf>')
+    view_ws.write("ticker.py", TICKER)
+    port = free_port()
+    view_ws.write("view.launch.yaml", f"""
+    launch:
+      - executable: {{cmd: "launcher sim -r --gui={port} void.sdf", output: screen}}
+      - executable: {{cmd: "python3 ticker.py", name: ticker}}
+    """)
+    proc = view_ws.start("launch", "-n", "view.launch.yaml")
+    try:
+        wait_for(lambda: "the world in a browser" in said(view_ws), timeout=60)
+        assert fetch(f"http://127.0.0.1:{port}/processes")[0] == 403  # (no token: refused)
+        browser.get(f"http://127.0.0.1:{port}/processes?token={token_of(view_ws)}")
+
+        def cells(name: str) -> list[str]:  # (read at once: the table is redrawn each second)
+            return browser.execute_script(
+                "const row = document.querySelector(`tr[data-name='${arguments[0]}']`);"
+                "return row ? [...row.cells].map(cell => cell.textContent) : [];", name)
+
+        def press(name: str, verb: str) -> bool:
+            try:
+                browser.find_element(By.CSS_SELECTOR,
+                                     f"tr[data-name='{name}'] button.{verb}").click()
+            except StaleElementReferenceException:  # (redrawn under the click: again)
+                return False
+            return True
+
+        wait_for(lambda: cells("ticker-2")[3:5] == ["running", "0"], timeout=30)
+        assert cells("launcher-1")[3] == "running"  # (the sim)
+        first_pid = cells("ticker-2")[1]
+        wait_for(lambda: press("ticker-2", "restart"))
+        wait_for(lambda: cells("ticker-2")[3:5] == ["running", "1"], timeout=30)
+        assert cells("ticker-2")[1] != first_pid
+        assert "restarting ticker-2" in browser.find_element(By.ID, "said").text
+    finally:
+        proc.send_signal(2)
+        proc.wait(30)

@@ -55,3 +55,38 @@ def test_colour_as_the_environment_says(environ, tty, expected):
     from launcher.runtime.output import color_wanted
 
     assert color_wanted(_Terminal(tty), environ) is expected
+
+
+class SlowScreen(io.StringIO):
+    """A screen that takes each write slowly (a terminal behind, a pipe read slowly)."""
+
+    def __init__(self, hold) -> None:
+        super().__init__()
+        self.hold = hold
+
+    def write(self, text: str) -> int:
+        self.hold.wait(10)
+        return super().write(text)
+
+
+def test_a_slow_screen_drops_process_lines_past_its_backlog_and_says_how_many():
+    import threading
+
+    from launcher.runtime import output
+
+    hold = threading.Event()
+    screen = SlowScreen(hold)
+    printer = Printer(out=screen, color=False)
+    printer.start()
+    line = "x" * 1000
+    for _ in range(3 * output.SCREEN_BACKLOG // 1000):  # (never held up: the thread writes)
+        printer.emit(Record("flood-1", line))
+    printer.emit(Record("launch", "still said", "launcher", "WARN"))
+    dropped = printer.queue.dropped_all
+    hold.set()
+    printer.close()
+    text = screen.getvalue()
+    assert dropped > 0
+    assert f"[launch] {dropped} lines were not shown: the screen could not keep up" in text
+    assert "[WARN] [launch]: still said" in text  # (the launcher's own: never dropped)
+    assert text.count("[flood-1] ") == 3 * output.SCREEN_BACKLOG // 1000 - dropped

@@ -1,5 +1,6 @@
-"""The running launches on the user's graph, as `launcher ps`, `stop`, `start`, `restart` and
-`logs` see them: each launch's node (cli/launch_control.py) found by its services, and asked.
+"""The running launches on the user's graph, as `launcher ps`, `stop`, `start`, `restart`,
+`logs` and the viewer's processes page see them: each launch's node (cli/launch_control.py
+serves it) found by its services, and asked.
 A process is named by its label (`talker-1`), or by any name it goes by (its node's, its
 executable's) when that names one process of all the launches; `--launch` picks one launch by
 its file's name, its pid or its node's."""
@@ -10,8 +11,11 @@ import os
 from typing import Any, NamedTuple
 
 from launcher.bus import discovery, graph
-from launcher.cli.launch_control import CONTROL, LIST, OUTPUT
 from launcher.errors import LaunchError, did_you_mean
+
+LIST = "launcher_interfaces/srv/ListProcesses"
+CONTROL = "launcher_interfaces/srv/ControlProcess"
+OUTPUT = "launcher_interfaces/srv/ProcessOutput"
 
 ASK_WAIT = 6.0  # seconds an answer may take (the launch's own wait is 5)
 
@@ -22,12 +26,12 @@ class Launch(NamedTuple):
 
 
 class Launches:
-    def __init__(self) -> None:
+    def __init__(self, name: str = "launcher_cli") -> None:
         from launcher.bus.node import Node
         from launcher.bus.session import open_session
 
-        self.node = Node(f"launcher_cli_{os.getpid()}", argv=[],
-                         session=open_session("client"), parameter_services=False)
+        self.node = Node(f"{name}_{os.getpid()}", argv=[], session=open_session("client"),
+                         parameter_services=False)
 
     def close(self) -> None:
         self.node.destroy_node()
