@@ -19,6 +19,7 @@ from pathlib import Path
 
 import psutil
 from _harness import launcher_cmd, start_router, summary, table, workdir
+from fault_campaign import campaign
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -213,6 +214,8 @@ def main() -> None:
         router.send_signal(signal.SIGINT)
         router.wait(30)
     table("faults (bench/faults.py)", rows)
+    runs = int(os.environ.get("BENCH_FAULT_CAMPAIGN", "1000"))  # (bench/fault_campaign.py)
+    table(f"The fault campaign: {runs} runs", campaign(runs, 56))
 
 
 if __name__ == "__main__":

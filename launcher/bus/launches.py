@@ -68,10 +68,11 @@ class Launches:
         if launch is None:
             return launches
         picked = [each for each in launches if launch in (
-            each.listing.launch, os.path.splitext(each.listing.launch)[0],
+            each.listing.launch, each.listing.launch.split(".", 1)[0],
             str(each.listing.pid), each.node.lstrip("/"), each.node, each.listing.file)]
         if not picked:
-            shown = [each.listing.launch for each in launches]
+            shown = [name for each in launches
+                     for name in (each.listing.launch, each.listing.launch.split(".", 1)[0])]
             raise LaunchError(f"--launch {launch}: no running launch is {launch!r}"
                              f"{did_you_mean(launch, shown)}; running: "
                              f"{', '.join(describe(each) for each in launches)}")

@@ -16,12 +16,13 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from launcher.bus import discovery
 from launcher.bus.launches import CONTROL, LIST, OUTPUT
 from launcher.errors import LaunchError
 from launcher.runtime.control import ProcessControl, Refused
 
 ANSWER_WAIT = 5.0  # seconds a request waits for the launch's loop
-CLOSE_WAIT = 2.0  # seconds the launch's end waits for the node's thread
+CLOSE_WAIT = 2.0  # seconds the launch's end waits for the node's thread (once it serves)
 MOST_LINES = 5000  # lines one output answer carries at most
 
 
@@ -37,6 +38,7 @@ class LaunchControl:
         self.control, self.environment = control, environment
         self.file, self.log_folder = file, log_folder
         self._node: Any = None
+        self._lock = threading.Lock()
         self._closed = threading.Event()
         self._thread = threading.Thread(target=self._serve, name="launch-control",
                                         daemon=True)
@@ -57,17 +59,25 @@ class LaunchControl:
         node.create_service(LIST, "~/list_processes", self._list)
         node.create_service(CONTROL, "~/control_process", self._act)
         node.create_service(OUTPUT, "~/process_output", self._output)
-        self._node = node
-        if self._closed.is_set():
-            return
+        with self._lock:
+            if self._closed.is_set():  # (the launch ended while this opened: gone at once)
+                node.destroy_node()
+                session.close()
+                return
+            self._node = node
         node.spin()
 
     def close(self) -> None:
-        self._closed.set()
-        node = self._node
+        """The node goes. A thread still opening its session (a router slow to answer) is
+        waited for as long as the session's own wait, so nothing is left inside Zenoh as the
+        interpreter ends."""
+        with self._lock:
+            self._closed.set()
+            node = self._node
         if node is not None:
             node.shutdown()
-        self._thread.join(CLOSE_WAIT)
+        self._thread.join(CLOSE_WAIT if node is not None else
+                          discovery.timeout(self.environment) + 1.0)
         if node is not None:
             node.destroy_node()
             node.session.close()  # (see components.BusLoader.close)

@@ -2,7 +2,11 @@
 drawn over time with matplotlib, as rqt_plot draws them: live from the graph for `--duration`
 seconds from the first message (10; Ctrl-C ends sooner), or from a recorded bag. Into a PNG
 (or SVG, PDF), or a window when there is a display and no `-o`. A field is a topic and a path
-into its messages (`/odom/pose/pose/position/x`, `/joint_states/position/0`)."""
+into its messages (`/odom/pose/pose/position/x`, `/joint_states/position/0`).
+
+`launcher plot --processes [RUN]`: the CPU and memory of each process of a launch, as the launch
+sampled them once a second (`processes.csv` in its log folder; RUN is that folder, the file, or
+by default the latest run's)."""
 
 from __future__ import annotations
 
@@ -18,13 +22,16 @@ from launcher.errors import LaunchError, UsageError, did_you_mean
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("fields", nargs="+", help="/topic/path/to/field (…/position/0 for an item)")
+    parser.add_argument("fields", nargs="*", help="/topic/path/to/field (…/position/0 for an item)")
     parser.add_argument("-o", "--output", default=None,
                         help="the picture to write (.png, .svg, .pdf); default: a window when "
                         "there is a display, else plot.png")
     parser.add_argument("-d", "--duration", type=float, default=10.0,
                         help="seconds to listen, from the first message (live; default 10)")
     parser.add_argument("--bag", default=None, help="read a recorded bag instead")
+    parser.add_argument("--processes", nargs="?", const="latest", default=None, metavar="RUN",
+                        help="draw the CPU and memory of a launch's processes instead (its log "
+                             "folder, or its processes.csv; default: the latest run's)")
 
 
 def _split(field: str, topics: list[str]) -> tuple[str, list[str]]:
@@ -110,15 +117,74 @@ def _recorded(fields: list[str], bag: Path) -> dict[str, list[tuple[float, float
     return series
 
 
+def _figures(run: str) -> dict[str, list[tuple[float, float, float]]]:
+    """Each process's (time, CPU %, memory MiB) from a run's processes.csv."""
+    import csv
+
+    from launcher.runtime.logs import log_root
+
+    path = log_root() / "latest" if run == "latest" else Path(run)
+    csv_path = path / "processes.csv" if path.is_dir() else path
+    try:
+        with open(csv_path, newline="", encoding="utf-8") as handle:
+            rows = list(csv.DictReader(handle))
+    except OSError as exc:
+        raise LaunchError(f"cannot read {csv_path}: {exc.strerror or exc} (a launch writes it "
+                          "into its log folder once it has run a second; not with "
+                          "--no-log-files)") from None
+    series: dict[str, list[tuple[float, float, float]]] = {}
+    try:
+        for row in rows:
+            series.setdefault(row["name"], []).append(
+                (float(row["time"]), float(row["cpu_percent"]), int(row["rss_bytes"]) / 2**20))
+    except (KeyError, ValueError):
+        raise LaunchError(f"{csv_path}: not a launch's processes.csv (expected the columns "
+                          "time,name,pid,cpu_percent,rss_bytes)") from None
+    if not series:
+        raise LaunchError(f"{csv_path} holds no samples yet")
+    return series
+
+
+def _draw_figures(series: dict[str, list[tuple[float, float, float]]], output: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    figure, (cpu, memory) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    start = min(points[0][0] for points in series.values())
+    for name, points in series.items():
+        times = [t - start for t, _, _ in points]
+        cpu.plot(times, [c for _, c, _ in points], label=name)
+        memory.plot(times, [m for _, _, m in points], label=name)
+    cpu.set_ylabel("CPU (% of one core)")
+    memory.set_ylabel("memory (MiB)")
+    memory.set_xlabel("time (s)")
+    for axes in (cpu, memory):
+        axes.grid(True, alpha=0.3)
+    cpu.legend(loc="best", fontsize="small")
+    figure.savefig(output, dpi=100, bbox_inches="tight")
+
+
 def run(args: argparse.Namespace) -> int:
-    if args.duration <= 0:
-        raise UsageError(f"--duration must be above 0, got {args.duration:g}")
     try:
         import matplotlib
     except ImportError:  # said before any waiting
         raise LaunchError("launcher plot draws with matplotlib, which is not installed: "
                           "sh hooks/bootstrap.sh test installs it (or pip install "
                           "'launcher[plot]')") from None
+    if args.processes is not None:
+        if args.fields:
+            raise UsageError("--processes draws a launch's processes: give it no fields")
+        series = _figures(args.processes)
+        output = Path(args.output or "processes.png")
+        _draw_figures(series, output)
+        print(f"wrote {output} ({len(series)} processes)")
+        return 0
+    if not args.fields:
+        raise UsageError("name the fields to draw (/topic/path/to/field), or --processes")
+    if args.duration <= 0:
+        raise UsageError(f"--duration must be above 0, got {args.duration:g}")
     series = _recorded(args.fields, Path(args.bag)) if args.bag else \
         _live(args.fields, args.duration)
     window = args.output is None and bool(os.environ.get("DISPLAY"))

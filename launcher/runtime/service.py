@@ -101,6 +101,7 @@ class LaunchService:
         self.loads = ComponentLoads(self.loop, loader, self.log, self.report, self._check_idle)
         self.table.started_again = self._started_again
         self._serve_control = serve_control
+        self._end_control: Callable[[], None] | None = None
         self.control: ProcessControl | None = None
         self.coroutines = Coroutines(self.loop.call_soon_threadsafe, self._coroutine_failed,
                                      self._check_idle)
@@ -133,13 +134,8 @@ class LaunchService:
         self.printer.start()
         self.control = ProcessControl(self.table, self.loop, Figures(
             self.run_log.folder if self.run_log else None), self.recent, self.log)
-        end_control = None
-        if self._serve_control is not None:  # (on the graph after a moment: a launch over
-            # sooner, as a test's `true`, never pays for it)
-            opened: list[Callable[[], None]] = []
-            self.loop.call_later(CONTROL_AFTER, lambda: opened.append(
-                self._serve_control(self.control)))  # type: ignore[misc,arg-type]
-            end_control = opened
+        # (on the graph after a moment: a launch over sooner, as a test's `true`, never pays)
+        self.loop.call_later(CONTROL_AFTER, self._open_control)
         try:
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
@@ -148,8 +144,8 @@ class LaunchService:
             self.loop.run()
         finally:
             self.control.close()
-            for end in end_control or ():
-                end()
+            if self._end_control is not None:
+                self._end_control()
             self.loads.close()
             self.lifecycles.close()
             self.coroutines.close()
@@ -164,6 +160,12 @@ class LaunchService:
     @property
     def exit_code(self) -> int:
         return self.ending.exit_code
+
+    def _open_control(self) -> None:
+        """The launch answers `launcher ps` and its kin on the graph from now on."""
+        if self._serve_control is not None and self.control is not None and \
+                not self.ending.shutting_down:
+            self._end_control = self._serve_control(self.control)
 
     def _started_again(self, process: ManagedProcess) -> None:
         """The user started a process anew: a container's composable nodes load again."""

@@ -267,3 +267,20 @@ launch:
     assert all((folder / name).stat().st_size <= 64 * 1024 for name in logs)
     last = (folder / "launch.log").read_text().splitlines()
     assert any(line.endswith("[seq-1] 20000") for line in last)
+
+
+def test_plot_draws_the_figures_of_the_latest_run(ws):
+    proc = started(ws)
+    time.sleep(2.5)  # (a sample a second)
+    ended(proc)
+    result = ws.run("plot", "--processes", "-o", "figures.png")
+    assert result.returncode == 0, result.stderr
+    assert "wrote figures.png (2 processes)" in result.stdout
+    assert (ws.root / "figures.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_plot_of_a_run_without_figures_says_so(ws):
+    result = ws.run("plot", "--processes", str(ws.root))
+    assert result.returncode == 1
+    assert f"cannot read {ws.root}/processes.csv" in result.stderr
+    assert "Traceback" not in result.stderr

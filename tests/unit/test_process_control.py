@@ -176,3 +176,49 @@ def test_a_log_file_rotates_at_its_limit_keeping_lines_whole(tmp_path: Path):
     assert (tmp_path / "launch.log.1").read_text() == "line number 5\n"
     assert not (tmp_path / "launch.log.6").exists()  # (five kept)
     assert log.written == 7 * 14
+
+
+# --- picking a process by name across the running launches (bus/launches.py) ----------------
+def listing(launch: str, pid: int, *rows: tuple[str, list[str]]):
+    from types import SimpleNamespace
+
+    from launcher.bus.launches import Launch
+
+    processes = [SimpleNamespace(name=name, names=[name, *names], node="") for name, names in rows]
+    return Launch(f"/launcher_{pid}", SimpleNamespace(launch=launch, pid=pid, file=launch,
+                                                      processes=processes))
+
+
+def launches_of(*running):
+    from launcher.bus.launches import Launches
+
+    launches = Launches.__new__(Launches)  # (no graph: the listing is given)
+    launches.all = lambda: list(running)
+    return launches
+
+
+def test_a_name_that_two_processes_go_by_is_refused_with_both_named():
+    from launcher.errors import LaunchError
+
+    launches = launches_of(listing("a.launch.yaml", 10, ("talker-1", ["talker"])),
+                           listing("b.launch.yaml", 20, ("talker-1", ["talker"])))
+    with pytest.raises(LaunchError, match="'talker' names several processes: talker-1 "
+                                          r"\(in a.launch.yaml \(pid 10\)\), talker-1 \(in "
+                                          r"b.launch.yaml \(pid 20\)\).*--launch"):
+        launches.pick("talker")
+
+
+def test_launch_picks_one_of_several_by_its_file_or_pid():
+    launches = launches_of(listing("a.launch.yaml", 10, ("talker-1", ["talker"])),
+                           listing("b.launch.yaml", 20, ("talker-1", ["talker"])))
+    assert launches.pick("talker", "b")[0].listing.pid == 20
+    assert launches.pick("talker", "10")[0].listing.pid == 10
+
+
+def test_an_unknown_launch_is_said_with_the_running_ones():
+    from launcher.errors import LaunchError
+
+    launches = launches_of(listing("robot.launch.yaml", 10, ("sim-1", ["sim"])))
+    with pytest.raises(LaunchError, match=r"--launch robt: no running launch is 'robt' \(did "
+                                          r"you mean 'robot'\?\); running: robot.launch.yaml"):
+        launches.pick("sim", "robt")
