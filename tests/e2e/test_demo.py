@@ -387,3 +387,30 @@ def test_the_demo_hit_by_a_signal_at_a_random_moment_leaves_nothing(demo):
         assert not left(), (run, sig, [p.pid for p in left()])
         text = demo.output(name)
         assert "sending SIGKILL" not in text, text
+
+
+def test_on_the_running_demo_ps_lists_the_stack_and_a_restarted_node_publishes_again(demo):
+    """The user's hand on the demo: `launcher ps` lists its processes, `launcher restart
+    robot_state_publisher` gives a new process, whose wheel transforms reach /tf again."""
+    proc = demo.start("launch", LAUNCH, output="demo.out")
+    try:
+        demo.wait_for_output("spawned 'my_robot' into world 'robot'", 90, "demo.out")
+        table = demo.run("ps").stdout
+        for name in ("gz", "parameter_bridge", "robot_state_publisher", "driver"):
+            assert re.search(rf"^  {name}-\d+ +\d+ .* running ", table, re.M), table
+        label = re.search(r"^  (robot_state_publisher-\d+) +(\d+) ", table, re.M)
+        result = demo.run("restart", "robot_state_publisher")
+        assert result.returncode == 0 and f"restarting {label.group(1)}" in result.stdout
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline:
+            row = re.search(rf"^  {label.group(1)} +(\d+) .* running +1 ", demo.run("ps").stdout,
+                            re.M)
+            if row:
+                break
+            time.sleep(0.2)
+        assert row and row.group(1) != label.group(2)
+        assert first_line_with(demo, ["topic", "echo", "/tf"], "child_frame_id: left_wheel")
+    finally:
+        proc.send_signal(signal.SIGINT)
+        code = proc.wait(60)
+    assert code == 130
