@@ -5,7 +5,7 @@ from outside, in the same run, for launcher and for real ros2 launch (installed 
 fidelity oracle installs it: `--ros2 DIR`, default .fidelity/ros2):
 
 - the launcher's peak resident memory (sampled every 0.1 s);
-- the bytes the flooders produced, and the lines the log files hold against the lines
+- the bytes the flooders produced, and the flood's lines the log files hold against the lines
   produced (launcher: `launch.log*`, which holds both streams; whole, or lines were lost);
 - the screen: lines shown, lines the launch said it did not show, and the lag from a line's
   writing to its reaching the screen (p50, p99, max).
@@ -109,11 +109,16 @@ def peak_rss(pid: int, done: threading.Event, peaks: list[int]) -> None:
 
 
 def count_lines(paths: list[Path]) -> int:
+    """The flooders' lines the files hold (their own messages aside)."""
     total = 0
     for path in paths:
         with open(path, "rb") as handle:
+            rest = b""
             while block := handle.read(1 << 24):
-                total += block.count(b"\n")
+                block = rest + block
+                cut = block.rfind(b"\n") + 1
+                total += len(LINE.findall(block, 0, cut))
+                rest = block[cut:]
     return total
 
 

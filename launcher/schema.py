@@ -250,6 +250,6 @@ def parse_bytes(text: str, what: str) -> int:
     """A size in bytes from words like `2GiB`, `100MB`, `512k` or `4096` (> 0)."""
     found = _SIZE.match(str(text))
     unit = found.group(2).lower() if found else ""
-    if not found or unit not in _UNITS or float(found.group(1)) <= 0:
+    if not found or unit not in _UNITS or float(found.group(1)) * _UNITS[unit] < 1:
         raise ParseError(f"{what}: expected bytes or a size like 2GiB, got '{text}'")
     return int(float(found.group(1)) * _UNITS[unit])

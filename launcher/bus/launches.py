@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 from typing import Any, NamedTuple
 
-from launcher.bus import discovery, graph
+from launcher.bus import discovery
 from launcher.errors import LaunchError, did_you_mean
 
 LIST = "launcher_interfaces/srv/ListProcesses"
@@ -26,7 +26,7 @@ class Launch(NamedTuple):
 
 
 class Launches:
-    def __init__(self, name: str = "launcher_cli") -> None:
+    def __init__(self, name: str = "_launcher_cli") -> None:
         from launcher.bus.node import Node
         from launcher.bus.session import open_session
 
@@ -40,6 +40,8 @@ class Launches:
     # --- what runs --------------------------------------------------------------------------
     def all(self) -> list[Launch]:
         """Every running launch that answers, ordered by pid."""
+        from launcher.bus import graph  # (Zenoh: the launch imports this module's names)
+
         found = []
         for entity in graph.servers(self.node.session, "", LIST):
             answer = self._ask(LIST, entity.topic, "")

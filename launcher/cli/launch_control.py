@@ -1,7 +1,8 @@
 """A running launch on its graph (runtime/control.py's face): a node of the launch's own,
-`launcher_<pid>`, whose services `launcher ps`, `stop`, `start`, `restart`, `logs` and the
-viewer's processes page call. It is on the graph only, behind the graph's token, as every node
-is; a request that says it comes from another user is refused.
+`_launcher_<pid>` (hidden, as ROS 2 hides a name that begins with `_`), whose services
+`launcher ps`, `stop`, `start`, `restart`, `logs` and the viewer's processes page call. It is
+on the graph only, behind the graph's token, as every node is; a request that says it comes
+from another user is refused.
 
 Its requests arrive on the node's own thread and are answered on the launch's loop (no state
 of the launch is touched elsewhere); a launch busy for more than ANSWER_WAIT, or ending, says
@@ -12,6 +13,7 @@ from __future__ import annotations
 
 import os
 import threading
+import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -27,7 +29,7 @@ MOST_LINES = 5000  # lines one output answer carries at most
 
 
 def node_name(pid: int | None = None) -> str:
-    return f"launcher_{os.getpid() if pid is None else pid}"
+    return f"_launcher_{os.getpid() if pid is None else pid}"
 
 
 class LaunchControl:
@@ -93,13 +95,19 @@ class LaunchControl:
                 box.append((True, work()))
             except Refused as exc:
                 box.append((False, str(exc)))
+            except Exception as exc:  # noqa: BLE001 - a fault of its own: said, the launch on
+                box.append((False, f"internal error: {type(exc).__name__}: {exc}"))
             finally:
                 done.set()
 
-        if not self.control.loop.call_soon_threadsafe(run):
+        if self._closed.is_set() or not self.control.loop.call_soon_threadsafe(run):
             return False, "the launch is ending"
-        if not done.wait(ANSWER_WAIT):
-            return False, f"the launch did not answer within {ANSWER_WAIT:g} s"
+        deadline = time.monotonic() + ANSWER_WAIT
+        while not done.wait(0.1):  # (in slices: the launch's end does not wait on it)
+            if self._closed.is_set():
+                return False, "the launch is ending"
+            if time.monotonic() > deadline:
+                return False, f"the launch did not answer within {ANSWER_WAIT:g} s"
         return box[0]
 
     def _list(self, _request: Any, response: Any) -> Any:

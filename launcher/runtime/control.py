@@ -135,7 +135,8 @@ class ProcessControl:
                 raise Refused(f"'{name}' could not start (see the launch's log)")
             return f"started {name} (pid {process.pid})"
         self.log("INFO", process.shown, "restarted by the user")
-        self.table.restart(process)
+        if not self.table.restart(process):
+            raise Refused(f"'{name}' could not start (see the launch's log)")
         return f"restarting {name}"
 
     # --- the figures --------------------------------------------------------------------------

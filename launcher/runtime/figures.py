@@ -9,9 +9,8 @@ import os
 import time
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import TextIO
 
-from launcher.private import open_private
+from launcher.runtime.logs import DEFAULT_LIMIT, LogFile
 
 PERIOD = 1.0  # seconds between samples
 HEADER = "time,name,pid,cpu_percent,rss_bytes\n"
@@ -46,13 +45,16 @@ def groups(proc: Path = Path("/proc")) -> dict[int, tuple[int, int]]:
 
 
 class Figures:
-    def __init__(self, folder: Path | None, read: Callable[[], dict[int, tuple[int, int]]]
-                 = groups, clock: Callable[[], float] = time.monotonic) -> None:
-        self.read, self.clock = read, clock
+    def __init__(self, folder: Path | None, limit: int = DEFAULT_LIMIT,
+                 read: Callable[[], dict[int, tuple[int, int]]] = groups,
+                 clock: Callable[[], float] = time.monotonic) -> None:
+        """`folder`: the run's log folder (None: no file); `limit`: the size at which the
+        file rotates, as the run's logs do."""
+        self.read, self.clock, self.limit = read, clock, limit
         self.now: dict[int, Figure] = {}  # pid (its group's leader) → its latest figures
         self._before: dict[int, int] = {}  # pid → CPU ticks at the previous sample
         self._when = 0.0
-        self._csv: TextIO | None = None
+        self._csv: LogFile | None = None
         self.path = folder / "processes.csv" if folder is not None else None
 
     def sample(self, processes: Iterable[tuple[str, int]]) -> None:
@@ -60,7 +62,10 @@ class Figures:
         now = self.clock()
         elapsed = now - self._when if self._when else 0.0
         self._when = now
-        table = self.read()
+        try:
+            table = self.read()
+        except OSError:  # (no file descriptor to spare, /proc unreadable: the last ones stay)
+            return
         figures: dict[int, Figure] = {}
         ticks: dict[int, int] = {}
         rows = []
@@ -68,10 +73,10 @@ class Figures:
         for name, pid in processes:
             used, pages = table.get(pid, (0, 0))
             before = self._before.get(pid)
-            cpu = 100.0 * (used - before) / _TICKS / elapsed \
-                if before is not None and elapsed > 0 else 0.0
+            cpu = max(0.0, 100.0 * (used - before) / _TICKS / elapsed) \
+                if before is not None and elapsed > 0 else 0.0  # (a member gone: not < 0)
             ticks[pid] = used
-            figures[pid] = Figure(max(0.0, cpu), pages * _PAGE)
+            figures[pid] = Figure(cpu, pages * _PAGE)
             rows.append(f"{stamp:.3f},{name},{pid},{cpu:.1f},{pages * _PAGE}\n")
         self.now, self._before = figures, ticks
         self._write(rows)
@@ -81,9 +86,9 @@ class Figures:
             return
         try:
             if self._csv is None:
-                self._csv = open_private(self.path, "a", encoding="utf-8")
-                self._csv.write(HEADER)
-            self._csv.writelines(rows)
+                self._csv = LogFile(self.path, self.limit, HEADER)
+            for row in rows:
+                self._csv.write(row)
             self._csv.flush()
         except OSError:  # (a full disk: the figures for ps go on, the file stops)
             self.path = None

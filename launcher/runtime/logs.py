@@ -24,13 +24,14 @@ KEEP = 5  # rotated files kept of each
 
 
 class LogFile:
-    """One log file that rotates at `limit` bytes."""
+    """One log file that rotates at `limit` bytes; each file begins with `header`."""
 
-    def __init__(self, path: Path, limit: int) -> None:
-        self.path, self.limit = path, limit
+    def __init__(self, path: Path, limit: int, header: str = "") -> None:
+        self.path, self.limit, self.header = path, limit, header
         self.handle: TextIO = open_private(path, "a", encoding="utf-8")
         self.size = path.stat().st_size
-        self.written = 0  # bytes written in all (rotated ones too)
+        if not self.size and header:
+            self.write(header)
 
     def write(self, line: str) -> None:
         size = len(line.encode()) if not line.isascii() else len(line)
@@ -38,17 +39,23 @@ class LogFile:
             self._rotate()
         self.handle.write(line)
         self.size += size
-        self.written += size
 
     def _rotate(self) -> None:
+        """The file becomes `.1` (the one before `.2`, …); a rotation the disk refuses
+        leaves the lines going on into the file as it is."""
+        try:
+            for n in range(KEEP - 1, 0, -1):
+                older = self.path.with_name(f"{self.path.name}.{n}")
+                if older.exists():
+                    older.replace(self.path.with_name(f"{self.path.name}.{n + 1}"))
+            self.path.replace(self.path.with_name(f"{self.path.name}.1"))
+            fresh = open_private(self.path, "a", encoding="utf-8")
+        except OSError:
+            return
         self.handle.close()
-        for n in range(KEEP - 1, 0, -1):
-            older = self.path.with_name(f"{self.path.name}.{n}")
-            if older.exists():
-                older.replace(self.path.with_name(f"{self.path.name}.{n + 1}"))
-        self.path.replace(self.path.with_name(f"{self.path.name}.1"))
-        self.handle = open_private(self.path, "a", encoding="utf-8")
-        self.size = 0
+        self.handle, self.size = fresh, 0
+        if self.header:
+            self.write(self.header)
 
     def flush(self) -> None:
         self.handle.flush()

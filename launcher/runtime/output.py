@@ -10,8 +10,10 @@ pass for a line of the launcher's own.
 A launch's printer is `queued` (`start()`): its lines go to a thread that writes them, so a
 screen slower than the processes' output (a terminal, a pipe read slowly) never holds up the
 launch. At most SCREEN_BACKLOG bytes wait; past that, the processes' lines are not shown (the
-log files have them, whole) and, once the screen has caught up, one line says how many were
-not. The launcher's own messages are never dropped.
+log files have those that go to the log too, whole; `launcher logs` has the latest) and, once
+the screen has caught up, one line says how many were not. The launcher's own messages are
+never dropped. A screen that takes nothing for FLUSH_WAIT at the launch's end is let go: what
+still waits is dropped, never written behind the launcher's back.
 """
 
 from __future__ import annotations
@@ -65,9 +67,9 @@ class ScreenQueue:
         self._lines: deque[str] = deque()
         self._size = 0
         self.dropped = 0  # lines not shown since the last word about it
-        self.dropped_all = 0
         self._ready = threading.Condition()
         self._closing = False
+        self._abandoned = False  # (the end waited long enough: nothing more is written)
         self._thread = threading.Thread(target=self._write_all, name="screen", daemon=True)
         self._thread.start()
 
@@ -75,7 +77,6 @@ class ScreenQueue:
         with self._ready:
             if not keep and self._size > SCREEN_BACKLOG:
                 self.dropped += 1
-                self.dropped_all += 1
                 return
             self._lines.append(line)
             self._size += len(line)
@@ -92,9 +93,11 @@ class ScreenQueue:
                 self._lines.clear()
                 self._size = 0
                 dropped, self.dropped = self.dropped, 0
+                if self._abandoned:
+                    return
             if dropped:
                 batch += (f"[launch] {dropped} lines were not shown: the screen could not keep "
-                          "up (the log files have them)\n")
+                          "up (`launcher logs` and the log files keep them)\n")
             try:
                 self.out.write(batch)
                 self.out.flush()
@@ -106,6 +109,9 @@ class ScreenQueue:
             self._closing = True
             self._ready.notify()
         self._thread.join(FLUSH_WAIT)
+        with self._ready:
+            self._abandoned = True
+            self._lines.clear()
 
 
 @dataclass

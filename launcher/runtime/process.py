@@ -281,7 +281,8 @@ class ManagedProcess:
         self.quick += 1
         if self.quick < STORM:
             return delay
-        backed = min(BACKOFF_CAP, max(delay, BACKOFF_FIRST) * 2 ** (self.quick - STORM))
+        doublings = min(self.quick - STORM, 16)  # (past the cap: no use counting on)
+        backed = min(BACKOFF_CAP, max(delay, BACKOFF_FIRST) * 2 ** doublings)
         if self.quick == STORM:
             self._log("WARN", f"process {describe_exit(self.returncode)} within {STABLE:g} s "
                               f"of its start {STORM} times in a row: respawning with a "
@@ -326,6 +327,7 @@ class ManagedProcess:
         if self.state not in (State.EXITED, State.FATAL):
             raise RuntimeError(f"{self.label}: cannot start from {self.state.name}")
         self.held, self._stop_requested, self.quick = False, False, 0
+        self.respawns = 0  # (its respawn_max_retries count from this start, as from the first)
         return self._start_over("start")
 
     # --- stopping ---------------------------------------------------------------------------

@@ -102,20 +102,24 @@ class ProcessTable:
         process.hold()
 
     def start_again(self, process: ManagedProcess) -> bool:
-        """Start a stopped or exited process anew; False when it could not start."""
+        """Start a stopped or exited process anew; False when it could not start, or when the
+        launch is ending or the process runs already (a restart's start, overtaken)."""
+        if self.closing or process.alive:
+            return False
         with self.loop.shielded():
             started = process.start_again()
         if started:
             self.started_again(process)
         return started
 
-    def restart(self, process: ManagedProcess) -> None:
-        """Stop it (its own signal sequence), then start it anew once its group is gone."""
+    def restart(self, process: ManagedProcess) -> bool:
+        """Stop it (its own signal sequence), then start it anew once its group is gone;
+        False when it was not running and could not start."""
         if not process.alive:
-            self.start_again(process)
-            return
+            return self.start_again(process)
         self._restarting.add(id(process))
         process.hold()
+        return True
 
     def escalate(self) -> None:
         for process in self.processes:

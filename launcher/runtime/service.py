@@ -131,21 +131,24 @@ class LaunchService:
                                          .look_for_orphans())
         if self.custody.subreaper:  # and look anyway
             self.loop.call_later(TICK, self._tick)
-        self.printer.start()
-        self.control = ProcessControl(self.table, self.loop, Figures(
-            self.run_log.folder if self.run_log else None), self.recent, self.log)
-        # (on the graph after a moment: a launch over sooner, as a test's `true`, never pays)
-        self.loop.call_later(CONTROL_AFTER, self._open_control)
         try:
+            self.printer.start()
+            figures = Figures(self.run_log.folder, self.run_log.limit) if self.run_log \
+                else Figures(None)
+            self.control = ProcessControl(self.table, self.loop, figures, self.recent,
+                                          self.log)
+            # (on the graph after a moment: a launch over sooner, as `true`, never pays)
+            self.loop.call_later(CONTROL_AFTER, self._open_control)
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
                                            f"{self.run_log.folder}")
             self.schedule([description])
             self.loop.run()
         finally:
-            self.control.close()
-            if self._end_control is not None:
+            if self._end_control is not None:  # (its requests are answered "ending" now)
                 self._end_control()
+            if self.control is not None:
+                self.control.close()
             self.loads.close()
             self.lifecycles.close()
             self.coroutines.close()

@@ -113,7 +113,12 @@ class ProcessesPage:
         from launcher.bus.launches import Launches
         from launcher.errors import LaunchError
 
-        launches = Launches("launcher_viewer")
+        try:
+            launches = Launches("_launcher_viewer")
+        except LaunchError as exc:  # (no graph: said on the page; the next request tries again)
+            with self._lock:
+                self._said, self._thread = f"cannot reach the graph: {exc.message}", None
+            return
         while True:
             try:
                 item = self._work.get(timeout=REFRESH)
@@ -125,7 +130,9 @@ class ProcessesPage:
                 try:
                     listing = [shown(launch) for launch in launches.all()]
                 except LaunchError as exc:
-                    listing, self._said = [], exc.message
+                    listing = []
+                    with self._lock:
+                        self._said = exc.message
                 with self._lock:
                     self._listing = listing
 

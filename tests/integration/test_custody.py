@@ -5,6 +5,7 @@ checked for leftovers by the test's marker."""
 
 from __future__ import annotations
 
+import contextlib
 import os
 import random
 import re
@@ -12,6 +13,7 @@ import signal
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import psutil
 import pytest
@@ -225,6 +227,23 @@ def test_a_shell_hook_that_never_ends_is_stopped_located_and_leaves_nothing(hook
     no_leftovers(hooked, 5)
 
 
+def stuck(pid: int) -> str:
+    """A running launcher's signal masks, and each of its threads' name and kernel wait."""
+    words = []
+    with contextlib.suppress(OSError):
+        status = Path(f"/proc/{pid}/status").read_text()
+        words += re.findall(r"^(?:SigPnd|ShdPnd|SigBlk|SigIgn|SigCgt):\s*\S+", status, re.M)
+    with contextlib.suppress(OSError):
+        for task in sorted(os.listdir(f"/proc/{pid}/task")):
+            base = Path(f"/proc/{pid}/task/{task}")
+            with contextlib.suppress(OSError):
+                words.append(f"thread {task} {(base / 'comm').read_text().strip()} waits in "
+                             f"{(base / 'wchan').read_text().strip()} "
+                             f"({(base / 'status').read_text().split('SigBlk:')[1].split()[0]}"
+                             " blocked)")
+    return "\n".join(words)
+
+
 def test_a_signal_during_start_up_exits_cleanly(ws):
     """Signals in the launcher's first half second (importing, loading, starting the router
     and the processes): the status a shell expects, no traceback, nothing left. (From the
@@ -242,7 +261,14 @@ def test_a_signal_during_start_up_exits_cleanly(ws):
         handles_signals(proc.pid)
         time.sleep(rng.uniform(0, 0.5))
         proc.send_signal(sig)
-        assert proc.wait(30) == 128 + sig, (attempt, ws.output("stderr.txt"))
+        try:
+            code = proc.wait(30)
+        except subprocess.TimeoutExpired:  # a lost signal: what the launcher was doing
+            state = stuck(proc.pid)
+            proc.kill()
+            raise AssertionError(f"attempt {attempt}: {sig.name} lost\n{state}\n"
+                                 f"{launcher_text(ws)}") from None
+        assert code == 128 + sig, (attempt, ws.output("stderr.txt"))
         text = launcher_text(ws)
         assert "Traceback" not in text and "KeyboardInterrupt" not in text, text
         no_leftovers(ws)
