@@ -60,9 +60,9 @@ from launch.actions import ExecuteProcess
 
 def generate_launch_description():
     return LaunchDescription([
-        ExecuteProcess(cmd=[{py!r}, {flooder!r}, "1", {seconds!r}, {out_count!r}],
+        ExecuteProcess(cmd=[{py!r}, {flooder!r}, "1", "{seconds}", {out_count!r}],
                        output="both", name="flood_out"),
-        ExecuteProcess(cmd=[{py!r}, {flooder!r}, "2", {seconds!r}, {err_count!r}],
+        ExecuteProcess(cmd=[{py!r}, {flooder!r}, "2", "{seconds}", {err_count!r}],
                        output="log", name="flood_err"),
     ])
 """
@@ -154,6 +154,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=20.0)
     parser.add_argument("--ros2", type=Path, default=REPO / ".fidelity" / "ros2")
+    parser.add_argument("--only", choices=("launcher", "ros2"), default=None,
+                        help="measure one of the two")
     args = parser.parse_args()
     folder = Path(tempfile.mkdtemp(prefix="launcher-bench-logs-"))
     flooder = folder / "flooder.py"
@@ -166,15 +168,16 @@ def main() -> None:
         (folder / "flood.launch.yaml").write_text(LAUNCHER_FILE.format(
             **form, out_count=folder / "launcher-out.count",
             err_count=folder / "launcher-err.count"))
-        results["launcher"] = run(
-            "launcher", [*launcher_cmd(), "launch", "-n", "--log-max-size", "1TiB",
-                         "flood.launch.yaml"], env, folder, args.seconds,
-            lambda: count_lines(sorted((folder / "log").glob("*-*/launch.log*"))))
+        if args.only != "ros2":
+            results["launcher"] = run(
+                "launcher", [*launcher_cmd(), "launch", "-n", "--log-max-size", "1TiB",
+                             "flood.launch.yaml"], env, folder, args.seconds,
+                lambda: count_lines(sorted((folder / "log").glob("*-*/launch.log*"))))
         shutil.rmtree(folder / "log", ignore_errors=True)
         python = args.ros2 / "bin" / "python"
-        if python.exists():
+        if python.exists() and args.only != "launcher":
             (folder / "flood.launch.py").write_text(ROS2_FILE.format(
-                **form, flooder=str(flooder), out_count=str(folder / "ros2-out.count"),
+                **{**form, "flooder": str(flooder)}, out_count=str(folder / "ros2-out.count"),
                 err_count=str(folder / "ros2-err.count")))
             results["ros2 launch"] = run(
                 "ros2", [str(python), str(args.ros2 / "drive.py"),
@@ -194,10 +197,10 @@ def main() -> None:
             (f"{who}: screen lag p50 / p99 / max (s)", "-",
              f"{r['lag50']:.3f} / {r['lag99']:.3f} / {r['lagmax']:.3f}"),
         ]
-    if "ros2 launch" in results:
+    if "ros2 launch" in results and "launcher" in results:
         rows.append(("peak RSS, launcher / ros2 launch", "-",
                      f"{results['launcher']['rss'] / max(results['ros2 launch']['rss'], 1):.2f}"))
-    else:
+    elif "ros2 launch" not in results:
         rows.append(("ros2 launch", "-", f"not installed at {args.ros2}: no anchor this run"))
     table(f"Logs under a flood: two flooders for {args.seconds:g} s, stdout on the screen "
           "and in the log", rows)
