@@ -134,7 +134,8 @@ class TypeRegistry:
         if name not in available and name.endswith("_Event") and "/srv/" in name:
             return self.service_event(name.removesuffix("_Event"))  # introspection's events
         if name not in available and not self._from_package(name):
-            raise UnknownType(f"unknown message type '{name}'{did_you_mean(name, available)}")
+            known = [*available, *self._package_types(name)]
+            raise UnknownType(f"unknown message type '{name}'{did_you_mean(name, known)}")
         needed: dict[str, Any] = {}
         self._collect(name, available, needed)
         self.fielddefs.update(needed)
@@ -175,6 +176,20 @@ class TypeRegistry:
             for service in (f"{name}_SendGoal", f"{name}_GetResult"):
                 self.services[service] = interfaces.service_hash_definitions(service)
         return True
+
+    def _package_types(self, name: str) -> list[str]:
+        """The types `pkg/kind/…` a package of the index has (read or not yet): what an
+        unknown name of it may have meant."""
+        parts = name.split("/")
+        index = self.package_index()
+        if len(parts) != 3 or parts[0] not in index:
+            return []
+        folder = index.share(parts[0]) / parts[1]
+        try:
+            return [f"{parts[0]}/{parts[1]}/{path.stem}" for path in folder.iterdir()
+                    if path.suffix == f".{parts[1]}"]
+        except OSError:
+            return []
 
     def _ros1_action(self, name: str, index: Any) -> bool:
         """A ROS 1 action's messages (`pkg/msg/FibonacciActionGoal`, …) made from the

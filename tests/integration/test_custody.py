@@ -118,9 +118,9 @@ def test_a_launch_that_ends_stops_what_its_processes_left_running(ws):
     ws.write("daemon.py", DAEMON)
     ws.write("gone.launch.yaml", f"""
     launch:
-      - executable: {{cmd: "sh -c 'setsid sleep 120 & sleep 0.5'"}}
-      - executable: {{cmd: "sh -c '{PY} daemon.py; sleep 0.5'"}}
-    """)  # (the pauses: the daemons have left the group when it ends)
+      - executable: {{cmd: "sh -c 'setsid sleep 120 & sleep 2'"}}
+      - executable: {{cmd: "sh -c '{PY} daemon.py; sleep 2'"}}
+    """)  # (the pauses: the daemons have left the group when it ends, under load too)
     result = ws.run("launch", "gone.launch.yaml")
     assert result.returncode == 0, result.stdout + result.stderr
     assert "2 process(es) that the launch's processes left behind still run" in result.stdout

@@ -346,3 +346,16 @@ def test_triggered_publisher_mistakes_are_located(change, expected):
         expected = "needs <input"
     with pytest.raises(SpawnError, match=rf"<string>:\d+: .*{expected}"):
         spawn(world, text)
+
+
+def test_an_unknown_type_of_a_package_is_matched_against_all_its_types_read_or_not():
+    """(In a fresh interpreter: a suggestion must not depend on the types read before.)"""
+    import subprocess
+    import sys
+
+    said = subprocess.run([sys.executable, "-c", (
+        "from launcher.bus.types import registry\n"
+        "try:\n    registry().message_class('mujoco_sim/msg/Bolean')\n"
+        "except Exception as exc:\n    print(exc)")], capture_output=True, text=True,
+        timeout=60).stdout
+    assert "did you mean 'mujoco_sim/msg/Boolean'" in said, said
