@@ -17,6 +17,7 @@ import _signal
 import posix
 
 _running = False  # main() has begun: from then on a signal raises, to be caught there
+_raised = False  # one has been raised: the command is ending because of it
 
 
 class _Interrupted(KeyboardInterrupt):  # launcher.errors.Interrupted, before it can be imported
@@ -26,8 +27,12 @@ class _Interrupted(KeyboardInterrupt):  # launcher.errors.Interrupted, before it
 
 
 def _interrupt(signum: int, _frame: object) -> None:
+    global _raised
     if not _running:  # still importing this module: nothing to clean up yet
         posix._exit(128 + signum)
+    if _raised:  # one is on its way up already: raised again it could land in main()'s own
+        _leave(signum, _frame)  # handling of the first and escape it; this one ends it now
+    _raised = True
     raise _Interrupted(signum)
 
 

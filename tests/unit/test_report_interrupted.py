@@ -74,3 +74,25 @@ def test_a_signal_raised_where_python_cannot_raise_is_sent_again_not_lost(raiser
                           capture_output=True, text=True, timeout=30, cwd=REPO)
     assert done.stdout.strip() == "INTERRUPTED 2", done.stdout + done.stderr
     assert "Traceback" not in done.stderr and "Exception ignored" not in done.stderr
+
+
+SECOND_SIGNAL = """
+import signal
+from launcher.cli import entry
+entry._running = True
+try:
+    entry._interrupt(signal.SIGTERM, None)  # the first: raised, to end the command
+except KeyboardInterrupt:
+    print("the first raised", flush=True)
+    entry._interrupt(signal.SIGINT, None)  # the next, inside its handling: ends it now
+print("not reached", flush=True)
+"""
+
+
+def test_a_second_signal_while_the_first_is_handled_ends_the_command_with_its_status():
+    """Raised again, it could land in main()'s own handling of the first and escape it (the
+    interpreter would then die by the signal, not exit with its status)."""
+    done = subprocess.run([sys.executable, "-c", SECOND_SIGNAL], capture_output=True, text=True,
+                          timeout=60, cwd=REPO)
+    assert done.returncode == 130, done.stderr
+    assert done.stdout == "the first raised\n"
