@@ -218,6 +218,9 @@ def one(kind: str, fault: str, rng: random.Random, base: Path,
             outcome = "hang"
             proc.kill()
             details = proc.communicate()[1][-1500:]
+        except BaseException:  # the campaign stopped while it waited: its launch goes too
+            proc.send_signal(signal.SIGINT)
+            raise
     deadline = time.monotonic() + SETTLE
     left = carrying(tag)
     while left and time.monotonic() < deadline:
@@ -280,6 +283,7 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=56)
     args = parser.parse_args()
     signal.signal(signal.SIGINT, signal.default_int_handler)  # (launches get it at default)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # (its launch goes too)
     table(f"The fault campaign: {args.runs} runs", campaign(args.runs, args.seed))
 
 
