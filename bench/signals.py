@@ -47,6 +47,10 @@ launch:
            args: "--frame-id a --child-frame-id b", sigterm_timeout: 0.5}
 """
 RUN_VARIABLE = "BENCH_SIGNAL_RUN"
+LOST = "lost (still running)"
+DOCUMENTED = "exited as documented"
+BY_SIGNAL = "ended by the signal itself (before its handlers)"
+BY_PYTHON = "ended by Python's own start-up error (before its handlers)"
 
 
 def hog() -> subprocess.Popen:
@@ -117,9 +121,11 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
         _, err = proc.communicate(timeout=wait)
         code = proc.returncode
         if code in (-sig,) and early:
-            outcome = "ended by the signal itself (before its handlers)"
+            outcome = BY_SIGNAL
+        elif code == 1 and early and "Fatal Python error" in err:
+            outcome = BY_PYTHON
         elif code == 128 + sig:
-            outcome = "exited as documented"
+            outcome = DOCUMENTED
         else:
             outcome = f"exited {code}: not as documented"
             details = err[-2000:]
@@ -127,7 +133,7 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
         if not isinstance(exc, subprocess.TimeoutExpired):  # the bench stopped while it
             proc.kill()  # waited: the launch goes with it
             raise
-        outcome = "lost (still running)"
+        outcome = LOST
         details = (f"signal {signal.Signals(sig).name} at {delay:.3f} s\n"
                    f"{signal_state(proc.pid)}\n{stacks(proc.pid)}")
         proc.kill()
@@ -180,7 +186,7 @@ def main() -> None:
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
         shutil.rmtree(folder, ignore_errors=True)
     runs = sum(outcomes.values())
-    lost = outcomes["lost (still running)"]
+    lost = outcomes[LOST]
     wrong = sum(v for k, v in outcomes.items() if k.startswith("exited ") and
                 "not as documented" in k)
     table(f"The lost signal: {runs} launches signalled in their first second, "
@@ -189,9 +195,10 @@ def main() -> None:
               ("lost signals", "0", f"{lost}"),
               ("processes left running", "0", f"{left_total}"),
               ("exit status not as documented", "0", f"{wrong}"),
-              ("exited 130/143 as documented", "-", f"{outcomes['exited as documented']}"),
-              ("ended by the signal before its handlers", "-",
-               f"{outcomes['ended by the signal itself (before its handlers)']}"),
+              ("exited 130/143 as documented", "-", f"{outcomes[DOCUMENTED]}"),
+              ("ended by the signal before its handlers", "-", f"{outcomes[BY_SIGNAL]}"),
+              ("ended by Python's start-up error before its handlers (1)", "-",
+               f"{outcomes[BY_PYTHON]}"),
           ])
 
 

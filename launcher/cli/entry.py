@@ -68,9 +68,12 @@ sys.unraisablehook = _unraisable
 @atexit.register  # registered first, so it runs last, just before Python's own teardown
 def _hold_signals() -> None:
     """The command is done and the status decided: the interpreter's teardown resets the
-    handlers, and a signal landing after that would end the process by the signal, not with
-    the status. So they are held (blocked) from here to the exit."""
-    _signal.pthread_sigmask(_signal.SIG_BLOCK, {_signal.SIGINT, _signal.SIGTERM})
+    handlers it set to their defaults, and a signal landing after that would end the process
+    by the signal, not with the status. So they are ignored from here to the exit: the
+    teardown leaves an ignored signal ignored, and an ignored signal is ignored in every
+    thread (a mask would hold it in this thread alone, and Zenoh's threads would take it)."""
+    for sig in (_signal.SIGINT, _signal.SIGTERM):
+        _signal.signal(sig, _signal.SIG_IGN)
 
 
 def _leave(signum: int, _frame: object) -> None:
