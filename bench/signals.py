@@ -182,8 +182,6 @@ def main() -> None:
     finally:
         for each in hogs:
             each.kill()
-        subprocess.run([*launcher_cmd(), "router", "stop"], env=env,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
         shutil.rmtree(folder, ignore_errors=True)
     runs = sum(outcomes.values())
     lost = outcomes[LOST]
