@@ -147,6 +147,14 @@ def descendants(pid: int) -> list[psutil.Process]:
         return []
 
 
+def parent(proc: psutil.Process) -> int:
+    """Its parent's pid; -1 once it is gone."""
+    try:
+        return proc.ppid()
+    except psutil.Error:
+        return -1
+
+
 @contextlib.contextmanager
 def small_disk(folder: Path):
     """A 256 KiB tmpfs, filled up, as the log folder's disk."""
@@ -180,32 +188,36 @@ def one(kind: str, fault: str, rng: random.Random, base: Path,
             run_env["LAUNCHER_LOG_DIR"] = str(stack.enter_context(small_disk(folder)) / "log")
         proc = subprocess.Popen(argv, cwd=folder, env=run_env, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.PIPE, text=True, start_new_session=True)
-        time.sleep(rng.uniform(0.2, 4.0))
-        # (a launch over before its fault: 0 or 1, as it ended; else the fault's status, or 1
-        # when a failure of its own had begun its shutdown)
-        expected = {0, 1} if proc.poll() is not None else {1}
-        if fault in ("SIGINT", "SIGTERM", "SIGKILL"):
-            sig = getattr(signal, fault)
-            proc.send_signal(sig)
-            expected |= {-9} if sig == signal.SIGKILL else {128 + sig}
-        elif fault.startswith("Ctrl-C"):
-            for _ in range(2 if fault == "Ctrl-C twice" else 3):
+        try:  # (the campaign stopped while it applied the fault: its launch goes too)
+            time.sleep(rng.uniform(0.2, 4.0))
+            # (a launch over before its fault: 0 or 1, as it ended; else the fault's status, or 1
+            # when a failure of its own had begun its shutdown)
+            expected = {0, 1} if proc.poll() is not None else {1}
+            if fault in ("SIGINT", "SIGTERM", "SIGKILL"):
+                sig = getattr(signal, fault)
+                proc.send_signal(sig)
+                expected |= {-9} if sig == signal.SIGKILL else {128 + sig}
+            elif fault.startswith("Ctrl-C"):
+                for _ in range(2 if fault == "Ctrl-C twice" else 3):
+                    proc.send_signal(signal.SIGINT)
+                    time.sleep(rng.uniform(0, 0.5))
+                expected |= {130}
+            elif fault.startswith("kill a"):
+                below = descendants(proc.pid)
+                deep = [p for p in below if parent(p) not in (proc.pid, -1)] \
+                    if "grand" in fault else [p for p in below if parent(p) == proc.pid]
+                if deep:
+                    with contextlib.suppress(psutil.Error):
+                        rng.choice(deep).kill()
+                time.sleep(rng.uniform(0, 1.0))
                 proc.send_signal(signal.SIGINT)
-                time.sleep(rng.uniform(0, 0.5))
-            expected |= {130}
-        elif fault.startswith("kill a"):
-            below = descendants(proc.pid)
-            deep = [p for p in below if p.ppid() != proc.pid] if "grand" in fault else \
-                [p for p in below if p.ppid() == proc.pid]
-            if deep:
-                with contextlib.suppress(psutil.Error):
-                    rng.choice(deep).kill()
-            time.sleep(rng.uniform(0, 1.0))
+                expected |= {130}
+            else:  # a condition, not a moment: the launch meets it, then Ctrl-C
+                proc.send_signal(signal.SIGINT)
+                expected |= {130}
+        except BaseException:
             proc.send_signal(signal.SIGINT)
-            expected |= {130}
-        else:  # a condition, not a moment: the launch meets it, then Ctrl-C
-            proc.send_signal(signal.SIGINT)
-            expected |= {130}
+            raise
         details = ""
         try:
             _, err = proc.communicate(timeout=HANG)
@@ -218,7 +230,7 @@ def one(kind: str, fault: str, rng: random.Random, base: Path,
             outcome = "hang"
             proc.kill()
             details = proc.communicate()[1][-1500:]
-        except BaseException:  # the campaign stopped while it waited: its launch goes too
+        except BaseException:  # (as above)
             proc.send_signal(signal.SIGINT)
             raise
     deadline = time.monotonic() + SETTLE
