@@ -92,6 +92,12 @@ def signal_state(pid: int) -> str:
                                re.M))
 
 
+def launch_log(folder: Path, pid: int) -> str:
+    """The end of the launch's own log (it flushes it every half second)."""
+    found = sorted(folder.glob(f"log/*-{pid}/launch.log"))
+    return found[0].read_text()[-3000:] if found else "(no log)"
+
+
 def stacks(pid: int) -> str:
     spy = shutil.which("py-spy")
     if spy is None:
@@ -135,7 +141,8 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
             raise
         outcome = LOST
         details = (f"signal {signal.Signals(sig).name} at {delay:.3f} s\n"
-                   f"{signal_state(proc.pid)}\n{stacks(proc.pid)}")
+                   f"{signal_state(proc.pid)}\n{stacks(proc.pid)}\nits log:\n"
+                   f"{launch_log(folder, proc.pid)}")
         proc.kill()
         details += "\nits stderr:\n" + proc.communicate()[1][-3000:]
     deadline = time.monotonic() + 5.0  # (a SIGKILLed launcher's watchdog takes a moment)

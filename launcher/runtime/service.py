@@ -42,6 +42,7 @@ from launcher.runtime.system import Processes, System
 from launcher.runtime.timers import LaunchTimers
 
 CONTROL_AFTER = 1.0  # seconds into a launch at which it answers on the graph (launcher ps)
+FLUSH = 0.5  # seconds between flushes of the run's log files
 
 
 class LaunchService:
@@ -139,6 +140,7 @@ class LaunchService:
                                           self.log)
             # (on the graph after a moment: a launch over sooner, as `true`, never pays)
             self.loop.call_later(CONTROL_AFTER, self._open_control)
+            self.loop.call_later(FLUSH, self._flush_logs)
             if self.run_log is not None:
                 self.log("INFO", "launch", f"All log files can be found below "
                                            f"{self.run_log.folder}")
@@ -185,6 +187,13 @@ class LaunchService:
             return
         self.table.look_for_orphans()
         self.loop.call_later(TICK, self._tick)
+
+    def _flush_logs(self) -> None:
+        """What the run's log holds reaches its files every FLUSH seconds: a launcher that
+        is killed leaves its log behind, all but its last moments."""
+        if self.run_log is not None and not self.ending.finished:
+            self.run_log.flush()
+            self.loop.call_later(FLUSH, self._flush_logs)
 
     # --- visiting actions -------------------------------------------------------------------
     def schedule(self, actions: Sequence[Any]) -> None:
