@@ -284,3 +284,18 @@ def test_plot_of_a_run_without_figures_says_so(ws):
     assert result.returncode == 1
     assert f"cannot read {ws.root}/processes.csv" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_the_run_s_log_reaches_its_file_while_the_launch_runs(ws):
+    """(A launcher that is killed leaves its log behind, all but its last half second.)"""
+    proc = started(ws)
+    try:
+        folder = next((ws.root / "log").glob("*-*"))
+        deadline = time.monotonic() + 10
+        while "[ticker-1] tick 3" not in (folder / "launch.log").read_text():
+            assert time.monotonic() < deadline, (folder / "launch.log").read_text()
+            time.sleep(0.1)
+    finally:
+        proc.kill()  # (no orderly end: what is in the file is what was flushed)
+        proc.wait(10)
+    assert "[ticker-1] hello from" in (folder / "launch.log").read_text()
