@@ -41,37 +41,13 @@ import psutil
 from _harness import launcher_cmd, table
 
 REPO = Path(__file__).resolve().parent.parent
-PY = sys.executable
+sys.path.insert(0, str(REPO))  # (the children that resist, shared with the custody tests)
+from tests.support.resisting import DAEMON, STUBBORN, children_launch  # noqa: E402
+
 TAG = "BENCH_CAMPAIGN_TAG"
 HANG = 60.0  # seconds after its fault a launcher may take to exit
 SETTLE = 10.0  # seconds its watchdog may take to end what a SIGKILLed launcher left
 
-DAEMON = """
-import os, time
-if os.fork():
-    os._exit(0)
-os.setsid()
-if os.fork():
-    os._exit(0)
-time.sleep(120)
-"""
-STUBBORN = """
-import signal, sys, time
-for name in sys.argv[1:]:
-    signal.signal(getattr(signal, name), signal.SIG_IGN)
-time.sleep(120)
-"""
-KINDS = {
-    "sleeper": "sleep 120",
-    "setsid": "sh -c 'setsid sleep 120 & sleep 120'",
-    "job control": "sh -c 'set -m; sleep 120 & sleep 120'",
-    "daemon": f"{PY} daemon.py",
-    "ignores SIGINT": f"{PY} stubborn.py SIGINT",
-    "ignores both": f"{PY} stubborn.py SIGINT SIGTERM",
-    "crash": "sh -c 'sleep 0.2; kill -SEGV $$'",
-    "fails": "sh -c 'sleep 0.2; exit 3'",
-    "respawn storm": "sh -c 'sleep 120 & exit 0'",
-}
 LAUNCH_TEST = """
 import unittest
 import launch
@@ -96,21 +72,10 @@ FAULTS = ("SIGINT", "SIGTERM", "SIGKILL", "Ctrl-C twice", "Ctrl-C three times",
           "memory pressure")
 
 
-def children_launch(rng: random.Random) -> str:
-    lines = ["launch:"]
-    for _ in range(rng.randint(1, 12)):
-        kind = rng.choice(list(KINDS))
-        cmd = KINDS[kind].replace('"', '\\"')
-        extra = ", respawn: true, respawn_delay: 0" if kind == "respawn storm" else ""
-        lines.append(f'  - executable: {{cmd: "{cmd}", sigterm_timeout: 0.5, '
-                     f'sigkill_timeout: 0.5{extra}}}')
-    return "\n".join(lines) + "\n"
-
-
 def command(kind: str, folder: Path, rng: random.Random, prefix: str) -> list[str]:
     """The launcher's command line for a launch of `kind`."""
     if kind == "children":
-        (folder / "c.launch.yaml").write_text(children_launch(rng))
+        (folder / "c.launch.yaml").write_text(children_launch(rng, most=12, timeout=0.5))
         return [*launcher_cmd(), "launch", "-n", "c.launch.yaml"]
     if kind in ("demo", "lockstep"):
         name = "robot.launch.yaml" if kind == "demo" else "robot_lockstep.launch.yaml"

@@ -8,6 +8,7 @@ import sys
 import time
 
 from launcher.bus.launches import Launches
+from launcher.cli.process_command import add_process
 
 FOLLOW = 0.2  # seconds between asks of -f
 
@@ -16,13 +17,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.description = ("Print one process's output from a running launch: the latest lines "
                           "the launch keeps (2,000 at most); with -f, then what it prints next, "
                           "until Ctrl-C.")
-    parser.add_argument("name", metavar="NAME",
-                        help="the process: its label (talker-1), or its node's or executable's "
-                             "name when that names one process")
+    add_process(parser)
     parser.add_argument("-f", "--follow", action="store_true",
                         help="keep printing what it prints")
-    parser.add_argument("--launch", default=None, metavar="LAUNCH",
-                        help="the launch, when several run (its file's name, or its pid)")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -19,6 +19,11 @@ HELP = {"stop": "Stop one process of a running launch, as the launch stops it (S
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     verb = parser.prog.split()[-1]
     parser.description = HELP.get(verb)
+    add_process(parser)
+
+
+def add_process(parser: argparse.ArgumentParser) -> None:
+    """NAME and --launch: one process of the running launches (logs takes them too)."""
     parser.add_argument("name", metavar="NAME",
                         help="the process: its label (talker-1), or its node's or executable's "
                              "name when that names one process")

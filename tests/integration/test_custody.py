@@ -20,20 +20,12 @@ import pytest
 
 from tests.support.packages import make_tree, manifest
 from tests.support.processes import launcher_argv, tagged_processes
+from tests.support.resisting import DAEMON, STUBBORN, children_launch
 from tests.support.workspace import Workspace
 
 PY = sys.executable
 
 # Each of these leaves its process group or session, or double-forks, and sleeps.
-DAEMON = """
-import os, time
-if os.fork():
-    os._exit(0)
-os.setsid()
-if os.fork():
-    os._exit(0)
-time.sleep(120)
-"""
 GRANDCHILD_SETPGID = ("import os, subprocess, time; subprocess.Popen(['python3', '-c', "
                       "'import os, time; os.setpgid(0, 0); time.sleep(120)']); time.sleep(120)")
 ESCAPES = f"""
@@ -376,36 +368,6 @@ def test_a_signal_during_a_failure_s_shutdown_keeps_its_status(ws):
 
 
 # --- the fault campaign ---------------------------------------------------------------------
-STUBBORN = """
-import signal, sys, time
-for name in sys.argv[1:]:
-    signal.signal(getattr(signal, name), signal.SIG_IGN)
-time.sleep(120)
-"""
-KINDS = {
-    "sleeper": "sleep 120",
-    "setsid": "sh -c 'setsid sleep 120 & sleep 120'",
-    "job control": "sh -c 'set -m; sleep 120 & sleep 120'",
-    "daemon": f"{PY} daemon.py",
-    "ignores SIGINT": f"{PY} stubborn.py SIGINT",
-    "ignores both": f"{PY} stubborn.py SIGINT SIGTERM",
-    "crash": "sh -c 'sleep 0.1; kill -SEGV $$'",
-    "fails": "sh -c 'exit 3'",
-    "respawn storm": "sh -c 'sleep 120 & exit 0'",
-}
-
-
-def campaign_launch(rng: random.Random) -> str:
-    lines = ["launch:"]
-    for _ in range(rng.randint(1, 20)):
-        kind = rng.choice(list(KINDS))
-        cmd = KINDS[kind].replace('"', '\\"')
-        extra = ", respawn: true, respawn_delay: 0" if kind == "respawn storm" else ""
-        lines.append(f'  - executable: {{cmd: "{cmd}", sigterm_timeout: 0.3, '
-                     f'sigkill_timeout: 0.3{extra}}}')
-    return "\n".join(lines) + "\n"
-
-
 @pytest.mark.parametrize("part", range(4))
 def test_fault_campaign_leaves_nothing_behind(tmp_path_factory, part):
     """120 runs in four parts of 30 (which pytest-xdist's workers take side by side): a
@@ -421,7 +383,7 @@ def test_fault_campaign_leaves_nothing_behind(tmp_path_factory, part):
         ws.root.mkdir()
         ws.write("daemon.py", DAEMON)
         ws.write("stubborn.py", STUBBORN)
-        ws.write("campaign.launch.yaml", campaign_launch(rng))
+        ws.write("campaign.launch.yaml", children_launch(rng, most=20, timeout=0.3))
         proc = ws.start("launch", "campaign.launch.yaml")
         fault = rng.choice(list(faults))
         if fault != "SIGKILL":
