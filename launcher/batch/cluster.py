@@ -70,8 +70,9 @@ class Cluster:
         import ray
 
         # (joined from a thread, to bound the wait: Ray then says it set no SIGTERM handler,
-        # which the batch sets itself)
-        logging.getLogger("ray").addFilter(
+        # which the batch sets itself; said by its worker module's own logger, whose records
+        # reach the "ray" logger's handlers without its filters)
+        logging.getLogger("ray._private.worker").addFilter(
             lambda record: "SIGTERM handler is not set" not in record.getMessage())
         limit = float(os.environ.get(CONNECT_VARIABLE, "30"))
         failure: list[BaseException] = []

@@ -33,7 +33,7 @@ from launcher.runtime.custody import Custody
 def run_batch(batch: BatchFile, jobs: list[Job], store: ResultsStore, address: str | None,
               workspace: Workspace, args: argparse.Namespace) -> int:
     with _cluster(address, workspace.runtime_env(batch)) as cluster:
-        _interruptible()  # (after Ray's start: ray.init sets a SIGTERM handler of its own)
+        received = _interruptible()  # (after Ray's start: ray.init sets a SIGTERM handler)
         started = time.monotonic()
         nodes = cluster.nodes()
         check_resources(batch, [job.plan for job in jobs], nodes, cluster.where)
@@ -43,8 +43,8 @@ def run_batch(batch: BatchFile, jobs: list[Job], store: ResultsStore, address: s
         results = runner.run(jobs)
         _report(batch, store, [job.plan for job in jobs], results,
                 time.monotonic() - started, len(nodes), args)
-    if runner.interrupted is not None:
-        return 128 + getattr(runner.interrupted, "signum", 2)
+    if runner.interrupted is not None:  # (Ray's waits raise a KeyboardInterrupt of their own)
+        return 128 + (received[0] if received else 2)
     passed = all(r.status is Status.PASS for r in results.values())
     print(f"results: {folder}/" + ("" if passed else "; rerun the failures with "
                                                    "--rerun-failed"))
@@ -84,12 +84,19 @@ def _cores() -> int:
         return os.cpu_count() or 1
 
 
-def _interruptible() -> None:
+def _interruptible() -> list[int]:
+    """SIGINT and SIGTERM raise Interrupted; the signals received, in order. (Ray's waits
+    turn an interrupt raised inside them into a KeyboardInterrupt of their own, without the
+    signal's number: the exit status comes from this list.)"""
+    received: list[int] = []
+
     def interrupt(signum: int, _frame: object) -> None:
+        received.append(signum)
         raise Interrupted(signum)
 
     signal.signal(signal.SIGINT, interrupt)
     signal.signal(signal.SIGTERM, interrupt)
+    return received
 
 
 def _begin(store: ResultsStore) -> Path:

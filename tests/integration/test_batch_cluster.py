@@ -163,6 +163,23 @@ def test_ctrl_c_cancels_the_jobs_on_every_node_and_leaves_nothing(bws):
     assert not bws.jobs_on("head") and not bws.jobs_on("w1")
 
 
+def test_sigterm_cancels_the_jobs_and_exits_143_though_rays_wait_took_it(bws):
+    bws.write("jobs:\n  - test: stuck_test.py\nseeds: 2\n")
+    batch = bws.start()
+    bws.wait_for_jobs(batch, "head", "w1")
+    batch.send_signal(signal.SIGTERM)
+    _, err = batch.communicate(timeout=60)
+    assert batch.returncode == 143, err
+    assert {r["status"] for r in bws.results()} == {"cancelled"}
+
+
+def test_joining_the_cluster_says_nothing_of_rays_own_signal_handlers(bws):
+    bws.write("jobs:\n  - test: chatter_test.py\n", CHATTER_LISTEN="0.3")
+    done = bws.run()
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "SIGTERM handler" not in done.stderr, done.stderr
+
+
 def test_a_run_in_lockstep_gives_the_same_state_on_either_node_and_again(bws):
     states = []
     for node in ("head", "w1", "head"):
