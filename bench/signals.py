@@ -122,6 +122,7 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
         time.sleep(0.002)
     early = early and not catches_term(proc.pid)
     proc.send_signal(sig)
+    sent_at = time.time()  # (to set beside its log's times)
     details = ""
     try:
         _, err = proc.communicate(timeout=wait)
@@ -140,7 +141,7 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
             proc.kill()  # waited: the launch goes with it
             raise
         outcome = LOST
-        details = (f"signal {signal.Signals(sig).name} at {delay:.3f} s\n"
+        details = (f"signal {signal.Signals(sig).name} at {delay:.3f} s (at {sent_at:.4f})\n"
                    f"{signal_state(proc.pid)}\n{stacks(proc.pid)}\nits log:\n"
                    f"{launch_log(folder, proc.pid)}")
         proc.kill()

@@ -18,6 +18,7 @@ import posix
 
 _running = False  # main() has begun: from then on a signal raises, to be caught there
 _raised = False  # one has been raised: the command is ending because of it
+_unacted: list = []  # (signum, file:line) of each raised, until a launch's loop takes them
 
 
 class _Interrupted(KeyboardInterrupt):  # launcher.errors.Interrupted, before it can be imported
@@ -33,9 +34,21 @@ def _interrupt(signum: int, _frame: object) -> None:
     if _raised:  # one is on its way up already: raised again it could land in main()'s own
         _leave(signum, _frame)  # handling of the first and escape it; this one ends it now
     _raised = True
+    where = f"{_frame.f_code.co_filename}:{_frame.f_lineno}" if _frame is not None else "?"
+    _unacted.append((signum, where))
     raise _Interrupted(signum)
 
 
+def _take_raised() -> list:
+    """The signals raised so far, taken by a launch's event loop as it takes the signals over:
+    a launch that is about to run although one was raised has had it swallowed on its way up
+    (a user's `except BaseException:` in a launch file, a library's), and acts on it now."""
+    taken = list(_unacted)
+    _unacted.clear()
+    return taken
+
+
+_interrupt.take_raised = _take_raised  # (runtime/loop.py looks for it on the handler it replaces)
 _signal.signal(_signal.SIGINT, _interrupt)
 _signal.signal(_signal.SIGTERM, _interrupt)
 

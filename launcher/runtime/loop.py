@@ -131,7 +131,12 @@ class EventLoop:
             self._selector.register(fd, mask, handlers)
 
     # --- signals --------------------------------------------------------------------------
-    def add_signal_handler(self, sig: int, callback: Callable[[int], None]) -> None:
+    def add_signal_handler(self, sig: int, callback: Callable[[int], None]
+                           ) -> list[tuple[int, str]]:
+        """`callback(sig)` on the loop for each `sig` received from now on. Returns the
+        signals the handler it replaces raised that nothing acted on ((signum, where it was
+        raised): the handler's `take_raised()`, as cli/entry.py's has); they are received
+        again, at the loop's first turn."""
         if self._wakeup is None:
             read, write = os.pipe()
             os.set_blocking(read, False)
@@ -142,6 +147,13 @@ class EventLoop:
         self._signals[sig] = callback
         previous = signal.signal(sig, self._on_signal)  # the wakeup fd carries it to the loop
         self._previous.setdefault(sig, previous)
+        take = getattr(previous, "take_raised", None)
+        unacted = take() if callable(take) else []
+        for signum, _ in unacted:
+            self._pending[signum] += 1
+            with contextlib.suppress(OSError):
+                os.write(self._wakeup[1], b"\0")
+        return unacted
 
     def remove_signal_handlers(self) -> None:
         for sig in self._signals:

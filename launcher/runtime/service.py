@@ -126,7 +126,11 @@ class LaunchService:
         self.custody.begin(self.context.environment)
         if signals:
             for sig in (signal.SIGINT, signal.SIGTERM):
-                self.loop.add_signal_handler(sig, self.ending.on_signal)
+                for signum, where in self.loop.add_signal_handler(sig, self.ending.on_signal):
+                    self.log("WARN", "launch", f"{signal.Signals(signum).name} came as the "
+                                               f"launch started, and the code it landed in "
+                                               f"({where}) went on as if it had not: acting "
+                                               f"on it now")
         if self.custody.subreaper and signals:  # collect adopted processes as they exit
             self.loop.add_signal_handler(signal.SIGCHLD, lambda _sig: self.table
                                          .look_for_orphans())

@@ -300,6 +300,36 @@ def test_a_ctrl_c_the_interpreter_swallows_at_start_up_still_ends_the_launch(ws)
     no_leftovers(ws)
 
 
+SWALLOWS_ITS_CTRL_C = """
+import os, signal, time
+from launch import LaunchDescription
+from launch.actions import ExecuteProcess
+
+try:  # a launch file that catches everything, as careless code does
+    os.kill(os.getpid(), signal.SIGINT)
+    time.sleep(5)
+except BaseException:
+    pass
+
+
+def generate_launch_description():
+    return LaunchDescription([ExecuteProcess(cmd=["sleep", "120"])])
+"""
+
+
+def test_a_ctrl_c_that_start_up_code_swallows_still_ends_the_launch(ws):
+    """A signal raised while the launch is read, in code that catches everything and goes on:
+    the launch's loop acts on it as it takes the signals over, and says where it landed."""
+    ws.write("careless.launch.py", SWALLOWS_ITS_CTRL_C)
+    result = subprocess.run([*launcher_argv(), "launch", "careless.launch.py"], cwd=ws.root,
+                            timeout=60, env=ws.env, capture_output=True, text=True)
+    assert result.returncode == 130, result.stdout + result.stderr
+    assert re.search(r"\[WARN\] \[launch\]: SIGINT came as the launch started, and the code "
+                     r"it landed in \(\S*careless\.launch\.py:\d+\) went on as if it had not: "
+                     r"acting on it now", result.stdout + result.stderr), result.stdout
+    no_leftovers(ws)
+
+
 MID_SPAWN = """
 import os, signal, sys
 from launcher.frontend.loader import load_file

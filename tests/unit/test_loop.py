@@ -129,6 +129,28 @@ def test_a_signal_raised_where_something_swallows_it_still_reaches_the_loop():
     assert got == [signal.SIGTERM]
 
 
+def test_a_signal_the_replaced_handler_raised_and_nothing_acted_on_is_received_again():
+    """The command's first handler (cli/entry.py's) raised it while the launch was read, and
+    code that catches everything went on: the loop takes it over with the signals."""
+    def first(_signum, _frame):
+        raise KeyboardInterrupt
+
+    first.take_raised = lambda: [(signal.SIGINT, "careless.launch.py:9")]
+    previous = signal.signal(signal.SIGINT, first)
+    loop = EventLoop()
+    got = []
+    try:
+        unacted = loop.add_signal_handler(signal.SIGINT, lambda sig: (got.append(sig),
+                                                                      loop.stop()))
+        loop.call_later(5.0, loop.stop)  # (the test's own bound)
+        loop.run()
+    finally:
+        loop.close()
+        signal.signal(signal.SIGINT, previous)
+    assert unacted == [(signal.SIGINT, "careless.launch.py:9")]
+    assert got == [signal.SIGINT]
+
+
 def test_a_sigterm_is_not_lost_when_a_storm_of_sigchld_has_filled_the_wakeup_pipe():
     """A respawn storm sends SIGCHLD faster than a slow handler takes them: the wakeup pipe
     fills and the interpreter drops bytes. A SIGTERM then must still reach its handler, and
