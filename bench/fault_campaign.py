@@ -4,21 +4,15 @@ launch, each hit by one fault, each checked for what it left running, for a hang
 exit status against the documented ones (0, 1, 130 after SIGINT, 143 after SIGTERM; -9 when
 the launcher itself was SIGKILLed).
 
-Launches (each run picks one):
-- children: 1-12 processes of the kinds that try to escape or resist (a sleeper, a `setsid`
-  grandchild, `set -m` job control, a double-forking daemon, one that ignores SIGINT, one
-  that ignores SIGINT and SIGTERM, a crash, a failure, a respawn storm);
-- demo: the repo's robot.launch.yaml (sim, bridge, robot_state_publisher, create);
-- lockstep: the repo's robot_lockstep.launch.yaml;
-- foxglove: the Foxglove bridge node beside a sleeper;
-- launch test: `launcher test` of a launch_testing file whose process it checks.
+Launches (each run picks one): each kind of process the launcher starts, from a sim with its
+renderer to batch workers on Ray (bench/campaign_launches.py says which).
 
 Faults: SIGINT, SIGTERM or SIGKILL of the launcher at a random moment of its first seconds;
 Ctrl-C twice and three times; SIGKILL of a random child or grandchild, then Ctrl-C; the log
 folder on a full 256 KiB tmpfs (root only: else said and not run); a full file-descriptor
 table (`prlimit --nofile`); the sim under memory pressure (`prlimit --as` as its prefix).
 
-    python bench/fault_campaign.py [--runs 1000] [--seed 56]
+    python bench/fault_campaign.py [--runs 1000] [--seed 56] [--only LAUNCH]...
 """
 
 from __future__ import annotations
@@ -38,57 +32,18 @@ from collections import Counter
 from pathlib import Path
 
 import psutil
-from _harness import launcher_cmd, table
+from _harness import table
+from campaign_launches import SIMS, Places, Run, launch
 
-REPO = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(REPO))  # (the children that resist, shared with the custody tests)
-from tests.support.resisting import DAEMON, STUBBORN, children_launch  # noqa: E402
+from tests.support.resisting import DAEMON, STUBBORN  # (on the path campaign_launches gave)
 
 TAG = "BENCH_CAMPAIGN_TAG"
 HANG = 60.0  # seconds after its fault a launcher may take to exit
 SETTLE = 10.0  # seconds its watchdog may take to end what a SIGKILLed launcher left
 
-LAUNCH_TEST = """
-import unittest
-import launch
-import launch_testing.actions
-from launch.actions import ExecuteProcess
-
-
-def generate_test_description():
-    sleeper = ExecuteProcess(cmd=["sleep", "30"], name="sleeper")
-    return launch.LaunchDescription([sleeper, launch_testing.actions.ReadyToTest()]), \\
-        {"sleeper": sleeper}
-
-
-class TestRuns(unittest.TestCase):
-    def test_it_runs(self, proc_info, sleeper):
-        import time
-        time.sleep(20)
-"""
-LAUNCHES = ("children", "demo", "lockstep", "foxglove", "launch test")
 FAULTS = ("SIGINT", "SIGTERM", "SIGKILL", "Ctrl-C twice", "Ctrl-C three times",
           "kill a child", "kill a grandchild", "full disk", "full fd table",
           "memory pressure")
-
-
-def command(kind: str, folder: Path, rng: random.Random, prefix: str) -> list[str]:
-    """The launcher's command line for a launch of `kind`."""
-    if kind == "children":
-        (folder / "c.launch.yaml").write_text(children_launch(rng, most=12, timeout=0.5))
-        return [*launcher_cmd(), "launch", "-n", "c.launch.yaml"]
-    if kind in ("demo", "lockstep"):
-        name = "robot.launch.yaml" if kind == "demo" else "robot_lockstep.launch.yaml"
-        extra = [f"--launch-prefix={prefix}"] if prefix else []
-        return [*launcher_cmd(), "launch", "-n", *extra, str(REPO / "launch_files" / name),
-                "drive:=false"]
-    if kind == "foxglove":
-        (folder / "f.launch.yaml").write_text(
-            "launch:\n  - node: {pkg: foxglove_bridge, exec: foxglove_bridge, "
-            "param: [{name: port, value: 0}]}\n  - executable: {cmd: sleep 120}\n")
-        return [*launcher_cmd(), "launch", "-n", "f.launch.yaml"]
-    (folder / "test_runs.py").write_text(LAUNCH_TEST)
-    return [*launcher_cmd(), "test", "test_runs.py"]
 
 
 def carrying(tag: str) -> list[psutil.Process]:
@@ -105,11 +60,17 @@ def carrying(tag: str) -> list[psutil.Process]:
     return found
 
 
-def descendants(pid: int) -> list[psutil.Process]:
+def victims(pid: int, run: Run, deep: bool) -> list[psutil.Process]:
+    """The launcher's children (or, `deep`, its grandchildren and below), or the run's own
+    where its processes are not the launcher's descendants (batch jobs on Ray's nodes)."""
+    if run.victims is not None:
+        return run.victims(deep)
     try:
-        return psutil.Process(pid).children(recursive=True)
+        below = psutil.Process(pid).children(recursive=True)
     except psutil.Error:
         return []
+    return [p for p in below if parent(p) not in (pid, -1)] if deep else \
+        [p for p in below if parent(p) == pid]
 
 
 def parent(proc: psutil.Process) -> int:
@@ -136,16 +97,17 @@ def small_disk(folder: Path):
         subprocess.run(["umount", "-l", str(mount)], check=False)
 
 
-def one(kind: str, fault: str, rng: random.Random, base: Path,
-        env: dict[str, str]) -> tuple[str, int, str]:
+def one(kind: str, fault: str, rng: random.Random, base: Path, env: dict[str, str],
+        places: Places) -> tuple[str, int, str]:
     """(outcome, processes left, details) of one run."""
     folder = Path(tempfile.mkdtemp(dir=base))
     (folder / "daemon.py").write_text(DAEMON)
     (folder / "stubborn.py").write_text(STUBBORN)
     tag = uuid.uuid4().hex
-    run_env = {**env, TAG: tag, "LAUNCHER_LOG_DIR": str(folder / "log")}
     prefix = "prlimit --as=400000000" if fault == "memory pressure" else ""
-    argv = command(kind, folder, rng, prefix)
+    run = launch(kind, folder, rng, prefix, places, TAG, tag)
+    run_env = {**env, **run.env, TAG: tag, "LAUNCHER_LOG_DIR": str(folder / "log")}
+    argv = run.argv
     if fault == "full fd table":
         argv = ["prlimit", "--nofile=40", *argv]
     with contextlib.ExitStack() as stack:
@@ -154,32 +116,40 @@ def one(kind: str, fault: str, rng: random.Random, base: Path,
         proc = subprocess.Popen(argv, cwd=folder, env=run_env, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.PIPE, text=True, start_new_session=True)
         try:  # (the campaign stopped while it applied the fault: its launch goes too)
-            time.sleep(rng.uniform(0.2, 4.0))
-            # (a launch over before its fault: 0 or 1, as it ended; else the fault's status, or 1
-            # when a failure of its own had begun its shutdown)
-            expected = {0, 1} if proc.poll() is not None else {1}
+            time.sleep(rng.uniform(0.2, run.window))
+            expected = {1}  # (a failure of its own had begun its shutdown)
+            first = [True]
+
+            def send(sig: int) -> None:
+                """The signal; a launch already over before the fault's first signal ended
+                as it ended: 0 or 1."""
+                if first[0] and proc.poll() is not None:
+                    expected.add(0)
+                first[0] = False
+                proc.send_signal(sig)
+
             if fault in ("SIGINT", "SIGTERM", "SIGKILL"):
                 sig = getattr(signal, fault)
-                proc.send_signal(sig)
+                send(sig)
                 expected |= {-9} if sig == signal.SIGKILL else {128 + sig}
             elif fault.startswith("Ctrl-C"):
                 for _ in range(2 if fault == "Ctrl-C twice" else 3):
-                    proc.send_signal(signal.SIGINT)
+                    send(signal.SIGINT)
                     time.sleep(rng.uniform(0, 0.5))
                 expected |= {130}
             elif fault.startswith("kill a"):
-                below = descendants(proc.pid)
-                deep = [p for p in below if parent(p) not in (proc.pid, -1)] \
-                    if "grand" in fault else [p for p in below if parent(p) == proc.pid]
+                deep = victims(proc.pid, run, "grand" in fault)
                 if deep:
                     with contextlib.suppress(psutil.Error):
                         rng.choice(deep).kill()
                 time.sleep(rng.uniform(0, 1.0))
-                proc.send_signal(signal.SIGINT)
+                send(signal.SIGINT)
                 expected |= {130}
             else:  # a condition, not a moment: the launch meets it, then Ctrl-C
-                proc.send_signal(signal.SIGINT)
+                send(signal.SIGINT)
                 expected |= {130}
+            if fault != "SIGKILL":
+                expected |= run.after_signal
         except BaseException:
             proc.send_signal(signal.SIGINT)
             raise
@@ -199,10 +169,10 @@ def one(kind: str, fault: str, rng: random.Random, base: Path,
             proc.send_signal(signal.SIGINT)
             raise
     deadline = time.monotonic() + SETTLE
-    left = carrying(tag)
+    left = carrying(tag) + run.elsewhere()
     while left and time.monotonic() < deadline:
         time.sleep(0.1)
-        left = carrying(tag)
+        left = carrying(tag) + run.elsewhere()
     for each in left:
         details += f"\nleft: {each.pid} {' '.join(each.cmdline())[:120]}"
         with contextlib.suppress(psutil.Error):
@@ -211,7 +181,8 @@ def one(kind: str, fault: str, rng: random.Random, base: Path,
     return outcome, len(left), details
 
 
-def campaign(runs: int, seed: int) -> list[tuple[str, str, str]]:
+def campaign(runs: int, seed: int, only: list[str]) -> list[tuple[str, str, str]]:
+    """The campaign's figures; `only`: the kinds of launch to run (all when empty)."""
     rng = random.Random(seed)
     base = Path(tempfile.mkdtemp(prefix="launcher-bench-campaign-"))
     env = {**os.environ, "LAUNCHER_RUN_DIR": str(base / "run"),
@@ -223,13 +194,17 @@ def campaign(runs: int, seed: int) -> list[tuple[str, str, str]]:
     by_launch: Counter[str] = Counter()
     orphans = 0
     began = time.monotonic()
-    try:
+    with contextlib.ExitStack() as stack:
+        stack.callback(shutil.rmtree, base, ignore_errors=True)
+        places = Places(stack, base)
+        kinds, not_run = places.available()
+        kinds = [k for k in kinds if not only or k in only]
         for n in range(runs):
-            kind = rng.choice(LAUNCHES)
+            kind = rng.choice(kinds)
             fault = rng.choice([f for f in FAULTS if root or f != "full disk"])
-            if fault == "memory pressure" and kind not in ("demo", "lockstep"):
-                kind = rng.choice(("demo", "lockstep"))
-            outcome, left, details = one(kind, fault, rng, base, env)
+            if fault == "memory pressure" and kind not in SIMS:
+                kind = rng.choice([k for k in SIMS if k in kinds] or kinds)
+            outcome, left, details = one(kind, fault, rng, base, env, places)
             outcomes[outcome] += 1
             by_fault[fault] += 1
             by_launch[kind] += 1
@@ -239,8 +214,6 @@ def campaign(runs: int, seed: int) -> list[tuple[str, str, str]]:
                       flush=True)
             if (n + 1) % 50 == 0:
                 print(f"{n + 1} runs: {dict(outcomes)}, {orphans} left", flush=True)
-    finally:
-        shutil.rmtree(base, ignore_errors=True)
     done = sum(outcomes.values())
     return [
         ("campaign runs", f"≥ {runs}", f"{done} in {time.monotonic() - began:.0f} s"),
@@ -251,6 +224,7 @@ def campaign(runs: int, seed: int) -> list[tuple[str, str, str]]:
         ("tracebacks", "0", f"{outcomes['a traceback']}"),
         ("runs by launch", "-", ", ".join(f"{k} {v}" for k, v in sorted(by_launch.items()))),
         ("runs by fault", "-", ", ".join(f"{k} {v}" for k, v in sorted(by_fault.items()))),
+        *((kind, "-", why) for kind, why in not_run),
     ] + ([] if root else [("full disk", "-", "not run: mounting a tmpfs needs root")])
 
 
@@ -258,10 +232,12 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=1000)
     parser.add_argument("--seed", type=int, default=56)
+    parser.add_argument("--only", action="append", default=[], metavar="LAUNCH",
+                        help="run this kind of launch only (repeatable)")
     args = parser.parse_args()
     signal.signal(signal.SIGINT, signal.default_int_handler)  # (launches get it at default)
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # (its launch goes too)
-    table(f"The fault campaign: {args.runs} runs", campaign(args.runs, args.seed))
+    table(f"The fault campaign: {args.runs} runs", campaign(args.runs, args.seed, args.only))
 
 
 if __name__ == "__main__":

@@ -215,7 +215,7 @@ def main() -> None:
         router.wait(30)
     table("faults (bench/faults.py)", rows)
     runs = int(os.environ.get("BENCH_FAULT_CAMPAIGN", "1000"))  # (bench/fault_campaign.py)
-    table(f"The fault campaign: {runs} runs", campaign(runs, 56))
+    table(f"The fault campaign: {runs} runs", campaign(runs, 56, []))
 
 
 if __name__ == "__main__":

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import random
 import sys
+from collections.abc import Sequence
+from pathlib import Path
 
 PY = sys.executable
 
@@ -38,14 +40,22 @@ KINDS = {
 }
 
 
-def children_launch(rng: random.Random, most: int, timeout: float) -> str:
+def children_launch(rng: random.Random, most: int, timeout: float,
+                    machines: Sequence[str] = (), folder: Path | None = None) -> str:
     """A launch file of 1 to `most` children of the kinds above (daemon.py and stubborn.py
-    beside it), each stopped with `timeout` seconds between its signals."""
-    lines = ["launch:"]
+    beside it, or in `folder`), each stopped with `timeout` seconds between its signals; with
+    `machines`, each child on one of them (machines of the same names, at those addresses)."""
+    lines = [*(["extensions: [launcher]"] if machines else []), "launch:",
+             *(f"  - machine: {{name: {name}, address: {name}}}" for name in machines)]
     for _ in range(rng.randint(1, most)):
         kind = rng.choice(list(KINDS))
         cmd = KINDS[kind].replace('"', '\\"')
+        if folder is not None:
+            cmd = cmd.replace(" daemon.py", f" {folder}/daemon.py").replace(
+                " stubborn.py", f" {folder}/stubborn.py")
         extra = ", respawn: true, respawn_delay: 0" if kind == "respawn storm" else ""
+        if machines:
+            extra += f", machine: {rng.choice(machines)}"
         lines.append(f'  - executable: {{cmd: "{cmd}", sigterm_timeout: {timeout:g}, '
                      f'sigkill_timeout: {timeout:g}{extra}}}')
     return "\n".join(lines) + "\n"

@@ -1,0 +1,342 @@
+"""The launches of the fault campaign (bench/fault_campaign.py): each kind of process the
+launcher starts, each written into a run's own folder, and the two places some of them need
+(the remote hosts, and the Ray cluster of the batch workers), each made once per campaign.
+
+- children: 1-12 processes of the kinds that try to escape or resist (a sleeper, a `setsid`
+  grandchild, `set -m` job control, a double-forking daemon, one that ignores SIGINT, one
+  that ignores SIGINT and SIGTERM, a crash, a failure, a respawn storm);
+- demo: the repo's robot.launch.yaml (sim, bridge, robot_state_publisher, create);
+- lockstep: the repo's robot_lockstep.launch.yaml;
+- camera: a world with an RGB and a depth camera (the sim and its renderer) and the bridge of
+  both images;
+- controllers: the sim with an arm whose controller manager runs in it (gz_ros2_control),
+  create, and a spawner of two controllers;
+- control node: robot_state_publisher, ros2_control_node on mock hardware and a spawner;
+- foxglove: the Foxglove bridge node beside a sleeper;
+- launch test: `launcher test` of a launch_testing file whose process it checks;
+- rostest: `launcher rostest` of a ROS 1 package's .test file (a rospy talker and its test);
+- remote hosts: children of the kinds above on two OpenSSH hosts, each an sshd in a network
+  namespace of its own (tests/support/sshd.py; root only);
+- batch on Ray: `launcher batch --address` of four launch tests on a Ray cluster of two
+  nodes, each on a host of its own (tests/support/ray_cluster.py; root and Ray only).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+import json
+import os
+import random
+import shutil
+import sys
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import psutil
+from _harness import launcher_cmd
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))  # (the children that resist, and the hosts, from the tests)
+from tests.support.batch_files import write_jobs  # noqa: E402
+from tests.support.resisting import children_launch  # noqa: E402
+
+PY = sys.executable
+HOSTS = ("robot1", "robot2")
+SIMS = ("demo", "lockstep", "camera", "controllers")  # (the kinds memory pressure is put on)
+
+CAMERA_WORLD = """<?xml version="1.0"?><sdf version="1.9"><world name="cameras">
+<plugin filename="gz-sim-sensors-system" name="gz::sim::systems::Sensors"/>
+<model name="eye"><static>true</static><pose>0 0 1 0 0 0</pose><link name="link">
+<sensor name="rgb" type="camera"><topic>rgb</topic><update_rate>30</update_rate><camera>
+<horizontal_fov>1.2</horizontal_fov><image><width>320</width><height>240</height></image>
+<clip><near>0.1</near><far>50</far></clip></camera></sensor>
+<sensor name="depth" type="depth_camera"><topic>depth</topic><update_rate>30</update_rate>
+<camera><horizontal_fov>1.2</horizontal_fov><image><width>320</width><height>240</height>
+</image><clip><near>0.1</near><far>50</far></clip></camera></sensor></link></model>
+<model name="box"><static>true</static><pose>3 0 1 0 0 0.5</pose><link name="l"><visual name="v">
+<geometry><box><size>1 1 1</size></box></geometry></visual></link></model>
+<light type="directional" name="sun"><pose>0 0 10 0 0 0</pose><direction>-0.5 0.2 -0.9
+</direction></light></world></sdf>
+"""
+CAMERA_LAUNCH = """launch:
+  - executable: {cmd: "gz sim -r -s -v 1 cameras.sdf"}
+  - node: {pkg: ros_gz_bridge, exec: parameter_bridge,
+           args: "/rgb@sensor_msgs/msg/Image[gz.msgs.Image
+                  /depth@sensor_msgs/msg/Image[gz.msgs.Image"}
+"""
+ARM = """<?xml version="1.0"?>
+<robot name="arm">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0"
+    ixz="0" iyz="0"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
+    <origin xyz="0 0 0.5"/></joint>
+  <link name="l1"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0"
+    ixz="0" iyz="0"/></inertial></link>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="50"
+    velocity="5"/><dynamics damping="0.5"/></joint>
+  <ros2_control name="ArmSystem" type="system">
+    <hardware><plugin>{hardware}</plugin></hardware>
+    <joint name="j1"><command_interface name="position"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+  </ros2_control>
+  <gazebo><plugin filename="gz_ros2_control-system"
+    name="gz_ros2_control::GazeboSimROS2ControlPlugin">
+    <parameters>{yaml}</parameters></plugin></gazebo>
+</robot>
+"""
+CONTROLLERS = """controller_manager:
+  ros__parameters:
+    update_rate: 100
+    joint_state_broadcaster: {type: joint_state_broadcaster/JointStateBroadcaster}
+    forward: {type: forward_command_controller/ForwardCommandController}
+forward:
+  ros__parameters:
+    joints: [j1]
+    interface_name: position
+"""
+CONTROLLERS_LAUNCH = """launch:
+  - executable: {cmd: "gz sim -r -s -v 1 empty.sdf"}
+  - node: {pkg: ros_gz_sim, exec: create, args: "-file arm.urdf -name arm"}
+  - node: {pkg: controller_manager, exec: spawner, args: "joint_state_broadcaster forward"}
+"""
+CONTROL_NODE_LAUNCH = """launch:
+  - node: {pkg: robot_state_publisher, exec: robot_state_publisher,
+           param: [{name: robot_description, value: "$(command 'cat arm.urdf')"}]}
+  - node: {pkg: controller_manager, exec: ros2_control_node, param: [{from: controllers.yaml}]}
+  - node: {pkg: controller_manager, exec: spawner, args: "joint_state_broadcaster forward"}
+"""
+FOXGLOVE_LAUNCH = """launch:
+  - node: {pkg: foxglove_bridge, exec: foxglove_bridge, param: [{name: port, value: 0}]}
+  - executable: {cmd: sleep 120}
+"""
+LAUNCH_TEST = """
+import unittest
+import launch
+import launch_testing.actions
+from launch.actions import ExecuteProcess
+
+
+def generate_test_description():
+    sleeper = ExecuteProcess(cmd=["sleep", "30"], name="sleeper")
+    return launch.LaunchDescription([sleeper, launch_testing.actions.ReadyToTest()]), \\
+        {"sleeper": sleeper}
+
+
+class TestRuns(unittest.TestCase):
+    def test_it_runs(self, proc_info, sleeper):
+        import time
+        time.sleep(20)
+"""
+ROS1_MANIFEST = """<?xml version="1.0"?>
+<package format="2"><name>hear_pkg</name><version>0.0.1</version><description>hears
+</description><maintainer email="dev@example.com">dev</maintainer><license>BSD</license>
+<buildtool_depend>catkin</buildtool_depend><depend>rospy</depend>
+<test_depend>rostest</test_depend></package>
+"""
+ROS1_TALKER = """#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+rospy.init_node("talker")
+pub = rospy.Publisher("chatter", String, queue_size=10)
+rate = rospy.Rate(10)
+try:
+    while not rospy.is_shutdown():
+        pub.publish(String(data="hello"))
+        rate.sleep()
+except rospy.ROSInterruptException:
+    pass
+"""
+ROS1_TEST = """#!/usr/bin/env python3
+import time
+import unittest
+
+import rospy
+import rostest
+from std_msgs.msg import String
+
+
+class TestHear(unittest.TestCase):
+    def test_hears(self):
+        rospy.init_node("hear_test")
+        self.assertEqual(rospy.wait_for_message("chatter", String, timeout=10).data, "hello")
+        time.sleep(20)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("hear_pkg", "hear_test", TestHear)
+"""
+ROS1_TEST_FILE = """<launch>
+  <node pkg="hear_pkg" type="talker.py" name="talker" />
+  <test test-name="hear_test" pkg="hear_pkg" type="hear_test.py" time-limit="60" />
+</launch>
+"""
+BATCH = """jobs:
+  - test: chatter_test.py
+seeds: 4
+timeout: 60
+env: {env}
+"""
+
+
+@dataclass
+class Run:
+    """One run's launch: its command line, what it adds to the environment, and where else
+    what it leaves behind may run (beside what carries the run's tag on this machine)."""
+    argv: list[str]
+    env: dict[str, str] = field(default_factory=dict)
+    elsewhere: Callable[[], list[psutil.Process]] = list
+    # its children (False) or grandchildren (True), where they are not the launcher's own
+    victims: Callable[[bool], list[psutil.Process]] | None = None
+    window: float = 4.0  # seconds into the run its fault may come
+    # the exit statuses a signal may end it with, beside the signal's own
+    after_signal: frozenset[int] = frozenset()
+
+
+class Places:
+    """The remote hosts and the Ray cluster, each made on first use and ended with the
+    campaign; `available` says which kinds this machine can run."""
+
+    def __init__(self, stack: contextlib.ExitStack, base: Path) -> None:
+        self.stack, self.base = stack, base
+        self._hosts = self._cluster = None
+
+    def available(self) -> tuple[list[str], list[str]]:
+        """(the kinds this machine runs, a line for each it cannot, and why)."""
+        kinds = ["children", "demo", "lockstep", "camera", "controllers", "control node",
+                 "foxglove", "launch test", "rostest"]
+        why = []
+        root = os.geteuid() == 0
+        tools = all(shutil.which(t) for t in ("/usr/sbin/sshd", "ssh", "ip", "unshare"))
+        if root and tools:
+            kinds.append("remote hosts")
+        else:
+            why.append(("remote hosts", "not run: needs root, sshd, ssh, ip and unshare"))
+        if root and importlib.util.find_spec("ray") is not None:
+            kinds.append("batch on Ray")
+        else:
+            why.append(("batch on Ray", "not run: needs root and Ray (launcher[cluster])"))
+        return kinds, why
+
+    def hosts(self):
+        if self._hosts is None:
+            from tests.support.sshd import SshHosts
+            root = Path(tempfile.mkdtemp(prefix="lnc", dir="/tmp"))
+            self.stack.callback(shutil.rmtree, root, ignore_errors=True)
+            self._hosts = self.stack.enter_context(SshHosts(root / "ssh", HOSTS))
+            for name in HOSTS:
+                self._hosts.set_environment(name, {
+                    "PATH": f"{os.path.dirname(PY)}:/usr/bin:/bin",
+                    "LAUNCHER_ROUTER_LINGER": "0.5"})
+        return self._hosts
+
+    def cluster(self):
+        if self._cluster is None:
+            from tests.support.ray_cluster import ray_cluster
+            self._cluster = self.stack.enter_context(ray_cluster())
+        return self._cluster
+
+
+def launch(kind: str, folder: Path, rng: random.Random, prefix: str, places: Places,
+           tag_variable: str, tag: str) -> Run:
+    """The run of a launch of `kind` in `folder`; `prefix` is the sims' launch prefix."""
+    cmd = launcher_cmd()
+    prefixed = [f"--launch-prefix={prefix}"] if prefix else []
+    if kind == "children":
+        (folder / "c.launch.yaml").write_text(children_launch(rng, most=12, timeout=0.5))
+        return Run([*cmd, "launch", "-n", "c.launch.yaml"])
+    if kind in ("demo", "lockstep"):
+        name = "robot.launch.yaml" if kind == "demo" else "robot_lockstep.launch.yaml"
+        return Run([*cmd, "launch", "-n", *prefixed, str(REPO / "launch_files" / name),
+                    "drive:=false"])
+    if kind == "camera":
+        (folder / "cameras.sdf").write_text(CAMERA_WORLD)
+        (folder / "cam.launch.yaml").write_text(CAMERA_LAUNCH)
+        return Run([*cmd, "launch", "-n", *prefixed, "cam.launch.yaml"])
+    if kind in ("controllers", "control node"):
+        yaml = folder / "controllers.yaml"
+        yaml.write_text(CONTROLLERS)
+        hardware = "gz_ros2_control/GazeboSimSystem" if kind == "controllers" else \
+            "mock_components/GenericSystem"
+        (folder / "arm.urdf").write_text(ARM.format(hardware=hardware, yaml=yaml))
+        (folder / "arm.launch.yaml").write_text(
+            CONTROLLERS_LAUNCH if kind == "controllers" else CONTROL_NODE_LAUNCH)
+        return Run([*cmd, "launch", "-n", *prefixed, "arm.launch.yaml"])
+    if kind == "foxglove":
+        (folder / "f.launch.yaml").write_text(FOXGLOVE_LAUNCH)
+        return Run([*cmd, "launch", "-n", "f.launch.yaml"])
+    if kind == "launch test":
+        (folder / "test_runs.py").write_text(LAUNCH_TEST)
+        return Run([*cmd, "test", "test_runs.py"])
+    if kind == "rostest":
+        return rostest(folder, cmd)
+    if kind == "remote hosts":
+        return remote(folder, rng, cmd, places.hosts())
+    return batch(folder, rng, cmd, places.cluster(), tag_variable, tag)
+
+
+def rostest(folder: Path, cmd: list[str]) -> Run:
+    package = folder / "src" / "hear_pkg"
+    (package / "scripts").mkdir(parents=True)
+    (package / "test").mkdir()
+    (package / "package.xml").write_text(ROS1_MANIFEST)
+    for name, text in (("talker.py", ROS1_TALKER), ("hear_test.py", ROS1_TEST)):
+        (package / "scripts" / name).write_text(text)
+        (package / "scripts" / name).chmod(0o755)
+    (package / "test" / "hear.test").write_text(ROS1_TEST_FILE)
+    # (as rostest's, its status is its tests' result after a signal too: the tests that ran
+    # and passed, 0; one stopped before its end fails, 1)
+    return Run([*cmd, "rostest", "hear_pkg", "hear.test"],
+               {"LAUNCHER_PACKAGE_PATH": str(folder / "src"), "ROS_HOME": str(folder / "home")},
+               after_signal=frozenset({0, 1}))
+
+
+def remote(folder: Path, rng: random.Random, cmd: list[str], hosts) -> Run:
+    """Children on the two hosts, launched from the launching host; what a host still runs
+    but its sshd's own processes (a connection's sshd waits on TCP, not on the launch) is
+    left behind."""
+    (folder / "r.launch.yaml").write_text(
+        children_launch(rng, most=8, timeout=0.5, machines=HOSTS, folder=folder))
+
+    def elsewhere() -> list[psutil.Process]:
+        found = []
+        for name in HOSTS:
+            for proc in hosts.processes_in(name):
+                with contextlib.suppress(psutil.Error):
+                    if not proc.name().startswith("sshd"):
+                        found.append(proc)
+        return found
+
+    return Run(hosts.in_launching([*cmd, "launch", "-n", "r.launch.yaml"]),
+               {"LAUNCHER_SSH_COMMAND": hosts.ssh_command}, elsewhere, window=6.0)
+
+
+def batch(folder: Path, rng: random.Random, cmd: list[str], cluster, tag_variable: str,
+          tag: str) -> Run:
+    """Four launch tests on the cluster's two nodes, the driver on a host of its own; the
+    jobs carry the run's tag (their job hosts are the batch's children, what they start its
+    grandchildren)."""
+    jobs = write_jobs(folder / "jobs")
+    (jobs / "b.batch.yaml").write_text(BATCH.format(env=json.dumps(
+        {tag_variable: tag, "CHATTER_LISTEN": rng.choice(("1", "4", "8"))})))
+    argv = cluster.driver_argv([*cmd, "batch", str(jobs / "b.batch.yaml"), "-n", "--address",
+                                cluster.address])
+    env = cluster.driver_env({})
+    env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
+
+    def victims(deep: bool) -> list[psutil.Process]:
+        """The job hosts (the batch's one at a time), or what the jobs started."""
+        found = []
+        for proc in psutil.process_iter():
+            with contextlib.suppress(psutil.Error):
+                if ("launcher.batch.host" in " ".join(proc.cmdline())) != deep and \
+                        (not deep or proc.environ().get(tag_variable) == tag):
+                    found.append(proc)
+        return found
+
+    return Run(argv, env, victims=victims, window=15.0)
