@@ -229,10 +229,12 @@ class Places:
             root = Path(tempfile.mkdtemp(prefix="lnc", dir="/tmp"))
             self.stack.callback(shutil.rmtree, root, ignore_errors=True)
             self._hosts = self.stack.enter_context(SshHosts(root / "ssh", HOSTS))
+            own = {"PATH": f"{os.path.dirname(PY)}:/usr/bin:/bin",
+                   "LAUNCHER_ROUTER_LINGER": "0.5"}
+            if "PYTHONPATH" in os.environ:  # (the launcher under test, there as here)
+                own["PYTHONPATH"] = os.environ["PYTHONPATH"]
             for name in HOSTS:
-                self._hosts.set_environment(name, {
-                    "PATH": f"{os.path.dirname(PY)}:/usr/bin:/bin",
-                    "LAUNCHER_ROUTER_LINGER": "0.5"})
+                self._hosts.set_environment(name, own)
         return self._hosts
 
     def cluster(self):
