@@ -124,6 +124,8 @@ class LaunchControl:
                 pid=r.pid, host=r.host, state=r.state, has_exit_code=r.exit_code is not None,
                 exit_code=r.exit_code or 0, restarts=r.restarts, uptime=r.uptime, cpu=r.cpu,
                 memory=r.memory) for r in rows]
+        else:
+            response.message = rows
         return response
 
     def _act(self, request: Any, response: Any) -> Any:

@@ -46,6 +46,9 @@ def table(launches: list[Launch]) -> str:
         listing = launch.listing
         head = f"{listing.launch or launch.node}  pid {listing.pid}  up {clock(listing.uptime)}"
         out.append(head + (f"  log {listing.log_folder}" if listing.log_folder else ""))
+        if listing.message:  # (it could not list them: ending, or too busy to answer)
+            out.append(f"  ({listing.message})")
+            continue
         rows = [COLUMNS] + [row_words(row) for row in listing.processes]
         widths = [max(len(r[i]) for r in rows) for i in range(len(COLUMNS))]
         for r in rows:

@@ -39,6 +39,12 @@ async function refresh() {
       const title = document.createElement("h2");
       title.textContent = `${launch.launch} (pid ${launch.pid})`;
       launches.appendChild(title);
+      if (launch.message) {
+        const why = document.createElement("p");
+        why.textContent = launch.message;
+        launches.appendChild(why);
+        continue;
+      }
       const table = document.createElement("table");
       const head = table.insertRow();
       for (const name of ["name", "pid", "host", "state", "restarts", "uptime", "CPU %",
@@ -152,7 +158,8 @@ class ProcessesPage:
 
 def shown(launch: Any) -> dict[str, Any]:
     listing = launch.listing
-    return {"launch": listing.launch, "pid": listing.pid, "processes": [
+    return {"launch": listing.launch, "pid": listing.pid, "message": listing.message,
+            "processes": [
         {"name": p.name, "pid": p.pid, "host": p.host, "state": p.state,
          "restarts": p.restarts, "uptime": p.uptime, "cpu": p.cpu, "memory": p.memory}
         for p in listing.processes]}

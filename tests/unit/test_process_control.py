@@ -239,3 +239,16 @@ def test_an_unknown_launch_is_said_with_the_running_ones():
     with pytest.raises(LaunchError, match=r"--launch robt: no running launch is 'robt' \(did "
                                           r"you mean 'robot'\?\); running: robot.launch.yaml"):
         launches.pick("sim", "robt")
+
+
+def test_ps_says_why_a_launch_listed_no_processes():
+    from types import SimpleNamespace
+
+    from launcher.bus.launches import Launch
+    from launcher.cli.ps_command import table
+
+    ending = Launch("/_launcher_10", SimpleNamespace(
+        launch="robot.launch.yaml", pid=10, uptime=5.0, log_folder="", processes=[],
+        message="the launch is ending"))
+    assert table([ending]).splitlines() == ["robot.launch.yaml  pid 10  up 0:00:05",
+                                            "  (the launch is ending)"]
