@@ -4,6 +4,8 @@ bad inputs; and roslaunch leaving the tests out. Real processes on a graph of th
 
 from __future__ import annotations
 
+import signal
+import time
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -266,3 +268,18 @@ def test_paramtest_checks_a_parameter(ws, package, expected, code):
     (package / "test" / "rate.test").write_text(PARAM_TEST.format(expected=expected))
     done = ws.run("rostest", "hear_pkg", "rate.test", timeout=120)
     assert done.returncode == code, done.stdout + done.stderr
+
+
+def test_ctrl_c_during_a_test_ends_the_run_at_once_with_what_ran(ws, package):
+    """The test running is stopped and fails; the next is not started (nor is its time limit
+    waited for): the summary says so."""
+    write_test(package, delay=60, extra="/>\n  <test test-name=\"second\" pkg=\"hear_pkg\" "
+                                         "type=\"hear_test.py\" time-limit=\"60\"")
+    proc = ws.start("rostest", "hear_pkg", "hear.test", output="run.out")
+    ws.wait_for_output("[hear_test-2]: process started", 60, "run.out")
+    began = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(30) == 1, ws.output("run.out")
+    assert time.monotonic() - began < 15
+    assert "[hear.rosunit-second][FAILURE]\n  the launch ended before it ran" \
+        in ws.output("run.out")

@@ -82,12 +82,14 @@ class TestsRun:
             self._timer.cancel()
         test = self.collected[self._index]
         outcome = self._outcome(test, event.returncode)
-        if not outcome.passed and self._attempt < test.retry:
+        ending = self.service.shutting_down  # (a signal: what ran counts, nothing more runs)
+        if not outcome.passed and self._attempt < test.retry and not ending:
             self._attempt += 1
         else:
             self.outcomes.append(outcome)
             self._index, self._attempt = self._index + 1, 0
-        self.next()
+        if not ending:
+            self.next()
 
     def _outcome(self, test: CollectedTest, returncode: int | None) -> Outcome:
         outcome = Outcome(test.name)
