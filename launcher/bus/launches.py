@@ -99,8 +99,10 @@ class Launches:
                  for n in (*row.names, row.node) if n}
         scope = describe(launches[0]) if len(launches) == 1 else \
             f"any of the {len(launches)} running launches"
+        unlisted = "".join(f"; {describe(each)} listed none: {each.listing.message}"
+                           for each in launches if each.listing.message)
         raise LaunchError(f"no process '{name}' in {scope}{did_you_mean(name, every)} "
-                         "(`launcher ps` lists them)")
+                         f"(`launcher ps` lists them){unlisted}")
 
     # --- asking one launch ------------------------------------------------------------------
     def act(self, launch: Launch, label: str, verb: str) -> str:

@@ -18,7 +18,8 @@ import posix
 
 _running = False  # main() has begun: from then on a signal raises, to be caught there
 _raised = False  # one has been raised: the command is ending because of it
-_unacted: list = []  # (signum, file:line) of each raised, until a launch's loop takes them
+_unacted: list[tuple[int, str]] = []  # (signum, file:line) of each raised, until a launch's
+# loop takes them
 
 
 class _Interrupted(KeyboardInterrupt):  # launcher.errors.Interrupted, before it can be imported
@@ -39,7 +40,7 @@ def _interrupt(signum: int, _frame: object) -> None:
     raise _Interrupted(signum)
 
 
-def _take_raised() -> list:
+def _take_raised() -> list[tuple[int, str]]:
     """The signals raised so far, taken by a launch's event loop as it takes the signals over:
     a launch that is about to run although one was raised has had it swallowed on its way up
     (a user's `except BaseException:` in a launch file, a library's), and acts on it now."""

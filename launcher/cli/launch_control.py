@@ -111,7 +111,7 @@ class LaunchControl:
         return box[0]
 
     def _list(self, _request: Any, response: Any) -> Any:
-        ok, rows = self._on_loop(self.control.rows)
+        ok, rows_or_why = self._on_loop(self.control.rows)
         response.launch = self.file.name if self.file else ""
         response.file = str(self.file or "")
         response.pid, response.uid, response.host = os.getpid(), os.getuid(), self.control.host
@@ -123,9 +123,9 @@ class LaunchControl:
                 "launcher_interfaces/msg/Process", name=r.name, names=r.names, node=r.node,
                 pid=r.pid, host=r.host, state=r.state, has_exit_code=r.exit_code is not None,
                 exit_code=r.exit_code or 0, restarts=r.restarts, uptime=r.uptime, cpu=r.cpu,
-                memory=r.memory) for r in rows]
+                memory=r.memory) for r in rows_or_why]
         else:
-            response.message = rows
+            response.message = rows_or_why
         return response
 
     def _act(self, request: Any, response: Any) -> Any:

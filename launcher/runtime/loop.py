@@ -135,8 +135,9 @@ class EventLoop:
                            ) -> list[tuple[int, str]]:
         """`callback(sig)` on the loop for each `sig` received from now on. Returns the
         signals the handler it replaces raised that nothing acted on ((signum, where it was
-        raised): the handler's `take_raised()`, as cli/entry.py's has); they are received
-        again, at the loop's first turn."""
+        raised): the handler's `take_raised()`, as cli/entry.py's has, which gives them all,
+        whichever signal is being taken over); they are received again, at the loop's first
+        turn, by the handlers added by then: add every signal's before it runs."""
         if self._wakeup is None:
             read, write = os.pipe()
             os.set_blocking(read, False)

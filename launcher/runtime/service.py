@@ -125,12 +125,13 @@ class LaunchService:
         # begun the custody already, before the hooks ran; this is for the API's launches.)
         self.custody.begin(self.context.environment)
         if signals:
-            for sig in (signal.SIGINT, signal.SIGTERM):
-                for signum, where in self.loop.add_signal_handler(sig, self.ending.on_signal):
-                    self.log("WARN", "launch", f"{signal.Signals(signum).name} came as the "
-                                               f"launch started, and the code it landed in "
-                                               f"({where}) went on as if it had not: acting "
-                                               f"on it now")
+            unacted = [each for sig in (signal.SIGINT, signal.SIGTERM)
+                       for each in self.loop.add_signal_handler(sig, self.ending.on_signal)]
+            for signum, where in unacted:  # (said once both are the loop's)
+                self.log("WARN", "launch", f"{signal.Signals(signum).name} came while the "
+                                           f"launch was being read, and was lost there (it "
+                                           f"landed at {where}, in code that went on): acting "
+                                           f"on it now")
         if self.custody.subreaper and signals:  # collect adopted processes as they exit
             self.loop.add_signal_handler(signal.SIGCHLD, lambda _sig: self.table
                                          .look_for_orphans())

@@ -203,7 +203,7 @@ def listing(launch: str, pid: int, *rows: tuple[str, list[str]]):
 
     processes = [SimpleNamespace(name=name, names=[name, *names], node="") for name, names in rows]
     return Launch(f"/launcher_{pid}", SimpleNamespace(launch=launch, pid=pid, file=launch,
-                                                      processes=processes))
+                                                      processes=processes, message=""))
 
 
 def launches_of(*running):
@@ -252,3 +252,19 @@ def test_ps_says_why_a_launch_listed_no_processes():
         message="the launch is ending"))
     assert table([ending]).splitlines() == ["robot.launch.yaml  pid 10  up 0:00:05",
                                             "  (the launch is ending)"]
+
+
+def test_a_name_not_found_says_which_launch_could_not_list_its_processes():
+    from types import SimpleNamespace
+
+    from launcher.bus.launches import Launch
+    from launcher.errors import LaunchError
+
+    busy = Launch("/_launcher_10", SimpleNamespace(
+        launch="robot.launch.yaml", pid=10, file="robot.launch.yaml", processes=[],
+        message="the launch did not answer within 5 s"))
+    with pytest.raises(LaunchError, match=r"no process 'sim' in robot.launch.yaml \(pid 10\) "
+                                          r"\(`launcher ps` lists them\); robot.launch.yaml "
+                                          r"\(pid 10\) listed none: the launch did not answer "
+                                          r"within 5 s"):
+        launches_of(busy).pick("sim")
