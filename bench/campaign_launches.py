@@ -34,6 +34,7 @@ import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import psutil
 from _harness import launcher_cmd
@@ -41,10 +42,17 @@ from _harness import launcher_cmd
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))  # (the children that resist, and the hosts, from the tests)
 from tests.support.batch_files import write_jobs  # noqa: E402
+from tests.support.hear_pkg import make_package, write_test  # noqa: E402
 from tests.support.resisting import children_launch  # noqa: E402
+
+if TYPE_CHECKING:
+    from tests.support.ray_cluster import RayCluster
+    from tests.support.sshd import SshHosts
 
 PY = sys.executable
 HOSTS = ("robot1", "robot2")
+KINDS = ("children", "demo", "lockstep", "camera", "controllers", "control node", "foxglove",
+         "launch test", "rostest", "remote hosts", "batch on Ray")
 SIMS = ("demo", "lockstep", "camera", "controllers")  # (the kinds memory pressure is put on)
 
 CAMERA_WORLD = """<?xml version="1.0"?><sdf version="1.9"><world name="cameras">
@@ -132,50 +140,6 @@ class TestRuns(unittest.TestCase):
         import time
         time.sleep(20)
 """
-ROS1_MANIFEST = """<?xml version="1.0"?>
-<package format="2"><name>hear_pkg</name><version>0.0.1</version><description>hears
-</description><maintainer email="dev@example.com">dev</maintainer><license>BSD</license>
-<buildtool_depend>catkin</buildtool_depend><depend>rospy</depend>
-<test_depend>rostest</test_depend></package>
-"""
-ROS1_TALKER = """#!/usr/bin/env python3
-import rospy
-from std_msgs.msg import String
-
-rospy.init_node("talker")
-pub = rospy.Publisher("chatter", String, queue_size=10)
-rate = rospy.Rate(10)
-try:
-    while not rospy.is_shutdown():
-        pub.publish(String(data="hello"))
-        rate.sleep()
-except rospy.ROSInterruptException:
-    pass
-"""
-ROS1_TEST = """#!/usr/bin/env python3
-import time
-import unittest
-
-import rospy
-import rostest
-from std_msgs.msg import String
-
-
-class TestHear(unittest.TestCase):
-    def test_hears(self):
-        rospy.init_node("hear_test")
-        self.assertEqual(rospy.wait_for_message("chatter", String, timeout=10).data, "hello")
-        time.sleep(20)
-
-
-if __name__ == "__main__":
-    rostest.rosrun("hear_pkg", "hear_test", TestHear)
-"""
-ROS1_TEST_FILE = """<launch>
-  <node pkg="hear_pkg" type="talker.py" name="talker" />
-  <test test-name="hear_test" pkg="hear_pkg" type="hear_test.py" time-limit="60" />
-</launch>
-"""
 BATCH = """jobs:
   - test: chatter_test.py
 seeds: 4
@@ -194,8 +158,6 @@ class Run:
     # its children (False) or grandchildren (True), where they are not the launcher's own
     victims: Callable[[bool], list[psutil.Process]] | None = None
     window: float = 4.0  # seconds into the run its fault may come
-    # the exit statuses a signal may end it with, beside the signal's own
-    after_signal: frozenset[int] = frozenset()
 
 
 class Places:
@@ -204,12 +166,12 @@ class Places:
 
     def __init__(self, stack: contextlib.ExitStack, base: Path) -> None:
         self.stack, self.base = stack, base
-        self._hosts = self._cluster = None
+        self._hosts: SshHosts | None = None
+        self._cluster: RayCluster | None = None
 
     def available(self) -> tuple[list[str], list[str]]:
         """(the kinds this machine runs, a line for each it cannot, and why)."""
-        kinds = ["children", "demo", "lockstep", "camera", "controllers", "control node",
-                 "foxglove", "launch test", "rostest"]
+        kinds = [k for k in KINDS if k not in ("remote hosts", "batch on Ray")]
         why = []
         root = os.geteuid() == 0
         tools = all(shutil.which(t) for t in ("/usr/sbin/sshd", "ssh", "ip", "unshare"))
@@ -223,9 +185,9 @@ class Places:
             why.append(("batch on Ray", "not run: needs root and Ray (launcher[cluster])"))
         return kinds, why
 
-    def hosts(self):
+    def hosts(self) -> SshHosts:
         if self._hosts is None:
-            from tests.support.sshd import SshHosts
+            from tests.support.sshd import SshHosts  # (pytest's: only where hosts are made)
             root = Path(tempfile.mkdtemp(prefix="lnc", dir="/tmp"))
             self.stack.callback(shutil.rmtree, root, ignore_errors=True)
             self._hosts = self.stack.enter_context(SshHosts(root / "ssh", HOSTS))
@@ -237,18 +199,26 @@ class Places:
                 self._hosts.set_environment(name, own)
         return self._hosts
 
-    def cluster(self):
+    def cluster(self) -> RayCluster:
         if self._cluster is None:
-            from tests.support.ray_cluster import ray_cluster
+            from tests.support.ray_cluster import ray_cluster  # (idem)
             self._cluster = self.stack.enter_context(ray_cluster())
         return self._cluster
 
 
-def launch(kind: str, folder: Path, rng: random.Random, prefix: str, places: Places,
-           tag_variable: str, tag: str) -> Run:
-    """The run of a launch of `kind` in `folder`; `prefix` is the sims' launch prefix."""
-    cmd = launcher_cmd()
-    prefixed = [f"--launch-prefix={prefix}"] if prefix else []
+@dataclass
+class Setting:
+    """What one run's launch is written with."""
+    folder: Path  # the run's own folder (its files, its working directory)
+    rng: random.Random
+    prefix: str  # the sims' launch prefix ("" for none)
+    tag: tuple[str, str]  # the variable, and its value, that the run's processes carry
+
+
+def launch(kind: str, setting: Setting, places: Places) -> Run:
+    """The run of a launch of `kind`."""
+    cmd, folder, rng = launcher_cmd(), setting.folder, setting.rng
+    prefixed = [f"--launch-prefix={setting.prefix}"] if setting.prefix else []
     if kind == "children":
         (folder / "c.launch.yaml").write_text(children_launch(rng, most=12, timeout=0.5))
         return Run([*cmd, "launch", "-n", "c.launch.yaml"])
@@ -279,26 +249,19 @@ def launch(kind: str, folder: Path, rng: random.Random, prefix: str, places: Pla
         return rostest(folder, cmd)
     if kind == "remote hosts":
         return remote(folder, rng, cmd, places.hosts())
-    return batch(folder, rng, cmd, places.cluster(), tag_variable, tag)
+    if kind == "batch on Ray":
+        return batch(setting, cmd, places.cluster())
+    raise ValueError(f"no launch of kind {kind!r}: {', '.join(KINDS)}")
 
 
 def rostest(folder: Path, cmd: list[str]) -> Run:
-    package = folder / "src" / "hear_pkg"
-    (package / "scripts").mkdir(parents=True)
-    (package / "test").mkdir()
-    (package / "package.xml").write_text(ROS1_MANIFEST)
-    for name, text in (("talker.py", ROS1_TALKER), ("hear_test.py", ROS1_TEST)):
-        (package / "scripts" / name).write_text(text)
-        (package / "scripts" / name).chmod(0o755)
-    (package / "test" / "hear.test").write_text(ROS1_TEST_FILE)
-    # (as rostest's, its status is its tests' result after a signal too: the tests that ran
-    # and passed, 0; one stopped before its end fails, 1)
+    """rostest's own package: a talker, and a test that hears it, then runs on for 20 s."""
+    write_test(make_package(folder / "src"), delay=20, limit=60)
     return Run([*cmd, "rostest", "hear_pkg", "hear.test"],
-               {"LAUNCHER_PACKAGE_PATH": str(folder / "src"), "ROS_HOME": str(folder / "home")},
-               after_signal=frozenset({0, 1}))
+               {"LAUNCHER_PACKAGE_PATH": str(folder / "src"), "ROS_HOME": str(folder / "home")})
 
 
-def remote(folder: Path, rng: random.Random, cmd: list[str], hosts) -> Run:
+def remote(folder: Path, rng: random.Random, cmd: list[str], hosts: SshHosts) -> Run:
     """Children on the two hosts, launched from the launching host; what a host still runs
     but its sshd's own processes (a connection's sshd waits on TCP, not on the launch) is
     left behind."""
@@ -318,27 +281,37 @@ def remote(folder: Path, rng: random.Random, cmd: list[str], hosts) -> Run:
                {"LAUNCHER_SSH_COMMAND": hosts.ssh_command}, elsewhere, window=6.0)
 
 
-def batch(folder: Path, rng: random.Random, cmd: list[str], cluster, tag_variable: str,
-          tag: str) -> Run:
+def batch(setting: Setting, cmd: list[str], cluster: RayCluster) -> Run:
     """Four launch tests on the cluster's two nodes, the driver on a host of its own; the
-    jobs carry the run's tag (their job hosts are the batch's children, what they start its
-    grandchildren)."""
-    jobs = write_jobs(folder / "jobs")
+    jobs carry the run's tag. Its children are the cluster's job hosts, its grandchildren
+    what they start; a job host left once the run is over is left behind."""
+    jobs = write_jobs(setting.folder / "jobs")
+    variable, value = setting.tag
     (jobs / "b.batch.yaml").write_text(BATCH.format(env=json.dumps(
-        {tag_variable: tag, "CHATTER_LISTEN": rng.choice(("1", "4", "8"))})))
+        {variable: value, "CHATTER_LISTEN": setting.rng.choice(("1", "4", "8"))})))
     argv = cluster.driver_argv([*cmd, "batch", str(jobs / "b.batch.yaml"), "-n", "--address",
                                 cluster.address])
     env = cluster.driver_env({})
     env["LAUNCHER_PACKAGE_PATH"] = str(REPO / "packages")
 
+    def job_hosts() -> list[psutil.Process]:
+        return [p for p in cluster.tagged() if "launcher.batch.host" in " ".join(cmdline(p))]
+
     def victims(deep: bool) -> list[psutil.Process]:
-        """The job hosts (the batch's one at a time), or what the jobs started."""
+        if not deep:
+            return job_hosts()
         found = []
         for proc in psutil.process_iter():
             with contextlib.suppress(psutil.Error):
-                if ("launcher.batch.host" in " ".join(proc.cmdline())) != deep and \
-                        (not deep or proc.environ().get(tag_variable) == tag):
+                if proc.environ().get(variable) == value:
                     found.append(proc)
         return found
 
-    return Run(argv, env, victims=victims, window=15.0)
+    return Run(argv, env, elsewhere=job_hosts, victims=victims, window=15.0)
+
+
+def cmdline(proc: psutil.Process) -> list[str]:
+    try:
+        return proc.cmdline()
+    except psutil.Error:
+        return []

@@ -31,9 +31,9 @@ KINDS = {
     "sleeper": "sleep 120",
     "setsid": "sh -c 'setsid sleep 120 & sleep 120'",
     "job control": "sh -c 'set -m; sleep 120 & sleep 120'",
-    "daemon": f"{PY} daemon.py",
-    "ignores SIGINT": f"{PY} stubborn.py SIGINT",
-    "ignores both": f"{PY} stubborn.py SIGINT SIGTERM",
+    "daemon": f"{PY} {{here}}daemon.py",
+    "ignores SIGINT": f"{PY} {{here}}stubborn.py SIGINT",
+    "ignores both": f"{PY} {{here}}stubborn.py SIGINT SIGTERM",
     "crash": "sh -c 'sleep 0.1; kill -SEGV $$'",
     "fails": "sh -c 'exit 3'",
     "respawn storm": "sh -c 'sleep 120 & exit 0'",
@@ -49,10 +49,8 @@ def children_launch(rng: random.Random, most: int, timeout: float,
              *(f"  - machine: {{name: {name}, address: {name}}}" for name in machines)]
     for _ in range(rng.randint(1, most)):
         kind = rng.choice(list(KINDS))
-        cmd = KINDS[kind].replace('"', '\\"')
-        if folder is not None:
-            cmd = cmd.replace(" daemon.py", f" {folder}/daemon.py").replace(
-                " stubborn.py", f" {folder}/stubborn.py")
+        here = f"{folder}/" if folder is not None else ""
+        cmd = KINDS[kind].format(here=here).replace('"', '\\"')
         extra = ", respawn: true, respawn_delay: 0" if kind == "respawn storm" else ""
         if machines:
             extra += f", machine: {rng.choice(machines)}"
