@@ -26,6 +26,8 @@ from launcher.bus.discovery import NoRouter
 from launcher.bus.zenoh_settings import json5, settings
 from launcher.private import write_private
 
+SESSION_DESCRIPTORS = 32  # what opening a session may take (measured: 15), with room
+
 __all__ = ["NoRouter", "config", "declare_host", "open_session", "settings",
            "write_session_config"]
 
@@ -67,6 +69,7 @@ def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
     (a client, whatever `mode`, of a router on another host)."""
     env = os.environ if environ is None else environ
     discovery.domain_id(env)  # a bad ROS_DOMAIN_ID is said before anything else
+    _room_for_a_session()
     wait = discovery.timeout(env)
     holds_nodes = mode == "peer"
     with discovery.router(env) as endpoints:
@@ -86,6 +89,24 @@ def open_session(mode: str = "peer", environ: Mapping[str, str] | None = None,
     if holds_nodes:
         _host_tokens[str(session.zid())] = declare_host(session)
     return session
+
+
+def _room_for_a_session() -> None:
+    """Zenoh aborts the whole process (a panic in a destructor) when the file descriptors run
+    out while a session opens: too few left is said as an error instead, before it begins."""
+    import resource
+
+    limit = resource.getrlimit(resource.RLIMIT_NOFILE)[0]
+    if limit == resource.RLIM_INFINITY:
+        return
+    try:
+        used = len(os.listdir("/proc/self/fd"))
+    except OSError:  # (no /proc: nothing to say)
+        return
+    if limit - used < SESSION_DESCRIPTORS:
+        raise NoRouter(f"too few file descriptors are left to join the graph: {limit - used} "
+                       f"of {limit} (ulimit -n), where a session needs up to "
+                       f"{SESSION_DESCRIPTORS}")
 
 
 def declare_host(session: zenoh.Session) -> zenoh.LivelinessToken:

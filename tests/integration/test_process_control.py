@@ -12,6 +12,7 @@ import time
 
 import pytest
 
+from tests.support.processes import launcher_argv
 from tests.support.workspace import Workspace
 
 TICKER = """
@@ -299,3 +300,25 @@ def test_the_run_s_log_reaches_its_file_while_the_launch_runs(ws):
         proc.kill()  # (no orderly end: what is in the file is what was flushed)
         proc.wait(10)
     assert "[ticker-1] hello from" in (folder / "launch.log").read_text()
+
+
+def test_too_few_file_descriptors_for_the_control_is_said_and_the_launch_runs_on(ws):
+    """Zenoh aborts the process when descriptors run out while its session opens (found by the
+    fault campaign's full descriptor table): the launch says why it cannot be reached, and
+    runs on to its Ctrl-C."""
+    ws.write("five.launch.yaml", "launch:\n" + "  - executable: {cmd: sleep 60}\n" * 5)
+    proc = subprocess.Popen(["prlimit", "--nofile=40", *launcher_argv(), "launch",
+                             "five.launch.yaml"], cwd=ws.root, env=ws.env, text=True,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    text = ""
+    for line in proc.stdout:
+        text += line
+        if "cannot reach this launch" in line:
+            break
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == 130, text + out + err
+    assert "`launcher ps` and its kin cannot reach this launch: too few file descriptors are " \
+           "left to join the graph: " in text
+    assert "(ulimit -n), where a session needs up to 32" in text
+    assert "panicked" not in err
