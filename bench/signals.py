@@ -111,8 +111,10 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
         wait: float) -> tuple[str, int, str]:
     """(outcome, left behind, details) of one launch signalled at a random moment."""
     run = uuid.uuid4().hex
+    traced = folder / f"trace-{run}.txt"  # (what its handlers saw: printed when it is lost)
     proc = subprocess.Popen([*launcher_cmd(), "launch", "-n", str(folder / "s.launch.yaml")],
-                            env={**env, RUN_VARIABLE: run}, cwd=folder, start_new_session=True,
+                            env={**env, RUN_VARIABLE: run, "LAUNCHER_SIGNAL_TRACE": str(traced)},
+                            cwd=folder, start_new_session=True,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     started = time.monotonic()
     delay = rng.uniform(0, 1.0)
@@ -143,9 +145,11 @@ def one(folder: Path, env: dict[str, str], rng: random.Random, sig: int,
         outcome = LOST
         details = (f"signal {signal.Signals(sig).name} at {delay:.3f} s (at {sent_at:.4f})\n"
                    f"{signal_state(proc.pid)}\n{stacks(proc.pid)}\nits log:\n"
-                   f"{launch_log(folder, proc.pid)}")
+                   f"{launch_log(folder, proc.pid)}\nits handlers saw:\n"
+                   f"{traced.read_text() if traced.exists() else '(nothing)'}")
         proc.kill()
         details += "\nits stderr:\n" + proc.communicate()[1][-3000:]
+    traced.unlink(missing_ok=True)
     deadline = time.monotonic() + 5.0  # (a SIGKILLed launcher's watchdog takes a moment)
     left = carrying(run)
     while left and time.monotonic() < deadline:

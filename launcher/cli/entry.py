@@ -30,6 +30,16 @@ class _Interrupted(KeyboardInterrupt):  # launcher.errors.Interrupted, before it
 
 def _interrupt(signum: int, _frame: object) -> None:
     global _raised
+    trace = posix.environ.get(b"LAUNCHER_SIGNAL_TRACE")  # (runtime/loop.py's, for the bench)
+    if trace:
+        import time  # (a built-in module: only when tracing)
+
+        fd = posix.open(trace, posix.O_WRONLY | posix.O_APPEND | posix.O_CREAT, 0o600)
+        posix.write(fd, f"{time.time():.6f} {posix.getpid()} entry {signum} running={_running} "
+                        f"raised={_raised} "
+                        f"at {getattr(_frame, 'f_code', None) and _frame.f_code.co_filename}:"
+                        f"{getattr(_frame, 'f_lineno', '?')}\n".encode())
+        posix.close(fd)
     if not _running:  # still importing this module: nothing to clean up yet
         posix._exit(128 + signum)
     if _raised:  # one is on its way up already: raised again it could land in main()'s own

@@ -41,6 +41,19 @@ class Timer:
         self.cancelled = True
 
 
+TRACE = os.environ.get("LAUNCHER_SIGNAL_TRACE", "")  # a file each signal seen is added to
+
+
+def trace(what: str) -> None:
+    """A line in the LAUNCHER_SIGNAL_TRACE file: when, and what the loop saw or did (for
+    bench/signals.py: a lost signal's last steps)."""
+    fd = os.open(TRACE, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o600)
+    try:
+        os.write(fd, f"{time.time():.6f} {os.getpid()} {what}\n".encode())
+    finally:
+        os.close(fd)
+
+
 class EventLoop:
     def __init__(self, clock: Callable[[], float] = time.monotonic) -> None:
         self.time = clock
@@ -189,6 +202,8 @@ class EventLoop:
             self._busy = busy
 
     def _on_signal(self, signum: int, _frame: Any) -> None:
+        if TRACE:
+            trace(f"loop {signum} busy={self._busy}")
         if self._busy and signum in (signal.SIGINT, signal.SIGTERM):
             self._raised[signum] += 1  # (until taken: code that swallows it loses nothing)
             raise Interrupted(signum)
@@ -201,6 +216,8 @@ class EventLoop:
         with contextlib.suppress(BlockingIOError):
             os.read(self._wakeup[0], 4096)  # type: ignore[index]  # (they only wake the loop)
         pending, self._pending = self._pending, Counter()
+        if TRACE and pending:
+            trace(f"handled {dict(pending)}")
         for number, count in pending.items():
             handler = self._signals.get(number)
             if handler is None:

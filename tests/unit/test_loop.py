@@ -1,8 +1,11 @@
 import contextlib
 import os
 import signal
+import subprocess
+import sys
 
 from launcher.runtime.loop import EventLoop
+from tests.support.environment import REPO
 
 
 class FakeClock:
@@ -176,3 +179,24 @@ def test_a_sigterm_is_not_lost_when_a_storm_of_sigchld_has_filled_the_wakeup_pip
         assert 1 <= got.count(signal.SIGCHLD) <= 3
     finally:
         loop.close()
+
+
+TRACED = """
+import os, signal
+from launcher.runtime.loop import EventLoop
+loop = EventLoop()
+loop.add_signal_handler(signal.SIGTERM, lambda sig: loop.stop())
+loop.call_later(0.0, os.kill, os.getpid(), signal.SIGTERM)
+loop.call_later(5.0, loop.stop)
+loop.run()
+"""
+
+
+def test_each_signal_seen_and_handled_is_traced_where_asked(tmp_path):
+    """LAUNCHER_SIGNAL_TRACE: the file bench/signals.py prints for a lost signal."""
+    traced = tmp_path / "trace.txt"
+    done = subprocess.run([sys.executable, "-c", TRACED], cwd=REPO, timeout=30,
+                          env={**os.environ, "LAUNCHER_SIGNAL_TRACE": str(traced)})
+    assert done.returncode == 0
+    lines = [line.split(" ", 2)[2] for line in traced.read_text().splitlines()]
+    assert lines == ["loop 15 busy=0", "handled {15: 1}"]
