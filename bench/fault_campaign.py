@@ -63,8 +63,8 @@ def carrying(tag: str) -> list[psutil.Process]:
 def victims(pid: int, run: Run, deep: bool) -> list[psutil.Process]:
     """The launcher's children (or, `deep`, its grandchildren and below), or the run's own
     where its processes are not the launcher's descendants (batch jobs on Ray's nodes)."""
-    if run.victims is not None:
-        return run.victims(deep)
+    if run.victims is not None:  # (the launcher carries the run's tag too: not its own victim)
+        return [p for p in run.victims(deep) if p.pid != pid]
     try:
         below = psutil.Process(pid).children(recursive=True)
     except psutil.Error:
