@@ -303,14 +303,16 @@ def difference(a, b) -> float:
 
 
 def settled(driver, within: float = 20.0):
-    """The page's view once two pictures a second apart are the same (a loaded machine's
-    browser draws the last frames of a pause late); fails if it never settles."""
+    """The page's view once three pictures a second apart are the same (a loaded machine's
+    browser draws the last frames of a pause late, and may draw none for a second before
+    them); fails if it never settles."""
     deadline = time.monotonic() + within
-    before = picture(driver)
+    before, quiet = picture(driver), 0
     while time.monotonic() < deadline:
         time.sleep(1)
         now = picture(driver)
-        if difference(before, now) < 0.002:
+        quiet = quiet + 1 if difference(before, now) < 0.002 else 0
+        if quiet == 2:
             return now
         before = now
     raise AssertionError(f"the view kept changing for {within:g} s")
