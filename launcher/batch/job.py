@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
@@ -19,6 +20,7 @@ OUTPUT_VARIABLE = "LAUNCHER_BATCH_OUTPUT"
 SCRATCH_VARIABLE = "LAUNCHER_BATCH_SCRATCH"  # the task's folder for the job (removed after)
 SCRATCH_PREFIX = "lnb-"  # (a task's folder, which the next task removes if its worker died)
 OWNER = "owner"  # in such a folder: the pid of the process that made it
+ORPHANED = 600.0  # seconds after which such a folder without its OWNER is removed
 # what a node's environment must not hand a job: another graph, Ray's own settings
 _NOT_PASSED = ("LAUNCHER_ROUTER", "LAUNCHER_RUN_DIR", "RAY_ADDRESS", "ROS_LOG_DIR",
                "LAUNCHER_BATCH_SCRATCH",
@@ -131,13 +133,22 @@ def environment(spec: JobSpec, base: dict[str, str], folder: JobFolder, run_dir:
 
 def sweep_stale(where: Path, prefix: str) -> list[Path]:
     """Remove the folders `prefix*` in `where` whose owner is gone without removing them (a
-    SIGKILL): this user's, whose owner's pid (the file OWNER in it) no longer runs."""
+    SIGKILL): this user's, whose owner's pid (the file OWNER in it) no longer runs; or that
+    have lost their OWNER for ORPHANED seconds (a removal cut short by what still wrote in
+    it: OWNER is written as the folder is made)."""
     removed = []
     for folder in where.glob(f"{prefix}*"):
+        stat = None
         try:
-            if folder.stat().st_uid != os.getuid():
+            stat = folder.stat()
+            if stat.st_uid != os.getuid():
                 continue
             pid = int((folder / OWNER).read_text())
+        except FileNotFoundError:
+            if stat is not None and folder.is_dir() and time.time() - stat.st_mtime > ORPHANED:
+                shutil.rmtree(folder, ignore_errors=True)
+                removed.append(folder)
+            continue
         except (OSError, ValueError):
             continue
         try:

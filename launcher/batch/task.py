@@ -28,6 +28,7 @@ from launcher.batch.job import (
 
 GRACE = 15.0  # seconds a cancelled job has to stop before the task gives up on it
 WEDGED = 30.0  # seconds past the job's time limit after which the host itself is ended
+REMOVE_WAIT = 3.0  # seconds the job's folder is tried again while its last processes end
 
 
 def node_address() -> str:
@@ -62,6 +63,16 @@ def run_job(spec_json: str) -> dict[str, Any]:
     try:
         return _host(spec, spec_json, node, scratch)
     finally:
+        _remove(scratch)
+
+
+def _remove(scratch: str) -> None:
+    """The job's folder, gone: looked at again while what the job started (ended by the job
+    host's watchdog after a cancel) may still write in it, for up to REMOVE_WAIT seconds."""
+    deadline = time.monotonic() + REMOVE_WAIT
+    shutil.rmtree(scratch, ignore_errors=True)
+    while os.path.exists(scratch) and time.monotonic() < deadline:
+        time.sleep(0.1)
         shutil.rmtree(scratch, ignore_errors=True)
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import io
 import os
 import tarfile
+import time
 from pathlib import Path
 
 import pytest
@@ -231,3 +232,17 @@ def test_a_clusters_folder_whose_batch_is_gone_is_removed_by_the_next(tmp_path):
         (folder / OWNER).write_text(str(pid))
     assert sweep_stale(tmp_path, PRIVATE_PREFIX) == [gone]
     assert running.exists() and not gone.exists()
+
+
+def test_a_task_folder_that_lost_its_owner_file_is_removed_once_it_is_old(tmp_path):
+    """A removal cut short (the job still wrote in it) leaves a folder without OWNER: the
+    next task removes it once it is ORPHANED seconds old, and leaves a younger one be."""
+    from launcher.batch.job import ORPHANED, SCRATCH_PREFIX, sweep_stale
+
+    old, young = tmp_path / f"{SCRATCH_PREFIX}old", tmp_path / f"{SCRATCH_PREFIX}young"
+    for folder in (old, young):
+        (folder / "lnb-job").mkdir(parents=True)
+    then = time.time() - ORPHANED - 60
+    os.utime(old, (then, then))
+    assert sweep_stale(tmp_path, SCRATCH_PREFIX) == [old]
+    assert young.exists() and not old.exists()
