@@ -47,8 +47,11 @@ class Cluster:
         token.chmod(0o600)
         # (TMPDIR: the jobs' folders go inside, so a batch ended by SIGKILL leaves one folder,
         # which the next batch removes)
+        # (SPT_NOENV: Ray's process titles must not overwrite its processes' environment,
+        # where the batch's mark is: without it, its agents escaped a SIGKILLed batch's sweep)
         os.environ.update(RAY_AUTH_MODE="token", RAY_AUTH_TOKEN_PATH=str(token),
-                          RAY_USAGE_STATS_ENABLED="0", TMPDIR=str(private / "tmp"))
+                          RAY_USAGE_STATS_ENABLED="0", TMPDIR=str(private / "tmp"),
+                          SPT_NOENV="1")
         os.environ.pop("RAY_ADDRESS", None)
         import ray
 
