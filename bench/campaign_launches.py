@@ -9,8 +9,8 @@ launcher starts, each written into a run's own folder, and the two places some o
 - lockstep: the repo's robot_lockstep.launch.yaml;
 - camera: a world with an RGB and a depth camera (the sim and its renderer) and the bridge of
   both images;
-- controllers: the sim with an arm whose controller manager runs in it (gz_ros2_control),
-  create, and a spawner of two controllers;
+- controllers: the sim with the ros2_control tests' arm, whose controller manager runs in it
+  (gz_ros2_control), create, and a spawner of two controllers;
 - control node: robot_state_publisher, ros2_control_node on mock hardware and a spawner;
 - foxglove: the Foxglove bridge node beside a sleeper;
 - launch test: `launcher test` of a launch_testing file whose process it checks;
@@ -44,6 +44,7 @@ sys.path.insert(0, str(REPO))  # (the children that resist, and the hosts, from 
 from tests.support.batch_files import write_jobs  # noqa: E402
 from tests.support.hear_pkg import make_package, write_test  # noqa: E402
 from tests.support.resisting import children_launch  # noqa: E402
+from tests.support.robots import ARM, arm_links  # noqa: E402
 
 if TYPE_CHECKING:
     from tests.support.ray_cluster import RayCluster
@@ -74,28 +75,6 @@ CAMERA_LAUNCH = """launch:
   - node: {pkg: ros_gz_bridge, exec: parameter_bridge,
            args: "/rgb@sensor_msgs/msg/Image[gz.msgs.Image
                   /depth@sensor_msgs/msg/Image[gz.msgs.Image"}
-"""
-ARM = """<?xml version="1.0"?>
-<robot name="arm">
-  <link name="world"/>
-  <link name="base"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0"
-    ixz="0" iyz="0"/></inertial></link>
-  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
-    <origin xyz="0 0 0.5"/></joint>
-  <link name="l1"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0"
-    ixz="0" iyz="0"/></inertial></link>
-  <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/>
-    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="50"
-    velocity="5"/><dynamics damping="0.5"/></joint>
-  <ros2_control name="ArmSystem" type="system">
-    <hardware><plugin>{hardware}</plugin></hardware>
-    <joint name="j1"><command_interface name="position"/>
-      <state_interface name="position"/><state_interface name="velocity"/></joint>
-  </ros2_control>
-  <gazebo><plugin filename="gz_ros2_control-system"
-    name="gz_ros2_control::GazeboSimROS2ControlPlugin">
-    <parameters>{yaml}</parameters></plugin></gazebo>
-</robot>
 """
 CONTROLLERS = """controller_manager:
   ros__parameters:
@@ -233,9 +212,10 @@ def launch(kind: str, setting: Setting, places: Places) -> Run:
     if kind in ("controllers", "control node"):
         yaml = folder / "controllers.yaml"
         yaml.write_text(CONTROLLERS)
-        hardware = "gz_ros2_control/GazeboSimSystem" if kind == "controllers" else \
-            "mock_components/GenericSystem"
-        (folder / "arm.urdf").write_text(ARM.format(hardware=hardware, yaml=yaml))
+        arm = ARM.format(links=arm_links(4), yaml=yaml)
+        if kind == "control node":
+            arm = arm.replace("gz_ros2_control/GazeboSimSystem", "mock_components/GenericSystem")
+        (folder / "arm.urdf").write_text(arm)
         (folder / "arm.launch.yaml").write_text(
             CONTROLLERS_LAUNCH if kind == "controllers" else CONTROL_NODE_LAUNCH)
         return Run([*cmd, "launch", "-n", *prefixed, "arm.launch.yaml"])

@@ -11,6 +11,7 @@ import pytest
 
 from tests.support.environment import shared
 from tests.support.nodes import stop
+from tests.support.robots import ARM, LINK, arm_links
 from tests.support.waiting import wait_until
 
 DEMOS = ("external", "gz_ros2_control_demos")
@@ -132,37 +133,6 @@ def test_diff_drive_example_runs_unchanged_and_twist_stamped_moves_odometry(demo
         assert stop(proc) == 130
 
 
-ARM = """<?xml version="1.0"?>
-<robot name="arm">
-  <link name="world"/>
-  <link name="base"><inertial><mass value="5"/><inertia ixx="1" iyy="1" izz="1" ixy="0"
-    ixz="0" iyz="0"/></inertial></link>
-  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
-    <origin xyz="0 0 0.5"/></joint>
-  {links}
-  <ros2_control name="ArmSystem" type="system">
-    <hardware><plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
-    <joint name="j1"><command_interface name="position"><param name="min">-2</param>
-      <param name="max">2</param></command_interface>
-      <state_interface name="position"/><state_interface name="velocity"/>
-      <state_interface name="effort"/></joint>
-    <joint name="j2"><command_interface name="position"/>
-      <state_interface name="position"/><state_interface name="velocity"/></joint>
-    <joint name="j3"><command_interface name="velocity"/>
-      <state_interface name="position"/><state_interface name="velocity"/></joint>
-    <joint name="j4"><command_interface name="effort"/>
-      <state_interface name="position"/><state_interface name="velocity"/></joint>
-  </ros2_control>
-  <gazebo><plugin filename="gz_ros2_control-system"
-    name="gz_ros2_control::GazeboSimROS2ControlPlugin">
-    <parameters>{yaml}</parameters></plugin></gazebo>
-</robot>
-"""
-LINK = """<link name="l{n}"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1"
-  ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="j{n}" type="revolute"><parent link="{parent}"/><child link="l{n}"/>
-    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="50"
-    velocity="5"/><dynamics damping="0.5"/></joint>"""
 EFFORT_BLOCK = """effort_group:
   ros__parameters:
     joints: [j4]
@@ -223,8 +193,7 @@ def arm(ws):
     # a second <parameters> file: effort_group's parameters are only there
     effort = ws.write("arm_effort.yaml", f"""
     {EFFORT_BLOCK.replace(chr(10), chr(10) + "    ")}""")
-    links = "\n  ".join(LINK.format(n=n, parent="base" if n == 1 else f"l{n - 1}")
-                        for n in range(1, 5))
+    links = arm_links(4)
     ws.write("arm.urdf", ARM.format(links=links, yaml=f"{yaml}</parameters><parameters>{effort}"))
     proc = ws.start("gz", "sim", "-r", "-s", "-v", "3", "empty.sdf", output="sim.out")
     ws.wait_for_output("running", 60, "sim.out")
@@ -433,8 +402,7 @@ def test_an_unknown_hardware_plugin_is_refused_at_its_line(ws):
 def test_ros2_control_node_runs_the_manager_on_mock_hardware(ws):
     ws.own_bus()
     yaml = ws.write("arm_controllers.yaml", ARM_YAML)
-    links = "\n  ".join(LINK.format(n=n, parent="base" if n == 1 else f"l{n - 1}")
-                        for n in range(1, 5))
+    links = arm_links(4)
     ws.write("arm.urdf", ARM.format(links=links, yaml=yaml).replace(
         "gz_ros2_control/GazeboSimSystem", "mock_components/GenericSystem"))
     ws.write("mock.launch.yaml", f"""

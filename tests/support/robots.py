@@ -56,3 +56,45 @@ WHEEL = """<link name="{side}_wheel"><inertial><mass value="0.2"/><inertia ixx="
   <joint name="{side}_wheel_joint" type="continuous"><parent link="base_link"/>
   <child link="{side}_wheel"/><origin xyz="0 {y} 0.05" rpy="-1.5707963 0 0"/>
   <axis xyz="0 0 1"/></joint>"""
+
+
+# A fixed arm of revolute links under ros2_control (gz_ros2_control in the sim; replace its
+# plugin by mock_components/GenericSystem for ros2_control_node): its joints j1-j4, whose
+# interfaces are the ros2_control tests', {links} from arm_links(4), {yaml} its controllers.
+ARM = """<?xml version="1.0"?>
+<robot name="arm">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="5"/><inertia ixx="1" iyy="1" izz="1" ixy="0"
+    ixz="0" iyz="0"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
+    <origin xyz="0 0 0.5"/></joint>
+  {links}
+  <ros2_control name="ArmSystem" type="system">
+    <hardware><plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
+    <joint name="j1"><command_interface name="position"><param name="min">-2</param>
+      <param name="max">2</param></command_interface>
+      <state_interface name="position"/><state_interface name="velocity"/>
+      <state_interface name="effort"/></joint>
+    <joint name="j2"><command_interface name="position"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+    <joint name="j3"><command_interface name="velocity"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+    <joint name="j4"><command_interface name="effort"/>
+      <state_interface name="position"/><state_interface name="velocity"/></joint>
+  </ros2_control>
+  <gazebo><plugin filename="gz_ros2_control-system"
+    name="gz_ros2_control::GazeboSimROS2ControlPlugin">
+    <parameters>{yaml}</parameters></plugin></gazebo>
+</robot>
+"""
+LINK = """<link name="l{n}"><inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1"
+  ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="j{n}" type="revolute"><parent link="{parent}"/><child link="l{n}"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="50"
+    velocity="5"/><dynamics damping="0.5"/></joint>"""
+
+
+def arm_links(count: int) -> str:
+    """ARM's links l1…l<count>, each on the one before (the first on base)."""
+    return "\n  ".join(LINK.format(n=n, parent="base" if n == 1 else f"l{n - 1}")
+                        for n in range(1, count + 1))
