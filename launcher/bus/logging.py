@@ -5,7 +5,19 @@ a message one time only. (A user's rclpy node logs as rcutils does: rclpy/loggin
 from __future__ import annotations
 
 import sys
+import threading
 import time
+from typing import TextIO
+
+_LINES = threading.Lock()
+
+
+def write_line(stream: TextIO, line: str) -> None:
+    """Write `line` and its newline as one write, flushed, under one lock: a node's threads
+    (a multi-threaded executor's callbacks) never run their lines into each other."""
+    with _LINES:
+        stream.write(line + "\n")
+        stream.flush()
 
 
 class Logger:
@@ -21,8 +33,8 @@ class Logger:
         self._once.add(message)
         stream = sys.stderr if self.LEVELS[level] >= 30 else sys.stdout
         stamp = time.time_ns()
-        print(f"[{level}] [{stamp // 1_000_000_000}.{stamp % 1_000_000_000:09d}] "
-              f"[{self.name}]: {message}", file=stream, flush=True)
+        write_line(stream, f"[{level}] [{stamp // 1_000_000_000}.{stamp % 1_000_000_000:09d}] "
+                           f"[{self.name}]: {message}")
 
     def debug(self, message: str, once: bool = False) -> None:
         self._log("DEBUG", message, once)

@@ -100,6 +100,27 @@ def test_logging_goes_to_stdout_when_rcutils_is_told_so(capsys, monkeypatch):
     assert "[talker]: loud" in out and err == ""
 
 
+def test_a_log_line_is_one_write_so_threads_never_run_lines_together(monkeypatch):
+    """A multi-threaded executor's callbacks log at once: each line reaches the stream whole,
+    its newline with it, as rcutils writes a line under its lock."""
+    class Stream:
+        def __init__(self) -> None:
+            self.writes: list[str] = []
+
+        def write(self, text: str) -> int:
+            self.writes.append(text)
+            return len(text)
+
+        def flush(self) -> None:
+            pass
+
+    stream = Stream()
+    monkeypatch.setattr("sys.stderr", stream)
+    rclpy.logging.get_logger("server").info("Received cancel request")
+    assert len(stream.writes) == 1 and stream.writes[0].endswith(
+        "[server]: Received cancel request\n")
+
+
 def test_rclpys_named_profiles_are_the_bus_vocabularys():
     import rclpy.qos
 

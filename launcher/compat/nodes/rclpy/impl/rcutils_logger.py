@@ -16,6 +16,7 @@ import time
 from types import FrameType
 from typing import Any, ClassVar, NamedTuple, TypedDict
 
+from launcher.bus.logging import write_line
 from rclpy.impl.logging_severity import LoggingSeverity
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -277,8 +278,8 @@ class RcutilsLogger:
         stream = sys.stdout if os.environ.get("RCUTILS_LOGGING_USE_STDOUT") == "1" else \
             sys.stderr
         stamp = time.time_ns()
-        print(f"[{severity.name}] [{stamp // 1_000_000_000}.{stamp % 1_000_000_000:09d}] "
-              f"[{name}]: {message}", file=stream, flush=True)
+        write_line(stream, f"[{severity.name}] [{stamp // 1_000_000_000}."
+                           f"{stamp % 1_000_000_000:09d}] [{name}]: {message}")
         return True
 
     def _context(self, site: CallerId, name: str, severity: LoggingSeverity,
