@@ -178,8 +178,14 @@ def test_a_sigkill_of_the_batch_leaves_nothing_running(batch_ws):
 
 def left_in(ws) -> list[str]:
     """What of the batch still runs: what carries the test's tag, or runs in its folder
-    (Ray's agents: their titles once overwrote the environment the tag is in)."""
-    found = [" ".join(p.cmdline()) for p in ws.processes()]
+    (Ray's agents: their titles once overwrote the environment the tag is in). A process that
+    ended while it was looked at, or whose parent has yet to reap it, runs no more."""
+    found = []
+    for proc in ws.processes():
+        try:
+            found.append(" ".join(proc.cmdline()))
+        except psutil.Error:
+            continue
     for proc in psutil.process_iter():
         try:
             if proc.cwd().startswith(str(ws.root)) and proc.pid != os.getpid():
