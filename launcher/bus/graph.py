@@ -24,7 +24,7 @@ def entities(session: zenoh.Session, timeout: float = 1.0,
     """The graph's entities (or those whose tokens match `selector`, a liveliness key
     expression: a question about one name costs one name's tokens, not the whole graph's)."""
     found = []
-    for reply in session.liveliness().get(selector or f"{space.liveliness}/{keys.DOMAIN}/**",
+    for reply in session.liveliness().get(selector or f"{space.liveliness}/{keys.domain()}/**",
                                           timeout=timeout):
         if reply.ok is not None:
             entity = keys.parse_liveliness(str(reply.ok.key_expr))
@@ -37,7 +37,7 @@ def servers(session: zenoh.Session, service: str, type_name: str, timeout: float
             space: keys.Space = keys.ROS) -> list[keys.Entity]:
     """The servers of `service` (any service of `type_name` when it is empty)."""
     return entities(session, timeout, space,
-                    keys.servers_selector(keys.DOMAIN, service, type_name, space))
+                    keys.servers_selector(keys.domain(), service, type_name, space))
 
 
 def topics(session: zenoh.Session, space: keys.Space = keys.ROS) -> dict[str, TopicInfo]:
@@ -60,7 +60,7 @@ def hosts(session: zenoh.Session, timeout: float = 1.0) -> dict[str, str]:
     """Which host each session runs on (its zid → the host's name), as launcher's sessions
     say (keys.host_key); a session of another program (rmw_zenoh's) says nothing."""
     found = {}
-    for reply in session.liveliness().get(keys.hosts_selector(keys.DOMAIN), timeout=timeout):
+    for reply in session.liveliness().get(keys.hosts_selector(keys.domain()), timeout=timeout):
         if reply.ok is not None:
             said = keys.parse_host_key(str(reply.ok.key_expr))
             if said is not None:

@@ -78,7 +78,7 @@ class Host:
         entity = keys.Entity(str(self.session.zid()), self.node_id, number, kind,
                              self.namespace, self.name, name, type_name, type_hash, qos)
         return self.session.liveliness().declare_token(
-            keys.liveliness_key(keys.DOMAIN, entity, space))
+            keys.liveliness_key(keys.domain(), entity, space))
 
     def share_queue(self, other: Host) -> None:
         """Hand this host's callbacks to `other`'s executor: the two nodes are spun as one

@@ -30,6 +30,7 @@ from __future__ import annotations
 import os
 import struct
 
+from launcher.bus import places
 from launcher.bus.tokens import (  # noqa: F401 - the names keys' users know
     CLIENT,
     NODE,
@@ -44,9 +45,13 @@ from launcher.bus.tokens import ROS as LIVELINESS
 from launcher.bus.tokens import SIM as SIM_LIVELINESS
 from launcher.records import dataclass
 
-_DOMAIN_TEXT = os.environ.get("ROS_DOMAIN_ID", "").strip()
-# checked (0–232) where sessions open (discovery.domain_id): a bad one is said there
-DOMAIN = int(_DOMAIN_TEXT) if _DOMAIN_TEXT.isdigit() else 0
+
+def domain() -> int:
+    """The ROS domain, $ROS_DOMAIN_ID, read when a key is made (a node may set it before it
+    makes its node, and a warm-started process imported this module before its environment
+    was its own); checked (0–232) where sessions open (discovery.domain_id): a bad one is
+    said there."""
+    return places.domain(os.environ) or 0
 
 
 @dataclass(frozen=True)

@@ -38,7 +38,7 @@ class MatchWatch:
         self._total = 0
         self._lock = threading.Lock()  # (the changes are counted and reported in their order)
         self._subscriber = session.liveliness().declare_subscriber(
-            keys.endpoints_selector(keys.DOMAIN, kind, topic, space),
+            keys.endpoints_selector(keys.domain(), kind, topic, space),
             zenoh.handlers.Callback(self._on_token, indirect=False), history=True)
 
     def _on_token(self, sample: Any) -> None:

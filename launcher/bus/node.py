@@ -120,7 +120,7 @@ class Node:
         self._rechecks: Any = None  # the timer that looks again
         self._token = self.host.announce(keys.NODE)
         self._shutdown = self.session.declare_queryable(
-            keys.shutdown_key(keys.DOMAIN, str(self.session.zid()), self.host.node_id),
+            keys.shutdown_key(keys.domain(), str(self.session.zid()), self.host.node_id),
             direct(self._asked_to_shut_down)) if space == keys.ROS and within is None else None
         self._stopped = threading.Event()
         self.interrupted = False  # Ctrl-C arrived during spin()

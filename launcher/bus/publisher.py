@@ -32,7 +32,7 @@ class Publisher:
         self.type_name = types.ensure(type_name)
         self.topic, self.qos, self._host = topic, qos, host
         self.space = space or host.space
-        self.key = key = keys.topic_key(keys.DOMAIN, topic, self.type_name,
+        self.key = key = keys.topic_key(keys.domain(), topic, self.type_name,
                                         types.type_hash(self.type_name), self.space)
         # As rmw_zenoh: only a reliable keep-all publisher blocks under congestion; the others
         # drop what a congested link cannot take, so a subscriber that stops reading (a

@@ -46,7 +46,7 @@ class Service:
         self._new_response = new_response or (lambda: types.message_class(
             self.response_type)(**_zero_fields(self.response_type)))
         space = space or host.space
-        key = keys.service_key(keys.DOMAIN, name, type_name, type_hash, space)
+        key = keys.service_key(keys.domain(), name, type_name, type_hash, space)
         self._queryable = host.session.declare_queryable(key, direct(self._on_query))
         self._token = host.announce(keys.SERVICE, name, type_name, type_hash, QoS().key(),
                                     space)
@@ -134,7 +134,7 @@ class Client:
         self.type_name, self.name, self._host, self._make = type_name, name, host, make
         self.request_type, self.response_type = types.service(type_name)
         self.space = space or host.space
-        self._key = keys.service_key(keys.DOMAIN, name, type_name, types.service_hash(type_name),
+        self._key = keys.service_key(keys.domain(), name, type_name, types.service_hash(type_name),
                                      self.space)
         self._token = host.announce(keys.CLIENT, name, type_name, types.service_hash(type_name),
                                     QoS().key(), self.space)

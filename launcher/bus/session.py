@@ -112,4 +112,4 @@ def _room_for_a_session() -> None:
 def declare_host(session: zenoh.Session) -> zenoh.LivelinessToken:
     """The token saying which host `session` runs on (held by the caller: dropped, it goes)."""
     return session.liveliness().declare_token(
-        keys.host_key(keys.DOMAIN, str(session.zid()), os.uname().nodename))
+        keys.host_key(keys.domain(), str(session.zid()), os.uname().nodename))

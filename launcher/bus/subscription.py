@@ -44,7 +44,7 @@ class Subscription:
         self._turn_queued = False
         self._warned = False
         self.space = space or host.space
-        self.key = key = keys.topic_key(keys.DOMAIN, topic, self.type_name,
+        self.key = key = keys.topic_key(keys.domain(), topic, self.type_name,
                                         types.type_hash(self.type_name), self.space)
         LEDGER.subscribe(key)
         # its node's own samples are told by their publisher's gid (the attachment's last 16

@@ -558,7 +558,7 @@ from launcher.bus.session import open_session
 from launcher.bus.types import registry
 types = registry()
 name = "std_msgs/msg/String"
-key = keys.topic_key(keys.DOMAIN, "/late", name, types.type_hash(name))
+key = keys.topic_key(keys.domain(), "/late", name, types.type_hash(name))
 payload = bytes(types.serialize(build(name, {"data": "latched"}), name))
 session = open_session("peer")
 publisher = zenoh.ext.declare_advanced_publisher(
@@ -566,7 +566,7 @@ publisher = zenoh.ext.declare_advanced_publisher(
 publisher.put(payload)
 entity = keys.Entity(str(session.zid()), 1, 1, keys.PUBLISHER, "", "cache", "/late", name,
                      types.type_hash(name), ":1:,1:,:,:,,")
-token = session.liveliness().declare_token(keys.liveliness_key(keys.DOMAIN, entity))
+token = session.liveliness().declare_token(keys.liveliness_key(keys.domain(), entity))
 print("serving", flush=True)
 time.sleep(float(sys.argv[1]))
 token.undeclare(); publisher.undeclare(); session.close()

@@ -51,7 +51,7 @@ def test_matches_are_counted_from_the_graphs_tokens_as_rmw_counts_them():
         declare_subscriber=declare_subscriber))
     told: list[MatchedStatus] = []
     watch = MatchWatch(session, "/r1/chatter", keys.SUBSCRIPTION, told.append)
-    assert asked == [(f"@ros2_lv/{keys.DOMAIN}/*/*/*/MS/*/*/*/%r1%chatter/**", True)]
+    assert asked == [(f"@ros2_lv/{keys.domain()}/*/*/*/MS/*/*/*/%r1%chatter/**", True)]
     came, went = zenoh.SampleKind.PUT, zenoh.SampleKind.DELETE
     for kind, token in [(came, "a"), (came, "a"), (came, "b"), (went, "a"), (went, "c"),
                         (came, "a")]:

@@ -186,7 +186,7 @@ class Bridge:
         # (the topic's publishers alone, given time: a reply cut short by a busy machine
         # read a latched topic as volatile, and its one message was never seen)
         for entity in graph.entities(self.node.graph_session(), QOS_LOOKUP,
-                                     selector=keys.endpoints_selector(keys.DOMAIN,
+                                     selector=keys.endpoints_selector(keys.domain(),
                                                                       keys.PUBLISHER, topic)):
             if entity.kind == keys.PUBLISHER and entity.topic == topic:
                 parsed = keys.parse_qos_key(entity.qos)

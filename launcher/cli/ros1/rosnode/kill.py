@@ -31,7 +31,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"killing {name}", flush=True)
             answered = node is not None and any(
                 reply.ok is not None for reply in session.get(
-                    keys.shutdown_key(keys.DOMAIN, node.zid, node.node_id), timeout=3.0))
+                    keys.shutdown_key(keys.domain(), node.zid, node.node_id), timeout=3.0))
             if not answered:
                 failed.append(name)
     finally:
