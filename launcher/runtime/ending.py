@@ -94,6 +94,7 @@ class Ending:
             hosts.close(then=self.check)
             return
         if self._sweep is None:
+            self.table.system.end_servers()  # (the launcher's own helpers: not left behind)
             left = self.custody.leftovers()
             if left:
                 self._sweep = Sweep(self.custody, self.loop,

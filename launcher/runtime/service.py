@@ -40,6 +40,7 @@ from launcher.runtime.recent import Recent
 from launcher.runtime.start_gate import StartGate
 from launcher.runtime.system import Processes, System
 from launcher.runtime.timers import LaunchTimers
+from launcher.runtime.warm import warm_starts
 
 CONTROL_AFTER = 1.0  # seconds into a launch at which it answers on the graph (launcher ps)
 FLUSH = 0.5  # seconds between flushes of the run's log files
@@ -94,7 +95,8 @@ class LaunchService:
         hosts = Hosts(self.loop, self.context.environment, self.custody.stamp, self.log,
                       os.urandom(8).hex(), remote_graph)
         self.recent = Recent()
-        self.table = ProcessTable(self.loop, system or System(), self.custody, self.printer,
+        self._system: Processes = system or System(warm_starts(self.context.environment))
+        self.table = ProcessTable(self.loop, self._system, self.custody, self.printer,
                                   self.run_log, self.log, self.emit,
                                   lambda: bool(self.handlers.registered),
                                   self._check_idle, on_graph and reporting(on_graph, self.report),
@@ -160,6 +162,7 @@ class LaunchService:
             self.lifecycles.close()
             self.coroutines.close()
             self.loop.close()
+            self._system.end_servers()  # (ended already, unless the launch failed to end)
             # its last look (the sweep) found nothing left: the watchdog need not look again
             self.custody.end(nothing_left=self.ending.swept_all)
             if self.run_log is not None:

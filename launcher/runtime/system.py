@@ -14,9 +14,12 @@ import os
 import pty
 import subprocess
 from collections.abc import Callable
-from typing import Any, NamedTuple, Protocol
+from typing import TYPE_CHECKING, Any, NamedTuple, Protocol
 
 from launcher.dispositions import reset_for_children
+
+if TYPE_CHECKING:
+    from launcher.runtime.warm import WarmStarts
 
 EXIT_POLL = 0.01  # seconds between looks at a leader's exit where there is no pidfd
 
@@ -41,12 +44,16 @@ class Processes(Protocol):
 
     def group_alive(self, pgid: int) -> bool: ...
 
+    def end_servers(self) -> None: ...
+
 
 class System:
-    """The real one."""
+    """The real one; with `warm`, Python processes start warm where they can
+    (runtime/warm.py)."""
 
-    def __init__(self) -> None:
-        self._children: dict[int, subprocess.Popen] = {}
+    def __init__(self, warm: WarmStarts | None = None) -> None:
+        self._children: dict[int, subprocess.Popen | Adopted] = {}
+        self.warm = warm
 
     def spawn(self, argv: list[str], env: dict[str, str], cwd: str | None,
               tty: bool) -> Started:
@@ -56,8 +63,10 @@ class System:
         out_r, out_w = _channel(tty)
         err_r, err_w = _channel(tty)
         try:
-            child = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=out_w, stderr=err_w,
-                                     cwd=cwd, env=env, start_new_session=True, close_fds=True)
+            pid = self._warm(argv, env, cwd, out_w, err_w) if not tty else None
+            child = Adopted(pid) if pid is not None else subprocess.Popen(
+                argv, stdin=subprocess.DEVNULL, stdout=out_w, stderr=err_w, cwd=cwd, env=env,
+                start_new_session=True, close_fds=True)
         except BaseException:
             os.close(out_r)
             os.close(err_r)
@@ -69,6 +78,22 @@ class System:
         for fd in (out_r, err_r):
             os.set_blocking(fd, False)
         return Started(child.pid, out_r, err_r)
+
+    def _warm(self, argv: list[str], env: dict[str, str], cwd: str | None, out: int,
+              err: int) -> int | None:
+        if self.warm is None:
+            return None
+        null = os.open(os.devnull, os.O_RDONLY)
+        try:
+            return self.warm.start(argv, env, cwd, [null, out, err])
+        finally:
+            os.close(null)
+
+    def end_servers(self) -> None:
+        """The warm start's servers end (what they started is the launch's, as any child):
+        at the launch's end, before it looks for what its processes left running."""
+        if self.warm is not None:
+            self.warm.close()
 
     def watch_exit(self, pid: int, loop: Any, exited: Callable[[int | None], None]) -> None:
         """Call `exited(returncode)` on the loop when the process ends (a pidfd, or polls)."""
@@ -113,6 +138,26 @@ class System:
 
     def group_alive(self, pgid: int) -> bool:
         return group_alive(pgid)
+
+
+class Adopted:
+    """A child the launcher did not fork itself (a warm start's: runtime/warm.py), waited for
+    as subprocess waits for its own: `poll()` and `returncode`, negative for a signal."""
+
+    def __init__(self, pid: int) -> None:
+        self.pid = pid
+        self.returncode: int | None = None
+
+    def poll(self) -> int | None:
+        if self.returncode is None:
+            try:
+                done, status = os.waitpid(self.pid, os.WNOHANG)
+            except ChildProcessError:  # (reaped elsewhere: its status is lost)
+                self.returncode = 255
+                return self.returncode
+            if done == self.pid:
+                self.returncode = os.waitstatus_to_exitcode(status)
+        return self.returncode
 
 
 def group_alive(pgid: int) -> bool:

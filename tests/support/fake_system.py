@@ -53,6 +53,9 @@ class FakeSystem:
     def group_alive(self, pgid):
         return self.group.get(pgid, False)
 
+    def end_servers(self):
+        self.servers_ended = True
+
     # --- what the test makes happen ---------------------------------------------------------
     def leader_exits(self, loop: FakeLoop, pid: int, code: int, group_empty: bool = True):
         """The leader ends with `code`: its output reaches its end, then it is reaped."""

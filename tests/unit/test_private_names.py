@@ -32,6 +32,12 @@ PATCHED = {
     ("compat/testing/launch_pytest/plugin.py", "_genfunctions"):
         "pytest's making of a test's items (one per parameter), for the coroutine and generator "
         "tests launch_pytest collects, as launch_pytest's own plugin does",
+    ("runtime/warm_server.py", "_run_module_as_main"):
+        "what CPython's `python -m` itself calls: a module started warm runs as it does cold, "
+        "the frames of its traceback included",
+    ("runtime/warm_server.py", "_run_exitfuncs"):
+        "the exit handlers CPython runs before it ends by SIGINT after an uncaught "
+        "KeyboardInterrupt, which a warm-started process must run as it would cold",
 }
 
 
