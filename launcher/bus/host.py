@@ -18,7 +18,7 @@ import zenoh
 
 from launcher.bus import keys
 from launcher.bus.logging import Logger
-from launcher.bus.session import NoRouter, open_session
+from launcher.bus.session import NoRouter, is_client, open_session
 
 _node_ids = itertools.count()
 
@@ -131,12 +131,16 @@ class Host:
                 item.undeclare()
 
     def graph_session(self) -> zenoh.Session:
-        """The session to ask who is on the bus. A peer's liveliness query reaches only the
-        peers it has links to, and with dozens of nodes starting at once some links come late
-        or not at all (ten robots' `create`s never saw the sim); the router answers a client
-        with every token. Opened at the first question."""
+        """The session to ask who is on the bus: the router answers a client with every
+        token (a node's own session is one). A peer's liveliness query reaches only the peers
+        it has links to, and with dozens of nodes starting at once some links come late or
+        not at all (ten robots' `create`s never saw the sim): a peer's node (one given a
+        session of its own) asks through a client of its own, opened at the first
+        question."""
         if self._graph_session is None:
             self._graph_session = self.session
+            if is_client(self.session):
+                return self.session
             with contextlib.suppress(NoRouter):
                 self._graph_session = open_session("client")
         return self._graph_session

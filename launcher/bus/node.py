@@ -112,7 +112,7 @@ class Node:
             within.nodes.append(self)
         self.params = NodeParameters(given, self.fully_qualified_name)
         self.owner: Any = None  # the rclpy node wrapping this one, if any
-        self.host = Host(session or open_session("peer"), self.namespace,
+        self.host = Host(session or open_session(holds_nodes=True), self.namespace,
                          self.name, logger, space)
         self.session = self.host.session
         self._timers: list[Timer] = []

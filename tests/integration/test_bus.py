@@ -423,6 +423,31 @@ def test_a_node_alone_starts_the_graph_which_stops_after_it(bus):
     wait_router_gone(bus)
 
 
+LINKS = """
+import sys, time
+from launcher.bus.node import Node
+node = Node(sys.argv[1])
+print("up", flush=True)
+time.sleep(1.5)
+info = node.session.info
+print(len(list(info.peers_zid())), len(list(info.routers_zid())), flush=True)
+node.destroy_node()
+"""
+
+
+def test_nodes_link_to_the_router_alone_not_to_one_another(bus):
+    """A star, not a mesh: n nodes make n links (a mesh made n(n-1)/2, 4,950 for 100)."""
+    bus.write("links.py", LINKS)
+    nodes = [subprocess.Popen([PY, "links.py", f"n{i}"], cwd=bus.root, env=bus.env,
+                              stdout=subprocess.PIPE, text=True) for i in range(3)]
+    try:
+        assert [node.stdout.readline().strip() for node in nodes] == ["up"] * 3
+        assert [node.stdout.readline().split() for node in nodes] == [["0", "1"]] * 3
+    finally:
+        for node in nodes:
+            node.wait(20)
+
+
 def test_a_node_started_with_sigint_ignored_still_stops_on_it(bus):
     """`python node.py &` in a script starts it with SIGINT ignored; a node still stops on
     Ctrl-C and on a launch's SIGINT (rclpy's init does the same)."""
