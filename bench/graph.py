@@ -12,6 +12,8 @@ Figures, for each N:
 - the graph's idle CPU (% of one core: every process of the launch, the launcher included,
   over `--idle` seconds once every talker is heard).
 A graph that has not heard every talker within `--limit` seconds says how many it heard.
+Then the messages' figures, against the same real ROS 2 (bench/graph_messages.py): latency
+p50 and p99 at 64 B and 1 MB, throughput, and a 1 kHz timer's jitter (`--no-messages`: not).
 
     python bench/graph.py [--sizes 10,50,100] [--ros2 DIR] [--limit 300] [--only launcher]
 """
@@ -30,6 +32,7 @@ import threading
 import time
 from pathlib import Path
 
+import graph_messages
 import psutil
 from _harness import launcher_cmd, table
 
@@ -190,6 +193,8 @@ def main() -> None:
                         help="seconds a graph has to hear every talker")
     parser.add_argument("--idle", type=float, default=5.0)
     parser.add_argument("--only", choices=("launcher", "ros2"), default=None)
+    parser.add_argument("--no-messages", action="store_true",
+                        help="the graph's start only, not the messages' figures")
     args = parser.parse_args()
     signal.signal(signal.SIGINT, signal.default_int_handler)  # (the launches get it at default)
     sizes = [int(n) for n in args.sizes.split(",")]
@@ -211,6 +216,8 @@ def main() -> None:
         tools["ros2 launch"] = (str(ros2_python), lambda path: [*real.command, str(path)],
                                 {**real.env, **{k: base[k] for k in logs}})
     results: dict[tuple[str, int], dict[str, float | str]] = {}
+    messages: dict[str, dict[str, dict[str, float] | str]] = {who: {} for who in tools}
+    graph_messages.write_probes(folder)
     try:
         for count in sizes:
             for who, (python, argv, env) in tools.items():
@@ -218,6 +225,11 @@ def main() -> None:
                 path.write_text(LAUNCH.format(count=count, python=python, folder=str(folder)))
                 results[who, count] = one(argv(path), env, count, args.limit, args.idle)
                 print(f"{who}, {count} talkers: {results[who, count]}", flush=True)
+        for name in graph_messages.PROBES if not args.no_messages else ():
+            for who, (python, argv, env) in tools.items():
+                messages[who][name] = graph_messages.probe(argv, python, env, folder, name,
+                                                           who.split()[0])
+                print(f"{who}, {name}: {messages[who][name]}", flush=True)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
     rows = []
@@ -244,6 +256,7 @@ def main() -> None:
         if "uss" in ours and "uss" in theirs:
             rows.append((f"{count} talkers: launcher / ros2 launch, one talker's memory",
                          "≤ 0.4×", f"{ours['uss'] / theirs['uss']:.2f}"))
+    rows += graph_messages.rows(messages)
     if "ros2 launch" not in tools and args.only != "launcher":
         rows.append(("ros2 launch", "-", f"not installed at {args.ros2}: no anchor this run"))
     table("A graph of rclpy talkers and one listener, against real ROS 2", rows)
