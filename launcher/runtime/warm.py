@@ -133,13 +133,14 @@ class Server:
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
         try:
             self.process = subprocess.Popen(
-                [python, "-m", "launcher.runtime.warm_server", f"--fd={theirs.fileno()}",
-                 *modules], env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                [python, "-m", "launcher.runtime.warm_server", f"--fd={theirs.fileno()}"],
+                env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                 stderr=subprocess.DEVNULL, pass_fds=(theirs.fileno(),), start_new_session=True)
         finally:
             theirs.close()
         self.channel: socket.socket = ours
         self.channel.settimeout(ANSWER_WAIT)
+        self._send({"modules": list(modules)}, [])  # (its first request: what to import)
         self.ready: bool | None = None  # (it says so once it has imported what it imports)
 
     def start(self, plan: Plan, env: dict[str, str], cwd: str, fds: list[int]) -> int:
@@ -148,17 +149,20 @@ class Server:
             self.ready = bool(json.loads(self._line()).get("ready"))
         if not self.ready:
             raise OSError("a process started warm here could not look as it would cold")
-        import socket
-
-        body = json.dumps({"run": plan.run, "target": plan.target, "argv": plan.argv,
-                           "shown": plan.shown, "comm": plan.comm, "env": env,
-                           "cwd": cwd}).encode()
-        socket.send_fds(self.channel, [len(body).to_bytes(8, "little")], fds)
-        self.channel.sendall(body)
+        self._send({"run": plan.run, "target": plan.target, "argv": plan.argv,
+                    "shown": plan.shown, "comm": plan.comm, "env": env, "cwd": cwd}, fds)
         pid = json.loads(self._line())["pid"]
         if pid <= 0:
             raise OSError("the warm start's server could not fork")
         return pid
+
+    def _send(self, request: dict, fds: list[int]) -> None:
+        """A request as the server reads one: its length (with `fds`), then its JSON."""
+        import socket
+
+        body = json.dumps(request).encode()
+        socket.send_fds(self.channel, [len(body).to_bytes(8, "little")], fds)
+        self.channel.sendall(body)
 
     def _line(self) -> bytes:
         answer = b""

@@ -1,10 +1,10 @@
-"""The warm start's server: `python -m launcher.runtime.warm_server --fd=N [MODULE …]`.
+"""The warm start's server: `python -m launcher.runtime.warm_server --fd=N`.
 
-The launcher starts one (runtime/warm.py) with the environment its Python processes get. It
-imports each MODULE (rclpy, the message packages nodes use: the compat finder is installed at
-its start, as in every Python process a launch starts), starts no thread, and then forks each
-Python process the launch asks for: the process finds those modules imported, and does not
-spend its start importing them again.
+The launcher starts one (runtime/warm.py) with the environment its Python processes get. Its
+first request (below) is {"modules": [MODULE, …]}: it imports each MODULE (rclpy, the message
+packages nodes use: the compat finder is installed at its start, as in every Python process a
+launch starts), starts no thread, and then forks each Python process the launch asks for: the
+process finds those modules imported, and does not spend its start importing them again.
 
 Requests come on fd N, a Unix stream socket: a length (8 bytes, with the process's stdin,
 stdout and stderr as SCM_RIGHTS), then that many bytes of JSON: {"argv": […], "env": {…},
@@ -39,7 +39,10 @@ HERE = __file__  # (this module runs as __main__: a process gets a __main__ of i
 
 def main() -> int:
     channel = socket.socket(fileno=int(sys.argv[1].removeprefix("--fd=")))
-    for name in sys.argv[2:]:
+    first = _receive(channel)  # (what to import: not on its command line, where `pgrep -f
+    if first is None:          # NODE` would take this server for the node)
+        return 0
+    for name in first[0].get("modules", []):
         try:
             importlib.import_module(name)
         except Exception:  # noqa: BLE001 - the process imports it itself then, as cold
