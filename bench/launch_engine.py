@@ -1,7 +1,10 @@
 """Launch engine benchmarks (issue 2): start-up, exit, scale, --show-args, Ctrl-C.
 
 Each figure is the median of several runs, measured from outside as a user would see it:
-wall time from starting `launcher launch` until the condition holds.
+wall time from starting `launcher launch` until the condition holds. 10 and 100 `true`
+processes to the launch's exit are also run by real ros2 launch (installed apart as the
+fidelity oracle is: `--ros2 DIR`, default .fidelity/ros2), the same YAML file, in the same
+run, the two taken in turn; the ratio is printed (issue 57: ≤ 0.15×).
 """
 
 from __future__ import annotations
@@ -9,11 +12,18 @@ from __future__ import annotations
 import argparse
 import contextlib
 import signal
+import statistics
 import subprocess
+import sys
 import time
+from pathlib import Path
 
 import psutil
 from _harness import children, comm, launcher_cmd, start, stop, summary, table, wait_for, workdir
+
+REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(REPO))  # (real ros2 launch, run as the fidelity oracle runs it)
+from tests.fidelity.record import ros2_tool  # noqa: E402
 
 
 def sleeps_file(folder, count: int, seconds: int = 5) -> str:
@@ -39,11 +49,34 @@ def time_to_running(path: str, count: int) -> tuple[float, float]:
         stop(proc)
 
 
-def time_to_exit(path: str) -> float:
+def time_to_exit(path: str, argv: list[str] | None = None,
+                 env: dict[str, str] | None = None) -> float:
+    """Seconds from the start of `argv PATH` (launcher launch's by default) to its exit."""
     t0 = time.perf_counter()
-    subprocess.run(launcher_cmd() + ["launch", path], stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL, check=True)
+    subprocess.run([*(argv or [*launcher_cmd(), "launch"]), path], stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, check=True, env=env)
     return time.perf_counter() - t0
+
+
+def against_ros2(folder: Path, ros2: Path, runs: int) -> list[tuple[str, str, str]]:
+    """10 and 100 `true` to the exit, launcher and real ros2 launch in turn: the rows."""
+    real = ros2_tool(ros2)
+    rows = []
+    for count in (10, 100):
+        path = folder / f"true{count}.launch.yaml"
+        path.write_text("launch:\n" + "  - executable: {cmd: 'true'}\n" * count)
+        ours, theirs = [], []
+        time_to_exit(str(path))  # (the file cache warm, both ways)
+        time_to_exit(str(path), list(real.command), real.env)
+        for _ in range(runs):
+            ours.append(time_to_exit(str(path)))
+            theirs.append(time_to_exit(str(path), list(real.command), real.env))
+        ratio = statistics.median(ours) / statistics.median(theirs)
+        rows += [(f"{count} x true: launcher exited", "report", summary(ours)),
+                 (f"{count} x true: ros2 launch exited", "report", summary(theirs)),
+                 (f"{count} x true: launcher / ros2 launch (medians)", "<= 0.15",
+                  f"{ratio:.2f}")]
+    return rows
 
 
 def time_ctrl_c(path: str, count: int) -> float:
@@ -90,8 +123,19 @@ def time_show_args(path: str) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--runs", type=int, default=7)
-    runs = parser.parse_args().runs
+    parser.add_argument("--ros2", type=Path, default=REPO / ".fidelity" / "ros2")
+    parser.add_argument("--only-ros2", action="store_true",
+                        help="only the figures against ros2 launch")
+    args = parser.parse_args()
+    runs = args.runs
     folder = workdir()
+    if (args.ros2 / "bin" / "python").exists():
+        table("launch engine against ros2 launch (seconds)", against_ros2(folder, args.ros2,
+                                                                        runs))
+    else:
+        print(f"ros2 launch: not installed at {args.ros2}: no anchor this run")
+    if args.only_ros2:
+        return
     ten, hundred, fifty = (sleeps_file(folder, n) for n in (10, 100, 50))
     trues = folder / "true10.launch.yaml"
     trues.write_text("launch:\n" + "  - executable: {cmd: 'true'}\n" * 10)
