@@ -95,7 +95,10 @@ class LaunchService:
         hosts = Hosts(self.loop, self.context.environment, self.custody.stamp, self.log,
                       os.urandom(8).hex(), remote_graph)
         self.recent = Recent()
-        self._system: Processes = system or System(warm_starts(self.context.environment))
+        # (a process forked by a warm start's server is the launcher's own child only where
+        # the launcher is the child subreaper: it is reparented to it)
+        self._system: Processes = system or System(
+            warm_starts(self.context.environment) if self.custody.subreaper else None)
         self.table = ProcessTable(self.loop, self._system, self.custody, self.printer,
                                   self.run_log, self.log, self.emit,
                                   lambda: bool(self.handlers.registered),

@@ -42,6 +42,9 @@ def main() -> int:
     first = _receive(channel)  # (what to import: not on its command line, where `pgrep -f
     if first is None:          # NODE` would take this server for the node)
         return 0
+    # (sys.path[0] is the launcher's folder: not what the processes import from, each has its
+    # own first entry)
+    base_path = sys.path[:] = sys.path[1:]
     for name in first[0].get("modules", []):
         try:
             importlib.import_module(name)
@@ -51,7 +54,6 @@ def main() -> int:
     # an import started a thread, which a fork would not carry over)
     ready = len(os.listdir("/proc/self/task")) == 1 and _can_appear()
     channel.sendall(json.dumps({"ready": ready}).encode() + b"\n")
-    base_path = list(sys.path[1:])  # (sys.path[0] is this module's: each process has its own)
     while True:
         request = _receive(channel)
         if request is None:
@@ -82,21 +84,25 @@ def _receive(channel: socket.socket) -> tuple[dict, list[int]] | None:
 
 
 def _start(fields: dict, fds: list[int], channel: socket.socket, base_path: list[str]) -> int:
-    """Fork the process (through a go-between, see above); its pid. In the process itself
-    this does not return: its SystemExit ends the interpreter as `python script.py` ends."""
+    """Fork the process (through a go-between, see above); its pid, which the process says
+    itself once it is in a session of its own (a stop signal to its group reaches it from
+    the first moment the launcher knows it), or -1. In the process itself this does not
+    return: its SystemExit ends the interpreter as `python script.py` ends."""
     read, write = os.pipe()
     go_between = os.fork()
     if go_between == 0:
         try:
-            pid = os.fork()
+            if os.fork() != 0:
+                os._exit(0)
         except BaseException:  # noqa: BLE001 - said to the launcher as no pid
             os._exit(1)
-        if pid != 0:
-            os.write(write, str(pid).encode())
-            os._exit(0)
         os.close(read)
-        os.close(write)
         channel.close()
+        if not _appear_as(fields["shown"], fields["env"], fields["comm"]):
+            os._exit(127)  # (checked at the server's start: not met here)
+        os.setsid()
+        os.write(write, str(os.getpid()).encode())
+        os.close(write)
         _run(fields, fds, base_path)
     os.close(write)
     for fd in fds:
@@ -111,20 +117,19 @@ def _start(fields: dict, fds: list[int], channel: socket.socket, base_path: list
 
 def _run(fields: dict, fds: list[int], base_path: list[str]) -> None:
     """Become the process the request describes and run it; exits with its status."""
-    if not _appear_as(fields["shown"], fields["env"], fields["comm"]):
-        os._exit(127)  # (checked at the server's start: not met here)
-    os.setsid()
     for target, fd in enumerate(fds):
         os.dup2(fd, target)
-    for fd in fds:
-        if fd > 2:
-            os.close(fd)
+    for name in os.listdir("/proc/self/fd"):  # (only stdio, as a process started cold has)
+        if int(name) > 2:
+            with contextlib.suppress(OSError):
+                os.close(int(name))
     os.environ.clear()
     os.environ.update(fields["env"])
     os.chdir(fields["cwd"])
     signal.signal(signal.SIGINT, signal.default_int_handler)  # (a new interpreter's own)
-    if "random" in sys.modules:  # (seeded afresh, as its import in a new interpreter seeds it)
-        sys.modules["random"].seed()
+    for name in ("random", "numpy.random"):  # (seeded afresh, as a new interpreter's import
+        if name in sys.modules:              # seeds them)
+            sys.modules[name].seed()
     _streams()
     if fields["run"] == "module":
         import runpy
@@ -134,8 +139,8 @@ def _run(fields: dict, fds: list[int], base_path: list[str]) -> None:
         _fresh_main()  # (runpy runs the module in __main__'s namespace: not this module's)
         _exit_as_python(lambda: runpy._run_module_as_main(fields["target"]))  # type: ignore[attr-defined]
     script = fields["target"]
-    sys.argv = [script, *fields["argv"]]
-    sys.path[:] = [os.path.dirname(os.path.abspath(script)), *base_path]
+    sys.argv = [fields["shown"][1], *fields["argv"]]  # (the script as the interpreter was
+    sys.path[:] = [os.path.dirname(os.path.realpath(script)), *base_path]  # given it)
     _exit_as_python(lambda: _run_script(script))
 
 
@@ -228,7 +233,8 @@ def _run_script(path: str) -> None:
     namespace = _fresh_main()
     namespace.update(__file__=path, __cached__=None)
     with tokenize.open(path) as source:  # (its encoding as Python reads it: PEP 263)
-        code = compile(source.read(), path, "exec")
+        code = compile(source.read(), path, "exec", dont_inherit=True)  # (not this module's
+        # __future__ imports)
     exec(code, namespace)  # noqa: S102 - the user's own program, as python runs it
 
 
@@ -259,7 +265,11 @@ def _die_by_sigint() -> None:
     """As the interpreter ends after an uncaught KeyboardInterrupt: its exit handlers run,
     then it kills itself with SIGINT, so that its parent sees it ended by the signal."""
     import atexit
+    import threading
 
+    for thread in threading.enumerate():  # (the interpreter waits for them first)
+        if thread is not threading.main_thread() and not thread.daemon:
+            thread.join()
     atexit._run_exitfuncs()
     for stream in (sys.stdout, sys.stderr):
         with contextlib.suppress(OSError, ValueError):

@@ -39,8 +39,16 @@ def primed(ws) -> str:
     return "".join(f"  - executable: {{cmd: {path}, name: prime{i}}}\n" for i in range(2))
 
 
+def witness(ws) -> str:
+    """A process after the rest that says whether it started warm: when it did, the server
+    was still in use, so the one before it was started warm too (a failed warm start gives
+    the server up)."""
+    path = script(ws, "witness.py", "import sys\nprint('warm', 'rclpy' in sys.modules)\n")
+    return f"  - executable: {{cmd: {path}, output: screen, name: witness}}\n"
+
+
 def launch(ws, body: str, env: dict[str, str], name: str = "w.launch.yaml"):
-    ws.write(name, "launch:\n" + primed(ws) + body)
+    ws.write(name, "launch:\n" + primed(ws) + body + witness(ws))
     ws.env.update(env)
     return ws.run("launch", name, timeout=90)
 
@@ -83,6 +91,7 @@ def test_a_failing_process_says_the_same_warm_as_cold(py_ws, body):
     path = script(py_ws, "fails.py", body)
     entry = f"  - executable: {{cmd: {path}, output: screen, name: fails}}\n"
     warm, cold = launch(py_ws, entry, WARM), launch(py_ws, entry, COLD)
+    assert "warm True" in warm.stdout and "warm False" in cold.stdout, warm.stdout
     said = lines_of(cold.stdout + cold.stderr, "fails")
     assert any("exited with code" in line for line in said), said
     assert (warm.returncode, lines_of(warm.stdout + warm.stderr, "fails")) == \
@@ -103,7 +112,7 @@ import os, signal, sys
 print("json", sys.modules.get("json", "absent") is not None,
       "sigterm", signal.getsignal(signal.SIGTERM) == signal.SIG_DFL,
       "cwd", os.getcwd() == os.environ["HERE"],
-      "env", "LEFT_BY_THE_FIRST" in os.environ, flush=True)
+      "env", "LEFT_BY_THE_FIRST" in os.environ, "warm", "rclpy" in sys.modules, flush=True)
 """
 
 
@@ -115,7 +124,8 @@ def test_what_one_warm_process_changes_does_not_reach_the_next(py_ws):
             f"                        env: [{{name: HERE, value: {py_ws.root}}}]}}\n")
     done = launch(py_ws, body, WARM)
     assert "[first-3] changed" in done.stdout, done.stdout + done.stderr
-    assert "[second-4] json True sigterm True cwd True env False" in done.stdout, done.stdout
+    assert "[second-5] json True sigterm True cwd True env False warm True" in done.stdout, \
+        done.stdout
 
 
 def cmdline(proc: psutil.Process) -> list[str]:
@@ -126,11 +136,14 @@ def cmdline(proc: psutil.Process) -> list[str]:
 
 
 def test_ps_and_proc_show_a_warm_process_as_it_would_be_cold(py_ws):
-    path = script(py_ws, "sleeps.py", "import time\ntime.sleep(30)\n")
+    path = script(py_ws, "sleeps.py", "import sys, time\nprint('warm', 'rclpy' in sys.modules, "
+                                      "flush=True)\ntime.sleep(30)\n")
     py_ws.write("s.launch.yaml", f"launch:\n{primed(py_ws)}  - executable: "
-                                 f"{{cmd: {path} one two, env: [{{name: MINE, value: here}}]}}\n")
-    proc = py_ws.start("launch", "s.launch.yaml", env=WARM)
+                                 f"{{cmd: {path} one two, output: screen, "
+                                 f"env: [{{name: MINE, value: here}}]}}\n")
+    proc = py_ws.start("launch", "s.launch.yaml", env=WARM, output="ps.out")
     try:
+        py_ws.wait_for_output("warm True", 30, "ps.out")
         deadline = time.monotonic() + 30
         found = []
         while not found and time.monotonic() < deadline:
@@ -150,10 +163,12 @@ def test_ps_and_proc_show_a_warm_process_as_it_would_be_cold(py_ws):
 
 def test_a_failing_module_says_the_same_warm_as_cold(py_ws):
     """`python3 -m MODULE`: runpy's frames and the module's, as the interpreter shows them."""
-    py_ws.write("broken_mod.py", "import sys\nprint(sys.argv[1:], flush=True)\nraise KeyError('k')\n")
+    py_ws.write("broken_mod.py",
+                "import sys\nprint(sys.argv[1:], flush=True)\nraise KeyError('k')\n")
     entry = (f"  - executable: {{cmd: python3 -m broken_mod a b, cwd: {py_ws.root}, "
              f"output: screen, name: fails}}\n")
     warm, cold = launch(py_ws, entry, WARM), launch(py_ws, entry, COLD)
+    assert "warm True" in warm.stdout and "warm False" in cold.stdout, warm.stdout
     said = lines_of(cold.stdout + cold.stderr, "fails")
     assert any("KeyError: 'k'" in line for line in said), said
     assert (warm.returncode, lines_of(warm.stdout + warm.stderr, "fails")) == \
