@@ -9,7 +9,7 @@ import threading
 import time
 from typing import TextIO
 
-_LINES = threading.Lock()
+_LINES = threading.RLock()  # (a signal handler that logs mid-line must not deadlock)
 
 
 def write_line(stream: TextIO, line: str) -> None:
