@@ -184,7 +184,7 @@ def left_in(ws) -> list[str]:
     for proc in ws.processes():
         try:
             found.append(" ".join(proc.cmdline()))
-        except psutil.Error:
+        except (psutil.NoSuchProcess, psutil.ZombieProcess):
             continue
     for proc in psutil.process_iter():
         try:

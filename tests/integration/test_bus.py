@@ -445,7 +445,11 @@ def test_nodes_link_to_the_router_alone_not_to_one_another(bus):
         assert [node.stdout.readline().split() for node in nodes] == [["0", "1"]] * 3
     finally:
         for node in nodes:
-            node.wait(20)
+            try:
+                node.wait(20)
+            except subprocess.TimeoutExpired:
+                node.kill()
+                node.wait()
 
 
 def test_a_node_started_with_sigint_ignored_still_stops_on_it(bus):
