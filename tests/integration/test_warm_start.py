@@ -173,3 +173,20 @@ def test_a_failing_module_says_the_same_warm_as_cold(py_ws):
     assert any("KeyError: 'k'" in line for line in said), said
     assert (warm.returncode, lines_of(warm.stdout + warm.stderr, "fails")) == \
         (cold.returncode, said)
+
+
+def test_a_sigkill_of_the_launcher_leaves_no_warm_process_nor_server(py_ws):
+    """The watchdog ends what the launch started warm, and the server, as it ends the rest."""
+    path = script(py_ws, "stays.py", "import sys, time\nprint('warm', 'rclpy' in sys.modules, "
+                                     "flush=True)\ntime.sleep(60)\n")
+    py_ws.write("k.launch.yaml", f"launch:\n{primed(py_ws)}"
+                                 f"  - executable: {{cmd: {path}, output: screen}}\n")
+    proc = py_ws.start("launch", "k.launch.yaml", env=WARM, output="k.out")
+    py_ws.wait_for_output("warm True", 30, "k.out")
+    assert any("warm_server" in " ".join(cmdline(p)) for p in py_ws.processes())
+    proc.kill()
+    proc.wait()
+    deadline = time.monotonic() + 15
+    while [p for p in py_ws.processes() if cmdline(p)] and time.monotonic() < deadline:
+        time.sleep(0.2)
+    assert not [" ".join(cmdline(p)) for p in py_ws.processes() if cmdline(p)]
