@@ -42,7 +42,10 @@ from launcher.runtime.system import Processes, System
 from launcher.runtime.timers import LaunchTimers
 from launcher.runtime.warm import warm_starts
 
-CONTROL_AFTER = 1.0  # seconds into a launch at which it answers on the graph (launcher ps)
+# seconds into a launch at which it answers on the graph (launcher ps): a launch of `true`s
+# (0.1 s) never opens a session for it, and one whose nodes are up (the demo's, 0.8 s once
+# they started warm and linked to the router alone) answers by then
+CONTROL_AFTER = 0.3
 FLUSH = 0.5  # seconds between flushes of the run's log files
 
 
