@@ -395,9 +395,11 @@ def test_on_the_running_demo_ps_lists_the_stack_and_a_restarted_node_publishes_a
     proc = demo.start("launch", LAUNCH, output="demo.out")
     try:
         demo.wait_for_output("spawned 'my_robot' into world 'robot'", 90, "demo.out")
-        table = demo.run("ps").stdout
+        listed = demo.run("ps")
+        table = listed.stdout
         for name in ("gz", "parameter_bridge", "robot_state_publisher", "driver"):
-            assert re.search(rf"^  {name}-\d+ +\d+ .* running ", table, re.M), table
+            assert re.search(rf"^  {name}-\d+ +\d+ .* running ", table, re.M), \
+                table + listed.stderr
         label = re.search(r"^  (robot_state_publisher-\d+) +(\d+) ", table, re.M)
         result = demo.run("restart", "robot_state_publisher")
         assert result.returncode == 0 and f"restarting {label.group(1)}" in result.stdout
