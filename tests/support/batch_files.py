@@ -76,8 +76,11 @@ import launch_testing.actions
 
 
 def generate_test_description():
+    # (a process under test that outlives the test: a launch with none would end at once,
+    # racing the test, as it does under real launch_testing)
     return launch.LaunchDescription([
         launch.actions.DeclareLaunchArgument("fail_on", default_value="none"),
+        launch.actions.ExecuteProcess(cmd=["sleep", "60"]),
         launch_testing.actions.ReadyToTest()])
 
 
