@@ -153,7 +153,7 @@ def test_ctrl_c_cancels_every_job_and_leaves_nothing(batch_ws):
                                  cwd=batch_ws.root, env=batch_ws.env, stdout=subprocess.DEVNULL,
                                  stderr=err, start_new_session=True)
     deadline = time.monotonic() + 60
-    while len([p for p in batch_ws.processes() if "stuck_test" in " ".join(p.cmdline())]) < 2:
+    while len([p for p in batch_ws.processes() if "stuck_test" in command(p)]) < 2:
         assert time.monotonic() < deadline, batch_ws.output("stderr.txt")
         time.sleep(0.2)
     os.killpg(batch.pid, signal.SIGINT)
@@ -165,7 +165,7 @@ def test_a_sigkill_of_the_batch_leaves_nothing_running(batch_ws):
     batch_ws.write("s.batch.yaml", "jobs:\n  - test: jobs/stuck_test.py\nseeds: 2\n")
     batch = batch_ws.start("batch", "s.batch.yaml", "-n")
     deadline = time.monotonic() + 60
-    while not [p for p in batch_ws.processes() if "stuck_test" in " ".join(p.cmdline())]:
+    while not [p for p in batch_ws.processes() if "stuck_test" in command(p)]:
         assert time.monotonic() < deadline, batch_ws.output("stderr.txt")
         time.sleep(0.2)
     batch.kill()
@@ -174,6 +174,14 @@ def test_a_sigkill_of_the_batch_leaves_nothing_running(batch_ws):
     while left_in(batch_ws) and time.monotonic() < deadline:
         time.sleep(0.2)
     assert not left_in(batch_ws)
+
+
+def command(proc: psutil.Process) -> str:
+    """Its command line; "" for one that ended (or became a zombie) while it was looked at."""
+    try:
+        return " ".join(proc.cmdline())
+    except (psutil.NoSuchProcess, psutil.ZombieProcess):
+        return ""
 
 
 def left_in(ws) -> list[str]:
