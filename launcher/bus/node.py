@@ -13,7 +13,6 @@ are CDR (rosbags); keys, liveliness tokens and attachments follow rmw_zenoh (see
 
 from __future__ import annotations
 
-import atexit
 import contextlib
 import os
 import signal
@@ -33,7 +32,7 @@ from launcher.bus.node_parameters import NodeParameters
 from launcher.bus.publisher import Publisher
 from launcher.bus.qos import QoS, qos_of
 from launcher.bus.services import Client, Service
-from launcher.bus.session import open_session
+from launcher.bus.session import before_threads_join, open_session
 from launcher.bus.subscription import Subscription
 from launcher.bus.timer import Rate, Timer
 from launcher.errors import LaunchError
@@ -77,7 +76,7 @@ def _signals_held(forgive: bool) -> Iterator[None]:
 
 # Registered before any node's destroy_node: the threading module runs its exit hooks in the
 # reverse order, so this one after every node is destroyed.
-getattr(threading, "_register_atexit", atexit.register)(join_callback_threads)
+before_threads_join(join_callback_threads)
 
 
 class Parameter:
@@ -125,11 +124,8 @@ class Node:
         self._stopped = threading.Event()
         self.interrupted = False  # Ctrl-C arrived during spin()
         self._destroyed = False
-        # Zenoh runs callbacks on non-daemon threads, which the interpreter joins at exit
-        # before atexit handlers run: a node never destroyed would hang its program. The
-        # threading module's own exit hook (concurrent.futures uses it) runs before the join.
-        register = getattr(threading, "_register_atexit", atexit.register)
-        register(self.destroy_node)
+        # (a node never destroyed would hang its program: see before_threads_join)
+        before_threads_join(self.destroy_node)
         _hear_ctrl_c()
         if parameter_services:
             from launcher.bus.parameters import serve  # rcl_interfaces types: only here

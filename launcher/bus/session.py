@@ -14,9 +14,12 @@ own (keys.host_key): on a graph that spans hosts, `node list` shows where each n
 
 from __future__ import annotations
 
+import atexit
+import contextlib
 import json
 import os
-from collections.abc import Mapping
+import threading
+from collections.abc import Callable, Mapping
 from pathlib import Path
 
 import zenoh
@@ -33,6 +36,28 @@ __all__ = ["NoRouter", "config", "declare_host", "is_client", "open_session", "s
 
 _host_tokens: dict[str, zenoh.LivelinessToken] = {}  # (a token lives as long as it is held)
 _clients: set[str] = set()  # (the sessions opened as clients, by zid)
+_open: list[zenoh.Session] = []  # (the sessions opened here, closed at exit if still open)
+
+
+def before_threads_join(hook: Callable[[], None]) -> None:
+    """Run `hook` as the interpreter exits, before it joins the non-daemon threads: Zenoh
+    runs callbacks on such threads, and they end only once their entities (or session) are
+    closed. The threading module's own exit hooks (concurrent.futures uses them) run then, the
+    last registered first."""
+    getattr(threading, "_register_atexit", atexit.register)(hook)
+
+
+def _close_left_open() -> None:
+    """A session its program never closed (a subscriber never undeclared) kept a callback
+    thread waiting, and the program hung at its exit for good."""
+    for session in _open:
+        if not session.is_closed():
+            with contextlib.suppress(zenoh.ZError):
+                session.close()
+    _open.clear()
+
+
+before_threads_join(_close_left_open)  # (the first registered: it runs after the nodes' own)
 
 
 def config(mode: str, listen: list[str], connect: list[str],
@@ -95,6 +120,7 @@ def open_session(mode: str = "client", environ: Mapping[str, str] | None = None,
         _host_tokens[str(session.zid())] = declare_host(session)
     if mode == "client":
         _clients.add(str(session.zid()))
+    _open[:] = [*(each for each in _open if not each.is_closed()), session]
     return session
 
 

@@ -376,6 +376,20 @@ print("done", flush=True)
     assert stop(proc) == 130
 
 
+def test_a_session_never_closed_still_lets_its_program_exit(bus):
+    """A program of launcher's bus API that subscribes on a session and never closes it:
+    Zenoh's callback thread once held it at its exit for good."""
+    script = bus.write("unclosed.py", """
+from launcher.bus.session import open_session
+session = open_session()
+subscriber = session.declare_subscriber("any/key", lambda sample: None)
+print("subscribed", flush=True)
+""")
+    result = subprocess.run([PY, str(script)], env=bus.env, capture_output=True, text=True,
+                            timeout=30)
+    assert result.returncode == 0 and "subscribed" in result.stdout, result.stderr
+
+
 def test_use_sim_time_follows_clock(bus):
     bus.write("timed.py", """
 from launcher.bus.node import Node
