@@ -58,11 +58,12 @@ def start(args: list[str], **kwargs) -> subprocess.Popen:
                             stderr=subprocess.DEVNULL, **kwargs)
 
 
-def stop(proc: subprocess.Popen) -> None:
+def stop(proc: subprocess.Popen, wait: float = 10.0) -> None:
+    """Ctrl-C, and SIGKILL after `wait` seconds."""
     if proc.poll() is None:
         proc.send_signal(2)
         try:
-            proc.wait(10)
+            proc.wait(wait)
         except subprocess.TimeoutExpired:
             proc.kill()
             proc.wait()

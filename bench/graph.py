@@ -34,7 +34,7 @@ from pathlib import Path
 
 import graph_messages
 import psutil
-from _harness import launcher_cmd, table
+from _harness import launcher_cmd, stop, table
 
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))  # (real ros2 launch, run as the fidelity oracle runs it)
@@ -160,12 +160,7 @@ def one(argv: list[str], env: dict[str, str], count: int, limit: float,
         result["idle"] = 100 * (cpu_seconds(processes) - before) / (time.monotonic() - at)
         return result
     finally:
-        proc.send_signal(signal.SIGINT)
-        try:
-            proc.wait(60)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
+        stop(proc, 60.0)  # (ros2 launch with 100 nodes takes its time)
         for left in processes[1:]:  # (nothing should be: said by the other benchmarks)
             if alive(left):
                 left.kill()

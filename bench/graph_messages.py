@@ -15,11 +15,12 @@ same Python files both times.
 from __future__ import annotations
 
 import json
-import signal
 import subprocess
 import threading
 from collections.abc import Callable
 from pathlib import Path
+
+from _harness import stop
 
 SENDER = """
 import sys
@@ -162,12 +163,7 @@ def probe(argv: Callable[[Path], list[str]], python: str, env: dict[str, str], f
     try:
         done.wait(limit)
     finally:
-        proc.send_signal(signal.SIGINT)
-        try:
-            proc.wait(60)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
+        stop(proc, 60.0)  # (ros2 launch with 100 nodes takes its time)
     return found[0] if found else f"no result in {limit:.0f} s"
 
 

@@ -18,13 +18,12 @@ from __future__ import annotations
 
 import argparse
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-from _harness import start_router, table
+from _harness import start_router, stop, table
 
 SIZES = {"RGB 640 x 480": 640 * 480 * 3, "depth 640 x 480": 640 * 480 * 4,
          "point cloud 640 x 480": 640 * 480 * 32}
@@ -101,8 +100,7 @@ def main() -> None:
                      (f"{name}: launcher's bus / without shared memory", "report",
                       f"{on / off:.1f}x" if off else "-")]
     finally:
-        router.send_signal(signal.SIGINT)
-        router.wait(10)
+        stop(router)
         shutil.rmtree(folder, ignore_errors=True)
         shutil.rmtree(env["LAUNCHER_RUN_DIR"], ignore_errors=True)
     table("Large messages between two processes through the router", rows)
