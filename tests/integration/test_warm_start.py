@@ -79,6 +79,18 @@ def test_the_warm_start_off_starts_every_process_cold(py_ws):
     assert "preloaded False" in cold.stdout, cold.stdout + cold.stderr
 
 
+def said_the_same_warm_as_cold(ws, entry: str, needle: str):
+    """Launch `entry` (process `fails`) warm, then cold: it ran warm the first time, the
+    cold run says `needle`, and both say the same lines with the same status. The warm run."""
+    warm, cold = launch(ws, entry, WARM), launch(ws, entry, COLD)
+    assert "warm True" in warm.stdout and "warm False" in cold.stdout, warm.stdout
+    said = lines_of(cold.stdout + cold.stderr, "fails")
+    assert any(needle in line for line in said), said
+    assert (warm.returncode, lines_of(warm.stdout + warm.stderr, "fails")) == \
+        (cold.returncode, said)
+    return warm
+
+
 @pytest.mark.parametrize("body", [
     "raise ValueError('boom')\n",
     "def broken(:\n    pass\n",
@@ -90,12 +102,7 @@ def test_a_failing_process_says_the_same_warm_as_cold(py_ws, body):
     status: the interpreter's words, not the server's."""
     path = script(py_ws, "fails.py", body)
     entry = f"  - executable: {{cmd: {path}, output: screen, name: fails}}\n"
-    warm, cold = launch(py_ws, entry, WARM), launch(py_ws, entry, COLD)
-    assert "warm True" in warm.stdout and "warm False" in cold.stdout, warm.stdout
-    said = lines_of(cold.stdout + cold.stderr, "fails")
-    assert any("exited with code" in line for line in said), said
-    assert (warm.returncode, lines_of(warm.stdout + warm.stderr, "fails")) == \
-        (cold.returncode, said)
+    warm = said_the_same_warm_as_cold(py_ws, entry, "exited with code")
     assert "warm_server" not in warm.stdout + warm.stderr
 
 
@@ -167,12 +174,7 @@ def test_a_failing_module_says_the_same_warm_as_cold(py_ws):
                 "import sys\nprint(sys.argv[1:], flush=True)\nraise KeyError('k')\n")
     entry = (f"  - executable: {{cmd: python3 -m broken_mod a b, cwd: {py_ws.root}, "
              f"output: screen, name: fails}}\n")
-    warm, cold = launch(py_ws, entry, WARM), launch(py_ws, entry, COLD)
-    assert "warm True" in warm.stdout and "warm False" in cold.stdout, warm.stdout
-    said = lines_of(cold.stdout + cold.stderr, "fails")
-    assert any("KeyError: 'k'" in line for line in said), said
-    assert (warm.returncode, lines_of(warm.stdout + warm.stderr, "fails")) == \
-        (cold.returncode, said)
+    said_the_same_warm_as_cold(py_ws, entry, "KeyError: 'k'")
 
 
 def test_a_sigkill_of_the_launcher_leaves_no_warm_process_nor_server(py_ws):
